@@ -59,3 +59,8 @@ pub struct Derivation {
     /// The symbolic checks, in the order they were made.
     pub checks: Vec<Check>,
 }
+
+pub mod emit;
+pub mod frame;
+pub mod hoop;
+pub mod regen;

@@ -1,0 +1,1 @@
+//! Emission of a Derivation into IR, readable text and checks. Being written.

@@ -1,0 +1,1 @@
+//! The rolling hoop (memoir Part I, ch. I). Being written.
