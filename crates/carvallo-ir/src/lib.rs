@@ -47,10 +47,31 @@
 //! # Modules
 //! * [`build`]: a hash-consing [`Builder`] (common-subexpression elimination by construction),
 //!   used by the derivations to emit programs.
+//! * [`parse`] and [`print`]: the text format ([`Program::parse`], [`Program::to_text`]).
+//! * [`error`]: [`ParseError`] and [`IrError`].
+//! * [`interp`]: the allocation-free `f64` [`Interpreter`] and [`Program::eval_f64`].
+//!
+//! # Example
+//!
+//! ```
+//! use carvallo_ir::Program;
+//! let text = "carvallo-ir 1\nmodel demo\nparam R\ninput x\nlet t0 = sin x\nlet t1 = mul R t0\noutput y = t1\n";
+//! let p = Program::parse(text)?;
+//! assert_eq!(p.to_text(), text);
+//! let y = p.eval_f64(&[2.0], &[0.5])?;
+//! assert_eq!(y, vec![2.0 * 0.5f64.sin()]);
+//! # Ok::<(), Box<dyn std::error::Error>>(())
+//! ```
 
 pub mod build;
+pub mod error;
+pub mod interp;
+pub mod parse;
+pub mod print;
 
 pub use build::Builder;
+pub use error::{IrError, ParseError};
+pub use interp::Interpreter;
 
 /// A reference to a value: a parameter, an input or the result of an instruction, by index.
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Hash, PartialOrd, Ord)]
@@ -192,5 +213,88 @@ impl Program {
     /// The output called `name`, if the program has one.
     pub fn output(&self, name: &str) -> Option<&Output> {
         self.outputs.iter().find(|o| o.name == name)
+    }
+
+    /// Parses the text form (see the [crate docs](crate)).
+    ///
+    /// ```
+    /// use carvallo_ir::Program;
+    /// let err = Program::parse("carvallo-ir 1\nmodel m\nlet a = add x x\n").unwrap_err();
+    /// assert_eq!(err.to_string(), "line 3, column 13: use of undefined value \"x\"");
+    /// ```
+    pub fn parse(text: &str) -> Result<Program, ParseError> {
+        parse::parse(text)
+    }
+
+    /// The text form of the program; `Program::parse(&p.to_text())` gives `p` back bit for bit.
+    pub fn to_text(&self) -> String {
+        let mut s = String::new();
+        print::write_program(self, &mut s).expect("writing to a String cannot fail");
+        s
+    }
+
+    /// Checks the invariants of the IR: valid and unique names (parameters, inputs and
+    /// instructions share one namespace, outputs have their own), operands in range and defined
+    /// before use, finite constants, header lines without newlines. Programs returned by
+    /// [`Program::parse`] and by the transformations of this crate are valid.
+    pub fn validate(&self) -> Result<(), IrError> {
+        use std::collections::HashSet;
+        for h in &self.header {
+            if h.contains('\n') {
+                return Err(IrError::invalid(format!("header line {h:?} contains a newline")));
+            }
+        }
+        if !parse::is_valid_name(&self.model) {
+            return Err(IrError::invalid(format!("invalid model name {:?}", self.model)));
+        }
+        let mut names = HashSet::new();
+        let all = self.params.iter().chain(&self.inputs).chain(self.insts.iter().map(|i| &i.name));
+        for n in all {
+            if !parse::is_valid_name(n) {
+                return Err(IrError::invalid(format!("invalid name {n:?}")));
+            }
+            if !names.insert(n.as_str()) {
+                return Err(IrError::invalid(format!("name {n:?} defined twice")));
+            }
+        }
+        let in_range = |v: Value, n_insts: usize| match v {
+            Value::Param(i) => (i as usize) < self.params.len(),
+            Value::Input(i) => (i as usize) < self.inputs.len(),
+            Value::Inst(i) => (i as usize) < n_insts,
+        };
+        for (k, inst) in self.insts.iter().enumerate() {
+            if let Op::Const(c) = inst.op {
+                if !c.is_finite() {
+                    return Err(IrError::invalid(format!(
+                        "non-finite constant {c} in {:?}",
+                        inst.name
+                    )));
+                }
+            }
+            for v in inst.op.operands() {
+                if !in_range(v, k) {
+                    return Err(IrError::invalid(format!(
+                        "operand {v:?} of {:?} is not defined before it",
+                        inst.name
+                    )));
+                }
+            }
+        }
+        let mut outs = HashSet::new();
+        for o in &self.outputs {
+            if !parse::is_valid_name(&o.name) {
+                return Err(IrError::invalid(format!("invalid output name {:?}", o.name)));
+            }
+            if !outs.insert(o.name.as_str()) {
+                return Err(IrError::invalid(format!("output {:?} declared twice", o.name)));
+            }
+            if !in_range(o.value, self.insts.len()) {
+                return Err(IrError::invalid(format!(
+                    "output {:?} refers to the undefined value {:?}",
+                    o.name, o.value
+                )));
+            }
+        }
+        Ok(())
     }
 }
