@@ -49,6 +49,9 @@
 //!   used by the derivations to emit programs.
 //! * [`parse`] and [`print`]: the text format ([`Program::parse`], [`Program::to_text`]).
 //! * [`error`]: [`ParseError`] and [`IrError`].
+//! * [`count`]: [`OpCount`], the operation count of a program.
+//! * [`opt`]: constant folding, [`Program::fix_params`], [`Program::select_outputs`], dead-code
+//!   elimination and argument pruning.
 //! * [`interp`]: the allocation-free `f64` [`Interpreter`] and [`Program::eval_f64`].
 //!
 //! # Example
@@ -64,12 +67,15 @@
 //! ```
 
 pub mod build;
+pub mod count;
 pub mod error;
 pub mod interp;
+pub mod opt;
 pub mod parse;
 pub mod print;
 
 pub use build::Builder;
+pub use count::OpCount;
 pub use error::{IrError, ParseError};
 pub use interp::Interpreter;
 
