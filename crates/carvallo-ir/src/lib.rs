@@ -53,6 +53,7 @@
 //! * [`opt`]: constant folding, [`Program::fix_params`], [`Program::select_outputs`], dead-code
 //!   elimination and argument pruning.
 //! * [`interp`]: the allocation-free `f64` [`Interpreter`] and [`Program::eval_f64`].
+//! * [`hp`]: high-precision reference evaluation with `astro-float`.
 //!
 //! # Example
 //!
@@ -69,6 +70,7 @@
 pub mod build;
 pub mod count;
 pub mod error;
+pub mod hp;
 pub mod interp;
 pub mod opt;
 pub mod parse;
