@@ -1,1 +1,344 @@
-//! Moving trihedra OIJK and OIjk and Grassmann products (memoir n° 1–3). Being written.
+//! Moving trihedra OIJK and OIjk, Grassmann's product and derivatives of moving vectors
+//! (memoir n° 1–3), written with symbolica expressions.
+//!
+//! OIJK has OI along the hoop's tangent at the contact point O, OK vertical; OIjk is obtained
+//! by the rotation θ about OI, so that $j = J\cos\theta + K\sin\theta$ and
+//! $k = -J\sin\theta + K\cos\theta$ (n° 1). Grassmann's product $|ab$ is the cross product
+//! ($|IJ = K$). The trihedron OIJK turns with the rotation $nK$ and OIjk with
+//! $\Phi = pI + nK$ (n° 2), so the derivative of a vector given by its components in either
+//! trihedron is the derivative of its components plus $|\omega v$ (formulas (4)–(6), n° 3).
+//!
+//! Inside the derivations $\sin\theta$ and $\cos\theta$ are the polynomial symbols
+//! [`sin_t`] and [`cos_t`] tied by $\sin^2\theta + \cos^2\theta = 1$: [`reduce_trig`] brings a
+//! polynomial to the normal form $a(\cos\theta) + \sin\theta\, b(\cos\theta)$, which makes
+//! [`is_zero`] an exact test. [`to_trig`] and [`from_trig`] convert to and from the functions
+//! `sin(theta)`, `cos(theta)`, `tan(theta)` used in the handed-over formulas.
+
+use symbolica::atom::{Atom, AtomCore};
+use symbolica::domains::integer::Z;
+use symbolica::domains::rational::Q;
+use symbolica::parse;
+
+/// Parses an expression in this crate's namespace (all derivation symbols live there).
+///
+/// # Panics
+/// Panics when `text` is not a valid symbolica expression; callers only pass literals
+/// written in this crate.
+pub fn expr(text: &str) -> Atom {
+    parse!(text)
+}
+
+/// The symbol `name` as an expression.
+pub fn var(name: &str) -> Atom {
+    expr(name)
+}
+
+/// The rational number `num/den` as an expression.
+pub fn rat(num: i64, den: i64) -> Atom {
+    Atom::num(num) / Atom::num(den)
+}
+
+/// Polynomial stand-in for $\sin\theta$ used inside the derivations.
+pub fn sin_t() -> Atom {
+    var("sin_theta")
+}
+
+/// Polynomial stand-in for $\cos\theta$ used inside the derivations.
+pub fn cos_t() -> Atom {
+    var("cos_theta")
+}
+
+/// Replaces the stand-ins [`sin_t`], [`cos_t`] by `sin(theta)`, `cos(theta)`.
+pub fn to_trig(e: &Atom) -> Atom {
+    e.replace(sin_t().to_pattern())
+        .with(expr("sin(theta)").to_pattern())
+        .replace(cos_t().to_pattern())
+        .with(expr("cos(theta)").to_pattern())
+}
+
+/// Replaces `tan(theta)`, `sin(theta)`, `cos(theta)` by the polynomial stand-ins.
+pub fn from_trig(e: &Atom) -> Atom {
+    e.replace(expr("tan(theta)").to_pattern())
+        .with((sin_t() / cos_t()).to_pattern())
+        .replace(expr("sin(theta)").to_pattern())
+        .with(sin_t().to_pattern())
+        .replace(expr("cos(theta)").to_pattern())
+        .with(cos_t().to_pattern())
+}
+
+/// The degree of the monomial `m` in the symbol `x` (`m` a product of powers, no sum).
+fn monomial_degree(m: &Atom, x: &Atom) -> Option<u32> {
+    let d = (x * &m.derivative(x.get_symbol()?) / m).expand();
+    (0..64).find(|k| d == Atom::num(*k as i64))
+}
+
+/// Reduces a polynomial in [`sin_t`] modulo $\sin^2\theta + \cos^2\theta - 1$ to the normal
+/// form $a + \sin\theta\,b$ where $a, b$ do not contain $\sin\theta$ (exact).
+pub fn reduce_trig(e: &Atom) -> Atom {
+    let st = sin_t();
+    let one_minus_c2 = Atom::num(1) - cos_t().pow(Atom::num(2));
+    let expanded = e.expand();
+    let mut out = Atom::num(0);
+    for (key, coeff) in expanded.coefficient_list::<u8>(&[st.clone()]) {
+        let k = monomial_degree(&key, &st).unwrap_or(0);
+        let mut term = coeff * one_minus_c2.pow(Atom::num((k / 2) as i64));
+        if k % 2 == 1 {
+            term = term * &st;
+        }
+        out = out + term;
+    }
+    out.expand()
+}
+
+/// Numerator and denominator of `e` brought to one fraction, both reduced by [`reduce_trig`].
+pub fn num_den(e: &Atom) -> (Atom, Atom) {
+    let rp = e.expand().to_rational_polynomial::<_, _, u16>(&Q, &Z, ());
+    (
+        reduce_trig(&rp.numerator.to_expression()),
+        reduce_trig(&rp.denominator.to_expression()),
+    )
+}
+
+/// Exact test that `e`, a rational function of the symbols and of $\sin\theta, \cos\theta$
+/// (stand-ins), vanishes identically.
+pub fn is_zero(e: &Atom) -> bool {
+    num_den(e).0.is_zero()
+}
+
+/// A readable canonical form: one fraction with reduced numerator, distributed over the
+/// denominator when the denominator is a single term.
+pub fn simplify(e: &Atom) -> Atom {
+    let (n, d) = num_den(e);
+    let (n, d) = num_den(&(n / d));
+    if d.nterms() <= 1 {
+        (n / d).expand()
+    } else {
+        n / d
+    }
+}
+
+/// Time derivative of a scalar along the motion: $\theta' = p$ and the derivatives of the
+/// rates are the symbols `dp`, `dq`, `dr`, `dn`, `ds`.
+pub fn time_derivative(f: &Atom) -> Atom {
+    let p = var("p");
+    let rules: [(Atom, Atom); 8] = [
+        (sin_t(), cos_t() * &p),
+        (cos_t(), -(sin_t() * &p)),
+        (var("theta"), p.clone()),
+        (var("p"), var("dp")),
+        (var("q"), var("dq")),
+        (var("r"), var("dr")),
+        (var("n"), var("dn")),
+        (var("s"), var("ds")),
+    ];
+    let mut out = Atom::num(0);
+    for (x, rate) in rules {
+        if let Some(sym) = x.get_symbol() {
+            if f.contains_symbol(sym) {
+                out = out + f.derivative(sym) * rate;
+            }
+        }
+    }
+    out
+}
+
+/// The two moving trihedra of n° 1.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum Trihedron {
+    /// OIJK: OI tangent to the hoop at O, OK vertical.
+    IJK,
+    /// OIjk: OIJK turned by θ about OI; Oj is the hoop's axis, Ok the diameter through S.
+    Ijk,
+}
+
+/// A vector given by its components in one of the trihedra.
+#[derive(Clone, Debug, PartialEq)]
+pub struct Vector {
+    /// The trihedron the components refer to.
+    pub frame: Trihedron,
+    /// Components on (I, J, K) or (I, j, k).
+    pub comps: [Atom; 3],
+}
+
+impl Vector {
+    /// The vector with components `a, b, c` in `frame`.
+    pub fn new(frame: Trihedron, a: Atom, b: Atom, c: Atom) -> Self {
+        Vector { frame, comps: [a, b, c] }
+    }
+
+    /// The zero vector.
+    pub fn zero(frame: Trihedron) -> Self {
+        Vector::new(frame, Atom::num(0), Atom::num(0), Atom::num(0))
+    }
+
+    /// The `i`-th unit vector of `frame` (0: I, 1: J or j, 2: K or k).
+    pub fn unit(frame: Trihedron, i: usize) -> Self {
+        let mut v = Vector::zero(frame);
+        v.comps[i] = Atom::num(1);
+        v
+    }
+
+    /// Components of the same vector in `target`: $J = j\cos\theta - k\sin\theta$,
+    /// $K = j\sin\theta + k\cos\theta$ and conversely.
+    pub fn to(&self, target: Trihedron) -> Self {
+        let (c, s) = (cos_t(), sin_t());
+        let [a, b, d] = &self.comps;
+        match (self.frame, target) {
+            (x, y) if x == y => self.clone(),
+            (Trihedron::IJK, Trihedron::Ijk) => Vector::new(
+                target,
+                a.clone(),
+                b * &c + d * &s,
+                -(b * &s) + d * &c,
+            ),
+            _ => Vector::new(target, a.clone(), b * &c - d * &s, b * &s + d * &c),
+        }
+    }
+
+    /// Sum, in the frame of `self`.
+    pub fn add(&self, o: &Vector) -> Self {
+        let o = o.to(self.frame);
+        Vector::new(
+            self.frame,
+            &self.comps[0] + &o.comps[0],
+            &self.comps[1] + &o.comps[1],
+            &self.comps[2] + &o.comps[2],
+        )
+    }
+
+    /// Difference, in the frame of `self`.
+    pub fn sub(&self, o: &Vector) -> Self {
+        self.add(&o.scale(&Atom::num(-1)))
+    }
+
+    /// Product by a scalar.
+    pub fn scale(&self, k: &Atom) -> Self {
+        Vector::new(
+            self.frame,
+            k * &self.comps[0],
+            k * &self.comps[1],
+            k * &self.comps[2],
+        )
+    }
+
+    /// Scalar product (both trihedra are orthonormal).
+    pub fn dot(&self, o: &Vector) -> Atom {
+        let o = o.to(self.frame);
+        &self.comps[0] * &o.comps[0] + &self.comps[1] * &o.comps[1] + &self.comps[2] * &o.comps[2]
+    }
+
+    /// Grassmann's product $|ab$ (n° 1): the velocity of the end of `b` under the rotation
+    /// `self`, or the moment about the origin of the force `b` applied at the end of `self`.
+    /// Both trihedra are direct ($|IJ = K$, $|Ij = k$), so it is the cross product.
+    pub fn cross(&self, o: &Vector) -> Self {
+        let o = o.to(self.frame);
+        let [a1, a2, a3] = &self.comps;
+        let [b1, b2, b3] = &o.comps;
+        Vector::new(self.frame, a2 * b3 - a3 * b2, a3 * b1 - a1 * b3, a1 * b2 - a2 * b1)
+    }
+
+    /// Applies `f` to every component.
+    pub fn map(&self, f: impl Fn(&Atom) -> Atom) -> Self {
+        Vector::new(self.frame, f(&self.comps[0]), f(&self.comps[1]), f(&self.comps[2]))
+    }
+
+    /// Whether all components vanish identically (see [`is_zero`]).
+    pub fn is_zero(&self) -> bool {
+        self.comps.iter().all(is_zero)
+    }
+
+    /// Time derivative of the vector (n° 3): derivative of the components plus $|\omega v$,
+    /// with $\omega = nK$ for OIJK and $\omega = \Phi = pI + nK$ for OIjk. `p` and `n` are the
+    /// fall and turning rates as expressions (for example `n` may be `r/cos θ`).
+    pub fn derivative(&self, p: &Atom, n: &Atom) -> Self {
+        let omega = match self.frame {
+            Trihedron::IJK => Vector::new(Trihedron::IJK, Atom::num(0), Atom::num(0), n.clone()),
+            Trihedron::Ijk => {
+                Vector::new(Trihedron::IJK, p.clone(), Atom::num(0), n.clone()).to(Trihedron::Ijk)
+            }
+        };
+        self.map(time_derivative).add(&omega.cross(self))
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    //! Formulas (4)–(6) of n° 3 as printed, against the frame rules.
+    use super::*;
+
+    fn ijk(a: &str, b: &str, c: &str) -> Vector {
+        Vector::new(Trihedron::Ijk, from_trig(&expr(a)), from_trig(&expr(b)), from_trig(&expr(c)))
+    }
+
+    fn same(a: &Vector, b: &Vector) -> bool {
+        a.sub(b).is_zero()
+    }
+
+    #[test]
+    fn formula_4_derivatives_of_i_and_j_big() {
+        let (p, n) = (var("p"), var("n"));
+        let i = Vector::unit(Trihedron::IJK, 0);
+        let j_big = Vector::unit(Trihedron::IJK, 1);
+        // I' = Jn = n(j cos θ − k sin θ) = r(j − k tan θ) with r = n cos θ.
+        let di = i.derivative(&p, &n);
+        assert!(same(&di, &j_big.scale(&n)));
+        assert!(same(&di, &ijk("0", "n*cos(theta)", "-n*sin(theta)")));
+        let r_form = ijk("0", "r", "-r*tan(theta)").map(|c| {
+            c.replace(var("r").to_pattern()).with((var("n") * cos_t()).to_pattern())
+        });
+        assert!(same(&di, &r_form));
+        // J' = −In.
+        let dj = j_big.derivative(&p, &n);
+        assert!(same(&dj, &i.scale(&-n.clone())));
+    }
+
+    #[test]
+    fn formula_5_derivatives_of_j_and_k() {
+        let (p, n) = (var("p"), var("n"));
+        let dj = Vector::unit(Trihedron::Ijk, 1).derivative(&p, &n);
+        let dk = Vector::unit(Trihedron::Ijk, 2).derivative(&p, &n);
+        assert!(same(&dj, &ijk("-n*cos(theta)", "0", "p")));
+        assert!(same(&dk, &ijk("n*sin(theta)", "-p", "0")));
+        // r-forms: j' = pk − Ir, k' = −pj + I r tan θ.
+        let r = var("n") * cos_t();
+        assert!(same(&dj, &Vector::new(Trihedron::Ijk, -r.clone(), Atom::num(0), p.clone())));
+        assert!(same(
+            &dk,
+            &Vector::new(Trihedron::Ijk, r * sin_t() / cos_t(), -p.clone(), Atom::num(0))
+        ));
+    }
+
+    #[test]
+    fn formula_6_derivative_of_phi() {
+        let (p, n) = (var("p"), var("n"));
+        let phi = Vector::new(Trihedron::IJK, p.clone(), Atom::num(0), n.clone());
+        let expected = Vector::new(Trihedron::IJK, var("dp"), &p * &n, var("dn"));
+        assert!(same(&phi.derivative(&p, &n), &expected));
+        // The same vector given in OIjk has the same derivative.
+        let phi_ijk = phi.to(Trihedron::Ijk);
+        assert!(same(&phi_ijk.derivative(&p, &n), &expected));
+    }
+
+    #[test]
+    fn grassmann_products_of_units() {
+        let i = Vector::unit(Trihedron::IJK, 0);
+        let j_big = Vector::unit(Trihedron::IJK, 1);
+        let k_big = Vector::unit(Trihedron::IJK, 2);
+        assert!(same(&i.cross(&j_big), &k_big));
+        let j = Vector::unit(Trihedron::Ijk, 1);
+        let k = Vector::unit(Trihedron::Ijk, 2);
+        assert!(same(&i.cross(&j), &k));
+        // |Kk = −I sin θ (n° 5 uses |kK = I sin θ).
+        assert!(same(&k.cross(&k_big), &i.scale(&sin_t())));
+        assert!(!same(&k.cross(&k_big), &i));
+    }
+
+    #[test]
+    fn trig_reduction_is_exact() {
+        let e = from_trig(&expr("sin(theta)^4 + 2*sin(theta)^2*cos(theta)^2 + cos(theta)^4 - 1"));
+        assert!(is_zero(&e));
+        let t = from_trig(&expr("tan(theta)*cos(theta) - sin(theta)"));
+        assert!(is_zero(&t));
+        assert!(!is_zero(&from_trig(&expr("sin(theta)^2 - 1"))));
+    }
+}
