@@ -1,0 +1,523 @@
+//! Writes the Rust module of a validated [`Scene`].
+//!
+//! The evaluator is the specialised program printed as flat SSA: one `let` per instruction,
+//! named after the IR value, using only `f64` arithmetic and the `f64` methods `sqrt`, `sin`,
+//! `cos`, `tan`, `atan2` and `powi`. Constants are bound once per function as `f64` literals in
+//! Rust's shortest round-trip form, so the emitted value is the IR's value bit for bit.
+//!
+//! Programs with more than `max_fn_ops` operations are cut, in program order, into chunks of at
+//! most that many operations. Each chunk becomes an `#[inline(never)]` function that takes the
+//! values it needs from earlier chunks (or the arguments) as an array and returns the values
+//! that later chunks or the outputs need; `eval` then only glues the chunks together. This keeps
+//! every function small enough for rustc, whose compile time grows badly with function size.
+
+use std::collections::{BTreeSet, HashSet};
+
+use carvallo_ir::{Op, Program, Value};
+use proc_macro2::{Ident, Literal, Span, TokenStream};
+use quote::{format_ident, quote};
+
+use crate::validate::Scene;
+
+/// Default largest number of operations in one generated function.
+pub const DEFAULT_MAX_FN_OPS: usize = 400;
+
+/// Items of a scene module that live in the value namespace: locals must not be named so.
+const RESERVED: &[&str] = &[
+    "MODEL",
+    "PARAMS",
+    "INPUTS",
+    "OUTPUTS",
+    "FIXED",
+    "OP_COUNT",
+    "OP_COUNT_BY_OP",
+    "SOURCE_OP_COUNT",
+    "eval",
+    "eval_array",
+];
+
+/// Lints that flat generated arithmetic trips for no fault of the user.
+fn allow_lints() -> TokenStream {
+    quote! {
+        #[allow(
+            non_snake_case,
+            clippy::approx_constant,
+            clippy::excessive_precision,
+            clippy::unreadable_literal,
+            clippy::too_many_lines,
+            clippy::many_single_char_names,
+            clippy::suboptimal_flops,
+            clippy::neg_multiply,
+            clippy::let_and_return
+        )]
+    }
+}
+
+/// `name` as a Rust identifier: itself, or a raw identifier (`r#type`) for a keyword that
+/// allows one; `None` for names that cannot be identifiers at all (`self`, `_`, `1x`, ...).
+pub fn rust_ident(name: &str, span: Span) -> Option<Ident> {
+    if let Ok(mut ident) = syn::parse_str::<Ident>(name) {
+        ident.set_span(span);
+        return Some(ident);
+    }
+    let mut chars = name.chars();
+    let starts_well = matches!(chars.next(), Some(c) if c.is_ascii_alphabetic() || c == '_');
+    let word = starts_well && chars.all(|c| c.is_ascii_alphanumeric() || c == '_');
+    if !word || ["self", "Self", "super", "crate", "_"].contains(&name) {
+        return None;
+    }
+    Some(Ident::new_raw(name, span))
+}
+
+/// The identifier of a struct field for the IR name `name` (validation has checked that there
+/// is one; the positional fallback keeps this function total).
+fn field(name: &str, index: usize) -> Ident {
+    rust_ident(name, Span::call_site()).unwrap_or_else(|| format_ident!("field_{}", index))
+}
+
+/// A finite `f64` as an exact suffixed literal (`-1.5_f64`), non-finite ones as the `f64`
+/// associated constants.
+pub fn float(c: f64) -> TokenStream {
+    if c.is_nan() {
+        return quote!(f64::NAN);
+    }
+    if c.is_infinite() {
+        return if c > 0.0 { quote!(f64::INFINITY) } else { quote!(f64::NEG_INFINITY) };
+    }
+    let magnitude = match format!("{:?}_f64", c.abs()).parse::<Literal>() {
+        Ok(lit) => quote!(#lit),
+        Err(_) => {
+            let bits = Literal::u64_unsuffixed(c.abs().to_bits());
+            quote!(f64::from_bits(#bits))
+        }
+    };
+    if c.is_sign_negative() {
+        quote!(-#magnitude)
+    } else {
+        magnitude
+    }
+}
+
+/// An `i32` literal, with a separate minus sign.
+fn int(k: i32) -> TokenStream {
+    let lit = Literal::i64_unsuffixed(i64::from(k).abs());
+    if k < 0 {
+        quote!(-#lit)
+    } else {
+        quote!(#lit)
+    }
+}
+
+/// The local variable of every value of the program.
+struct Locals {
+    params: Vec<Ident>,
+    inputs: Vec<Ident>,
+    insts: Vec<Ident>,
+}
+
+impl Locals {
+    /// Locals named after the IR values; a name that is taken by a module item or cannot be an
+    /// identifier gets `_` appended until it is free.
+    fn new(p: &Program, parts: usize) -> Locals {
+        let mut taken: HashSet<String> = RESERVED.iter().map(|s| s.to_string()).collect();
+        taken.extend((0..parts).map(|k| format!("part_{k}")));
+        let mut local = |name: &str| {
+            let mut candidate = name.to_string();
+            loop {
+                if !taken.contains(&candidate) {
+                    if let Some(ident) = rust_ident(&candidate, Span::call_site()) {
+                        taken.insert(candidate);
+                        return ident;
+                    }
+                }
+                candidate.push('_');
+            }
+        };
+        Locals {
+            params: p.params.iter().map(|n| local(n)).collect(),
+            inputs: p.inputs.iter().map(|n| local(n)).collect(),
+            insts: p.insts.iter().map(|i| local(&i.name)).collect(),
+        }
+    }
+
+    fn get(&self, v: Value) -> &Ident {
+        match v {
+            Value::Param(i) => &self.params[i as usize],
+            Value::Input(i) => &self.inputs[i as usize],
+            Value::Inst(i) => &self.insts[i as usize],
+        }
+    }
+}
+
+/// The right-hand side of `let` for one operation.
+fn op_expr(op: &Op, l: &Locals) -> TokenStream {
+    match *op {
+        Op::Const(c) => float(c),
+        Op::Neg(a) => {
+            let a = l.get(a);
+            quote!(-#a)
+        }
+        Op::Add(a, b) => {
+            let (a, b) = (l.get(a), l.get(b));
+            quote!(#a + #b)
+        }
+        Op::Sub(a, b) => {
+            let (a, b) = (l.get(a), l.get(b));
+            quote!(#a - #b)
+        }
+        Op::Mul(a, b) => {
+            let (a, b) = (l.get(a), l.get(b));
+            quote!(#a * #b)
+        }
+        Op::Div(a, b) => {
+            let (a, b) = (l.get(a), l.get(b));
+            quote!(#a / #b)
+        }
+        Op::Powi(a, k) => {
+            let (a, k) = (l.get(a), int(k));
+            quote!(#a.powi(#k))
+        }
+        Op::Sqrt(a) => {
+            let a = l.get(a);
+            quote!(#a.sqrt())
+        }
+        Op::Sin(a) => {
+            let a = l.get(a);
+            quote!(#a.sin())
+        }
+        Op::Cos(a) => {
+            let a = l.get(a);
+            quote!(#a.cos())
+        }
+        Op::Tan(a) => {
+            let a = l.get(a);
+            quote!(#a.tan())
+        }
+        Op::Atan2(y, x) => {
+            let (y, x) = (l.get(y), l.get(x));
+            quote!(#y.atan2(#x))
+        }
+    }
+}
+
+/// Whether instruction `i` of `p` is a constant.
+fn is_const(p: &Program, i: usize) -> bool {
+    matches!(p.insts[i].op, Op::Const(_))
+}
+
+/// `let` bindings for the constants among `used` (instruction indices), in program order.
+fn const_lets(p: &Program, l: &Locals, used: &BTreeSet<usize>) -> TokenStream {
+    let lets = used.iter().filter(|&&i| is_const(p, i)).map(|&i| {
+        let (name, rhs) = (&l.insts[i], op_expr(&p.insts[i].op, l));
+        quote!(let #name = #rhs;)
+    });
+    quote!(#(#lets)*)
+}
+
+/// The instruction indices among the operands of `insts` and the values `extra`.
+fn referenced(p: &Program, insts: &[usize], extra: impl Iterator<Item = Value>) -> BTreeSet<usize> {
+    insts
+        .iter()
+        .flat_map(|&i| p.insts[i].op.operands())
+        .chain(extra)
+        .filter_map(|v| match v {
+            Value::Inst(i) => Some(i as usize),
+            _ => None,
+        })
+        .collect()
+}
+
+/// The body of `eval` after the arguments are bound, plus any helper functions.
+fn body(p: &Program, l: &Locals, max_fn_ops: usize, chunks: &[Vec<usize>]) -> (TokenStream, TokenStream) {
+    let out_values = || p.outputs.iter().map(|o| o.value);
+    let lets = |insts: &[usize]| {
+        let lets = insts.iter().map(|&i| {
+            let (name, rhs) = (&l.insts[i], op_expr(&p.insts[i].op, l));
+            quote!(let #name = #rhs;)
+        });
+        quote!(#(#lets)*)
+    };
+    if chunks.len() <= 1 {
+        let work: Vec<usize> = (0..p.insts.len()).filter(|&i| !is_const(p, i)).collect();
+        let consts = const_lets(p, l, &referenced(p, &work, out_values()));
+        let ops = lets(&work);
+        return (quote!(#consts #ops), TokenStream::new());
+    }
+
+    // Chunk of each instruction and the last chunk using each value (outputs count as the
+    // chunk after the last).
+    let n = chunks.len();
+    let mut chunk_of = vec![usize::MAX; p.insts.len()];
+    for (k, c) in chunks.iter().enumerate() {
+        for &i in c {
+            chunk_of[i] = k;
+        }
+    }
+    let mut last_use = vec![0usize; p.insts.len()];
+    for (k, c) in chunks.iter().enumerate() {
+        for &i in c {
+            for v in p.insts[i].op.operands() {
+                if let Value::Inst(j) = v {
+                    last_use[j as usize] = last_use[j as usize].max(k);
+                }
+            }
+        }
+    }
+    for v in out_values() {
+        if let Value::Inst(j) = v {
+            last_use[j as usize] = n;
+        }
+    }
+
+    let mut glue = TokenStream::new();
+    let mut helpers = TokenStream::new();
+    for (k, c) in chunks.iter().enumerate() {
+        let live_in: BTreeSet<Value> = c
+            .iter()
+            .flat_map(|&i| p.insts[i].op.operands())
+            .filter(|v| match *v {
+                Value::Inst(j) => !is_const(p, j as usize) && chunk_of[j as usize] != k,
+                _ => true,
+            })
+            .collect();
+        let live_out: Vec<usize> = c.iter().copied().filter(|&i| last_use[i] > k).collect();
+        let ins: Vec<&Ident> = live_in.iter().map(|&v| l.get(v)).collect();
+        let outs: Vec<&Ident> = live_out.iter().map(|&i| &l.insts[i]).collect();
+        let (n_in, n_out) = (ins.len(), outs.len());
+        let consts = const_lets(p, l, &referenced(p, c, std::iter::empty()));
+        let ops = lets(c);
+        let name = format_ident!("part_{}", k);
+        let doc = format!(
+            " Operations {}..{} of [`eval`] (at most {max_fn_ops} per function): takes {n_in} earlier \
+             values, returns the {n_out} that later parts or the outputs use.",
+            k * max_fn_ops,
+            k * max_fn_ops + c.len(),
+        );
+        let allow = allow_lints();
+        helpers.extend(quote! {
+            #[doc = #doc]
+            #[inline(never)]
+            #allow
+            fn #name(live: &[f64; #n_in]) -> [f64; #n_out] {
+                let [#(#ins),*] = *live;
+                #consts
+                #ops
+                [#(#outs),*]
+            }
+        });
+        glue.extend(quote!(let [#(#outs),*] = #name(&[#(#ins),*]);));
+    }
+    let consts = const_lets(p, l, &referenced(p, &[], out_values()));
+    (quote!(#glue #consts), helpers)
+}
+
+/// `a`, `b` as "`a`, `b`" (or "none").
+fn names<'a>(items: impl IntoIterator<Item = &'a String>) -> String {
+    let v: Vec<String> = items.into_iter().map(|n| format!("`{n}`")).collect();
+    if v.is_empty() {
+        "none".to_string()
+    } else {
+        v.join(", ")
+    }
+}
+
+/// The module of one scene.
+pub fn emit(scene: &Scene) -> TokenStream {
+    let p = &scene.program;
+    let model = &scene.model;
+    let scene_name = scene.name.to_string();
+    let work: Vec<usize> = (0..p.insts.len()).filter(|&i| !is_const(p, i)).collect();
+    let chunks: Vec<Vec<usize>> = work.chunks(scene.max_fn_ops).map(<[usize]>::to_vec).collect();
+    let n_parts = if chunks.len() > 1 { chunks.len() } else { 0 };
+    let l = Locals::new(p, n_parts);
+    let op_count = p.op_count();
+    let total = op_count.total;
+    let by_op = op_count.by_op.iter().map(|(op, n)| quote!((#op, #n)));
+    let source_total = scene.source_op_count;
+
+    let params = &p.params;
+    let inputs = &p.inputs;
+    let outputs: Vec<&String> = p.outputs.iter().map(|o| &o.name).collect();
+    let fixed_names = scene.fixed.iter().map(|(n, _)| n);
+    let fixed_values = scene.fixed.iter().map(|(_, v)| float(*v));
+    let ir_path = scene.ir_path.to_string_lossy().into_owned();
+    let ir_display = &scene.ir_display;
+
+    // Structs.
+    let arg_names: Vec<&String> = params.iter().chain(inputs).collect();
+    let arg_fields: Vec<Ident> = arg_names.iter().enumerate().map(|(i, n)| field(n, i)).collect();
+    let arg_docs = params
+        .iter()
+        .map(|n| format!(" Parameter `{n}` of model `{model}`."))
+        .chain(inputs.iter().map(|n| format!(" Input `{n}` of model `{model}`.")));
+    let arg_locals: Vec<&Ident> = (0..params.len() as u32)
+        .map(|i| l.get(Value::Param(i)))
+        .chain((0..inputs.len() as u32).map(|i| l.get(Value::Input(i))))
+        .collect();
+    let arg_pattern = arg_fields.iter().zip(&arg_locals).map(|(f, v)| {
+        if f == *v {
+            quote!(#f)
+        } else {
+            quote!(#f: #v)
+        }
+    });
+    let n_args = arg_fields.len();
+    let out_fields: Vec<Ident> = outputs.iter().enumerate().map(|(i, n)| field(n, i)).collect();
+    let out_docs = outputs.iter().map(|n| format!(" Output `{n}` of model `{model}`."));
+    let out_values = p.outputs.iter().zip(&out_fields).map(|(o, f)| {
+        let v = l.get(o.value);
+        if f == v {
+            quote!(#f)
+        } else {
+            quote!(#f: #v)
+        }
+    });
+    let n_outs = out_fields.len();
+    let arg_tmp: Vec<Ident> = (0..n_args).map(|i| format_ident!("v{}", i)).collect();
+    let out_tmp: Vec<Ident> = (0..n_outs).map(|i| format_ident!("v{}", i)).collect();
+
+    // Docs.
+    let fixed_text = if scene.fixed.is_empty() {
+        "none".to_string()
+    } else {
+        scene.fixed.iter().map(|(n, v)| format!("`{n}` = {v:?}")).collect::<Vec<_>>().join(", ")
+    };
+    let summary = format!(
+        " Scene `{scene_name}` of model `{model}`, generated by `scene!` from `{ir_display}`."
+    );
+    let details = [
+        format!(" Fixed parameters (folded into the code): {fixed_text}."),
+        format!(" Free parameters: {}.", names(params.iter())),
+        format!(" Inputs: {}.", names(inputs.iter())),
+        format!(" Outputs: {}.", names(outputs.iter().copied())),
+        format!(
+            " Operations: {total} (the whole model program has {source_total})."
+        ),
+    ];
+    let has_doc = scene.attrs.iter().any(|a| a.path().is_ident("doc"));
+    let mod_doc = if has_doc {
+        quote!(#[doc = ""] #[doc = #summary] #(#[doc = ""] #[doc = #details])*)
+    } else {
+        quote!(#[doc = #summary] #(#[doc = ""] #[doc = #details])*)
+    };
+    let eval_doc = [
+        format!(" Evaluates the outputs of scene `{scene_name}` (model `{model}`)."),
+        String::new(),
+        format!(" Arguments ([`Args`]): free parameters {}; inputs {}.", names(params.iter()), names(inputs.iter())),
+        format!(" Fixed parameters: {fixed_text}."),
+        format!(" Returns ([`Out`]): {}.", names(outputs.iter().copied())),
+        String::new(),
+        format!(
+            " Straight-line `f64` code of {total} operations: no allocation, no panics."
+        ),
+    ];
+    let eval_array_doc = [
+        format!(" [`eval`] on arrays: the {n_args} arguments in the order of [`PARAMS`] then [`INPUTS`]"),
+        format!(" ({}), the {n_outs} outputs in the order of [`OUTPUTS`].", names(arg_names.iter().copied())),
+    ];
+
+    let (body, helpers) = body(p, &l, scene.max_fn_ops, &chunks);
+    let allow = allow_lints();
+    let attrs = &scene.attrs;
+    let vis = &scene.vis;
+    let name = &scene.name;
+
+    quote! {
+        #(#attrs)*
+        #mod_doc
+        #vis mod #name {
+            /// The model this scene evaluates.
+            pub const MODEL: &str = #model;
+            /// The free parameters (the model's parameters that are neither fixed nor unused),
+            /// in the order of the fields of [`Args`].
+            pub const PARAMS: &[&str] = &[#(#params),*];
+            /// The inputs the outputs depend on, in the order of the fields of [`Args`] after
+            /// the parameters.
+            pub const INPUTS: &[&str] = &[#(#inputs),*];
+            /// The outputs, in the order of the fields of [`Out`].
+            pub const OUTPUTS: &[&str] = &[#(#outputs),*];
+            /// The fixed parameters and the values folded into the code.
+            pub const FIXED: &[(&str, f64)] = &[#((#fixed_names, #fixed_values)),*];
+            /// Number of floating-point operations of [`eval`] (constants not counted).
+            pub const OP_COUNT: usize = #total;
+            /// [`OP_COUNT`] by operation, as `(mnemonic, count)` sorted by mnemonic.
+            pub const OP_COUNT_BY_OP: &[(&str, usize)] = &[#(#by_op),*];
+            /// Number of operations of the model's whole program, before fixing and pruning.
+            pub const SOURCE_OP_COUNT: usize = #source_total;
+
+            // Rebuild the calling crate when the IR file changes.
+            const _: &str = include_str!(#ir_path);
+
+            /// The arguments of [`eval`]: free parameters, then inputs.
+            #[derive(Clone, Copy, Debug, PartialEq, Default)]
+            #allow
+            pub struct Args {
+                #(#[doc = #arg_docs] pub #arg_fields: f64,)*
+            }
+
+            impl Args {
+                /// Number of fields.
+                pub const LEN: usize = #n_args;
+
+                /// The arguments from an array in field order.
+                #[must_use]
+                #allow
+                pub const fn from_array(a: [f64; #n_args]) -> Self {
+                    let [#(#arg_tmp),*] = a;
+                    Args { #(#arg_fields: #arg_tmp),* }
+                }
+
+                /// The arguments as an array in field order.
+                #[must_use]
+                pub const fn to_array(&self) -> [f64; #n_args] {
+                    [#(self.#arg_fields),*]
+                }
+            }
+
+            /// The outputs of [`eval`].
+            #[derive(Clone, Copy, Debug, PartialEq, Default)]
+            #allow
+            pub struct Out {
+                #(#[doc = #out_docs] pub #out_fields: f64,)*
+            }
+
+            impl Out {
+                /// Number of fields.
+                pub const LEN: usize = #n_outs;
+
+                /// The outputs from an array in field order.
+                #[must_use]
+                #allow
+                pub const fn from_array(a: [f64; #n_outs]) -> Self {
+                    let [#(#out_tmp),*] = a;
+                    Out { #(#out_fields: #out_tmp),* }
+                }
+
+                /// The outputs as an array in field order.
+                #[must_use]
+                pub const fn to_array(&self) -> [f64; #n_outs] {
+                    [#(self.#out_fields),*]
+                }
+            }
+
+            #(#[doc = #eval_doc])*
+            #[inline]
+            #[must_use]
+            #allow
+            pub fn eval(a: &Args) -> Out {
+                let Args { #(#arg_pattern),* } = *a;
+                #body
+                Out { #(#out_values),* }
+            }
+
+            #(#[doc = #eval_array_doc])*
+            #[inline]
+            #[must_use]
+            pub fn eval_array(args: &[f64; #n_args]) -> [f64; #n_outs] {
+                eval(&Args::from_array(*args)).to_array()
+            }
+
+            #helpers
+        }
+    }
+}

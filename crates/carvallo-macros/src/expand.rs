@@ -1,0 +1,68 @@
+//! The expansion of `scene!` on `proc_macro2` token streams: parse, validate, emit.
+//!
+//! The proc-macro entry point in `lib.rs` only converts between `proc_macro` and `proc_macro2`
+//! and supplies a [`Context`] from the compiler; everything else is here, so the unit tests can
+//! run the whole expansion outside the compiler with a context of their own.
+
+use std::path::{Path, PathBuf};
+
+use proc_macro2::TokenStream;
+
+use crate::parse::SceneInput;
+use crate::validate::{validate, Errors};
+
+/// Where the expansion finds its files.
+pub struct Context {
+    /// The directory that relative `path:` values are resolved against: the directory of the
+    /// source file that invokes the macro.
+    pub source_dir: PathBuf,
+    /// The workspace's `generated/` directory, where `model: NAME` finds `NAME.ir`.
+    pub generated_dir: PathBuf,
+}
+
+impl Context {
+    /// The context of a macro invocation being compiled: the invoking file's directory as the
+    /// compiler reports it (like `include_str!`), or the calling crate's `CARGO_MANIFEST_DIR`
+    /// when the compiler reports no file (for example in an IDE's macro server).
+    pub fn from_compiler() -> Self {
+        let source_dir = proc_macro::Span::call_site()
+            .local_file()
+            .and_then(|f| f.parent().map(Path::to_path_buf))
+            .or_else(|| std::env::var_os("CARGO_MANIFEST_DIR").map(PathBuf::from))
+            .unwrap_or_default();
+        Context { source_dir, generated_dir: generated_dir() }
+    }
+}
+
+/// The workspace's `generated/` directory, found from this crate's manifest directory.
+pub fn generated_dir() -> PathBuf {
+    let dir = Path::new(env!("CARGO_MANIFEST_DIR")).join("..").join("..").join("generated");
+    std::fs::canonicalize(&dir).unwrap_or(dir)
+}
+
+/// Expands every scene of `input`: the modules of the valid scenes, followed by one
+/// `compile_error!` per problem found in the others.
+pub fn expand(input: SceneInput, ctx: &Context) -> TokenStream {
+    let mut out = TokenStream::new();
+    let mut errors = Errors::default();
+    for decl in input.scenes {
+        match validate(decl, ctx) {
+            Ok(scene) => out.extend(crate::emit::emit(&scene)),
+            Err(e) => errors.push(e),
+        }
+    }
+    if let Err(e) = errors.check() {
+        out.extend(e.into_compile_error());
+    }
+    out
+}
+
+/// [`expand`] on raw tokens, as the compiler would call it (parse errors become
+/// `compile_error!` too).
+#[cfg(test)]
+pub fn expand_tokens(input: TokenStream, ctx: &Context) -> TokenStream {
+    match syn::parse2::<SceneInput>(input) {
+        Ok(scenes) => expand(scenes, ctx),
+        Err(e) => e.into_compile_error(),
+    }
+}

@@ -1,0 +1,1 @@
+//! Unit tests of the whole expansion on the fixture programs in `tests/fixtures/`.
