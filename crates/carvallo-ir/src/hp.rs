@@ -98,7 +98,7 @@ pub fn eval(
     let prec = precision_bits;
     let mut cc = Consts::new()
         .map_err(|e| IrError::invalid(format!("cannot set up astro-float constants: {e:?}")))?;
-    let from = |x: f64| BigFloat::from_f64(x, prec);
+    let from = |x: f64| from_f64(x, prec);
     let params: Vec<BigFloat> = params.iter().map(|&x| from(x)).collect();
     let inputs: Vec<BigFloat> = inputs.iter().map(|&x| from(x)).collect();
     let mut vals: Vec<BigFloat> = Vec::with_capacity(p.insts.len());
@@ -151,6 +151,19 @@ pub fn eval_f64(
     precision_bits: usize,
 ) -> Result<Vec<f64>, IrError> {
     Ok(eval(p, params, inputs, precision_bits)?.iter().map(to_f64).collect())
+}
+
+/// The exact value of `x` with precision `p`.
+///
+/// `BigFloat::from_f64` (astro-float 0.9) halves subnormal numbers, so these are scaled into the
+/// normal range first and scaled back exactly.
+pub fn from_f64(x: f64, p: usize) -> BigFloat {
+    if x != 0.0 && x.abs() < f64::MIN_POSITIVE {
+        let scale = pow2(64);
+        BigFloat::from_f64(x * scale, p).div(&BigFloat::from_f64(scale, p), p, RM)
+    } else {
+        BigFloat::from_f64(x, p)
+    }
 }
 
 /// $2^k$ for $-1074 \le k \le 1023$, exactly.
