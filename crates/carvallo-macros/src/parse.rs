@@ -191,7 +191,7 @@ mod tests {
             (quote!(pub struct A;), "expected `mod`"),
             (quote!(mod a { colour: red }), "unknown scene key `colour`"),
             (quote!(mod a { model hoop }), "expected `:`"),
-            (quote!(mod a { model: "hoop" }), "expected identifier"),
+            (quote!(mod a { model: "hoop" }), "expected ident"),
             (quote!(mod a { path: hoop }), "expected string literal"),
             (quote!(mod a { outputs: { x } }), "expected square brackets"),
             (quote!(mod a { fixed: [R: 1.0] }), "expected curly braces"),
