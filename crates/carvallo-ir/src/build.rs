@@ -178,10 +178,7 @@ impl Builder {
     /// Declares the output `name` returning `value`. Output names must be unique; a repeated
     /// name is a programming error of the caller and panics.
     pub fn output(&mut self, name: &str, value: Value) {
-        assert!(
-            self.program.output(name).is_none(),
-            "output {name} declared twice in IR builder"
-        );
+        assert!(self.program.output(name).is_none(), "output {name} declared twice in IR builder");
         self.program.outputs.push(Output { name: name.to_string(), value });
     }
 

@@ -234,3 +234,32 @@ pub fn to_f64(x: &BigFloat) -> f64 {
     // q <= 2^53 is exact in f64 and 2^ulp is a power of two: the product is exact or overflows.
     (q as f64) * pow2(ulp) * sign
 }
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn pow2_is_exact_over_the_whole_range() {
+        assert_eq!(pow2(0), 1.0);
+        assert_eq!(pow2(-1074), 5e-324);
+        assert_eq!(pow2(-1022), f64::MIN_POSITIVE);
+        assert_eq!(pow2(1023), 2f64.powi(1023));
+        assert_eq!(pow2(-1023), f64::MIN_POSITIVE / 2.0);
+    }
+
+    #[test]
+    fn from_f64_and_to_f64_round_trip() {
+        for x in [0.0, 1.0, -2.5, 5e-324, -1e-310, f64::MAX, f64::MIN_POSITIVE, 0.1] {
+            assert_eq!(to_f64(&from_f64(x, 128)).to_bits(), x.to_bits(), "{x:e}");
+        }
+        assert!(to_f64(&BigFloat::nan(None)).is_nan());
+        let huge = from_f64(f64::MAX, 128).mul(&from_f64(2.0, 128), 128, RM);
+        assert_eq!(to_f64(&huge), f64::INFINITY);
+        // Half the smallest subnormal is a tie and rounds to even (zero); a bit more rounds up.
+        let half = from_f64(5e-324, 128).div(&from_f64(2.0, 128), 128, RM);
+        assert_eq!(to_f64(&half), 0.0);
+        let more = half.mul(&from_f64(1.0000001, 128), 128, RM);
+        assert_eq!(to_f64(&more), 5e-324);
+    }
+}

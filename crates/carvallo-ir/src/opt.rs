@@ -41,7 +41,10 @@ fn retain_insts(p: &Program, keep: &[bool]) -> Program {
     for (i, inst) in p.insts.iter().enumerate() {
         if keep[i] {
             map[i] = insts.len() as u32;
-            insts.push(Inst { name: inst.name.clone(), op: inst.op.map_operands(|v| remap(&map, v)) });
+            insts.push(Inst {
+                name: inst.name.clone(),
+                op: inst.op.map_operands(|v| remap(&map, v)),
+            });
         }
     }
     let outputs = p
@@ -290,7 +293,11 @@ impl Program {
     pub fn prune_arguments(&self) -> Program {
         let mut used_p = vec![false; self.params.len()];
         let mut used_i = vec![false; self.inputs.len()];
-        let uses = self.insts.iter().flat_map(|i| i.op.operands()).chain(self.outputs.iter().map(|o| o.value));
+        let uses = self
+            .insts
+            .iter()
+            .flat_map(|i| i.op.operands())
+            .chain(self.outputs.iter().map(|o| o.value));
         for v in uses {
             match v {
                 Value::Param(i) => used_p[i as usize] = true,
@@ -332,5 +339,88 @@ impl Program {
                 .map(|o| Output { name: o.name.clone(), value: remap(o.value) })
                 .collect(),
         }
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use crate::Program;
+
+    /// `let y = EXPR` over the input `x` and the constants `zero`, `one`, `two`, folded.
+    fn fold(body: &str) -> String {
+        let text = format!(
+            "carvallo-ir 1\nmodel m\ninput x\nlet zero = const 0.0\nlet one = const 1.0\n\
+             let two = const 2.0\n{body}"
+        );
+        let p = Program::parse(&text).unwrap().fold_constants();
+        p.validate().unwrap();
+        p.to_text().trim_start_matches("carvallo-ir 1\nmodel m\ninput x\n").to_string()
+    }
+
+    #[test]
+    fn identities_become_the_operand() {
+        for e in [
+            "mul x one",
+            "mul one x",
+            "div x one",
+            "add x zero",
+            "add zero x",
+            "sub x zero",
+            "powi x 1",
+        ] {
+            assert_eq!(fold(&format!("let y = {e}\noutput y = y\n")), "output y = x\n", "{e}");
+        }
+        assert_eq!(fold("let a = neg x\nlet b = neg a\noutput y = b\n"), "output y = x\n");
+    }
+
+    #[test]
+    fn powi_zero_is_one_and_constants_fold() {
+        assert_eq!(
+            fold("let y = powi x 0\noutput y = y\n"),
+            "let one = const 1.0\noutput y = one\n"
+        );
+        assert_eq!(
+            fold("let a = add two one\nlet b = sqrt a\nlet c = mul b x\noutput y = c\n"),
+            format!("let b = const {:?}\nlet c = mul b x\noutput y = c\n", 3f64.sqrt())
+        );
+        // Equal constants are merged, the first name wins.
+        assert_eq!(
+            fold("let a = const 2.0\nlet b = mul a x\noutput y = b\n"),
+            "let two = const 2.0\nlet b = mul two x\noutput y = b\n"
+        );
+    }
+
+    #[test]
+    fn non_finite_results_are_not_folded() {
+        assert_eq!(
+            fold("let a = div one zero\nlet b = mul a x\noutput y = b\n"),
+            "let zero = const 0.0\nlet one = const 1.0\nlet a = div one zero\nlet b = mul a x\n\
+             output y = b\n"
+        );
+    }
+
+    #[test]
+    fn errors_name_the_offending_value() {
+        let p = Program::parse(
+            "carvallo-ir 1\nmodel m\nparam R\ninput x\nlet a = mul R x\noutput y = a\n",
+        )
+        .unwrap();
+        assert_eq!(p.fix_params(&[("g", 1.0)]).unwrap_err().to_string(), "unknown parameter \"g\"");
+        assert_eq!(
+            p.fix_params(&[("R", 1.0), ("R", 2.0)]).unwrap_err().to_string(),
+            "invalid program: parameter \"R\" fixed twice"
+        );
+        assert_eq!(
+            p.fix_params(&[("R", f64::NAN)]).unwrap_err().to_string(),
+            "invalid program: non-finite value NaN for parameter \"R\""
+        );
+        assert_eq!(p.select_outputs(&["z"]).unwrap_err().to_string(), "unknown output \"z\"");
+        assert_eq!(
+            p.select_outputs(&["y", "y"]).unwrap_err().to_string(),
+            "invalid program: output \"y\" selected twice"
+        );
+        // Fixing R = 1 folds `mul R x` to `x`; the input stays, the constant goes.
+        let q = p.fix_params(&[("R", 1.0)]).unwrap();
+        assert_eq!(q.to_text(), "carvallo-ir 1\nmodel m\ninput x\noutput y = x\n");
     }
 }

@@ -130,7 +130,12 @@ impl<'a> Parser<'a> {
             .ok_or_else(|| Self::at(line, t, format!("use of undefined value {:?}", t.text)))
     }
 
-    fn enter(&mut self, line: &Line<'a>, kw: &Token<'a>, section: Section) -> Result<(), ParseError> {
+    fn enter(
+        &mut self,
+        line: &Line<'a>,
+        kw: &Token<'a>,
+        section: Section,
+    ) -> Result<(), ParseError> {
         if self.section > section {
             let later = match self.section {
                 Section::Inputs => "input",
@@ -140,7 +145,10 @@ impl<'a> Parser<'a> {
             return Err(Self::at(
                 line,
                 kw,
-                format!("{:?} line after {later:?} lines (order is param, input, let, output)", kw.text),
+                format!(
+                    "{:?} line after {later:?} lines (order is param, input, let, output)",
+                    kw.text
+                ),
             ));
         }
         self.section = section;
@@ -160,7 +168,11 @@ impl<'a> Parser<'a> {
                 }
                 let v = Self::token(line, 1, "the format version")?;
                 if v.text != "1" {
-                    return Err(Self::at(line, &v, format!("unsupported format version {:?}", v.text)));
+                    return Err(Self::at(
+                        line,
+                        &v,
+                        format!("unsupported format version {:?}", v.text),
+                    ));
                 }
                 Self::no_trailing(line, 2)?;
                 self.section = Section::Model;
@@ -254,7 +266,11 @@ impl<'a> Parser<'a> {
             return Err(Self::at(
                 line,
                 &t,
-                format!("operation {} takes {arity} argument{plural}, found {}", t.text, args.len()),
+                format!(
+                    "operation {} takes {arity} argument{plural}, found {}",
+                    t.text,
+                    args.len()
+                ),
             ));
         }
         if t.text == "const" {
@@ -323,8 +339,33 @@ pub(crate) fn parse(text: &str) -> Result<Program, ParseError> {
         p.statement(&line)?;
     }
     match p.section {
-        Section::Version => Err(err(last.0, last.1, format!("missing version line `{VERSION_LINE}`"))),
+        Section::Version => {
+            Err(err(last.0, last.1, format!("missing version line `{VERSION_LINE}`")))
+        }
         Section::Model => Err(err(last.0, last.1, "missing model line `model NAME`".to_string())),
         _ => Ok(p.program),
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn names() {
+        for ok in ["a", "_", "_x1", "theta", "A_b_9"] {
+            assert!(is_valid_name(ok), "{ok}");
+        }
+        for bad in ["", "1a", "a-b", "é", "a b", "a.b", "-"] {
+            assert!(!is_valid_name(bad), "{bad}");
+        }
+    }
+
+    #[test]
+    fn columns_count_characters() {
+        let l = split_line(1, "éé\tab  c # d");
+        let cols: Vec<(usize, &str)> = l.tokens.iter().map(|t| (t.column, t.text)).collect();
+        assert_eq!(cols, [(1, "éé"), (4, "ab"), (8, "c")]);
+        assert_eq!(l.end_column, 10);
     }
 }

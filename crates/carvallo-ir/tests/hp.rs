@@ -25,12 +25,15 @@ fn rel_err(x: &BigFloat, reference: &str) -> f64 {
 
 /// A one-input program `y = OP x` (or `OP x c` for binary ops with the constant `c`).
 fn unary(op: &str) -> Program {
-    Program::parse(&format!("carvallo-ir 1\nmodel t\ninput x\nlet y = {op} x\noutput y = y\n")).unwrap()
+    Program::parse(&format!("carvallo-ir 1\nmodel t\ninput x\nlet y = {op} x\noutput y = y\n"))
+        .unwrap()
 }
 
 fn binary(op: &str) -> Program {
-    Program::parse(&format!("carvallo-ir 1\nmodel t\ninput a\ninput b\nlet y = {op} a b\noutput y = y\n"))
-        .unwrap()
+    Program::parse(&format!(
+        "carvallo-ir 1\nmodel t\ninput a\ninput b\nlet y = {op} a b\noutput y = y\n"
+    ))
+    .unwrap()
 }
 
 /// 70-digit references (computed independently with mpmath at 70 digits).
@@ -40,7 +43,8 @@ const COS1: &str = "0.5403023058681397174009366074429766037323104206179222276700
 const TAN1: &str = "1.557407724654902230506974807458360173087250772381520038383946605698861";
 const PI: &str = "3.141592653589793238462643383279502884197169399375105820974944592307816";
 /// atan2(-3, -4).
-const ATAN2_M3_M4: &str = "-2.498091544796508851659834154562180246155658808259793438109338473594304";
+const ATAN2_M3_M4: &str =
+    "-2.498091544796508851659834154562180246155658808259793438109338473594304";
 
 /// 256 bits carry about 77 digits; the references have 70. Required: 65 correct digits.
 const TOL: f64 = 1e-65;
@@ -68,8 +72,11 @@ fn atan2_all_quadrants_and_axes() {
     let pi = |num: i32, den: i32| -> BigFloat {
         let mut cc = Consts::new().unwrap();
         let r = BigFloat::parse(PI, Radix::Dec, 512, RoundingMode::ToEven, &mut cc);
-        r.mul(&BigFloat::from_i32(num, 512), 512, RoundingMode::ToEven)
-            .div(&BigFloat::from_i32(den, 512), 512, RoundingMode::ToEven)
+        r.mul(&BigFloat::from_i32(num, 512), 512, RoundingMode::ToEven).div(
+            &BigFloat::from_i32(den, 512),
+            512,
+            RoundingMode::ToEven,
+        )
     };
     // (y, x, expected multiple of pi as num/den)
     let cases = [
@@ -105,12 +112,14 @@ fn atan2_all_quadrants_and_axes() {
 
 #[test]
 fn integer_powers_including_negative() {
-    let text = |k: i32| {
-        format!("carvallo-ir 1\nmodel t\ninput x\nlet y = powi x {k}\noutput y = y\n")
-    };
+    let text =
+        |k: i32| format!("carvallo-ir 1\nmodel t\ninput x\nlet y = powi x {k}\noutput y = y\n");
     let p = Program::parse(&text(-3)).unwrap();
     let y = hp::eval(&p, &[], &[1.5], PREC).unwrap();
-    assert!(rel_err(&y[0], "0.2962962962962962962962962962962962962962962962962962962962962962962963") < TOL);
+    assert!(
+        rel_err(&y[0], "0.2962962962962962962962962962962962962962962962962962962962962962962963")
+            < TOL
+    );
     for k in [-7, -2, -1, 0, 1, 2, 5, 11] {
         let p = Program::parse(&text(k)).unwrap();
         for x in [0.75, -1.25, 3.0] {
@@ -130,7 +139,15 @@ fn rounding_to_f64_is_correct() {
     let mut rng = ChaCha8Rng::seed_from_u64(11);
     // Exact values come back unchanged, subnormals and extremes included.
     let ident = unary("neg");
-    for x in [1.0, 0.1, 5e-324, 2.2250738585072009e-308, f64::MAX, f64::MIN_POSITIVE, 1e-310] {
+    for x in [
+        1.0,
+        0.1,
+        5e-324,
+        f64::from_bits(0x000f_ffff_ffff_ffff),
+        f64::MAX,
+        f64::MIN_POSITIVE,
+        1e-310,
+    ] {
         assert_eq!(hp::eval_f64(&ident, &[], &[-x], PREC).unwrap()[0].to_bits(), x.to_bits());
     }
     // IEEE operations are correctly rounded, so they must agree bit for bit with rounding the

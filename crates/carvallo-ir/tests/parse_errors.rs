@@ -32,7 +32,12 @@ fn missing_and_bad_headers() {
     check("carvallo-ir 2\n", 1, 13, "unsupported format version \"2\"");
     check("carvallo-ir\n", 1, 12, "expected the format version at the end of the line");
     check("carvallo-ir 1 x\n", 1, 15, "unexpected trailing token \"x\"");
-    check("carvallo-ir 1\nparam R\n", 2, 1, "expected the model line `model NAME`, found \"param\"");
+    check(
+        "carvallo-ir 1\nparam R\n",
+        2,
+        1,
+        "expected the model line `model NAME`, found \"param\"",
+    );
     check("carvallo-ir 1\nmodel\n", 2, 6, "expected the model name at the end of the line");
     check("carvallo-ir 1\nmodel 9m\n", 2, 7, "invalid name \"9m\"");
     check("carvallo-ir 1\nmodel m n\n", 2, 9, "unexpected trailing token \"n\"");
@@ -121,7 +126,12 @@ fn numbers() {
     check(&body("let a = const NaN\n"), 3, 15, "non-finite constant \"NaN\"");
     check(&body("let a = const -1e400\n"), 3, 15, "non-finite constant \"-1e400\"");
     check(&body("input x\nlet a = powi x 2.5\n"), 4, 16, "invalid i32 exponent \"2.5\"");
-    check(&body("input x\nlet a = powi x 2147483648\n"), 4, 16, "invalid i32 exponent \"2147483648\"");
+    check(
+        &body("input x\nlet a = powi x 2147483648\n"),
+        4,
+        16,
+        "invalid i32 exponent \"2147483648\"",
+    );
     check(
         &body("input x\nlet a = powi x 99999999999999999999999999999999999999999\n"),
         4,
@@ -141,7 +151,10 @@ fn numbers() {
 
 #[test]
 fn comments_and_whitespace_are_not_errors() {
-    let p = Program::parse("  # indented comment\ncarvallo-ir 1 # v\n\t\nmodel m#x\ninput x\n#\noutput y = x #").unwrap();
+    let p = Program::parse(
+        "  # indented comment\ncarvallo-ir 1 # v\n\t\nmodel m#x\ninput x\n#\noutput y = x #",
+    )
+    .unwrap();
     assert!(p.header.is_empty(), "an indented comment is not part of the header");
     assert_eq!(p.model, "m");
     assert_eq!(p.outputs.len(), 1);

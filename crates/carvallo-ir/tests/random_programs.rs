@@ -94,9 +94,21 @@ fn transformations_preserve_results() {
                 let s = p.select_outputs(&[o.name.as_str()]).unwrap();
                 s.validate().unwrap();
                 keeps_names(&p, &s);
-                let sp: Vec<f64> = s.params.iter().map(|n| params[p.params.iter().position(|x| x == n).unwrap()]).collect();
-                let si: Vec<f64> = s.inputs.iter().map(|n| inputs[p.inputs.iter().position(|x| x == n).unwrap()]).collect();
-                assert!(same(&eval(&s, &sp, &si), &want[k..k + 1]), "select {}, program {n}", o.name);
+                let sp: Vec<f64> = s
+                    .params
+                    .iter()
+                    .map(|n| params[p.params.iter().position(|x| x == n).unwrap()])
+                    .collect();
+                let si: Vec<f64> = s
+                    .inputs
+                    .iter()
+                    .map(|n| inputs[p.inputs.iter().position(|x| x == n).unwrap()])
+                    .collect();
+                assert!(
+                    same(&eval(&s, &sp, &si), &want[k..k + 1]),
+                    "select {}, program {n}",
+                    o.name
+                );
             }
         }
     }
@@ -147,8 +159,15 @@ fn interpreter_is_reusable_and_checks_lengths() {
     let e = it.eval(&params, &inputs, &mut scratch[..1], &mut out).unwrap_err();
     assert_eq!(
         e,
-        carvallo_ir::IrError::ArgumentCount { what: "scratch slots", expected: it.scratch_len(), got: 1 }
+        carvallo_ir::IrError::ArgumentCount {
+            what: "scratch slots",
+            expected: it.scratch_len(),
+            got: 1
+        }
     );
     let e = it.eval(&params, &[0.0; 9], &mut scratch, &mut out).unwrap_err();
-    assert_eq!(e.to_string(), format!("wrong number of inputs: expected {}, got 9", p.inputs.len()));
+    assert_eq!(
+        e.to_string(),
+        format!("wrong number of inputs: expected {}, got 9", p.inputs.len())
+    );
 }

@@ -22,8 +22,10 @@ pub fn random_program(rng: &mut ChaCha8Rng, max_insts: usize) -> Program {
     let n_inputs = rng.gen_range(1..=4);
     p.params = (0..n_params).map(|i| format!("p{i}")).collect();
     p.inputs = (0..n_inputs).map(|i| format!("x{i}")).collect();
-    let mut values: Vec<Value> =
-        (0..n_params).map(|i| Value::Param(i as u32)).chain((0..n_inputs).map(|i| Value::Input(i as u32))).collect();
+    let mut values: Vec<Value> = (0..n_params)
+        .map(|i| Value::Param(i as u32))
+        .chain((0..n_inputs).map(|i| Value::Input(i as u32)))
+        .collect();
     let n_insts = rng.gen_range(2..=max_insts.max(2));
     let consts = [0.0, -0.0, 1.0, 1.0, 2.0, 0.5, -1.5, 3.0, 0.1, 1e-3];
     for k in 0..n_insts {
@@ -43,7 +45,9 @@ pub fn random_program(rng: &mut ChaCha8Rng, max_insts: usize) -> Program {
             8 => Op::Cos(a),
             9 => Op::Tan(a),
             10 => Op::Atan2(a, b),
-            11 => match values.iter().rev().find(|v| matches!(v, Value::Inst(i) if matches!(p.insts[*i as usize].op, Op::Neg(_)))) {
+            11 => match values.iter().rev().find(
+                |v| matches!(v, Value::Inst(i) if matches!(p.insts[*i as usize].op, Op::Neg(_))),
+            ) {
                 Some(&v) => Op::Neg(v),
                 None => Op::Neg(a),
             },
@@ -82,7 +86,10 @@ pub fn random_args(rng: &mut ChaCha8Rng, n: usize) -> Vec<f64> {
 /// (relative condition number at most 3): sums of positives, products, quotients, square roots,
 /// `powi` with $|k| \le 2$, `atan2` of positives, and `2 + sin`, `2 + cos`, `2 + tan` of values
 /// first squashed into $(0, 1)$ by $a / (1 + a)$. Returns the program and the point.
-pub fn well_conditioned_program(rng: &mut ChaCha8Rng, n_steps: usize) -> (Program, Vec<f64>, Vec<f64>) {
+pub fn well_conditioned_program(
+    rng: &mut ChaCha8Rng,
+    n_steps: usize,
+) -> (Program, Vec<f64>, Vec<f64>) {
     let mut b = Builder::new("conditioned");
     let n_params = rng.gen_range(1..=2);
     let n_inputs = rng.gen_range(1..=3);
