@@ -262,4 +262,20 @@ mod tests {
         let more = half.mul(&from_f64(1.0000001, 128), 128, RM);
         assert_eq!(to_f64(&more), 5e-324);
     }
+
+    #[test]
+    fn non_finite_arguments_propagate() {
+        let p = Program::parse(
+            "carvallo-ir 1\nmodel m\ninput x\ninput z\nlet a = atan2 x z\nlet b = sin x\n\
+             let c = powi z -2\nlet d = add x z\noutput a = a\noutput b = b\noutput c = c\n\
+             output d = d\n",
+        )
+        .unwrap();
+        let r = eval_f64(&p, &[], &[f64::NAN, 1.0], 128).unwrap();
+        assert!(r[0].is_nan() && r[1].is_nan() && r[3].is_nan());
+        assert_eq!(r[2], 1.0);
+        let r = eval_f64(&p, &[], &[1.0, f64::INFINITY], 128).unwrap();
+        assert_eq!(r[2], 0.0);
+        assert_eq!(r[3], f64::INFINITY);
+    }
 }

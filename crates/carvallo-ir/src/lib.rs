@@ -42,12 +42,13 @@
 //!   `parse(print(p)) == p` bit for bit.
 //!
 //! Tokens are separated by one or more spaces or tabs. Anything else is a [`ParseError`] that
-//! carries the 1-based line and column of the offending token.
+//! carries the 1-based line and column (counted in characters) of the offending token; a missing
+//! token is reported just past the end of its line, missing lines just past the end of the text.
 //!
 //! # Modules
 //! * [`build`]: a hash-consing [`Builder`] (common-subexpression elimination by construction),
 //!   used by the derivations to emit programs.
-//! * [`parse`] and [`print`]: the text format ([`Program::parse`], [`Program::to_text`]).
+//! * [`parse`] and [`print`](mod@print): the text format ([`Program::parse`], [`Program::to_text`]).
 //! * [`error`]: [`ParseError`] and [`IrError`].
 //! * [`count`]: [`OpCount`], the operation count of a program.
 //! * [`opt`]: constant folding, [`Program::fix_params`], [`Program::select_outputs`], dead-code

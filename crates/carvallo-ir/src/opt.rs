@@ -1,6 +1,11 @@
 //! Program transformations: constant folding with algebraic simplification, fixing parameters,
 //! selecting outputs, dead-code elimination and pruning of unused arguments.
 //!
+//! The transformations expect a valid program (see [`Program::validate`]; parsed and
+//! [`Builder`](crate::Builder)-made programs are valid). On an invalid one, `fix_params` and
+//! `select_outputs` return the validation error and the others return the program unchanged;
+//! none of them panics.
+//!
 //! Every transformation returns a new program that [`validate`](Program::validate)s when its
 //! input does, keeps the order and the names of the instructions it keeps, and computes the same
 //! outputs. Folding evaluates operations exactly as the [`Interpreter`](crate::Interpreter) does
@@ -91,6 +96,9 @@ impl Program {
     /// # Ok::<(), carvallo_ir::ParseError>(())
     /// ```
     pub fn fold_constants(&self) -> Program {
+        if self.validate().is_err() {
+            return self.clone();
+        }
         let mut out = self.clone_without_body();
         // Old instruction index -> value in `out`.
         let mut map: Vec<Value> = Vec::with_capacity(self.insts.len());
@@ -166,7 +174,7 @@ impl Program {
                 },
             })
             .collect();
-        out.eliminate_dead_code()
+        out.dce()
     }
 
     /// Replaces the parameters named in `values` by constants (instructions named after the
@@ -186,6 +194,7 @@ impl Program {
     /// # Ok::<(), Box<dyn std::error::Error>>(())
     /// ```
     pub fn fix_params(&self, values: &[(&str, f64)]) -> Result<Program, IrError> {
+        self.validate()?;
         let mut fixed: Vec<Option<f64>> = vec![None; self.params.len()];
         for &(name, value) in values {
             let i = self
@@ -250,6 +259,7 @@ impl Program {
     /// # Ok::<(), Box<dyn std::error::Error>>(())
     /// ```
     pub fn select_outputs(&self, names: &[&str]) -> Result<Program, IrError> {
+        self.validate()?;
         let mut outputs = Vec::with_capacity(names.len());
         for (k, &name) in names.iter().enumerate() {
             if names[..k].contains(&name) {
@@ -261,11 +271,19 @@ impl Program {
             outputs.push(o.clone());
         }
         let p = Program { outputs, insts: self.insts.clone(), ..self.clone_without_body() };
-        Ok(p.eliminate_dead_code().prune_arguments())
+        Ok(p.dce().prune())
     }
 
     /// Removes the instructions no output depends on. Parameters and inputs are kept.
     pub fn eliminate_dead_code(&self) -> Program {
+        if self.validate().is_err() {
+            return self.clone();
+        }
+        self.dce()
+    }
+
+    /// [`Program::eliminate_dead_code`] of a valid program.
+    fn dce(&self) -> Program {
         let mut live = vec![false; self.insts.len()];
         for o in &self.outputs {
             if let Value::Inst(i) = o.value {
@@ -291,6 +309,14 @@ impl Program {
     /// Removes the parameters and inputs that no instruction and no output uses, keeping the
     /// order of the others.
     pub fn prune_arguments(&self) -> Program {
+        if self.validate().is_err() {
+            return self.clone();
+        }
+        self.prune()
+    }
+
+    /// [`Program::prune_arguments`] of a valid program.
+    fn prune(&self) -> Program {
         let mut used_p = vec![false; self.params.len()];
         let mut used_i = vec![false; self.inputs.len()];
         let uses = self
@@ -397,6 +423,29 @@ mod tests {
             "let zero = const 0.0\nlet one = const 1.0\nlet a = div one zero\nlet b = mul a x\n\
              output y = b\n"
         );
+    }
+
+    #[test]
+    fn invalid_programs_do_not_panic() {
+        let mut p = Program::parse(
+            "carvallo-ir 1\nmodel m\nparam R\ninput x\nlet a = mul R x\noutput y = a\n",
+        )
+        .unwrap();
+        p.insts[0].op = crate::Op::Neg(crate::Value::Inst(7));
+        p.outputs[0].value = crate::Value::Param(3);
+        assert_eq!(p.fold_constants(), p);
+        assert_eq!(p.eliminate_dead_code(), p);
+        assert_eq!(p.prune_arguments(), p);
+        assert!(p.fix_params(&[("R", 1.0)]).is_err());
+        let e = p.select_outputs(&["y"]).unwrap_err();
+        assert_eq!(
+            e.to_string(),
+            "invalid program: operand Inst(7) of \"a\" is not defined before it"
+        );
+        assert!(p.eval_f64(&[1.0], &[1.0]).is_err());
+        assert!(crate::hp::eval(&p, &[1.0], &[1.0], 64).is_err());
+        // Printing an invalid program does not panic either.
+        assert!(p.to_text().contains("let a = neg ?"));
     }
 
     #[test]
