@@ -246,6 +246,18 @@ impl Program {
     /// instructions share one namespace, outputs have their own), operands in range and defined
     /// before use, finite constants, header lines without newlines. Programs returned by
     /// [`Program::parse`] and by the transformations of this crate are valid.
+    ///
+    /// ```
+    /// use carvallo_ir::{IrError, Program};
+    /// let mut p = Program::parse("carvallo-ir 1\nmodel m\ninput x\nlet a = neg x\noutput y = a\n")?;
+    /// assert_eq!(p.validate(), Ok(()));
+    /// p.insts[0].name = "x".to_string();
+    /// assert_eq!(
+    ///     p.validate().unwrap_err().to_string(),
+    ///     "invalid program: name \"x\" defined twice"
+    /// );
+    /// # Ok::<(), Box<dyn std::error::Error>>(())
+    /// ```
     pub fn validate(&self) -> Result<(), IrError> {
         use std::collections::HashSet;
         for h in &self.header {

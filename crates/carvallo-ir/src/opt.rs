@@ -275,6 +275,16 @@ impl Program {
     }
 
     /// Removes the instructions no output depends on. Parameters and inputs are kept.
+    ///
+    /// ```
+    /// use carvallo_ir::Program;
+    /// let p = Program::parse("carvallo-ir 1\nmodel m\ninput x\ninput z\n\
+    ///     let a = sin z\nlet b = cos x\noutput y = b\n")?;
+    /// let q = p.eliminate_dead_code();
+    /// assert_eq!(q.to_text(), "carvallo-ir 1\nmodel m\ninput x\ninput z\nlet b = cos x\noutput y = b\n");
+    /// assert_eq!(q.prune_arguments().inputs, ["x"]);
+    /// # Ok::<(), carvallo_ir::ParseError>(())
+    /// ```
     pub fn eliminate_dead_code(&self) -> Program {
         if self.validate().is_err() {
             return self.clone();

@@ -5,6 +5,9 @@
 //! names, the order of the sections, single definition before use (SSA), operation arities and
 //! numbers. The first problem found is returned as a [`ParseError`] with the 1-based line and
 //! column (in characters) of the offending token; the parser never panics, whatever the input.
+//!
+//! Header lines are the comment lines that start in column 1 before the version line; the
+//! header text is what follows the `#` and at most one space. Other comments are dropped.
 
 use std::collections::HashMap;
 
