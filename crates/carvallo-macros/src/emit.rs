@@ -82,7 +82,11 @@ pub fn float(c: f64) -> TokenStream {
         return quote!(f64::NAN);
     }
     if c.is_infinite() {
-        return if c > 0.0 { quote!(f64::INFINITY) } else { quote!(f64::NEG_INFINITY) };
+        return if c > 0.0 {
+            quote!(f64::INFINITY)
+        } else {
+            quote!(f64::NEG_INFINITY)
+        };
     }
     let magnitude = match format!("{:?}_f64", c.abs()).parse::<Literal>() {
         Ok(lit) => quote!(#lit),
@@ -228,7 +232,12 @@ fn referenced(p: &Program, insts: &[usize], extra: impl Iterator<Item = Value>) 
 }
 
 /// The body of `eval` after the arguments are bound, plus any helper functions.
-fn body(p: &Program, l: &Locals, max_fn_ops: usize, chunks: &[Vec<usize>]) -> (TokenStream, TokenStream) {
+fn body(
+    p: &Program,
+    l: &Locals,
+    max_fn_ops: usize,
+    chunks: &[Vec<usize>],
+) -> (TokenStream, TokenStream) {
     let out_values = || p.outputs.iter().map(|o| o.value);
     let lets = |insts: &[usize]| {
         let lets = insts.iter().map(|&i| {
@@ -293,7 +302,10 @@ fn body(p: &Program, l: &Locals, max_fn_ops: usize, chunks: &[Vec<usize>]) -> (T
             k * max_fn_ops,
             k * max_fn_ops + c.len(),
         );
-        let (n_in, n_out) = (Literal::usize_unsuffixed(n_in), Literal::usize_unsuffixed(n_out));
+        let (n_in, n_out) = (
+            Literal::usize_unsuffixed(n_in),
+            Literal::usize_unsuffixed(n_out),
+        );
         helpers.extend(quote! {
             #[doc = #doc]
             #[inline(never)]
@@ -326,7 +338,10 @@ pub fn emit(scene: &Scene) -> TokenStream {
     let model = &scene.model;
     let scene_name = scene.name.to_string();
     let work: Vec<usize> = (0..p.insts.len()).filter(|&i| !is_const(p, i)).collect();
-    let chunks: Vec<Vec<usize>> = work.chunks(scene.max_fn_ops).map(<[usize]>::to_vec).collect();
+    let chunks: Vec<Vec<usize>> = work
+        .chunks(scene.max_fn_ops)
+        .map(<[usize]>::to_vec)
+        .collect();
     let n_parts = if chunks.len() > 1 { chunks.len() } else { 0 };
     let l = Locals::new(p, n_parts);
     let op_count = p.op_count();
@@ -348,25 +363,42 @@ pub fn emit(scene: &Scene) -> TokenStream {
 
     // Structs.
     let arg_names: Vec<&String> = params.iter().chain(inputs).collect();
-    let arg_fields: Vec<Ident> = arg_names.iter().enumerate().map(|(i, n)| field(n, i)).collect();
+    let arg_fields: Vec<Ident> = arg_names
+        .iter()
+        .enumerate()
+        .map(|(i, n)| field(n, i))
+        .collect();
     let arg_docs = params
         .iter()
         .map(|n| format!(" Parameter `{n}` of model `{model}`."))
-        .chain(inputs.iter().map(|n| format!(" Input `{n}` of model `{model}`.")));
+        .chain(
+            inputs
+                .iter()
+                .map(|n| format!(" Input `{n}` of model `{model}`.")),
+        );
     let arg_locals: Vec<&Ident> = (0..params.len() as u32)
         .map(|i| l.get(Value::Param(i)))
         .chain((0..inputs.len() as u32).map(|i| l.get(Value::Input(i))))
         .collect();
-    let arg_pattern = arg_fields.iter().zip(&arg_locals).map(|(f, v)| {
-        if f == *v {
-            quote!(#f)
-        } else {
-            quote!(#f: #v)
-        }
-    });
+    let arg_pattern =
+        arg_fields.iter().zip(&arg_locals).map(
+            |(f, v)| {
+                if f == *v {
+                    quote!(#f)
+                } else {
+                    quote!(#f: #v)
+                }
+            },
+        );
     let n_args = arg_fields.len();
-    let out_fields: Vec<Ident> = outputs.iter().enumerate().map(|(i, n)| field(n, i)).collect();
-    let out_docs = outputs.iter().map(|n| format!(" Output `{n}` of model `{model}`."));
+    let out_fields: Vec<Ident> = outputs
+        .iter()
+        .enumerate()
+        .map(|(i, n)| field(n, i))
+        .collect();
+    let out_docs = outputs
+        .iter()
+        .map(|n| format!(" Output `{n}` of model `{model}`."));
     let out_values = p.outputs.iter().zip(&out_fields).map(|(o, f)| {
         let v = l.get(o.value);
         if f == v {
@@ -376,7 +408,10 @@ pub fn emit(scene: &Scene) -> TokenStream {
         }
     });
     let n_outs = out_fields.len();
-    let (n_args_lit, n_outs_lit) = (Literal::usize_unsuffixed(n_args), Literal::usize_unsuffixed(n_outs));
+    let (n_args_lit, n_outs_lit) = (
+        Literal::usize_unsuffixed(n_args),
+        Literal::usize_unsuffixed(n_outs),
+    );
     let arg_tmp: Vec<Ident> = (0..n_args).map(|i| format_ident!("v{}", i)).collect();
     let out_tmp: Vec<Ident> = (0..n_outs).map(|i| format_ident!("v{}", i)).collect();
 
@@ -384,7 +419,12 @@ pub fn emit(scene: &Scene) -> TokenStream {
     let fixed_text = if scene.fixed.is_empty() {
         "none".to_string()
     } else {
-        scene.fixed.iter().map(|(n, v)| format!("`{n}` = {v:?}")).collect::<Vec<_>>().join(", ")
+        scene
+            .fixed
+            .iter()
+            .map(|(n, v)| format!("`{n}` = {v:?}"))
+            .collect::<Vec<_>>()
+            .join(", ")
     };
     let summary = format!(
         " Scene `{scene_name}` of model `{model}`, generated by `scene!` from `{ir_display}`:"
@@ -400,18 +440,24 @@ pub fn emit(scene: &Scene) -> TokenStream {
         ),
     ];
     let has_doc = scene.attrs.iter().any(|a| a.path().is_ident("doc"));
-    let separator = if has_doc { quote!(#[doc = ""]) } else { TokenStream::new() };
+    let separator = if has_doc {
+        quote!(#[doc = ""])
+    } else {
+        TokenStream::new()
+    };
     let mod_doc = quote!(#separator #[doc = #summary] #[doc = ""] #(#[doc = #details])*);
     let eval_doc = [
         format!(" Evaluates the outputs of scene `{scene_name}` (model `{model}`)."),
         String::new(),
-        format!(" Arguments ([`Args`]): free parameters {}; inputs {}.", names(params.iter()), names(inputs.iter())),
+        format!(
+            " Arguments ([`Args`]): free parameters {}; inputs {}.",
+            names(params.iter()),
+            names(inputs.iter())
+        ),
         format!(" Fixed parameters: {fixed_text}."),
         format!(" Returns ([`Out`]): {}.", names(outputs.iter().copied())),
         String::new(),
-        format!(
-            " Straight-line `f64` code of {total} operations: no allocation, no panics."
-        ),
+        format!(" Straight-line `f64` code of {total} operations: no allocation, no panics."),
     ];
     let eval_array_doc = format!(
         " [`eval`] on arrays: arguments in the order of [`PARAMS`] then [`INPUTS`] ({}), outputs in \

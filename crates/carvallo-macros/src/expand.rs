@@ -30,13 +30,19 @@ impl Context {
             .and_then(|f| f.parent().map(Path::to_path_buf))
             .or_else(|| std::env::var_os("CARGO_MANIFEST_DIR").map(PathBuf::from))
             .unwrap_or_default();
-        Context { source_dir, generated_dir: generated_dir() }
+        Context {
+            source_dir,
+            generated_dir: generated_dir(),
+        }
     }
 }
 
 /// The workspace's `generated/` directory, found from this crate's manifest directory.
 pub fn generated_dir() -> PathBuf {
-    let dir = Path::new(env!("CARGO_MANIFEST_DIR")).join("..").join("..").join("generated");
+    let dir = Path::new(env!("CARGO_MANIFEST_DIR"))
+        .join("..")
+        .join("..")
+        .join("generated");
     std::fs::canonicalize(&dir).unwrap_or(dir)
 }
 

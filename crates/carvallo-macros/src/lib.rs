@@ -32,7 +32,7 @@
 //!   optionally negated and optionally suffixed `f64`, and must be finite.
 //! * `outputs: [NAME, ...]` selects and orders the outputs.
 //! * `max_fn_ops: N` splits programs of more than `N` operations (default
-//!   [`emit::DEFAULT_MAX_FN_OPS`]) into several `#[inline(never)]` helper functions, which
+//!   400) into several `#[inline(never)]` helper functions, which
 //!   keeps rustc's compile time in check for very large formulas.
 //!
 //! # What a scene module contains
@@ -55,9 +55,9 @@
 //!
 //! # Layout
 //!
-//! [`parse`] reads the syntax, [`validate`] loads the IR and checks the scene against it,
-//! [`emit`] writes the Rust, [`expand`] ties them together on `proc_macro2` token streams (so
-//! that the unit tests can call it outside the compiler).
+//! Private modules: `parse` reads the syntax, `validate` loads the IR and checks the scene
+//! against it, `emit` writes the Rust, `expand` ties them together on `proc_macro2` token
+//! streams (so that the unit tests in `tests` can run it outside the compiler).
 
 mod emit;
 mod expand;
@@ -70,5 +70,9 @@ mod tests;
 /// Declares one or more scenes: specialised evaluators of a model. See the crate docs.
 #[proc_macro]
 pub fn scene(input: proc_macro::TokenStream) -> proc_macro::TokenStream {
-    expand::expand(syn::parse_macro_input!(input as parse::SceneInput), &expand::Context::from_compiler()).into()
+    expand::expand(
+        syn::parse_macro_input!(input as parse::SceneInput),
+        &expand::Context::from_compiler(),
+    )
+    .into()
 }

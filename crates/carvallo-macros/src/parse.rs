@@ -70,9 +70,9 @@ impl Parse for SceneInput {
             scenes.push(input.parse()?);
         }
         if scenes.is_empty() {
-            return Err(input.error(
-                "expected at least one scene: `pub mod NAME { model: MODEL, ... }`",
-            ));
+            return Err(
+                input.error("expected at least one scene: `pub mod NAME { model: MODEL, ... }`")
+            );
         }
         Ok(SceneInput { scenes })
     }
@@ -87,7 +87,12 @@ impl Parse for SceneDecl {
         let content;
         braced!(content in input);
         let entries = Punctuated::<Entry, Token![,]>::parse_terminated(&content)?;
-        Ok(SceneDecl { attrs, vis, name, entries: entries.into_iter().collect() })
+        Ok(SceneDecl {
+            attrs,
+            vis,
+            name,
+            entries: entries.into_iter().collect(),
+        })
     }
 }
 
@@ -188,7 +193,12 @@ mod tests {
     fn malformed_inputs_are_errors() {
         let cases = [
             (quote!(), "expected at least one scene"),
-            (quote!(pub struct A;), "expected `mod`"),
+            (
+                quote!(
+                    pub struct A;
+                ),
+                "expected `mod`",
+            ),
             (quote!(mod a { colour: red }), "unknown scene key `colour`"),
             (quote!(mod a { model hoop }), "expected `:`"),
             (quote!(mod a { model: "hoop" }), "expected ident"),

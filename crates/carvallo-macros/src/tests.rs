@@ -32,7 +32,8 @@ fn pretty(ts: TokenStream) -> String {
     let out = expand_tokens(ts, &ctx());
     let file: syn::File = syn::parse2(out.clone())
         .unwrap_or_else(|e| panic!("expansion is not a Rust file: {e}\n{out}"));
-    prettyplease::unparse(&file).replace(&manifest_dir().display().to_string(), "$CARGO_MANIFEST_DIR")
+    prettyplease::unparse(&file)
+        .replace(&manifest_dir().display().to_string(), "$CARGO_MANIFEST_DIR")
 }
 
 /// The messages of the `compile_error!`s of an expansion, with the source text of the tokens
@@ -45,8 +46,19 @@ fn errors(ts: TokenStream) -> Vec<String> {
     file.items
         .iter()
         .filter_map(|item| match item {
-            syn::Item::Macro(m) if m.mac.path.segments.last().is_some_and(|s| s.ident == "compile_error") => {
-                Some(m.mac.parse_body::<syn::LitStr>().expect("compile_error! takes a string").value())
+            syn::Item::Macro(m)
+                if m.mac
+                    .path
+                    .segments
+                    .last()
+                    .is_some_and(|s| s.ident == "compile_error") =>
+            {
+                Some(
+                    m.mac
+                        .parse_body::<syn::LitStr>()
+                        .expect("compile_error! takes a string")
+                        .value(),
+                )
             }
             _ => None,
         })
@@ -56,7 +68,10 @@ fn errors(ts: TokenStream) -> Vec<String> {
 /// The value of `pub const NAME: usize = N;` in the expansion of the scene module.
 fn const_usize(text: &str, name: &str) -> usize {
     let key = format!("pub const {name}: usize = ");
-    let start = text.find(&key).unwrap_or_else(|| panic!("no constant {name}")) + key.len();
+    let start = text
+        .find(&key)
+        .unwrap_or_else(|| panic!("no constant {name}"))
+        + key.len();
     let end = start + text[start..].find(';').expect("constant ends with `;`");
     text[start..end].parse().expect("constant is an integer")
 }
@@ -98,17 +113,36 @@ fn full_and_pruned_scenes() {
     // The whole fixture has 19 operations and the outputs use them all (but not `mu`, `w`).
     assert_eq!(const_usize(&full, "SOURCE_OP_COUNT"), 19);
     assert_eq!(const_usize(&full, "OP_COUNT"), 19);
-    assert!(full.contains(r#"pub const PARAMS: &[&str] = &["R", "g"];"#), "{full}");
-    assert!(full.contains(r#"pub const INPUTS: &[&str] = &["x", "y", "z"];"#), "{full}");
+    assert!(
+        full.contains(r#"pub const PARAMS: &[&str] = &["R", "g"];"#),
+        "{full}"
+    );
+    assert!(
+        full.contains(r#"pub const INPUTS: &[&str] = &["x", "y", "z"];"#),
+        "{full}"
+    );
     // trig = sin x cos y + tan x - atan2(y, x): 7 operations, no parameter.
     assert_eq!(const_usize(&pruned, "OP_COUNT"), 7);
     assert_eq!(const_usize(&pruned, "SOURCE_OP_COUNT"), 19);
-    assert!(pruned.contains(r#"pub const PARAMS: &[&str] = &[];"#), "{pruned}");
-    assert!(pruned.contains(r#"pub const INPUTS: &[&str] = &["x", "y"];"#), "{pruned}");
-    assert!(pruned.contains(r#"pub const FIXED: &[(&str, f64)] = &[("R", 0.5_f64), ("g", 9.81_f64)];"#), "{pruned}");
+    assert!(
+        pruned.contains(r#"pub const PARAMS: &[&str] = &[];"#),
+        "{pruned}"
+    );
+    assert!(
+        pruned.contains(r#"pub const INPUTS: &[&str] = &["x", "y"];"#),
+        "{pruned}"
+    );
+    assert!(
+        pruned.contains(r#"pub const FIXED: &[(&str, f64)] = &[("R", 0.5_f64), ("g", 9.81_f64)];"#),
+        "{pruned}"
+    );
     assert!(pruned.lines().count() < full.lines().count());
     // The evaluator itself: one `let` per operation and used constant.
-    let lets = |text: &str| text.lines().filter(|l| l.trim_start().starts_with("let t") || l.trim_start().starts_with("let c")).count();
+    let lets = |text: &str| {
+        text.lines()
+            .filter(|l| l.trim_start().starts_with("let t") || l.trim_start().starts_with("let c"))
+            .count()
+    };
     assert_eq!((lets(&full), lets(&pruned)), (21, 7));
 }
 
@@ -120,8 +154,14 @@ fn fixing_folds_constants() {
     // scaled = 2 R g folds to one constant; poly keeps x, y and folds R and g in.
     assert!(text.contains("let c"), "{text}");
     assert!(text.contains("-9.81_f64"), "{text}");
-    assert!(text.contains(r#"pub const INPUTS: &[&str] = &["x", "y"];"#), "{text}");
-    assert!(text.contains(r#"pub const PARAMS: &[&str] = &[];"#), "{text}");
+    assert!(
+        text.contains(r#"pub const INPUTS: &[&str] = &["x", "y"];"#),
+        "{text}"
+    );
+    assert!(
+        text.contains(r#"pub const PARAMS: &[&str] = &[];"#),
+        "{text}"
+    );
     // poly: add, sub, mul, div, powi, add; scaled: nothing left.
     assert_eq!(const_usize(&text, "OP_COUNT"), 6);
     insta::with_settings!({
@@ -139,7 +179,10 @@ fn large_programs_are_split() {
     });
     // 19 operations in chunks of 4: five helper functions.
     for k in 0..5 {
-        assert!(text.contains(&format!("fn part_{k}(live: &[f64; ")), "part_{k} missing:\n{text}");
+        assert!(
+            text.contains(&format!("fn part_{k}(live: &[f64; ")),
+            "part_{k} missing:\n{text}"
+        );
     }
     assert!(!text.contains("fn part_5("), "{text}");
     assert_eq!(text.matches("#[inline(never)]").count(), 5);
@@ -157,11 +200,17 @@ fn generated_code_has_no_macros_or_panics() {
         mod a { model: demo }
         mod b { model: demo, max_fn_ops: 3 }
     });
-    let code: String = text.lines().filter(|l| !l.trim_start().starts_with("//")).collect::<Vec<_>>().join("\n");
+    let code: String = text
+        .lines()
+        .filter(|l| !l.trim_start().starts_with("//"))
+        .collect::<Vec<_>>()
+        .join("\n");
     // The only macro is the include_str! that tracks the IR file, once per scene.
     assert_eq!(code.matches('!').count(), 2, "{code}");
     assert_eq!(code.matches("include_str!(").count(), 2);
-    for bad in ["unwrap", "expect", "panic", "Vec", "Box", "vec", "[0]", "as usize"] {
+    for bad in [
+        "unwrap", "expect", "panic", "Vec", "Box", "vec", "[0]", "as usize",
+    ] {
         assert!(!code.contains(bad), "generated code contains `{bad}`");
     }
 }
@@ -196,7 +245,11 @@ fn unknown_model() {
 fn the_default_generated_dir_is_the_workspace_one() {
     let dir = generated_dir();
     assert_eq!(dir.file_name().and_then(|f| f.to_str()), Some("generated"));
-    assert!(dir.parent().expect("has a parent").join("Cargo.toml").exists());
+    assert!(dir
+        .parent()
+        .expect("has a parent")
+        .join("Cargo.toml")
+        .exists());
 }
 
 #[test]
@@ -233,27 +286,63 @@ fn duplicate_and_missing_keys() {
         quote!(mod a { model: demo, outputs: [poly], outputs: [trig] }),
         "duplicate key `outputs`",
     );
-    assert_one_error(quote!(mod a { model: demo, model: demo }), "duplicate key `model`");
-    assert_one_error(quote!(mod a { outputs: [poly] }), "scene `a` has no `model` key; add `model: NAME`");
+    assert_one_error(
+        quote!(mod a { model: demo, model: demo }),
+        "duplicate key `model`",
+    );
+    assert_one_error(
+        quote!(mod a { outputs: [poly] }),
+        "scene `a` has no `model` key; add `model: NAME`",
+    );
 }
 
 #[test]
 fn fixed_values_must_be_finite_numbers() {
     let cases = [
-        (quote!("abc"), "the value of `R` must be a float or integer literal, found `\"abc\"`"),
-        (quote!(pi), "the value of `R` must be a float or integer literal, found `pi`"),
-        (quote!(1.0 + 2.0), "the value of `R` must be a float or integer literal, found `1.0 + 2.0`"),
-        (quote!(-(1.0)), "the value of `R` must be a float or integer literal, found `- (1.0)`"),
-        (quote!(1.0f32), "the value of `R` must be an `f64` literal, found suffix `f32`"),
-        (quote!(3u8), "the value of `R` must be an `f64` literal, found suffix `u8`"),
-        (quote!(1e999), "the value of `R` is not a finite `f64`: `1e999`"),
-        (quote!(-1e999), "the value of `R` is not a finite `f64`: `- 1e999`"),
+        (
+            quote!("abc"),
+            "the value of `R` must be a float or integer literal, found `\"abc\"`",
+        ),
+        (
+            quote!(pi),
+            "the value of `R` must be a float or integer literal, found `pi`",
+        ),
+        (
+            quote!(1.0 + 2.0),
+            "the value of `R` must be a float or integer literal, found `1.0 + 2.0`",
+        ),
+        (
+            quote!(-(1.0)),
+            "the value of `R` must be a float or integer literal, found `- (1.0)`",
+        ),
+        (
+            quote!(1.0f32),
+            "the value of `R` must be an `f64` literal, found suffix `f32`",
+        ),
+        (
+            quote!(3u8),
+            "the value of `R` must be an `f64` literal, found suffix `u8`",
+        ),
+        (
+            quote!(1e999),
+            "the value of `R` is not a finite `f64`: `1e999`",
+        ),
+        (
+            quote!(-1e999),
+            "the value of `R` is not a finite `f64`: `- 1e999`",
+        ),
     ];
     for (value, want) in cases {
         assert_one_error(quote!(mod a { model: demo, fixed: { R: #value } }), want);
     }
     // Accepted forms, all equal to -2.
-    for value in [quote!(-2), quote!(-2.0), quote!(-2f64), quote!(-2.0_f64), quote!(-0.2e1)] {
+    for value in [
+        quote!(-2),
+        quote!(-2.0),
+        quote!(-2f64),
+        quote!(-2.0_f64),
+        quote!(-0.2e1),
+    ] {
         let text = pretty(quote!(mod a { model: demo, fixed: { R: #value } }));
         assert!(text.contains(r#"("R", -2.0_f64)"#), "{value}: {text}");
     }
@@ -271,7 +360,10 @@ fn bad_files() {
     );
     let errs = errors(quote!(mod a { model: demo, path: "fixtures/none.ir" }));
     assert_eq!(errs.len(), 1);
-    assert!(errs[0].starts_with("no IR file `fixtures/none.ir` (looked for "), "{errs:?}");
+    assert!(
+        errs[0].starts_with("no IR file `fixtures/none.ir` (looked for "),
+        "{errs:?}"
+    );
     assert_one_error(
         quote!(mod a { model: demo, max_fn_ops: 0 }),
         "`max_fn_ops` must be a positive integer, found `0`",
@@ -312,6 +404,10 @@ fn all_problems_are_reported_together() {
         ]
     );
     // The valid scene is still emitted, so its uses do not add errors of their own.
-    let out = expand_tokens(quote!(mod good { model: demo } mod c { model: nope }), &ctx()).to_string();
+    let out = expand_tokens(
+        quote!(mod good { model: demo } mod c { model: nope }),
+        &ctx(),
+    )
+    .to_string();
     assert!(out.contains("mod good"));
 }

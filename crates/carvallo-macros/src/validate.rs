@@ -92,7 +92,12 @@ struct Entries {
 /// Validates one scene declaration against its IR file; see the module docs.
 pub fn validate(decl: SceneDecl, ctx: &Context) -> syn::Result<Scene> {
     let mut errors = Errors::default();
-    let SceneDecl { attrs, vis, name, entries: raw } = decl;
+    let SceneDecl {
+        attrs,
+        vis,
+        name,
+        entries: raw,
+    } = decl;
 
     let mut e = Entries::default();
     for entry in raw {
@@ -105,7 +110,10 @@ pub fn validate(decl: SceneDecl, ctx: &Context) -> syn::Result<Scene> {
             EntryValue::MaxFnOps(v) => set(&mut e.max_fn_ops, v),
         };
         if taken {
-            errors.push(syn::Error::new_spanned(&key, format!("duplicate key `{key}`")));
+            errors.push(syn::Error::new_spanned(
+                &key,
+                format!("duplicate key `{key}`"),
+            ));
         }
     }
 
@@ -128,11 +136,17 @@ pub fn validate(decl: SceneDecl, ctx: &Context) -> syn::Result<Scene> {
     let mut outputs: Vec<&Ident> = Vec::new();
     if let Some((key, list)) = &e.outputs {
         if list.is_empty() {
-            errors.push(syn::Error::new_spanned(key, "`outputs` is empty; list at least one output or leave the key out for all"));
+            errors.push(syn::Error::new_spanned(
+                key,
+                "`outputs` is empty; list at least one output or leave the key out for all",
+            ));
         }
         for o in list {
             if outputs.iter().any(|p| p.unraw() == o.unraw()) {
-                errors.push(syn::Error::new_spanned(o, format!("output `{}` is selected twice", o.unraw())));
+                errors.push(syn::Error::new_spanned(
+                    o,
+                    format!("output `{}` is selected twice", o.unraw()),
+                ));
             } else {
                 outputs.push(o);
             }
@@ -195,7 +209,10 @@ pub fn validate(decl: SceneDecl, ctx: &Context) -> syn::Result<Scene> {
         }
     };
     if let Err(err) = program.validate() {
-        return Err(errors.fail(syn::Error::new_spanned(culprit, format!("malformed IR file `{display}`: {err}"))));
+        return Err(errors.fail(syn::Error::new_spanned(
+            culprit,
+            format!("malformed IR file `{display}`: {err}"),
+        )));
     }
     if program.model != model_name {
         errors.push(syn::Error::new_spanned(
@@ -217,7 +234,10 @@ pub fn validate(decl: SceneDecl, ctx: &Context) -> syn::Result<Scene> {
                     list(&program.params)
                 )
             } else {
-                format!("unknown parameter `{n}` of model `{model_name}` (parameters: {})", list(&program.params))
+                format!(
+                    "unknown parameter `{n}` of model `{model_name}` (parameters: {})",
+                    list(&program.params)
+                )
             };
             errors.push(syn::Error::new_spanned(ident, msg));
         }
@@ -228,7 +248,10 @@ pub fn validate(decl: SceneDecl, ctx: &Context) -> syn::Result<Scene> {
         if !names.contains(&n) {
             errors.push(syn::Error::new_spanned(
                 o,
-                format!("unknown output `{n}` of model `{model_name}` (outputs: {})", list(&names)),
+                format!(
+                    "unknown output `{n}` of model `{model_name}` (outputs: {})",
+                    list(&names)
+                ),
             ));
         }
     }
@@ -237,7 +260,10 @@ pub fn validate(decl: SceneDecl, ctx: &Context) -> syn::Result<Scene> {
 
     // Specialise.
     let source_op_count = program.op_count().total;
-    let fixed: Vec<(String, f64)> = fixed.iter().map(|(i, v)| (i.unraw().to_string(), *v)).collect();
+    let fixed: Vec<(String, f64)> = fixed
+        .iter()
+        .map(|(i, v)| (i.unraw().to_string(), *v))
+        .collect();
     let fixed_refs: Vec<(&str, f64)> = fixed.iter().map(|(n, v)| (n.as_str(), *v)).collect();
     let selected: Vec<String> = if e.outputs.is_some() {
         outputs.iter().map(|o| o.unraw().to_string()).collect()
@@ -260,7 +286,11 @@ pub fn validate(decl: SceneDecl, ctx: &Context) -> syn::Result<Scene> {
     };
 
     // Field names must be Rust identifiers.
-    let fields = program.params.iter().chain(&program.inputs).chain(program.outputs.iter().map(|o| &o.name));
+    let fields = program
+        .params
+        .iter()
+        .chain(&program.inputs)
+        .chain(program.outputs.iter().map(|o| &o.name));
     for n in fields {
         if rust_ident(n, Span::call_site()).is_none() {
             errors.push(syn::Error::new_spanned(
@@ -299,7 +329,11 @@ fn list(names: &[String]) -> String {
     if names.is_empty() {
         return "none".to_string();
     }
-    names.iter().map(|n| format!("`{n}`")).collect::<Vec<_>>().join(", ")
+    names
+        .iter()
+        .map(|n| format!("`{n}`"))
+        .collect::<Vec<_>>()
+        .join(", ")
 }
 
 /// The value of a fixed parameter: a float or integer literal, optionally negated, with no
@@ -324,7 +358,12 @@ fn literal_value(name: &Ident, expr: &Expr) -> syn::Result<f64> {
     };
     let (value, suffix) = match lit {
         Lit::Float(f) => (f.base10_parse::<f64>(), f.suffix()),
-        Lit::Int(i) => (i.base10_digits().parse::<f64>().map_err(|e| syn::Error::new_spanned(i, e)), i.suffix()),
+        Lit::Int(i) => (
+            i.base10_digits()
+                .parse::<f64>()
+                .map_err(|e| syn::Error::new_spanned(i, e)),
+            i.suffix(),
+        ),
         _ => return Err(non_numeric()),
     };
     if !(suffix.is_empty() || suffix == "f64") {
@@ -337,9 +376,11 @@ fn literal_value(name: &Ident, expr: &Expr) -> syn::Result<f64> {
     if !value.is_finite() {
         return Err(syn::Error::new_spanned(
             expr,
-            format!("the value of `{name}` is not a finite `f64`: `{}`", quote::ToTokens::to_token_stream(expr)),
+            format!(
+                "the value of `{name}` is not a finite `f64`: `{}`",
+                quote::ToTokens::to_token_stream(expr)
+            ),
         ));
     }
     Ok(if negative { -value } else { value })
 }
-
