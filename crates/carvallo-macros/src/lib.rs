@@ -10,7 +10,7 @@
 //!
 //! # Syntax
 //!
-//! ```ignore
+//! ```text
 //! carvallo::scene! {
 //!     /// Doc comments and other attributes are passed through to the module.
 //!     pub mod hoop_window {
@@ -24,10 +24,10 @@
 //! One invocation may declare several scenes. Keys may come in any order, each at most once:
 //!
 //! * `model: NAME` names the model; its program is `generated/NAME.ir` of this workspace.
-//! * `path: "FILE"` reads the program from `FILE` instead, resolved like `include_str!`:
-//!   relative to the directory of the source file that invokes the macro (when the compiler
-//!   does not report that file, relative to the calling crate's `CARGO_MANIFEST_DIR`). The
-//!   program's `model` line must still equal `NAME`. Meant for tests with fixture files.
+//! * `path: "FILE"` reads the program from `FILE` instead. A relative `FILE` is looked for
+//!   first like `include_str!` does, relative to the directory of the source file that invokes
+//!   the macro, then relative to the calling crate's `CARGO_MANIFEST_DIR`. The program's
+//!   `model` line must still equal `NAME`. Meant for tests with fixture files.
 //! * `fixed: { NAME: VALUE, ... }` fixes parameters; a value is a float or integer literal,
 //!   optionally negated and optionally suffixed `f64`, and must be finite.
 //! * `outputs: [NAME, ...]` selects and orders the outputs.

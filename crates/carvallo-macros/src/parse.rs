@@ -87,12 +87,7 @@ impl Parse for SceneDecl {
         let content;
         braced!(content in input);
         let entries = Punctuated::<Entry, Token![,]>::parse_terminated(&content)?;
-        Ok(SceneDecl {
-            attrs,
-            vis,
-            name,
-            entries: entries.into_iter().collect(),
-        })
+        Ok(SceneDecl { attrs, vis, name, entries: entries.into_iter().collect() })
     }
 }
 

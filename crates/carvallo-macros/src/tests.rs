@@ -23,6 +23,7 @@ fn manifest_dir() -> PathBuf {
 fn ctx() -> Context {
     Context {
         source_dir: manifest_dir().join("tests"),
+        manifest_dir: Some(manifest_dir()),
         generated_dir: manifest_dir().join("tests").join("fixtures"),
     }
 }
@@ -47,11 +48,7 @@ fn errors(ts: TokenStream) -> Vec<String> {
         .iter()
         .filter_map(|item| match item {
             syn::Item::Macro(m)
-                if m.mac
-                    .path
-                    .segments
-                    .last()
-                    .is_some_and(|s| s.ident == "compile_error") =>
+                if m.mac.path.segments.last().is_some_and(|s| s.ident == "compile_error") =>
             {
                 Some(
                     m.mac
@@ -68,10 +65,7 @@ fn errors(ts: TokenStream) -> Vec<String> {
 /// The value of `pub const NAME: usize = N;` in the expansion of the scene module.
 fn const_usize(text: &str, name: &str) -> usize {
     let key = format!("pub const {name}: usize = ");
-    let start = text
-        .find(&key)
-        .unwrap_or_else(|| panic!("no constant {name}"))
-        + key.len();
+    let start = text.find(&key).unwrap_or_else(|| panic!("no constant {name}")) + key.len();
     let end = start + text[start..].find(';').expect("constant ends with `;`");
     text[start..end].parse().expect("constant is an integer")
 }
@@ -113,25 +107,13 @@ fn full_and_pruned_scenes() {
     // The whole fixture has 19 operations and the outputs use them all (but not `mu`, `w`).
     assert_eq!(const_usize(&full, "SOURCE_OP_COUNT"), 19);
     assert_eq!(const_usize(&full, "OP_COUNT"), 19);
-    assert!(
-        full.contains(r#"pub const PARAMS: &[&str] = &["R", "g"];"#),
-        "{full}"
-    );
-    assert!(
-        full.contains(r#"pub const INPUTS: &[&str] = &["x", "y", "z"];"#),
-        "{full}"
-    );
+    assert!(full.contains(r#"pub const PARAMS: &[&str] = &["R", "g"];"#), "{full}");
+    assert!(full.contains(r#"pub const INPUTS: &[&str] = &["x", "y", "z"];"#), "{full}");
     // trig = sin x cos y + tan x - atan2(y, x): 7 operations, no parameter.
     assert_eq!(const_usize(&pruned, "OP_COUNT"), 7);
     assert_eq!(const_usize(&pruned, "SOURCE_OP_COUNT"), 19);
-    assert!(
-        pruned.contains(r#"pub const PARAMS: &[&str] = &[];"#),
-        "{pruned}"
-    );
-    assert!(
-        pruned.contains(r#"pub const INPUTS: &[&str] = &["x", "y"];"#),
-        "{pruned}"
-    );
+    assert!(pruned.contains(r#"pub const PARAMS: &[&str] = &[];"#), "{pruned}");
+    assert!(pruned.contains(r#"pub const INPUTS: &[&str] = &["x", "y"];"#), "{pruned}");
     assert!(
         pruned.contains(r#"pub const FIXED: &[(&str, f64)] = &[("R", 0.5_f64), ("g", 9.81_f64)];"#),
         "{pruned}"
@@ -154,14 +136,8 @@ fn fixing_folds_constants() {
     // scaled = 2 R g folds to one constant; poly keeps x, y and folds R and g in.
     assert!(text.contains("let c"), "{text}");
     assert!(text.contains("-9.81_f64"), "{text}");
-    assert!(
-        text.contains(r#"pub const INPUTS: &[&str] = &["x", "y"];"#),
-        "{text}"
-    );
-    assert!(
-        text.contains(r#"pub const PARAMS: &[&str] = &[];"#),
-        "{text}"
-    );
+    assert!(text.contains(r#"pub const INPUTS: &[&str] = &["x", "y"];"#), "{text}");
+    assert!(text.contains(r#"pub const PARAMS: &[&str] = &[];"#), "{text}");
     // poly: add, sub, mul, div, powi, add; scaled: nothing left.
     assert_eq!(const_usize(&text, "OP_COUNT"), 6);
     insta::with_settings!({
@@ -179,10 +155,7 @@ fn large_programs_are_split() {
     });
     // 19 operations in chunks of 4: five helper functions.
     for k in 0..5 {
-        assert!(
-            text.contains(&format!("fn part_{k}(live: &[f64; ")),
-            "part_{k} missing:\n{text}"
-        );
+        assert!(text.contains(&format!("fn part_{k}(live: &[f64; ")), "part_{k} missing:\n{text}");
     }
     assert!(!text.contains("fn part_5("), "{text}");
     assert_eq!(text.matches("#[inline(never)]").count(), 5);
@@ -200,17 +173,12 @@ fn generated_code_has_no_macros_or_panics() {
         mod a { model: demo }
         mod b { model: demo, max_fn_ops: 3 }
     });
-    let code: String = text
-        .lines()
-        .filter(|l| !l.trim_start().starts_with("//"))
-        .collect::<Vec<_>>()
-        .join("\n");
+    let code: String =
+        text.lines().filter(|l| !l.trim_start().starts_with("//")).collect::<Vec<_>>().join("\n");
     // The only macro is the include_str! that tracks the IR file, once per scene.
     assert_eq!(code.matches('!').count(), 2, "{code}");
     assert_eq!(code.matches("include_str!(").count(), 2);
-    for bad in [
-        "unwrap", "expect", "panic", "Vec", "Box", "vec", "[0]", "as usize",
-    ] {
+    for bad in ["unwrap", "expect", "panic", "Vec", "Box", "vec", "[0]", "as usize"] {
         assert!(!code.contains(bad), "generated code contains `{bad}`");
     }
 }
@@ -234,6 +202,20 @@ fn keyword_and_clashing_names() {
 }
 
 #[test]
+fn rust_identifiers() {
+    use crate::emit::rust_ident;
+    use proc_macro2::Span;
+    let show = |n: &str| rust_ident(n, Span::call_site()).map(|i| i.to_string());
+    assert_eq!(show("x1"), Some("x1".into()));
+    assert_eq!(show("R"), Some("R".into()));
+    assert_eq!(show("type"), Some("r#type".into()));
+    assert_eq!(show("__"), Some("__".into()));
+    for bad in ["_", "self", "Self", "super", "crate", "1x", "", "a-b"] {
+        assert_eq!(show(bad), None, "{bad:?}");
+    }
+}
+
+#[test]
 fn unknown_model() {
     assert_one_error(
         quote!(mod a { model: nope }),
@@ -245,11 +227,7 @@ fn unknown_model() {
 fn the_default_generated_dir_is_the_workspace_one() {
     let dir = generated_dir();
     assert_eq!(dir.file_name().and_then(|f| f.to_str()), Some("generated"));
-    assert!(dir
-        .parent()
-        .expect("has a parent")
-        .join("Cargo.toml")
-        .exists());
+    assert!(dir.parent().expect("has a parent").join("Cargo.toml").exists());
 }
 
 #[test]
@@ -286,10 +264,7 @@ fn duplicate_and_missing_keys() {
         quote!(mod a { model: demo, outputs: [poly], outputs: [trig] }),
         "duplicate key `outputs`",
     );
-    assert_one_error(
-        quote!(mod a { model: demo, model: demo }),
-        "duplicate key `model`",
-    );
+    assert_one_error(quote!(mod a { model: demo, model: demo }), "duplicate key `model`");
     assert_one_error(
         quote!(mod a { outputs: [poly] }),
         "scene `a` has no `model` key; add `model: NAME`",
@@ -299,50 +274,23 @@ fn duplicate_and_missing_keys() {
 #[test]
 fn fixed_values_must_be_finite_numbers() {
     let cases = [
-        (
-            quote!("abc"),
-            "the value of `R` must be a float or integer literal, found `\"abc\"`",
-        ),
-        (
-            quote!(pi),
-            "the value of `R` must be a float or integer literal, found `pi`",
-        ),
+        (quote!("abc"), "the value of `R` must be a float or integer literal, found `\"abc\"`"),
+        (quote!(pi), "the value of `R` must be a float or integer literal, found `pi`"),
         (
             quote!(1.0 + 2.0),
             "the value of `R` must be a float or integer literal, found `1.0 + 2.0`",
         ),
-        (
-            quote!(-(1.0)),
-            "the value of `R` must be a float or integer literal, found `- (1.0)`",
-        ),
-        (
-            quote!(1.0f32),
-            "the value of `R` must be an `f64` literal, found suffix `f32`",
-        ),
-        (
-            quote!(3u8),
-            "the value of `R` must be an `f64` literal, found suffix `u8`",
-        ),
-        (
-            quote!(1e999),
-            "the value of `R` is not a finite `f64`: `1e999`",
-        ),
-        (
-            quote!(-1e999),
-            "the value of `R` is not a finite `f64`: `- 1e999`",
-        ),
+        (quote!(-(1.0)), "the value of `R` must be a float or integer literal, found `- (1.0)`"),
+        (quote!(1.0f32), "the value of `R` must be an `f64` literal, found suffix `f32`"),
+        (quote!(3u8), "the value of `R` must be an `f64` literal, found suffix `u8`"),
+        (quote!(1e999), "the value of `R` is not a finite `f64`: `1e999`"),
+        (quote!(-1e999), "the value of `R` is not a finite `f64`: `- 1e999`"),
     ];
     for (value, want) in cases {
         assert_one_error(quote!(mod a { model: demo, fixed: { R: #value } }), want);
     }
     // Accepted forms, all equal to -2.
-    for value in [
-        quote!(-2),
-        quote!(-2.0),
-        quote!(-2f64),
-        quote!(-2.0_f64),
-        quote!(-0.2e1),
-    ] {
+    for value in [quote!(-2), quote!(-2.0), quote!(-2f64), quote!(-2.0_f64), quote!(-0.2e1)] {
         let text = pretty(quote!(mod a { model: demo, fixed: { R: #value } }));
         assert!(text.contains(r#"("R", -2.0_f64)"#), "{value}: {text}");
     }
@@ -360,10 +308,10 @@ fn bad_files() {
     );
     let errs = errors(quote!(mod a { model: demo, path: "fixtures/none.ir" }));
     assert_eq!(errs.len(), 1);
-    assert!(
-        errs[0].starts_with("no IR file `fixtures/none.ir` (looked for "),
-        "{errs:?}"
-    );
+    assert!(errs[0].starts_with("no IR file `fixtures/none.ir` (looked for "), "{errs:?}");
+    // Not next to the invoking file, but relative to the calling crate's manifest directory.
+    let text = pretty(quote!(mod a { model: demo, path: "tests/fixtures/demo.ir" }));
+    assert!(text.contains("\"$CARGO_MANIFEST_DIR/tests/fixtures/demo.ir\""), "{text}");
     assert_one_error(
         quote!(mod a { model: demo, max_fn_ops: 0 }),
         "`max_fn_ops` must be a positive integer, found `0`",
@@ -404,10 +352,7 @@ fn all_problems_are_reported_together() {
         ]
     );
     // The valid scene is still emitted, so its uses do not add errors of their own.
-    let out = expand_tokens(
-        quote!(mod good { model: demo } mod c { model: nope }),
-        &ctx(),
-    )
-    .to_string();
+    let out =
+        expand_tokens(quote!(mod good { model: demo } mod c { model: nope }), &ctx()).to_string();
     assert!(out.contains("mod good"));
 }

@@ -92,12 +92,7 @@ struct Entries {
 /// Validates one scene declaration against its IR file; see the module docs.
 pub fn validate(decl: SceneDecl, ctx: &Context) -> syn::Result<Scene> {
     let mut errors = Errors::default();
-    let SceneDecl {
-        attrs,
-        vis,
-        name,
-        entries: raw,
-    } = decl;
+    let SceneDecl { attrs, vis, name, entries: raw } = decl;
 
     let mut e = Entries::default();
     for entry in raw {
@@ -110,10 +105,7 @@ pub fn validate(decl: SceneDecl, ctx: &Context) -> syn::Result<Scene> {
             EntryValue::MaxFnOps(v) => set(&mut e.max_fn_ops, v),
         };
         if taken {
-            errors.push(syn::Error::new_spanned(
-                &key,
-                format!("duplicate key `{key}`"),
-            ));
+            errors.push(syn::Error::new_spanned(&key, format!("duplicate key `{key}`")));
         }
     }
 
@@ -176,7 +168,15 @@ pub fn validate(decl: SceneDecl, ctx: &Context) -> syn::Result<Scene> {
 
     // Load the IR file.
     let (path, display, culprit): (PathBuf, String, &dyn quote::ToTokens) = match &e.path {
-        Some(lit) => (ctx.source_dir.join(lit.value()), lit.value(), lit),
+        Some(lit) => match ctx.resolve(&lit.value()) {
+            Ok(path) => (path, lit.value(), lit),
+            Err(tried) => {
+                let tried: Vec<String> = tried.iter().map(|p| p.display().to_string()).collect();
+                let msg =
+                    format!("no IR file `{}` (looked for {})", lit.value(), tried.join(" and "));
+                return Err(errors.fail(syn::Error::new_spanned(lit, msg)));
+            }
+        },
         None => (
             ctx.generated_dir.join(format!("{model_name}.ir")),
             format!("generated/{model_name}.ir"),
@@ -186,12 +186,8 @@ pub fn validate(decl: SceneDecl, ctx: &Context) -> syn::Result<Scene> {
     let text = match std::fs::read_to_string(&path) {
         Ok(t) => t,
         Err(err) => {
-            let msg = if err.kind() == std::io::ErrorKind::NotFound {
-                if e.path.is_some() {
-                    format!("no IR file `{display}` (looked for {})", path.display())
-                } else {
-                    format!("unknown model `{model_name}`: there is no `{display}`")
-                }
+            let msg = if err.kind() == std::io::ErrorKind::NotFound && e.path.is_none() {
+                format!("unknown model `{model_name}`: there is no `{display}`")
             } else {
                 format!("cannot read IR file `{display}`: {err}")
             };
@@ -248,10 +244,7 @@ pub fn validate(decl: SceneDecl, ctx: &Context) -> syn::Result<Scene> {
         if !names.contains(&n) {
             errors.push(syn::Error::new_spanned(
                 o,
-                format!(
-                    "unknown output `{n}` of model `{model_name}` (outputs: {})",
-                    list(&names)
-                ),
+                format!("unknown output `{n}` of model `{model_name}` (outputs: {})", list(&names)),
             ));
         }
     }
@@ -260,10 +253,8 @@ pub fn validate(decl: SceneDecl, ctx: &Context) -> syn::Result<Scene> {
 
     // Specialise.
     let source_op_count = program.op_count().total;
-    let fixed: Vec<(String, f64)> = fixed
-        .iter()
-        .map(|(i, v)| (i.unraw().to_string(), *v))
-        .collect();
+    let fixed: Vec<(String, f64)> =
+        fixed.iter().map(|(i, v)| (i.unraw().to_string(), *v)).collect();
     let fixed_refs: Vec<(&str, f64)> = fixed.iter().map(|(n, v)| (n.as_str(), *v)).collect();
     let selected: Vec<String> = if e.outputs.is_some() {
         outputs.iter().map(|o| o.unraw().to_string()).collect()
@@ -286,11 +277,8 @@ pub fn validate(decl: SceneDecl, ctx: &Context) -> syn::Result<Scene> {
     };
 
     // Field names must be Rust identifiers.
-    let fields = program
-        .params
-        .iter()
-        .chain(&program.inputs)
-        .chain(program.outputs.iter().map(|o| &o.name));
+    let fields =
+        program.params.iter().chain(&program.inputs).chain(program.outputs.iter().map(|o| &o.name));
     for n in fields {
         if rust_ident(n, Span::call_site()).is_none() {
             errors.push(syn::Error::new_spanned(
@@ -329,11 +317,7 @@ fn list(names: &[String]) -> String {
     if names.is_empty() {
         return "none".to_string();
     }
-    names
-        .iter()
-        .map(|n| format!("`{n}`"))
-        .collect::<Vec<_>>()
-        .join(", ")
+    names.iter().map(|n| format!("`{n}`")).collect::<Vec<_>>().join(", ")
 }
 
 /// The value of a fixed parameter: a float or integer literal, optionally negated, with no
@@ -359,9 +343,7 @@ fn literal_value(name: &Ident, expr: &Expr) -> syn::Result<f64> {
     let (value, suffix) = match lit {
         Lit::Float(f) => (f.base10_parse::<f64>(), f.suffix()),
         Lit::Int(i) => (
-            i.base10_digits()
-                .parse::<f64>()
-                .map_err(|e| syn::Error::new_spanned(i, e)),
+            i.base10_digits().parse::<f64>().map_err(|e| syn::Error::new_spanned(i, e)),
             i.suffix(),
         ),
         _ => return Err(non_numeric()),
