@@ -119,7 +119,7 @@ impl Locals {
     /// Locals named after the IR values; a name that is taken by a module item or cannot be an
     /// identifier gets `_` appended until it is free.
     fn new(p: &Program, parts: usize) -> Locals {
-        let mut taken: HashSet<String> = RESERVED.iter().map(|s| s.to_string()).collect();
+        let mut taken: HashSet<String> = RESERVED.iter().map(ToString::to_string).collect();
         taken.extend((0..parts).map(|k| format!("part_{k}")));
         let mut local = |name: &str| {
             let mut candidate = name.to_string();
@@ -358,10 +358,7 @@ pub fn emit(scene: &Scene) -> TokenStream {
         .iter()
         .map(|n| format!(" Parameter `{n}` of model `{model}`."))
         .chain(inputs.iter().map(|n| format!(" Input `{n}` of model `{model}`.")));
-    let arg_locals: Vec<&Ident> = (0..params.len() as u32)
-        .map(|i| l.get(Value::Param(i)))
-        .chain((0..inputs.len() as u32).map(|i| l.get(Value::Input(i))))
-        .collect();
+    let arg_locals: Vec<&Ident> = l.params.iter().chain(&l.inputs).collect();
     let arg_pattern =
         arg_fields.iter().zip(&arg_locals).map(
             |(f, v)| {

@@ -7,6 +7,8 @@
 
 // The reference values are kept with the 40 digits they were computed with.
 #![allow(clippy::excessive_precision)]
+// The generated modules document every public item.
+#![deny(missing_docs)]
 
 use carvallo_ir::Program;
 
@@ -51,11 +53,7 @@ fn close(got: f64, want: f64) -> bool {
 }
 
 fn assert_close(what: &str, got: f64, want: f64) {
-    assert!(
-        close(got, want),
-        "{what}: got {got:e}, want {want:e}, error {:e}",
-        got - want
-    );
+    assert!(close(got, want), "{what}: got {got:e}, want {want:e}, error {:e}", got - want);
 }
 
 /// 40-digit values at R = 0.5, g = 9.81, x = 0.5, y = 2, z = 4 (mpmath, `mp.dps = 40`).
@@ -77,10 +75,7 @@ fn constants_describe_the_scenes() {
     assert_eq!(full::OUTPUTS, ["poly", "trig", "root", "scaled"]);
     assert_eq!(full::FIXED, []);
     assert_eq!((full::OP_COUNT, full::SOURCE_OP_COUNT), (19, 19));
-    assert_eq!(
-        full::OP_COUNT_BY_OP.iter().map(|(_, n)| n).sum::<usize>(),
-        19
-    );
+    assert_eq!(full::OP_COUNT_BY_OP.iter().map(|(_, n)| n).sum::<usize>(), 19);
 
     assert_eq!(trig_only::PARAMS, [] as [&str; 0]);
     assert_eq!(trig_only::INPUTS, ["x", "y"]);
@@ -98,13 +93,7 @@ fn constants_describe_the_scenes() {
 
 #[test]
 fn values_match_the_hand_computed_ones() {
-    let out = full::eval(&full::Args {
-        R: 0.5,
-        g: 9.81,
-        x: 0.5,
-        y: 2.0,
-        z: 4.0,
-    });
+    let out = full::eval(&full::Args { R: 0.5, g: 9.81, x: 0.5, y: 2.0, z: 4.0 });
     assert_close("poly", out.poly, POLY);
     assert_close("trig", out.trig, TRIG);
     assert_close("root", out.root, ROOT);
@@ -125,24 +114,17 @@ fn values_match_the_hand_computed_ones() {
 
 #[test]
 fn generated_code_equals_the_reference_interpreter_bit_for_bit() {
-    let text = std::fs::read_to_string(concat!(
-        env!("CARGO_MANIFEST_DIR"),
-        "/tests/fixtures/demo.ir"
-    ))
-    .expect("fixture readable");
+    let text =
+        std::fs::read_to_string(concat!(env!("CARGO_MANIFEST_DIR"), "/tests/fixtures/demo.ir"))
+            .expect("fixture readable");
     let program = Program::parse(&text).expect("fixture parses");
     // A fixed grid of points (no randomness needed): signs, zero and large values.
     let values = [-2.5, -0.75, 0.0, 0.3, 1.0, 7.25];
     for (i, &x) in values.iter().enumerate() {
         for (j, &y) in values.iter().enumerate() {
-            let (r, g, z) = (
-                values[(i + j) % 6],
-                values[(i + 2 * j + 1) % 6],
-                values[(2 * i + j + 2) % 6],
-            );
-            let want = program
-                .eval_f64(&[r, g, 1.0], &[x, y, z, 1.0])
-                .expect("interpreter runs");
+            let (r, g, z) =
+                (values[(i + j) % 6], values[(i + 2 * j + 1) % 6], values[(2 * i + j + 2) % 6]);
+            let want = program.eval_f64(&[r, g, 1.0], &[x, y, z, 1.0]).expect("interpreter runs");
             let got = full::eval_array(&[r, g, x, y, z]);
             let split = split::eval_array(&[r, g, x, y, z]);
             for k in 0..4 {
@@ -163,16 +145,7 @@ fn generated_code_equals_the_reference_interpreter_bit_for_bit() {
 #[test]
 fn args_and_outputs_round_trip_through_arrays() {
     let a = full::Args::from_array([1.0, 2.0, 3.0, 4.0, 5.0]);
-    assert_eq!(
-        a,
-        full::Args {
-            R: 1.0,
-            g: 2.0,
-            x: 3.0,
-            y: 4.0,
-            z: 5.0
-        }
-    );
+    assert_eq!(a, full::Args { R: 1.0, g: 2.0, x: 3.0, y: 4.0, z: 5.0 });
     assert_eq!(a.to_array(), [1.0, 2.0, 3.0, 4.0, 5.0]);
     let o = full::eval(&a);
     assert_eq!(full::Out::from_array(o.to_array()), o);
