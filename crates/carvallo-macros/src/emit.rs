@@ -456,10 +456,16 @@ pub fn emit(scene: &Scene) -> TokenStream {
             pub const SOURCE_OP_COUNT: usize = #source_total;
 
             // Rebuild the calling crate when the IR file changes.
-            const _: &str = include_str!(#ir_path);
+            const _: &str = ::core::include_str!(#ir_path);
 
             /// The arguments of [`eval`]: free parameters, then inputs.
-            #[derive(Clone, Copy, Debug, PartialEq, Default)]
+            #[derive(
+                ::core::clone::Clone,
+                ::core::marker::Copy,
+                ::core::fmt::Debug,
+                ::core::cmp::PartialEq,
+                ::core::default::Default
+            )]
             pub struct Args {
                 #(#[doc = #arg_docs] pub #arg_fields: f64,)*
             }
@@ -483,7 +489,13 @@ pub fn emit(scene: &Scene) -> TokenStream {
             }
 
             /// The outputs of [`eval`].
-            #[derive(Clone, Copy, Debug, PartialEq, Default)]
+            #[derive(
+                ::core::clone::Clone,
+                ::core::marker::Copy,
+                ::core::fmt::Debug,
+                ::core::cmp::PartialEq,
+                ::core::default::Default
+            )]
             pub struct Out {
                 #(#[doc = #out_docs] pub #out_fields: f64,)*
             }
