@@ -70,9 +70,5 @@ mod tests;
 /// Declares one or more scenes: specialised evaluators of a model. See the crate docs.
 #[proc_macro]
 pub fn scene(input: proc_macro::TokenStream) -> proc_macro::TokenStream {
-    expand::expand(
-        syn::parse_macro_input!(input as parse::SceneInput),
-        &expand::Context::from_compiler(),
-    )
-    .into()
+    expand::expand(syn::parse_macro_input!(input as parse::SceneInput)).into()
 }

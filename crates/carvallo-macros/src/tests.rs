@@ -248,6 +248,13 @@ fn unknown_and_misused_names() {
         quote!(mod a { model: demo, fixed: { R: 1.0, R: 2.0 } }),
         "parameter `R` is fixed twice",
     );
+    assert_eq!(
+        errors(quote!(mod a { model: demo, fixed: { R: x, R: 2.0 } })),
+        [
+            "the value of `R` must be a float or integer literal, found `x`",
+            "parameter `R` is fixed twice"
+        ]
+    );
     assert_one_error(
         quote!(mod a { model: demo, outputs: [trig, trig] }),
         "output `trig` is selected twice",

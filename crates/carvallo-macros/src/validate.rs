@@ -111,15 +111,17 @@ pub fn validate(decl: SceneDecl, ctx: &Context) -> syn::Result<Scene> {
 
     // Fixed values and selected outputs, checked without the IR file.
     let mut fixed: Vec<(Ident, f64)> = Vec::new();
+    let mut seen: Vec<Ident> = Vec::new();
     for entry in e.fixed.as_ref().map(|f| f.1.as_slice()).unwrap_or_default() {
         let name = entry.name.unraw();
-        if fixed.iter().any(|(n, _)| *n == name) {
+        if seen.contains(&name) {
             errors.push(syn::Error::new_spanned(
                 &entry.name,
                 format!("parameter `{name}` is fixed twice"),
             ));
             continue;
         }
+        seen.push(name.clone());
         match literal_value(&name, &entry.value) {
             Ok(v) => fixed.push((entry.name.clone(), v)),
             Err(err) => errors.push(err),
