@@ -1,15 +1,16 @@
 //! Fast, verified evaluators for E. Carvallo's rolling hoop (memoir of 1897, Part I ch. I).
 //!
 //! The formulas are derived symbolically by the `codegen` crate and committed as IR in
-//! `generated/`; the `scene!` macro turns a chosen subset of their outputs into plain,
+//! `generated/`; the [`scene!`] macro turns a chosen subset of their outputs into plain,
 //! allocation-free Rust at compile time. This crate wraps those evaluators with validated
 //! parameters ([`error`]) and compares every derived formula with the memoir's printed one
 //! ([`report`]).
 
 pub use carvallo_ir as ir;
-// `pub use carvallo_macros::scene;` is added as soon as the macro crate exports it.
+pub use carvallo_macros::scene;
 
 pub mod error;
+pub mod hoop;
 pub mod report;
 
 pub use error::ParameterError;
