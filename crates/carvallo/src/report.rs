@@ -6,8 +6,22 @@
 //! each derived formula is compared with the memoir's printed formula, transcribed by hand in the
 //! same IR program as a `memoir_*` output, at a fixed seeded set of sample points; the numbers
 //! of n° 4 and the straight-rolling stability threshold of n° 14/18 are recomputed from the
-//! generated evaluators; and the symbolic checks recorded by `cargo xtask regen` in
-//! `generated/hoop.checks.tsv` are folded in.
+//! generated evaluators; the remarkable points of the stability discussion (n° 14 point F and
+//! the vertical tangent of the curve (S), n° 17 bis point H) are recomputed by root finding on
+//! the generated normalised (E) and (S); and the symbolic checks recorded by `cargo xtask
+//! regen` in `generated/hoop.checks.tsv` are folded in.
+//!
+//! # Verdicts
+//! * Formulas: `agrees` when the largest relative difference is at most
+//!   [`AGREEMENT_TOLERANCE`], otherwise `derivation-differs` with the worst point in the note.
+//! * Exact numbers (n° 4 coefficients, the threshold $s^2 = 1/4$): `agrees` within
+//!   [`AGREEMENT_TOLERANCE`].
+//! * Numbers Carvallo computed with his slide rule: `rounding` when within one unit of the
+//!   last printed digit or $2\cdot10^{-3}$ relative; otherwise `memoir-error` when the
+//!   formulas they come from agree with the memoir (the slip is in his arithmetic, the note
+//!   says how his own intermediate values show it), `derivation-differs` when they do not.
+//! * Symbolic checks: a check `<output>_memoir` annotates the formula entry of that output;
+//!   any other check is an entry that agrees when its outcome is the expected one.
 //!
 //! # Comparing two formulas
 //! At every sample point the relative difference is
@@ -754,7 +768,11 @@ fn discussion_entries(formulas_agree: bool) -> Vec<Entry> {
                 3,
                 y,
                 formulas_agree,
-                note_f,
+                &format!(
+                    "{note_f}; at the memoir's own x = 0,917 the curves give y = {} (ℰ) and {} (S1)",
+                    format_significant(y_on(0.917, 0).unwrap_or(f64::NAN), 4),
+                    format_significant(y_on(0.917, 1).unwrap_or(f64::NAN), 4)
+                ),
             ));
         }
         None => entries.push(missing("14", "point F", note_f)),
