@@ -324,9 +324,10 @@ mod tests {
         let j = Vector::unit(Trihedron::Ijk, 1);
         let k = Vector::unit(Trihedron::Ijk, 2);
         assert!(same(&i.cross(&j), &k));
-        // |Kk = −I sin θ (n° 5 uses |kK = I sin θ).
-        assert!(same(&k.cross(&k_big), &i.scale(&sin_t())));
-        assert!(!same(&k.cross(&k_big), &i));
+        // n° 5: |Kk = I sin θ, hence |kK = −I sin θ.
+        assert!(same(&k_big.cross(&k), &i.scale(&sin_t())));
+        assert!(same(&k.cross(&k_big), &i.scale(&-sin_t())));
+        assert!(!same(&k.cross(&k_big), &i.scale(&sin_t())));
     }
 
     fn trig_reduction_is_exact() {
