@@ -79,13 +79,13 @@ pub fn reduce_trig(e: &Atom) -> Atom {
     let one_minus_c2 = Atom::num(1) - cos_t().pow(Atom::num(2));
     let expanded = e.expand();
     let mut out = Atom::num(0);
-    for (key, coeff) in expanded.coefficient_list::<u8>(&[st.clone()]) {
+    for (key, coeff) in expanded.coefficient_list::<u8>(std::slice::from_ref(&st)) {
         let k = monomial_degree(&key, &st).unwrap_or(0);
         let mut term = coeff * one_minus_c2.pow(Atom::num((k / 2) as i64));
         if k % 2 == 1 {
-            term = term * &st;
+            term *= &st;
         }
-        out = out + term;
+        out += term;
     }
     out.expand()
 }
@@ -93,10 +93,7 @@ pub fn reduce_trig(e: &Atom) -> Atom {
 /// Numerator and denominator of `e` brought to one fraction, both reduced by [`reduce_trig`].
 pub fn num_den(e: &Atom) -> (Atom, Atom) {
     let rp = e.expand().to_rational_polynomial::<_, _, u16>(&Q, &Z, ());
-    (
-        reduce_trig(&rp.numerator.to_expression()),
-        reduce_trig(&rp.denominator.to_expression()),
-    )
+    (reduce_trig(&rp.numerator.to_expression()), reduce_trig(&rp.denominator.to_expression()))
 }
 
 /// Exact test that `e`, a rational function of the symbols and of $\sin\theta, \cos\theta$
@@ -135,7 +132,7 @@ pub fn time_derivative(f: &Atom) -> Atom {
     for (x, rate) in rules {
         if let Some(sym) = x.get_symbol() {
             if f.contains_symbol(sym) {
-                out = out + f.derivative(sym) * rate;
+                out += f.derivative(sym) * rate;
             }
         }
     }
@@ -185,12 +182,9 @@ impl Vector {
         let [a, b, d] = &self.comps;
         match (self.frame, target) {
             (x, y) if x == y => self.clone(),
-            (Trihedron::IJK, Trihedron::Ijk) => Vector::new(
-                target,
-                a.clone(),
-                b * &c + d * &s,
-                -(b * &s) + d * &c,
-            ),
+            (Trihedron::IJK, Trihedron::Ijk) => {
+                Vector::new(target, a.clone(), b * &c + d * &s, -(b * &s) + d * &c)
+            }
             _ => Vector::new(target, a.clone(), b * &c - d * &s, b * &s + d * &c),
         }
     }
@@ -213,12 +207,7 @@ impl Vector {
 
     /// Product by a scalar.
     pub fn scale(&self, k: &Atom) -> Self {
-        Vector::new(
-            self.frame,
-            k * &self.comps[0],
-            k * &self.comps[1],
-            k * &self.comps[2],
-        )
+        Vector::new(self.frame, k * &self.comps[0], k * &self.comps[1], k * &self.comps[2])
     }
 
     /// Scalar product (both trihedra are orthonormal).
@@ -282,9 +271,8 @@ mod tests {
         let di = i.derivative(&p, &n);
         assert!(same(&di, &j_big.scale(&n)));
         assert!(same(&di, &ijk("0", "n*cos(theta)", "-n*sin(theta)")));
-        let r_form = ijk("0", "r", "-r*tan(theta)").map(|c| {
-            c.replace(var("r").to_pattern()).with((var("n") * cos_t()).to_pattern())
-        });
+        let r_form = ijk("0", "r", "-r*tan(theta)")
+            .map(|c| c.replace(var("r").to_pattern()).with((var("n") * cos_t()).to_pattern()));
         assert!(same(&di, &r_form));
         // J' = −In.
         let dj = j_big.derivative(&p, &n);

@@ -7,27 +7,54 @@ use std::collections::BTreeSet;
 use carvallo_codegen::hoop;
 use symbolica::atom::AtomCore;
 
-/// Checks that must come out false (findings of the memoir, n° 71).
-
 // The unlicensed symbolica runs in one thread only and aborts the process when a second
 // thread uses it, even after the first is done; libtest runs a lone test on the main thread,
 // so this file has a single `#[test]` that calls the checks in turn.
 
+/// Checks that must come out false (findings of the memoir, n° 71).
 const EXPECTED_FALSE: [&str; 2] = ["lagrange_unmodified_nu", "lagrange_unmodified_sigma"];
 
 /// Every check the derivation must make.
 const EXPECTED_IDS: [&str; 39] = [
-    "inertia_a_memoir", "inertia_b_memoir", "inertia_c_memoir", "revolution_relation",
-    "principal_axes", "weight_moment_memoir", "inertia_moment_memoir", "power_identity",
-    "system1_memoir", "system1_solved_memoir", "system2_memoir", "energy_conservation",
-    "kinetic_energy_memoir", "correction_nu_memoir", "correction_sigma_memoir",
-    "lagrange_equations_memoir", "lagrange_combinations", "lagrange_modified_agrees",
-    "lagrange_unmodified_theta", "lagrange_unmodified_nu", "lagrange_unmodified_sigma",
-    "equilibrium_memoir", "characteristic_factor", "stability_memoir", "stability_taylor_route",
-    "stability_taylor_route_pqr", "minus_f1_memoir", "routh_thin_ring", "centre_force_memoir",
-    "skid_memoir", "moment_conversion_memoir", "moment_compound_memoir", "moment_rolling_zero",
-    "moment_weight_memoir", "equilibrium_direct_memoir", "equilibrium_direct_three_halves",
-    "equilibrium_n12_memoir", "stability_n12_memoir", "skid_n12_memoir",
+    "inertia_a_memoir",
+    "inertia_b_memoir",
+    "inertia_c_memoir",
+    "revolution_relation",
+    "principal_axes",
+    "weight_moment_memoir",
+    "inertia_moment_memoir",
+    "power_identity",
+    "system1_memoir",
+    "system1_solved_memoir",
+    "system2_memoir",
+    "energy_conservation",
+    "kinetic_energy_memoir",
+    "correction_nu_memoir",
+    "correction_sigma_memoir",
+    "lagrange_equations_memoir",
+    "lagrange_combinations",
+    "lagrange_modified_agrees",
+    "lagrange_unmodified_theta",
+    "lagrange_unmodified_nu",
+    "lagrange_unmodified_sigma",
+    "equilibrium_memoir",
+    "characteristic_factor",
+    "stability_memoir",
+    "stability_taylor_route",
+    "stability_taylor_route_pqr",
+    "minus_f1_memoir",
+    "routh_thin_ring",
+    "centre_force_memoir",
+    "skid_memoir",
+    "moment_conversion_memoir",
+    "moment_compound_memoir",
+    "moment_rolling_zero",
+    "moment_weight_memoir",
+    "equilibrium_direct_memoir",
+    "equilibrium_direct_three_halves",
+    "equilibrium_n12_memoir",
+    "stability_n12_memoir",
+    "skid_n12_memoir",
 ];
 
 fn checks_hold_except_the_unmodified_lagrange_ones() {
@@ -39,9 +66,17 @@ fn checks_hold_except_the_unmodified_lagrange_ones() {
     assert_eq!(unique, expected, "the set of checks");
     for c in &d.checks {
         let must_hold = !EXPECTED_FALSE.contains(&c.id.as_str());
-        assert_eq!(c.holds, must_hold, "check {} (n° {}): {} — {}", c.id, c.section, c.statement, c.detail);
+        assert_eq!(
+            c.holds, must_hold,
+            "check {} (n° {}): {} — {}",
+            c.id, c.section, c.statement, c.detail
+        );
         assert!(!c.statement.is_empty() && !c.detail.is_empty(), "check {} documents itself", c.id);
-        assert!(!c.statement.contains('\t') && !c.detail.contains('\n'), "check {} has tsv-safe text", c.id);
+        assert!(
+            !c.statement.contains('\t') && !c.detail.contains('\n'),
+            "check {} has tsv-safe text",
+            c.id
+        );
     }
 }
 
@@ -64,9 +99,23 @@ fn contract_names_and_order() {
     assert_eq!(d.inputs, ["theta", "p", "q", "r", "n", "s"]);
     let names: Vec<&str> = d.formulas.iter().map(|f| f.name.as_str()).collect();
     let base = [
-        "pqr_dp", "pqr_dq", "pqr_dr", "pns_dp", "pns_dn", "pns_ds", "energy", "inertia_a",
-        "inertia_b", "inertia_c", "equilibrium", "stability", "skid", "equilibrium_direct",
-        "equilibrium_n12", "stability_n12", "skid_n12",
+        "pqr_dp",
+        "pqr_dq",
+        "pqr_dr",
+        "pns_dp",
+        "pns_dn",
+        "pns_ds",
+        "energy",
+        "inertia_a",
+        "inertia_b",
+        "inertia_c",
+        "equilibrium",
+        "stability",
+        "skid",
+        "equilibrium_direct",
+        "equilibrium_n12",
+        "stability_n12",
+        "skid_n12",
     ];
     assert_eq!(&names[..base.len()], &base);
     for m in &names[base.len()..] {
@@ -78,19 +127,32 @@ fn contract_names_and_order() {
         let f = d.formulas.iter().find(|f| f.name == name).expect("formula present");
         f.expr.get_all_symbols(false).iter().map(|s| s.get_stripped_name().to_string()).collect()
     };
-    let allowed = |list: &[&str]| -> BTreeSet<String> { list.iter().map(|s| s.to_string()).collect() };
+    let allowed =
+        |list: &[&str]| -> BTreeSet<String> { list.iter().map(|s| s.to_string()).collect() };
     for f in ["equilibrium_n12", "stability_n12", "skid_n12"] {
         assert!(symbols(f).is_subset(&allowed(&["theta", "s", "n"])), "{f} uses {:?}", symbols(f));
     }
     for f in ["pns_dp", "pns_dn", "pns_ds"] {
-        assert!(symbols(f).is_subset(&allowed(&["theta", "p", "n", "s", "g", "R"])), "{f} uses {:?}", symbols(f));
+        assert!(
+            symbols(f).is_subset(&allowed(&["theta", "p", "n", "s", "g", "R"])),
+            "{f} uses {:?}",
+            symbols(f)
+        );
     }
     for f in ["pqr_dp", "pqr_dq", "pqr_dr"] {
-        assert!(symbols(f).is_subset(&allowed(&["theta", "p", "q", "r", "g", "R"])), "{f} uses {:?}", symbols(f));
+        assert!(
+            symbols(f).is_subset(&allowed(&["theta", "p", "q", "r", "g", "R"])),
+            "{f} uses {:?}",
+            symbols(f)
+        );
     }
     assert!(symbols("energy").is_subset(&allowed(&["theta", "p", "n", "s", "mu", "g", "R"])));
     for f in ["equilibrium", "stability", "skid", "equilibrium_direct"] {
-        assert!(symbols(f).is_subset(&allowed(&["theta", "n", "s", "g", "R"])), "{f} uses {:?}", symbols(f));
+        assert!(
+            symbols(f).is_subset(&allowed(&["theta", "n", "s", "g", "R"])),
+            "{f} uses {:?}",
+            symbols(f)
+        );
     }
 }
 

@@ -33,7 +33,9 @@ fn printed_for(name: &str) -> &'static [memoir::Printed] {
         "equilibrium" => &[m::EQUILIBRIUM],
         "stability" => &[m::STABILITY],
         "skid" => &[m::SKID],
-        "equilibrium_direct" => &[m::MOMENT_CONVERSION, m::MOMENT_COMPOUND, m::MOMENT_WEIGHT, m::EQUILIBRIUM_DIRECT],
+        "equilibrium_direct" => {
+            &[m::MOMENT_CONVERSION, m::MOMENT_COMPOUND, m::MOMENT_WEIGHT, m::EQUILIBRIUM_DIRECT]
+        }
         "equilibrium_n12" => &[m::EQUILIBRIUM_N12],
         "stability_n12" => &[m::STABILITY_N12],
         "skid_n12" => &[m::SKID_N12],

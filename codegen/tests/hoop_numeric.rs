@@ -9,7 +9,6 @@ use carvallo_codegen::hoop;
 use carvallo_codegen::Derivation;
 use symbolica::atom::{Atom, AtomCore};
 
-
 // The unlicensed symbolica runs in one thread only and aborts the process when a second
 // thread uses it, even after the first is done; libtest runs a lone test on the main thread,
 // so this file has a single `#[test]` that calls the checks in turn.
@@ -40,8 +39,15 @@ fn eval(d: &Derivation, name: &str, x: &Point) -> f64 {
     let f = d.formulas.iter().find(|f| f.name == name).expect("formula present");
     let mut map: HashMap<Atom, f64> = HashMap::new();
     for (k, v) in [
-        ("R", x.r), ("g", x.g), ("mu", x.mu), ("theta", x.theta), ("p", x.p), ("q", x.q),
-        ("r", x.rr), ("n", x.n), ("s", x.s),
+        ("R", x.r),
+        ("g", x.g),
+        ("mu", x.mu),
+        ("theta", x.theta),
+        ("p", x.p),
+        ("q", x.q),
+        ("r", x.rr),
+        ("n", x.n),
+        ("s", x.s),
     ] {
         map.insert(var(k), v);
     }
@@ -62,7 +68,11 @@ fn derived_formulas_match_hand_values() {
         let (st, ct, tt) = (x.theta.sin(), x.theta.cos(), x.theta.tan());
         let gr = x.g / x.r;
         // n° 8, system (1).
-        close("pqr_dp", eval(&d, "pqr_dp", x), 2.0 * gr * st / 3.0 + 4.0 * x.q * x.rr / 3.0 - x.rr * x.rr * tt / 3.0);
+        close(
+            "pqr_dp",
+            eval(&d, "pqr_dp", x),
+            2.0 * gr * st / 3.0 + 4.0 * x.q * x.rr / 3.0 - x.rr * x.rr * tt / 3.0,
+        );
         close("pqr_dq", eval(&d, "pqr_dq", x), -x.p * x.rr / 2.0);
         close("pqr_dr", eval(&d, "pqr_dr", x), x.p * x.rr * tt - 2.0 * x.p * x.q);
         // n° 7, system (2): ½ n' + ps/cos θ = 0, 2 s' − 4ps tan θ + 3pn cos θ = 0.
@@ -70,10 +80,12 @@ fn derived_formulas_match_hand_values() {
         close("pns_ds", eval(&d, "pns_ds", x), 2.0 * x.p * x.s * tt - 1.5 * x.p * x.n * ct);
         // Energy: μR²(¾p² + q² + ¼r²) + μgR cos θ with q = s + n sin θ, r = n cos θ.
         let (q, r) = (x.s + x.n * st, x.n * ct);
-        let energy = x.mu * x.r * x.r * (0.75 * x.p * x.p + q * q + 0.25 * r * r) + x.mu * x.g * x.r * ct;
+        let energy =
+            x.mu * x.r * x.r * (0.75 * x.p * x.p + q * q + 0.25 * r * r) + x.mu * x.g * x.r * ct;
         close("energy", eval(&d, "energy", x), energy);
         // n° 9 (S) and n° 10 D.
-        let stab = -2.0 * gr * ct / 3.0 + x.n * x.n + 8.0 * x.s * x.n * st / 3.0 + 8.0 * x.s * x.s / 3.0;
+        let stab =
+            -2.0 * gr * ct / 3.0 + x.n * x.n + 8.0 * x.s * x.n * st / 3.0 + 8.0 * x.s * x.s / 3.0;
         close("stability", eval(&d, "stability", x), stab);
         close("skid", eval(&d, "skid", x), -(x.n * x.n * st + x.s * x.n) / gr);
         // n° 12 (E).

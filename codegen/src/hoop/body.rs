@@ -24,12 +24,7 @@ pub fn sin_phi() -> Atom {
 /// $M - O$ for the point of azimuth φ, in OIjk.
 pub fn point_from_contact() -> Vector {
     let r = var("R");
-    Vector::new(
-        Trihedron::Ijk,
-        &r * &cos_phi(),
-        Atom::num(0),
-        &r + &r * &sin_phi(),
-    )
+    Vector::new(Trihedron::Ijk, &r * &cos_phi(), Atom::num(0), &r + &r * &sin_phi())
 }
 
 /// $S - O = Rk$.
@@ -38,7 +33,11 @@ pub fn centre_from_contact() -> Vector {
 }
 
 fn double_factorial(k: i64) -> i64 {
-    if k <= 0 { 1 } else { k * double_factorial(k - 2) }
+    if k <= 0 {
+        1
+    } else {
+        k * double_factorial(k - 2)
+    }
 }
 
 fn degree(m: &Atom, x: &Atom) -> i64 {
@@ -56,7 +55,7 @@ pub fn circle_mean(f: &Atom) -> Atom {
         if a % 2 == 0 && b % 2 == 0 {
             let num = double_factorial(a - 1) * double_factorial(b - 1);
             let den = double_factorial(a + b);
-            out = out + coeff * Atom::num(num) / Atom::num(den);
+            out += coeff * Atom::num(num) / Atom::num(den);
         }
     }
     out.expand()

@@ -63,8 +63,8 @@ pub fn equations(modified: bool) -> [Atom; 3] {
     let mut eq_nu = time_derivative(&d(&t, "n"));
     let mut eq_sigma = time_derivative(&d(&t, "s"));
     if modified {
-        eq_nu = eq_nu + correction_nu();
-        eq_sigma = eq_sigma + correction_sigma();
+        eq_nu += correction_nu();
+        eq_sigma += correction_sigma();
     }
     [eq_theta, eq_nu, eq_sigma]
 }

@@ -33,14 +33,11 @@ pub fn characteristic_determinant(pns: &[Atom]) -> Atom {
     let l = var("lambda");
     let at0 = |e: &Atom| simplify(&subst(e, "p", &Atom::num(0)));
     // Equations g_i = X_i' - F_i with X'' = dp (θ'' ), X' = p, U = (n, s), U' = (dn, ds).
-    let g = [
-        var("dp") - &pns[0],
-        var("dn") - &pns[1],
-        var("ds") - &pns[2],
-    ];
+    let g = [var("dp") - &pns[0], var("dn") - &pns[1], var("ds") - &pns[2]];
     let mut m: Vec<Vec<Atom>> = Vec::new();
     for gi in &g {
-        let x_col = at0(&d(gi, "dp")) * l.pow(Atom::num(2)) + at0(&d(gi, "p")) * &l + at0(&d_theta(gi));
+        let x_col =
+            at0(&d(gi, "dp")) * l.pow(Atom::num(2)) + at0(&d(gi, "p")) * &l + at0(&d_theta(gi));
         let n_col = at0(&d(gi, "dn")) * &l + at0(&d(gi, "n"));
         let s_col = at0(&d(gi, "ds")) * &l + at0(&d(gi, "s"));
         m.push(vec![x_col, n_col, s_col]);
@@ -52,7 +49,7 @@ pub fn characteristic_determinant(pns: &[Atom]) -> Atom {
 pub fn lambda_coefficients(det: &Atom) -> Vec<Atom> {
     let l = var("lambda");
     let mut out = vec![Atom::num(0); 5];
-    for (key, coeff) in det.coefficient_list::<u8>(&[l.clone()]) {
+    for (key, coeff) in det.coefficient_list::<u8>(std::slice::from_ref(&l)) {
         let k = (0..5).find(|k| key == l.pow(Atom::num(*k as i64))).unwrap_or(0);
         out[k] = &out[k] + coeff;
     }
