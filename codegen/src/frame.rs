@@ -13,6 +13,10 @@
 //! polynomial to the normal form $a(\cos\theta) + \sin\theta\, b(\cos\theta)$, which makes
 //! [`is_zero`] an exact test. [`to_trig`] and [`from_trig`] convert to and from the functions
 //! `sin(theta)`, `cos(theta)`, `tan(theta)` used in the handed-over formulas.
+//!
+//! The printed formulas (4)–(6) are checked against these rules in `codegen/tests/hoop_frame.rs`
+//! (an integration test: the unlicensed symbolica may only be used from one thread per
+//! process, and the library's unit-test binary is shared with other modules).
 
 use symbolica::atom::{Atom, AtomCore};
 use symbolica::domains::integer::Z;
@@ -247,93 +251,5 @@ impl Vector {
             }
         };
         self.map(time_derivative).add(&omega.cross(self))
-    }
-}
-
-#[cfg(test)]
-mod tests {
-    //! Formulas (4)–(6) of n° 3 as printed, against the frame rules.
-    use super::*;
-
-    fn ijk(a: &str, b: &str, c: &str) -> Vector {
-        Vector::new(Trihedron::Ijk, from_trig(&expr(a)), from_trig(&expr(b)), from_trig(&expr(c)))
-    }
-
-    fn same(a: &Vector, b: &Vector) -> bool {
-        a.sub(b).is_zero()
-    }
-
-    fn formula_4_derivatives_of_i_and_j_big() {
-        let (p, n) = (var("p"), var("n"));
-        let i = Vector::unit(Trihedron::IJK, 0);
-        let j_big = Vector::unit(Trihedron::IJK, 1);
-        // I' = Jn = n(j cos θ − k sin θ) = r(j − k tan θ) with r = n cos θ.
-        let di = i.derivative(&p, &n);
-        assert!(same(&di, &j_big.scale(&n)));
-        assert!(same(&di, &ijk("0", "n*cos(theta)", "-n*sin(theta)")));
-        let r_form = ijk("0", "r", "-r*tan(theta)")
-            .map(|c| c.replace(var("r").to_pattern()).with((var("n") * cos_t()).to_pattern()));
-        assert!(same(&di, &r_form));
-        // J' = −In.
-        let dj = j_big.derivative(&p, &n);
-        assert!(same(&dj, &i.scale(&-n.clone())));
-    }
-
-    fn formula_5_derivatives_of_j_and_k() {
-        let (p, n) = (var("p"), var("n"));
-        let dj = Vector::unit(Trihedron::Ijk, 1).derivative(&p, &n);
-        let dk = Vector::unit(Trihedron::Ijk, 2).derivative(&p, &n);
-        assert!(same(&dj, &ijk("-n*cos(theta)", "0", "p")));
-        assert!(same(&dk, &ijk("n*sin(theta)", "-p", "0")));
-        // r-forms: j' = pk − Ir, k' = −pj + I r tan θ.
-        let r = var("n") * cos_t();
-        assert!(same(&dj, &Vector::new(Trihedron::Ijk, -r.clone(), Atom::num(0), p.clone())));
-        assert!(same(
-            &dk,
-            &Vector::new(Trihedron::Ijk, r * sin_t() / cos_t(), -p.clone(), Atom::num(0))
-        ));
-    }
-
-    fn formula_6_derivative_of_phi() {
-        let (p, n) = (var("p"), var("n"));
-        let phi = Vector::new(Trihedron::IJK, p.clone(), Atom::num(0), n.clone());
-        let expected = Vector::new(Trihedron::IJK, var("dp"), &p * &n, var("dn"));
-        assert!(same(&phi.derivative(&p, &n), &expected));
-        // The same vector given in OIjk has the same derivative.
-        let phi_ijk = phi.to(Trihedron::Ijk);
-        assert!(same(&phi_ijk.derivative(&p, &n), &expected));
-    }
-
-    fn grassmann_products_of_units() {
-        let i = Vector::unit(Trihedron::IJK, 0);
-        let j_big = Vector::unit(Trihedron::IJK, 1);
-        let k_big = Vector::unit(Trihedron::IJK, 2);
-        assert!(same(&i.cross(&j_big), &k_big));
-        let j = Vector::unit(Trihedron::Ijk, 1);
-        let k = Vector::unit(Trihedron::Ijk, 2);
-        assert!(same(&i.cross(&j), &k));
-        // n° 5: |Kk = I sin θ, hence |kK = −I sin θ.
-        assert!(same(&k_big.cross(&k), &i.scale(&sin_t())));
-        assert!(same(&k.cross(&k_big), &i.scale(&-sin_t())));
-        assert!(!same(&k.cross(&k_big), &i.scale(&sin_t())));
-    }
-
-    fn trig_reduction_is_exact() {
-        let e = from_trig(&expr("sin(theta)^4 + 2*sin(theta)^2*cos(theta)^2 + cos(theta)^4 - 1"));
-        assert!(is_zero(&e));
-        let t = from_trig(&expr("tan(theta)*cos(theta) - sin(theta)"));
-        assert!(is_zero(&t));
-        assert!(!is_zero(&from_trig(&expr("sin(theta)^2 - 1"))));
-    }
-
-    /// The unlicensed symbolica runs in one thread only and aborts the process when a second
-    /// thread uses it, so the frame checks run from a single test.
-    #[test]
-    fn frame_rules_of_n3() {
-        formula_4_derivatives_of_i_and_j_big();
-        formula_5_derivatives_of_j_and_k();
-        formula_6_derivative_of_phi();
-        grassmann_products_of_units();
-        trig_reduction_is_exact();
     }
 }
