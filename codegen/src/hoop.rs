@@ -297,6 +297,32 @@ pub fn derive() -> Result<Derivation> {
         &abc(&m::CORRECTION_SIGMA.atom()),
         &one,
     ));
+    checks.push(compare(
+        "73",
+        "correction_nu_via_centre",
+        "the nu correction summed over the points equals the memoir's mu [S'KO'] (sum of m M' = mu S')",
+        &corr_nu,
+        &lagrange::correction_nu_via_centre(),
+        &one,
+    ));
+    let h_pns = h_sums.map(motion::to_pns);
+    let (corr_sigma_memoir_route, last_term) = lagrange::correction_sigma_via_momentum(&h_pns);
+    checks.push(compare(
+        "73",
+        "correction_sigma_via_momentum",
+        "the sigma correction summed over the points equals the memoir's -(p Cr - r Ap + [S'jO'] mu) from the momentum moment",
+        &corr_sigma,
+        &corr_sigma_memoir_route,
+        &one,
+    ));
+    checks.push(compare(
+        "73",
+        "sigma_last_term_zero",
+        "the last term sum of m [M'jO'] of the sigma correction vanishes (\"on vérifie simplement que le dernier terme est nul\")",
+        &last_term,
+        &Atom::num(0),
+        &one,
+    ));
     let lag = lagrange::equations(true);
     checks.push(compare_all("73", "lagrange_equations_memoir", "the modified Lagrange equations (theta), (nu), (sigma) are the printed ones with A, B, C of n° 4", &["(theta)", "(nu)", "(sigma)"], &lag, &[abc(&m::LAGRANGE_THETA.atom()), abc(&m::LAGRANGE_NU.atom()), abc(&m::LAGRANGE_SIGMA.atom())]));
     let eq1_pns: Vec<Atom> = eq1.iter().map(motion::to_pns).collect();

@@ -15,7 +15,7 @@ use symbolica::atom::AtomCore;
 const EXPECTED_FALSE: [&str; 2] = ["lagrange_unmodified_nu", "lagrange_unmodified_sigma"];
 
 /// Every check the derivation must make.
-const EXPECTED_IDS: [&str; 39] = [
+const EXPECTED_IDS: [&str; 42] = [
     "inertia_a_memoir",
     "inertia_b_memoir",
     "inertia_c_memoir",
@@ -31,6 +31,9 @@ const EXPECTED_IDS: [&str; 39] = [
     "kinetic_energy_memoir",
     "correction_nu_memoir",
     "correction_sigma_memoir",
+    "correction_nu_via_centre",
+    "correction_sigma_via_momentum",
+    "sigma_last_term_zero",
     "lagrange_equations_memoir",
     "lagrange_combinations",
     "lagrange_modified_agrees",

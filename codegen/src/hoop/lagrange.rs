@@ -73,3 +73,26 @@ pub fn equations(modified: bool) -> [Atom; 3] {
 pub fn solved(modified: bool) -> Vec<Atom> {
     solve_linear(&equations(modified), &["dp", "dn", "ds"])
 }
+
+/// The memoir's route for the ν correction (n° 73): $+\sum m\,[M'KO'] = \mu\,[S'KO']$,
+/// using $\sum m M' = \mu S'$ with $S' = |\Omega(S - O)$.
+pub fn correction_nu_via_centre() -> Atom {
+    let s_dot = omega_pns().cross(&body::centre_from_contact());
+    let k_big = Vector::unit(Trihedron::IJK, 2);
+    var("mu") * s_dot.dot(&k_big.cross(&contact_velocity()))
+}
+
+/// The memoir's route for the σ correction (n° 73), using $j' = pk - Ir$:
+/// $\sum m M'|(\partial M/\partial\sigma)' = p\sum m[k(M-O)M'] - r\sum m[I(M-O)M']
+/// + \sum m[M'jO']$, the first two sums being the components on k and I of the momentum
+/// moment `h` (Cr and Ap) and the last $\mu[S'jO']$. Returns the correction (sign changed)
+/// and the last term.
+pub fn correction_sigma_via_momentum(h: &Vector) -> (Atom, Atom) {
+    let (p, r) = (var("p"), var("n") * cos_t());
+    let s_dot = omega_pns().cross(&body::centre_from_contact());
+    let j = Vector::unit(Trihedron::Ijk, 1);
+    let last = var("mu") * s_dot.dot(&j.cross(&contact_velocity()));
+    let k_comp = h.dot(&Vector::unit(Trihedron::Ijk, 2));
+    let i_comp = h.dot(&Vector::unit(Trihedron::Ijk, 0));
+    (-(p * k_comp - r * i_comp + &last), last)
+}
