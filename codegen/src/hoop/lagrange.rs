@@ -83,8 +83,8 @@ pub fn correction_nu_via_centre() -> Atom {
 }
 
 /// The memoir's route for the σ correction (n° 73), using $j' = pk - Ir$:
-/// $\sum m M'|(\partial M/\partial\sigma)' = p\sum m[k(M-O)M'] - r\sum m[I(M-O)M']
-/// + \sum m[M'jO']$, the first two sums being the components on k and I of the momentum
+/// $\sum m M'|(\partial M/\partial\sigma)' =
+/// p\sum m[k(M-O)M'] - r\sum m[I(M-O)M'] + \sum m[M'jO']$, the first two sums being the components on k and I of the momentum
 /// moment `h` (Cr and Ap) and the last $\mu[S'jO']$. Returns the correction (sign changed)
 /// and the last term.
 pub fn correction_sigma_via_momentum(h: &Vector) -> (Atom, Atom) {
