@@ -287,7 +287,11 @@ impl Expr {
                     }
                 }
                 terms.sort_by(|x, y| term_key(x).cmp(&term_key(y)));
-                Ok(if terms.len() == 1 { terms.pop().unwrap_or(Expr::Num(rat(0))) } else { Expr::Add(terms) })
+                Ok(if terms.len() == 1 {
+                    terms.pop().unwrap_or(Expr::Num(rat(0)))
+                } else {
+                    Expr::Add(terms)
+                })
             }
         }
     }
@@ -356,7 +360,11 @@ pub fn rational_to_f64(r: &Rational) -> Option<f64> {
         if next.is_infinite() {
             // Beyond the largest finite value: rounds to it only below half an ulp past it.
             let half_ulp = exact(2f64.powi(970))?;
-            let limit = if toward_up { &exact(f64::MAX)? + &half_ulp } else { &exact(-f64::MAX)? - &half_ulp };
+            let limit = if toward_up {
+                &exact(f64::MAX)? + &half_ulp
+            } else {
+                &exact(-f64::MAX)? - &half_ulp
+            };
             let inside = if toward_up { *r < limit } else { *r > limit };
             return inside.then_some(x);
         }
@@ -529,7 +537,9 @@ impl Lowerer<'_> {
         // A coefficient 1/q with q exact in f64 divides by q: one correctly rounded operation.
         let inv = &rat(1) / c;
         if inv.is_integer() {
-            if let Some(q) = rational_to_f64(&inv).filter(|q| Rational::try_from(*q).ok().as_ref() == Some(&inv)) {
+            if let Some(q) =
+                rational_to_f64(&inv).filter(|q| Rational::try_from(*q).ok().as_ref() == Some(&inv))
+            {
                 let qv = self.b.constant(q);
                 return Ok(self.b.div(monomial, qv));
             }
@@ -563,9 +573,14 @@ pub fn generated_header(source: &str) -> String {
 fn declare(d: &Derivation) -> Result<(Builder, BTreeMap<String, Value>), EmitError> {
     let mut b = Builder::new(&d.model);
     let mut names = BTreeMap::new();
-    for (name, is_param) in d.params.iter().map(|p| (p, true)).chain(d.inputs.iter().map(|i| (i, false))) {
+    for (name, is_param) in
+        d.params.iter().map(|p| (p, true)).chain(d.inputs.iter().map(|i| (i, false)))
+    {
         if !is_ir_name(name) {
-            return Err(EmitError::BadName { name: name.clone(), reason: "not a valid IR name".into() });
+            return Err(EmitError::BadName {
+                name: name.clone(),
+                reason: "not a valid IR name".into(),
+            });
         }
         let v = if is_param { b.param(name) } else { b.input(name) };
         if names.insert(name.clone(), v).is_some() {
@@ -580,7 +595,11 @@ fn in_formula(f: &Formula) -> impl FnOnce(EmitError) -> EmitError + '_ {
 }
 
 /// Lowers one expression into `b`, whose parameters and inputs are named by `names`.
-pub fn emit_expr(b: &mut Builder, names: &BTreeMap<String, Value>, expr: &Atom) -> Result<Value, EmitError> {
+pub fn emit_expr(
+    b: &mut Builder,
+    names: &BTreeMap<String, Value>,
+    expr: &Atom,
+) -> Result<Value, EmitError> {
     let e = Expr::from_atom(expr)?;
     Lowerer { b, names }.value(&e)
 }
@@ -596,10 +615,16 @@ pub fn emit_program(d: &Derivation) -> Result<Program, EmitError> {
     let mut seen = std::collections::BTreeSet::new();
     for f in &d.formulas {
         if !is_ir_name(&f.name) {
-            return Err(EmitError::BadName { name: f.name.clone(), reason: "not a valid IR name".into() });
+            return Err(EmitError::BadName {
+                name: f.name.clone(),
+                reason: "not a valid IR name".into(),
+            });
         }
         if !seen.insert(f.name.as_str()) {
-            return Err(EmitError::BadName { name: f.name.clone(), reason: "output declared twice".into() });
+            return Err(EmitError::BadName {
+                name: f.name.clone(),
+                reason: "output declared twice".into(),
+            });
         }
         let v = emit_expr(&mut b, &names, &f.expr).map_err(in_formula(f))?;
         b.output(&f.name, v);
@@ -622,7 +647,10 @@ pub fn count_ops(p: &Program) -> (usize, BTreeMap<&'static str, usize>) {
 }
 
 /// The op count of one formula on its own, after common-subexpression elimination.
-pub fn formula_op_count(d: &Derivation, f: &Formula) -> Result<(usize, BTreeMap<&'static str, usize>), EmitError> {
+pub fn formula_op_count(
+    d: &Derivation,
+    f: &Formula,
+) -> Result<(usize, BTreeMap<&'static str, usize>), EmitError> {
     let (mut b, names) = declare(d)?;
     let v = emit_expr(&mut b, &names, &f.expr).map_err(in_formula(f))?;
     b.output(&f.name, v);
@@ -746,9 +774,10 @@ fn wrap_text(e: &Expr, min: u8) -> String {
 }
 
 const GREEK: &[&str] = &[
-    "alpha", "beta", "gamma", "delta", "epsilon", "zeta", "eta", "theta", "iota", "kappa", "lambda", "mu", "nu",
-    "xi", "pi", "rho", "sigma", "tau", "upsilon", "phi", "chi", "psi", "omega", "Gamma", "Delta", "Theta",
-    "Lambda", "Xi", "Pi", "Sigma", "Upsilon", "Phi", "Psi", "Omega",
+    "alpha", "beta", "gamma", "delta", "epsilon", "zeta", "eta", "theta", "iota", "kappa",
+    "lambda", "mu", "nu", "xi", "pi", "rho", "sigma", "tau", "upsilon", "phi", "chi", "psi",
+    "omega", "Gamma", "Delta", "Theta", "Lambda", "Xi", "Pi", "Sigma", "Upsilon", "Phi", "Psi",
+    "Omega",
 ];
 
 fn latex_name(name: &str) -> String {
@@ -788,7 +817,11 @@ pub fn latex(e: &Expr) -> String {
         Expr::Fun(f, args) => match f {
             Func::Sqrt => format!("\\sqrt{{{}}}", latex(&args[0])),
             Func::Atan2 => {
-                format!("\\operatorname{{atan2}}\\left({}, {}\\right)", latex(&args[0]), latex(&args[1]))
+                format!(
+                    "\\operatorname{{atan2}}\\left({}, {}\\right)",
+                    latex(&args[0]),
+                    latex(&args[1])
+                )
             }
             _ => format!("\\{}{}", f.name(), latex_fun_arg(&args[0])),
         },
@@ -796,9 +829,15 @@ pub fn latex(e: &Expr) -> String {
             if *k == half() {
                 return format!("\\sqrt{{{}}}", latex(b));
             }
-            let exp = if k.is_integer() { k.to_string() } else { format!("{}/{}", k.numerator(), k.denominator()) };
+            let exp = if k.is_integer() {
+                k.to_string()
+            } else {
+                format!("{}/{}", k.numerator(), k.denominator())
+            };
             match &**b {
-                Expr::Fun(f @ (Func::Sin | Func::Cos | Func::Tan), args) if k.is_integer() && !k.is_negative() => {
+                Expr::Fun(f @ (Func::Sin | Func::Cos | Func::Tan), args)
+                    if k.is_integer() && !k.is_negative() =>
+                {
                     format!("\\{}^{{{exp}}}{}", f.name(), latex_fun_arg(&args[0]))
                 }
                 base => format!("{}^{{{exp}}}", wrap_latex(base, PREC_ATOM)),
@@ -860,7 +899,8 @@ fn wrap_latex(e: &Expr, min: u8) -> String {
 // Artifacts
 
 fn one_line(s: &str) -> String {
-    let s: String = s.chars().map(|c| if c == '\t' || c == '\n' || c == '\r' { ' ' } else { c }).collect();
+    let s: String =
+        s.chars().map(|c| if c == '\t' || c == '\n' || c == '\r' { ' ' } else { c }).collect();
     s.trim().to_string()
 }
 
@@ -932,7 +972,9 @@ pub fn render_checks(d: &Derivation) -> String {
     let mut s = String::new();
     s.push_str(&format!("# {}\n", generated_header(&d.source)));
     s.push_str(&format!("# Symbolic checks of model {}, in the order they were made.\n", d.model));
-    s.push_str("# Columns: section<TAB>id<TAB>holds<TAB>statement<TAB>detail (holds is true or false).\n");
+    s.push_str(
+        "# Columns: section<TAB>id<TAB>holds<TAB>statement<TAB>detail (holds is true or false).\n",
+    );
     for c in &d.checks {
         s.push_str(&check_line(c));
         s.push('\n');

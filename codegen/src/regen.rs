@@ -73,7 +73,11 @@ pub struct RegenSummary {
 impl RegenSummary {
     /// The files that differed from (or were missing from, or extra in) the tree on disk.
     pub fn changed(&self) -> Vec<&str> {
-        self.files.iter().filter(|(_, s)| *s != FileStatus::Fresh).map(|(p, _)| p.as_str()).collect()
+        self.files
+            .iter()
+            .filter(|(_, s)| *s != FileStatus::Fresh)
+            .map(|(p, _)| p.as_str())
+            .collect()
     }
 }
 
@@ -138,10 +142,19 @@ pub fn regen_with(
         let changed = summary.changed();
         if !changed.is_empty() {
             let list = |s: FileStatus| {
-                summary.files.iter().filter(|(_, x)| *x == s).map(|(p, _)| p.as_str()).collect::<Vec<_>>()
+                summary
+                    .files
+                    .iter()
+                    .filter(|(_, x)| *x == s)
+                    .map(|(p, _)| p.as_str())
+                    .collect::<Vec<_>>()
             };
             let mut parts = Vec::new();
-            for (label, s) in [("stale", FileStatus::Stale), ("missing", FileStatus::Missing), ("extra", FileStatus::Extra)] {
+            for (label, s) in [
+                ("stale", FileStatus::Stale),
+                ("missing", FileStatus::Missing),
+                ("extra", FileStatus::Extra),
+            ] {
                 let l = list(s);
                 if !l.is_empty() {
                     parts.push(format!("{label}: {}", l.join(", ")));
@@ -198,7 +211,8 @@ pub fn render_all(ds: &[Derivation]) -> Result<(BTreeMap<String, String>, Vec<Mo
 /// Checks that `text` is `program.to_text()` and parses back to exactly `program`.
 fn check_round_trip(program: &Program, text: &str) -> Result<()> {
     program.validate().map_err(|e| anyhow!("emitted program is invalid: {e}"))?;
-    let parsed = Program::parse(text).map_err(|e| anyhow!("emitted program does not parse back: {e}"))?;
+    let parsed =
+        Program::parse(text).map_err(|e| anyhow!("emitted program does not parse back: {e}"))?;
     if parsed != *program {
         bail!("emitted program does not round-trip through its text form");
     }
@@ -264,14 +278,18 @@ fn read_tree(dir: &Path) -> Result<BTreeMap<String, Option<Vec<u8>>>> {
         if entry.file_type()?.is_dir() {
             out.insert(format!("{name}/"), None);
         } else {
-            let bytes = fs::read(&path).with_context(|| format!("cannot read {}", path.display()))?;
+            let bytes =
+                fs::read(&path).with_context(|| format!("cannot read {}", path.display()))?;
             out.insert(name, Some(bytes));
         }
     }
     Ok(out)
 }
 
-fn compare(files: &BTreeMap<String, String>, on_disk: &BTreeMap<String, Option<Vec<u8>>>) -> Vec<(String, FileStatus)> {
+fn compare(
+    files: &BTreeMap<String, String>,
+    on_disk: &BTreeMap<String, Option<Vec<u8>>>,
+) -> Vec<(String, FileStatus)> {
     let mut out = Vec::new();
     for (name, contents) in files {
         let status = match on_disk.get(name) {
@@ -291,7 +309,8 @@ fn compare(files: &BTreeMap<String, String>, on_disk: &BTreeMap<String, Option<V
 }
 
 fn sibling(dir: &Path, suffix: &str) -> Result<PathBuf> {
-    let parent = dir.parent().ok_or_else(|| anyhow!("{} has no parent directory", dir.display()))?;
+    let parent =
+        dir.parent().ok_or_else(|| anyhow!("{} has no parent directory", dir.display()))?;
     let name = dir
         .file_name()
         .ok_or_else(|| anyhow!("{} has no file name", dir.display()))?
@@ -301,7 +320,11 @@ fn sibling(dir: &Path, suffix: &str) -> Result<PathBuf> {
 
 /// Replaces `dir` by a directory holding exactly `files`, atomically as described in the
 /// module docs.
-pub fn write_tree_atomically(dir: &Path, files: &BTreeMap<String, String>, fs_ops: &mut dyn TreeFs) -> Result<()> {
+pub fn write_tree_atomically(
+    dir: &Path,
+    files: &BTreeMap<String, String>,
+    fs_ops: &mut dyn TreeFs,
+) -> Result<()> {
     let new = sibling(dir, "new")?;
     let old = sibling(dir, "old")?;
     // Leftovers of an interrupted earlier run are not part of the tree: clear them first.
@@ -316,7 +339,9 @@ pub fn write_tree_atomically(dir: &Path, files: &BTreeMap<String, String>, fs_op
         fs_ops.create_dir(&new).with_context(|| format!("cannot create {}", new.display()))?;
         for (name, contents) in files {
             let path = new.join(name);
-            fs_ops.write(&path, contents.as_bytes()).with_context(|| format!("cannot write {}", path.display()))?;
+            fs_ops
+                .write(&path, contents.as_bytes())
+                .with_context(|| format!("cannot write {}", path.display()))?;
         }
         Ok(())
     })();
@@ -345,9 +370,13 @@ pub fn write_tree_atomically(dir: &Path, files: &BTreeMap<String, String>, fs_op
         });
     }
     if had_old {
-        fs_ops
-            .remove_dir_all(&old)
-            .with_context(|| format!("{} was updated but the old tree {} could not be removed", dir.display(), old.display()))?;
+        fs_ops.remove_dir_all(&old).with_context(|| {
+            format!(
+                "{} was updated but the old tree {} could not be removed",
+                dir.display(),
+                old.display()
+            )
+        })?;
     }
     Ok(())
 }

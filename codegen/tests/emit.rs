@@ -18,7 +18,8 @@ use std::sync::mpsc;
 use std::sync::{Mutex, OnceLock};
 
 use carvallo_codegen::emit::{
-    count_ops, emit_expr, emit_program, rational_to_f64, render_checks, render_markdown, EmitError, Expr,
+    count_ops, emit_expr, emit_program, rational_to_f64, render_checks, render_markdown, EmitError,
+    Expr,
 };
 use carvallo_codegen::{Check, Derivation, Formula};
 use carvallo_ir::{Builder, Op, Program};
@@ -100,7 +101,12 @@ fn symbolica_eval(expr: &Atom, values: &BTreeMap<String, f64>) -> f64 {
 
 /// Compares the emitted program of `d` with symbolica at `n` seeded random points; `ranges`
 /// gives the sampling interval of every parameter and input by name.
-fn compare_with_symbolica(d: &Derivation, ranges: &BTreeMap<&str, (f64, f64)>, n: usize, seed: u64) {
+fn compare_with_symbolica(
+    d: &Derivation,
+    ranges: &BTreeMap<&str, (f64, f64)>,
+    n: usize,
+    seed: u64,
+) {
     let program = emit_program(d).unwrap_or_else(|e| panic!("emission failed: {e}"));
     let mut rng = ChaCha8Rng::seed_from_u64(seed);
     for _ in 0..n {
@@ -211,13 +217,16 @@ fn rationals_round_correctly_body() {
     // Rust's decimal parser is correctly rounded: an independent oracle for p / 10^k.
     let mut rng = ChaCha8Rng::seed_from_u64(0xdec);
     for _ in 0..300 {
-        let digits: String = (0..rng.gen_range(1..60)).map(|_| char::from(b'0' + rng.gen_range(0..10u8))).collect();
+        let digits: String =
+            (0..rng.gen_range(1..60)).map(|_| char::from(b'0' + rng.gen_range(0..10u8))).collect();
         let digits = format!("{}{digits}", rng.gen_range(1..10));
         let k = rng.gen_range(0..80);
         let neg = rng.gen_bool(0.5);
         let sign = if neg { "-" } else { "" };
         let text = format!("{sign}{digits}/1{}", "0".repeat(k));
-        let Expr::Num(r) = Expr::from_atom(&parse!(&text)).unwrap() else { panic!("{text} is a number") };
+        let Expr::Num(r) = Expr::from_atom(&parse!(&text)).unwrap() else {
+            panic!("{text} is a number")
+        };
         let want: f64 = format!("{sign}{digits}e-{k}").parse().unwrap();
         assert_eq!(rational_to_f64(&r).map(f64::to_bits), Some(want.to_bits()), "{text}");
     }
@@ -246,7 +255,11 @@ fn big_constant_in_a_program_is_rounded_once() {
 fn big_constant_in_a_program_is_rounded_once_body() {
     let d = single(&[], &["x"], parse!("x*12345678901234567890123456789/1000"));
     let p = emit_program(&d).unwrap();
-    let consts: Vec<f64> = p.insts.iter().filter_map(|i| if let Op::Const(c) = i.op { Some(c) } else { None }).collect();
+    let consts: Vec<f64> = p
+        .insts
+        .iter()
+        .filter_map(|i| if let Op::Const(c) = i.op { Some(c) } else { None })
+        .collect();
     let want: f64 = "12345678901234567890123456.789".parse().unwrap();
     assert_eq!(consts, vec![want], "{}", p.to_text());
 }
@@ -347,7 +360,11 @@ fn canonical_order_ignores_symbol_creation_order_body() {
 }
 
 fn sample_derivation() -> Derivation {
-    let mut d = single(&["R", "g"], &["theta", "n", "s"], parse!("4/3*n*s*cos(theta) + 2/3*g*sin(theta)/R + n^2*sin(theta)*cos(theta)"));
+    let mut d = single(
+        &["R", "g"],
+        &["theta", "n", "s"],
+        parse!("4/3*n*s*cos(theta) + 2/3*g*sin(theta)/R + n^2*sin(theta)*cos(theta)"),
+    );
     d.formulas.push(Formula {
         name: "h".to_string(),
         section: "9".to_string(),
@@ -390,7 +407,13 @@ fn rendering_is_byte_stable_and_normalised_body() {
     }
     // The TSV keeps five columns even with an empty detail, and flattens tabs and newlines.
     let rows: Vec<&str> = a.2.lines().filter(|l| !l.starts_with('#')).collect();
-    assert_eq!(rows, ["7\tfirst\ttrue\ta statement over two lines\tdifference 0", "71\tsecond\tfalse\ta failing one\t"]);
+    assert_eq!(
+        rows,
+        [
+            "7\tfirst\ttrue\ta statement over two lines\tdifference 0",
+            "71\tsecond\tfalse\ta failing one\t"
+        ]
+    );
     insta::with_settings!({ description => "IR of a two-formula sample derivation", omit_expression => true }, {
         insta::assert_snapshot!("emit_sample_ir", a.0);
     });
