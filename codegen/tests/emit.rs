@@ -26,7 +26,9 @@ use carvallo_ir::{Builder, Op, Program};
 use rand::{Rng, SeedableRng};
 use rand_chacha::ChaCha8Rng;
 use symbolica::atom::{Atom, AtomCore};
+use symbolica::domains::float::Float;
 use symbolica::parse;
+use symbolica::prelude::RealLike;
 
 /// Relative tolerance between the IR interpreter and symbolica's f64 evaluation, applied as
 /// `|ir - sym| <= REL_TOL * max(|sym|, ABS_FLOOR)`. Both evaluate in f64 with differently
@@ -186,6 +188,53 @@ fn hoop_formulas_match_symbolica_body() {
     .into_iter()
     .collect();
     compare_with_symbolica(&d, &ranges, 100, 0x4009);
+}
+
+/// Precision of the high-precision comparison, in bits.
+const HP_BITS: u32 = 256;
+/// Relative tolerance of the high-precision comparison, applied like [`REL_TOL`]. At 256 bits
+/// both evaluations are exact to far below f64 resolution; what remains is the rounding of the
+/// IR's constants to f64 (half an ulp each, about 1.1e-16 relative) times the small condition
+/// numbers of these formulas at the sampled points.
+const HP_REL_TOL: f64 = 1e-14;
+
+#[test]
+fn hoop_formulas_match_symbolica_in_high_precision() {
+    on_symbolica_thread(hoop_formulas_match_symbolica_in_high_precision_body);
+}
+
+fn hoop_formulas_match_symbolica_in_high_precision_body() {
+    let d = carvallo_codegen::hoop::derive().expect("the hoop derivation runs");
+    let program = emit_program(&d).unwrap();
+    let mut rng = ChaCha8Rng::seed_from_u64(0x4010);
+    for _ in 0..20 {
+        let mut values = BTreeMap::new();
+        for name in d.params.iter().chain(&d.inputs) {
+            let (lo, hi) = match name.as_str() {
+                "R" => (0.2, 2.0),
+                "g" => (9.0, 10.0),
+                "mu" => (0.5, 5.0),
+                "theta" => (0.2, 1.3),
+                _ => (-3.0, 3.0),
+            };
+            values.insert(name.clone(), rng.gen_range(lo..hi));
+        }
+        let params: Vec<f64> = d.params.iter().map(|p| values[p]).collect();
+        let inputs: Vec<f64> = d.inputs.iter().map(|i| values[i]).collect();
+        let got = carvallo_ir::hp::eval_f64(&program, &params, &inputs, HP_BITS as usize).unwrap();
+        for (f, ir) in d.formulas.iter().zip(&got) {
+            let mut map: HashMap<Atom, Float> = HashMap::new();
+            for s in f.expr.get_all_symbols(false) {
+                map.insert(s.to_atom(), Float::with_val(HP_BITS, values[s.get_stripped_name()]));
+            }
+            let sym = f.expr.evaluate_with_prec(&map, HP_BITS).unwrap().to_f64();
+            assert!(
+                (ir - sym).abs() <= HP_REL_TOL * sym.abs().max(ABS_FLOOR),
+                "{}: IR at {HP_BITS} bits gives {ir:e}, symbolica {sym:e} at {values:?}",
+                f.name
+            );
+        }
+    }
 }
 
 #[test]
