@@ -74,7 +74,7 @@ fn run(command: Command) -> anyhow::Result<()> {
     match command {
         Command::Help => print!("{HELP}"),
         Command::Report { json } => {
-            let entries = carvallo::report::hoop_entries();
+            let entries = carvallo::report::all_entries();
             if json {
                 println!("{}", serde_json::to_string_pretty(&entries)?);
             } else {

@@ -1135,6 +1135,15 @@ fn fold_checks(entries: &mut Vec<Entry>, checks: Result<Vec<SymbolicCheck>, Stri
     }
 }
 
+/// The whole concordance: every model's entries, in memoir order (hoop first). Each model
+/// contributes one function; add new models here.
+pub fn all_entries() -> Vec<Entry> {
+    let mut entries = hoop_entries();
+    // Stable sort: the models' own orders are kept within a section.
+    entries.sort_by(|a, b| section_key(&a.section).total_cmp(&section_key(&b.section)));
+    entries
+}
+
 /// The hoop's concordance (memoir n° 4 to 18 and the checks of n° 71–77), computed now from
 /// the generated evaluators and the recorded symbolic checks.
 pub fn hoop_entries() -> Vec<Entry> {
