@@ -64,3 +64,4 @@ pub mod emit;
 pub mod frame;
 pub mod hoop;
 pub mod regen;
+pub mod whipple;

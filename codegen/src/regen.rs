@@ -28,7 +28,8 @@ use crate::Derivation;
 pub type DeriveFn = fn() -> Result<Derivation>;
 
 /// Every derivation `cargo xtask regen` runs, in order: (model name, entry point).
-pub const DERIVATIONS: &[(&str, DeriveFn)] = &[("hoop", crate::hoop::derive)];
+pub const DERIVATIONS: &[(&str, DeriveFn)] =
+    &[("hoop", crate::hoop::derive), ("whipple", crate::whipple::derive)];
 
 /// The directory, relative to the workspace root, that holds the generated files.
 pub const GENERATED_DIR: &str = "generated";
