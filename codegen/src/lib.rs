@@ -63,5 +63,7 @@ pub struct Derivation {
 pub mod emit;
 pub mod frame;
 pub mod hoop;
+#[path = "hoop/discussion.rs"]
+pub mod hoop_discussion;
 pub mod regen;
 pub mod whipple;
