@@ -12,5 +12,6 @@ pub use carvallo_macros::scene;
 pub mod error;
 pub mod hoop;
 pub mod report;
+pub mod whipple;
 
 pub use error::ParameterError;

@@ -1,0 +1,642 @@
+//! The Carvallo–Whipple bicycle linearised about upright straight running: the matrices of
+//! $M\ddot q + v C_1\dot q + (g K_0 + v^2 K_2) q = f$, $q = (\varphi, \delta)$ (lean, steer),
+//! the characteristic polynomial, the eigenvalues and the stable speed range.
+//!
+//! The matrices and the polynomial coefficients are evaluated by [`scene!`](crate::scene)
+//! evaluators over `generated/whipple.ir`, derived symbolically from the 25 parameters of the
+//! 2007 benchmark (Meijaard, Papadopoulos, Ruina, Schwab, Proc. R. Soc. A 463, Table 1) by
+//! `codegen/src/whipple.rs`. Parameters are read from a TOML file in the format of that
+//! benchmark's anchors file: a `[parameters]` table with the keys of [`PARAM_NAMES`], numbers or
+//! the strings `"pi"`, `"pi/N"`, `"K*pi/N"`.
+//!
+//! Stability (Routh–Hurwitz for $a_4 s^4 + a_3 s^3 + a_2 s^2 + a_1 s + a_0$ with $a_4 > 0$):
+//! all $a_i > 0$ and $H_3 = a_1(a_2 a_3 - a_1 a_4) - a_0 a_3^2 > 0$. The coefficients are
+//! polynomials in $v$ whose own coefficients come from the matrices; every positive root of
+//! $a_0, \dots, a_3, H_3$ lies below Cauchy's bound, so scanning up to it and bisecting each
+//! sign change to adjacent floats finds every boundary of the stable range.
+
+use std::fmt;
+
+use nalgebra::Matrix4;
+
+crate::scene! {
+    /// The sixteen entries of $M$, $C_1$, $K_0$, $K_2$.
+    pub mod matrices_scene {
+        model: whipple,
+        outputs: [m11, m12, m21, m22, c1_11, c1_12, c1_21, c1_22,
+                  k0_11, k0_12, k0_21, k0_22, k2_11, k2_12, k2_21, k2_22],
+    }
+}
+
+crate::scene! {
+    /// The characteristic polynomial's coefficients $a_0, \dots, a_4$ at speed $v$.
+    pub mod char_poly_scene {
+        model: whipple,
+        outputs: [a0, a1, a2, a3, a4],
+    }
+}
+
+/// The parameter names, in order (the benchmark's Table 1; `lambda` is the steer axis tilt).
+pub const PARAM_NAMES: [&str; 26] = [
+    "w", "c", "lambda", "g", "rR", "mR", "IRxx", "IRyy", "xB", "zB", "mB", "IBxx", "IByy", "IBzz",
+    "IBxz", "xH", "zH", "mH", "IHxx", "IHyy", "IHzz", "IHxz", "rF", "mF", "IFxx", "IFyy",
+];
+
+/// The benchmark's parameters (Table 1 of the 2007 paper, exact values), in the anchors format.
+pub const BENCHMARK_TOML: &str = r#"[parameters]
+w = 1.02
+c = 0.08
+lambda = "pi/10"
+g = 9.81
+rR = 0.3
+mR = 2.0
+IRxx = 0.0603
+IRyy = 0.12
+xB = 0.3
+zB = -0.9
+mB = 85.0
+IBxx = 9.2
+IByy = 11.0
+IBzz = 2.8
+IBxz = 2.4
+xH = 0.9
+zH = -0.7
+mH = 4.0
+IHxx = 0.05892
+IHyy = 0.06
+IHzz = 0.00708
+IHxz = -0.00756
+rF = 0.35
+mF = 3.0
+IFxx = 0.1405
+IFyy = 0.28
+"#;
+
+/// Keys that must be strictly positive.
+const POSITIVE: [&str; 17] = [
+    "w", "g", "rR", "mR", "IRxx", "IRyy", "mB", "IBxx", "IByy", "IBzz", "mH", "IHxx", "IHyy",
+    "IHzz", "rF", "mF", "IFxx",
+];
+
+/// Why a parameter set was rejected.
+#[derive(Clone, Debug, PartialEq)]
+pub enum WhippleError {
+    /// The text is not valid TOML or has no `[parameters]` table.
+    Syntax {
+        /// What the TOML reader said.
+        message: String,
+    },
+    /// A required key is absent.
+    MissingKey {
+        /// The key.
+        key: &'static str,
+    },
+    /// A key that is not a parameter of the model.
+    UnknownKey {
+        /// The key.
+        key: String,
+    },
+    /// A value that is neither a number nor a multiple of pi.
+    NotANumber {
+        /// The key.
+        key: String,
+        /// The value as written.
+        value: String,
+    },
+    /// A number that cannot describe a bicycle.
+    InvalidParameter {
+        /// The key.
+        key: &'static str,
+        /// The value.
+        value: f64,
+        /// Why, in a few lower-case words.
+        reason: &'static str,
+    },
+}
+
+impl fmt::Display for WhippleError {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        match self {
+            WhippleError::Syntax { message } => write!(f, "invalid parameter file: {message}"),
+            WhippleError::MissingKey { key } => write!(f, "missing parameter {key}"),
+            WhippleError::UnknownKey { key } => write!(f, "unknown parameter {key}"),
+            WhippleError::NotANumber { key, value } => {
+                write!(f, "parameter {key} = {value} is not a number")
+            }
+            WhippleError::InvalidParameter { key, value, reason } => {
+                write!(f, "invalid {key} {value:?}: {reason}")
+            }
+        }
+    }
+}
+
+impl std::error::Error for WhippleError {}
+
+/// Reads `"pi"`, `"pi/N"`, `"K*pi"`, `"K*pi/N"` or a plain number.
+fn parse_pi(text: &str) -> Option<f64> {
+    let t: String = text.chars().filter(|c| !c.is_whitespace()).collect();
+    let (num, den) = match t.split_once('/') {
+        Some((a, b)) => (a.to_string(), b.parse::<f64>().ok()?),
+        None => (t.clone(), 1.0),
+    };
+    let k = if num == "pi" {
+        1.0
+    } else if let Some(k) = num.strip_suffix("*pi") {
+        k.parse::<f64>().ok()?
+    } else {
+        return num.parse::<f64>().ok().map(|x| x / den);
+    };
+    Some(k * std::f64::consts::PI / den)
+}
+
+/// A validated parameter set of the Carvallo–Whipple bicycle.
+#[derive(Clone, Debug, PartialEq)]
+pub struct WhippleParams {
+    values: [f64; 26],
+}
+
+impl WhippleParams {
+    /// The benchmark bicycle of the 2007 paper.
+    pub fn benchmark() -> WhippleParams {
+        WhippleParams::from_toml_str(BENCHMARK_TOML).expect("the benchmark parameters are valid")
+    }
+
+    /// Reads a parameter file in the anchors format (extra tables such as `[published]` are
+    /// ignored; unknown keys inside `[parameters]` are errors).
+    ///
+    /// # Errors
+    /// [`WhippleError`] naming the key and value at fault.
+    pub fn from_toml_str(text: &str) -> Result<WhippleParams, WhippleError> {
+        let doc: toml::Table =
+            text.parse().map_err(|e: toml::de::Error| WhippleError::Syntax {
+                message: e.message().to_lowercase(),
+            })?;
+        let table = doc.get("parameters").and_then(|t| t.as_table()).ok_or_else(|| {
+            WhippleError::Syntax { message: "no [parameters] table".to_string() }
+        })?;
+        for key in table.keys() {
+            if !PARAM_NAMES.contains(&key.as_str()) {
+                return Err(WhippleError::UnknownKey { key: key.clone() });
+            }
+        }
+        let mut values = [0.0; 26];
+        for (i, key) in PARAM_NAMES.iter().enumerate() {
+            let item = table.get(*key).ok_or(WhippleError::MissingKey { key })?;
+            let x = match item {
+                toml::Value::Float(x) => Some(*x),
+                toml::Value::Integer(n) => Some(*n as f64),
+                toml::Value::String(s) => parse_pi(s),
+                _ => None,
+            };
+            values[i] = x.ok_or_else(|| WhippleError::NotANumber {
+                key: key.to_string(),
+                value: item.to_string(),
+            })?;
+        }
+        WhippleParams::from_values(values)
+    }
+
+    /// Builds a parameter set from the values in the order of [`PARAM_NAMES`].
+    ///
+    /// # Errors
+    /// [`WhippleError::InvalidParameter`] for a non-finite value, a non-positive length, mass,
+    /// gravity or principal moment, a steer tilt outside $(-\pi/2, \pi/2)$, or a frame inertia
+    /// that is not positive definite in its x–z plane.
+    pub fn from_values(values: [f64; 26]) -> Result<WhippleParams, WhippleError> {
+        for (key, &value) in PARAM_NAMES.iter().zip(&values) {
+            if !value.is_finite() {
+                return Err(WhippleError::InvalidParameter { key, value, reason: "must be finite" });
+            }
+            if POSITIVE.contains(key) && value <= 0.0 {
+                return Err(WhippleError::InvalidParameter {
+                    key,
+                    value,
+                    reason: "must be positive",
+                });
+            }
+        }
+        let p = WhippleParams { values };
+        let lambda = p.get("lambda").unwrap_or(f64::NAN);
+        if lambda.abs() >= std::f64::consts::FRAC_PI_2 {
+            return Err(WhippleError::InvalidParameter {
+                key: "lambda",
+                value: lambda,
+                reason: "must lie strictly between -pi/2 and pi/2",
+            });
+        }
+        for (xx, zz, xz) in [("IBxx", "IBzz", "IBxz"), ("IHxx", "IHzz", "IHxz")] {
+            let (a, b, c) = (p.value(xx), p.value(zz), p.value(xz));
+            if a * b - c * c <= 0.0 {
+                let key = if xz == "IBxz" { "IBxz" } else { "IHxz" };
+                return Err(WhippleError::InvalidParameter {
+                    key,
+                    value: c,
+                    reason: "makes the inertia matrix not positive definite",
+                });
+            }
+        }
+        Ok(p)
+    }
+
+    /// The value of the parameter `name`, if it is one.
+    pub fn get(&self, name: &str) -> Option<f64> {
+        PARAM_NAMES.iter().position(|k| *k == name).map(|i| self.values[i])
+    }
+
+    fn value(&self, name: &str) -> f64 {
+        self.get(name).unwrap_or(f64::NAN)
+    }
+
+    /// All values, in the order of [`PARAM_NAMES`].
+    pub fn values(&self) -> &[f64; 26] {
+        &self.values
+    }
+}
+
+/// A 2 × 2 matrix by rows.
+pub type Mat2 = [[f64; 2]; 2];
+
+/// The linearised equations' matrices.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct Matrices {
+    /// Mass matrix $M$.
+    pub m: Mat2,
+    /// $C_1$ (multiplied by $v$).
+    pub c1: Mat2,
+    /// $K_0$ (multiplied by $g$).
+    pub k0: Mat2,
+    /// $K_2$ (multiplied by $v^2$).
+    pub k2: Mat2,
+}
+
+/// One eigenvalue.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct Eigenvalue {
+    /// Real part (1/s).
+    pub re: f64,
+    /// Imaginary part (1/s).
+    pub im: f64,
+}
+
+/// The stable speed range.
+#[derive(Clone, Debug, PartialEq)]
+pub struct StabilityWindow {
+    /// The lowest positive speed at which $H_3$ turns from negative to positive (the weave
+    /// speed), `None` if there is none.
+    pub weave_speed: Option<f64>,
+    /// The lowest positive root of $a_0(v)$ (the capsize speed), closed form in $v^2$; `None`
+    /// if $a_0$ has no positive root.
+    pub capsize_speed: Option<f64>,
+    /// The maximal intervals of positive speed on which every eigenvalue has a negative real
+    /// part; an interval stable for every larger speed ends at `f64::INFINITY`.
+    pub stable: Vec<(f64, f64)>,
+}
+
+fn horner(c: &[f64], x: f64) -> f64 {
+    c.iter().rev().fold(0.0, |acc, k| acc * x + k)
+}
+
+fn poly_mul(a: &[f64], b: &[f64]) -> Vec<f64> {
+    let mut out = vec![0.0; a.len() + b.len() - 1];
+    for (i, x) in a.iter().enumerate() {
+        for (j, y) in b.iter().enumerate() {
+            out[i + j] += x * y;
+        }
+    }
+    out
+}
+
+fn poly_add(a: &[f64], b: &[f64], sb: f64) -> Vec<f64> {
+    let n = a.len().max(b.len());
+    (0..n).map(|i| a.get(i).copied().unwrap_or(0.0) + sb * b.get(i).copied().unwrap_or(0.0)).collect()
+}
+
+fn poly_deriv(a: &[f64]) -> Vec<f64> {
+    a.iter().enumerate().skip(1).map(|(i, x)| i as f64 * x).collect()
+}
+
+fn mix(a: &Mat2, b: &Mat2) -> f64 {
+    a[0][0] * b[1][1] + b[0][0] * a[1][1] - a[0][1] * b[1][0] - b[0][1] * a[1][0]
+}
+
+fn det(a: &Mat2) -> f64 {
+    a[0][0] * a[1][1] - a[0][1] * a[1][0]
+}
+
+/// Bisects a sign change of `f` on `[lo, hi]` down to adjacent floats.
+fn bisect(f: &dyn Fn(f64) -> f64, mut lo: f64, mut hi: f64) -> f64 {
+    let mut flo = f(lo);
+    for _ in 0..2000 {
+        let mid = 0.5 * (lo + hi);
+        if mid <= lo || mid >= hi {
+            break;
+        }
+        let fm = f(mid);
+        if fm == 0.0 {
+            return mid;
+        }
+        if (fm > 0.0) == (flo > 0.0) {
+            lo = mid;
+            flo = fm;
+        } else {
+            hi = mid;
+        }
+    }
+    if f(hi).abs() < flo.abs() {
+        hi
+    } else {
+        lo
+    }
+}
+
+/// The linearised Carvallo–Whipple bicycle for one parameter set.
+#[derive(Clone, Debug, PartialEq)]
+pub struct Whipple {
+    params: WhippleParams,
+    matrices: Matrices,
+}
+
+impl Whipple {
+    /// Evaluates the matrices for `params`.
+    pub fn new(params: WhippleParams) -> Whipple {
+        let n = matrices_scene::Args::LEN;
+        let names = matrices_scene::PARAMS;
+        let arr: [f64; matrices_scene::Args::LEN] =
+            std::array::from_fn(|i| if i < n { params.value(names[i]) } else { f64::NAN });
+        let o = matrices_scene::eval(&matrices_scene::Args::from_array(arr));
+        let matrices = Matrices {
+            m: [[o.m11, o.m12], [o.m21, o.m22]],
+            c1: [[o.c1_11, o.c1_12], [o.c1_21, o.c1_22]],
+            k0: [[o.k0_11, o.k0_12], [o.k0_21, o.k0_22]],
+            k2: [[o.k2_11, o.k2_12], [o.k2_21, o.k2_22]],
+        };
+        Whipple { params, matrices }
+    }
+
+    /// The parameters.
+    pub fn params(&self) -> &WhippleParams {
+        &self.params
+    }
+
+    /// $M$, $C_1$, $K_0$, $K_2$.
+    pub fn matrices(&self) -> Matrices {
+        self.matrices
+    }
+
+    /// The coefficients $[a_0, \dots, a_4]$ of $\det(M s^2 + v C_1 s + g K_0 + v^2 K_2)$ at speed
+    /// `v`, from the generated evaluator.
+    pub fn char_poly(&self, v: f64) -> [f64; 5] {
+        let names = char_poly_scene::PARAMS;
+        let np = names.len();
+        let arr: [f64; char_poly_scene::Args::LEN] =
+            std::array::from_fn(|i| if i < np { self.params.value(names[i]) } else { v });
+        let o = char_poly_scene::eval(&char_poly_scene::Args::from_array(arr));
+        [o.a0, o.a1, o.a2, o.a3, o.a4]
+    }
+
+    /// The coefficients $a_0, \dots, a_4$ as polynomials in $v$ (`[k][j]` is the coefficient of
+    /// $v^j$ in $a_k$), computed from the matrices.
+    pub fn char_poly_in_v(&self) -> [Vec<f64>; 5] {
+        let Matrices { m, c1, k0, k2 } = self.matrices;
+        let g = self.params.value("g");
+        [
+            vec![g * g * det(&k0), 0.0, g * mix(&k0, &k2), 0.0, det(&k2)],
+            vec![0.0, g * mix(&c1, &k0), 0.0, mix(&c1, &k2)],
+            vec![g * mix(&m, &k0), 0.0, mix(&m, &k2) + det(&c1)],
+            vec![0.0, mix(&m, &c1)],
+            vec![det(&m)],
+        ]
+    }
+
+    /// The state matrix of $(\varphi, \delta, \varphi', \delta')$ at speed `v`.
+    pub fn state_matrix(&self, v: f64) -> Matrix4<f64> {
+        let Matrices { m, c1, k0, k2 } = self.matrices;
+        let g = self.params.value("g");
+        let dm = det(&m);
+        let minv = [[m[1][1] / dm, -m[0][1] / dm], [-m[1][0] / dm, m[0][0] / dm]];
+        let mut a = Matrix4::zeros();
+        a[(0, 2)] = 1.0;
+        a[(1, 3)] = 1.0;
+        for r in 0..2 {
+            for c in 0..2 {
+                let (mut kk, mut cc) = (0.0, 0.0);
+                for j in 0..2 {
+                    kk += minv[r][j] * (g * k0[j][c] + v * v * k2[j][c]);
+                    cc += minv[r][j] * v * c1[j][c];
+                }
+                a[(2 + r, c)] = -kk;
+                a[(2 + r, 2 + c)] = -cc;
+            }
+        }
+        a
+    }
+
+    /// The four eigenvalues at speed `v`, sorted by real part then imaginary part.
+    pub fn eigenvalues(&self, v: f64) -> Vec<Eigenvalue> {
+        let mut ev: Vec<Eigenvalue> = self
+            .state_matrix(v)
+            .complex_eigenvalues()
+            .iter()
+            .map(|z| Eigenvalue { re: z.re, im: z.im })
+            .collect();
+        ev.sort_by(|a, b| a.re.total_cmp(&b.re).then(a.im.total_cmp(&b.im)));
+        ev
+    }
+
+    /// The Hurwitz functions $a_0, a_1, a_2, a_3, H_3$ as polynomials in $v$.
+    fn hurwitz_polys(&self) -> [Vec<f64>; 5] {
+        let [a0, a1, a2, a3, a4] = self.char_poly_in_v();
+        let h = poly_add(
+            &poly_mul(&a1, &poly_add(&poly_mul(&a2, &a3), &poly_mul(&a1, &a4), -1.0)),
+            &poly_mul(&a0, &poly_mul(&a3, &a3)),
+            -1.0,
+        );
+        [a0, a1, a2, a3, h]
+    }
+
+    /// $H_3 = a_1(a_2 a_3 - a_1 a_4) - a_0 a_3^2$ at speed `v`, from the coefficient values.
+    pub fn hurwitz(&self, v: f64) -> f64 {
+        let a = self.char_poly_in_v().map(|p| horner(&p, v));
+        a[1] * (a[2] * a[3] - a[1] * a[4]) - a[0] * a[3] * a[3]
+    }
+
+    /// Every positive root of the polynomial `p` (by scanning below Cauchy's bound and
+    /// bisecting), evaluated with `f` (which may be a more accurate form of the same function).
+    fn positive_roots(p: &[f64], f: &dyn Fn(f64) -> f64) -> Vec<f64> {
+        let mut p = p.to_vec();
+        while p.last().is_some_and(|x| *x == 0.0) {
+            p.pop();
+        }
+        let Some(&lead) = p.last() else { return Vec::new() };
+        if p.len() < 2 {
+            return Vec::new();
+        }
+        let bound = 1.0 + p[..p.len() - 1].iter().map(|c| (c / lead).abs()).fold(0.0, f64::max);
+        let n = 200_000usize;
+        let mut roots = Vec::new();
+        let mut prev_x = bound * 1e-9;
+        let mut prev = f(prev_x);
+        for i in 1..=n {
+            let t = i as f64 / n as f64;
+            let x = bound * t * t;
+            if x <= prev_x {
+                continue;
+            }
+            let y = f(x);
+            if y == 0.0 {
+                roots.push(x);
+            } else if prev != 0.0 && (y > 0.0) != (prev > 0.0) {
+                roots.push(bisect(f, prev_x, x));
+            }
+            prev_x = x;
+            prev = y;
+        }
+        roots
+    }
+
+    /// The capsize speed in closed form: the lowest positive root of
+    /// $a_0 = g^2\det K_0 + g v^2 m(K_0, K_2) + v^4 \det K_2$, a quadratic in $v^2$.
+    pub fn capsize_speed(&self) -> Option<f64> {
+        let a0 = &self.char_poly_in_v()[0];
+        let (c, b, a) = (a0[0], a0[2], a0[4]);
+        let mut roots: Vec<f64> = Vec::new();
+        if a == 0.0 {
+            if b != 0.0 {
+                roots.push(-c / b);
+            }
+        } else {
+            let disc = b * b - 4.0 * a * c;
+            if disc >= 0.0 {
+                let q = -0.5 * (b + b.signum() * disc.sqrt());
+                roots.push(q / a);
+                if q != 0.0 {
+                    roots.push(c / q);
+                }
+            }
+        }
+        roots.into_iter().filter(|u| *u > 0.0).map(f64::sqrt).min_by(f64::total_cmp)
+    }
+
+    /// The weave speed: the lowest positive speed where $H_3$ changes sign from negative to
+    /// positive.
+    pub fn weave_speed(&self) -> Option<f64> {
+        let polys = self.hurwitz_polys();
+        let f = |v: f64| self.hurwitz(v);
+        Self::positive_roots(&polys[4], &f).into_iter().find(|&r| {
+            let d = 1e-6 * r.max(1e-6);
+            f(r - d) < 0.0 && f(r + d) > 0.0
+        })
+    }
+
+    /// The weave–capsize bifurcation speed and the double real root there: the lowest positive
+    /// speed at which two real eigenvalues merge into a complex pair, located on a speed grid by
+    /// the eigenvalues and refined by Newton's method on $P(s, v) = \partial_s P(s, v) = 0$.
+    /// `None` if no real pair turns complex below the weave speed (or 10 m/s without one).
+    pub fn bifurcation(&self) -> Option<(f64, f64)> {
+        let vmax = self.weave_speed().unwrap_or(10.0);
+        let n = 2000;
+        let count_real = |v: f64| self.eigenvalues(v).iter().filter(|e| e.im == 0.0).count();
+        let mut prev_v = 0.0;
+        let mut prev_n = count_real(0.0);
+        for i in 1..=n {
+            let v = vmax * i as f64 / n as f64;
+            let k = count_real(v);
+            if k < prev_n {
+                // The merging pair: the two closest real eigenvalues at prev_v.
+                let reals: Vec<f64> =
+                    self.eigenvalues(prev_v).iter().filter(|e| e.im == 0.0).map(|e| e.re).collect();
+                let mut best = (f64::INFINITY, 0.0);
+                for i in 0..reals.len() {
+                    for j in i + 1..reals.len() {
+                        let d = (reals[i] - reals[j]).abs();
+                        if d < best.0 {
+                            best = (d, 0.5 * (reals[i] + reals[j]));
+                        }
+                    }
+                }
+                return self.refine_double_root(best.1, 0.5 * (prev_v + v));
+            }
+            prev_v = v;
+            prev_n = k;
+        }
+        None
+    }
+
+    fn refine_double_root(&self, mut s: f64, mut v: f64) -> Option<(f64, f64)> {
+        let a = self.char_poly_in_v();
+        let da: Vec<Vec<f64>> = a.iter().map(|p| poly_deriv(p)).collect();
+        // P = sum a_k(v) s^k; derivatives in s and v.
+        let eval = |s: f64, v: f64| {
+            let (mut p, mut ps, mut pss, mut pv, mut psv) = (0.0, 0.0, 0.0, 0.0, 0.0);
+            for k in 0..5 {
+                let ak = horner(&a[k], v);
+                let dak = horner(&da[k], v);
+                let kf = k as f64;
+                p += ak * s.powi(k as i32);
+                pv += dak * s.powi(k as i32);
+                if k >= 1 {
+                    ps += kf * ak * s.powi(k as i32 - 1);
+                    psv += kf * dak * s.powi(k as i32 - 1);
+                }
+                if k >= 2 {
+                    pss += kf * (kf - 1.0) * ak * s.powi(k as i32 - 2);
+                }
+            }
+            (p, ps, pss, pv, psv)
+        };
+        for _ in 0..100 {
+            let (p, ps, pss, pv, psv) = eval(s, v);
+            // Jacobian of (P, P_s) in (s, v).
+            let det = ps * psv - pv * pss;
+            if det == 0.0 || !det.is_finite() {
+                return None;
+            }
+            let ds = (p * psv - pv * ps) / det;
+            let dv = (ps * ps - pss * p) / det;
+            s -= ds;
+            v -= dv;
+            if ds.abs() <= 1e-16 * s.abs() && dv.abs() <= 1e-16 * v.abs() {
+                break;
+            }
+        }
+        (v.is_finite() && s.is_finite()).then_some((v, s))
+    }
+
+    /// The stable speed range and the weave and capsize speeds.
+    pub fn stability_window(&self) -> StabilityWindow {
+        let polys = self.hurwitz_polys();
+        let a = |k: usize, v: f64| {
+            if k < 4 {
+                horner(&polys[k], v)
+            } else {
+                self.hurwitz(v)
+            }
+        };
+        let mut cuts: Vec<f64> = Vec::new();
+        for (k, p) in polys.iter().enumerate() {
+            let f = |v: f64| a(k, v);
+            cuts.extend(Self::positive_roots(p, &f));
+        }
+        cuts.sort_by(f64::total_cmp);
+        cuts.dedup();
+        let stable_at = |v: f64| (0..5).all(|k| a(k, v) > 0.0);
+        let mut edges = vec![0.0];
+        edges.extend(cuts.iter().copied());
+        let mut stable: Vec<(f64, f64)> = Vec::new();
+        for (i, &lo) in edges.iter().enumerate() {
+            let hi = edges.get(i + 1).copied().unwrap_or(f64::INFINITY);
+            let mid = if hi.is_finite() { 0.5 * (lo + hi) } else { 2.0 * lo + 1.0 };
+            if stable_at(mid) {
+                match stable.last_mut() {
+                    Some(last) if last.1 == lo => last.1 = hi,
+                    _ => stable.push((lo, hi)),
+                }
+            }
+        }
+        StabilityWindow {
+            weave_speed: self.weave_speed(),
+            capsize_speed: self.capsize_speed(),
+            stable,
+        }
+    }
+}
