@@ -7,6 +7,8 @@
 
 use std::process::ExitCode;
 
+mod whipple;
+
 const HELP: &str = "\
 carvallo: E. Carvallo's rolling hoop (1897), re-derived and checked against the memoir
 
@@ -87,6 +89,9 @@ fn run(command: Command) -> anyhow::Result<()> {
 
 fn main() -> ExitCode {
     let args: Vec<String> = std::env::args().skip(1).collect();
+    if let Some(code) = whipple::dispatch(&args) {
+        return code;
+    }
     let command = match parse(&args) {
         Ok(command) => command,
         Err(err) => {
