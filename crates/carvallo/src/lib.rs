@@ -11,6 +11,7 @@ pub use carvallo_macros::scene;
 
 pub mod error;
 pub mod hoop;
+pub mod hoop_discussion;
 pub mod report;
 pub mod whipple;
 
