@@ -143,3 +143,27 @@ fn bad_parameter_files_are_rejected_with_the_key() {
     let e = WhippleParams::from_toml_str(&format!("{base}foo = 1.0\n")).unwrap_err();
     assert_eq!(e.to_string(), "unknown parameter foo");
 }
+
+#[test]
+fn report_published_values_equal_the_anchors() {
+    use carvallo::report_whipple::{entries, PUBLISHED_MATRICES, PUBLISHED_SPEEDS};
+    let (_, t) = model();
+    for (key, m) in PUBLISHED_MATRICES {
+        let rows = t["published"][key].as_array().expect("matrix");
+        for r in 0..2 {
+            for c in 0..2 {
+                assert_eq!(m[r][c], num(&rows[r].as_array().expect("row")[c]), "{key}[{r}][{c}]");
+            }
+        }
+    }
+    for (key, x) in PUBLISHED_SPEEDS {
+        if key != "double_root" {
+            assert_eq!(x, published(&t, key), "{key}");
+        }
+    }
+    let all = entries();
+    assert_eq!(all.len(), 16 + 4 + 11, "16 matrix entries, 4 speeds, 11 symbolic checks");
+    for e in &all {
+        assert_eq!(e.verdict, carvallo::report::Verdict::Agrees, "{} disagrees: {}", e.quantity, e.note);
+    }
+}

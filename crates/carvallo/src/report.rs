@@ -1139,6 +1139,7 @@ fn fold_checks(entries: &mut Vec<Entry>, checks: Result<Vec<SymbolicCheck>, Stri
 /// contributes one function; add new models here.
 pub fn all_entries() -> Vec<Entry> {
     let mut entries = hoop_entries();
+    entries.extend(crate::report_whipple::entries());
     // Stable sort: the models' own orders are kept within a section.
     entries.sort_by(|a, b| section_key(&a.section).total_cmp(&section_key(&b.section)));
     entries
