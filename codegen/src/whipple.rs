@@ -112,9 +112,8 @@ pub fn matrices(checks: &mut Vec<Check>) -> Matrices {
         all0(&dy.front_slip),
         format!("{:?}", dy.front_slip.iter().map(|x| x.expand().to_string()).collect::<Vec<_>>()),
     ));
-    let yaw_expected = (var("v") * var("delta") + var("c") * var("deltad"))
-        * var(linear::COS_LAMBDA)
-        / var("w");
+    let yaw_expected =
+        (var("v") * var("delta") + var("c") * var("deltad")) * var(linear::COS_LAMBDA) / var("w");
     checks.push(check(
         "yaw_rate",
         "the yaw rate from the front wheel's rolling is psi' = (v delta + c delta') cos(lambda) / w",
@@ -180,7 +179,9 @@ pub fn char_poly(m: &Matrices) -> [Atom; 5] {
     let (v, g) = (var("v"), var("g"));
     let v2 = v.pow(Atom::num(2));
     [
-        g.pow(Atom::num(2)) * det(&m.k0) + &g * &v2 * mix(&m.k0, &m.k2) + v.pow(Atom::num(4)) * det(&m.k2),
+        g.pow(Atom::num(2)) * det(&m.k0)
+            + &g * &v2 * mix(&m.k0, &m.k2)
+            + v.pow(Atom::num(4)) * det(&m.k2),
         &v * &g * mix(&m.c1, &m.k0) + v.pow(Atom::num(3)) * mix(&m.c1, &m.k2),
         &g * mix(&m.m, &m.k0) + &v2 * (mix(&m.m, &m.k2) + det(&m.c1)),
         &v * mix(&m.m, &m.c1),

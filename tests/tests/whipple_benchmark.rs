@@ -84,7 +84,11 @@ fn characteristic_speeds_match_published() {
     close_rel("weave speed", vw, published(&t, "weave_speed"));
     close_rel("capsize speed", vc, published(&t, "capsize_speed"));
     let (vd, s) = w.bifurcation().expect("bifurcation exists");
-    close_rel("weave-capsize bifurcation speed", vd, published(&t, "weave_capsize_bifurcation_speed"));
+    close_rel(
+        "weave-capsize bifurcation speed",
+        vd,
+        published(&t, "weave_capsize_bifurcation_speed"),
+    );
     close_rel("double root at the bifurcation", s, 3.78290405129320);
     // The stable window is exactly [vw, vc].
     assert_eq!(win.stable.len(), 1, "one stable interval: {:?}", win.stable);
@@ -164,6 +168,12 @@ fn report_published_values_equal_the_anchors() {
     let all = entries();
     assert_eq!(all.len(), 16 + 4 + 11, "16 matrix entries, 4 speeds, 11 symbolic checks");
     for e in &all {
-        assert_eq!(e.verdict, carvallo::report::Verdict::Agrees, "{} disagrees: {}", e.quantity, e.note);
+        assert_eq!(
+            e.verdict,
+            carvallo::report::Verdict::Agrees,
+            "{} disagrees: {}",
+            e.quantity,
+            e.note
+        );
     }
 }

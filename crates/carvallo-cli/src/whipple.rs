@@ -67,8 +67,9 @@ fn load(model: &str) -> Result<WhippleParams, String> {
     if model == "benchmark" {
         return Ok(WhippleParams::benchmark());
     }
-    let text = std::fs::read_to_string(model)
-        .map_err(|e| format!("cannot read model file `{model}`: {}", e.to_string().to_lowercase()))?;
+    let text = std::fs::read_to_string(model).map_err(|e| {
+        format!("cannot read model file `{model}`: {}", e.to_string().to_lowercase())
+    })?;
     WhippleParams::from_toml_str(&text).map_err(|e| format!("invalid model file `{model}`: {e}"))
 }
 
@@ -162,10 +163,19 @@ mod tests {
             parse(&args(&["eig", "--speed", "5", "--model", "b.toml"])),
             Ok(Command::Eig { model: "b.toml".into(), speed: 5.0, json: false })
         );
-        assert_eq!(parse(&args(&["eig", "--model", "x", "--speed", "fast"])), Err("invalid speed `fast`".into()));
-        assert_eq!(parse(&args(&["window", "--speed", "3"])), Err("unknown argument `--speed`".into()));
+        assert_eq!(
+            parse(&args(&["eig", "--model", "x", "--speed", "fast"])),
+            Err("invalid speed `fast`".into())
+        );
+        assert_eq!(
+            parse(&args(&["window", "--speed", "3"])),
+            Err("unknown argument `--speed`".into())
+        );
         assert_eq!(parse(&args(&["window"])), Err("missing `--model benchmark|FILE.toml`".into()));
-        assert_eq!(parse(&args(&["eig", "--model", "benchmark"])), Err("missing `--speed V`".into()));
+        assert_eq!(
+            parse(&args(&["eig", "--model", "benchmark"])),
+            Err("missing `--speed V`".into())
+        );
         let e = load("/nonexistent/bike.toml").unwrap_err();
         assert!(e.starts_with("cannot read model file `/nonexistent/bike.toml`"), "{e}");
     }

@@ -93,12 +93,19 @@ pub fn entries() -> Vec<Entry> {
                 bif.map(|b| b.0),
                 "double real root of det(M s^2 + v C1 s + g K0 + v^2 K2), Newton on P = dP/ds = 0",
             ),
-            "double_root" => (bif.map(|b| b.1), "the double real eigenvalue at the bifurcation (1/s)"),
-            "weave_speed" => (win.weave_speed, "root of the Hurwitz determinant H3(v), bisected to adjacent floats"),
+            "double_root" => {
+                (bif.map(|b| b.1), "the double real eigenvalue at the bifurcation (1/s)")
+            }
+            "weave_speed" => (
+                win.weave_speed,
+                "root of the Hurwitz determinant H3(v), bisected to adjacent floats",
+            ),
             _ => (win.capsize_speed, "closed form: a0(v) = 0 is a quadratic in v^2"),
         };
         match derived {
-            Some(d) => out.push(number_entry(format!("{name} (modern anchor)"), published, d, note)),
+            Some(d) => {
+                out.push(number_entry(format!("{name} (modern anchor)"), published, d, note))
+            }
             None => out.push(Entry {
                 section: SECTION.to_string(),
                 quantity: format!("{name} (modern anchor)"),

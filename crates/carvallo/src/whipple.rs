@@ -167,13 +167,13 @@ impl WhippleParams {
     /// # Errors
     /// [`WhippleError`] naming the key and value at fault.
     pub fn from_toml_str(text: &str) -> Result<WhippleParams, WhippleError> {
-        let doc: toml::Table =
-            text.parse().map_err(|e: toml::de::Error| WhippleError::Syntax {
-                message: e.message().to_lowercase(),
-            })?;
-        let table = doc.get("parameters").and_then(|t| t.as_table()).ok_or_else(|| {
-            WhippleError::Syntax { message: "no [parameters] table".to_string() }
+        let doc: toml::Table = text.parse().map_err(|e: toml::de::Error| WhippleError::Syntax {
+            message: e.message().to_lowercase(),
         })?;
+        let table = doc
+            .get("parameters")
+            .and_then(|t| t.as_table())
+            .ok_or_else(|| WhippleError::Syntax { message: "no [parameters] table".to_string() })?;
         for key in table.keys() {
             if !PARAM_NAMES.contains(&key.as_str()) {
                 return Err(WhippleError::UnknownKey { key: key.clone() });
@@ -205,7 +205,11 @@ impl WhippleParams {
     pub fn from_values(values: [f64; 26]) -> Result<WhippleParams, WhippleError> {
         for (key, &value) in PARAM_NAMES.iter().zip(&values) {
             if !value.is_finite() {
-                return Err(WhippleError::InvalidParameter { key, value, reason: "must be finite" });
+                return Err(WhippleError::InvalidParameter {
+                    key,
+                    value,
+                    reason: "must be finite",
+                });
             }
             if POSITIVE.contains(key) && value <= 0.0 {
                 return Err(WhippleError::InvalidParameter {
@@ -308,7 +312,9 @@ fn poly_mul(a: &[f64], b: &[f64]) -> Vec<f64> {
 
 fn poly_add(a: &[f64], b: &[f64], sb: f64) -> Vec<f64> {
     let n = a.len().max(b.len());
-    (0..n).map(|i| a.get(i).copied().unwrap_or(0.0) + sb * b.get(i).copied().unwrap_or(0.0)).collect()
+    (0..n)
+        .map(|i| a.get(i).copied().unwrap_or(0.0) + sb * b.get(i).copied().unwrap_or(0.0))
+        .collect()
 }
 
 fn poly_deriv(a: &[f64]) -> Vec<f64> {
