@@ -219,7 +219,7 @@ pub struct CarvalloRoot {
     pub exact_u_hp: f64,
     /// The relative error of the method's u (two squarings) against the exact u.
     pub method_rel_error: f64,
-    /// The relative error after ten squarings (the method converged).
+    /// The relative error after six squarings (the method converged).
     pub converged_rel_error: f64,
 }
 
@@ -254,7 +254,7 @@ pub fn carvallo_root() -> CarvalloRoot {
     let (graeffe_rows, v_abs) = graeffe_largest(&reversed, 2);
     let v4 = graeffe_rows[2][1] / graeffe_rows[2][0];
     let u = -1.0 / v_abs;
-    let (_, v_conv) = graeffe_largest(&reversed, 10);
+    let (_, v_conv) = graeffe_largest(&reversed, 6);
     let exact_t = output("vertical_t", &[]);
     let mut exact_u = exact_t - 1.0;
     for _ in 0..3 {

@@ -13,6 +13,7 @@ pub mod error;
 pub mod hoop;
 pub mod hoop_discussion;
 pub mod report;
+pub mod report_hoop_discussion;
 pub mod report_whipple;
 pub mod whipple;
 

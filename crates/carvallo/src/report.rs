@@ -305,7 +305,7 @@ fn eval_all(point: &BTreeMap<&str, f64>) -> BTreeMap<&'static str, f64> {
 }
 
 /// Relative difference with the floor [`REL_DIFF_FLOOR`] (module docs).
-fn rel_diff(derived: f64, memoir: f64) -> f64 {
+pub(crate) fn rel_diff(derived: f64, memoir: f64) -> f64 {
     (derived - memoir).abs() / derived.abs().max(memoir.abs()).max(REL_DIFF_FLOOR)
 }
 
@@ -493,7 +493,7 @@ fn formula_entries(
 
 /// A number entry: `derived` against the printed `memoir`, agreeing within
 /// [`AGREEMENT_TOLERANCE`], otherwise given `otherwise` as verdict.
-fn number_entry(
+pub(crate) fn number_entry(
     section: &str,
     quantity: &str,
     memoir: f64,
@@ -658,37 +658,12 @@ fn threshold_entries() -> Vec<Entry> {
     ]
 }
 
-/// The normalised n° 12 evaluators at $g/R = 1$: `(equilibrium_n12, stability_n12)` at
-/// $(\theta, s, n)$.
-fn n12(theta: f64, s: f64, n: f64) -> (f64, f64) {
-    let v = eval_all(&BTreeMap::from([
-        ("R", 1.0),
-        ("g", 1.0),
-        ("mu", 1.0),
-        ("theta", theta),
-        ("p", 0.0),
-        ("q", 0.0),
-        ("r", 0.0),
-        ("n", n),
-        ("s", s),
-    ]));
-    let get = |k: &str| v.get(k).copied().unwrap_or(f64::NAN);
-    (get("equilibrium_n12"), get("stability_n12"))
-}
-
-/// Coefficients $(a, b, c)$ of $f(n) = a n^2 + b n + c$ read off at $n = 0, \pm 1$ (exact for a
-/// quadratic up to rounding).
-fn quadratic_in_n(f: impl Fn(f64) -> f64) -> (f64, f64, f64) {
-    let (c, plus, minus) = (f(0.0), f(1.0), f(-1.0));
-    (0.5 * (plus + minus) - c, 0.5 * (plus - minus), c)
-}
-
 /// A number the memoir prints with `decimals` decimals, computed slide-rule style by Carvallo.
 /// `Rounding` when the derived value is within one unit of the last printed digit or within
 /// 2e-3 relative (a slide rule's three significant digits); otherwise `MemoirError` when the
 /// underlying formulas agree with the memoir (so the difference is in his arithmetic),
 /// `DerivationDiffers` when they do not.
-fn printed_number(
+pub(crate) fn printed_number(
     section: &str,
     quantity: &str,
     memoir: f64,
@@ -716,195 +691,6 @@ fn printed_number(
         rel_diff: Some(rel),
         verdict,
         note: note.to_string(),
-    }
-}
-
-/// n° 14 and 17 bis: the remarkable points of the stability discussion, recomputed from the
-/// generated normalised (E) and (S) of n° 12.
-fn discussion_entries(formulas_agree: bool) -> Vec<Entry> {
-    let mut entries = Vec::new();
-    let disc = |theta: f64, s: f64, which: usize| {
-        let (a, b, c) = quadratic_in_n(|n| {
-            let v = n12(theta, s, n);
-            if which == 0 {
-                v.0
-            } else {
-                v.1
-            }
-        });
-        b * b - 4.0 * a * c
-    };
-    // y = s² on the reality curve of the roots of E (curve ℰ, n° 13) and of S (curve S1, n° 14).
-    let y_on = |x: f64, which: usize| {
-        let theta = x.acos();
-        bisect(|s| disc(theta, s, which), 0.0, 10.0).map(|s| s * s)
-    };
-    // Point F: ℰ ∩ S1, printed x = 0,917, y = 0,258.
-    let f_point = bisect(
-        |x| match (y_on(x, 0), y_on(x, 1)) {
-            (Some(a), Some(b)) => a - b,
-            _ => f64::NAN,
-        },
-        0.5,
-        0.999,
-    );
-    let note_f = "intersection of the reality curves of the roots of E (curve ℰ) and of S (S1), by bisection on the generated equilibrium_n12 and stability_n12 (coefficients in n read off at n = 0, ±1)";
-    match f_point {
-        Some(x) => {
-            let y = y_on(x, 0).unwrap_or(f64::NAN);
-            entries.push(printed_number(
-                "14",
-                "point F: x = cos(th)",
-                0.917,
-                3,
-                x,
-                formulas_agree,
-                note_f,
-            ));
-            entries.push(printed_number(
-                "14",
-                "point F: y = s^2",
-                0.258,
-                3,
-                y,
-                formulas_agree,
-                &format!(
-                    "{note_f}; at the memoir's own x = 0,917 the curves give y = {} (ℰ) and {} (S1)",
-                    format_significant(y_on(0.917, 0).unwrap_or(f64::NAN), 4),
-                    format_significant(y_on(0.917, 1).unwrap_or(f64::NAN), 4)
-                ),
-            ));
-        }
-        None => entries.push(missing("14", "point F", note_f)),
-    }
-    // Vertical tangent of the curve (S): smallest x where E and S share a root for some y.
-    let resultant = |x: f64, y: f64| {
-        let (theta, s) = (x.acos(), y.max(0.0).sqrt());
-        let (a1, b1, c1) = quadratic_in_n(|n| n12(theta, s, n).0);
-        let (a2, b2, c2) = quadratic_in_n(|n| n12(theta, s, n).1);
-        let (b1, c1, b2, c2) = (b1 / a1, c1 / a1, b2 / a2, c2 / a2);
-        (c1 - c2) * (c1 - c2) + (b1 - b2) * (b1 * c2 - b2 * c1)
-    };
-    // For fixed x the resultant is a quadratic in y (as the memoir's (S) equation of n° 14
-    // is); its coefficients are read off at y = 0, 1/4, 1/2 and its discriminant vanishes at
-    // the vertical tangent.
-    let in_y = |x: f64| {
-        let (r0, r1, r2) = (resultant(x, 0.0), resultant(x, 0.25), resultant(x, 0.5));
-        let a = 8.0 * (r2 - 2.0 * r1 + r0);
-        let b = 4.0 * (r1 - r0) - 0.25 * a;
-        // How far a fourth point is from the quadratic, relative to the values.
-        let off = (resultant(x, 0.75) - (a * 0.5625 + b * 0.75 + r0)).abs()
-            / r0.abs().max(r1.abs()).max(r2.abs());
-        (a, b, r0, off)
-    };
-    let note_v = "vertical tangent of the curve (S) (E and S have a common root): the resultant of the generated E and S in n, a quadratic in y = s^2 for fixed x = cos(th), has a double root (bisection in x on its discriminant)";
-    match bisect(
-        |x| {
-            let (a, b, c, _) = in_y(x);
-            b * b - 4.0 * a * c
-        },
-        0.85,
-        0.99,
-    ) {
-        Some(x) => {
-            let (a, b, _, off) = in_y(x);
-            let y = -b / (2.0 * a);
-            let note_v = &format!("{note_v}; departure from a quadratic in y {off:.0e}");
-            entries.push(printed_number(
-                "14",
-                "vertical tangent of (S): t = x^2",
-                0.89193,
-                5,
-                x * x,
-                formulas_agree,
-                note_v,
-            ));
-            entries.push(printed_number(
-                "14",
-                "vertical tangent of (S): x = cos(th)",
-                0.944,
-                3,
-                x,
-                formulas_agree,
-                note_v,
-            ));
-            entries.push(printed_number(
-                "14",
-                "vertical tangent of (S): th (degrees)",
-                19.33,
-                2,
-                x.acos().to_degrees(),
-                formulas_agree,
-                &format!(
-                    "{note_v}; printed \"19°,33\"; arccos of the memoir's own x = 0,944 is {:.2}°",
-                    0.944f64.acos().to_degrees()
-                ),
-            ));
-            entries.push(printed_number(
-                "14",
-                "vertical tangent of (S): y = s^2",
-                0.2073,
-                4,
-                y,
-                formulas_agree,
-                note_v,
-            ));
-            entries.push(printed_number(
-                "14",
-                "vertical tangent of (S): s",
-                0.4656,
-                4,
-                y.sqrt(),
-                formulas_agree,
-                &format!(
-                    "{note_v}; the square root of the memoir's own y = 0,2073 is {:.4}",
-                    0.2073f64.sqrt()
-                ),
-            ));
-        }
-        None => entries.push(missing("14", "vertical tangent of (S)", note_v)),
-    }
-    // Point H (n° 17 bis): (S) ∩ (N), where n2 = -s: E(-s) = 0 and S(-s) = 0.
-    let s_n = |theta: f64| bisect(|s| n12(theta, s, -s).0, 1e-9, 10.0);
-    let note_h = "common solution of E(-s) = 0 and S(-s) = 0 (curves N and S), by bisection in s then in th on the generated equilibrium_n12 and stability_n12";
-    match bisect(|theta| s_n(theta).map_or(f64::NAN, |s| n12(theta, s, -s).1), 0.05, 0.7) {
-        Some(theta) => {
-            let s = s_n(theta).unwrap_or(f64::NAN);
-            entries.push(printed_number(
-                "17",
-                "point H: sin(th)",
-                0.322,
-                3,
-                theta.sin(),
-                formulas_agree,
-                note_h,
-            ));
-            entries.push(printed_number(
-                "17",
-                "point H: th (degrees)",
-                18.8,
-                1,
-                theta.to_degrees(),
-                formulas_agree,
-                note_h,
-            ));
-            entries.push(printed_number("17", "point H: s", 0.474, 3, s, formulas_agree, note_h));
-        }
-        None => entries.push(missing("17", "point H", note_h)),
-    }
-    entries
-}
-
-/// An entry for a quantity the generated evaluators do not let us compute.
-fn missing(section: &str, quantity: &str, how: &str) -> Entry {
-    Entry {
-        section: section.to_string(),
-        quantity: quantity.to_string(),
-        memoir: Memoir::Formula("see the memoir".to_string()),
-        derived: Derived::Numbers(BTreeMap::new()),
-        rel_diff: None,
-        verdict: Verdict::DerivationDiffers,
-        note: format!("not found: {how} has no solution in the searched interval"),
     }
 }
 
@@ -1139,6 +925,7 @@ fn fold_checks(entries: &mut Vec<Entry>, checks: Result<Vec<SymbolicCheck>, Stri
 /// contributes one function; add new models here.
 pub fn all_entries() -> Vec<Entry> {
     let mut entries = hoop_entries();
+    entries.extend(crate::report_hoop_discussion::entries());
     entries.extend(crate::report_whipple::entries());
     // Stable sort: the models' own orders are kept within a section.
     entries.sort_by(|a, b| section_key(&a.section).total_cmp(&section_key(&b.section)));
@@ -1159,7 +946,7 @@ pub fn hoop_entries() -> Vec<Entry> {
         .iter()
         .any(|e| e.quantity == "(S) normalised" && e.verdict == Verdict::Agrees)
         && entries.iter().any(|e| e.quantity == "(E) normalised" && e.verdict == Verdict::Agrees);
-    entries.extend(discussion_entries(formulas_agree));
+    entries.extend(crate::report_hoop_discussion::point_entries(formulas_agree));
     fold_checks(&mut entries, hoop_checks());
     // Stable order by section number, then insertion order.
     entries.sort_by(|a, b| section_key(&a.section).total_cmp(&section_key(&b.section)));
