@@ -66,4 +66,5 @@ pub mod hoop;
 #[path = "hoop/discussion.rs"]
 pub mod hoop_discussion;
 pub mod regen;
+pub mod unicycle;
 pub mod whipple;
