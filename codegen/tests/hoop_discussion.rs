@@ -64,11 +64,8 @@ fn discussion_derivation() {
             insta::assert_snapshot!(format!("hoop_discussion_{name}"), text);
         });
     }
-    let checks: String = d
-        .checks
-        .iter()
-        .map(|c| format!("{} {} {}\n", c.section, c.id, c.holds))
-        .collect();
+    let checks: String =
+        d.checks.iter().map(|c| format!("{} {} {}\n", c.section, c.id, c.holds)).collect();
     insta::with_settings!({
         description => "hoop_discussion check outcomes",
         omit_expression => true,

@@ -65,11 +65,13 @@ pub mod printed {
     /// n° 19, (4): theta'' of the linearised stick equations.
     pub const STICK_4: &str = "-2/3*(4*s^2 - g/R)*theta + 4*s/3*M1*time + M";
     /// n° 19, (6) with `h` (the OCR prints "cosh" for cos).
-    pub const STICK_6: &str = "4*s*M1/(3*h^2)*time + M/h^2 - (M/h^2*cos(h*time) + 4*s*M1/(3*h^3)*sin(h*time))";
+    pub const STICK_6: &str =
+        "4*s*M1/(3*h^2)*time + M/h^2 - (M/h^2*cos(h*time) + 4*s*M1/(3*h^3)*sin(h*time))";
     /// n° 19, (6′).
     pub const STICK_6P: &str = "4*s*M1/(3*h^3)*(h*time - sin(h*time)) + M/h^2*(1 - cos(h*time))";
     /// n° 19, (7).
-    pub const STICK_7: &str = "-2*g/(3*R*h^2)*M1*time - 2*s*M/h^2 + 2*s*(M/h^2*cos(h*time) + 4*s*M1/(3*h^3)*sin(h*time))";
+    pub const STICK_7: &str =
+        "-2*g/(3*R*h^2)*M1*time - 2*s*M/h^2 + 2*s*(M/h^2*cos(h*time) + 4*s*M1/(3*h^3)*sin(h*time))";
 }
 
 fn check(section: &str, id: &str, statement: &str, holds: bool, detail: String) -> Check {
@@ -77,7 +79,14 @@ fn check(section: &str, id: &str, statement: &str, holds: bool, detail: String) 
 }
 
 /// `derived - factor * printed` vanishes identically (θ functions as stand-ins).
-fn compare(section: &str, id: &str, statement: &str, derived: &Atom, printed: &Atom, factor: &Atom) -> Check {
+fn compare(
+    section: &str,
+    id: &str,
+    statement: &str,
+    derived: &Atom,
+    printed: &Atom,
+    factor: &Atom,
+) -> Check {
     let diff = simplify(&(derived - factor * printed));
     let scale = if *factor == Atom::num(1) { String::new() } else { format!("({factor}) * ") };
     check(
@@ -270,7 +279,14 @@ pub fn derive() -> Result<Derivation> {
     let s1c = coefficients(&s1, "y");
     ensure!(s1c.len() == 2, "(S1) is not linear in y: {s1}");
     let s1_y = simplify(&(-&s1c[0] / &s1c[1]));
-    checks.push(compare("14", "curve_s1_memoir", "the discriminant of S(n) vanishes on y = (3/4) x / (1 + 2x^2), the printed (S1)", &s1_y, &expr(printed::CURVE_S1_Y), &one));
+    checks.push(compare(
+        "14",
+        "curve_s1_memoir",
+        "the discriminant of S(n) vanishes on y = (3/4) x / (1 + 2x^2), the printed (S1)",
+        &s1_y,
+        &expr(printed::CURVE_S1_Y),
+        &one,
+    ));
 
     // Point B: maximum of y on (S1).
     let (dn, _) = num_den(&s1_y.derivative(x.get_symbol().expect("symbol")));
@@ -278,7 +294,14 @@ pub fn derive() -> Result<Derivation> {
     ensure!(dnc.len() == 3 && dnc[1].is_zero(), "dy/dx on (S1) is not even quadratic: {dn}");
     let bx = (-&dnc[0] / &dnc[2]).pow(rat(1, 2)).expand();
     let by = subst(&s1_y, "x", &bx).expand();
-    checks.push(compare("14", "point_b_memoir", "the maximum of y on (S1) is at the printed B: x = sqrt(2)/2, y = 3 sqrt(2)/16", &(&bx + &by * var("sgmx")), &(expr("2^(1/2)/2") + expr("3*2^(1/2)/16") * var("sgmx")), &one));
+    checks.push(compare(
+        "14",
+        "point_b_memoir",
+        "the maximum of y on (S1) is at the printed B: x = sqrt(2)/2, y = 3 sqrt(2)/16",
+        &(&bx + &by * var("sgmx")),
+        &(expr("2^(1/2)/2") + expr("3*2^(1/2)/16") * var("sgmx")),
+        &one,
+    ));
 
     // Point F: (ℰ) ∩ (S1).
     let rc = coefficients(&reality_n, "y");
@@ -290,7 +313,13 @@ pub fn derive() -> Result<Derivation> {
     let f_t = quadratic_root(&ftc);
     let fx = f_t.pow(rat(1, 2));
     let fy = subst(&s1_y, "x", &fx);
-    checks.push(check("14", "point_f_quadratic", "(ℰ) and (S1) meet where a quadratic in t = x^2 vanishes; F is its root in (0, 1)", true, format!("equation in t: {ft} = 0; t_F = {f_t}; x_F = sqrt(t_F)")));
+    checks.push(check(
+        "14",
+        "point_f_quadratic",
+        "(ℰ) and (S1) meet where a quadratic in t = x^2 vanishes; F is its root in (0, 1)",
+        true,
+        format!("equation in t: {ft} = 0; t_F = {f_t}; x_F = sqrt(t_F)"),
+    ));
 
     // Points A, D and the tangents.
     let cy = coefficients(&curve_n, "y");
@@ -300,13 +329,34 @@ pub fn derive() -> Result<Derivation> {
     let py = curve_n.derivative(y.get_symbol().expect("symbol"));
     let at = |e: &Atom, xv: &Atom, yv: &Atom| subst(&subst(e, "x", xv), "y", yv).expand();
     let slope_a = simplify(&(-at(&px, &one, &Atom::num(0)) / at(&py, &one, &Atom::num(0))));
-    checks.push(compare("14", "tangent_a_memoir", "the slope dy/dx of (S) at A (1, 0) is the printed -3", &slope_a, &Atom::num(-3), &one));
+    checks.push(compare(
+        "14",
+        "tangent_a_memoir",
+        "the slope dy/dx of (S) at A (1, 0) is the printed -3",
+        &slope_a,
+        &Atom::num(-3),
+        &one,
+    ));
     let rpx = reality_n.derivative(x.get_symbol().expect("symbol"));
     let rpy = reality_n.derivative(y.get_symbol().expect("symbol"));
     let slope_ea = simplify(&(-at(&rpx, &one, &Atom::num(0)) / at(&rpy, &one, &Atom::num(0))));
-    checks.push(compare("14", "tangent_a_reality", "at A the curve (S) is tangent to (ℰ): same slope", &slope_a, &slope_ea, &one));
+    checks.push(compare(
+        "14",
+        "tangent_a_reality",
+        "at A the curve (S) is tangent to (ℰ): same slope",
+        &slope_a,
+        &slope_ea,
+        &one,
+    ));
     let slope_d = simplify(&(-at(&px, &one, &rat(1, 4)) / at(&py, &one, &rat(1, 4))));
-    checks.push(compare("14", "tangent_d_memoir", "the tangent of (S) at D (1, 1/4) is horizontal (slope 0), as printed", &slope_d, &Atom::num(0), &one));
+    checks.push(compare(
+        "14",
+        "tangent_d_memoir",
+        "the tangent of (S) at D (1, 1/4) is horizontal (slope 0), as printed",
+        &slope_d,
+        &Atom::num(0),
+        &one,
+    ));
 
     // Vertical tangent: discriminant in y, divided by 64 x^2, t = x^2.
     ensure!(cy.len() == 3, "(S) is not quadratic in y");
@@ -315,50 +365,121 @@ pub fn derive() -> Result<Derivation> {
     let quartic = even_to(&over, "x", "t")?;
     checks.push(compare("14", "quartic_f_memoir", "the discriminant in y of (S) over 64 x^2 (the memoir's B'^2 - AC over 16 x^2), with t = x^2, is the printed F(t) = 28t^4 - 44t^3 + 15t^2 + 4t - 2", &quartic, &expr(printed::QUARTIC_F), &one));
     let factored = quartic.factor();
-    checks.push(check("14", "quartic_f_factor", "F(t) factored over the rationals (symbolica): a square times an irreducible quadratic", true, format!("F(t) = {factored}")));
+    checks.push(check(
+        "14",
+        "quartic_f_factor",
+        "F(t) factored over the rationals (symbolica): a square times an irreducible quadratic",
+        true,
+        format!("F(t) = {factored}"),
+    ));
     // The quadratic factor: F / (2t - 1)^2, checked exact.
     let quad = simplify(&(&quartic / expr("(2*t-1)^2")));
     let qc = coefficients(&quad, "t");
     ensure!(qc.len() == 3, "F(t) / (2t - 1)^2 is not a quadratic: {quad}");
     let t_root = quadratic_root(&qc);
-    checks.push(check("14", "quartic_f_root", "the root of F in (0.8, 1) is the larger root of the quadratic factor, in closed form", true, format!("quadratic factor {quad}; t = {t_root}")));
+    checks.push(check(
+        "14",
+        "quartic_f_root",
+        "the root of F in (0.8, 1) is the larger root of the quadratic factor, in closed form",
+        true,
+        format!("quadratic factor {quad}; t = {t_root}"),
+    ));
     let shifted = subst(&quartic, "t", &(&t + &one)).expand();
     checks.push(compare("14", "horner_shift_memoir", "F(1 + u) is the printed 28u^4 + 68u^3 + 51u^2 + 14u + 1 (Carvallo's Horner tableau), u written t", &shifted, &expr(printed::QUARTIC_U), &one));
     let vy = simplify(&(-&cy[1] / (Atom::num(2) * &cy[2])));
     let vprod = simplify(&(&cy[0] / &cy[2]));
-    checks.push(compare("14", "vertical_product_memoir", "the product of the two y roots of (S) is the printed 3(1 + x^2)(1 - x^2)/(16 x^2)", &vprod, &expr("3*(1+x^2)*(1-x^2)/(16*x^2)"), &one));
+    checks.push(compare(
+        "14",
+        "vertical_product_memoir",
+        "the product of the two y roots of (S) is the printed 3(1 + x^2)(1 - x^2)/(16 x^2)",
+        &vprod,
+        &expr("3*(1+x^2)*(1-x^2)/(16*x^2)"),
+        &one,
+    ));
 
     // n° 15: (E'), minimum, (D'), (D'').
     let e_lin = numerator(&e12); // 3 sin cos n^2 + 4 s cos n + 2 sin
     let s_of_n = solve_linear(std::slice::from_ref(&e_lin), &["s"]).remove(0);
-    checks.push(compare("15", "s_of_n_memoir", "(E) solved for s is the printed (E')", &s_of_n, &from_trig(&expr(printed::S_OF_N)), &one));
+    checks.push(compare(
+        "15",
+        "s_of_n_memoir",
+        "(E) solved for s is the printed (E')",
+        &s_of_n,
+        &from_trig(&expr(printed::S_OF_N)),
+        &one,
+    ));
     let (dsn, _) = num_den(&s_of_n.derivative(var("n").get_symbol().expect("symbol")));
     let dsc = coefficients(&dsn, "n");
     ensure!(dsc.len() == 3 && dsc[1].is_zero(), "ds/dn is not even quadratic: {dsn}");
     let n0_sq = simplify(&(-&dsc[0] / &dsc[2]));
-    checks.push(compare("15", "n0_memoir", "ds/dn = 0 at n0^2 = 2/(3 cos(theta)), the printed n0 = -sqrt(2/(3 cos(theta)))", &n0_sq, &expr("2/(3*cos_theta)"), &one));
+    checks.push(compare(
+        "15",
+        "n0_memoir",
+        "ds/dn = 0 at n0^2 = 2/(3 cos(theta)), the printed n0 = -sqrt(2/(3 cos(theta)))",
+        &n0_sq,
+        &expr("2/(3*cos_theta)"),
+        &one,
+    ));
     let n0 = -expr("(2/(3*cos_theta))^(1/2)");
     let s0 = subst(&s_of_n, "n", &n0);
     let s0_sq = simplify(&(&s0 * &s0));
     let s0_text = from_trig(&expr(printed::S0));
     let s0_table = from_trig(&expr(printed::S0_TABLE));
-    checks.push(compare("15", "s0_memoir", "s at n0 squared is the square of the printed s0 = tan(theta) sqrt(3 cos(theta)/2) (text)", &s0_sq, &simplify(&(&s0_text * &s0_text)), &one));
-    checks.push(compare("15", "s0_table_memoir", "s at n0 squared is the square of the table's s0 = tan(theta) sqrt(2/(3 cos(theta)))", &s0_sq, &simplify(&(&s0_table * &s0_table)), &one));
+    checks.push(compare(
+        "15",
+        "s0_memoir",
+        "s at n0 squared is the square of the printed s0 = tan(theta) sqrt(3 cos(theta)/2) (text)",
+        &s0_sq,
+        &simplify(&(&s0_text * &s0_text)),
+        &one,
+    ));
+    checks.push(compare(
+        "15",
+        "s0_table_memoir",
+        "s at n0 squared is the square of the table's s0 = tan(theta) sqrt(2/(3 cos(theta)))",
+        &s0_sq,
+        &simplify(&(&s0_table * &s0_table)),
+        &one,
+    ));
     let skid_of_n = simplify(&subst(&d12, "s", &s_of_n));
-    checks.push(compare("15", "skid_of_n_memoir", "D with s from (E') is the printed (D')", &skid_of_n, &from_trig(&expr(printed::SKID_OF_N)), &one));
+    checks.push(compare(
+        "15",
+        "skid_of_n_memoir",
+        "D with s from (E') is the printed (D')",
+        &skid_of_n,
+        &from_trig(&expr(printed::SKID_OF_N)),
+        &one,
+    ));
     let d_at_n0 = simplify(&subst(&skid_of_n, "n", &n0));
-    checks.push(compare("15", "skid_at_n0_memoir", "D at n0 is (1/3) tan(theta), as in the table", &d_at_n0, &expr("sin_theta/(3*cos_theta)"), &one));
+    checks.push(compare(
+        "15",
+        "skid_at_n0_memoir",
+        "D at n0 is (1/3) tan(theta), as in the table",
+        &d_at_n0,
+        &expr("sin_theta/(3*cos_theta)"),
+        &one,
+    ));
     // (D''): resultant in n of (E) and D(n) - d.
     let d_poly = numerator(&(&d12 - var("d")));
     let res_d = resultant_in_n(&e_lin, &d_poly);
     let rdc = coefficients(&res_d, "s");
-    ensure!(rdc.len() == 3 && rdc[1].is_zero(), "the resultant of (E) and (D) is not even quadratic in s");
+    ensure!(
+        rdc.len() == 3 && rdc[1].is_zero(),
+        "the resultant of (E) and (D) is not even quadratic in s"
+    );
     let s2_of_d = simplify(&(-&rdc[0] / &rdc[2]));
     checks.push(compare("15", "s2_of_d_memoir", "eliminating n between (E) and (D) = d (resultant in n) gives the printed (D'') s^2 = 2 sin (tan - 3d/2)^2 / (tan - 2d)", &s2_of_d, &from_trig(&expr(printed::S2_OF_D)), &one));
 
     // n° 17: (N), I; 17 bis: H.
     let e_minus_s = simplify(&subst(&e12, "n", &-var("s")));
-    checks.push(compare("17", "e_minus_s_memoir", "E(-s) is the printed s^2 (1 - 4/(3 sin)) + 2/(3 cos)", &e_minus_s, &expr("s^2*(1 - 4/(3*sin_theta)) + 2/(3*cos_theta)"), &one));
+    checks.push(compare(
+        "17",
+        "e_minus_s_memoir",
+        "E(-s) is the printed s^2 (1 - 4/(3 sin)) + 2/(3 cos)",
+        &e_minus_s,
+        &expr("s^2*(1 - 4/(3*sin_theta)) + 2/(3*cos_theta)"),
+        &one,
+    ));
     let s2_in = |e: &Atom| -> Result<Atom> {
         let (num, _) = num_den(e);
         let c = coefficients(&num, "s");
@@ -366,7 +487,14 @@ pub fn derive() -> Result<Derivation> {
         Ok(simplify(&(-&c[0] / &c[2])))
     };
     let n_s2 = s2_in(&e_minus_s)?;
-    checks.push(compare("17", "curve_n_memoir", "E(-s) = 0 is the printed (N) s^2 = 2 sin / (cos (4 - 3 sin))", &n_s2, &from_trig(&expr(printed::CURVE_N_S2)), &one));
+    checks.push(compare(
+        "17",
+        "curve_n_memoir",
+        "E(-s) = 0 is the printed (N) s^2 = 2 sin / (cos (4 - 3 sin))",
+        &n_s2,
+        &from_trig(&expr(printed::CURVE_N_S2)),
+        &one,
+    ));
     let e_s2 = {
         // (ℰ) in θ: y = (1 - x^2)/((2/3) x) from the derived reality curve.
         let ry = subst(&y_e, "x", &cos_t());
@@ -376,8 +504,16 @@ pub fn derive() -> Result<Derivation> {
     let contact_w = to_sin(&contact, "w")?;
     let contact_f = contact_w.factor();
     checks.push(check("17", "point_i_double", "(N) and (ℰ) meet where a polynomial in w = sin(theta) has the double root 2/3 (contact at I, sin = 2/3)", is_zero(&subst(&contact_w, "w", &rat(2, 3))) && is_zero(&subst(&contact_w.derivative(var("w").get_symbol().expect("symbol")), "w", &rat(2, 3))), format!("s^2 on (N) minus s^2 on (ℰ), numerator in w: {contact_f}")));
-    let i_s2 = simplify(&subst(&subst(&n_s2, "sin_theta", &rat(2, 3)), "cos_theta", &expr("5^(1/2)/3")));
-    checks.push(compare("17", "point_i_s_memoir", "at I, s^2 = 2/sqrt(5) (printed s = sqrt(2/sqrt(5)))", &i_s2, &expr("2/5^(1/2)"), &one));
+    let i_s2 =
+        simplify(&subst(&subst(&n_s2, "sin_theta", &rat(2, 3)), "cos_theta", &expr("5^(1/2)/3")));
+    checks.push(compare(
+        "17",
+        "point_i_s_memoir",
+        "at I, s^2 = 2/sqrt(5) (printed s = sqrt(2/sqrt(5)))",
+        &i_s2,
+        &expr("2/5^(1/2)"),
+        &one,
+    ));
     let s_minus_s = simplify(&subst(&s12, "n", &-var("s")));
     let h_s2 = s2_in(&s_minus_s)?;
     let (hnum, _) = num_den(&(&n_s2 - &h_s2));
@@ -393,15 +529,30 @@ pub fn derive() -> Result<Derivation> {
         expr("4*s*n*cos_theta/3 + n^2*sin_theta*cos_theta + 2*g*sin_theta/(3*R)"),
         expr("-2*p*s/cos_theta"),
     ];
-    checks.push(compare("19", "stick_system_p", "the first equation (2) of n° 19 without the stick is the derived p' of system (2)", &pns[0], &memoir_sys[0], &one));
-    checks.push(compare("19", "stick_system_n", "the second equation (2) of n° 19 without the stick is the derived n' of system (2)", &pns[1], &memoir_sys[1], &one));
+    checks.push(compare(
+        "19",
+        "stick_system_p",
+        "the first equation (2) of n° 19 without the stick is the derived p' of system (2)",
+        &pns[0],
+        &memoir_sys[0],
+        &one,
+    ));
+    checks.push(compare(
+        "19",
+        "stick_system_n",
+        "the second equation (2) of n° 19 without the stick is the derived n' of system (2)",
+        &pns[1],
+        &memoir_sys[1],
+        &one,
+    ));
     // Linearise: sin θ -> θ, cos θ -> 1, p = θ', drop n^2 sin cos (third order).
     let th = var("theta");
     let lin = |e: &Atom| {
         let e = subst(&subst(e, "sin_theta", &th), "cos_theta", &one).expand();
         let nsq = var("n").pow(Atom::num(2)) * &th;
         let c = coefficients(&e, "n");
-        let dropped = if c.len() > 2 { (&c[2] * var("n").pow(Atom::num(2))).expand() } else { Atom::num(0) };
+        let dropped =
+            if c.len() > 2 { (&c[2] * var("n").pow(Atom::num(2))).expand() } else { Atom::num(0) };
         let _ = nsq;
         (e - dropped).expand()
     };
@@ -413,69 +564,181 @@ pub fn derive() -> Result<Derivation> {
     let n3 = &mm1 * &tau - Atom::num(2) * var("s") * &theta_f;
     let dn3 = &mm1 - Atom::num(2) * var("s") * var("dthfx");
     let dn_rhs = subst(&dn_lin, "p", &var("dthfx"));
-    checks.push(compare("19", "stick_3_memoir", "(3) n = M1 t - 2 s theta satisfies the linearised n' = -2 s theta' + M1 (s, M1 constant)", &dn3, &dn_rhs, &one));
+    checks.push(compare(
+        "19",
+        "stick_3_memoir",
+        "(3) n = M1 t - 2 s theta satisfies the linearised n' = -2 s theta' + M1 (s, M1 constant)",
+        &dn3,
+        &dn_rhs,
+        &one,
+    ));
     let eq4 = subst(&subst(&dp_lin, "n", &n3), "theta", &theta_f);
     let eq4 = subst(&eq4, "thfx", &th).expand();
-    checks.push(compare("19", "stick_4_memoir", "substituting (3) in the linearised first equation gives the printed (4)", &eq4, &expr(printed::STICK_4), &one));
+    checks.push(compare(
+        "19",
+        "stick_4_memoir",
+        "substituting (3) in the linearised first equation gives the printed (4)",
+        &eq4,
+        &expr(printed::STICK_4),
+        &one,
+    ));
     // (5)-(6): h^2 = (2/3)(4s^2 - g/R); (6) solves (4) with θ(0) = θ'(0) = 0.
     let h_val = expr("(2/3*(4*s^2 - g/R))^(1/2)");
     let hs = var("h");
     let sol6 = expr(printed::STICK_6);
     let tsym = tau.get_symbol().expect("symbol");
     let d2 = sol6.derivative(tsym).derivative(tsym);
-    let rhs4 = subst(&subst(&expr(printed::STICK_4), "theta", &sol6), "g", &(var("R") * (Atom::num(4) * var("s").pow(Atom::num(2)) - rat(3, 2) * hs.pow(Atom::num(2)))));
+    let rhs4 = subst(
+        &subst(&expr(printed::STICK_4), "theta", &sol6),
+        "g",
+        &(var("R")
+            * (Atom::num(4) * var("s").pow(Atom::num(2)) - rat(3, 2) * hs.pow(Atom::num(2)))),
+    );
     let resid = (&d2 - &rhs4).expand();
     let resid0 = subst(&sol6, "time", &Atom::num(0)).expand();
     let resid1 = subst(&sol6.derivative(tsym), "time", &Atom::num(0)).expand();
     checks.push(check("19", "stick_6_memoir", "(6) (with cos, the OCR's \"cosh\" read as cos) solves (4) with theta(0) = theta'(0) = 0, where g/R = 4 s^2 - (3/2) h^2 by (5)", resid.is_zero() && resid0.is_zero() && resid1.is_zero(), format!("residual of (4): {resid}; theta(0) = {resid0}; theta'(0) = {resid1}")));
     let d6p = (&sol6 - expr(printed::STICK_6P)).expand();
-    checks.push(check("19", "stick_6p_memoir", "(6') is (6) regrouped", d6p.is_zero(), format!("(6) - (6'): {d6p}")));
+    checks.push(check(
+        "19",
+        "stick_6p_memoir",
+        "(6') is (6) regrouped",
+        d6p.is_zero(),
+        format!("(6) - (6'): {d6p}"),
+    ));
     let n7 = (&mm1 * &tau - Atom::num(2) * var("s") * &sol6).expand();
-    let d7 = subst(&(&n7 - expr(printed::STICK_7)), "g", &(var("R") * (Atom::num(4) * var("s").pow(Atom::num(2)) - rat(3, 2) * hs.pow(Atom::num(2))))).expand();
+    let d7 = subst(
+        &(&n7 - expr(printed::STICK_7)),
+        "g",
+        &(var("R")
+            * (Atom::num(4) * var("s").pow(Atom::num(2)) - rat(3, 2) * hs.pow(Atom::num(2)))),
+    )
+    .expand();
     let d7 = simplify(&d7);
-    checks.push(check("19", "stick_7_memoir", "(3) with (6) is the printed (7), using (5)", is_zero(&d7), format!("(3) with (6) minus (7): {d7}")));
+    checks.push(check(
+        "19",
+        "stick_7_memoir",
+        "(3) with (6) is the printed (7), using (5)",
+        is_zero(&d7),
+        format!("(3) with (6) minus (7): {d7}"),
+    ));
     let with_h = |e: &Atom| e.replace(hs.to_pattern()).with(h_val.to_pattern());
 
     // Formulas.
     formulas.push(formula("reality_curve", "13", "(ℰ) derived: discriminant numerator of E(n) in x = cos(theta), y = s^2, scaled to the printed normalisation (zero on the curve).", &reality_n));
-    formulas.push(formula_raw("memoir_reality_curve", "13", "Printed (ℰ): x^2 + (2/3)xy - 1.", reality_printed));
+    formulas.push(formula_raw(
+        "memoir_reality_curve",
+        "13",
+        "Printed (ℰ): x^2 + (2/3)xy - 1.",
+        reality_printed,
+    ));
     formulas.push(formula("curve_s", "14", "(S) derived: resultant of E(n) and S(n) in n, in x, y, divided by its constant ratio to the printed polynomial.", &curve_n));
     formulas.push(formula_raw("memoir_curve_s", "14", "Printed (S) of n° 14.", curve_printed));
     formulas.push(formula("curve_s_raw", "14", "The resultant of the numerators of E(n) (times 3 sin cos) and S(n) (times 3) in n, in x, y, not rescaled.", &curve));
-    formulas.push(formula("curve_s1_y", "14", "(S1) derived: y = s^2 where S(n) has a double root, as a function of x.", &s1_y));
-    formulas.push(formula_raw("memoir_curve_s1_y", "14", "Printed (S1): y = (3/4) x / (1 + 2 x^2).", expr(printed::CURVE_S1_Y)));
+    formulas.push(formula(
+        "curve_s1_y",
+        "14",
+        "(S1) derived: y = s^2 where S(n) has a double root, as a function of x.",
+        &s1_y,
+    ));
+    formulas.push(formula_raw(
+        "memoir_curve_s1_y",
+        "14",
+        "Printed (S1): y = (3/4) x / (1 + 2 x^2).",
+        expr(printed::CURVE_S1_Y),
+    ));
     formulas.push(formula("reality_y", "13", "(ℰ) solved for y = s^2 as a function of x.", &y_e));
     formulas.push(formula("quartic_f", "14", "F(t) derived: discriminant in y of (S) over 64 x^2, t = x^2 (vertical tangent where it vanishes).", &quartic));
     formulas.push(formula_raw("memoir_quartic_f", "14", "Printed F(t).", expr(printed::QUARTIC_F)));
     formulas.push(formula("quartic_u", "14", "F(1 + u) derived, u written t.", &shifted));
-    formulas.push(formula("vertical_y", "14", "y of the double root of (S) in y at a given x (the vertical tangent's y when F(x^2) = 0).", &vy));
-    formulas.push(formula("vertical_t", "14", "Closed-form root of F(t) in (0.8, 1): larger root of the quadratic factor.", &t_root));
+    formulas.push(formula(
+        "vertical_y",
+        "14",
+        "y of the double root of (S) in y at a given x (the vertical tangent's y when F(x^2) = 0).",
+        &vy,
+    ));
+    formulas.push(formula(
+        "vertical_t",
+        "14",
+        "Closed-form root of F(t) in (0.8, 1): larger root of the quadratic factor.",
+        &t_root,
+    ));
     formulas.push(formula("point_b_x", "14", "Point B: x of the maximum of y on (S1).", &bx));
     formulas.push(formula("point_b_y", "14", "Point B: y.", &by));
     formulas.push(formula("point_f_x", "14", "Point F: x where (ℰ) meets (S1), closed form.", &fx));
     formulas.push(formula("point_f_y", "14", "Point F: y.", &fy));
     formulas.push(formula("tangent_a_slope", "14", "Slope dy/dx of (S) at A.", &slope_a));
     formulas.push(formula("tangent_d_slope", "14", "Slope dy/dx of (S) at D.", &slope_d));
-    formulas.push(formula("s_of_n", "15", "(E') derived: s as a function of theta, n (n° 12 units).", &s_of_n));
+    formulas.push(formula(
+        "s_of_n",
+        "15",
+        "(E') derived: s as a function of theta, n (n° 12 units).",
+        &s_of_n,
+    ));
     formulas.push(formula_raw("memoir_s_of_n", "15", "Printed (E').", expr(printed::S_OF_N)));
-    formulas.push(formula("s0", "15", "Minimum s0 of s over n at fixed theta (derived, value of (E') at n0).", &s0));
+    formulas.push(formula(
+        "s0",
+        "15",
+        "Minimum s0 of s over n at fixed theta (derived, value of (E') at n0).",
+        &s0,
+    ));
     formulas.push(formula_raw("memoir_s0", "15", "Printed s0 (text).", expr(printed::S0)));
-    formulas.push(formula_raw("memoir_s0_table", "15", "Printed s0 in the table of variations.", expr(printed::S0_TABLE)));
-    formulas.push(formula("skid_of_n", "15", "(D') derived: D along (E) as a function of theta, n.", &skid_of_n));
+    formulas.push(formula_raw(
+        "memoir_s0_table",
+        "15",
+        "Printed s0 in the table of variations.",
+        expr(printed::S0_TABLE),
+    ));
+    formulas.push(formula(
+        "skid_of_n",
+        "15",
+        "(D') derived: D along (E) as a function of theta, n.",
+        &skid_of_n,
+    ));
     formulas.push(formula_raw("memoir_skid_of_n", "15", "Printed (D').", expr(printed::SKID_OF_N)));
-    formulas.push(formula("s2_of_d", "15", "(D'') derived: s^2 on the curve D = d, from the resultant of (E) and (D) in n.", &s2_of_d));
+    formulas.push(formula(
+        "s2_of_d",
+        "15",
+        "(D'') derived: s^2 on the curve D = d, from the resultant of (E) and (D) in n.",
+        &s2_of_d,
+    ));
     formulas.push(formula_raw("memoir_s2_of_d", "15", "Printed (D'').", expr(printed::S2_OF_D)));
     formulas.push(formula("curve_n_s2", "17", "(N) derived: s^2 where E(-s) = 0.", &n_s2));
-    formulas.push(formula_raw("memoir_curve_n_s2", "17", "Printed (N).", expr(printed::CURVE_N_S2)));
+    formulas.push(formula_raw(
+        "memoir_curve_n_s2",
+        "17",
+        "Printed (N).",
+        expr(printed::CURVE_N_S2),
+    ));
     formulas.push(formula("reality_s2", "13", "(ℰ) in theta: s^2 = 3 sin^2 / (2 cos).", &e_s2));
     formulas.push(formula("h_s2", "17", "s^2 where S(-s) = 0 (n° 17 bis).", &h_s2));
     formulas.push(formula("h_cubic", "17", "Cubic in sin(theta) (written in sin(theta)) whose root in (0, 1) is H (n° 17 bis), leading coefficient 3.", &subst(&cubic_monic, "w", &sin_t())));
     formulas.push(formula("stick_theta", "19", "(6): theta(t) of the linearised stick equations, h = sqrt((2/3)(4s^2 - g/R)) (physical units).", &with_h(&sol6)));
-    formulas.push(formula("stick_n", "19", "(7): n(t) of the linearised stick equations (physical units).", &with_h(&expr(printed::STICK_7))));
+    formulas.push(formula(
+        "stick_n",
+        "19",
+        "(7): n(t) of the linearised stick equations (physical units).",
+        &with_h(&expr(printed::STICK_7)),
+    ));
     formulas.push(formula("stick_dp", "19", "Linearised theta'' with the stick moment M (first equation (2) of n° 19, sin -> theta, cos -> 1, n^2 term dropped).", &dp_lin));
-    formulas.push(formula("stick_dn", "19", "Linearised n' with the stick moment M1, in theta, p.", &dn_lin));
-    formulas.push(formula("stick_full_dp", "19", "Full first equation (2) of n° 19: derived p' plus M.", &(&pns[0] + &mm)));
-    formulas.push(formula("stick_full_dn", "19", "Full second equation (2) of n° 19: derived n' plus M1.", &(&pns[1] + &mm1)));
+    formulas.push(formula(
+        "stick_dn",
+        "19",
+        "Linearised n' with the stick moment M1, in theta, p.",
+        &dn_lin,
+    ));
+    formulas.push(formula(
+        "stick_full_dp",
+        "19",
+        "Full first equation (2) of n° 19: derived p' plus M.",
+        &(&pns[0] + &mm),
+    ));
+    formulas.push(formula(
+        "stick_full_dn",
+        "19",
+        "Full second equation (2) of n° 19: derived n' plus M1.",
+        &(&pns[1] + &mm1),
+    ));
     let _ = &t;
     let mut inputs: Vec<String> = INPUTS.iter().map(|s| s.to_string()).collect();
     inputs.push("p".into());

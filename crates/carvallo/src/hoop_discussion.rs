@@ -37,9 +37,8 @@ pub const HOOP_DISCUSSION_IR: &str = include_str!("../../../generated/hoop_discu
 pub fn eval(args: &[(&str, f64)]) -> BTreeMap<&'static str, f64> {
     use discussion_scene as scene;
     let names: Vec<&str> = scene::PARAMS.iter().chain(scene::INPUTS.iter()).copied().collect();
-    let values = std::array::from_fn(|i| {
-        args.iter().find(|(k, _)| *k == names[i]).map_or(0.0, |(_, v)| *v)
-    });
+    let values =
+        std::array::from_fn(|i| args.iter().find(|(k, _)| *k == names[i]).map_or(0.0, |(_, v)| *v));
     scene::OUTPUTS.iter().copied().zip(scene::eval_array(&values)).collect()
 }
 
@@ -503,10 +502,78 @@ mod tests {
         let tol = 1e-12;
         assert!((sp.vertical.t - (2.0 + 3.0 * 2f64.sqrt()) / 7.0).abs() < tol);
         assert!((sp.f.0 - ((1.0 + 33f64.sqrt()) / 8.0).sqrt()).abs() < tol);
-        assert!((sp.b.0 - 0.5f64.sqrt()).abs() < tol && (sp.b.1 - 3.0 * 2f64.sqrt() / 16.0).abs() < tol);
+        assert!(
+            (sp.b.0 - 0.5f64.sqrt()).abs() < tol && (sp.b.1 - 3.0 * 2f64.sqrt() / 16.0).abs() < tol
+        );
         assert!((sp.slopes_a_d.0 + 3.0).abs() < tol && sp.slopes_a_d.1.abs() < tol);
         // H solves the cubic 3w^3 + 4w^2 - 14w + 4 = 0.
         let w = sp.h.0;
         assert!((3.0 * w.powi(3) + 4.0 * w * w - 14.0 * w + 4.0).abs() < 1e-12);
+    }
+
+    #[test]
+    fn figure_3_series_lie_on_the_printed_curves() {
+        let figs = figure_3();
+        assert_eq!(figs.len(), 3);
+        for &(x, y) in &figs[0].points {
+            assert!((x * x + 2.0 / 3.0 * x * y - 1.0).abs() < 1e-12, "(ℰ) at x = {x}");
+        }
+        for &(x, y) in &figs[1].points {
+            assert!((y - 0.75 * x / (1.0 + 2.0 * x * x)).abs() < 1e-12, "(S1) at x = {x}");
+        }
+        assert!(figs[2].points.len() >= 30);
+        for &(x, y) in &figs[2].points {
+            let p = 16.0 * x * x * (1.0 + x * x) * y * y
+                + 8.0 * x * (5.0 * x.powi(4) - 5.0 * x * x - 1.0) * y
+                + 3.0 * (1.0 + x * x).powi(2) * (1.0 - x * x);
+            // Near the vertical tangent the roots are ill-conditioned: 1e-9 absolute.
+            assert!(p.abs() < 1e-9, "(S) at ({x}, {y}): {p}");
+        }
+    }
+
+    #[test]
+    fn polar_series_lie_on_the_printed_curves() {
+        let figs = figure_4_bis();
+        let n = figs.iter().find(|f| f.name.starts_with("(N)")).expect("curve N");
+        for &(deg, s) in &n.points {
+            let th = deg.to_radians();
+            let s2 = 2.0 * th.sin() / (th.cos() * (4.0 - 3.0 * th.sin()));
+            assert!((s * s - s2).abs() < 1e-12 * s2.max(1.0), "(N) at {deg}°");
+        }
+        let fig4 = figure_4();
+        let d = fig4.iter().find(|f| f.name == "D = 0.5").expect("curve D = 1/2");
+        assert!(!d.points.is_empty());
+        for &(deg, s) in &d.points {
+            // The point satisfies D = 1/2 for one root n of (E).
+            let th = deg.to_radians();
+            let (a, b, c) = (3.0 * th.sin(), 4.0 * s, 2.0 * th.tan());
+            let disc = (b * b - 4.0 * a * c).max(0.0).sqrt();
+            let skid = |n: f64| -n * n * th.sin() - s * n;
+            let best = [(-b - disc) / (2.0 * a), (-b + disc) / (2.0 * a)]
+                .map(|n| (skid(n) - 0.5).abs())
+                .into_iter()
+                .fold(f64::INFINITY, f64::min);
+            assert!(best < 1e-9, "D = 1/2 at {deg}°: {best}");
+        }
+    }
+
+    #[test]
+    fn stick_closed_form_matches_the_linearised_integration() {
+        let (r, g) = (0.5_f64, 9.81_f64);
+        let s = 2.0 * (g / r).sqrt();
+        let (th, n) = stick_theta_n(r, g, s, -1.0, 2.0, 0.7);
+        let (th_rk, n_rk) = stick_linearised_rk4(r, g, s, -1.0, 2.0, 0.7, 1000, true);
+        // RK4 with h dt ~ 0.01: global error ~1e-8 relative; 1e-6 relative stated.
+        assert!((th - th_rk).abs() < 1e-6 * th.abs().max(1e-3));
+        assert!((n - n_rk).abs() < 1e-6 * n.abs().max(1e-3));
+    }
+
+    #[test]
+    fn carvallo_root_agrees_with_the_high_precision_closed_form() {
+        let root = carvallo_root();
+        assert!((root.exact_u - root.exact_u_hp).abs() < 1e-15);
+        assert!((root.exact_u - (3.0 * 2f64.sqrt() - 5.0) / 7.0).abs() < 1e-15);
+        assert!(root.method_rel_error > 1e-3 && root.method_rel_error < 1.3e-3);
+        assert!(root.converged_rel_error < 1e-12);
     }
 }

@@ -80,7 +80,9 @@ fn formula_entry(
         derived: Derived::Numbers(BTreeMap::from([("points".to_string(), POINTS as f64)])),
         rel_diff: Some(rel),
         verdict: if agrees { Verdict::Agrees } else { otherwise },
-        note: format!("generated `{derived}` vs transcribed `{memoir}` at {POINTS} seeded points; {note}"),
+        note: format!(
+            "generated `{derived}` vs transcribed `{memoir}` at {POINTS} seeded points; {note}"
+        ),
     }
 }
 
@@ -102,16 +104,36 @@ pub fn point_entries(formulas_agree: bool) -> Vec<Entry> {
     let mut out = Vec::new();
     let sp = special_points();
     let fa = formulas_agree;
-    let note_f = "(ℰ) ∩ (S1) in closed form: x^2 = (1 + sqrt 33)/8 (generated point_f_x, point_f_y)";
+    let note_f =
+        "(ℰ) ∩ (S1) in closed form: x^2 = (1 + sqrt 33)/8 (generated point_f_x, point_f_y)";
     out.push(printed_number("14", "point F: x = cos(th)", 0.917, 3, sp.f.0, fa, note_f));
     out.push(printed_number("14", "point F: y = s^2", 0.258, 3, sp.f.1, fa, &format!("{note_f}; at the memoir's own x = 0,917 (ℰ) gives y = {:.4} and (S1) {:.4}: the printed 0,258 lies between", hd::output("reality_y", &[("x", 0.917)]), hd::output("curve_s1_y", &[("x", 0.917)]))));
     let v = sp.vertical;
     let note_v = "vertical tangent of (S): t = (2 + 3 sqrt 2)/7 from the factored F(t) (generated vertical_t), y the double root of the generated (S) there";
     out.push(printed_number("14", "vertical tangent of (S): t = x^2", 0.89193, 5, v.t, fa, note_v));
-    out.push(printed_number("14", "vertical tangent of (S): x = cos(th)", 0.944, 3, v.x, fa, note_v));
+    out.push(printed_number(
+        "14",
+        "vertical tangent of (S): x = cos(th)",
+        0.944,
+        3,
+        v.x,
+        fa,
+        note_v,
+    ));
     out.push(printed_number("14", "vertical tangent of (S): th (degrees)", 19.33, 2, v.theta_deg, fa, &format!("{note_v}; printed \"19°,33\"; arccos of the memoir's own x = 0,944 is {:.2}°, so the slip is in his arccos", 0.944f64.acos().to_degrees())));
     out.push(printed_number("14", "vertical tangent of (S): y = s^2", 0.2073, 4, v.y, fa, note_v));
-    out.push(printed_number("14", "vertical tangent of (S): s", 0.4656, 4, v.s, fa, &format!("{note_v}; the square root of the memoir's own y = 0,2073 is {:.4}", 0.2073f64.sqrt())));
+    out.push(printed_number(
+        "14",
+        "vertical tangent of (S): s",
+        0.4656,
+        4,
+        v.s,
+        fa,
+        &format!(
+            "{note_v}; the square root of the memoir's own y = 0,2073 is {:.4}",
+            0.2073f64.sqrt()
+        ),
+    ));
     let note_h = "(S) ∩ (N): root in (0, 1) of the derived cubic 3w^3 + 4w^2 - 14w + 4 = 0, w = sin(th) (irreducible over Q: no closed form in real radicals without casus irreducibilis), s from S(-s) = 0";
     out.push(printed_number("17", "point H: sin(th)", 0.322, 3, sp.h.0, fa, note_h));
     out.push(printed_number("17", "point H: th (degrees)", 18.8, 1, sp.h.1, fa, note_h));
@@ -129,13 +151,42 @@ pub fn entries() -> Vec<Entry> {
     out.push(formula_entry("13", "(ℰ) reality curve", "x^2 + (2/3)xy - 1 = 0", "reality_curve", "memoir_reality_curve", Verdict::DerivationDiffers, "numerator of the discriminant of the derived E(n) in x = cos(th), y = s^2, divided by its constant ratio to the printed curve (symbolic check reality_curve)"));
     // n° 14: curves.
     out.push(formula_entry("14", "(S) resultant of E(n), S(n)", "16x^2(1+x^2)y^2 + 8x(5x^4-5x^2-1)y + 3(1+x^2)^2(1-x^2) = 0", "curve_s", "memoir_curve_s", Verdict::DerivationDiffers, "symbolica's resultant in n of 3 sin cos E(n) and 3 S(n) (cross-checked by the Sylvester determinant), reduced with sin^2 = 1 - x^2, is exactly 12 x the printed polynomial (check curve_s_memoir)"));
-    out.push(formula_entry("14", "(S1) reality of the roots of S", "y = (3/4) x / (1 + 2x^2)", "curve_s1_y", "memoir_curve_s1_y", Verdict::DerivationDiffers, "discriminant of the derived S(n)"));
+    out.push(formula_entry(
+        "14",
+        "(S1) reality of the roots of S",
+        "y = (3/4) x / (1 + 2x^2)",
+        "curve_s1_y",
+        "memoir_curve_s1_y",
+        Verdict::DerivationDiffers,
+        "discriminant of the derived S(n)",
+    ));
     out.push(formula_entry("14", "F(t) of the vertical tangent", "28t^4 - 44t^3 + 15t^2 + 4t - 2", "quartic_f", "memoir_quartic_f", Verdict::DerivationDiffers, "discriminant in y of the derived (S) over 64x^2 (the memoir's B'^2 - AC over 16x^2), t = x^2; factored over Q: F(t) = (2t - 1)^2 (7t^2 - 4t - 2), so the root is t = (2 + 3 sqrt 2)/7 (not in the memoir); the double root t = 1/2 is an isolated point of (S) at x = 1/sqrt 2, y = 3 sqrt 2 / 8 where E and S share a complex root"));
     let sqrt2 = 2f64.sqrt();
-    out.push(number_entry("14", "point B: x", sqrt2 / 2.0, sp.b.0, Verdict::DerivationDiffers, "printed sqrt(2)/2; generated point_b_x (maximum of the derived (S1))".into()));
-    out.push(number_entry("14", "point B: y", 3.0 * sqrt2 / 16.0, sp.b.1, Verdict::DerivationDiffers, "printed 3 sqrt(2)/16; generated point_b_y".into()));
+    out.push(number_entry(
+        "14",
+        "point B: x",
+        sqrt2 / 2.0,
+        sp.b.0,
+        Verdict::DerivationDiffers,
+        "printed sqrt(2)/2; generated point_b_x (maximum of the derived (S1))".into(),
+    ));
+    out.push(number_entry(
+        "14",
+        "point B: y",
+        3.0 * sqrt2 / 16.0,
+        sp.b.1,
+        Verdict::DerivationDiffers,
+        "printed 3 sqrt(2)/16; generated point_b_y".into(),
+    ));
     out.push(number_entry("14", "tangent of (S) at A: slope", -3.0, sp.slopes_a_d.0, Verdict::DerivationDiffers, "-P_x/P_y of the derived (S) at (1, 0); equal to the slope of (ℰ) there (check tangent_a_reality)".into()));
-    out.push(number_entry("14", "tangent of (S) at D: slope", 0.0, sp.slopes_a_d.1, Verdict::DerivationDiffers, "-P_x/P_y of the derived (S) at (1, 1/4): horizontal".into()));
+    out.push(number_entry(
+        "14",
+        "tangent of (S) at D: slope",
+        0.0,
+        sp.slopes_a_d.1,
+        Verdict::DerivationDiffers,
+        "-P_x/P_y of the derived (S) at (1, 1/4): horizontal".into(),
+    ));
     // n° 14: Carvallo's method.
     let shifted_ok = root.shifted == [28.0, 68.0, 51.0, 14.0, 1.0];
     out.push(Entry {
@@ -148,7 +199,15 @@ pub fn entries() -> Vec<Entry> {
         note: "Carvallo's Horner tableau (repeated synthetic division by t - 1) run on the generated F(t); rows equal to the printed ones".into(),
     });
     out.push(printed_number("14", "root squaring: v^4 after two squarings", 7332.0, 0, root.v4, fa, "second root-squaring row of v^4 + 14v^3 + 51v^2 + 68v + 28 (v = 1/u): 94^2 - 2 x 753 = 7330; Carvallo's slide rule reads 51^2 = 2601 as 2600, whence his 752 and 7332"));
-    out.push(printed_number("14", "root squaring: log v^4", 3.86522, 5, root.log_v4, fa, "log10 of the computed v^4"));
+    out.push(printed_number(
+        "14",
+        "root squaring: log v^4",
+        3.86522,
+        5,
+        root.log_v4,
+        fa,
+        "log10 of the computed v^4",
+    ));
     out.push(printed_number("14", "root squaring: u = -1/v", -0.10807, 5, root.u, fa, &format!("u from v = (v^4)^(1/4) after two squarings as Carvallo stops; the method itself (two squarings, second root |v| = 2 double, ratio 0.22) is off the exact root by {:.2e} relative; after six squarings by {:.0e}", root.method_rel_error, root.converged_rel_error)));
     out.push(printed_number("14", "u exact vs printed", -0.10807, 5, root.exact_u, fa, &format!("exact u = (3 sqrt 2 - 5)/7 from the generated closed form (Newton-polished in f64; at 256 bits by carvallo_ir::hp: {:.15}); Carvallo's error comes from stopping after two squarings, not from the slide rule", root.exact_u_hp)));
     out.push(printed_number("14", "residual of the u equation at u = -0,10807", 0.0004, 4, root.residual_at_printed_u, fa, "28u^4 + 68u^3 + 51u^2 + 14u + 1 at the printed u, in f64; his check was done with the slide rule"));
@@ -168,12 +227,60 @@ pub fn entries() -> Vec<Entry> {
     let v = sp.vertical;
     out.push(printed_number("14", "vertical tangent: product of the y roots", 0.0430, 4, v.y_product, fa, "3(1 + x^2)(1 - x^2)/(16 x^2) at the exact t (constant over leading coefficient of the generated (S))"));
     // n° 15.
-    out.push(formula_entry("15", "(E') s as a function of n", "s = -(3/4 n sin(th) + tan(th)/(2n))", "s_of_n", "memoir_s_of_n", Verdict::DerivationDiffers, "(E) solved for s"));
-    out.push(formula_entry("15", "s0 (text)", "s0 = tan(th) sqrt(3 cos(th)/2)", "s0", "memoir_s0", Verdict::DerivationDiffers, "(E') at n0 = -sqrt(2/(3 cos(th)))"));
-    out.push(formula_entry("15", "s0 (table of variations)", "s0 = tan(th) sqrt(2/(3 cos(th)))", "s0", "memoir_s0_table", Verdict::MemoirError, "misprint in the table: the fraction under the root is inverted (the text's s0 agrees)"));
-    out.push(formula_entry("15", "(D') D as a function of n", "D = 1/2 tan(th) - 1/4 n^2 sin(th)", "skid_of_n", "memoir_skid_of_n", Verdict::DerivationDiffers, "derived D with s from (E')"));
-    out.push(formula_entry("15", "(D'') s^2 on the curve D = d", "s^2 = 2 sin(th) (tan(th) - 3D/2)^2 / (tan(th) - 2D)", "s2_of_d", "memoir_s2_of_d", Verdict::DerivationDiffers, "resultant in n of (E) and D(n) - d"));
-    out.push(printed_number("15", "D = 1/2 meets n0 at th (degrees)", 56.3, 1, 1.5f64.atan().to_degrees(), fa, "(1/3) tan(th) = 1/2 (D at n0 = tan/3, symbolic check skid_at_n0_memoir)"));
+    out.push(formula_entry(
+        "15",
+        "(E') s as a function of n",
+        "s = -(3/4 n sin(th) + tan(th)/(2n))",
+        "s_of_n",
+        "memoir_s_of_n",
+        Verdict::DerivationDiffers,
+        "(E) solved for s",
+    ));
+    out.push(formula_entry(
+        "15",
+        "s0 (text)",
+        "s0 = tan(th) sqrt(3 cos(th)/2)",
+        "s0",
+        "memoir_s0",
+        Verdict::DerivationDiffers,
+        "(E') at n0 = -sqrt(2/(3 cos(th)))",
+    ));
+    out.push(formula_entry(
+        "15",
+        "s0 (table of variations)",
+        "s0 = tan(th) sqrt(2/(3 cos(th)))",
+        "s0",
+        "memoir_s0_table",
+        Verdict::MemoirError,
+        "misprint in the table: the fraction under the root is inverted (the text's s0 agrees)",
+    ));
+    out.push(formula_entry(
+        "15",
+        "(D') D as a function of n",
+        "D = 1/2 tan(th) - 1/4 n^2 sin(th)",
+        "skid_of_n",
+        "memoir_skid_of_n",
+        Verdict::DerivationDiffers,
+        "derived D with s from (E')",
+    ));
+    out.push(formula_entry(
+        "15",
+        "(D'') s^2 on the curve D = d",
+        "s^2 = 2 sin(th) (tan(th) - 3D/2)^2 / (tan(th) - 2D)",
+        "s2_of_d",
+        "memoir_s2_of_d",
+        Verdict::DerivationDiffers,
+        "resultant in n of (E) and D(n) - d",
+    ));
+    out.push(printed_number(
+        "15",
+        "D = 1/2 meets n0 at th (degrees)",
+        56.3,
+        1,
+        1.5f64.atan().to_degrees(),
+        fa,
+        "(1/3) tan(th) = 1/2 (D at n0 = tan/3, symbolic check skid_at_n0_memoir)",
+    ));
     // n° 16 and 18: which g R gives 2,40 m/s.
     let g = 9.81;
     out.push(Entry {
@@ -190,9 +297,33 @@ pub fn entries() -> Vec<Entry> {
         note: "V = sR = sqrt(gR) at s = 1: 2,40 m/s needs g = 11.52 m/s^2 at R = 0.50 m or R = 0.587 m at g = 9.81; no terrestrial g gives it, so the slip is in his square root; n° 18's 1,20 = 0.5 x 2,40 inherits it (the right values are 2.21 and 1.11 m/s)".into(),
     });
     // n° 17.
-    out.push(formula_entry("17", "(N) s^2 where E(-s) = 0", "s^2 = 2 sin(th) / (cos(th)(4 - 3 sin(th)))", "curve_n_s2", "memoir_curve_n_s2", Verdict::DerivationDiffers, "E(-s) solved for s^2"));
-    out.push(printed_number("17", "point I: th (degrees)", 41.9, 1, sp.i.0, fa, "(N) touches (ℰ) at the double root sin(th) = 2/3 (check point_i_double): th = arcsin(2/3)"));
-    out.push(printed_number("17", "point I: s", 0.95, 2, sp.i.1, fa, "s = sqrt(2/sqrt 5) from the generated (N) at sin(th) = 2/3"));
+    out.push(formula_entry(
+        "17",
+        "(N) s^2 where E(-s) = 0",
+        "s^2 = 2 sin(th) / (cos(th)(4 - 3 sin(th)))",
+        "curve_n_s2",
+        "memoir_curve_n_s2",
+        Verdict::DerivationDiffers,
+        "E(-s) solved for s^2",
+    ));
+    out.push(printed_number(
+        "17",
+        "point I: th (degrees)",
+        41.9,
+        1,
+        sp.i.0,
+        fa,
+        "(N) touches (ℰ) at the double root sin(th) = 2/3 (check point_i_double): th = arcsin(2/3)",
+    ));
+    out.push(printed_number(
+        "17",
+        "point I: s",
+        0.95,
+        2,
+        sp.i.1,
+        fa,
+        "s = sqrt(2/sqrt 5) from the generated (N) at sin(th) = 2/3",
+    ));
     // n° 18: arc DH close to the circle s = 0.5.
     let arc: Vec<f64> = (0..=20)
         .filter_map(|k| {
@@ -243,8 +374,7 @@ fn stick_entries() -> Vec<Entry> {
     ] {
         let (th_cf, n_cf) = hd::stick_theta_n(r, g, s, m, m1, 3.0 * time);
         let (th_lin, n_lin) = hd::stick_linearised_rk4(r, g, s, m, m1, 3.0 * time, 400, true);
-        let (th_full, n_full) =
-            hd::stick_linearised_rk4(r, g, s, m, m1, 3.0 * time, 400, false);
+        let (th_full, n_full) = hd::stick_linearised_rk4(r, g, s, m, m1, 3.0 * time, 400, false);
         let cf_vs_rk4 = rel_diff(th_cf, th_lin).max(rel_diff(n_cf, n_lin));
         let ok = th_cf.signum() == theta_sign
             && th_full.signum() == theta_sign

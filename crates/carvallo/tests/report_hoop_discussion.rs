@@ -58,7 +58,14 @@ fn verdicts_are_the_expected_ones() {
     }
     // Nothing is left unexplained.
     for e in &all {
-        assert_ne!(e.verdict, Verdict::DerivationDiffers, "n° {} {}: {}", e.section, e.quantity, e.note);
+        assert_ne!(
+            e.verdict,
+            Verdict::DerivationDiffers,
+            "n° {} {}: {}",
+            e.section,
+            e.quantity,
+            e.note
+        );
     }
     for section in ["13", "14", "15", "16", "17", "18", "19"] {
         assert!(all.iter().any(|e| e.section == section), "no entry for n° {section}");
