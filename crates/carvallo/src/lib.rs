@@ -13,8 +13,10 @@ pub mod error;
 pub mod hoop;
 pub mod hoop_discussion;
 pub mod report;
+pub mod report_unicycle;
 pub mod report_hoop_discussion;
 pub mod report_whipple;
+pub mod unicycle;
 pub mod whipple;
 
 pub use error::ParameterError;

@@ -925,6 +925,7 @@ fn fold_checks(entries: &mut Vec<Entry>, checks: Result<Vec<SymbolicCheck>, Stri
 /// contributes one function; add new models here.
 pub fn all_entries() -> Vec<Entry> {
     let mut entries = hoop_entries();
+    entries.extend(crate::report_unicycle::entries());
     entries.extend(crate::report_hoop_discussion::entries());
     entries.extend(crate::report_whipple::entries());
     // Stable sort: the models' own orders are kept within a section.
