@@ -28,10 +28,12 @@ use crate::Derivation;
 pub type DeriveFn = fn() -> Result<Derivation>;
 
 /// Every derivation `cargo xtask regen` runs, in order: (model name, entry point).
-pub const DERIVATIONS: &[(&str, DeriveFn)] =
-    &[("hoop", crate::hoop::derive),
-        ("hoop_discussion", crate::hoop_discussion::derive), ("whipple", crate::whipple::derive),
-        ("unicycle", crate::unicycle::derive)];
+pub const DERIVATIONS: &[(&str, DeriveFn)] = &[
+    ("hoop", crate::hoop::derive),
+    ("hoop_discussion", crate::hoop_discussion::derive),
+    ("whipple", crate::whipple::derive),
+    ("unicycle", crate::unicycle::derive),
+];
 
 /// The directory, relative to the workspace root, that holds the generated files.
 pub const GENERATED_DIR: &str = "generated";
