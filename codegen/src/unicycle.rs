@@ -106,7 +106,8 @@ pub fn rider_moments() -> [Atom; 3] {
 /// of n° 6 with moments $A_1, B_1, C_1$ and mass $\mu_1$, on I, K and j.
 pub fn wheel_moments() -> [Atom; 3] {
     let h = hoop::motion::momentum_moment(&var("A1"), &var("B1"), &var("C1"));
-    let j = hoop::motion::inertia_moment(&h).map(|e| subst(&hoop::motion::to_pns(e), "mu", &var("mu1")));
+    let j = hoop::motion::inertia_moment(&h)
+        .map(|e| subst(&hoop::motion::to_pns(e), "mu", &var("mu1")));
     let i = Vector::unit(Trihedron::Ijk, 0);
     let k_big = Vector::unit(Trihedron::IJK, 2);
     let jj = Vector::unit(Trihedron::Ijk, 1);
@@ -156,8 +157,8 @@ pub fn rider_corrections() -> [Atom; 2] {
 
 /// The wheel's corrections by n° 73's routes with $A_1, B_1, C_1, \mu_1$.
 pub fn wheel_corrections() -> [Atom; 2] {
-    let h = hoop::motion::momentum_moment(&var("A1"), &var("B1"), &var("C1"))
-        .map(hoop::motion::to_pns);
+    let h =
+        hoop::motion::momentum_moment(&var("A1"), &var("B1"), &var("C1")).map(hoop::motion::to_pns);
     let nu = subst(&hoop::lagrange::correction_nu_via_centre(), "mu", &var("mu1"));
     let sigma = subst(&hoop::lagrange::correction_sigma_via_momentum(&h).0, "mu", &var("mu1"));
     [simplify(&nu), simplify(&sigma)]
@@ -321,7 +322,14 @@ pub fn derive() -> Result<Derivation> {
     let merged: Vec<Atom> = printed24
         .iter()
         .map(|e| {
-            with(e, &[("A", var("A") + var("A1")), ("B", var("B") + var("B1")), ("C", var("C") + var("C1"))])
+            with(
+                e,
+                &[
+                    ("A", var("A") + var("A1")),
+                    ("B", var("B") + var("B1")),
+                    ("C", var("C") + var("C1")),
+                ],
+            )
         })
         .collect();
     let mut merge = compare_all(
@@ -343,7 +351,9 @@ pub fn derive() -> Result<Derivation> {
         &lag,
         &eqs,
     ));
-    let rider_only_l0 = |e: &Atom| with(e, &[("L", zero()), ("mu1", zero()), ("A1", zero()), ("B1", zero()), ("C1", zero())]);
+    let rider_only_l0 = |e: &Atom| {
+        with(e, &[("L", zero()), ("mu1", zero()), ("A1", zero()), ("B1", zero()), ("C1", zero())])
+    };
     let t_r = rider_only_l0(&kinetic_energy());
     checks.push(compare(
         "74",
@@ -353,8 +363,20 @@ pub fn derive() -> Result<Derivation> {
         &m::TWICE_KINETIC_74.atom(),
     ));
     let rc = rider_corrections();
-    checks.push(compare("74", "correction_nu_74_memoir", "the rider's nu correction is -mu R h p s cos(theta) (n° 74)", &rc[0], &m::CORRECTION_NU_74.atom()));
-    checks.push(compare("74", "correction_sigma_74_memoir", "the rider's sigma correction is +mu R h p n cos(theta) (n° 74)", &rc[1], &m::CORRECTION_SIGMA_74.atom()));
+    checks.push(compare(
+        "74",
+        "correction_nu_74_memoir",
+        "the rider's nu correction is -mu R h p s cos(theta) (n° 74)",
+        &rc[0],
+        &m::CORRECTION_NU_74.atom(),
+    ));
+    checks.push(compare(
+        "74",
+        "correction_sigma_74_memoir",
+        "the rider's sigma correction is +mu R h p n cos(theta) (n° 74)",
+        &rc[1],
+        &m::CORRECTION_SIGMA_74.atom(),
+    ));
     let lag_r: Vec<Atom> = lag.iter().map(rider_only_l0).collect();
     checks.push(compare_all(
         "74",
@@ -374,7 +396,10 @@ pub fn derive() -> Result<Derivation> {
     // Energy (motor 0): conserved along the solved full equations.
     let pns = solve_linear(&eqs, &["dp", "dn", "ds"]);
     let energy = simplify(&(kinetic_energy() + (&mu * &z + &mu1 * &r_) * &g * cos_t()));
-    let flow = with(&time_derivative(&energy), &[("dp", pns[0].clone()), ("dn", pns[1].clone()), ("ds", pns[2].clone())]);
+    let flow = with(
+        &time_derivative(&energy),
+        &[("dp", pns[0].clone()), ("dn", pns[1].clone()), ("ds", pns[2].clone())],
+    );
     let revolution = [("A1", var("C1") + &mu1 * r_.pow(Atom::num(2)))];
     let mut chk = compare("24", "energy_conservation", "with A1 = C1 + mu1 R^2 (a wheel of revolution, as n° 7 for the hoop) the energy T + V is constant along the solved equations (motor moment 0)", &with(&flow, &revolution), &zero());
     chk.detail.push_str(&format!("; without the relation dE/dt is {}", show(&flow)));
@@ -401,7 +426,12 @@ pub fn derive() -> Result<Derivation> {
     });
 
     // n° 30: skid, from the inertia force of G = O + z k of mass mu.
-    let g_dot = contact_velocity().add(&phi().cross(&Vector::new(Trihedron::Ijk, zero(), zero(), z.clone())));
+    let g_dot = contact_velocity().add(&phi().cross(&Vector::new(
+        Trihedron::Ijk,
+        zero(),
+        zero(),
+        z.clone(),
+    )));
     let g_acc = g_dot.derivative(&var("p"), &var("n")).to(Trihedron::IJK);
     let force_j = -(&mu * &g_acc.comps[1]);
     let force_k = -(&mu * &g_acc.comps[2]);
@@ -420,26 +450,48 @@ pub fn derive() -> Result<Derivation> {
     ));
     checks.push(chk);
     let skid = simplify(&with(&skid_full, &[("p", zero()), ("dp", zero())]));
-    checks.push(compare("30", "skid_memoir", "the steady skid tendency is the printed (D) of n° 30", &skid, &m::SKID.atom()));
-    checks.push(compare("30", "skid_hoop", "with z = R the steady D is the hoop's D of n° 10", &subst(&skid, "z", &r_), &hoop::memoir::SKID.atom()));
+    checks.push(compare(
+        "30",
+        "skid_memoir",
+        "the steady skid tendency is the printed (D) of n° 30",
+        &skid,
+        &m::SKID.atom(),
+    ));
+    checks.push(compare(
+        "30",
+        "skid_hoop",
+        "with z = R the steady D is the hoop's D of n° 10",
+        &subst(&skid, "z", &r_),
+        &hoop::memoir::SKID.atom(),
+    ));
 
     // n° 32: normalised forms with B - C = mu z^2, g/R = 1.
     let n32 = [("B", &c_ + &mu * z.pow(Atom::num(2))), ("g", r_.clone())];
-    let equilibrium_n32 = simplify(&(with(&with(&equilibrium, &no_wheel()), &n32) / (&mu * &z * &r_ * cos_t())));
+    let equilibrium_n32 =
+        simplify(&(with(&with(&equilibrium, &no_wheel()), &n32) / (&mu * &z * &r_ * cos_t())));
     checks.push(compare("32", "equilibrium_n32_memoir", "(E) with B - C = mu z^2, g/R = 1, divided by mu g z cos(theta), is the printed (E) of n° 32", &equilibrium_n32, &m::EQUILIBRIUM_N32.atom()));
     let skid_n32 = simplify(&subst(&skid, "g", &r_));
-    checks.push(compare("32", "skid_n32_memoir", "(D) with g/R = 1 is the printed (D) of n° 32", &skid_n32, &m::SKID_N32.atom()));
+    checks.push(compare(
+        "32",
+        "skid_n32_memoir",
+        "(D) with g/R = 1 is the printed (D) of n° 32",
+        &skid_n32,
+        &m::SKID_N32.atom(),
+    ));
 
     // n° 33–34: the memoir's simplified model (rider letters, L = 0, wheel through its
     // (B1 - mu1 R^2) p s cos term only).
     let rider_l0: Vec<Atom> = rider.iter().map(|e| subst(e, "L", &zero())).collect();
     let gyro = simplify(&with(&wheel[1], &[("dn", zero()), ("ds", zero()), ("n", zero())]));
-    checks.push(compare("33", "wheel_gyroscopic_term", "the wheel's (n) terms at n = n' = s' = 0 are (B1 - mu1 R^2) p s cos(theta)", &gyro, &((var("B1") - &mu1 * r_.pow(Atom::num(2))) * var("p") * var("s") * cos_t())));
-    let simplified = [
-        &rider_l0[0] - &mu * &z * &g * sin_t(),
-        &rider_l0[1] + &gyro,
-        rider_l0[2].clone(),
-    ];
+    checks.push(compare(
+        "33",
+        "wheel_gyroscopic_term",
+        "the wheel's (n) terms at n = n' = s' = 0 are (B1 - mu1 R^2) p s cos(theta)",
+        &gyro,
+        &((var("B1") - &mu1 * r_.pow(Atom::num(2))) * var("p") * var("s") * cos_t()),
+    ));
+    let simplified =
+        [&rider_l0[0] - &mu * &z * &g * sin_t(), &rider_l0[1] + &gyro, rider_l0[2].clone()];
     let sys_i = solve_linear(&simplified, &["dp", "dn", "ds"]);
     checks.push(compare_all(
         "34",
@@ -449,7 +501,8 @@ pub fn derive() -> Result<Derivation> {
         &[m::SYSTEM_I_DP.atom(), m::SYSTEM_I_DN.atom(), m::SYSTEM_I_DS.atom()],
     ));
     let (stab_simpl, ok_simpl) = stability_of(&simplified);
-    let full_l0: [Atom; 3] = [subst(&eqs[0], "L", &zero()), subst(&eqs[1], "L", &zero()), subst(&eqs[2], "L", &zero())];
+    let full_l0: [Atom; 3] =
+        [subst(&eqs[0], "L", &zero()), subst(&eqs[1], "L", &zero()), subst(&eqs[2], "L", &zero())];
     let (stab_full, ok_full) = stability_of(&full_l0);
     checks.push(Check {
         section: "35".into(),
@@ -458,32 +511,94 @@ pub fn derive() -> Result<Derivation> {
         holds: ok_simpl && ok_full,
         detail: format!("simplified: {ok_simpl}; full: {ok_full}"),
     });
-    let route34 = hoop::steady::minus_p2_over_p(&sys_i[0], &[("dp", sys_i[0].clone()), ("dn", sys_i[1].clone()), ("ds", sys_i[2].clone())]);
-    checks.push(compare("34", "stability_taylor_route", "n° 34's -p''/p at p = 0 equals the determinant's K", &route34, &stab_simpl));
+    let route34 = hoop::steady::minus_p2_over_p(
+        &sys_i[0],
+        &[("dp", sys_i[0].clone()), ("dn", sys_i[1].clone()), ("ds", sys_i[2].clone())],
+    );
+    checks.push(compare(
+        "34",
+        "stability_taylor_route",
+        "n° 34's -p''/p at p = 0 equals the determinant's K",
+        &route34,
+        &stab_simpl,
+    ));
     let a_ = var("A");
-    let at_straight = |e: &Atom| simplify(&with(e, &[("sin_theta", zero()), ("cos_theta", Atom::num(1)), ("n", zero())]));
-    checks.push(compare("36", "straight_36_memoir", "A K at theta = 0, n = 0 (simplified model) is the printed first member of n° 36", &at_straight(&(&a_ * &stab_simpl)), &m::STRAIGHT_36.atom()));
+    let at_straight = |e: &Atom| {
+        simplify(&with(e, &[("sin_theta", zero()), ("cos_theta", Atom::num(1)), ("n", zero())]))
+    };
+    checks.push(compare(
+        "36",
+        "straight_36_memoir",
+        "A K at theta = 0, n = 0 (simplified model) is the printed first member of n° 36",
+        &at_straight(&(&a_ * &stab_simpl)),
+        &m::STRAIGHT_36.atom(),
+    ));
     let light_wheel = [("mu1", zero()), ("B1", zero())];
     let s39 = simplify(&(&a_ * with(&stab_simpl, &light_wheel)));
-    checks.push(compare("39", "stability_39_memoir", "A K with the wheel infinitely light is the printed (S) of n° 39 with E = B - C - mu h^2", &s39, &m::STABILITY_39.atom()));
+    checks.push(compare(
+        "39",
+        "stability_39_memoir",
+        "A K with the wheel infinitely light is the printed (S) of n° 39 with E = B - C - mu h^2",
+        &s39,
+        &m::STABILITY_39.atom(),
+    ));
     let b_e0 = [("B", &c_ + &mu * z.pow(Atom::num(2)))];
     let s39_e0 = simplify(&with(&s39, &b_e0));
-    checks.push(compare("39", "stability_39_e0_memoir", "with E = 0 it is the printed mu R h s n sin + mu h^2 n^2 - mu g h cos of n° 39", &s39_e0, &m::STABILITY_39_E0.atom()));
+    checks.push(compare(
+        "39",
+        "stability_39_e0_memoir",
+        "with E = 0 it is the printed mu R h s n sin + mu h^2 n^2 - mu g h cos of n° 39",
+        &s39_e0,
+        &m::STABILITY_39_E0.atom(),
+    ));
     let stability_n39 = simplify(&(subst(&s39_e0, "g", &r_) / (&mu * &r_ * &z)));
-    checks.push(compare("39", "stability_n39_memoir", "divided by mu g h with g/R = 1 it is the printed (S1) of n° 39", &stability_n39, &m::STABILITY_39_N.atom()));
+    checks.push(compare(
+        "39",
+        "stability_n39_memoir",
+        "divided by mu g h with g/R = 1 it is the printed (S1) of n° 39",
+        &stability_n39,
+        &m::STABILITY_39_N.atom(),
+    ));
     let hyp40 = [
         ("B", &c_ + &mu * z.pow(Atom::num(2))),
         ("B1", Atom::num(2) * &mu1 * r_.pow(Atom::num(2))),
     ];
-    let s40 = simplify(&with(&with(&(&a_ * &stab_simpl), &hyp40), &[("mu1", &c_ / r_.pow(Atom::num(2)))]));
-    checks.push(compare("40", "stability_40_memoir", "A K with B = C + mu h^2, B1 = 2 mu1 R^2, mu1 R^2 = C is the printed condition of n° 40", &s40, &m::STABILITY_40.atom()));
+    let s40 = simplify(&with(
+        &with(&(&a_ * &stab_simpl), &hyp40),
+        &[("mu1", &c_ / r_.pow(Atom::num(2)))],
+    ));
+    checks.push(compare(
+        "40",
+        "stability_40_memoir",
+        "A K with B = C + mu h^2, B1 = 2 mu1 R^2, mu1 R^2 = C is the printed condition of n° 40",
+        &s40,
+        &m::STABILITY_40.atom(),
+    ));
     let stability_n40 = simplify(&(subst(&s40, "g", &r_) / (&mu * &r_ * &z)));
-    checks.push(compare("40", "stability_n40_memoir", "divided by mu R h with g/R = 1 it is the printed (S) of n° 40", &stability_n40, &m::STABILITY_40_N.atom()));
+    checks.push(compare(
+        "40",
+        "stability_n40_memoir",
+        "divided by mu R h with g/R = 1 it is the printed (S) of n° 40",
+        &stability_n40,
+        &m::STABILITY_40_N.atom(),
+    ));
     // n° 41: s from (E) of n° 32 into (S) of n° 40, times n^2.
     let s_of_e = -(&z / &r_ * var("n") * sin_t() + sin_t() / (cos_t() * var("n")));
-    checks.push(compare("41", "s_from_e", "(E) of n° 32 vanishes at s = -(h/R) n sin - tan/n", &subst(&equilibrium_n32, "s", &s_of_e), &zero()));
+    checks.push(compare(
+        "41",
+        "s_from_e",
+        "(E) of n° 32 vanishes at s = -(h/R) n sin - tan/n",
+        &subst(&equilibrium_n32, "s", &s_of_e),
+        &zero(),
+    ));
     let trinomial = simplify(&(subst(&stability_n40, "s", &s_of_e) * var("n").pow(Atom::num(2))));
-    checks.push(compare("41", "trinomial_n41_memoir", "(S) of n° 40 along (E), times n^2, is the printed trinomial S(n^2) of n° 41", &trinomial, &m::TRINOMIAL_41.atom()));
+    checks.push(compare(
+        "41",
+        "trinomial_n41_memoir",
+        "(S) of n° 40 along (E), times n^2, is the printed trinomial S(n^2) of n° 41",
+        &trinomial,
+        &m::TRINOMIAL_41.atom(),
+    ));
 
     // n° 78: s constant, L kept.
     let det_printed = determinant_78(&m::EQ_P.atom(), &m::EQ_N.atom());
@@ -516,7 +631,9 @@ pub fn derive() -> Result<Derivation> {
     let det_full = determinant_78(&eqs[0], &eqs[1]);
     let full_sum_straight = at_straight(&with(&det_full[2], &b1_hoop));
     let mut chk = compare("78", "sum_78_full_model", "for the derived rider + wheel equations the sum condition at theta = 0, n = 0 is also L R s (mu1 R - mu h)", &full_sum_straight, &m::SUM_78.atom());
-    chk.detail.push_str("; the full model gives -L s (mu R h + mu1 R^2): L <= 0 for s > 0 whatever mu1 R - mu h");
+    chk.detail.push_str(
+        "; the full model gives -L s (mu R h + mu1 R^2): L <= 0 for s > 0 whatever mu1 R - mu h",
+    );
     checks.push(chk);
 
     let mut formulas = vec![
@@ -562,7 +679,11 @@ pub fn derive() -> Result<Derivation> {
         printed_formula("memoir_stability_n39", &m::STABILITY_39_N, "Printed (S1) of n° 39."),
         printed_formula("memoir_stability_n40", &m::STABILITY_40_N, "Printed (S) of n° 40."),
         printed_formula("memoir_trinomial_n41", &m::TRINOMIAL_41, "Printed S(n^2) of n° 41."),
-        printed_formula("memoir_product_78", &m::PRODUCT_78, "Printed (2) of n° 78 at theta = 0, n = 0."),
+        printed_formula(
+            "memoir_product_78",
+            &m::PRODUCT_78,
+            "Printed (2) of n° 78 at theta = 0, n = 0.",
+        ),
         printed_formula("memoir_sum_78", &m::SUM_78, "Printed (3) of n° 78 at theta = 0, n = 0."),
     ]);
     for f in &formulas {

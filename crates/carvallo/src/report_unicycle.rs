@@ -132,7 +132,14 @@ fn formula_entry(
 }
 
 /// A printed slide-rule number with `decimals` decimals (policy in the module docs).
-fn number(section: &str, quantity: &str, memoir: f64, decimals: i32, derived: f64, note: &str) -> Entry {
+fn number(
+    section: &str,
+    quantity: &str,
+    memoir: f64,
+    decimals: i32,
+    derived: f64,
+    note: &str,
+) -> Entry {
     let rel = rel_diff(derived, memoir);
     let verdict = if rel <= AGREEMENT_TOLERANCE {
         Verdict::Agrees
@@ -153,7 +160,14 @@ fn number(section: &str, quantity: &str, memoir: f64, decimals: i32, derived: f6
 }
 
 /// `number` with a fixed verdict for a non-`agrees` outcome.
-fn number_as(section: &str, quantity: &str, memoir: f64, derived: f64, v: Verdict, note: &str) -> Entry {
+fn number_as(
+    section: &str,
+    quantity: &str,
+    memoir: f64,
+    derived: f64,
+    v: Verdict,
+    note: &str,
+) -> Entry {
     let rel = rel_diff(derived, memoir);
     Entry {
         section: section.into(),
@@ -243,7 +257,11 @@ fn formulas() -> Vec<Entry> {
     let mut e = Vec::new();
     for (k, name, printed) in [
         ("p", "rider [I sum m (M-O) M'']", "A p' - L n' cos + ... (n° 23 (2), first line)"),
-        ("n", "rider [K sum m (M-O) M'']", "(C cos^2 + B sin^2) n' + mu R z s' sin - L p' cos + 2(B-C) pn sin cos + L p^2 sin"),
+        (
+            "n",
+            "rider [K sum m (M-O) M'']",
+            "(C cos^2 + B sin^2) n' + mu R z s' sin - L p' cos + 2(B-C) pn sin cos + L p^2 sin",
+        ),
         ("s", "rider [j sum m (S-O) M'']", "mu R^2 s' + mu R z (n' sin + 2pn cos)"),
     ] {
         let (d, m) = (format!("rider_{k}"), format!("memoir_rider_{k}"));
@@ -251,19 +269,45 @@ fn formulas() -> Vec<Entry> {
     }
     for (k, name, printed) in [
         ("p", "wheel [I sum m1 (M1-O) M1'']", "A1 p' - B1 sn cos + (C1 - B1) n^2 sin cos"),
-        ("n", "wheel [K sum m1 (M1-O) M1'']", "(C1 cos^2 + B1 sin^2) n' + B1 s' sin + 2(B1-C1) pn sin cos + (B1 - mu1 R^2) ps cos"),
+        (
+            "n",
+            "wheel [K sum m1 (M1-O) M1'']",
+            "(C1 cos^2 + B1 sin^2) n' + B1 s' sin + 2(B1-C1) pn sin cos + (B1 - mu1 R^2) ps cos",
+        ),
         ("s", "wheel [j sum m1 (M1-O) M1'']", "B1 s' + B1 n' sin + (B1 + A1 - C1) pn cos"),
     ] {
         let (d, m) = (format!("wheel_{k}"), format!("memoir_wheel_{k}"));
-        e.push(formula_entry("24", name, printed, &all, |p| out(p, &d), |p| out(p, &m), Verdict::DerivationDiffers, "generated wheel terms (hoop of n° 6 with A1, B1, C1, mu1) vs transcribed (3) of n° 24"));
+        e.push(formula_entry(
+            "24",
+            name,
+            printed,
+            &all,
+            |p| out(p, &d),
+            |p| out(p, &m),
+            Verdict::DerivationDiffers,
+            "generated wheel terms (hoop of n° 6 with A1, B1, C1, mu1) vs transcribed (3) of n° 24",
+        ));
     }
     let derived_eq = |k: &str, p: &Point| {
         let v = out(p, &format!("rider_{k}")) + out(p, &format!("wheel_{k}"));
-        if k == "p" { v - sin_w(p) } else { v }
+        if k == "p" {
+            v - sin_w(p)
+        } else {
+            v
+        }
     };
     for k in ["p", "n", "s"] {
         let m = format!("memoir_eq_{k}");
-        e.push(formula_entry("24", &format!("equation ({k}), wheel of mass 0"), "n° 24 (p), (n), (s) with mu1 = A1 = B1 = C1 = 0", &light, |p| derived_eq(k, p), |p| out(p, &m), Verdict::DerivationDiffers, "rider + wheel - weight work, at points with no wheel, vs printed n° 24"));
+        e.push(formula_entry(
+            "24",
+            &format!("equation ({k}), wheel of mass 0"),
+            "n° 24 (p), (n), (s) with mu1 = A1 = B1 = C1 = 0",
+            &light,
+            |p| derived_eq(k, p),
+            |p| out(p, &m),
+            Verdict::DerivationDiffers,
+            "rider + wheel - weight work, at points with no wheel, vs printed n° 24",
+        ));
         let merged = |p: &Point| {
             let mut q = p.clone();
             for (x, y) in [("A", "A1"), ("B", "B1"), ("C", "C1")] {
@@ -273,9 +317,27 @@ fn formulas() -> Vec<Entry> {
         };
         e.push(formula_entry("24", &format!("equation ({k}), letters merged"), "n° 24 read with A + A1, B + B1, C + C1 for A, B, C", &all, |p| derived_eq(k, p), merged, Verdict::DerivationDiffers, "the memoir merges each rider letter with the wheel's (A1 << A); no substitution of letters reproduces the wheel's mu1 R and B1 terms (weight mu1 R g, B1 s n cos in (p), B1 + mu1 R^2 for 2 B1 in (s)): a declared approximation, not an algebra slip"));
     }
-    e.push(formula_entry("29", "(E) steady state", "(B - C) n^2 sin cos + mu R z s n cos + mu g z sin = 0", &light, |p| out(p, "equilibrium"), |p| out(p, "memoir_equilibrium"), Verdict::DerivationDiffers, "generated -(p) at p = p' = n' = s' = 0 (no wheel) vs printed (E)"));
+    e.push(formula_entry(
+        "29",
+        "(E) steady state",
+        "(B - C) n^2 sin cos + mu R z s n cos + mu g z sin = 0",
+        &light,
+        |p| out(p, "equilibrium"),
+        |p| out(p, "memoir_equilibrium"),
+        Verdict::DerivationDiffers,
+        "generated -(p) at p = p' = n' = s' = 0 (no wheel) vs printed (E)",
+    ));
     e.push(formula_entry("30", "D complete", "-(Rns + z n^2 sin + z(p^2 sin - p' cos)) / (g + z(p^2 cos + p' sin))", &all, |p| out(p, "skid_full"), |p| out(p, "memoir_skid_full"), Verdict::MemoirError, "derived D = J inertia force / normal reaction, the reaction being mu(g + (z cos)'') = mu(g - z(p^2 cos + p' sin)): the printed denominator has + where the mechanics gives -, and n° 31 itself says the term z p^2 cos of the denominator increases D, which only the - sign does; numerators agree"));
-    e.push(formula_entry("30", "(D) steady", "-(Rns + z n^2 sin)/g", &all, |p| out(p, "skid"), |p| out(p, "memoir_skid"), Verdict::DerivationDiffers, "generated steady D vs printed"));
+    e.push(formula_entry(
+        "30",
+        "(D) steady",
+        "-(Rns + z n^2 sin)/g",
+        &all,
+        |p| out(p, "skid"),
+        |p| out(p, "memoir_skid"),
+        Verdict::DerivationDiffers,
+        "generated steady D vs printed",
+    ));
     let mut norm = Vec::new();
     {
         let mut rng = Rng(SEED ^ 1);
@@ -291,10 +353,29 @@ fn formulas() -> Vec<Entry> {
         ("32", "equilibrium_n32", "memoir_equilibrium_n32", "(h/R) n^2 sin + s n + tan = 0"),
         ("32", "skid_n32", "memoir_skid_n32", "D = -n s - (h/R) n^2 sin"),
         ("39", "stability_n39", "memoir_stability_n39", "(S1) s n sin + (h/R) n^2 - cos > 0"),
-        ("40", "stability_n40", "memoir_stability_n40", "(S) (h/R) n^2 + (1 + (h/R) cos^2) s n sin + s^2 cos^2 - cos > 0"),
-        ("41", "trinomial_n41", "memoir_trinomial_n41", "S(n^2) = (h/R) cos^2 n^4 - (1/cos - (h/R) sin^2 cos) n^2 + sin^2"),
+        (
+            "40",
+            "stability_n40",
+            "memoir_stability_n40",
+            "(S) (h/R) n^2 + (1 + (h/R) cos^2) s n sin + s^2 cos^2 - cos > 0",
+        ),
+        (
+            "41",
+            "trinomial_n41",
+            "memoir_trinomial_n41",
+            "S(n^2) = (h/R) cos^2 n^4 - (1/cos - (h/R) sin^2 cos) n^2 + sin^2",
+        ),
     ] {
-        e.push(formula_entry(sec, d, printed, &norm, |p| out(p, d), |p| out(p, m), Verdict::DerivationDiffers, "generated normalised form (g/R = 1) vs printed"));
+        e.push(formula_entry(
+            sec,
+            d,
+            printed,
+            &norm,
+            |p| out(p, d),
+            |p| out(p, m),
+            Verdict::DerivationDiffers,
+            "generated normalised form (g/R = 1) vs printed",
+        ));
     }
     // n° 78 at θ = 0, n = 0 with a hoop wheel.
     let straight: Vec<Point> = all
@@ -321,7 +402,19 @@ fn numbers() -> Vec<Entry> {
     let zc = 0.98;
     let g = 9.81;
     let d = |p: f64| {
-        out(&BTreeMap::from([("R", 0.5), ("g", g), ("z", zc), ("theta", 0.0), ("p", p), ("dp", 0.0), ("n", -0.5), ("s", 2.0)]), "skid_full")
+        out(
+            &BTreeMap::from([
+                ("R", 0.5),
+                ("g", g),
+                ("z", zc),
+                ("theta", 0.0),
+                ("p", p),
+                ("dp", 0.0),
+                ("n", -0.5),
+                ("s", 2.0),
+            ]),
+            "skid_full",
+        )
     };
     let eps = 1e-3;
     let coeff = (d(eps) / d(0.0) - 1.0) / (eps * eps);
@@ -329,18 +422,52 @@ fn numbers() -> Vec<Entry> {
     e.push(number("31", "p = 1 rad/s in degrees per second", 57.0, 0, 1f64.to_degrees(), "180/pi"));
     // n° 32 table.
     let table: &[(f64, &str, f64, i32)] = &[
-        (10.0, "D", 0.177, 3), (10.0, "n0", -0.637, 3), (10.0, "s0", 0.556, 3),
-        (10.0, "0.1", 1.81, 2), (10.0, "0.3", 0.721, 3), (10.0, "0.5", 0.571, 3), (10.0, "1", 0.612, 3), (10.0, "1.5", 0.770, 3), (10.0, "2", 0.958, 3),
-        (11.5, "n0", -0.639, 3), (11.5, "s0", 0.639, 3),
-        (16.0, "D", 0.287, 3), (16.0, "0.674", 0.890, 3),
-        (20.0, "D", 0.354, 3), (20.0, "n0", -0.652, 3), (20.0, "s0", 1.116, 3),
-        (20.0, "0.1", 3.74, 2), (20.0, "0.3", 1.470, 3), (20.0, "0.5", 1.155, 3), (20.0, "1", 1.219, 3), (20.0, "1.5", 1.526, 3), (20.0, "2", 1.892, 3),
-        (30.0, "D", 0.578, 3), (30.0, "n0", -0.679, 3), (30.0, "s0", 1.70, 2),
-        (30.0, "0.1", 5.90, 2), (30.0, "0.3", 2.301, 3), (30.0, "0.5", 1.781, 3), (30.0, "1", 1.828, 3), (30.0, "1.5", 2.260, 3), (30.0, "2", 2.789, 3),
-        (40.0, "D", 0.839, 3), (40.0, "n0", -0.723, 3), (40.0, "s0", 2.31, 2),
-        (40.0, "0.3", 3.281, 3), (40.0, "0.5", 2.483, 3), (40.0, "1", 2.45, 2), (40.0, "1.5", 2.975, 3), (40.0, "2", 3.64, 2),
-        (50.0, "D", 1.192, 3), (50.0, "n0", -0.789, 3), (50.0, "s0", 3.02, 2),
-        (50.0, "0.3", 4.55, 2), (50.0, "0.5", 3.344, 3), (50.0, "1", 3.11, 2), (50.0, "1.5", 3.675, 3),
+        (10.0, "D", 0.177, 3),
+        (10.0, "n0", -0.637, 3),
+        (10.0, "s0", 0.556, 3),
+        (10.0, "0.1", 1.81, 2),
+        (10.0, "0.3", 0.721, 3),
+        (10.0, "0.5", 0.571, 3),
+        (10.0, "1", 0.612, 3),
+        (10.0, "1.5", 0.770, 3),
+        (10.0, "2", 0.958, 3),
+        (11.5, "n0", -0.639, 3),
+        (11.5, "s0", 0.639, 3),
+        (16.0, "D", 0.287, 3),
+        (16.0, "0.674", 0.890, 3),
+        (20.0, "D", 0.354, 3),
+        (20.0, "n0", -0.652, 3),
+        (20.0, "s0", 1.116, 3),
+        (20.0, "0.1", 3.74, 2),
+        (20.0, "0.3", 1.470, 3),
+        (20.0, "0.5", 1.155, 3),
+        (20.0, "1", 1.219, 3),
+        (20.0, "1.5", 1.526, 3),
+        (20.0, "2", 1.892, 3),
+        (30.0, "D", 0.578, 3),
+        (30.0, "n0", -0.679, 3),
+        (30.0, "s0", 1.70, 2),
+        (30.0, "0.1", 5.90, 2),
+        (30.0, "0.3", 2.301, 3),
+        (30.0, "0.5", 1.781, 3),
+        (30.0, "1", 1.828, 3),
+        (30.0, "1.5", 2.260, 3),
+        (30.0, "2", 2.789, 3),
+        (40.0, "D", 0.839, 3),
+        (40.0, "n0", -0.723, 3),
+        (40.0, "s0", 2.31, 2),
+        (40.0, "0.3", 3.281, 3),
+        (40.0, "0.5", 2.483, 3),
+        (40.0, "1", 2.45, 2),
+        (40.0, "1.5", 2.975, 3),
+        (40.0, "2", 3.64, 2),
+        (50.0, "D", 1.192, 3),
+        (50.0, "n0", -0.789, 3),
+        (50.0, "s0", 3.02, 2),
+        (50.0, "0.3", 4.55, 2),
+        (50.0, "0.5", 3.344, 3),
+        (50.0, "1", 3.11, 2),
+        (50.0, "1.5", 3.675, 3),
     ];
     let point_i = bisect(
         |th| {
@@ -355,7 +482,11 @@ fn numbers() -> Vec<Entry> {
         let th = if th_printed == 11.5 { point_i } else { th_printed };
         let (n0, s0) = minimum_on_e(th);
         let (q, v, note) = match col {
-            "D" => ("D", out(&n32(th, s0, n0), "skid_n32"), "generated (D) of n° 32 at a steady state on (E) (it reduces to tan(theta))"),
+            "D" => (
+                "D",
+                out(&n32(th, s0, n0), "skid_n32"),
+                "generated (D) of n° 32 at a steady state on (E) (it reduces to tan(theta))",
+            ),
             "n0" => ("n0", n0, "n < 0 minimising s on the generated (E) (golden section)"),
             "s0" => ("s0", s0, "the minimum of s on the generated (E)"),
             _ => {
@@ -363,13 +494,18 @@ fn numbers() -> Vec<Entry> {
                 ("s", s_on_e(th, n), "s on the generated (E) at this n (the table prints |n|); the OCR lost the header of the column n = 2 and the 0.890 of the row 16 is s at n = -0.674")
             }
         };
-        let quantity = if q == "s" { format!("table n° 32, theta = {th_printed}°, s at n = -{col}") } else { format!("table n° 32, theta = {th_printed}°, {q}") };
+        let quantity = if q == "s" {
+            format!("table n° 32, theta = {th_printed}°, s at n = -{col}")
+        } else {
+            format!("table n° 32, theta = {th_printed}°, {q}")
+        };
         let mut entry = number("32", &quantity, printed, dec, v, note);
         if th_printed == 11.5 {
             entry.note = format!("{note}; evaluated at point I, theta = {:.4}° (the row's printed 11.5 is that angle rounded)", point_i);
         }
         if th == 20.0 && col == "D" {
-            entry.verdict = if entry.verdict == Verdict::Agrees { Verdict::Agrees } else { Verdict::Ocr };
+            entry.verdict =
+                if entry.verdict == Verdict::Agrees { Verdict::Agrees } else { Verdict::Ocr };
             entry.note = "D = tan 20° = 0.364: the printed 0.354 is one misread digit (the OCR or the print), the row's other values are right".into();
         }
         e.push(entry);
@@ -384,33 +520,113 @@ fn numbers() -> Vec<Entry> {
         note: "derived s0 n0 / tan(theta) at theta = 20° is -2: s0 = -(2/n0) tan(theta) (n0 < 0, s0 > 0 in the table); n° 41 prints it with the minus sign".into(),
     });
     // (N), asymptote, point I.
-    let coeff_n = |th: f64| out(&n32(th, 1.0, -1.0), "equilibrium_n32") - out(&n32(th, 0.0, 0.0), "equilibrium_n32");
+    let coeff_n = |th: f64| {
+        out(&n32(th, 1.0, -1.0), "equilibrium_n32") - out(&n32(th, 0.0, 0.0), "equilibrium_n32")
+    };
     let asym = bisect(coeff_n, 1.0, 89.0);
-    e.push(number("32", "asymptote of (N), degrees", 23.6, 1, asym, "theta where the s^2 coefficient of the generated (E) at n = -s vanishes: arcsin(1/2.5)"));
-    e.push(number("32", "point I, theta (degrees)", 11.5, 1, point_i, "theta where s0 = -n0 on the generated (E)"));
+    e.push(number(
+        "32",
+        "asymptote of (N), degrees",
+        23.6,
+        1,
+        asym,
+        "theta where the s^2 coefficient of the generated (E) at n = -s vanishes: arcsin(1/2.5)",
+    ));
+    e.push(number(
+        "32",
+        "point I, theta (degrees)",
+        11.5,
+        1,
+        point_i,
+        "theta where s0 = -n0 on the generated (E)",
+    ));
     e.push(number_as("32", "point I, theta as printed arcsin(1/2.5) (degrees)", (1.0 / H_OVER_R).asin().to_degrees(), point_i, Verdict::MemoirError, "the printed formula arcsin(1/2.5) is the asymptote's (23.6°); point I is at arcsin(1/(2 * 2.5)) = 11.54°, which is the printed number"));
-    e.push(number("32", "point I, s0", 0.639, 3, minimum_on_e(point_i).1, "s0 at the derived point I"));
-    e.push(number("32", "friction coefficient tan 23.6°", 0.437, 3, asym.to_radians().tan(), "tan of the derived asymptote"));
+    e.push(number(
+        "32",
+        "point I, s0",
+        0.639,
+        3,
+        minimum_on_e(point_i).1,
+        "s0 at the derived point I",
+    ));
+    e.push(number(
+        "32",
+        "friction coefficient tan 23.6°",
+        0.437,
+        3,
+        asym.to_radians().tan(),
+        "tan of the derived asymptote",
+    ));
     e.push(number("32", "20 km/h in m/s", 5.56, 2, 20.0 / 3.6, "20000/3600"));
     e.push(number("32", "s = sR / R for R = 0.5 m", 11.12, 2, 20.0 / 3.6 / 0.5, "rates in 1/s"));
     e.push(number("32", "limit radius s / sqrt(g/R)", 2.58, 2, 20.0 / 3.6 / 0.5 / (9.81f64 / 0.5).sqrt(), "11.11 / sqrt(9.81/0.5) = 2.51 with g = 9.81: the printed 2.58 (and the 2.6 of the summary) is a slide-rule slip"));
-    e.push(number("32", "stability limit circle s = 1 (theta = 0, n = 0)", 1.0, 0, bisect(|s| out(&n32(0.0, s, 0.0), "stability_n40"), 0.0, 5.0), "root in s of the generated (S) of n° 40 at theta = 0, n = 0"));
+    e.push(number(
+        "32",
+        "stability limit circle s = 1 (theta = 0, n = 0)",
+        1.0,
+        0,
+        bisect(|s| out(&n32(0.0, s, 0.0), "stability_n40"), 0.0, 5.0),
+        "root in s of the generated (S) of n° 40 at theta = 0, n = 0",
+    ));
     // n° 36.
     let (mu0, mu1, r) = (60.0, 5.0, 0.5);
     e.push(number("36", "mu1 R^2 (kg m^2)", 1.25, 2, mu1 * r * r, "5 kg x (0.5 m)^2"));
     let rc = 1.0 / (2.0 * std::f64::consts::PI);
     e.push(number("36", "rider cylinder radius r (m)", 0.16, 2, rc, "2 pi r = 1 m"));
-    e.push(number("36", "C0 = mu0 r^2 / 2 (kg m^2)", 0.77, 2, mu0 * rc * rc / 2.0, "with the exact r = 1/(2 pi); Carvallo's 0.77 comes from r rounded to 0.16 (0.768)"));
+    e.push(number(
+        "36",
+        "C0 = mu0 r^2 / 2 (kg m^2)",
+        0.77,
+        2,
+        mu0 * rc * rc / 2.0,
+        "with the exact r = 1/(2 pi); Carvallo's 0.77 comes from r rounded to 0.16 (0.768)",
+    ));
     e.push(number("36", "C1 = mu1 R^2 / 2 (kg m^2)", 0.625, 3, mu1 * r * r / 2.0, "thin hoop"));
-    e.push(number("36", "C = C0 + C1 (kg m^2)", 1.40, 2, mu0 * rc * rc / 2.0 + mu1 * r * r / 2.0, "exact r; with Carvallo's 0.77 it is 1.395"));
+    e.push(number(
+        "36",
+        "C = C0 + C1 (kg m^2)",
+        1.40,
+        2,
+        mu0 * rc * rc / 2.0 + mu1 * r * r / 2.0,
+        "exact r; with Carvallo's 0.77 it is 1.395",
+    ));
     let straight = |c: f64, b1: f64| {
-        let p = |s: f64| BTreeMap::from([("R", r), ("g", 9.81), ("mu", mu0), ("z", 1.0), ("A", 100.0), ("B", 100.0), ("C", c), ("mu1", mu1), ("B1", b1), ("theta", 0.0), ("n", 0.0), ("s", s)]);
+        let p = |s: f64| {
+            BTreeMap::from([
+                ("R", r),
+                ("g", 9.81),
+                ("mu", mu0),
+                ("z", 1.0),
+                ("A", 100.0),
+                ("B", 100.0),
+                ("C", c),
+                ("mu1", mu1),
+                ("B1", b1),
+                ("theta", 0.0),
+                ("n", 0.0),
+                ("s", s),
+            ])
+        };
         bisect(|s| out(&p(s), "stability_simplified"), 0.0, 100.0) / (9.81f64 / r).sqrt()
     };
     e.push(number("36", "straight running threshold s (units sqrt(g/R)), C = 1.40", 1.06, 2, straight(1.40, 2.0 * mu1 * r * r), "root in s of the generated stability of the simplified model (n° 33) at theta = 0, n = 0 with B1 = 2 mu1 R^2 and Carvallo's C = 1.40: s^2 = C/(mu1 R^2)"));
-    e.push(number("36", "infinitely light rider, threshold s^2", 0.5, 2, straight(mu1 * r * r / 2.0, 2.0 * mu1 * r * r).powi(2), "C = C1 = mu1 R^2/2: the hoop's s^2 > 1/2"));
+    e.push(number(
+        "36",
+        "infinitely light rider, threshold s^2",
+        0.5,
+        2,
+        straight(mu1 * r * r / 2.0, 2.0 * mu1 * r * r).powi(2),
+        "C = C1 = mu1 R^2/2: the hoop's s^2 > 1/2",
+    ));
     // n° 39 table.
-    for (th, n_pr, s_pr, n_dec) in [(0.0, 0.03, 0.00, 2), (10.0, 0.65, 0.55, 2), (20.0, 0.69, 1.12, 2), (30.0, 0.78, 1.72, 2), (40.0, 0.94, 2.41, 2), (50.0, 1.50, 3.68, 2)] {
+    for (th, n_pr, s_pr, n_dec) in [
+        (0.0, 0.03, 0.00, 2),
+        (10.0, 0.65, 0.55, 2),
+        (20.0, 0.69, 1.12, 2),
+        (30.0, 0.78, 1.72, 2),
+        (40.0, 0.94, 2.41, 2),
+        (50.0, 1.50, 3.68, 2),
+    ] {
         let f = |n: f64| out(&n32(th, s_on_e(th, n), n), "stability_n39");
         let n_lim = bisect(f, -10.0, -0.05);
         let s_lim = s_on_e(th, n_lim);
@@ -420,30 +636,82 @@ fn numbers() -> Vec<Entry> {
             en.note = "0.63 = sqrt(R/h) read 0.03 by the OCR".into();
         }
         if th == 50.0 {
-            en.note = "1/((h/R) cos^3 50°) = 1.506 is n^2: Carvallo printed n^2 for n (n = 1.227)".into();
+            en.note =
+                "1/((h/R) cos^3 50°) = 1.506 is n^2: Carvallo printed n^2 for n (n = 1.227)".into();
         }
         e.push(en);
-        let mut es = number("39", &format!("table n° 39, theta = {th}°, s"), s_pr, 2, s_lim, "s on the generated (E) at the limit n");
+        let mut es = number(
+            "39",
+            &format!("table n° 39, theta = {th}°, s"),
+            s_pr,
+            2,
+            s_lim,
+            "s on the generated (E) at the limit n",
+        );
         if th == 50.0 {
             es.note = "with his n = 1.50 instead of 1.227 the (E) gives 3.67: the slip of the n row propagates".into();
         }
         e.push(es);
     }
     // n° 41.
-    for (th, pr) in [(0.0, 1.000), (10.0, 0.403), (20.0, -0.225), (30.0, -0.757), (40.0, -1.054), (50.0, -0.874), (60.0, -0.308), (70.0, 1.149)] {
-        e.push(number("41", &format!("first member of n° 41 at theta = {th}°"), pr, 3, first_member_41(th), "-b - 2 sqrt(ac) from the coefficients of the generated trinomial S(n^2)"));
+    for (th, pr) in [
+        (0.0, 1.000),
+        (10.0, 0.403),
+        (20.0, -0.225),
+        (30.0, -0.757),
+        (40.0, -1.054),
+        (50.0, -0.874),
+        (60.0, -0.308),
+        (70.0, 1.149),
+    ] {
+        e.push(number(
+            "41",
+            &format!("first member of n° 41 at theta = {th}°"),
+            pr,
+            3,
+            first_member_41(th),
+            "-b - 2 sqrt(ac) from the coefficients of the generated trinomial S(n^2)",
+        ));
     }
     let r1 = bisect(first_member_41, 5.0, 30.0);
     let r2 = bisect(first_member_41, 50.0, 70.0);
-    e.push(number("41", "first zero of the first member (degrees)", 16.0, 1, r1, "bisection on the generated trinomial's first member"));
+    e.push(number(
+        "41",
+        "first zero of the first member (degrees)",
+        16.0,
+        1,
+        r1,
+        "bisection on the generated trinomial's first member",
+    ));
     e.push(number("41", "second zero of the first member (degrees)", 62.7, 1, r2, "bisection"));
     let (a, b, _) = trinomial(r1);
     let n_j = -(-b / (2.0 * a)).sqrt();
     e.push(number("41", "junction point n", -0.425, 3, n_j, "double root of the generated S(n^2) at the derived first zero; Carvallo's -0.425 is the value at his 16.0°"));
-    e.push(number("41", "junction point s", 0.97, 2, s_on_e(r1, n_j), "s on the generated (E) at the junction"));
-    let contact = bisect(|th| { let (n0, s0) = minimum_on_e(th); out(&n32(th, s0, n0), "stability_n40") }, 30.0, 80.0);
+    e.push(number(
+        "41",
+        "junction point s",
+        0.97,
+        2,
+        s_on_e(r1, n_j),
+        "s on the generated (E) at the junction",
+    ));
+    let contact = bisect(
+        |th| {
+            let (n0, s0) = minimum_on_e(th);
+            out(&n32(th, s0, n0), "stability_n40")
+        },
+        30.0,
+        80.0,
+    );
     e.push(number("41", "contact of (S) with (E) (degrees)", 63.5, 1, contact, "generated (S) of n° 40 at the minimum point of the generated (E); exactly arccos(1/sqrt(2 h/R)) = 63.43°"));
-    e.push(number("41", "theta = 0 limit, |n| = sqrt(R/h)", (1.0 / H_OVER_R).sqrt(), 3, -bisect(|n| out(&n32(0.0, 0.0, n), "stability_n40"), -5.0, -1e-3), "root of the generated (S) at theta = 0, s = 0"));
+    e.push(number(
+        "41",
+        "theta = 0 limit, |n| = sqrt(R/h)",
+        (1.0 / H_OVER_R).sqrt(),
+        3,
+        -bisect(|n| out(&n32(0.0, 0.0, n), "stability_n40"), -5.0, -1e-3),
+        "root of the generated (S) at theta = 0, s = 0",
+    ));
     e
 }
 
@@ -485,10 +753,16 @@ fn checks() -> Vec<Entry> {
                 section: c.section.clone(),
                 quantity: format!("unicycle check {}", c.id),
                 memoir: Memoir::Formula(c.statement.clone()),
-                derived: Derived::Numbers(BTreeMap::from([("holds".to_string(), if c.holds { 1.0 } else { 0.0 })])),
+                derived: Derived::Numbers(BTreeMap::from([(
+                    "holds".to_string(),
+                    if c.holds { 1.0 } else { 0.0 },
+                )])),
                 rel_diff: None,
                 verdict,
-                note: format!("symbolic check at regen: {} ({detail}){why}", if c.holds { "holds" } else { "does not hold" }),
+                note: format!(
+                    "symbolic check at regen: {} ({detail}){why}",
+                    if c.holds { "holds" } else { "does not hold" }
+                ),
             }
         })
         .collect()

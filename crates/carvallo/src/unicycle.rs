@@ -124,7 +124,12 @@ impl Unicycle {
     /// cyclically), reported on the moment that breaks it; the wheel must be of revolution about
     /// its axis, $A_1 = C_1 + \mu_1R^2$ (as the hoop of n° 7), which the derivation's energy
     /// conservation needs.
-    pub fn new(radius: f64, g: f64, rider: Rider, wheel: Wheel) -> Result<Unicycle, ParameterError> {
+    pub fn new(
+        radius: f64,
+        g: f64,
+        rider: Rider,
+        wheel: Wheel,
+    ) -> Result<Unicycle, ParameterError> {
         ParameterError::check_positive("radius", radius)?;
         ParameterError::check_positive("g", g)?;
         ParameterError::check_positive("rider.mass", rider.mass)?;

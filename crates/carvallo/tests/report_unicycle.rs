@@ -57,7 +57,9 @@ fn verdicts_are_the_expected_ones() {
     for e in &entries {
         let key = (e.section.as_str(), e.quantity.as_str());
         match findings.iter().find(|((s, q), _)| (*s, *q) == key) {
-            Some((_, v)) => assert_eq!(e.verdict, *v, "n° {} {}: {}", e.section, e.quantity, e.note),
+            Some((_, v)) => {
+                assert_eq!(e.verdict, *v, "n° {} {}: {}", e.section, e.quantity, e.note)
+            }
             None => assert!(
                 matches!(e.verdict, Verdict::Agrees | Verdict::Rounding),
                 "n° {} {} is {} ({})",
@@ -68,13 +70,22 @@ fn verdicts_are_the_expected_ones() {
             ),
         }
         if let (Some(rel), Memoir::Formula(_)) = (e.rel_diff, &e.memoir) {
-            assert_eq!(e.verdict == Verdict::Agrees, rel <= AGREEMENT_TOLERANCE, "n° {} {}", e.section, e.quantity);
+            assert_eq!(
+                e.verdict == Verdict::Agrees,
+                rel <= AGREEMENT_TOLERANCE,
+                "n° {} {}",
+                e.section,
+                e.quantity
+            );
         }
     }
     for (s, q) in findings.keys() {
         assert!(entries.iter().any(|e| e.section == *s && e.quantity == *q), "no entry n° {s} {q}");
     }
-    for section in ["21", "23", "24", "29", "30", "31", "32", "33", "34", "35", "36", "39", "40", "41", "74", "78"] {
+    for section in [
+        "21", "23", "24", "29", "30", "31", "32", "33", "34", "35", "36", "39", "40", "41", "74",
+        "78",
+    ] {
         assert!(entries.iter().any(|e| e.section == section), "no entry for n° {section}");
     }
 }
@@ -118,4 +129,3 @@ fn text_report_snapshot() {
         insta::assert_snapshot!("unicycle_report_text", text);
     });
 }
-

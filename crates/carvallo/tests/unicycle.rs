@@ -13,7 +13,11 @@ fn invalid_parameters_are_named() {
     let wheel = Wheel::hoop(5.0, 0.5);
     assert_eq!(
         Unicycle::new(-0.5, 9.81, rider(), wheel).unwrap_err(),
-        ParameterError::InvalidParameter { name: "radius", value: -0.5, reason: "must be positive" }
+        ParameterError::InvalidParameter {
+            name: "radius",
+            value: -0.5,
+            reason: "must be positive"
+        }
     );
     let bad = Rider { c: 300.0, ..rider() };
     assert_eq!(
