@@ -618,6 +618,30 @@ fn numbers() -> Vec<Entry> {
         straight(mu1 * r * r / 2.0, 2.0 * mu1 * r * r).powi(2),
         "C = C1 = mu1 R^2/2: the hoop's s^2 > 1/2",
     ));
+    let full = crate::unicycle::Unicycle::new(
+        r,
+        9.81,
+        crate::unicycle::Rider {
+            mass: mu0,
+            height: H_OVER_R * r,
+            a: 100.0,
+            b: 100.0,
+            c: 0.77,
+            l: 0.0,
+        },
+        crate::unicycle::Wheel::hoop(mu1, r),
+    )
+    .ok()
+    .and_then(|u| u.straight_running_threshold().map(|s| s / u.rate_unit()))
+    .unwrap_or(f64::NAN);
+    e.push(number_as(
+        "36",
+        "straight running threshold s, full model (h = 2.5 R, rider C0 = 0.77)",
+        1.06,
+        full,
+        Verdict::DerivationDiffers,
+        "the generated full model (rider and hoop wheel kept apart, L = 0) at theta = 0, n = 0: s^2 = (mu h + mu1 R) g (C0 + C1) / ((mu R h + B1)(B1 - mu1 R^2)) in units g/R; the memoir's s^2 > C/(mu1 R^2) drops the wheel's weight mu1 R and its B1 in the s n coefficient of (p) (its merge of letters), and its printed first member reads mu0, mu1 (OCR) for the rider's mu",
+    ));
     // n° 39 table.
     for (th, n_pr, s_pr, n_dec) in [
         (0.0, 0.03, 0.00, 2),

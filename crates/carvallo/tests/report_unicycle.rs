@@ -35,6 +35,10 @@ fn findings() -> BTreeMap<(&'static str, &'static str), Verdict> {
         (("32", "limit radius s / sqrt(g/R)"), MemoirError),
         (("36", "C0 = mu0 r^2 / 2 (kg m^2)"), MemoirError),
         (("36", "C = C0 + C1 (kg m^2)"), MemoirError),
+        (
+            ("36", "straight running threshold s, full model (h = 2.5 R, rider C0 = 0.77)"),
+            DerivationDiffers,
+        ),
         (("39", "table n° 39, theta = 0°, |n| limit"), Ocr),
         (("39", "table n° 39, theta = 50°, |n| limit"), MemoirError),
         (("39", "table n° 39, theta = 50°, s"), MemoirError),
