@@ -43,7 +43,7 @@ pub const QD: [&str; 2] = ["phid", "deltad"];
 /// Second derivatives of [`Q`].
 pub const QDD: [&str; 2] = ["phidd", "deltadd"];
 
-fn p(name: &str) -> Atom {
+pub(super) fn p(name: &str) -> Atom {
     var(name)
 }
 
@@ -76,27 +76,45 @@ fn dt3(a: &V3) -> V3 {
 /// The steer rotation $R_y(\lambda) R_z(\delta) R_y(-\lambda)$ with the given sine and cosine
 /// of δ.
 fn steer(sd: &Atom, cd: &Atom, n: u32) -> M3 {
-    let (sl, cl) = (p(SIN_LAMBDA), p(COS_LAMBDA));
+    steer_with(&p, sd, cd, n)
+}
+
+/// [`steer`] with the parameters (here the stand-ins of $\sin\lambda$, $\cos\lambda$) given by
+/// `prm`.
+pub(super) fn steer_with(prm: &dyn Fn(&str) -> Atom, sd: &Atom, cd: &Atom, n: u32) -> M3 {
+    let (sl, cl) = (prm(SIN_LAMBDA), prm(COS_LAMBDA));
     let a = mm(&rot_y(&sl, &cl), &rot_z(sd, cd), n);
     mm(&a, &rot_y(&(-&sl), &cl), n)
 }
 
 /// Positions, relative to the rear contact P, of the rear wheel centre, B's and H's mass
 /// centres and the front wheel centre, and the orientations of the wheel planes and frames.
-struct Geometry {
-    c_r: V3,
-    b: V3,
-    h: V3,
-    c_f: V3,
+pub(super) struct Geometry {
+    pub(super) c_r: V3,
+    pub(super) b: V3,
+    pub(super) h: V3,
+    pub(super) c_f: V3,
     /// Rear wheel plane (no spin) $R_z R_x$.
-    r_plane: M3,
+    pub(super) r_plane: M3,
     /// Rear frame.
-    r_b: M3,
+    pub(super) r_b: M3,
     /// Front frame (also the front wheel plane).
-    r_h: M3,
+    pub(super) r_h: M3,
 }
 
 fn geometry(r_plane: M3, r_b: M3, steer_m: &M3, n: u32) -> Geometry {
+    geometry_with(&p, r_plane, r_b, steer_m, n)
+}
+
+/// [`geometry`] with the parameters given by `prm`.
+pub(super) fn geometry_with(
+    prm: &dyn Fn(&str) -> Atom,
+    r_plane: M3,
+    r_b: M3,
+    steer_m: &M3,
+    n: u32,
+) -> Geometry {
+    let p = prm;
     let z = Atom::num(0);
     let (w, c, rr, rf) = (p("w"), p("c"), p("rR"), p("rF"));
     let c_r = mv(&r_plane, &v3(z.clone(), z.clone(), -&rr), n);
