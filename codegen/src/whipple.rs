@@ -19,7 +19,10 @@
 //!
 //! [`carvallo`] derives the inertial part of the same equations a second way, by Carvallo's
 //! modified Lagrange equations (memoir n° 72) with the kinematics at second order, and the two
-//! are checked to agree exactly. The nonlinear equations are not derived yet.
+//! are checked to agree exactly (at a fixed rational parameter point, in exact arithmetic). A
+//! finding recorded on the way: the plain Lagrange equation (no correction) is already right for
+//! the lean at the linear level, but not for the steer. The nonlinear equations are not derived
+//! yet.
 
 pub mod carvallo;
 pub mod linear;
@@ -161,6 +164,15 @@ pub fn matrices(checks: &mut Vec<Check>) -> Matrices {
             format!("difference: {}", reduce(&diff)),
         ));
     }
+    for r in 0..2 {
+        let diff = (&cf.plain[r] - at_point(&dy.inertia_forces[r])).expand();
+        checks.push(check(
+            &format!("plain_lagrange_{}", linear::Q[r]),
+            &format!("the plain Lagrange expression d/dt dT*/dq' - dT*/dq of {} (no correction for the constraints) equals Kane's generalised inertia force at the rational point (informative: not required to hold)", linear::Q[r]),
+            vanishes(&diff),
+            format!("plain minus Kane: {diff}"),
+        ));
+    }
     let red = |m: &[[Atom; 2]; 2]| {
         [[reduce(&m[0][0]), reduce(&m[0][1])], [reduce(&m[1][0]), reduce(&m[1][1])]]
     };
@@ -297,7 +309,7 @@ pub fn derive() -> Result<Derivation> {
         });
     }
     ensure!(
-        checks.iter().all(|c| c.holds),
+        checks.iter().all(|c| c.holds || c.id.starts_with("plain_lagrange")),
         "whipple checks failed: {:?}",
         checks.iter().filter(|c| !c.holds).map(|c| &c.id).collect::<Vec<_>>()
     );

@@ -36,6 +36,9 @@ pub struct CarvalloForm {
     pub front_slip: V3,
     /// The inertial parts of Carvallo's equations for φ and δ at first order (ε set to 1).
     pub equations: [Atom; 2],
+    /// The plain Lagrange expressions $\frac{d}{dt}\partial T^*/\partial q' - \partial T^*/\partial q$
+    /// at first order, which ignore the constraints' history (for comparison).
+    pub plain: [Atom; 2],
 }
 
 /// Builds Carvallo's equations with the pitch $\theta_B = \varepsilon^2$ `pitch2`, the
@@ -155,9 +158,12 @@ pub fn carvallo_form(prm: &dyn Fn(&str) -> Atom, pitch2: &Atom) -> CarvalloForm 
     }
     let t_star = trunc(&t_star, n);
     let mut equations = [Atom::num(0), Atom::num(0)];
+    let mut plain = [Atom::num(0), Atom::num(0)];
     for (r, u) in super::linear::QD.iter().enumerate() {
         let momentum = partial(&t_star, u);
         let mut eq = ddt(&momentum);
+        let lag = &eq - partial(&t_star, super::linear::Q[r]);
+        plain[r] = coefficients(&at_psi0(&trunc(&lag, 1)), 1)[1].clone();
         for (mass, vg, omc, h) in &states {
             let pv = map3(vg, |c| partial(c, u));
             let pw = map3(omc, |c| partial(c, u));
@@ -171,5 +177,5 @@ pub fn carvallo_form(prm: &dyn Fn(&str) -> Atom, pitch2: &Atom) -> CarvalloForm 
         // through the comparison, since Kane's forces have no zeroth-order term).
         equations[r] = &equations[r] + &first[0];
     }
-    CarvalloForm { rear_slip, front_slip, equations }
+    CarvalloForm { rear_slip, front_slip, equations, plain }
 }

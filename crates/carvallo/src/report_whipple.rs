@@ -62,6 +62,14 @@ fn number_entry(quantity: String, published: f64, derived: f64, note: &str) -> E
     }
 }
 
+/// The expected outcome of a recorded check: every check must hold except
+/// `plain_lagrange_delta`, the finding that the plain Lagrange equation of the steer (without
+/// Carvallo's correction for the non-holonomic constraints) differs from the true one, while
+/// that of the lean happens to coincide at the linear level.
+fn expected_outcome(id: &str) -> bool {
+    id != "plain_lagrange_delta"
+}
+
 /// The benchmark entries, computed now.
 pub fn entries() -> Vec<Entry> {
     let w = Whipple::new(WhippleParams::benchmark());
@@ -129,8 +137,19 @@ pub fn entries() -> Vec<Entry> {
                         if ch.holds { 1.0 } else { 0.0 },
                     )])),
                     rel_diff: None,
-                    verdict: if ch.holds { Verdict::Agrees } else { Verdict::DerivationDiffers },
-                    note: ch.detail.chars().take(200).collect(),
+                    verdict: if ch.holds == expected_outcome(&ch.id) {
+                        Verdict::Agrees
+                    } else {
+                        Verdict::DerivationDiffers
+                    },
+                    note: if expected_outcome(&ch.id) {
+                        ch.detail.chars().take(200).collect()
+                    } else {
+                        format!(
+                            "expected not to hold (the steer equation needs Carvallo's correction); {}",
+                            ch.detail.chars().take(200).collect::<String>()
+                        )
+                    },
                 });
             }
         }
