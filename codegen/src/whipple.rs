@@ -272,6 +272,7 @@ pub fn char_poly(m: &Matrices) -> [Atom; 5] {
 }
 
 /// Derives the model's formulas and checks.
+#[allow(clippy::needless_range_loop)]
 pub fn derive() -> Result<Derivation> {
     let mut checks = Vec::new();
     let mats = matrices(&mut checks);

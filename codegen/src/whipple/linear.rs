@@ -16,8 +16,8 @@
 //! pitch, which the constraint makes of second order, drops out of the velocities; the yaw rate
 //! and the front wheel's spin perturbation follow from the front wheel's rolling without
 //! slipping; the equations for the independent speeds φ', δ' are Kane's
-//! $\sum_i m_i\,a_i\cdot\partial v_i/\partial u_r + \dot H_i\cdot\partial\omega_i/\partial u_r
-//! + \partial V/\partial q_r = T_r$ (the generalised inertia force is a product of first-order
+//! $\sum_i m_i\,a_i\cdot\partial v_i/\partial u_r + \dot H_i\cdot\partial\omega_i/\partial u_r +
+//! \partial V/\partial q_r = T_r$ (the generalised inertia force is a product of first-order
 //! accelerations and zeroth-order partial velocities, the inertia forces of the reference motion
 //! vanishing). Gravity enters through the potential energy $V(\varphi, \delta)$ at second order
 //! with the pitch eliminated by the constraint, so $g K_0$ is its Hessian.
