@@ -1,19 +1,25 @@
-//! The `carvallo` command line: prints the memoir concordance of the rolling hoop.
+//! The `carvallo` command line: the memoir concordance and the benchmark bicycle's stability.
 //!
 //! `carvallo report` prints the concordance as an aligned text table, `carvallo report --json`
 //! as a JSON array of objects with the keys `section`, `quantity`, `memoir`, `derived`,
-//! `rel_diff`, `verdict` and `note`. Arguments are parsed by hand (there are only a few); an
+//! `rel_diff`, `verdict` and `note`. `carvallo window` and `carvallo eig` (module [`whipple`])
+//! give the linearised Carvallo–Whipple bicycle's stable speed range and eigenvalues. Arguments are parsed by hand (there are only a few); an
 //! unknown argument is an error that names it, with exit code 2.
 
+use std::io::Write;
 use std::process::ExitCode;
 
 mod whipple;
 
 const HELP: &str = "\
-carvallo: E. Carvallo's rolling hoop (1897), re-derived and checked against the memoir
+carvallo: E. Carvallo's memoir (1897) on the hoop, unicycle and bicycle, re-derived and checked
 
 Usage:
     carvallo report [--json]    print the memoir concordance (text table, or JSON with --json)
+    carvallo window --model benchmark|FILE.toml [--json]
+                                stable speed range of the linearised Carvallo-Whipple bicycle
+    carvallo eig --model benchmark|FILE.toml --speed V [--json]
+                                eigenvalues of the linearised bicycle at speed V [m/s]
     carvallo --help             print this help
 
 Options:
@@ -40,7 +46,7 @@ enum UsageError {
 impl std::fmt::Display for UsageError {
     fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
         match self {
-            UsageError::Missing => write!(f, "missing command: expected `report` or `--help`"),
+            UsageError::Missing => write!(f, "missing command: expected `report`, `window`, `eig` or `--help`"),
             UsageError::Unknown(arg) => write!(f, "unknown argument `{arg}`"),
             UsageError::Repeated(arg) => write!(f, "argument `{arg}` given more than once"),
         }
@@ -74,17 +80,27 @@ fn parse(args: &[String]) -> Result<Command, UsageError> {
 
 fn run(command: Command) -> anyhow::Result<()> {
     match command {
-        Command::Help => print!("{HELP}"),
+        Command::Help => emit(HELP)?,
         Command::Report { json } => {
             let entries = carvallo::report::all_entries();
             if json {
-                println!("{}", serde_json::to_string_pretty(&entries)?);
+                emit(&format!("{}\n", serde_json::to_string_pretty(&entries)?))?;
             } else {
-                print!("{}", carvallo::report::render_text(&entries));
+                emit(&carvallo::report::render_text(&entries))?;
             }
         }
     }
     Ok(())
+}
+
+/// Writes `text` to standard output. A reader that stops early (`carvallo report | head`)
+/// closes the pipe; that ends the output quietly instead of panicking like `print!` would.
+pub(crate) fn emit(text: &str) -> std::io::Result<()> {
+    let mut out = std::io::stdout().lock();
+    match out.write_all(text.as_bytes()).and_then(|()| out.flush()) {
+        Err(e) if e.kind() == std::io::ErrorKind::BrokenPipe => Ok(()),
+        other => other,
+    }
 }
 
 fn main() -> ExitCode {

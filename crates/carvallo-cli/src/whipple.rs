@@ -135,7 +135,10 @@ pub fn dispatch(args: &[String]) -> Option<ExitCode> {
     let out = parse(args).and_then(|cmd| run(&cmd));
     Some(match out {
         Ok(text) => {
-            println!("{}", text.trim_end());
+            if let Err(err) = crate::emit(&format!("{}\n", text.trim_end())) {
+                eprintln!("error: cannot write the output: {err}");
+                return Some(ExitCode::FAILURE);
+            }
             ExitCode::SUCCESS
         }
         Err(err) => {
