@@ -324,6 +324,8 @@ pub fn entries() -> Vec<Entry> {
         fa,
         "s = sqrt(2/sqrt 5) from the generated (N) at sin(th) = 2/3",
     ));
+    out.extend(marche_entries());
+    out.extend(speed_entries());
     // n° 18: arc DH close to the circle s = 0.5.
     let arc: Vec<f64> = (0..=20)
         .filter_map(|k| {
@@ -348,6 +350,138 @@ pub fn entries() -> Vec<Entry> {
     out.extend(stick_entries());
     out.extend(check_entries());
     out
+}
+
+/// The roots n1, n2 of the generated normalised (E) of n° 12 at (θ, s), n2 the smaller in
+/// absolute value (both are negative for s > 0); `None` when they are not real. (E) is a
+/// quadratic in n with leading coefficient 1, so three evaluations fix it.
+fn e_roots(theta: f64, s: f64) -> Option<(f64, f64)> {
+    let e = |n: f64| crate::hoop::normalised::equilibrium(theta, s, n);
+    let c = e(0.0);
+    let a = 0.5 * (e(1.0) + e(-1.0)) - c;
+    let b = 0.5 * (e(1.0) - e(-1.0));
+    let disc = b * b - 4.0 * a * c;
+    if !(disc >= 0.0 && a.is_finite() && a != 0.0) {
+        return None;
+    }
+    let (lo, hi) = ((-b - disc.sqrt()) / (2.0 * a), (-b + disc.sqrt()) / (2.0 * a));
+    Some(if lo.abs() >= hi.abs() { (lo, hi) } else { (hi, lo) })
+}
+
+/// n° 17: the table of the orderings of s, -n1, -n2 by region of fig. 4 bis, and which root
+/// "marche" (|n| < s, ρ = Rs/|n| > R) or "pivote", checked on a grid of points of each region
+/// placed between the generated curves (ℰ) (`reality_s2`) and (N) (`curve_n_s2`).
+fn marche_entries() -> Vec<Entry> {
+    let theta_i = (2.0f64 / 3.0).asin().to_degrees();
+    // (region, printed ordering, θ range in degrees, s^2 from (ℰ)'s and (N)'s s^2 at a fraction)
+    type Place = fn(f64, f64, f64) -> f64;
+    let regions: [(&str, &str, (f64, f64), Place, fn(f64, f64, f64) -> bool, &str); 3] = [
+        (
+            "above (N)",
+            "-n2 < s < -n1",
+            (1.0, 80.0),
+            |_, n, f| n * (1.0 + 2.0 * f),
+            |s, n1, n2| -n2 < s && s < -n1,
+            "-n2 < s < -n1",
+        ),
+        (
+            "(N)-(ℰ), O to I",
+            "s < n2 < -n1",
+            (1.0, theta_i - 0.5),
+            |e, n, f| e + f * (n - e),
+            |s, n1, n2| s < -n2 && -n2 < -n1,
+            "s < -n2 < -n1",
+        ),
+        (
+            "(N)-(ℰ), beyond I",
+            "-n2 < -n1 < s",
+            (theta_i + 0.5, 80.0),
+            |e, n, f| e + f * (n - e),
+            |s, n1, n2| -n2 < -n1 && -n1 < s,
+            "-n2 < -n1 < s",
+        ),
+    ];
+    let mut out = Vec::new();
+    for (region, printed, (lo, hi), place, holds, derived_order) in regions {
+        let (mut points, mut ok, mut n1_marche, mut n2_marche) = (0usize, 0usize, 0usize, 0usize);
+        for i in 0..20 {
+            let theta = (lo + (hi - lo) * (i as f64 + 0.5) / 20.0).to_radians();
+            let args = [("theta", theta)];
+            let (e_s2, n_s2) = (hd::output("reality_s2", &args), hd::output("curve_n_s2", &args));
+            for k in 1..=5 {
+                let s = place(e_s2, n_s2, k as f64 / 6.0).sqrt();
+                let Some((n1, n2)) = e_roots(theta, s) else { continue };
+                points += 1;
+                ok += usize::from(holds(s, n1, n2));
+                n1_marche += usize::from(n1.abs() < s);
+                n2_marche += usize::from(n2.abs() < s);
+            }
+        }
+        let all = points == 100 && ok == points;
+        let literal_possible = printed == derived_order;
+        let verdict = match (all, literal_possible) {
+            (true, true) => Verdict::Agrees,
+            (true, false) => Verdict::Ocr,
+            (false, _) => Verdict::DerivationDiffers,
+        };
+        let mut note = format!("roots n1, n2 (|n2| < |n1|) of the generated normalised (E) at 20 x 5 points of the region, s^2 placed between the generated (ℰ) and (N) (above (N): up to three times (N)'s s^2), th in ({lo:.1}°, {hi:.1}°); derived ordering {derived_order}; a root marche when |n| < s (ρ = Rs/|n| > R), pivote otherwise");
+        if !literal_possible {
+            note.push_str("; the printed \"s < n2\" cannot hold since n2 < 0 (n° 12, footnote of n° 17): a minus sign lost (OCR; the printed literal contradicts the memoir's own footnote), the ordering with -n2 holds");
+        }
+        out.push(Entry {
+            section: "17".into(),
+            quantity: format!("marche/pivot: {region}"),
+            memoir: Memoir::Formula(printed.into()),
+            derived: Derived::Numbers(BTreeMap::from([
+                ("points".to_string(), points as f64),
+                ("ordering_holds".to_string(), ok as f64),
+                ("n1_marche".to_string(), n1_marche as f64),
+                ("n2_marche".to_string(), n2_marche as f64),
+            ])),
+            rel_diff: None,
+            verdict,
+            note,
+        });
+    }
+    out
+}
+
+/// n° 16 and 18: the walking speeds 2,27 m/s (pas gymnastique) and 1,50 m/s (pas accéléré)
+/// that the memoir quotes from military regulations, placed on the normalised diagram.
+fn speed_entries() -> Vec<Entry> {
+    let (r, g) = (0.5_f64, 9.81_f64);
+    let unit = (g * r).sqrt();
+    let s_min = hd::bisect(|s| crate::hoop::normalised::stability(0.0, s, 0.0), 0.1, 2.0)
+        .unwrap_or(f64::NAN);
+    let why = "the speed is quoted from military regulations, not derived: nothing in the memoir's mechanics fixes it (R = 0,50 m is only his example and g is not stated), so the number itself cannot be checked; what is checked is the claim the memoir draws from it";
+    let gym = 2.27 / unit;
+    let accel_threshold = s_min * unit;
+    vec![
+        Entry {
+            section: "16".into(),
+            quantity: "pas gymnastique 2,27 m/s vs circle s = 1".into(),
+            memoir: Memoir::Number(2.27),
+            derived: Derived::Numbers(BTreeMap::from([
+                ("s_at_R_0.5_g_9.81".to_string(), gym),
+                ("s_with_memoir_2.40".to_string(), 2.27 / 2.40),
+            ])),
+            rel_diff: None,
+            verdict: if (gym - 1.0).abs() <= 0.05 { Verdict::Agrees } else { Verdict::DerivationDiffers },
+            note: format!("{why} (\"la partie utilisée du diagramme ne sortira guère du cercle s = 1\"): s = V/sqrt(gR) at R = 0.5 m, g = 9.81; agrees when within 5 % of 1"),
+        },
+        Entry {
+            section: "18".into(),
+            quantity: "pas accéléré 1,50 m/s vs threshold sR".into(),
+            memoir: Memoir::Number(1.50),
+            derived: Derived::Numbers(BTreeMap::from([
+                ("threshold_sR_at_R_0.5_g_9.81".to_string(), accel_threshold),
+                ("s_of_1.50_at_R_0.5_g_9.81".to_string(), 1.50 / unit),
+            ])),
+            rel_diff: None,
+            verdict: if accel_threshold < 1.50 { Verdict::Agrees } else { Verdict::DerivationDiffers },
+            note: format!("{why} (the threshold sR >= 0.5 sqrt(gR) is \"un peu inférieure\" to it): threshold s from the root of the generated normalised (S) at th = 0, n = 0, times sqrt(gR); the memoir's 1,20 is 0.5 x his 2,40 (entry of n° 16)"),
+        },
+    ]
 }
 
 /// n° 19: the OCR's "cosh" and the sign argument, checked on the generated closed forms (6),
