@@ -739,6 +739,201 @@ fn numbers() -> Vec<Entry> {
     e
 }
 
+/// The residual of the (p) or (n) equation of n° 24 (`"p"` or `"n"`): the rider's and the
+/// wheel's sums of moments of the inertia forces from the generated `rider_*` and `wheel_*`,
+/// minus the weight's moment for (p). Equation (1) of n° 78 is this residual set to zero, with
+/// P and N its values at zero accelerations (p = θ').
+fn residual(point: &Point, eq: &str) -> f64 {
+    let v = eval(point);
+    let weight = if eq == "p" {
+        (point["mu"] * point["z"] + point["mu1"] * point["R"]) * point["g"] * point["theta"].sin()
+    } else {
+        0.0
+    };
+    v[format!("rider_{eq}").as_str()] + v[format!("wheel_{eq}").as_str()] - weight
+}
+
+/// `point` with `changes` applied.
+fn with(point: &Point, changes: &[(&'static str, f64)]) -> Point {
+    let mut q = point.clone();
+    for &(k, x) in changes {
+        q.insert(k, x);
+    }
+    q
+}
+
+/// Central difference of `f` in `var` at `point` with step `h`.
+fn diff(point: &Point, var: &'static str, h: f64, f: impl Fn(&Point) -> f64) -> f64 {
+    let x = point[var];
+    (f(&with(point, &[(var, x + h)])) - f(&with(point, &[(var, x - h)]))) / (2.0 * h)
+}
+
+/// Relative tolerance of the finite-difference derivatives (central differences, exact for the
+/// polynomial dependences in p, n, accelerations; O(h^2) ~ 1e-8 in θ).
+const FD_TOLERANCE: f64 = 1e-6;
+
+/// OCR garbles of n° 36, 40, 41 and 78, each with the derived object evaluated now.
+fn ocr_entries() -> Vec<Entry> {
+    let mut e = Vec::new();
+    // n° 78, second row of the characteristic determinant, at seeded steady-rate points (p = 0,
+    // zero accelerations; s held constant so the (s) equation drops out).
+    let (mut worst, mut dn_dtheta, mut dn_dn) = (0.0f64, 0.0f64, 0.0f64);
+    let mut a21_ratio = 0.0f64;
+    for base in points(false).iter().take(16) {
+        let pt = with(base, &[("p", 0.0), ("dp", 0.0), ("dn", 0.0), ("ds", 0.0)]);
+        let rp = |q: &Point| residual(q, "p");
+        let rn = |q: &Point| residual(q, "n");
+        let a11 = diff(&pt, "dp", 1.0, rp);
+        let a12 = diff(&pt, "dn", 1.0, rp);
+        let a21 = diff(&pt, "dp", 1.0, rn);
+        let a22 = diff(&pt, "dn", 1.0, rn);
+        let p_theta = diff(&pt, "theta", 1e-5, rp);
+        let p_n = diff(&pt, "n", 1e-3, rp);
+        let n_thetap = diff(&pt, "p", 1e-3, rn);
+        dn_dtheta = dn_dtheta.max(diff(&pt, "theta", 1e-5, rn).abs());
+        dn_dn = dn_dn.max(diff(&pt, "n", 1e-3, rn).abs());
+        a21_ratio = a21_ratio.max(rel_diff(a21, -pt["L"] * pt["theta"].cos()));
+        // det [[a11 λ² + P_θ, a12 λ + P_n], [a21 λ² + N_θ' λ + N_θ, a22 λ + N_n]] / λ
+        let c2 = a11 * a22 - a12 * a21;
+        let c1 = -a12 * n_thetap - p_n * a21;
+        let c0 = p_theta * a22 - p_n * n_thetap;
+        let v = eval(&pt);
+        worst = worst
+            .max(rel_diff(c2, v["char78_c2"]))
+            .max(rel_diff(c1, v["char78_c1"]))
+            .max(rel_diff(c0, v["char78_c0"]));
+    }
+    let ok = worst <= FD_TOLERANCE
+        && dn_dtheta <= FD_TOLERANCE
+        && dn_dn <= FD_TOLERANCE
+        && a21_ratio <= FD_TOLERANCE;
+    e.push(Entry {
+        section: "78".into(),
+        quantity: "characteristic determinant, second row".into(),
+        memoir: Memoir::Formula("-L lambda^2 + dN/dtheta lambda + dN/dtheta'".into()),
+        derived: Derived::Numbers(BTreeMap::from([
+            ("rel_c012".to_string(), worst),
+            ("dN_dth".to_string(), dn_dtheta),
+            ("dN_dn".to_string(), dn_dn),
+            ("rel_L_cos".to_string(), a21_ratio),
+            ("points".to_string(), 16.0),
+        ])),
+        rel_diff: None,
+        verdict: if ok { Verdict::Ocr } else { Verdict::DerivationDiffers },
+        note: format!("derived row: -L cos(theta) lambda^2 + dN/dtheta' lambda + dN/dtheta, with the coefficients taken by central differences (tolerance {FD_TOLERANCE:e}) of the generated rider_n + wheel_n (N = the (n) residual at zero accelerations, p = theta') at 16 seeded points with p = 0; the determinant expanded with that row, divided by lambda, reproduces the generated char78_c2, c1, c0; dN/dtheta and dN/dn vanish (N has theta' as factor) so the constant term of the row is 0 and lambda factors out, as the memoir says next; with the printed row (dN/dtheta' as constant term) lambda would not factor out and the memoir's own (1)' (L^2 cos^2 in the lambda^2 coefficient, L cos(theta)(dP/dn + dN/dtheta') for lambda) would not follow: the text's (1)' is the corrected row, so the printed row is a misreading (cos theta lost, the primes swapped), not the memoir's"),
+    });
+    // n° 78: dN/dp at theta = 0, n = 0 with the hoop wheel B1 = 2 mu1 R^2 (n° 4).
+    let base = with(
+        &points(false)[0],
+        &[("theta", 0.0), ("n", 0.0), ("p", 0.0), ("dp", 0.0), ("dn", 0.0), ("ds", 0.0)],
+    );
+    let (r, mu1, mu, s) = (base["R"], base["mu1"], base["mu"], base["s"]);
+    let hoop = with(&base, &[("B1", 2.0 * mu1 * r * r)]);
+    let dn_dp = diff(&hoop, "p", 1e-3, |q| residual(q, "n"));
+    let as_meant = mu1 * r * r * s;
+    let rel = rel_diff(dn_dp, as_meant);
+    let dn_dp_general = diff(&base, "p", 1e-3, |q| residual(q, "n"));
+    let general_rel = rel_diff(dn_dp_general, (base["B1"] - mu1 * r * r) * s);
+    e.push(Entry {
+        section: "78".into(),
+        quantity: "dN/dp at theta = 0, n = 0".into(),
+        memoir: Memoir::Formula("dN/dp = B1 - mu1 R^2 = +mu R^2 s".into()),
+        derived: Derived::Numbers(BTreeMap::from([
+            ("dN_dp".to_string(), dn_dp),
+            ("mu1R2s".to_string(), as_meant),
+            ("muR2s".to_string(), mu * r * r * s),
+            ("rel_B1".to_string(), general_rel),
+        ])),
+        rel_diff: None,
+        verdict: if rel <= FD_TOLERANCE && general_rel <= FD_TOLERANCE { Verdict::Ocr } else { Verdict::DerivationDiffers },
+        note: format!("central difference in p of the generated rider_n + wheel_n at theta = 0, n = 0, p = 0 (first seeded point, mu = {mu:.4} kg, mu1 = {mu1:.4} kg, R = {r:.4} m, s = {s:.4}/s): (B1 - mu1 R^2) s in general, and mu1 R^2 s with B1 = 2 mu1 R^2 (n° 4); the printed line lost the factor s after B1 - mu1 R^2 and the subscript of mu1; the memoir's next line (2) -C mu g h + mu mu1 R^3 h s^2 is -dP/dn dN/dp with dP/dn = -mu R h s only for dN/dp = mu1 R^2 s, so the memoir used the right value"),
+    });
+    // n° 40: A dp'/dn, printed A1 dp'/dn, with the n° 40 letters (massless wheel parts kept
+    // apart: mu1 = A1 = B1 = C1 = 0 isolates the rider's terms; B = C + mu h^2, h = z).
+    let mut worst40 = 0.0f64;
+    let mut coeff40 = 0.0f64;
+    for base in points(true).iter().take(16) {
+        let h = base["z"];
+        let pt = with(
+            base,
+            &[
+                ("B", base["C"] + base["mu"] * h * h),
+                ("p", 0.0),
+                ("dp", 0.0),
+                ("dn", 0.0),
+                ("ds", 0.0),
+            ],
+        );
+        let a11 = diff(&pt, "dp", 1.0, |q| residual(q, "p"));
+        coeff40 = coeff40.max(rel_diff(a11, pt["A"]));
+        // A p' = -P at zero n', s': A dp'/dn = -dP/dn.
+        let a_dpdn = -diff(&pt, "n", 1e-3, |q| residual(q, "p"));
+        let (th, n, s, mu, r) = (pt["theta"], pt["n"], pt["s"], pt["mu"], pt["R"]);
+        let printed_rhs = mu * r * h * s * th.cos() + 2.0 * mu * h * h * n * th.sin() * th.cos();
+        worst40 = worst40.max(rel_diff(a_dpdn, printed_rhs));
+    }
+    e.push(Entry {
+        section: "40".into(),
+        quantity: "left side A dp'/dn".into(),
+        memoir: Memoir::Formula("A1 dp'/dn = mu R h s cos(theta) + 2 mu h^2 n sin(theta) cos(theta)".into()),
+        derived: Derived::Numbers(BTreeMap::from([
+            ("rel_rhs".to_string(), worst40),
+            ("rel_A".to_string(), coeff40),
+            ("points".to_string(), 16.0),
+        ])),
+        rel_diff: None,
+        verdict: if worst40 <= FD_TOLERANCE && coeff40 <= FD_TOLERANCE { Verdict::Ocr } else { Verdict::DerivationDiffers },
+        note: "-dP/dn by central differences of the generated rider_p + wheel_p (wheel massless, B = C + mu h^2) at 16 seeded points equals the printed right side, and the coefficient of p' in the same residual is the rider's A (not the wheel's A1, which is 0 here): the left side is A dp'/dn, as the two neighbouring lines of the same table print it (A dp'/dtheta, A dp'/ds); a stray subscript of the OCR".into(),
+    });
+    // n° 41 conclusion: the straight-running speed limit.
+    let limit = bisect(|s| out(&n32(0.0, s, 0.0), "stability_n40"), 0.0, 5.0);
+    e.push(Entry {
+        section: "41".into(),
+        quantity: "conclusion: speed limit sqrt(C/(mu1 R^2))".into(),
+        memoir: Memoir::Formula("s > mu1 R / C (= 1)".into()),
+        derived: Derived::Numbers(BTreeMap::from([
+            ("s_limit".to_string(), limit),
+        ])),
+        rel_diff: None,
+        verdict: if rel_diff(limit, 1.0) <= 1e-9 { Verdict::Ocr } else { Verdict::DerivationDiffers },
+        note: "root in s of the generated (S) of n° 40 at theta = 0, n = 0 (units sqrt(g/R), mu1 R^2 = C): s = sqrt(C/(mu1 R^2)) = 1, the n° 36 condition s^2 > C/(mu1 R^2); the printed mu1 R/C is not a speed (unit 1/m) and is the OCR's flattening of the fraction under the root (its \"= 1\" holds only because mu1 R^2/C = 1 here); a print slip cannot be excluded without the facsimile, but the memoir's own n° 36 and n° 78 (2) give the right form".into(),
+    });
+    // n° 36: the first member with mu0, mu1 for the rider's mu.
+    let base = with(
+        &points(false)[0],
+        &[
+            ("theta", 0.0),
+            ("n", 0.0),
+            ("p", 0.0),
+            ("dp", 0.0),
+            ("dn", 0.0),
+            ("ds", 0.0),
+            ("L", 0.0),
+        ],
+    );
+    let f = |s: f64| out(&with(&base, &[("s", s)]), "stability_simplified");
+    let (a0, a1) = (f(0.0), f(1.0) - f(0.0));
+    let ratio = a1 / a0;
+    let (r, g, c, b1, mu1, mu) =
+        (base["R"], base["g"], base["C"], base["B1"], base["mu1"], base["mu"]);
+    let with_mu = -r * (b1 - mu1 * r * r) / (g * c);
+    let printed = -mu1 * r * (b1 - mu1 * r * r) / (mu * g * c);
+    e.push(Entry {
+        section: "36".into(),
+        quantity: "first member (S): s^2 over constant term".into(),
+        memoir: Memoir::Formula("0 < -mu0 g z + mu1 R z (B1 - mu1 R^2)/C s^2".into()),
+        derived: Derived::Numbers(BTreeMap::from([
+            ("b_over_a".to_string(), ratio),
+            ("mu_mu".to_string(), with_mu),
+            ("mu0_mu1".to_string(), printed),
+        ])),
+        rel_diff: None,
+        verdict: if rel_diff(ratio, with_mu) <= 1e-9 { Verdict::Ocr } else { Verdict::DerivationDiffers },
+        note: format!("the generated stability of the simplified model (n° 33) at theta = 0, n = 0 is a + b s^2 (first seeded point, mu = {mu:.4} kg, mu1 = {mu1:.4} kg); b/a equals -R (B1 - mu1 R^2)/(g C), i.e. -mu g z + mu R z (B1 - mu1 R^2)/C s^2 with the rider's mu in both terms; the memoir's own next step divides by mu0 z and reaches s^2 > C/(mu1 R^2), which needs the same mass in both terms (mu0 is its name for the rider's mass in the example), so the second term's mu1 is a misread subscript"),
+    });
+    e
+}
+
 /// The ids of the checks that are findings, with their verdict.
 const FINDINGS: &[(&str, Verdict, &str)] = &[
     ("merge_is_substitution", Verdict::DerivationDiffers, "n° 24: the merge of letters is an approximation"),
@@ -796,6 +991,7 @@ fn checks() -> Vec<Entry> {
 pub fn entries() -> Vec<Entry> {
     let mut e = formulas();
     e.extend(numbers());
+    e.extend(ocr_entries());
     e.extend(checks());
     e
 }

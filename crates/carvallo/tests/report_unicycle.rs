@@ -51,6 +51,11 @@ fn findings() -> BTreeMap<(&'static str, &'static str), Verdict> {
         (("41", "first zero of the first member (degrees)"), MemoirError),
         (("41", "junction point n"), MemoirError),
         (("41", "junction point s"), MemoirError),
+        (("36", "first member (S): s^2 over constant term"), Ocr),
+        (("40", "left side A dp'/dn"), Ocr),
+        (("41", "conclusion: speed limit sqrt(C/(mu1 R^2))"), Ocr),
+        (("78", "characteristic determinant, second row"), Ocr),
+        (("78", "dN/dp at theta = 0, n = 0"), Ocr),
     ])
 }
 
