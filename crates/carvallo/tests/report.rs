@@ -4,7 +4,7 @@
 
 use std::collections::BTreeMap;
 
-use carvallo::report::{format_significant, hoop_entries, render_json, render_text, Verdict};
+use carvallo::report::{normalise_numbers, hoop_entries, render_json, render_text, Verdict};
 
 /// The verdict each (section, quantity) must get.
 fn expected() -> BTreeMap<(&'static str, &'static str), Verdict> {
@@ -82,38 +82,10 @@ fn json_has_the_required_keys() {
     }
 }
 
-/// Replaces every number in `text` (also in `key=value` and after `(`) by its value to 4
-/// significant digits, or `~0` below 1e-12 in magnitude.
-fn normalise(text: &str) -> String {
-    let number = |token: &str| -> Option<String> {
-        let x: f64 = token.parse().ok()?;
-        Some(if x != 0.0 && x.abs() < 1e-12 { "~0".into() } else { format_significant(x, 4) })
-    };
-    text.lines()
-        .map(|line| {
-            line.split(' ')
-                .map(|word| {
-                    let core = word.trim_end_matches([',', ';', ')', ':']);
-                    let tail = &word[core.len()..];
-                    let (head, value) = match core.rsplit_once('=') {
-                        Some((k, v)) => (format!("{k}="), v),
-                        None => (String::new(), core),
-                    };
-                    match number(value) {
-                        Some(n) => format!("{head}{n}{tail}"),
-                        None => word.to_string(),
-                    }
-                })
-                .collect::<Vec<_>>()
-                .join(" ")
-        })
-        .collect::<Vec<_>>()
-        .join("\n")
-}
 
 #[test]
 fn text_report_snapshot() {
-    let text = normalise(&render_text(&hoop_entries()));
+    let text = normalise_numbers(&render_text(&hoop_entries()));
     insta::with_settings!({
         description => "carvallo report: the hoop concordance table, numbers to 4 significant digits",
         omit_expression => true,

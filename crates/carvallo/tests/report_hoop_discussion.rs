@@ -2,36 +2,9 @@
 //! entries whose verdict is not `agrees`, the sign checks of n° 19, and a snapshot of the text
 //! table with numbers normalised to 4 significant digits (values below 1e-12 become `~0`).
 
-use carvallo::report::{format_significant, render_text, Verdict};
+use carvallo::report::{normalise_numbers, render_text, Verdict};
 use carvallo::report_hoop_discussion::{entries, n12_forms_agree, point_entries};
 
-/// Replaces every number in `text` by its value to 4 significant digits (`~0` below 1e-12).
-fn normalise(text: &str) -> String {
-    let number = |token: &str| -> Option<String> {
-        let x: f64 = token.parse().ok()?;
-        Some(if x != 0.0 && x.abs() < 1e-12 { "~0".into() } else { format_significant(x, 4) })
-    };
-    text.lines()
-        .map(|line| {
-            line.split(' ')
-                .map(|word| {
-                    let core = word.trim_end_matches([',', ';', ')', ':']);
-                    let tail = &word[core.len()..];
-                    let (head, value) = match core.rsplit_once('=') {
-                        Some((k, v)) => (format!("{k}="), v),
-                        None => (String::new(), core),
-                    };
-                    match number(value) {
-                        Some(n) => format!("{head}{n}{tail}"),
-                        None => word.to_string(),
-                    }
-                })
-                .collect::<Vec<_>>()
-                .join(" ")
-        })
-        .collect::<Vec<_>>()
-        .join("\n")
-}
 
 #[test]
 fn verdicts_are_the_expected_ones() {
@@ -74,7 +47,7 @@ fn verdicts_are_the_expected_ones() {
 
 #[test]
 fn text_report_snapshot() {
-    let text = normalise(&render_text(&entries()));
+    let text = normalise_numbers(&render_text(&entries()));
     insta::with_settings!({
         description => "carvallo report: the hoop discussion n° 13-19, numbers to 4 significant digits",
         omit_expression => true,

@@ -4,7 +4,7 @@
 
 use std::collections::BTreeMap;
 
-use carvallo::report::{format_significant, render_text, Memoir, Verdict, AGREEMENT_TOLERANCE};
+use carvallo::report::{normalise_numbers, render_text, Memoir, Verdict, AGREEMENT_TOLERANCE};
 use carvallo::report_unicycle::entries;
 
 /// Entries whose verdict is not `agrees`, by (section, quantity); every other entry agrees
@@ -99,38 +99,10 @@ fn verdicts_are_the_expected_ones() {
     }
 }
 
-/// Replaces every number in `text` by its value to 4 significant digits, or `~0` below 1e-12
-/// in magnitude (as the hoop report test does).
-fn normalise(text: &str) -> String {
-    let number = |token: &str| -> Option<String> {
-        let x: f64 = token.parse().ok()?;
-        Some(if x != 0.0 && x.abs() < 1e-12 { "~0".into() } else { format_significant(x, 4) })
-    };
-    text.lines()
-        .map(|line| {
-            line.split(' ')
-                .map(|word| {
-                    let core = word.trim_end_matches([',', ';', ')', ':']);
-                    let tail = &word[core.len()..];
-                    let (head, value) = match core.rsplit_once('=') {
-                        Some((k, v)) => (format!("{k}="), v),
-                        None => (String::new(), core),
-                    };
-                    match number(value) {
-                        Some(n) => format!("{head}{n}{tail}"),
-                        None => word.to_string(),
-                    }
-                })
-                .collect::<Vec<_>>()
-                .join(" ")
-        })
-        .collect::<Vec<_>>()
-        .join("\n")
-}
 
 #[test]
 fn text_report_snapshot() {
-    let text = normalise(&render_text(&entries()));
+    let text = normalise_numbers(&render_text(&entries()));
     insta::with_settings!({
         description => "carvallo report: the unicycle concordance table, numbers to 4 significant digits",
         omit_expression => true,
