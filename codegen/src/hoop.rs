@@ -147,7 +147,8 @@ fn compare_all(
     }
 }
 
-fn formula(name: &str, section: &str, description: &str, expr: &Atom) -> Formula {
+/// A derived formula handed to the emission, simplified and written with `sin`, `cos`, `tan`.
+pub(crate) fn formula(name: &str, section: &str, description: &str, expr: &Atom) -> Formula {
     Formula {
         name: name.to_string(),
         section: section.to_string(),
@@ -157,7 +158,7 @@ fn formula(name: &str, section: &str, description: &str, expr: &Atom) -> Formula
 }
 
 /// A memoir transcription handed over as is (with `sin`, `cos`, `tan` of θ).
-fn printed_formula(name: &str, p: &memoir::Printed, description: &str) -> Formula {
+pub(crate) fn printed_formula(name: &str, p: &memoir::Printed, description: &str) -> Formula {
     Formula {
         name: name.to_string(),
         section: p.section.to_string(),

@@ -26,11 +26,9 @@ pub mod memoir;
 use anyhow::{ensure, Result};
 use symbolica::atom::{Atom, AtomCore};
 
-use crate::frame::{
-    cos_t, is_zero, simplify, sin_t, time_derivative, to_trig, var, Trihedron, Vector,
-};
-use crate::hoop::{self, show, solve_linear, subst};
-use crate::{Check, Derivation, Formula};
+use crate::frame::{cos_t, is_zero, simplify, sin_t, time_derivative, var, Trihedron, Vector};
+use crate::hoop::{self, formula, printed_formula, show, solve_linear, subst};
+use crate::{Check, Derivation};
 
 /// Parameter names of the unicycle model, in order.
 pub const PARAMS: [&str; 12] = ["R", "g", "mu", "z", "A", "B", "C", "L", "mu1", "A1", "B1", "C1"];
@@ -254,24 +252,6 @@ fn compare_all(section: &str, id: &str, statement: &str, a: &[Atom], b: &[Atom])
             .map(|(n, d)| format!("{n}: difference {}", show(d)))
             .collect::<Vec<_>>()
             .join("; "),
-    }
-}
-
-fn formula(name: &str, section: &str, description: &str, expr: &Atom) -> Formula {
-    Formula {
-        name: name.to_string(),
-        section: section.to_string(),
-        description: description.to_string(),
-        expr: to_trig(&simplify(expr)),
-    }
-}
-
-fn printed_formula(name: &str, p: &memoir::Printed, description: &str) -> Formula {
-    Formula {
-        name: name.to_string(),
-        section: p.section.to_string(),
-        description: description.to_string(),
-        expr: p.trig_atom(),
     }
 }
 

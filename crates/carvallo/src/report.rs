@@ -36,6 +36,8 @@ use std::fmt::Write as _;
 
 use serde::{Deserialize, Serialize};
 
+use crate::hoop_discussion::bisect;
+
 /// Largest relative difference (see the module docs) for which a derived formula and the
 /// memoir's printed formula are said to agree: a few hundred units in the last place, the
 /// rounding of two different but equal algebraic forms evaluated in `f64`.
@@ -554,31 +556,6 @@ fn inertia_entries(
             entry
         })
         .collect()
-}
-
-/// Bisection for the root of a continuous `f` with a sign change on `[lo, hi]`, to the
-/// resolution of `f64`.
-fn bisect(f: impl Fn(f64) -> f64, mut lo: f64, mut hi: f64) -> Option<f64> {
-    let (flo, fhi) = (f(lo), f(hi));
-    if !(flo.is_finite() && fhi.is_finite()) || flo.signum() == fhi.signum() {
-        return None;
-    }
-    for _ in 0..200 {
-        let mid = 0.5 * (lo + hi);
-        if mid <= lo || mid >= hi {
-            break;
-        }
-        let fm = f(mid);
-        if fm == 0.0 {
-            return Some(mid);
-        }
-        if fm.signum() == flo.signum() {
-            lo = mid;
-        } else {
-            hi = mid;
-        }
-    }
-    Some(0.5 * (lo + hi))
 }
 
 /// n° 14/18: the upright straight-rolling threshold, from the generated normalised stability.
