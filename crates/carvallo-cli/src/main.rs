@@ -9,6 +9,8 @@
 use std::io::Write;
 use std::process::ExitCode;
 
+mod figures;
+mod report_out;
 mod whipple;
 
 const HELP: &str = "\
@@ -16,6 +18,8 @@ carvallo: E. Carvallo's memoir (1897) on the hoop, unicycle and bicycle, re-deri
 
 Usage:
     carvallo report [--json]    print the memoir concordance (text table, or JSON with --json)
+    carvallo report --out DIR [--model benchmark|FILE.toml]
+                                write DIR/report.md (concordance, errata) and the SVG figures
     carvallo window --model benchmark|FILE.toml [--json]
                                 stable speed range of the linearised Carvallo-Whipple bicycle
     carvallo eig --model benchmark|FILE.toml --speed V [--json]
@@ -33,6 +37,7 @@ Options:
 enum Command {
     Help,
     Report { json: bool },
+    ReportOut { dir: String, model: String },
 }
 
 /// A command line that cannot be understood; printed to stderr, exit code 2.
@@ -41,14 +46,20 @@ enum UsageError {
     Missing,
     Unknown(String),
     Repeated(String),
+    MissingValue(String),
+    Conflict(&'static str, &'static str),
 }
 
 impl std::fmt::Display for UsageError {
     fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
         match self {
-            UsageError::Missing => write!(f, "missing command: expected `report`, `window`, `eig` or `--help`"),
+            UsageError::Missing => {
+                write!(f, "missing command: expected `report`, `window`, `eig` or `--help`")
+            }
             UsageError::Unknown(arg) => write!(f, "unknown argument `{arg}`"),
             UsageError::Repeated(arg) => write!(f, "argument `{arg}` given more than once"),
+            UsageError::MissingValue(arg) => write!(f, "missing value after `{arg}`"),
+            UsageError::Conflict(a, b) => write!(f, "`{a}` cannot be combined with `{b}`"),
         }
     }
 }
@@ -67,20 +78,42 @@ fn parse(args: &[String]) -> Result<Command, UsageError> {
     if first != "report" {
         return Err(UsageError::Unknown(first.clone()));
     }
-    let mut json = false;
-    for arg in rest {
+    let (mut json, mut out, mut model) = (false, None, None);
+    let mut it = rest.iter();
+    while let Some(arg) = it.next() {
         match arg.as_str() {
             "--json" if json => return Err(UsageError::Repeated(arg.clone())),
             "--json" => json = true,
+            "--out" | "--model" => {
+                let slot = if arg == "--out" { &mut out } else { &mut model };
+                if slot.is_some() {
+                    return Err(UsageError::Repeated(arg.clone()));
+                }
+                let value = it.next().ok_or_else(|| UsageError::MissingValue(arg.clone()))?;
+                *slot = Some(value.clone());
+            }
             _ => return Err(UsageError::Unknown(arg.clone())),
         }
     }
-    Ok(Command::Report { json })
+    match (out, model) {
+        (Some(_), _) if json => Err(UsageError::Conflict("--json", "--out")),
+        (Some(dir), model) => {
+            Ok(Command::ReportOut { dir, model: model.unwrap_or_else(|| "benchmark".into()) })
+        }
+        (None, Some(_)) => Err(UsageError::Conflict("--model", "the printed report (use --out)")),
+        (None, None) => Ok(Command::Report { json }),
+    }
 }
 
 fn run(command: Command) -> anyhow::Result<()> {
     match command {
         Command::Help => emit(HELP)?,
+        Command::ReportOut { dir, model } => {
+            let params = whipple::load(&model).map_err(report_out::BadInput)?;
+            let files = report_out::write_report(std::path::Path::new(&dir), &params, &model)?;
+            let list: String = files.iter().map(|f| format!("{dir}/{f}\n")).collect();
+            emit(&list)?;
+        }
         Command::Report { json } => {
             let entries = carvallo::report::all_entries();
             if json {
@@ -117,6 +150,11 @@ fn main() -> ExitCode {
     };
     match run(command) {
         Ok(()) => ExitCode::SUCCESS,
+        // A bad output directory or model file found before anything is written: exit 2.
+        Err(err) if err.downcast_ref::<report_out::BadInput>().is_some() => {
+            eprintln!("error: {err}");
+            ExitCode::from(2)
+        }
         Err(err) => {
             eprintln!("error: {err:#}");
             ExitCode::FAILURE
@@ -138,6 +176,14 @@ mod tests {
         assert_eq!(parse(&args(&["report", "--json"])), Ok(Command::Report { json: true }));
         assert_eq!(parse(&args(&["--help"])), Ok(Command::Help));
         assert_eq!(parse(&args(&["report", "-h"])), Ok(Command::Help));
+        assert_eq!(
+            parse(&args(&["report", "--out", "r"])),
+            Ok(Command::ReportOut { dir: "r".into(), model: "benchmark".into() })
+        );
+        assert_eq!(
+            parse(&args(&["report", "--model", "b.toml", "--out", "r"])),
+            Ok(Command::ReportOut { dir: "r".into(), model: "b.toml".into() })
+        );
     }
 
     #[test]
@@ -151,5 +197,17 @@ mod tests {
             Err(UsageError::Repeated("--json".into()))
         );
         assert_eq!(parse(&args(&["--help", "-x"])), Err(UsageError::Unknown("-x".into())));
+        assert_eq!(
+            parse(&args(&["report", "--out"])),
+            Err(UsageError::MissingValue("--out".into()))
+        );
+        assert_eq!(
+            parse(&args(&["report", "--out", "a", "--out", "b"])),
+            Err(UsageError::Repeated("--out".into()))
+        );
+        assert_eq!(
+            parse(&args(&["report", "--json", "--out", "a"])).unwrap_err().to_string(),
+            "`--json` cannot be combined with `--out`"
+        );
     }
 }

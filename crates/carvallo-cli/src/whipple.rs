@@ -63,7 +63,7 @@ fn parse(args: &[String]) -> Result<Command, String> {
     }
 }
 
-fn load(model: &str) -> Result<WhippleParams, String> {
+pub(crate) fn load(model: &str) -> Result<WhippleParams, String> {
     if model == "benchmark" {
         return Ok(WhippleParams::benchmark());
     }

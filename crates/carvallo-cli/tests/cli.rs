@@ -1,5 +1,7 @@
-//! End-to-end tests of the `carvallo` binary: the report in both formats, the help, and the
-//! exit code 2 with a message naming an unknown argument.
+//! End-to-end tests of the `carvallo` binary: the report in both formats, the help, the exit
+//! code 2 with a message naming an unknown argument, and bad output directories and parameter
+//! files for `report --out` and `window` (exit code 2, empty standard output, nothing written).
+//! The successful `report --out` is checked by the README replay (`tests/readme.rs`).
 
 use std::process::Command;
 
@@ -55,4 +57,103 @@ fn a_reader_that_stops_early_gets_no_panic() {
     let stderr = String::from_utf8_lossy(&out.stderr);
     assert!(!stderr.contains("panicked"), "stderr: {stderr}");
     assert_eq!(out.status.code(), Some(0), "stderr: {stderr}");
+}
+
+fn scratch(name: &str) -> std::path::PathBuf {
+    let dir = std::env::temp_dir().join(format!("carvallo-cli-{name}-{}", std::process::id()));
+    let _ = std::fs::remove_dir_all(&dir);
+    std::fs::create_dir_all(&dir).unwrap();
+    dir
+}
+
+fn carvallo_in(dir: &std::path::Path, args: &[&str]) -> (i32, String, String) {
+    let out =
+        Command::new(env!("CARGO_BIN_EXE_carvallo")).args(args).current_dir(dir).output().unwrap();
+    let text = |b: Vec<u8>| String::from_utf8(b).unwrap();
+    (out.status.code().unwrap_or(-1), text(out.stdout), text(out.stderr))
+}
+
+/// The names in `dir`, sorted.
+fn listing(dir: &std::path::Path) -> Vec<String> {
+    let mut names: Vec<String> = std::fs::read_dir(dir)
+        .unwrap()
+        .map(|e| e.unwrap().file_name().to_string_lossy().into_owned())
+        .collect();
+    names.sort();
+    names
+}
+
+#[test]
+fn bad_output_directories_are_usage_errors_and_nothing_is_written() {
+    let dir = scratch("outdir");
+    std::fs::write(dir.join("a-file"), "x").unwrap();
+    std::fs::create_dir(dir.join("mine")).unwrap();
+    std::fs::write(dir.join("mine/notes.txt"), "keep me").unwrap();
+    let cases: [(&str, &str); 5] = [
+        ("missing/sub", "error: invalid output directory `missing/sub`: its parent `missing` is not an existing directory"),
+        ("a-file", "error: invalid output directory `a-file`: it is not a directory"),
+        ("mine", "error: refusing to replace `mine`: it is not empty and was not written by `carvallo report --out`"),
+        (".", "error: invalid output directory `.`: give a directory name"),
+        ("..", "error: invalid output directory `..`: give a directory name"),
+    ];
+    for (out, message) in cases {
+        let (code, stdout, stderr) = carvallo_in(&dir, &["report", "--out", out]);
+        assert_eq!(code, 2, "--out {out}: {stderr}");
+        assert_eq!(stdout, "", "--out {out}");
+        assert_eq!(stderr.trim_end(), message);
+        assert!(!stderr.contains("panicked"));
+    }
+    assert_eq!(listing(&dir), ["a-file", "mine"]);
+    assert_eq!(listing(&dir.join("mine")), ["notes.txt"]);
+    let _ = std::fs::remove_dir_all(&dir);
+}
+
+#[test]
+fn bad_parameter_files_are_usage_errors_and_nothing_is_written() {
+    let dir = scratch("params");
+    let bench = carvallo::whipple::BENCHMARK_TOML;
+    let files = [
+        (
+            "negative.toml",
+            bench.replace("mB = 85.0", "mB = -85.0"),
+            "invalid mB -85.0: must be positive",
+        ),
+        ("unknown.toml", format!("{bench}wheelbase = 1.0\n"), "unknown parameter wheelbase"),
+        ("missing.toml", bench.replace("rF = 0.35\n", ""), "missing parameter rF"),
+        ("nan.toml", bench.replace("g = 9.81", "g = nan"), "invalid g NaN: must be finite"),
+        (
+            "text.toml",
+            bench.replace("c = 0.08", "c = \"short\""),
+            "parameter c = \"short\" is not a number",
+        ),
+        (
+            "triangle.toml",
+            bench.replace("IRyy = 0.12", "IRyy = 0.5"),
+            "invalid IRyy 0.5: exceeds 2 IRxx",
+        ),
+    ];
+    for (name, text, message) in &files {
+        std::fs::write(dir.join(name), text).unwrap();
+        for args in [
+            vec!["report", "--out", "r", "--model", name],
+            vec!["window", "--model", name],
+            vec!["eig", "--model", name, "--speed", "5"],
+        ] {
+            let (code, stdout, stderr) = carvallo_in(&dir, &args);
+            assert_eq!(code, 2, "{args:?}: {stderr}");
+            assert_eq!(stdout, "", "{args:?}");
+            let first = stderr.lines().next().unwrap_or("");
+            assert!(first.starts_with("error: ") && first.contains(message), "{args:?}: {stderr}");
+            assert!(first.contains(name), "{args:?}: the message names the file: {first}");
+        }
+    }
+    let (code, _, stderr) = carvallo_in(&dir, &["report", "--out", "r", "--model", "absent.toml"]);
+    assert_eq!(code, 2);
+    assert!(stderr.starts_with("error: cannot read model file `absent.toml`"), "{stderr}");
+    let (code, _, stderr) = carvallo_in(&dir, &["report", "--json", "--out", "r"]);
+    assert_eq!(code, 2);
+    assert!(stderr.starts_with("error: `--json` cannot be combined with `--out`"), "{stderr}");
+    assert!(!dir.join("r").exists(), "nothing may be written");
+    assert!(listing(&dir).iter().all(|n| n.ends_with(".toml")), "{:?}", listing(&dir));
+    let _ = std::fs::remove_dir_all(&dir);
 }

@@ -13,10 +13,12 @@ pub mod error;
 pub mod hoop;
 pub mod hoop_discussion;
 pub mod report;
-pub mod report_unicycle;
 pub mod report_hoop_discussion;
+pub mod report_markdown;
+pub mod report_unicycle;
 pub mod report_whipple;
 pub mod unicycle;
+pub mod unicycle_discussion;
 pub mod whipple;
 
 pub use error::ParameterError;

@@ -34,7 +34,7 @@ fn eval(point: &Point) -> BTreeMap<&'static str, f64> {
     scene::OUTPUTS.iter().copied().zip(scene::eval_array(&args)).collect()
 }
 
-fn out(point: &Point, name: &str) -> f64 {
+pub(crate) fn out(point: &Point, name: &str) -> f64 {
     eval(point)[name]
 }
 
@@ -180,7 +180,7 @@ fn number_as(
     }
 }
 
-fn bisect(f: impl Fn(f64) -> f64, mut lo: f64, mut hi: f64) -> f64 {
+pub(crate) fn bisect(f: impl Fn(f64) -> f64, mut lo: f64, mut hi: f64) -> f64 {
     let flo = f(lo);
     for _ in 0..200 {
         let mid = 0.5 * (lo + hi);
@@ -197,7 +197,7 @@ fn bisect(f: impl Fn(f64) -> f64, mut lo: f64, mut hi: f64) -> f64 {
 }
 
 /// Golden-section minimisation of a unimodal `f` on `[lo, hi]`.
-fn minimise(f: impl Fn(f64) -> f64, mut lo: f64, mut hi: f64) -> f64 {
+pub(crate) fn minimise(f: impl Fn(f64) -> f64, mut lo: f64, mut hi: f64) -> f64 {
     let r = (5f64.sqrt() - 1.0) / 2.0;
     for _ in 0..200 {
         let (x1, x2) = (hi - r * (hi - lo), lo + r * (hi - lo));
@@ -211,7 +211,7 @@ fn minimise(f: impl Fn(f64) -> f64, mut lo: f64, mut hi: f64) -> f64 {
 }
 
 /// A normalised point of n° 32–41: R = g = mu = 1, z = h/R, rates in units of sqrt(g/R).
-fn n32(theta_deg: f64, s: f64, n: f64) -> Point {
+pub(crate) fn n32(theta_deg: f64, s: f64, n: f64) -> Point {
     BTreeMap::from([
         ("R", 1.0),
         ("g", 1.0),
@@ -224,20 +224,20 @@ fn n32(theta_deg: f64, s: f64, n: f64) -> Point {
 }
 
 /// s on (E) of n° 32 for given θ and n, from the generated form (linear in s).
-fn s_on_e(theta_deg: f64, n: f64) -> f64 {
+pub(crate) fn s_on_e(theta_deg: f64, n: f64) -> f64 {
     let e0 = out(&n32(theta_deg, 0.0, n), "equilibrium_n32");
     let e1 = out(&n32(theta_deg, 1.0, n), "equilibrium_n32");
     -e0 / (e1 - e0)
 }
 
 /// (n0, s0): the smallest s on (E) at θ and the n < 0 where it is reached (n° 32).
-fn minimum_on_e(theta_deg: f64) -> (f64, f64) {
+pub(crate) fn minimum_on_e(theta_deg: f64) -> (f64, f64) {
     let n0 = minimise(|n| s_on_e(theta_deg, n), -5.0, -1e-3);
     (n0, s_on_e(theta_deg, n0))
 }
 
 /// Coefficients (a, b, c) of the generated trinomial S(n^2) = a m^2 + b m + c, m = n^2.
-fn trinomial(theta_deg: f64) -> (f64, f64, f64) {
+pub(crate) fn trinomial(theta_deg: f64) -> (f64, f64, f64) {
     let t = |m: f64| out(&n32(theta_deg, 0.0, m.sqrt()), "trinomial_n41");
     let (t0, t1, t2) = (t(0.0), t(1.0), t(2.0));
     let a = (t2 - 2.0 * t1 + t0) / 2.0;
@@ -245,7 +245,7 @@ fn trinomial(theta_deg: f64) -> (f64, f64, f64) {
 }
 
 /// The first member of n° 41, $-b - 2\sqrt{ac}$ for the trinomial's (a, b, c).
-fn first_member_41(theta_deg: f64) -> f64 {
+pub(crate) fn first_member_41(theta_deg: f64) -> f64 {
     let (a, b, c) = trinomial(theta_deg);
     -b - 2.0 * (a * c).sqrt()
 }

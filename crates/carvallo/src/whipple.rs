@@ -78,6 +78,14 @@ const POSITIVE: [&str; 17] = [
     "IHzz", "rF", "mF", "IFxx",
 ];
 
+/// Largest magnitude accepted for any parameter (SI units): beyond it the matrices' products
+/// could overflow, and no bicycle is that large.
+pub const MAX_MAGNITUDE: f64 = 1e6;
+
+/// Smallest value accepted for a strictly positive parameter (SI units): below it the mass
+/// matrix could become numerically singular.
+pub const MIN_POSITIVE: f64 = 1e-6;
+
 /// Why a parameter set was rejected.
 #[derive(Clone, Debug, PartialEq)]
 pub enum WhippleError {
@@ -167,8 +175,16 @@ impl WhippleParams {
     /// # Errors
     /// [`WhippleError`] naming the key and value at fault.
     pub fn from_toml_str(text: &str) -> Result<WhippleParams, WhippleError> {
-        let doc: toml::Table = text.parse().map_err(|e: toml::de::Error| WhippleError::Syntax {
-            message: e.message().to_lowercase(),
+        let doc: toml::Table = text.parse().map_err(|e: toml::de::Error| {
+            let mut message = e.message().to_lowercase();
+            if let Some(before) = e.span().and_then(|span| text.get(..span.start)) {
+                // Name the line, so that the key at fault is in the message.
+                let number = before.matches('\n').count() + 1;
+                let line: String =
+                    text.lines().nth(number - 1).unwrap_or("").trim().chars().take(60).collect();
+                message = format!("line {number}: {message} (`{line}`)");
+            }
+            WhippleError::Syntax { message }
         })?;
         let table = doc
             .get("parameters")
@@ -200,8 +216,10 @@ impl WhippleParams {
     ///
     /// # Errors
     /// [`WhippleError::InvalidParameter`] for a non-finite value, a non-positive length, mass,
-    /// gravity or principal moment, a steer tilt outside $(-\pi/2, \pi/2)$, or a frame inertia
-    /// that is not positive definite in its x–z plane.
+    /// gravity or principal moment, a magnitude above [`MAX_MAGNITUDE`] or a positive value
+    /// below [`MIN_POSITIVE`], a steer tilt outside $(-\pi/2, \pi/2)$, a frame inertia that is
+    /// not positive definite in its x–z plane, or moments of inertia that break the triangle
+    /// inequalities.
     pub fn from_values(values: [f64; 26]) -> Result<WhippleParams, WhippleError> {
         for (key, &value) in PARAM_NAMES.iter().zip(&values) {
             if !value.is_finite() {
@@ -216,6 +234,20 @@ impl WhippleParams {
                     key,
                     value,
                     reason: "must be positive",
+                });
+            }
+            if value.abs() > MAX_MAGNITUDE {
+                return Err(WhippleError::InvalidParameter {
+                    key,
+                    value,
+                    reason: "is too large (magnitude above 1e6 in SI units)",
+                });
+            }
+            if POSITIVE.contains(key) && value < MIN_POSITIVE {
+                return Err(WhippleError::InvalidParameter {
+                    key,
+                    value,
+                    reason: "is too small (below 1e-6 in SI units)",
                 });
             }
         }
@@ -235,11 +267,69 @@ impl WhippleParams {
                 return Err(WhippleError::InvalidParameter {
                     key,
                     value: c,
-                    reason: "makes the inertia matrix not positive definite",
+                    reason: if key == "IBxz" {
+                        "makes the inertia block [[IBxx, IBxz], [IBxz, IBzz]] not positive definite"
+                    } else {
+                        "makes the inertia block [[IHxx, IHxz], [IHxz, IHzz]] not positive definite"
+                    },
                 });
             }
         }
+        p.check_triangle_inequalities()?;
         Ok(p)
+    }
+
+    /// The moments of inertia of a rigid body obey the triangle inequalities: each principal
+    /// moment is at most the sum of the other two. For the wheels (principal moments
+    /// $I_{xx} = I_{zz}$ and $I_{yy}$) this is $I_{yy} \le 2 I_{xx}$; for the frame and the
+    /// front assembly, with $\lambda_1 \le \lambda_2$ the principal moments of the x–z block,
+    /// $I_{yy} \le \lambda_1 + \lambda_2$ and $\lambda_2 \le \lambda_1 + I_{yy}$. A thin disc
+    /// ($I_{yy} = 2 I_{xx}$) is allowed, with a relative slack of $10^{-9}$ for decimal input.
+    fn check_triangle_inequalities(&self) -> Result<(), WhippleError> {
+        const SLACK: f64 = 1e-9;
+        for (xx, yy) in [("IRxx", "IRyy"), ("IFxx", "IFyy")] {
+            let (a, b) = (self.value(xx), self.value(yy));
+            if b > 2.0 * a * (1.0 + SLACK) {
+                let (key, reason) = if yy == "IRyy" {
+                    ("IRyy", "exceeds 2 IRxx (triangle inequality of the wheel's moments)")
+                } else {
+                    ("IFyy", "exceeds 2 IFxx (triangle inequality of the wheel's moments)")
+                };
+                return Err(WhippleError::InvalidParameter { key, value: b, reason });
+            }
+        }
+        for body in ["B", "H"] {
+            let name = |s: &str| format!("I{body}{s}");
+            let (a, c, d, yy) = (
+                self.value(&name("xx")),
+                self.value(&name("zz")),
+                self.value(&name("xz")),
+                self.value(&name("yy")),
+            );
+            let mean = 0.5 * (a + c);
+            let half = (0.25 * (a - c) * (a - c) + d * d).sqrt();
+            let (l1, l2) = (mean - half, mean + half);
+            let (key, too_large, too_small) = if body == "B" {
+                (
+                    "IByy",
+                    "exceeds IBxx + IBzz, the sum of the other two principal moments (triangle inequality)",
+                    "is too small: the largest principal moment of IBxx, IBzz, IBxz exceeds the sum of the other two (triangle inequality)",
+                )
+            } else {
+                (
+                    "IHyy",
+                    "exceeds IHxx + IHzz, the sum of the other two principal moments (triangle inequality)",
+                    "is too small: the largest principal moment of IHxx, IHzz, IHxz exceeds the sum of the other two (triangle inequality)",
+                )
+            };
+            if yy > (l1 + l2) * (1.0 + SLACK) {
+                return Err(WhippleError::InvalidParameter { key, value: yy, reason: too_large });
+            }
+            if l2 > (l1 + yy) * (1.0 + SLACK) {
+                return Err(WhippleError::InvalidParameter { key, value: yy, reason: too_small });
+            }
+        }
+        Ok(())
     }
 
     /// The value of the parameter `name`, if it is one.

@@ -1,0 +1,598 @@
+//! The figures of `carvallo report --out DIR`, drawn with `plotters` (SVG backend).
+//!
+//! A figure is one small function that turns data from the runtime library into a [`Chart`]
+//! plus one line in [`all`]; [`Chart::render`] draws it (Cartesian axes, or the memoir's polar
+//! diagrams: polar angle $\theta$ measured from the vertical axis Oz, radius $s$, drawn as
+//! $x = s\sin\theta$, $y = s\cos\theta$ with a polar grid). Figures the workspace cannot draw
+//! honestly yet are listed in [`MISSING`] with the reason.
+//!
+//! Memoir figures: 3, 4 and 4 bis (hoop, n° 13–17, from [`carvallo::hoop_discussion`]), 7 and
+//! 9 (unicycle, n° 32 and 41, from [`carvallo::unicycle_discussion`]). Modern figures: the
+//! benchmark bicycle's eigenvalues against speed with the stable range shaded, and its stable
+//! speed window against the trail and against the steer axis tilt.
+
+use std::ops::Range;
+
+use anyhow::{anyhow, Result};
+use carvallo::hoop_discussion::{self, Series};
+use carvallo::unicycle_discussion;
+use carvallo::whipple::{Whipple, WhippleParams, PARAM_NAMES};
+use plotters::coord::types::RangedCoordf64;
+use plotters::coord::Shift;
+use plotters::prelude::*;
+
+/// One figure of the report.
+pub struct Figure {
+    /// File name inside the output directory (`*.svg`).
+    pub file: &'static str,
+    /// Title, also the chart's caption.
+    pub title: &'static str,
+    /// One or two sentences saying what the figure shows and where it comes from.
+    pub caption: &'static str,
+    /// Computes the data and draws the figure for a bicycle (used by the modern figures only).
+    pub draw: fn(&WhippleParams) -> Result<String>,
+}
+
+/// A figure of the memoir or of the issue that the workspace does not draw yet, and why.
+pub struct Missing {
+    /// Which figure.
+    pub figure: &'static str,
+    /// Why it is not drawn.
+    pub reason: &'static str,
+}
+
+/// Every figure, in the order of the report. Adding a figure: write its function, add a line.
+pub fn all() -> Vec<Figure> {
+    vec![
+        Figure { file: "fig03_hoop_equilibrium.svg", title: "Memoir fig. 3: hoop, reality and stability of the steady states (n° 13–14)", caption: "Plane x = cos θ, y = s² (rates in √(g/R)): the curve (ℰ) where the two roots n of (E) merge, the curve (S1) where those of S are real, and the stability limit (S) through its vertical tangent; points A, B, D, F of n° 14.", draw: fig_3 },
+        Figure { file: "fig04_hoop_skid.svg", title: "Memoir fig. 4: hoop, skid tendency (n° 15–16)", caption: "Polar diagram (angle θ from the vertical, radius s in √(g/R)): the curves n = const of (E′), the curves D = ±1/2 of (D″), (ℰ) and (S).", draw: fig_4 },
+        Figure { file: "fig04bis_hoop_walking.svg", title: "Memoir fig. 4 bis: hoop, walking and pivoting (n° 17)", caption: "Polar diagram: (ℰ), (S), the separation (N) between walking and pivoting, and the curves n2 = −0.1, −0.3, −0.5.", draw: fig_4_bis },
+        Figure { file: "fig07_unicycle_diagram.svg", title: "Memoir fig. 7: unicycle steady states, h/R = 2.5 (n° 32, 41)", caption: "Polar diagram (angle θ from the vertical, radius s in √(g/R)): (ℰ), the curves n = const of (E), the separation (N) with its asymptote, the branch θ < 16° of the stability limit (S) of n° 41, and the practical limits s = 1 and 20 km/h.", draw: fig_7 },
+        Figure { file: "fig09_unicycle_first_member.svg", title: "Memoir fig. 9: unicycle, reality condition of S(n²) (n° 41)", caption: "The first member 1/cos θ − (h/R) sin²θ cos θ − √(h/R) sin 2θ from the generated trinomial, against θ, with the memoir's table; it vanishes at 16.0° and 62.7°.", draw: fig_9 },
+        Figure { file: "benchmark_eigenvalues.svg", title: "Benchmark bicycle: eigenvalues against speed", caption: "Real and imaginary parts of the four eigenvalues of the linearised Carvallo–Whipple bicycle (Meijaard et al. 2007 parameters unless --model is given) against the forward speed; the stable range is shaded.", draw: fig_eigenvalues },
+        Figure { file: "benchmark_window_trail.svg", title: "Benchmark bicycle: stable speed range against the trail", caption: "Weave and capsize speeds and the stable range (shaded) as the trail c is varied, the other parameters fixed.", draw: fig_window_trail },
+        Figure { file: "benchmark_window_tilt.svg", title: "Benchmark bicycle: stable speed range against the steer axis tilt", caption: "Weave and capsize speeds and the stable range (shaded) as the steer axis tilt λ (head angle 90° − λ) is varied, the other parameters fixed.", draw: fig_window_tilt },
+    ]
+}
+
+/// Figures not drawn, with the reason (listed in `report.md`).
+pub const MISSING: [Missing; 4] = [
+    Missing { figure: "memoir fig. 11 (n° 52: σ1 and μ against γ, frame vertical)", reason: "needs the bicycle geometry of Part II ch. I (functions σ and μ), not derived in this workspace yet" },
+    Missing { figure: "memoir fig. 13 (n° 54: locus of the front wheel's contact point)", reason: "needs the same bicycle geometry model, not derived yet" },
+    Missing { figure: "Carvallo's bicycle (n° 117–122): eigenvalues against speed", reason: "needs the linearised bicycle of the memoir's Part II ch. IV, not in this branch yet" },
+    Missing { figure: "wheel ground tracks from a nonlinear simulation", reason: "needs a nonlinear bicycle simulation, not in this branch yet" },
+];
+
+/// How a curve is stroked.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum Stroke {
+    /// A solid line.
+    Solid,
+    /// A dashed line.
+    Dashed,
+    /// A dotted line.
+    Dotted,
+    /// Unconnected dots.
+    Points,
+}
+
+/// One curve of a chart; an empty label keeps it out of the legend.
+pub struct Curve {
+    label: String,
+    points: Vec<(f64, f64)>,
+    color: RGBColor,
+    stroke: Stroke,
+}
+
+impl Curve {
+    fn new(
+        label: impl Into<String>,
+        points: Vec<(f64, f64)>,
+        color: RGBColor,
+        stroke: Stroke,
+    ) -> Curve {
+        Curve { label: label.into(), points, color, stroke }
+    }
+}
+
+/// A labelled point; the label is drawn `offset` pixels from it.
+struct Mark {
+    at: (f64, f64),
+    text: String,
+    offset: (i32, i32),
+}
+
+/// What a figure draws: axes, curves, shaded rectangles and labelled points.
+pub struct Chart {
+    title: String,
+    x_desc: String,
+    y_desc: String,
+    x: Range<f64>,
+    y: Range<f64>,
+    curves: Vec<Curve>,
+    shade: Vec<[(f64, f64); 2]>,
+    shade_label: String,
+    marks: Vec<Mark>,
+    /// Polar grid: maximal radius and ray step in degrees (`None`: Cartesian mesh).
+    polar: Option<(f64, f64)>,
+    legend: SeriesLabelPosition,
+}
+
+type DrawResult = std::result::Result<(), DrawingAreaErrorKind<std::io::Error>>;
+type Context<'a, 'b> =
+    ChartContext<'a, SVGBackend<'b>, Cartesian2d<RangedCoordf64, RangedCoordf64>>;
+
+const PALETTE: [RGBColor; 12] = [
+    RGBColor(31, 119, 180),
+    RGBColor(214, 39, 40),
+    RGBColor(44, 160, 44),
+    RGBColor(148, 103, 189),
+    RGBColor(255, 127, 14),
+    RGBColor(140, 86, 75),
+    RGBColor(227, 119, 194),
+    RGBColor(23, 190, 207),
+    RGBColor(188, 189, 34),
+    RGBColor(0, 0, 128),
+    RGBColor(128, 0, 0),
+    RGBColor(70, 70, 70),
+];
+const GREY: RGBColor = RGBColor(150, 150, 150);
+const FONT: &str = "sans-serif";
+
+fn color(i: usize) -> RGBColor {
+    PALETTE[i % PALETTE.len()]
+}
+
+impl Chart {
+    fn new(title: &str, x_desc: &str, y_desc: &str, x: Range<f64>, y: Range<f64>) -> Chart {
+        Chart {
+            title: title.to_string(),
+            x_desc: x_desc.to_string(),
+            y_desc: y_desc.to_string(),
+            x,
+            y,
+            curves: Vec::new(),
+            shade: Vec::new(),
+            shade_label: String::new(),
+            marks: Vec::new(),
+            polar: None,
+            legend: SeriesLabelPosition::UpperRight,
+        }
+    }
+
+    /// A polar chart of radius up to `r_max` over θ in [0°, `theta_max`°] (θ from the vertical).
+    fn polar(title: &str, unit: &str, r_max: f64, theta_max: f64) -> Chart {
+        let x_max = r_max * theta_max.to_radians().sin().max(0.0) * 1.02;
+        let mut c = Chart::new(
+            title,
+            &format!("s sin θ ({unit})"),
+            &format!("s cos θ ({unit})"),
+            -0.02 * r_max..x_max.max(0.3 * r_max),
+            -0.02 * r_max..r_max * 1.04,
+        );
+        c.polar = Some((r_max, 10.0));
+        c
+    }
+
+    fn add(&mut self, curve: Curve) {
+        self.curves.push(curve);
+    }
+
+    /// Adds a polar series (θ in degrees, s), keeping points with s up to the grid radius.
+    fn add_polar(&mut self, s: &Series, color: RGBColor, stroke: Stroke) {
+        let r_max = self.polar.map_or(f64::INFINITY, |(r, _)| r);
+        let x_max = self.x.end;
+        let points = s
+            .points
+            .iter()
+            .filter(|(_, r)| r.is_finite() && *r <= r_max * 1.001)
+            .map(|&(t, r)| (r * t.to_radians().sin(), r * t.to_radians().cos()))
+            .filter(|(x, _)| *x <= x_max)
+            .collect();
+        self.add(Curve::new(s.name.clone(), points, color, stroke));
+    }
+
+    fn mark(&mut self, at: (f64, f64), text: impl Into<String>) {
+        self.marks.push(Mark { at, text: text.into(), offset: (6, -18) });
+    }
+
+    fn mark_at(&mut self, at: (f64, f64), text: impl Into<String>, offset: (i32, i32)) {
+        self.marks.push(Mark { at, text: text.into(), offset });
+    }
+
+    /// Adds `points` as one curve per run without a gap: consecutive points more than
+    /// `max_gap` apart in x are not joined (only the first piece is in the legend).
+    fn add_pieces(
+        &mut self,
+        label: &str,
+        points: &[(f64, f64)],
+        max_gap: f64,
+        color: RGBColor,
+        stroke: Stroke,
+    ) {
+        let mut piece: Vec<(f64, f64)> = Vec::new();
+        let mut first = true;
+        for &p in points {
+            if piece.last().is_some_and(|q| p.0 - q.0 > max_gap) {
+                self.add(Curve::new(
+                    if first { label } else { "" },
+                    std::mem::take(&mut piece),
+                    color,
+                    stroke,
+                ));
+                first = false;
+            }
+            piece.push(p);
+        }
+        if !piece.is_empty() {
+            self.add(Curve::new(if first { label } else { "" }, piece, color, stroke));
+        }
+    }
+
+    /// Pixel size: 900 wide, height from the axis ranges for a polar chart (equal scales).
+    fn size(&self) -> (u32, u32) {
+        match self.polar {
+            Some(_) => {
+                let ratio = (self.y.end - self.y.start) / (self.x.end - self.x.start);
+                let h = (820.0 * ratio + 140.0).clamp(500.0, 1100.0);
+                (900, h as u32)
+            }
+            None => (900, 620),
+        }
+    }
+
+    /// Draws the chart as an SVG document.
+    pub fn render(&self) -> Result<String> {
+        let mut svg = String::new();
+        {
+            let root = SVGBackend::with_string(&mut svg, self.size()).into_drawing_area();
+            root.fill(&WHITE).map_err(|e| anyhow!("{e}"))?;
+            self.draw_on(&root).map_err(|e| anyhow!("cannot draw `{}`: {e}", self.title))?;
+            root.present().map_err(|e| anyhow!("{e}"))?;
+        }
+        Ok(svg)
+    }
+
+    fn draw_on(&self, root: &DrawingArea<SVGBackend<'_>, Shift>) -> DrawResult {
+        let mut chart = ChartBuilder::on(root)
+            .caption(&self.title, (FONT, 21))
+            .margin(16)
+            .x_label_area_size(52)
+            .y_label_area_size(70)
+            .build_cartesian_2d(self.x.clone(), self.y.clone())?;
+        let mut mesh = chart.configure_mesh();
+        mesh.x_desc(self.x_desc.as_str())
+            .y_desc(self.y_desc.as_str())
+            .axis_desc_style((FONT, 17))
+            .label_style((FONT, 14))
+            .light_line_style(WHITE.mix(0.0));
+        if self.polar.is_some() {
+            mesh.disable_mesh();
+        }
+        mesh.draw()?;
+        if let Some((r_max, step)) = self.polar {
+            self.draw_polar_grid(&mut chart, r_max, step)?;
+        }
+        if !self.shade.is_empty() {
+            let fill = RGBColor(120, 200, 120).mix(0.35).filled();
+            let series = chart.draw_series(self.shade.iter().map(|r| Rectangle::new(*r, fill)))?;
+            if !self.shade_label.is_empty() {
+                series
+                    .label(self.shade_label.as_str())
+                    .legend(move |(x, y)| Rectangle::new([(x, y - 6), (x + 20, y + 6)], fill));
+            }
+        }
+        for c in &self.curves {
+            let style = c.color.stroke_width(2);
+            let series = match c.stroke {
+                Stroke::Solid => chart.draw_series(LineSeries::new(c.points.clone(), style))?,
+                Stroke::Dashed => {
+                    chart.draw_series(DashedLineSeries::new(c.points.clone(), 9, 6, style))?
+                }
+                Stroke::Dotted => {
+                    chart.draw_series(DashedLineSeries::new(c.points.clone(), 2, 5, style))?
+                }
+                Stroke::Points => chart
+                    .draw_series(c.points.iter().map(|p| Circle::new(*p, 2, c.color.filled())))?,
+            };
+            if !c.label.is_empty() {
+                let (color, stroke) = (c.color, c.stroke);
+                series.label(c.label.as_str()).legend(move |(x, y)| {
+                    let style = color.stroke_width(2);
+                    // One element type for every stroke: a dot and up to three dashes.
+                    let (dot, dashes): (bool, &[(i32, i32)]) = match stroke {
+                        Stroke::Points => (true, &[]),
+                        Stroke::Solid => (false, &[(0, 20)]),
+                        Stroke::Dashed => (false, &[(0, 8), (12, 20)]),
+                        Stroke::Dotted => (false, &[(0, 3), (8, 11), (16, 19)]),
+                    };
+                    let seg = |k: usize| {
+                        let pts = dashes.get(k).map_or(Vec::new(), |&(a, b)| vec![(a, 0), (b, 0)]);
+                        PathElement::new(pts, style)
+                    };
+                    let dot_style = if dot { color.filled() } else { color.mix(0.0).filled() };
+                    EmptyElement::at((x, y))
+                        + Circle::new((10, 0), 3, dot_style)
+                        + seg(0)
+                        + seg(1)
+                        + seg(2)
+                });
+            }
+        }
+        chart.draw_series(self.marks.iter().map(|m| {
+            EmptyElement::at(m.at)
+                + Circle::new((0, 0), 4, BLACK.filled())
+                + Text::new(m.text.clone(), m.offset, (FONT, 15))
+        }))?;
+        chart
+            .configure_series_labels()
+            .position(self.legend.clone())
+            .background_style(WHITE.mix(0.9))
+            .border_style(BLACK.mix(0.6))
+            .label_font((FONT, 14))
+            .draw()?;
+        Ok(())
+    }
+
+    fn draw_polar_grid(&self, chart: &mut Context<'_, '_>, r_max: f64, step: f64) -> DrawResult {
+        let grid = GREY.mix(0.5).stroke_width(1);
+        let theta_max = (self.x.end / r_max).clamp(-1.0, 1.0).asin().to_degrees().max(step);
+        let ring_step = nice_step(r_max);
+        let mut r = ring_step;
+        while r <= r_max * 1.0001 {
+            let arc: Vec<(f64, f64)> = (0..=90)
+                .map(|k| (k as f64).to_radians())
+                .map(|t| (r * t.sin(), r * t.cos()))
+                .collect();
+            let arc: Vec<(f64, f64)> = arc.into_iter().filter(|(x, _)| *x <= self.x.end).collect();
+            chart.draw_series(LineSeries::new(arc, grid))?;
+            chart.draw_series(std::iter::once(Text::new(
+                format!("s = {}", trim(r)),
+                (0.015 * r_max, r - 0.035 * r_max),
+                (FONT, 12).into_font().color(&GREY),
+            )))?;
+            r += ring_step;
+        }
+        let mut t = step;
+        while t <= 90.0 + 1e-9 {
+            let (sx, cy) = (t.to_radians().sin(), t.to_radians().cos());
+            chart.draw_series(LineSeries::new(vec![(0.0, 0.0), (r_max * sx, r_max * cy)], grid))?;
+            if t <= theta_max + 1e-9 {
+                chart.draw_series(std::iter::once(Text::new(
+                    format!("{t:.0}°"),
+                    (1.01 * r_max * sx, 1.01 * r_max * cy),
+                    (FONT, 13).into_font().color(&GREY),
+                )))?;
+            }
+            t += step;
+        }
+        Ok(())
+    }
+}
+
+fn nice_step(r_max: f64) -> f64 {
+    let raw = r_max / 6.0;
+    let p = 10f64.powf(raw.log10().floor());
+    [1.0, 2.0, 2.5, 5.0, 10.0].iter().map(|m| m * p).find(|s| *s >= raw).unwrap_or(raw)
+}
+
+fn trim(x: f64) -> String {
+    let s = format!("{x:.2}");
+    s.trim_end_matches('0').trim_end_matches('.').to_string()
+}
+
+const RATE_UNIT: &str = "unit √(g/R)";
+
+fn fig_3(_: &WhippleParams) -> Result<String> {
+    let series = hoop_discussion::figure_3();
+    let sp = hoop_discussion::special_points();
+    let mut c = Chart::new(
+        "Memoir fig. 3 — hoop: (ℰ), (S1), (S) in the plane x = cos θ, y = s²",
+        "x = cos θ",
+        &format!("y = s² ({RATE_UNIT} squared)"),
+        0.48..1.02,
+        0.0..0.6,
+    );
+    let strokes = [Stroke::Solid, Stroke::Dashed, Stroke::Solid];
+    for (i, s) in series.iter().enumerate() {
+        let pts = s.points.iter().copied().filter(|(_, y)| *y <= 0.6).collect();
+        c.add(Curve::new(s.name.clone(), pts, color(i), strokes[i % 3]));
+    }
+    for (name, p) in [("A", sp.a), ("B", sp.b), ("D", sp.d), ("F", sp.f)] {
+        c.mark(p, name);
+    }
+    c.mark_at((sp.vertical.x, sp.vertical.y), "vertical tangent of (S)", (-170, 4));
+    c.legend = SeriesLabelPosition::UpperLeft;
+    c.render()
+}
+
+/// The polar hoop figures: (ℰ) and (S) solid, n-curves dashed, other curves dotted.
+fn polar_hoop(title: &str, series: &[Series], r_max: f64) -> Result<String> {
+    let mut c = Chart::polar(title, RATE_UNIT, r_max, 70.0);
+    for (i, s) in series.iter().enumerate() {
+        let stroke = if s.name.starts_with("n =") {
+            Stroke::Dashed
+        } else if s.name.starts_with("D =") {
+            Stroke::Dotted
+        } else {
+            Stroke::Solid
+        };
+        c.add_polar(s, color(i), stroke);
+    }
+    c.legend = SeriesLabelPosition::UpperRight;
+    c.render()
+}
+
+fn fig_4(_: &WhippleParams) -> Result<String> {
+    polar_hoop(
+        "Memoir fig. 4 — hoop: curves n = const, D = ±1/2, (ℰ), (S)",
+        &hoop_discussion::figure_4(),
+        2.0,
+    )
+}
+
+fn fig_4_bis(_: &WhippleParams) -> Result<String> {
+    polar_hoop(
+        "Memoir fig. 4 bis — hoop: walking and pivoting, (N)",
+        &hoop_discussion::figure_4_bis(),
+        2.0,
+    )
+}
+
+fn fig_7(_: &WhippleParams) -> Result<String> {
+    let series = unicycle_discussion::figure_7();
+    let mut c =
+        Chart::polar("Memoir fig. 7 — unicycle (h/R = 2.5): steady states", RATE_UNIT, 2.6, 60.0);
+    for (i, s) in series.iter().enumerate() {
+        let stroke = if s.name.starts_with("n =") {
+            Stroke::Dashed
+        } else if s.name.starts_with("s =") {
+            Stroke::Dotted
+        } else {
+            Stroke::Solid
+        };
+        c.add_polar(s, color(i), stroke);
+    }
+    let a = unicycle_discussion::asymptote_deg();
+    let ray = Series {
+        name: format!("asymptotic direction of (N), θ = {a:.1}°"),
+        coords: unicycle_discussion::POLAR,
+        points: vec![(a, 0.0), (a, 2.6)],
+    };
+    c.add_polar(&ray, BLACK, Stroke::Dashed);
+    c.legend = SeriesLabelPosition::LowerRight;
+    c.render()
+}
+
+fn fig_9(_: &WhippleParams) -> Result<String> {
+    let series = unicycle_discussion::figure_9();
+    let (r1, r2) = unicycle_discussion::first_member_roots();
+    let mut c = Chart::new(
+        "Memoir fig. 9 — unicycle (h/R = 2.5): first member of the reality condition",
+        "θ (degrees)",
+        "first member (dimensionless)",
+        0.0..72.0,
+        -1.3..1.5,
+    );
+    c.add(Curve::new(series[0].name.clone(), series[0].points.clone(), color(0), Stroke::Solid));
+    c.add(Curve::new(series[1].name.clone(), series[1].points.clone(), color(1), Stroke::Points));
+    c.add(Curve::new("", vec![(0.0, 0.0), (72.0, 0.0)], BLACK, Stroke::Solid));
+    c.mark((r1, 0.0), format!("{r1:.2}°"));
+    c.mark((r2, 0.0), format!("{r2:.2}°"));
+    c.legend = SeriesLabelPosition::UpperRight;
+    c.render()
+}
+
+fn fig_eigenvalues(p: &WhippleParams) -> Result<String> {
+    let bike = Whipple::new(p.clone());
+    let v_max = 10.0;
+    let (mut re, mut im) = (Vec::new(), Vec::new());
+    for k in 0..=400 {
+        let v = v_max * k as f64 / 400.0;
+        for e in bike.eigenvalues(v) {
+            re.push((v, e.re));
+            if e.im != 0.0 {
+                im.push((v, e.im.abs()));
+            }
+        }
+    }
+    let mut c = Chart::new(
+        "Benchmark bicycle: eigenvalues of the linearised equations",
+        "forward speed v (m/s)",
+        "eigenvalue (1/s)",
+        0.0..v_max,
+        -10.0..10.0,
+    );
+    let window = bike.stability_window();
+    for &(a, b) in &window.stable {
+        c.shade.push([(a, -10.0), (b.min(v_max), 10.0)]);
+    }
+    c.shade_label = match window.stable.first() {
+        Some((a, b)) => format!("stable: {a:.3} < v < {b:.3} m/s"),
+        None => "no stable speed".to_string(),
+    };
+    re.retain(|(_, y)| (-10.0..=10.0).contains(y));
+    im.retain(|(_, y)| (-10.0..=10.0).contains(y));
+    c.add(Curve::new("Re λ", re, color(0), Stroke::Points));
+    c.add(Curve::new("|Im λ|", im, color(1), Stroke::Points));
+    c.add(Curve::new("", vec![(0.0, 0.0), (v_max, 0.0)], BLACK, Stroke::Solid));
+    c.legend = SeriesLabelPosition::LowerRight;
+    c.render()
+}
+
+/// The stable window of `p` with parameter `key` set to each value of `values` (given in the
+/// plotted unit, multiplied by `scale` for the model).
+fn window_sweep(
+    p: &WhippleParams,
+    key: &str,
+    values: &[f64],
+    scale: f64,
+    title: &str,
+    x_desc: &str,
+) -> Result<String> {
+    let index = PARAM_NAMES.iter().position(|k| *k == key).ok_or_else(|| anyhow!("no {key}"))?;
+    let v_max = 12.0;
+    let step = values.get(1).zip(values.first()).map_or(1.0, |(b, a)| b - a);
+    let mut c = Chart::new(
+        title,
+        x_desc,
+        "forward speed v (m/s)",
+        values[0]..values[values.len() - 1],
+        0.0..v_max,
+    );
+    let (mut weave, mut capsize) = (Vec::new(), Vec::new());
+    for &x in values {
+        let mut vals = *p.values();
+        vals[index] = x * scale;
+        let Ok(params) = WhippleParams::from_values(vals) else { continue };
+        let w = Whipple::new(params).stability_window();
+        if let Some(v) = w.weave_speed.filter(|v| *v <= v_max) {
+            weave.push((x, v));
+        }
+        if let Some(v) = w.capsize_speed.filter(|v| *v <= v_max) {
+            capsize.push((x, v));
+        }
+        for (a, b) in w.stable {
+            let (lo, hi) =
+                ((x - step / 2.0).max(values[0]), (x + step / 2.0).min(values[values.len() - 1]));
+            c.shade.push([(lo, a.min(v_max)), (hi, b.min(v_max))]);
+        }
+    }
+    c.shade_label = "stable speeds".to_string();
+    // Parameter values without a weave or capsize speed below v_max leave gaps.
+    c.add_pieces("weave speed", &weave, 1.5 * step, color(0), Stroke::Solid);
+    c.add_pieces("capsize speed", &capsize, 1.5 * step, color(1), Stroke::Dashed);
+    let here = p.values()[index] / scale;
+    c.add(Curve::new(
+        format!("model value {}", trim(here)),
+        vec![(here, 0.0), (here, v_max)],
+        BLACK,
+        Stroke::Dotted,
+    ));
+    c.legend = SeriesLabelPosition::UpperRight;
+    c.render()
+}
+
+fn fig_window_trail(p: &WhippleParams) -> Result<String> {
+    let values: Vec<f64> = (0..=40).map(|k| 0.005 * k as f64).collect();
+    window_sweep(
+        p,
+        "c",
+        &values,
+        1.0,
+        "Benchmark bicycle: stable speeds against the trail c",
+        "trail c (m)",
+    )
+}
+
+fn fig_window_tilt(p: &WhippleParams) -> Result<String> {
+    let values: Vec<f64> = (0..=40).map(|k| k as f64).collect();
+    window_sweep(
+        p,
+        "lambda",
+        &values,
+        std::f64::consts::PI / 180.0,
+        "Benchmark bicycle: stable speeds against the steer axis tilt λ",
+        "steer axis tilt λ (degrees; head angle 90° − λ)",
+    )
+}
