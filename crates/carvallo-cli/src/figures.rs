@@ -48,10 +48,10 @@ pub fn all() -> Vec<Figure> {
         Figure { file: "fig04_hoop_skid.svg", title: "Memoir fig. 4: hoop, skid tendency (n° 15–16)", caption: "Polar diagram (angle θ from the vertical, radius s in √(g/R)): the curves n = const of (E′), the curves D = ±1/2 of (D″), (ℰ) and (S).", draw: fig_4 },
         Figure { file: "fig04bis_hoop_walking.svg", title: "Memoir fig. 4 bis: hoop, walking and pivoting (n° 17)", caption: "Polar diagram: (ℰ), (S), the separation (N) between walking and pivoting, and the curves n2 = −0.1, −0.3, −0.5.", draw: fig_4_bis },
         Figure { file: "fig07_unicycle_diagram.svg", title: "Memoir fig. 7: unicycle steady states, h/R = 2.5 (n° 32, 41)", caption: "Polar diagram (angle θ from the vertical, radius s in √(g/R)): (ℰ), the curves n = const of (E), the separation (N) with its asymptote, the branch θ < 16° of the stability limit (S) of n° 41, and the practical limits s = 1 and 20 km/h.", draw: fig_7 },
-        Figure { file: "fig09_unicycle_first_member.svg", title: "Memoir fig. 9: unicycle, reality condition of S(n²) (n° 41)", caption: "The first member 1/cos θ − (h/R) sin²θ cos θ − √(h/R) sin 2θ from the generated trinomial, against θ, with the memoir's table; it vanishes at 16.0° and 62.7°.", draw: fig_9 },
+        Figure { file: "fig09_unicycle_first_member.svg", title: "Memoir fig. 9: unicycle, reality condition of S(n²) (n° 41)", caption: "The first member 1/cos θ − (h/R) sin²θ cos θ − √(h/R) sin 2θ from the generated trinomial, against θ, with the memoir's table (n° 41); the derived zeros (marked) are 16.32° and 62.82°, which the memoir reads off its graph as 16°,0 and 62°,7.", draw: fig_9 },
         Figure { file: "benchmark_eigenvalues.svg", title: "Benchmark bicycle: eigenvalues against speed", caption: "Real and imaginary parts of the four eigenvalues of the linearised Carvallo–Whipple bicycle (Meijaard et al. 2007 parameters unless --model is given) against the forward speed; the stable range is shaded.", draw: fig_eigenvalues },
         Figure { file: "benchmark_window_trail.svg", title: "Benchmark bicycle: stable speed range against the trail", caption: "Weave and capsize speeds and the stable range (shaded) as the trail c is varied, the other parameters fixed.", draw: fig_window_trail },
-        Figure { file: "benchmark_window_tilt.svg", title: "Benchmark bicycle: stable speed range against the steer axis tilt", caption: "Weave and capsize speeds and the stable range (shaded) as the steer axis tilt λ (head angle 90° − λ) is varied, the other parameters fixed.", draw: fig_window_tilt },
+        Figure { file: "benchmark_window_tilt.svg", title: "Benchmark bicycle: stable speed range against the steer axis tilt", caption: "Weave and capsize speeds and the stable range (shaded) as the steer axis tilt λ (head angle 90° − λ) is varied in steps of 1°, the other parameters fixed. Below about 9.5° the benchmark has no stable speed; the curves there are the lowest roots of a0 (capsize) and of the Hurwitz determinant H3 (weave), which bound no stable range, and the coarse step does not resolve their fast variation near λ = 0.", draw: fig_window_tilt },
     ]
 }
 
@@ -595,4 +595,38 @@ fn fig_window_tilt(p: &WhippleParams) -> Result<String> {
         "Benchmark bicycle: stable speeds against the steer axis tilt λ",
         "steer axis tilt λ (degrees; head angle 90° − λ)",
     )
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn figure_files_are_distinct_svgs_and_the_missing_ones_are_named() {
+        let figs = all();
+        let mut files: Vec<&str> = figs.iter().map(|f| f.file).collect();
+        files.sort_unstable();
+        files.dedup();
+        assert_eq!(files.len(), figs.len(), "two figures share a file name");
+        assert!(files.iter().all(|f| f.ends_with(".svg") && !f.contains('/')));
+        for memoir in ["fig. 11", "fig. 13"] {
+            assert!(MISSING.iter().any(|m| m.figure.contains(memoir)), "{memoir} not listed");
+        }
+    }
+
+    #[test]
+    fn a_chart_draws_its_axes_legend_and_curves_as_svg_text_and_paths() {
+        let mut c = Chart::new("title t", "x (m)", "y (s)", 0.0..1.0, 0.0..1.0);
+        c.add(Curve::new("line a", vec![(0.0, 0.0), (1.0, 1.0)], color(0), Stroke::Solid));
+        c.add_pieces("pieces b", &[(0.0, 0.5), (0.1, 0.5), (0.9, 0.5)], 0.2, color(1), Stroke::Dashed);
+        c.mark((0.5, 0.5), "mark m");
+        let svg = c.render().unwrap();
+        for text in ["title t", "x (m)", "y (s)", "line a", "pieces b", "mark m"] {
+            assert!(svg.contains(text), "no text `{text}` in the SVG");
+        }
+        // The gap splits "pieces b" into two curves, only the first in the legend.
+        assert_eq!(c.curves.len(), 3);
+        assert_eq!(svg.matches("pieces b").count(), 1);
+        assert!(svg.matches("<text").count() >= 6 && svg.contains("<polyline"));
+    }
 }

@@ -6,6 +6,8 @@
 //! parameters ([`error`]) and compares every derived formula with the memoir's printed one
 //! ([`report`]).
 
+#![warn(missing_docs)]
+
 pub use carvallo_ir as ir;
 pub use carvallo_macros::scene;
 

@@ -309,7 +309,7 @@ pub fn render_markdown(entries: &[Entry], figures_section: &str) -> String {
         for e in list {
             let _ = writeln!(
                 out,
-                "- **n° {}, {}**: memoir {}, derived {} ({}). {}",
+                "- **n° {}, {}**: memoir {}, derived {}; difference {}. {}",
                 e.section,
                 e.quantity.replace('\n', " "),
                 memoir_text(&e.memoir),

@@ -16,9 +16,10 @@
 //!   $s = 2{,}58$ (20 km/h with $R = 0{,}5$ m).
 //! * Figure 9 (n° 41) plots the first member
 //!   $\frac{1}{\cos\theta} - \frac{h}{R}\sin^2\theta\cos\theta - \sqrt{h/R}\,\sin 2\theta$
-//!   of the reality condition of the trinomial $S(n^2)$ against $\theta$; it vanishes at
-//!   $\theta = 16{,}0°$ and $62{,}7°$. Here it is $-b - 2\sqrt{ac}$ for the coefficients of the
-//!   generated trinomial (`trinomial_n41`), so it is the derived curve, not the memoir's formula.
+//!   of the reality condition of the trinomial $S(n^2)$ against $\theta$; the memoir reads its
+//!   zeros as $16{,}0°$ and $62{,}7°$ (they are $16{,}32°$ and $62{,}82°$). Here it is
+//!   $-b - 2\sqrt{ac}$ for the coefficients of the generated trinomial (`trinomial_n41`), so it
+//!   is the derived curve, not the memoir's formula.
 
 use crate::hoop_discussion::Series;
 use crate::report_unicycle::{
@@ -75,7 +76,8 @@ pub fn stability_limit(theta_deg: f64) -> Option<[(f64, f64); 2]> {
     }))
 }
 
-/// The lower root of the first member of n° 41 (the memoir's 16°,0), by bisection.
+/// The two zeros of the first member of n° 41 in degrees (the memoir's 16°,0 and 62°,7), by
+/// bisection.
 pub fn first_member_roots() -> (f64, f64) {
     (bisect(first_member_41, 5.0, 30.0), bisect(first_member_41, 50.0, 70.0))
 }
@@ -182,7 +184,7 @@ mod tests {
     }
 
     #[test]
-    fn figure_9_crosses_zero_where_the_memoir_says() {
+    fn figure_9_zeros_are_those_of_the_printed_closed_form() {
         // Independent path: the memoir's printed closed form, bisected directly. (Its zeros
         // are 16.32° and 62.82°; the memoir's 16°,0 and 62°,7 are slide-rule values.)
         let k = H_OVER_R;
