@@ -618,7 +618,13 @@ mod tests {
     fn a_chart_draws_its_axes_legend_and_curves_as_svg_text_and_paths() {
         let mut c = Chart::new("title t", "x (m)", "y (s)", 0.0..1.0, 0.0..1.0);
         c.add(Curve::new("line a", vec![(0.0, 0.0), (1.0, 1.0)], color(0), Stroke::Solid));
-        c.add_pieces("pieces b", &[(0.0, 0.5), (0.1, 0.5), (0.9, 0.5)], 0.2, color(1), Stroke::Dashed);
+        c.add_pieces(
+            "pieces b",
+            &[(0.0, 0.5), (0.1, 0.5), (0.9, 0.5)],
+            0.2,
+            color(1),
+            Stroke::Dashed,
+        );
         c.mark((0.5, 0.5), "mark m");
         let svg = c.render().unwrap();
         for text in ["title t", "x (m)", "y (s)", "line a", "pieces b", "mark m"] {

@@ -115,7 +115,7 @@ fn apply(text: &str, m: &Mutation) -> String {
 
 // Case counts keep the whole file under a few seconds in debug builds.
 proptest! {
-    #![proptest_config(ProptestConfig { cases: 1000, ..ProptestConfig::default() })]
+    #![proptest_config(ProptestConfig { cases: 2000, ..ProptestConfig::default() })]
 
     #[test]
     fn arbitrary_strings_do_not_panic(s in any::<String>()) {

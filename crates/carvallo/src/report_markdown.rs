@@ -339,6 +339,46 @@ mod tests {
         assert_eq!(division_of("benchmark"), None);
     }
 
+    fn entry(section: &str, verdict: Verdict, note: &str) -> Entry {
+        Entry {
+            section: section.to_string(),
+            quantity: format!("q {section}"),
+            memoir: Memoir::Number(1.0),
+            derived: Derived::Number(1.5),
+            rel_diff: Some(1.0 / 3.0),
+            verdict,
+            note: note.to_string(),
+        }
+    }
+
+    #[test]
+    fn entries_are_grouped_by_the_outline_and_explained_in_the_errata() {
+        let entries = [
+            entry("32", Verdict::MemoirError, "slip | in n° 32"),
+            entry("4", Verdict::Agrees, "exact"),
+            entry("benchmark", Verdict::Agrees, "modern"),
+            entry("17 bis", Verdict::Rounding, "slide rule"),
+        ];
+        let md = render_markdown(&entries, "## Figures\n\nnone");
+        let at = |text: &str| md.find(text).unwrap_or_else(|| panic!("no `{text}` in\n{md}"));
+        // Outline order: n° 4, 17 bis, 32, then the entries without a n°.
+        assert!(at("§ I — cinématique du cerceau") < at("§ V — complément pratique"));
+        assert!(at("§ V — complément pratique") < at("§ III — équilibre du monocycle"));
+        assert!(at("§ III — équilibre du monocycle") < at(BEYOND));
+        assert!(at("## Figures") < at("## Concordance") && at("## Concordance") < at("## Errata"));
+        assert!(md.contains(
+            "4 entries: 2 agrees, 1 memoir-error, 0 ocr, 1 rounding, 0 derivation-differs."
+        ));
+        assert!(md.contains(
+            "| 32 | q 32 | 1 | 1.5 | 3.3e-1 (Δ = 0.5) | memoir-error | slip \\| in n° 32 |"
+        ));
+        // The errata list the three non-agreeing verdict groups with their entries only.
+        let errata = &md[at("## Errata")..];
+        assert!(errata.contains("- **n° 32, q 32**: memoir 1, derived 1.5; difference 3.3e-1 (Δ = 0.5). slip | in n° 32"));
+        assert!(errata.contains("### `rounding` (1)") && errata.contains("### `ocr` (0)"));
+        assert!(!errata.contains("exact") && !errata.contains("modern"));
+    }
+
     #[test]
     fn cells_cannot_break_the_table() {
         assert_eq!(cell("a | b\nc"), "a \\| b c");
