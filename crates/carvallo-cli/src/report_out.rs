@@ -64,11 +64,18 @@ pub fn check_out_dir(dir: &Path) -> Result<PathBuf, BadInput> {
     Ok(parent)
 }
 
-/// Draws a progress bar `[####    ] k/n what` on standard error, if it is a terminal.
+/// Draws a progress bar `[####    ] k/n what` on standard error, if it is a terminal; the
+/// line is ended when the work stops, also early by an error.
 struct Progress {
     total: usize,
     done: usize,
     on: bool,
+}
+
+impl Drop for Progress {
+    fn drop(&mut self) {
+        self.finish();
+    }
 }
 
 impl Progress {
@@ -76,8 +83,8 @@ impl Progress {
         Progress { total, done: 0, on: std::io::stderr().is_terminal() }
     }
 
-    fn step(&mut self, what: &str) {
-        self.done += 1;
+    /// Shows `what` as the work in progress, with the steps done so far.
+    fn start(&self, what: &str) {
         if self.on {
             let width = 30;
             let filled = width * self.done / self.total.max(1);
@@ -88,9 +95,14 @@ impl Progress {
         }
     }
 
-    fn finish(&self) {
+    fn done(&mut self) {
+        self.done += 1;
+    }
+
+    fn finish(&mut self) {
         if self.on {
             let _ = writeln!(std::io::stderr().lock());
+            self.on = false;
         }
     }
 }
@@ -114,14 +126,17 @@ pub fn write_report(dir: &Path, params: &WhippleParams, model: &str) -> Result<V
     let parent = check_out_dir(dir)?;
     let figs = figures::all();
     let mut progress = Progress::new(figs.len() + 2);
+    progress.start("concordance");
     let entries = carvallo::report::all_entries();
-    progress.step("concordance");
+    progress.done();
     let mut files: Vec<(String, String)> = Vec::new();
     for f in &figs {
+        progress.start(f.file);
         let svg = (f.draw)(params).with_context(|| format!("cannot draw {}", f.file))?;
         files.push((f.file.to_string(), svg));
-        progress.step(f.file);
+        progress.done();
     }
+    progress.start("writing");
     let mut md = carvallo::report_markdown::render_markdown(&entries, &figures_section(&figs));
     if model != "benchmark" {
         md.push_str(&format!("The bicycle figures use the parameter file `{model}`.\n"));
@@ -134,9 +149,10 @@ pub fn write_report(dir: &Path, params: &WhippleParams, model: &str) -> Result<V
     if result.is_err() {
         let _ = std::fs::remove_dir_all(&tmp);
     }
-    result?;
-    progress.step("written");
+    progress.done();
+    progress.start(if result.is_ok() { "written" } else { "failed" });
     progress.finish();
+    result?;
     Ok(files.into_iter().map(|(n, _)| n).collect())
 }
 
