@@ -63,7 +63,8 @@ fn parse(args: &[String]) -> Result<Command, String> {
     }
 }
 
-fn load(model: &str) -> Result<WhippleParams, String> {
+/// The bicycle `benchmark` or the one in the parameter file `model`.
+pub(crate) fn load(model: &str) -> Result<WhippleParams, String> {
     if model == "benchmark" {
         return Ok(WhippleParams::benchmark());
     }
