@@ -278,27 +278,35 @@ pub fn graeffe_moduli(c: &[f64; 5]) -> [f64; 4] {
     out
 }
 
-/// The largest relative error $\max_i |z_i - w_{\pi(i)}| / |w_{\pi(i)}|$ over the best
-/// matching $\pi$ of computed roots `got` to reference roots `want` (all 24 permutations).
+/// The largest relative error $\max_i |z_i - w_{\pi(i)}| / \max(|w_{\pi(i)}|, \varepsilon\rho)$
+/// over the best matching $\pi$ of computed roots `got` to reference roots `want` (all 24
+/// permutations), $\rho$ the largest reference modulus: a root smaller than $\varepsilon\rho$
+/// (such as the root near zero at the capsize speed) is measured relative to $\varepsilon\rho$,
+/// the resolution any method has there.
 pub fn max_rel_error(got: &[C64; 4], want: &[C64; 4]) -> f64 {
+    let floor = f64::EPSILON * want.iter().map(|z| z.norm()).fold(0.0, f64::max);
     permutations()
         .iter()
         .map(|p| {
             (0..4)
-                .map(|i| (got[i] - want[p[i]]).norm() / want[p[i]].norm().max(f64::MIN_POSITIVE))
+                .map(|i| {
+                    (got[i] - want[p[i]]).norm()
+                        / want[p[i]].norm().max(floor).max(f64::MIN_POSITIVE)
+                })
                 .fold(0.0, f64::max)
         })
         .fold(f64::INFINITY, f64::min)
 }
 
 /// The largest relative error of moduli sorted in decreasing order against the reference
-/// roots' moduli.
+/// roots' moduli (with the floor of [`max_rel_error`]).
 pub fn max_rel_error_moduli(got: &[f64; 4], want: &[C64; 4]) -> f64 {
     let mut g = *got;
     let mut w = want.map(|z| z.norm());
     g.sort_by(|a, b| b.total_cmp(a));
     w.sort_by(|a, b| b.total_cmp(a));
-    (0..4).map(|i| (g[i] - w[i]).abs() / w[i].max(f64::MIN_POSITIVE)).fold(0.0, f64::max)
+    let floor = f64::EPSILON * w[0];
+    (0..4).map(|i| (g[i] - w[i]).abs() / w[i].max(floor).max(f64::MIN_POSITIVE)).fold(0.0, f64::max)
 }
 
 fn permutations() -> Vec<[usize; 4]> {
