@@ -84,7 +84,41 @@ fn benchmark_speeds_are_within_1e_13_of_the_256_bit_values() {
         eprintln!("{got:.17} vs 256-bit {want:.17}: {rel:.1e}");
         assert!(rel <= 1e-13, "{got} vs {want}");
     }
+    // Random designs: the polished closed form against the 256-bit speeds, and the eigenvalue
+    // route's edges against the same reference.
+    let mut rng = Rng::new(99);
+    let (mut worst_h, mut worst_e, mut worst_both) = (0.0f64, 0.0f64, 0.0f64);
+    for _ in 0..30 {
+        let w = Whipple::new(random_design(&mut rng));
+        let (m, g) = parts(&w);
+        let win = sweep::hurwitz_window(&m, g);
+        let (rw, rc) = reference_speeds(w.params(), (win.weave_speed, win.capsize_speed), 256);
+        for (got, want) in [(win.weave_speed, rw), (win.capsize_speed, rc)] {
+            if let (Some(got), Some(want)) = (got, want) {
+                worst_h = worst_h.max(((got - want) / want).abs());
+            }
+        }
+        let eig = sweep::eigen_window(&m, g, EigenGrid::default()).unwrap();
+        let pairs =
+            [(eig.weave_speed, win.weave_speed, rw), (eig.capsize_speed, win.capsize_speed, rc)];
+        for (got, fast, want) in pairs {
+            if let (Some(got), Some(want)) = (got, want) {
+                if fast.is_some_and(|h| (h - got).abs() < 1e-6 * h) {
+                    worst_e = worst_e.max(((got - want) / want).abs());
+                    worst_both = worst_both.max(((fast.unwrap() - want) / want).abs());
+                }
+            }
+        }
+    }
+    eprintln!(
+        "30 random designs: hurwitz {worst_h:.1e} ({worst_both:.1e} on the speeds the \
+         eigenvalue sweep also finds), eigenvalue sweep {worst_e:.1e}"
+    );
+    assert!(worst_h <= HURWITZ_TOL, "hurwitz {worst_h:e}");
 }
+
+/// The polished closed form's speeds carry only the error of the `f64` matrices.
+const HURWITZ_TOL: f64 = 1e-13;
 
 /// Orlando: $H_3$ also vanishes when two real eigenvalues $\pm r$ pass each other; there
 /// $a_1/a_3 = -r^2 < 0$ and it is not a weave speed.
