@@ -6,7 +6,8 @@
 //! out in double-double arithmetic ([`Dd`]: error-free transformations `two_sum` and
 //! `two_prod`, about 106 significant bits) and every value carries a bound on its absolute
 //! error ([`Bounded`]), propagated operation by operation with the published relative error
-//! bounds of double-double addition ($3u^2$) and multiplication ($7u^2$ taken, conservatively; $u = 2^{-53}$;
+//! bounds of double-double addition ($3u^2$) and multiplication ($7u^2$, the bound of their
+//! DWTimesDW1; $u = 2^{-53}$;
 //! Joldes, Muller, Popescu, ACM TOMS 44, 2017), rounded up. [`classify`] then says
 //! [`Certified::Stable`] only when every Routh–Hurwitz quantity is positive by more than its
 //! bound, [`Certified::Unstable`] when one is negative by more than its bound, and
@@ -45,11 +46,24 @@ fn fast_two_sum(a: f64, b: f64) -> (f64, f64) {
     (s, b - (s - a))
 }
 
-/// `a * b = p + e` exactly (with a fused multiply-add).
+/// Veltkamp's splitting: `a = hi + lo` exactly, each half with at most 26 significant bits
+/// (for $|a| < 2^{996}$).
+#[inline]
+fn split(a: f64) -> (f64, f64) {
+    let c = 134_217_729.0 * a; // 2^27 + 1
+    let hi = c - (c - a);
+    (hi, a - hi)
+}
+
+/// `a * b = p + e` exactly (Dekker's TwoProduct, for $|a|, |b| < 2^{996}$ and no underflow).
+/// Plain multiplications and additions: without a hardware fused multiply-add enabled at
+/// compile time, `f64::mul_add` is a library call and several times slower.
 #[inline]
 pub fn two_prod(a: f64, b: f64) -> (f64, f64) {
     let p = a * b;
-    (p, a.mul_add(b, -p))
+    let (ah, al) = split(a);
+    let (bh, bl) = split(b);
+    (p, ((ah * bh - p) + ah * bl + al * bh) + al * bl)
 }
 
 impl From<f64> for Dd {
@@ -104,7 +118,7 @@ impl Mul for Dd {
     #[inline]
     fn mul(self, o: Dd) -> Dd {
         let (p, e) = two_prod(self.hi, o.hi);
-        let t = self.hi.mul_add(o.lo, self.lo * o.hi);
+        let t = self.hi * o.lo + self.lo * o.hi;
         let (hi, lo) = fast_two_sum(p, e + t);
         Dd { hi, lo }
     }
