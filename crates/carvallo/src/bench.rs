@@ -532,10 +532,11 @@ fn window_rows(cfg: &Config, rows: &mut Vec<Row>) -> (f64, f64, f64, f64, f64) {
         .map(|w| {
             let (m, g) = matrices_of(w);
             let hw = sweep::hurwitz_window(&m, g);
+            let hpw = sweep::hurwitz_window_polished(&m, g);
             let ew = sweep::eigen_window(&m, g, grid);
             let refs =
                 reference_speeds(w.params(), (hw.weave_speed, hw.capsize_speed), REFERENCE_BITS);
-            (hw, ew, refs)
+            (hw, ew, refs, hpw)
         })
         .collect();
     let err = |x: Option<f64>, r: Option<f64>| match (x, r) {
@@ -546,8 +547,15 @@ fn window_rows(cfg: &Config, rows: &mut Vec<Row>) -> (f64, f64, f64, f64, f64) {
     let (mut eh, mut ee, mut missing, mut compared, mut unlabelled) = (0.0f64, 0.0f64, 0, 0, 0);
     let mut eh_common = 0.0f64;
     let mut bench_err = 0.0;
-    for (i, (hw, ew, (rw, rc))) in results.iter().enumerate() {
+    let mut ep = 0.0f64;
+    let mut bench_err_p = 0.0;
+    for (i, (hw, ew, (rw, rc), hpw)) in results.iter().enumerate() {
         let e = err(hw.weave_speed, *rw).max(err(hw.capsize_speed, *rc));
+        let e_p = err(hpw.weave_speed, *rw).max(err(hpw.capsize_speed, *rc));
+        ep = ep.max(e_p);
+        if i == 0 {
+            bench_err_p = e_p;
+        }
         eh = eh.max(e);
         if i == 0 {
             bench_err = e;
@@ -574,6 +582,7 @@ fn window_rows(cfg: &Config, rows: &mut Vec<Row>) -> (f64, f64, f64, f64, f64) {
     }
     let (m, g) = matrices_of(&whipples[0]);
     let t_h = time_ns(cfg.min_time, || sweep::hurwitz_window(black_box(&m), g));
+    let t_hp = time_ns(cfg.min_time, || sweep::hurwitz_window_polished(black_box(&m), g));
     let t_e = time_ns(cfg.min_time, || sweep::eigen_window(black_box(&m), g, grid));
     let t_scan = time_ns(cfg.min_time.min(0.05), || sweep::scan_window(black_box(&m), g));
     let scan = sweep::scan_window(&m, g);
@@ -608,6 +617,15 @@ fn window_rows(cfg: &Config, rows: &mut Vec<Row>) -> (f64, f64, f64, f64, f64) {
             "benchmark bicycle: {bench_err:.1e}; {eh_common:.1e} on the speeds the eigenvalue \
              sweep also reports"
         ),
+    });
+    rows.push(Row {
+        section: "windows",
+        name: name.clone(),
+        method: "hurwitz + double-double polish".into(),
+        ops: None,
+        ns: Some(t_hp),
+        max_rel_err: Some(ep),
+        note: format!("benchmark bicycle: {bench_err_p:.1e}; Whipple::stability_window"),
     });
     rows.push(Row {
         section: "windows",

@@ -17,11 +17,13 @@
 //!
 //! Every boundary of the stable range is therefore $\sqrt u$ for a positive root $u$ of one of
 //! three quadratics and two linear functions: [`hurwitz_window`] solves them in closed form
-//! (the cancellation-free quadratic formula), polishes the roots of $a_0$ and $h$ by two Newton
-//! steps with the coefficients and the polynomial in double-double arithmetic (the `f64`
-//! coefficients of $h$ suffer cancellation: without this the speeds were off by up to 1e-13
-//! relative on random designs), sorts the cuts and tests the Routh–Hurwitz conditions once
-//! between consecutive cuts. No scan: a few hundred flops.
+//! (the cancellation-free quadratic formula), sorts the cuts and tests the Routh–Hurwitz
+//! conditions once between consecutive cuts. No scan: about a hundred flops.
+//! [`hurwitz_window_polished`] also polishes the roots of $a_0$ and $h$ by two Newton steps with
+//! the coefficients and the polynomial in double-double arithmetic: the `f64` coefficients of
+//! $h$ suffer cancellation, and polishing makes the benchmark's speeds 1.5 to 4 times more
+//! accurate (4e-16 and 1.5e-16 instead of 6e-16 and 6e-16 relative) for about five times the
+//! cost.
 //!
 //! The weave speed is the lowest root of $h$ where $H_3$ turns from negative to positive *and*
 //! $a_1/a_3 > 0$: by Orlando's formula $H_3 \propto \prod_{i<j}(\lambda_i + \lambda_j)$ also
@@ -197,11 +199,25 @@ fn polish(c: &[Dd; 3], mut u: f64) -> f64 {
 /// [`Whipple::capsize_speed`](crate::whipple::Whipple::capsize_speed)), the weave speed the
 /// lowest positive root of $H_3$ where it turns positive with $a_1/a_3 > 0$.
 pub fn hurwitz_window(m: &Matrices, g: f64) -> StabilityWindow {
+    window(m, g, false)
+}
+
+/// [`hurwitz_window`] with the roots of $a_0$ and $h$ polished by two Newton steps on the
+/// double-double coefficients (about five times the cost; speeds a few times more accurate when
+/// the `f64` coefficients of $h$ cancel). Used by
+/// [`Whipple::stability_window`](crate::whipple::Whipple::stability_window).
+pub fn hurwitz_window_polished(m: &Matrices, g: f64) -> StabilityWindow {
+    window(m, g, true)
+}
+
+fn window(m: &Matrices, g: f64, polished: bool) -> StabilityWindow {
     let mut p = HurwitzPolys::new(m, g);
-    let (a0_dd, h_dd) = dd_coefficients(m, g);
+    let dd = polished.then(|| dd_coefficients(m, g));
     let (mut a0_roots, n_a0) = positive_roots(p.a0);
-    for u in &mut a0_roots[..n_a0] {
-        *u = polish(&a0_dd, *u);
+    if let Some((a0_dd, _)) = &dd {
+        for u in &mut a0_roots[..n_a0] {
+            *u = polish(a0_dd, *u);
+        }
     }
     let capsize_speed = (n_a0 > 0).then(|| a0_roots[0].sqrt());
     if p.a4 == 0.0 || !p.a4.is_finite() {
@@ -217,8 +233,10 @@ pub fn hurwitz_window(m: &Matrices, g: f64) -> StabilityWindow {
         p.h = p.h.map(|x| -x);
     }
     let (mut h_roots, n_h) = positive_roots(p.h);
-    for u in &mut h_roots[..n_h] {
-        *u = polish(&h_dd, *u);
+    if let Some((_, h_dd)) = &dd {
+        for u in &mut h_roots[..n_h] {
+            *u = polish(h_dd, *u);
+        }
     }
     let weave_speed = h_roots[..n_h]
         .iter()
