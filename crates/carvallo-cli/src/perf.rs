@@ -4,7 +4,7 @@
 //!   evaluation beside the error against a 256-bit reference, measured in the same run, and
 //!   the targets), as text or as one JSON object `{mode, rows, distributions,
 //!   targets}`. `--quick` runs tiny samples (seconds); the default is the full measurement
-//!   ($10^6$ samples and sweep designs, a few minutes on 2 cores).
+//!   ($10^6$ samples and sweep designs, 5 to 15 minutes on a busy 2-core machine).
 //! * `carvallo sweep --model benchmark|FILE.toml --vary NAME=FROM:TO:COUNT
 //!   [--method hurwitz|eigen] [--json]`: the stability window of COUNT designs varying one
 //!   parameter linearly, in parallel, with a progress bar when standard error is a terminal;

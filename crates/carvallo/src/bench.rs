@@ -62,7 +62,8 @@ pub struct Config {
 }
 
 impl Config {
-    /// The full measurement: $10^6$ samples and sweep designs (a few minutes on 2 cores).
+    /// The full measurement: $10^6$ samples and sweep designs (5 to 15 minutes on a busy
+    /// 2-core machine).
     pub fn full() -> Config {
         Config {
             min_time: 0.2,
