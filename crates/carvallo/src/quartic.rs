@@ -154,7 +154,7 @@ fn aberth_start(c: &[f64; 5]) -> [C64; 4] {
     let centre = -c[3] / (4.0 * c[4]);
     let (pc, _) = horner2(c, C64::new(centre, 0.0));
     let mut rho = (pc.norm() / c[4].abs()).powf(0.25);
-    if !(rho > 1e-3 * centre.abs()) || !rho.is_finite() {
+    if rho.is_nan() || rho <= 1e-3 * centre.abs() || !rho.is_finite() {
         rho = 1e-3 * centre.abs().max(1.0);
     }
     std::array::from_fn(|k| {

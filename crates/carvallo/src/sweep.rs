@@ -261,8 +261,7 @@ fn window(m: &Matrices, g: f64, polished: bool) -> StabilityWindow {
     let stable_at = |v: f64| p.at(v).iter().all(|&x| x > 0.0);
     let mut stable: Vec<(f64, f64)> = Vec::new();
     let mut lo = 0.0;
-    for i in 0..=n {
-        let hi = if i < n { cuts[i] } else { f64::INFINITY };
+    for hi in cuts.iter().copied().chain([f64::INFINITY]) {
         if hi > lo {
             let mid = if hi.is_finite() { 0.5 * (lo + hi) } else { 2.0 * lo + 1.0 };
             if stable_at(mid) {
