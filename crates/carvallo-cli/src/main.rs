@@ -11,6 +11,7 @@ use std::process::ExitCode;
 
 mod figures;
 mod report_out;
+mod perf;
 mod whipple;
 
 const HELP: &str = "\
@@ -24,6 +25,10 @@ Usage:
                                 stable speed range of the linearised Carvallo-Whipple bicycle
     carvallo eig --model benchmark|FILE.toml --speed V [--json]
                                 eigenvalues of the linearised bicycle at speed V [m/s]
+    carvallo bench [--json] [--quick]
+                                time per evaluation beside the error against 256 bits
+    carvallo sweep --model benchmark|FILE.toml --vary NAME=FROM:TO:COUNT [--method hurwitz|eigen] [--json]
+                                stability windows of many designs, in parallel
     carvallo --help             print this help
 
 Options:
@@ -137,6 +142,9 @@ pub(crate) fn emit(text: &str) -> std::io::Result<()> {
 fn main() -> ExitCode {
     let args: Vec<String> = std::env::args().skip(1).collect();
     if let Some(code) = whipple::dispatch(&args) {
+        return code;
+    }
+    if let Some(code) = perf::dispatch(&args) {
         return code;
     }
     let command = match parse(&args) {

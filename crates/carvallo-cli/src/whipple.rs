@@ -63,6 +63,7 @@ fn parse(args: &[String]) -> Result<Command, String> {
     }
 }
 
+/// The bicycle `benchmark` or the one in the parameter file `model`.
 pub(crate) fn load(model: &str) -> Result<WhippleParams, String> {
     if model == "benchmark" {
         return Ok(WhippleParams::benchmark());

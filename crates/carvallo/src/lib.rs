@@ -11,14 +11,18 @@
 pub use carvallo_ir as ir;
 pub use carvallo_macros::scene;
 
+pub mod bench;
+pub mod certified;
 pub mod error;
 pub mod hoop;
 pub mod hoop_discussion;
+pub mod quartic;
 pub mod report;
 pub mod report_unicycle;
 pub mod report_hoop_discussion;
 pub mod report_markdown;
 pub mod report_whipple;
+pub mod sweep;
 pub mod unicycle;
 pub mod unicycle_discussion;
 pub mod whipple;

@@ -11,9 +11,9 @@
 //!
 //! Stability (Routh–Hurwitz for $a_4 s^4 + a_3 s^3 + a_2 s^2 + a_1 s + a_0$ with $a_4 > 0$):
 //! all $a_i > 0$ and $H_3 = a_1(a_2 a_3 - a_1 a_4) - a_0 a_3^2 > 0$. The coefficients are
-//! polynomials in $v$ whose own coefficients come from the matrices; every positive root of
-//! $a_0, \dots, a_3, H_3$ lies below Cauchy's bound, so scanning up to it and bisecting each
-//! sign change to adjacent floats finds every boundary of the stable range.
+//! polynomials in $v$ whose own coefficients come from the matrices; in $u = v^2$ every
+//! Hurwitz function has degree at most two, so [`crate::sweep::hurwitz_window`] finds every
+//! boundary of the stable range in closed form.
 
 use std::fmt;
 
@@ -390,23 +390,6 @@ fn horner(c: &[f64], x: f64) -> f64 {
     c.iter().rev().fold(0.0, |acc, k| acc * x + k)
 }
 
-fn poly_mul(a: &[f64], b: &[f64]) -> Vec<f64> {
-    let mut out = vec![0.0; a.len() + b.len() - 1];
-    for (i, x) in a.iter().enumerate() {
-        for (j, y) in b.iter().enumerate() {
-            out[i + j] += x * y;
-        }
-    }
-    out
-}
-
-fn poly_add(a: &[f64], b: &[f64], sb: f64) -> Vec<f64> {
-    let n = a.len().max(b.len());
-    (0..n)
-        .map(|i| a.get(i).copied().unwrap_or(0.0) + sb * b.get(i).copied().unwrap_or(0.0))
-        .collect()
-}
-
 fn poly_deriv(a: &[f64]) -> Vec<f64> {
     a.iter().enumerate().skip(1).map(|(i, x)| i as f64 * x).collect()
 }
@@ -417,32 +400,6 @@ fn mix(a: &Mat2, b: &Mat2) -> f64 {
 
 fn det(a: &Mat2) -> f64 {
     a[0][0] * a[1][1] - a[0][1] * a[1][0]
-}
-
-/// Bisects a sign change of `f` on `[lo, hi]` down to adjacent floats.
-fn bisect(f: &dyn Fn(f64) -> f64, mut lo: f64, mut hi: f64) -> f64 {
-    let mut flo = f(lo);
-    for _ in 0..2000 {
-        let mid = 0.5 * (lo + hi);
-        if mid <= lo || mid >= hi {
-            break;
-        }
-        let fm = f(mid);
-        if fm == 0.0 {
-            return mid;
-        }
-        if (fm > 0.0) == (flo > 0.0) {
-            lo = mid;
-            flo = fm;
-        } else {
-            hi = mid;
-        }
-    }
-    if f(hi).abs() < flo.abs() {
-        hi
-    } else {
-        lo
-    }
 }
 
 /// The linearised Carvallo–Whipple bicycle for one parameter set.
@@ -506,48 +463,17 @@ impl Whipple {
 
     /// The state matrix of $(\varphi, \delta, \varphi', \delta')$ at speed `v`.
     pub fn state_matrix(&self, v: f64) -> Matrix4<f64> {
-        let Matrices { m, c1, k0, k2 } = self.matrices;
-        let g = self.params.value("g");
-        let dm = det(&m);
-        let minv = [[m[1][1] / dm, -m[0][1] / dm], [-m[1][0] / dm, m[0][0] / dm]];
-        let mut a = Matrix4::zeros();
-        a[(0, 2)] = 1.0;
-        a[(1, 3)] = 1.0;
-        for r in 0..2 {
-            for c in 0..2 {
-                let (mut kk, mut cc) = (0.0, 0.0);
-                for j in 0..2 {
-                    kk += minv[r][j] * (g * k0[j][c] + v * v * k2[j][c]);
-                    cc += minv[r][j] * v * c1[j][c];
-                }
-                a[(2 + r, c)] = -kk;
-                a[(2 + r, 2 + c)] = -cc;
-            }
-        }
-        a
+        crate::sweep::state_matrix(&self.matrices, self.params.value("g"), v)
     }
 
-    /// The four eigenvalues at speed `v`, sorted by real part then imaginary part.
+    /// The four eigenvalues at speed `v`, sorted by real part then imaginary part; empty if the
+    /// Schur decomposition does not converge within
+    /// [`MAX_SCHUR_ITERATIONS`](crate::sweep::MAX_SCHUR_ITERATIONS) (never seen for a bicycle).
     pub fn eigenvalues(&self, v: f64) -> Vec<Eigenvalue> {
-        let mut ev: Vec<Eigenvalue> = self
-            .state_matrix(v)
-            .complex_eigenvalues()
-            .iter()
-            .map(|z| Eigenvalue { re: z.re, im: z.im })
-            .collect();
+        let mut ev: Vec<Eigenvalue> =
+            crate::sweep::eigenvalues4(&self.state_matrix(v)).map_or(Vec::new(), |e| e.to_vec());
         ev.sort_by(|a, b| a.re.total_cmp(&b.re).then(a.im.total_cmp(&b.im)));
         ev
-    }
-
-    /// The Hurwitz functions $a_0, a_1, a_2, a_3, H_3$ as polynomials in $v$.
-    fn hurwitz_polys(&self) -> [Vec<f64>; 5] {
-        let [a0, a1, a2, a3, a4] = self.char_poly_in_v();
-        let h = poly_add(
-            &poly_mul(&a1, &poly_add(&poly_mul(&a2, &a3), &poly_mul(&a1, &a4), -1.0)),
-            &poly_mul(&a0, &poly_mul(&a3, &a3)),
-            -1.0,
-        );
-        [a0, a1, a2, a3, h]
     }
 
     /// $H_3 = a_1(a_2 a_3 - a_1 a_4) - a_0 a_3^2$ at speed `v`, from the coefficient values.
@@ -556,72 +482,18 @@ impl Whipple {
         a[1] * (a[2] * a[3] - a[1] * a[4]) - a[0] * a[3] * a[3]
     }
 
-    /// Every positive root of the polynomial `p` (by scanning below Cauchy's bound and
-    /// bisecting), evaluated with `f` (which may be a more accurate form of the same function).
-    fn positive_roots(p: &[f64], f: &dyn Fn(f64) -> f64) -> Vec<f64> {
-        let mut p = p.to_vec();
-        while p.last().is_some_and(|x| *x == 0.0) {
-            p.pop();
-        }
-        let Some(&lead) = p.last() else { return Vec::new() };
-        if p.len() < 2 {
-            return Vec::new();
-        }
-        let bound = 1.0 + p[..p.len() - 1].iter().map(|c| (c / lead).abs()).fold(0.0, f64::max);
-        let n = 200_000usize;
-        let mut roots = Vec::new();
-        let mut prev_x = bound * 1e-9;
-        let mut prev = f(prev_x);
-        for i in 1..=n {
-            let t = i as f64 / n as f64;
-            let x = bound * t * t;
-            if x <= prev_x {
-                continue;
-            }
-            let y = f(x);
-            if y == 0.0 {
-                roots.push(x);
-            } else if prev != 0.0 && (y > 0.0) != (prev > 0.0) {
-                roots.push(bisect(f, prev_x, x));
-            }
-            prev_x = x;
-            prev = y;
-        }
-        roots
-    }
-
     /// The capsize speed in closed form: the lowest positive root of
     /// $a_0 = g^2\det K_0 + g v^2 m(K_0, K_2) + v^4 \det K_2$, a quadratic in $v^2$.
     pub fn capsize_speed(&self) -> Option<f64> {
-        let a0 = &self.char_poly_in_v()[0];
-        let (c, b, a) = (a0[0], a0[2], a0[4]);
-        let mut roots: Vec<f64> = Vec::new();
-        if a == 0.0 {
-            if b != 0.0 {
-                roots.push(-c / b);
-            }
-        } else {
-            let disc = b * b - 4.0 * a * c;
-            if disc >= 0.0 {
-                let q = -0.5 * (b + b.signum() * disc.sqrt());
-                roots.push(q / a);
-                if q != 0.0 {
-                    roots.push(c / q);
-                }
-            }
-        }
-        roots.into_iter().filter(|u| *u > 0.0).map(f64::sqrt).min_by(f64::total_cmp)
+        self.stability_window().capsize_speed
     }
 
     /// The weave speed: the lowest positive speed where $H_3$ changes sign from negative to
-    /// positive.
+    /// positive while $a_1/a_3 > 0$ (a pair of eigenvalues $\pm i\omega$, $\omega^2 = a_1/a_3$,
+    /// crosses the imaginary axis; roots of $H_3$ where two real eigenvalues $\pm r$ pass each
+    /// other are not weave speeds), see [`crate::sweep`].
     pub fn weave_speed(&self) -> Option<f64> {
-        let polys = self.hurwitz_polys();
-        let f = |v: f64| self.hurwitz(v);
-        Self::positive_roots(&polys[4], &f).into_iter().find(|&r| {
-            let d = 1e-6 * r.max(1e-6);
-            f(r - d) < 0.0 && f(r + d) > 0.0
-        })
+        self.stability_window().weave_speed
     }
 
     /// The weave–capsize bifurcation speed and the double real root there: the lowest positive
@@ -698,41 +570,10 @@ impl Whipple {
         (v.is_finite() && s.is_finite()).then_some((v, s))
     }
 
-    /// The stable speed range and the weave and capsize speeds.
+    /// The stable speed range and the weave and capsize speeds, by the closed-form Hurwitz
+    /// route with double-double polishing, [`crate::sweep::hurwitz_window_polished`] (about a
+    /// microsecond from the matrices).
     pub fn stability_window(&self) -> StabilityWindow {
-        let polys = self.hurwitz_polys();
-        let a = |k: usize, v: f64| {
-            if k < 4 {
-                horner(&polys[k], v)
-            } else {
-                self.hurwitz(v)
-            }
-        };
-        let mut cuts: Vec<f64> = Vec::new();
-        for (k, p) in polys.iter().enumerate() {
-            let f = |v: f64| a(k, v);
-            cuts.extend(Self::positive_roots(p, &f));
-        }
-        cuts.sort_by(f64::total_cmp);
-        cuts.dedup();
-        let stable_at = |v: f64| (0..5).all(|k| a(k, v) > 0.0);
-        let mut edges = vec![0.0];
-        edges.extend(cuts.iter().copied());
-        let mut stable: Vec<(f64, f64)> = Vec::new();
-        for (i, &lo) in edges.iter().enumerate() {
-            let hi = edges.get(i + 1).copied().unwrap_or(f64::INFINITY);
-            let mid = if hi.is_finite() { 0.5 * (lo + hi) } else { 2.0 * lo + 1.0 };
-            if stable_at(mid) {
-                match stable.last_mut() {
-                    Some(last) if last.1 == lo => last.1 = hi,
-                    _ => stable.push((lo, hi)),
-                }
-            }
-        }
-        StabilityWindow {
-            weave_speed: self.weave_speed(),
-            capsize_speed: self.capsize_speed(),
-            stable,
-        }
+        crate::sweep::hurwitz_window_polished(&self.matrices, self.params.value("g"))
     }
 }

@@ -1,0 +1,92 @@
+//! End-to-end tests of `carvallo bench --quick` and `carvallo sweep`: the structure of the JSON
+//! and the correctness of the errors it reports (never the timings, which depend on the
+//! machine), and exit code 2 for bad arguments.
+
+use std::process::Command;
+
+use serde_json::Value;
+
+fn carvallo(args: &[&str]) -> (i32, String, String) {
+    let out = Command::new(env!("CARGO_BIN_EXE_carvallo")).args(args).output().unwrap();
+    let text = |b: Vec<u8>| String::from_utf8(b).unwrap();
+    (out.status.code().unwrap_or(-1), text(out.stdout), text(out.stderr))
+}
+
+fn rows<'a>(v: &'a Value, section: &str) -> Vec<&'a Value> {
+    v["rows"].as_array().unwrap().iter().filter(|r| r["section"] == section).collect()
+}
+
+#[test]
+fn quick_bench_reports_times_beside_correct_errors() {
+    let (code, json, err) = carvallo(&["bench", "--quick", "--json"]);
+    assert_eq!(code, 0, "{err}");
+    let v: Value = serde_json::from_str(&json).unwrap();
+    assert_eq!(v["mode"], "quick");
+    for section in ["evaluators", "windows", "quartic", "certified", "scenes", "sweep"] {
+        let r = rows(&v, section);
+        assert!(!r.is_empty(), "no {section} rows");
+        for row in r {
+            for key in ["name", "method", "ops", "ns", "max_rel_err", "note"] {
+                assert!(row.get(key).is_some(), "{section} row without {key}: {row}");
+            }
+        }
+    }
+    // Generated evaluators and the interpreter compute the same operations: equal errors,
+    // all small against the 256-bit reference (the a_k carry cancellation: 1e-10).
+    for r in rows(&v, "evaluators") {
+        let e = r["max_rel_err"].as_f64().unwrap();
+        assert!(e < 1e-10, "{r}");
+        if r["method"] == "generated" {
+            let note = r["note"].as_str().unwrap();
+            let (same, total) = note.split_once(" of ").unwrap();
+            assert!(note.contains("bit for bit"), "{note}");
+            assert_eq!(same, total.split(' ').next().unwrap(), "{note}");
+        }
+    }
+    // The benchmark speeds by the Hurwitz route, and the compensated quartic roots.
+    let windows = rows(&v, "windows");
+    let hurwitz = windows.iter().find(|r| r["method"] == "hurwitz closed form").unwrap();
+    assert!(hurwitz["max_rel_err"].as_f64().unwrap() < 1e-12, "{hurwitz}");
+    let quartic = rows(&v, "quartic");
+    let comp = quartic.iter().find(|r| r["method"] == "aberth compensated").unwrap();
+    assert!(comp["max_rel_err"].as_f64().unwrap() < 1e-15, "{comp}");
+    let targets = v["targets"].as_array().unwrap();
+    let bench =
+        targets.iter().find(|t| t["name"].as_str().unwrap().starts_with("benchmark")).unwrap();
+    assert_eq!(bench["met"], true, "{bench}");
+    let d = v["distributions"].as_array().unwrap();
+    assert_eq!(d.len(), 5);
+    for x in d {
+        let (p50, max) = (x["p50"].as_f64().unwrap(), x["max"].as_f64().unwrap());
+        assert!(p50 <= max && max.is_finite(), "{x}");
+    }
+}
+
+#[test]
+fn sweep_prints_a_summary_and_rejects_bad_ranges() {
+    let (code, json, err) =
+        carvallo(&["sweep", "--model", "benchmark", "--vary", "c=0.0:0.2:1000", "--json"]);
+    assert_eq!(code, 0, "{err}");
+    let v: Value = serde_json::from_str(&json).unwrap();
+    assert_eq!(v["count"], 1000);
+    assert_eq!(v["method"], "hurwitz");
+    assert_eq!(v["failed"], 0);
+    let stable = v["stable"].as_u64().unwrap();
+    assert!(stable > 0 && stable <= 1000, "{v}");
+    for key in ["elapsed", "designs_per_second", "weave_speed_range", "capsize_speed_range"] {
+        assert!(v.get(key).is_some(), "missing {key}");
+    }
+    assert!(!err.contains('['), "no progress bar when stderr is not a terminal: {err}");
+    let (code, _, err) = carvallo(&["sweep", "--model", "benchmark", "--vary", "c=0:inf:10"]);
+    assert_eq!(code, 2);
+    assert!(
+        err.starts_with("error: invalid number `inf` in --vary `c=0:inf:10`: must be finite"),
+        "{err}"
+    );
+    let (code, _, err) = carvallo(&["sweep", "--model", "benchmark", "--vary", "q=0:1:10"]);
+    assert_eq!(code, 2);
+    assert!(err.starts_with("error: unknown parameter q"), "{err}");
+    let (code, _, err) = carvallo(&["bench", "--slow"]);
+    assert_eq!(code, 2);
+    assert!(err.starts_with("error: unknown argument `--slow`"), "{err}");
+}

@@ -1,0 +1,65 @@
+//! Criterion benchmarks of the performance work: the bicycle's stability window by the
+//! closed-form Hurwitz route against the eigenvalue sweep, the quartic root solvers on the
+//! benchmark bicycle's polynomial at 5 m/s, the generated characteristic polynomial against
+//! the interpreter, and the certified classification.
+//!
+//! Run with `cargo bench -p carvallo --bench perf`. `carvallo bench` measures the same things
+//! together with their errors in one table.
+
+use std::hint::black_box;
+use std::time::Duration;
+
+use carvallo::ir::{Interpreter, Program};
+use carvallo::whipple::{char_poly_scene, Whipple, WhippleParams};
+use carvallo::{certified, quartic, sweep};
+use criterion::{criterion_group, criterion_main, Criterion};
+
+const IR: &str = include_str!("../../../generated/whipple.ir");
+
+fn bench(c: &mut Criterion) {
+    let w = Whipple::new(WhippleParams::benchmark());
+    let (m, g) = (w.matrices(), 9.81);
+    let mut group = c.benchmark_group("perf");
+    group.warm_up_time(Duration::from_millis(300)).measurement_time(Duration::from_millis(1500));
+    group.bench_function("window/hurwitz", |b| b.iter(|| sweep::hurwitz_window(black_box(&m), g)));
+    group.sample_size(10);
+    group.bench_function("window/eigen_sweep", |b| {
+        b.iter(|| sweep::eigen_window(black_box(&m), g, sweep::EigenGrid::default()))
+    });
+    group.sample_size(100);
+    let poly = w.char_poly(5.0);
+    group.bench_function("quartic/ferrari", |b| b.iter(|| quartic::ferrari(black_box(&poly))));
+    group.bench_function("quartic/companion", |b| b.iter(|| quartic::companion(black_box(&poly))));
+    group.bench_function("quartic/aberth", |b| b.iter(|| quartic::aberth(black_box(&poly))));
+    group.bench_function("quartic/aberth_compensated", |b| {
+        b.iter(|| quartic::aberth_compensated(black_box(&poly)))
+    });
+    group.bench_function("quartic/graeffe", |b| {
+        b.iter(|| quartic::graeffe_moduli(black_box(&poly)))
+    });
+    group.bench_function("certified/classify", |b| {
+        b.iter(|| certified::classify(black_box(&m), g, 5.0, 0.0))
+    });
+    let p = WhippleParams::benchmark();
+    let args: [f64; char_poly_scene::Args::LEN] = std::array::from_fn(|i| {
+        char_poly_scene::PARAMS.get(i).map_or(5.0, |n| p.get(n).unwrap_or(f64::NAN))
+    });
+    group.bench_function("char_poly/generated", |b| {
+        b.iter(|| char_poly_scene::eval_array(black_box(&args)))
+    });
+    let program = Program::parse(IR).unwrap().select_outputs(char_poly_scene::OUTPUTS).unwrap();
+    let it = Interpreter::new(&program).unwrap();
+    let params: Vec<f64> = program.params.iter().map(|n| p.get(n).unwrap()).collect();
+    let mut scratch = vec![0.0; it.scratch_len()];
+    let mut out = vec![0.0; it.n_outputs()];
+    group.bench_function("char_poly/interpreter", |b| {
+        b.iter(|| {
+            it.eval(black_box(&params), &[5.0], &mut scratch, &mut out).unwrap();
+            black_box(out[0])
+        })
+    });
+    group.finish();
+}
+
+criterion_group!(benches, bench);
+criterion_main!(benches);
