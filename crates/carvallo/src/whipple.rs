@@ -78,13 +78,15 @@ const POSITIVE: [&str; 17] = [
     "IHzz", "rF", "mF", "IFxx",
 ];
 
-/// Largest magnitude accepted for any parameter (SI units): beyond it the matrices' products
-/// could overflow, and no bicycle is that large.
-pub const MAX_MAGNITUDE: f64 = 1e6;
+/// Largest magnitude accepted for any parameter (SI units). The Hurwitz determinant is a
+/// product of up to six matrix entries, each a product of up to three parameters, so beyond
+/// this bound `f64` could overflow; within it lengths from millimetres to kilometres and masses
+/// from grams to tonnes (inertias $m l^2$ from $10^{-12}$ to $10^{9}$) are all accepted.
+pub const MAX_MAGNITUDE: f64 = 1e15;
 
-/// Smallest value accepted for a strictly positive parameter (SI units): below it the mass
-/// matrix could become numerically singular.
-pub const MIN_POSITIVE: f64 = 1e-6;
+/// Smallest value accepted for a strictly positive parameter (SI units): below it the products
+/// in the Hurwitz determinant could underflow (see [`MAX_MAGNITUDE`]).
+pub const MIN_POSITIVE: f64 = 1e-15;
 
 /// Why a parameter set was rejected.
 #[derive(Clone, Debug, PartialEq)]
@@ -240,14 +242,14 @@ impl WhippleParams {
                 return Err(WhippleError::InvalidParameter {
                     key,
                     value,
-                    reason: "is too large (magnitude above 1e6 in SI units)",
+                    reason: "is too large (magnitude above 1e15 in SI units)",
                 });
             }
             if POSITIVE.contains(key) && value < MIN_POSITIVE {
                 return Err(WhippleError::InvalidParameter {
                     key,
                     value,
-                    reason: "is too small (below 1e-6 in SI units)",
+                    reason: "is too small (below 1e-15 in SI units)",
                 });
             }
         }

@@ -163,10 +163,10 @@ fn every_rejection_names_the_key_and_the_value() {
         "invalid parameter file: line 10: invalid floating-point number (`xB = 1e400`)"
     );
     assert_eq!(
-        reject("zB", "-2e6"),
-        "invalid zB -2000000.0: is too large (magnitude above 1e6 in SI units)"
+        reject("zB", "-2e16"),
+        "invalid zB -2e16: is too large (magnitude above 1e15 in SI units)"
     );
-    assert_eq!(reject("mF", "1e-9"), "invalid mF 1e-9: is too small (below 1e-6 in SI units)");
+    assert_eq!(reject("mF", "1e-18"), "invalid mF 1e-18: is too small (below 1e-15 in SI units)");
     assert_eq!(
         reject("lambda", "\"pi/2\""),
         "invalid lambda 1.5707963267948966: must lie strictly between -pi/2 and pi/2"
