@@ -68,10 +68,6 @@ fn num(n: i64) -> Atom {
     Atom::num(n)
 }
 
-fn zero3() -> V3 {
-    [num(0), num(0), num(0)]
-}
-
 fn add(a: &V3, b: &V3) -> V3 {
     [&a[0] + &b[0], &a[1] + &b[1], &a[2] + &b[2]]
 }
@@ -218,6 +214,10 @@ struct Body {
     mass: Atom,
     velocity: V3,
     omega: V3,
+    /// Angular velocity of the frame whose components `omega` and `inertia` are in (the body
+    /// itself for the frames; the rear frame, resp. the front frame, for the wheels, whose
+    /// inertia is constant there by symmetry).
+    carrier: V3,
     inertia: M3,
     position: V3,
 }
@@ -477,6 +477,7 @@ pub fn derive() -> Result<Derivation> {
             mass: p("mR"),
             velocity: velocity(&c_r),
             omega: w_r_body,
+            carrier: w_b_body.clone(),
             inertia: inertia("IRxx", "IRyy", "IRxx", None),
             position: c_r.clone(),
         },
@@ -484,7 +485,8 @@ pub fn derive() -> Result<Derivation> {
             name: "B",
             mass: p("mB"),
             velocity: velocity(&pos_b),
-            omega: w_b_body,
+            omega: w_b_body.clone(),
+            carrier: w_b_body,
             inertia: inertia("IBxx", "IByy", "IBzz", Some("IBxz")),
             position: pos_b.clone(),
         },
@@ -492,7 +494,8 @@ pub fn derive() -> Result<Derivation> {
             name: "H",
             mass: p("mH"),
             velocity: velocity(&pos_h),
-            omega: w_h_body,
+            omega: w_h_body.clone(),
+            carrier: w_h_body.clone(),
             inertia: inertia("IHxx", "IHyy", "IHzz", Some("IHxz")),
             position: pos_h.clone(),
         },
@@ -501,6 +504,7 @@ pub fn derive() -> Result<Derivation> {
             mass: p("mF"),
             velocity: velocity(&c_f),
             omega: w_f_body,
+            carrier: w_h_body,
             inertia: inertia("IFxx", "IFyy", "IFxx", None),
             position: c_f.clone(),
         },
@@ -571,13 +575,15 @@ pub fn derive() -> Result<Derivation> {
         let alpha0 = nm.name3(
             &format!("alpha0_{}", b.name),
             &format!(
-                "angular acceleration of {} when the independent accelerations vanish (body frame, rad/s^2)",
+                "time derivative of the components of {}'s angular velocity (in the frame of w_) when the independent accelerations vanish (rad/s^2)",
                 b.name
             ),
             &expand3(&alpha0),
         );
         let iw = mv(&b.inertia, &om);
-        let torque = add(&mv(&b.inertia, &alpha0), &cross(&om, &iw));
+        // Euler: dH/dt = I (d omega/dt in the carrier's components) + carrier x I omega.
+        let carrier = if b.name == "R" || b.name == "F" { b.carrier.clone() } else { om.clone() };
+        let torque = add(&mv(&b.inertia, &alpha0), &cross(&carrier, &iw));
         let force = sub(&scale(&g, &zhat), &acc0);
         for i in 0..3 {
             for j in i..3 {

@@ -59,6 +59,7 @@ fn basu_mandal_table_one() {
     let lean = pi / 2.0 - psi_b;
     let steer = -psif_b;
     let mut pitch = pi - phi_b;
+    let names = &names;
     let eval = |pitch: f64, rates: [f64; 3]| {
         let inputs = [lean, pitch, steer, rates[0], rates[1], rates[2]];
         let out = prog.eval_f64(&BENCHMARK, &inputs).expect("eval");
