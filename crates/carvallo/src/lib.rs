@@ -18,5 +18,6 @@ pub mod report_hoop_discussion;
 pub mod report_whipple;
 pub mod unicycle;
 pub mod whipple;
+pub mod whipple_nonlinear;
 
 pub use error::ParameterError;
