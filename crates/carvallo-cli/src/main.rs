@@ -9,6 +9,7 @@
 use std::io::Write;
 use std::process::ExitCode;
 
+mod nonlinear;
 mod whipple;
 
 const HELP: &str = "\
@@ -20,6 +21,12 @@ Usage:
                                 stable speed range of the linearised Carvallo-Whipple bicycle
     carvallo eig --model benchmark|FILE.toml --speed V [--json]
                                 eigenvalues of the linearised bicycle at speed V [m/s]
+    carvallo accel --model benchmark|FILE.toml --basu-mandal
+                                accelerations of the nonlinear bicycle in Basu-Mandal's
+                                coordinates: reads {\"q\": [..9], \"qd\": [..9]} on stdin
+    carvallo simulate --model benchmark|FILE.toml --speed V --lean0 RAD --duration S
+                      [--step DT] [--every N] [--json]
+                                simulate the nonlinear bicycle (time series, energy drift)
     carvallo --help             print this help
 
 Options:
@@ -46,7 +53,7 @@ enum UsageError {
 impl std::fmt::Display for UsageError {
     fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
         match self {
-            UsageError::Missing => write!(f, "missing command: expected `report`, `window`, `eig` or `--help`"),
+            UsageError::Missing => write!(f, "missing command: expected `report`, `window`, `eig`, `accel`, `simulate` or `--help`"),
             UsageError::Unknown(arg) => write!(f, "unknown argument `{arg}`"),
             UsageError::Repeated(arg) => write!(f, "argument `{arg}` given more than once"),
         }
@@ -106,6 +113,9 @@ pub(crate) fn emit(text: &str) -> std::io::Result<()> {
 fn main() -> ExitCode {
     let args: Vec<String> = std::env::args().skip(1).collect();
     if let Some(code) = whipple::dispatch(&args) {
+        return code;
+    }
+    if let Some(code) = nonlinear::dispatch(&args) {
         return code;
     }
     let command = match parse(&args) {
