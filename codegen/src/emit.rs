@@ -606,9 +606,11 @@ pub fn emit_expr(
 
 /// The IR program of a derivation: every formula is an output (in the derivation's order),
 /// parameters and inputs are declared in the derivation's order, and the header names the
-/// command and the source.
+/// command and the source. A symbol that names an earlier formula (and no parameter or input)
+/// stands for that formula's value, so a derivation can hand over a chain of named intermediate
+/// quantities instead of one expanded expression.
 pub fn emit_program(d: &Derivation) -> Result<Program, EmitError> {
-    let (mut b, names) = declare(d)?;
+    let (mut b, mut names) = declare(d)?;
     b.header(&generated_header(&d.source));
     let outputs: Vec<&str> = d.formulas.iter().map(|f| f.name.as_str()).collect();
     b.header(&format!("Outputs: {}.", outputs.join(", ")));
@@ -628,6 +630,9 @@ pub fn emit_program(d: &Derivation) -> Result<Program, EmitError> {
         }
         let v = emit_expr(&mut b, &names, &f.expr).map_err(in_formula(f))?;
         b.output(&f.name, v);
+        // A later formula may refer to this one by name (a parameter or input of the same
+        // name keeps precedence, so models without such references emit as before).
+        names.entry(f.name.clone()).or_insert(v);
     }
     Ok(b.finish())
 }
@@ -647,11 +652,20 @@ pub fn count_ops(p: &Program) -> (usize, BTreeMap<&'static str, usize>) {
 }
 
 /// The op count of one formula on its own, after common-subexpression elimination.
+///
+/// Earlier formulas the formula refers to by name count as free inputs here: the count is that
+/// of the formula's own operations.
 pub fn formula_op_count(
     d: &Derivation,
     f: &Formula,
 ) -> Result<(usize, BTreeMap<&'static str, usize>), EmitError> {
-    let (mut b, names) = declare(d)?;
+    let (mut b, mut names) = declare(d)?;
+    for earlier in d.formulas.iter().take_while(|g| !std::ptr::eq(*g, f)) {
+        if !names.contains_key(&earlier.name) && is_ir_name(&earlier.name) {
+            let v = b.input(&earlier.name);
+            names.insert(earlier.name.clone(), v);
+        }
+    }
     let v = emit_expr(&mut b, &names, &f.expr).map_err(in_formula(f))?;
     b.output(&f.name, v);
     Ok(count_ops(&b.finish()))
@@ -915,6 +929,10 @@ pub fn normalize_text(s: &str) -> String {
     out
 }
 
+/// Longest plain-text rendering of a formula that `generated/<model>.md` prints (with its
+/// LaTeX form); longer formulas are listed with their op count only, to keep the file small.
+pub const MAX_RENDERED_CHARS: usize = 16_000;
+
 /// `generated/<model>.md`: every formula with its memoir section, description, plain-text and
 /// LaTeX forms and op count after common-subexpression elimination.
 pub fn render_markdown(d: &Derivation) -> Result<String, EmitError> {
@@ -944,8 +962,17 @@ pub fn render_markdown(d: &Derivation) -> Result<String, EmitError> {
         let e = Expr::from_atom(&f.expr).map_err(in_formula(f))?;
         s.push_str(&format!("\n## `{}` (n° {})\n\n", f.name, one_line(&f.section)));
         s.push_str(&format!("{}\n\n", one_line(&f.description)));
-        s.push_str(&format!("```text\n{}\n```\n\n", text(&e)));
-        s.push_str(&format!("$$\n{}\n$$\n\n", latex(&e)));
+        let plain = text(&e);
+        if plain.len() > MAX_RENDERED_CHARS {
+            s.push_str(&format!(
+                "Not rendered: its plain text takes {} characters (more than {MAX_RENDERED_CHARS}); the formula is in `{}.ir`.\n\n",
+                plain.len(),
+                d.model
+            ));
+        } else {
+            s.push_str(&format!("```text\n{plain}\n```\n\n"));
+            s.push_str(&format!("$$\n{}\n$$\n\n", latex(&e)));
+        }
         s.push_str(&format!("Ops after CSE: {} ({}).\n", ops, by_op_text(&by)));
     }
     Ok(normalize_text(&s))

@@ -68,3 +68,4 @@ pub mod hoop_discussion;
 pub mod regen;
 pub mod unicycle;
 pub mod whipple;
+pub mod whipple_nonlinear;

@@ -12,6 +12,7 @@ use std::process::ExitCode;
 mod figures;
 mod report_out;
 mod perf;
+mod nonlinear;
 mod whipple;
 
 const HELP: &str = "\
@@ -29,6 +30,12 @@ Usage:
                                 time per evaluation beside the error against 256 bits
     carvallo sweep --model benchmark|FILE.toml --vary NAME=FROM:TO:COUNT [--method hurwitz|eigen] [--json]
                                 stability windows of many designs, in parallel
+    carvallo accel --model benchmark|FILE.toml --basu-mandal
+                                accelerations of the nonlinear bicycle in Basu-Mandal's
+                                coordinates: reads {\"q\": [..9], \"qd\": [..9]} on stdin
+    carvallo simulate --model benchmark|FILE.toml --speed V --lean0 RAD --duration S
+                      [--step DT] [--every N] [--json]
+                                simulate the nonlinear bicycle (time series, energy drift)
     carvallo --help             print this help
 
 Options:
@@ -58,7 +65,7 @@ enum UsageError {
 impl std::fmt::Display for UsageError {
     fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
         match self {
-            UsageError::Missing => write!(f, "missing command: expected `report`, `window`, `eig` or `--help`"),
+            UsageError::Missing => write!(f, "missing command: expected `report`, `window`, `eig`, `bench`, `sweep`, `accel`, `simulate` or `--help`"),
             UsageError::Unknown(arg) => write!(f, "unknown argument `{arg}`"),
             UsageError::Repeated(arg) => write!(f, "argument `{arg}` given more than once"),
             UsageError::MissingValue(arg) => write!(f, "missing value after `{arg}`"),
@@ -145,6 +152,9 @@ fn main() -> ExitCode {
         return code;
     }
     if let Some(code) = perf::dispatch(&args) {
+        return code;
+    }
+    if let Some(code) = nonlinear::dispatch(&args) {
         return code;
     }
     let command = match parse(&args) {

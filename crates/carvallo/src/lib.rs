@@ -26,5 +26,6 @@ pub mod sweep;
 pub mod unicycle;
 pub mod unicycle_discussion;
 pub mod whipple;
+pub mod whipple_nonlinear;
 
 pub use error::ParameterError;

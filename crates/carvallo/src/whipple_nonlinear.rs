@@ -1,0 +1,609 @@
+//! The nonlinear Carvallo–Whipple bicycle: accelerations, total energy, ground tracks and a
+//! simulation, from the evaluators generated over `generated/whipple_nonlinear.ir`
+//! (derived by Kane's method in `codegen/src/whipple_nonlinear.rs`, the 25 benchmark
+//! parameters symbolic).
+//!
+//! Coordinates (benchmark axes, x forward, y right, z down): the rear contact $(x, y)$, yaw ψ,
+//! lean φ, rear frame pitch θ, rear wheel rotation $\theta_R$ relative to the rear frame, steer
+//! δ, front wheel rotation $\theta_F$ relative to the front frame. The independent speeds are
+//! $u = (\dot\varphi, \dot\delta, \dot\theta_R)$. The pitch is not a state: the holonomic front
+//! contact constraint $h(\varphi, \theta, \delta) = 0$ is solved for it by Newton's method
+//! (generated $h$ and $\partial h/\partial\theta$) whenever the equations are evaluated, so the
+//! constraint holds to rounding along a simulation. The dependent speeds (pitch rate, yaw
+//! rate, front wheel rate) are generated linear forms in $u$, and $\dot u$ solves the
+//! generated $M_3 \dot u = f_3$ by LU decomposition.
+//!
+//! [`basu_mandal_accelerations`](WhippleNonlinear::basu_mandal_accelerations) evaluates the
+//! nine accelerations in the coordinates of Basu-Mandal, Chatterjee and Papadopoulos (Proc. R.
+//! Soc. A 463, 2007), whose Table 1 is the external check of these equations
+//! (`tests/tests/basu_mandal.rs`). The map between their coordinates and these:
+//! their lean $\psi_b = \pi/2 - \varphi$, pitch $\phi_b = \pi - \theta$, heading
+//! $\theta_b = -\psi$, steer $\psi_{f} = -\delta$, wheel rotations $\beta_r = -\theta_R$,
+//! $\beta_f = -\theta_F$, and $(x_b, y_b, z_b) = (-X, Y, -Z)$ for the rear wheel centre.
+
+use std::fmt;
+
+use nalgebra::{Matrix3, Vector3};
+
+use crate::whipple::WhippleParams;
+
+crate::scene! {
+    /// The front contact constraint and its pitch derivative.
+    pub mod contact_scene {
+        model: whipple_nonlinear,
+        outputs: [contact_height, contact_height_dtheta],
+    }
+}
+
+crate::scene! {
+    /// Everything an evaluation of the equations of motion needs: $M_3$, $f_3$, the dependent
+    /// speeds and accelerations, and the rear wheel centre's acceleration terms.
+    pub mod dynamics_scene {
+        model: whipple_nonlinear,
+        outputs: [m3_11, m3_12, m3_13, m3_22, m3_23, m3_33, f3_1, f3_2, f3_3,
+                  a_thetad_phid, a_thetad_deltad, a_thetad_thetaRd,
+                  a_psid_phid, a_psid_deltad, a_psid_thetaRd,
+                  a_thetaFd_phid, a_thetaFd_deltad, a_thetaFd_thetaRd,
+                  thetadd0, psidd0, thetaFdd0, thetad, psid, thetaFd, rear_speed,
+                  acc0_R_x, acc0_R_y, acc0_R_z,
+                  vt_R_phid_x, vt_R_phid_y, vt_R_phid_z,
+                  vt_R_deltad_x, vt_R_deltad_y, vt_R_deltad_z,
+                  vt_R_thetaRd_x, vt_R_thetaRd_y, vt_R_thetaRd_z],
+    }
+}
+
+crate::scene! {
+    /// The total energy and the front contact relative to the rear one (yawed frame).
+    pub mod observe_scene {
+        model: whipple_nonlinear,
+        outputs: [energy, front_contact_x, front_contact_y],
+    }
+}
+
+/// Why an evaluation or a simulation of the nonlinear bicycle failed.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub enum NonlinearError {
+    /// An input that cannot be used.
+    InvalidParameter {
+        /// The input's name.
+        name: &'static str,
+        /// Its value.
+        value: f64,
+        /// Why, in a few lower-case words.
+        reason: &'static str,
+    },
+    /// Newton's method found no pitch that puts the front wheel on the ground.
+    NoContact {
+        /// The lean (rad).
+        lean: f64,
+        /// The steer (rad).
+        steer: f64,
+    },
+    /// The mass matrix of the independent speeds is singular at this configuration.
+    SingularMassMatrix {
+        /// The lean (rad).
+        lean: f64,
+        /// The steer (rad).
+        steer: f64,
+    },
+}
+
+impl fmt::Display for NonlinearError {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        match self {
+            NonlinearError::InvalidParameter { name, value, reason } => {
+                write!(f, "invalid {name} {value:?}: {reason}")
+            }
+            NonlinearError::NoContact { lean, steer } => write!(
+                f,
+                "no pitch puts the front wheel on the ground at lean {lean} rad, steer {steer} rad"
+            ),
+            NonlinearError::SingularMassMatrix { lean, steer } => {
+                write!(f, "singular mass matrix at lean {lean} rad, steer {steer} rad")
+            }
+        }
+    }
+}
+
+impl std::error::Error for NonlinearError {}
+
+fn finite(name: &'static str, value: f64) -> Result<f64, NonlinearError> {
+    if value.is_finite() {
+        Ok(value)
+    } else {
+        Err(NonlinearError::InvalidParameter { name, value, reason: "must be finite" })
+    }
+}
+
+/// The coordinates that enter the equations and the three independent speeds.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct Configuration {
+    /// Lean φ (rad).
+    pub lean: f64,
+    /// Rear frame pitch θ (rad), solved from the contact constraint.
+    pub pitch: f64,
+    /// Steer δ (rad).
+    pub steer: f64,
+    /// Lean rate (rad/s).
+    pub lean_rate: f64,
+    /// Steer rate (rad/s).
+    pub steer_rate: f64,
+    /// Rear wheel rate relative to the rear frame (rad/s).
+    pub rear_wheel_rate: f64,
+}
+
+/// The equations of motion evaluated at one configuration.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct Accelerations {
+    /// $\ddot\varphi$, $\ddot\delta$, $\ddot\theta_R$ (rad/s²).
+    pub independent: [f64; 3],
+    /// Pitch, yaw and front wheel rates $\dot\theta$, $\dot\psi$, $\dot\theta_F$ (rad/s).
+    pub dependent_rates: [f64; 3],
+    /// Pitch, yaw and front wheel accelerations (rad/s²).
+    pub dependent: [f64; 3],
+    /// Speed of the rear contact along the heading (m/s).
+    pub rear_speed: f64,
+    /// Acceleration of the rear wheel centre in the yawed frame (m/s²).
+    pub rear_centre: [f64; 3],
+}
+
+/// The nonlinear bicycle for one parameter set.
+#[derive(Clone, Debug)]
+pub struct WhippleNonlinear {
+    params: WhippleParams,
+}
+
+/// The full simulation state: the coordinates other than the pitch and the independent speeds.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct State {
+    /// Rear contact $x$ (m).
+    pub x: f64,
+    /// Rear contact $y$ (m).
+    pub y: f64,
+    /// Yaw ψ (rad).
+    pub yaw: f64,
+    /// Lean φ (rad).
+    pub lean: f64,
+    /// Steer δ (rad).
+    pub steer: f64,
+    /// Rear wheel rotation relative to the rear frame (rad).
+    pub rear_wheel: f64,
+    /// Front wheel rotation relative to the front frame (rad).
+    pub front_wheel: f64,
+    /// Lean rate (rad/s).
+    pub lean_rate: f64,
+    /// Steer rate (rad/s).
+    pub steer_rate: f64,
+    /// Rear wheel rate relative to the rear frame (rad/s).
+    pub rear_wheel_rate: f64,
+}
+
+impl State {
+    fn to_array(self) -> [f64; 10] {
+        [
+            self.x,
+            self.y,
+            self.yaw,
+            self.lean,
+            self.steer,
+            self.rear_wheel,
+            self.front_wheel,
+            self.lean_rate,
+            self.steer_rate,
+            self.rear_wheel_rate,
+        ]
+    }
+
+    fn from_array(a: [f64; 10]) -> State {
+        State {
+            x: a[0],
+            y: a[1],
+            yaw: a[2],
+            lean: a[3],
+            steer: a[4],
+            rear_wheel: a[5],
+            front_wheel: a[6],
+            lean_rate: a[7],
+            steer_rate: a[8],
+            rear_wheel_rate: a[9],
+        }
+    }
+}
+
+/// One sample of a simulation.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct Sample {
+    /// Time (s).
+    pub t: f64,
+    /// The state.
+    pub state: State,
+    /// The pitch solved from the contact constraint (rad).
+    pub pitch: f64,
+    /// Speed of the rear contact along the heading (m/s).
+    pub speed: f64,
+    /// Rear contact on the ground $(x, y)$ (m).
+    pub rear_contact: [f64; 2],
+    /// Front contact on the ground $(x, y)$ (m).
+    pub front_contact: [f64; 2],
+    /// Total energy (J).
+    pub energy: f64,
+}
+
+/// A simulated motion.
+#[derive(Clone, Debug, PartialEq)]
+pub struct Trajectory {
+    /// The integration step (s).
+    pub step: f64,
+    /// The samples, every `every` steps.
+    pub samples: Vec<Sample>,
+    /// Largest $|E(t) - E(0)|$ over all steps (J).
+    pub energy_drift: f64,
+    /// Largest $|h|$ of the contact constraint after Newton over all steps (m).
+    pub max_contact_residual: f64,
+}
+
+impl WhippleNonlinear {
+    /// The nonlinear bicycle with the parameters `params`.
+    pub fn new(params: WhippleParams) -> WhippleNonlinear {
+        WhippleNonlinear { params }
+    }
+
+    /// The parameters.
+    pub fn params(&self) -> &WhippleParams {
+        &self.params
+    }
+
+    fn param(&self, name: &str) -> f64 {
+        self.params.get(name).unwrap_or(f64::NAN)
+    }
+
+    /// Argument array of a scene: its parameters by name, then the inputs.
+    fn args<const N: usize>(
+        &self,
+        params: &[&str],
+        inputs: &[&str],
+        c: &Configuration,
+    ) -> [f64; N] {
+        std::array::from_fn(|i| {
+            if i < params.len() {
+                self.param(params[i])
+            } else {
+                match inputs[i - params.len()] {
+                    "phi" => c.lean,
+                    "theta" => c.pitch,
+                    "delta" => c.steer,
+                    "phid" => c.lean_rate,
+                    "deltad" => c.steer_rate,
+                    "thetaRd" => c.rear_wheel_rate,
+                    _ => f64::NAN,
+                }
+            }
+        })
+    }
+
+    /// The contact constraint $h$ and $\partial h/\partial\theta$ (m, m/rad).
+    pub fn contact(&self, lean: f64, pitch: f64, steer: f64) -> (f64, f64) {
+        let c = Configuration {
+            lean,
+            pitch,
+            steer,
+            lean_rate: 0.0,
+            steer_rate: 0.0,
+            rear_wheel_rate: 0.0,
+        };
+        let a = self.args(contact_scene::PARAMS, contact_scene::INPUTS, &c);
+        let o = contact_scene::eval(&contact_scene::Args::from_array(a));
+        (o.contact_height, o.contact_height_dtheta)
+    }
+
+    /// The pitch that puts the front wheel on the ground, by Newton's method from `guess`
+    /// (at most 50 iterations, stopping when the step is below 1e-14 rad).
+    ///
+    /// # Errors
+    /// [`NonlinearError::InvalidParameter`] for non-finite angles,
+    /// [`NonlinearError::NoContact`] when Newton's method does not converge.
+    pub fn pitch(&self, lean: f64, steer: f64, guess: f64) -> Result<f64, NonlinearError> {
+        finite("lean", lean)?;
+        finite("steer", steer)?;
+        finite("pitch guess", guess)?;
+        let mut th = guess;
+        for _ in 0..50 {
+            let (h, dh) = self.contact(lean, th, steer);
+            let step = h / dh;
+            if !step.is_finite() {
+                break;
+            }
+            th -= step;
+            if step.abs() <= 1e-14 * (1.0 + th.abs()) {
+                return Ok(th);
+            }
+        }
+        Err(NonlinearError::NoContact { lean, steer })
+    }
+
+    /// The equations of motion at `c` (whose pitch must satisfy the contact constraint).
+    ///
+    /// # Errors
+    /// [`NonlinearError::SingularMassMatrix`] when $M_3$ cannot be factored.
+    pub fn accelerations(&self, c: &Configuration) -> Result<Accelerations, NonlinearError> {
+        let a = self.args(dynamics_scene::PARAMS, dynamics_scene::INPUTS, c);
+        let o = dynamics_scene::eval(&dynamics_scene::Args::from_array(a));
+        let m = Matrix3::new(
+            o.m3_11, o.m3_12, o.m3_13, o.m3_12, o.m3_22, o.m3_23, o.m3_13, o.m3_23, o.m3_33,
+        );
+        let f = Vector3::new(o.f3_1, o.f3_2, o.f3_3);
+        let ud = m
+            .lu()
+            .solve(&f)
+            .filter(|x| x.iter().all(|v| v.is_finite()))
+            .ok_or(NonlinearError::SingularMassMatrix { lean: c.lean, steer: c.steer })?;
+        let ud = [ud[0], ud[1], ud[2]];
+        let lin = |a: [f64; 3]| a[0] * ud[0] + a[1] * ud[1] + a[2] * ud[2];
+        let dependent = [
+            o.thetadd0 + lin([o.a_thetad_phid, o.a_thetad_deltad, o.a_thetad_thetaRd]),
+            o.psidd0 + lin([o.a_psid_phid, o.a_psid_deltad, o.a_psid_thetaRd]),
+            o.thetaFdd0 + lin([o.a_thetaFd_phid, o.a_thetaFd_deltad, o.a_thetaFd_thetaRd]),
+        ];
+        let rear_centre = [
+            o.acc0_R_x + lin([o.vt_R_phid_x, o.vt_R_deltad_x, o.vt_R_thetaRd_x]),
+            o.acc0_R_y + lin([o.vt_R_phid_y, o.vt_R_deltad_y, o.vt_R_thetaRd_y]),
+            o.acc0_R_z + lin([o.vt_R_phid_z, o.vt_R_deltad_z, o.vt_R_thetaRd_z]),
+        ];
+        Ok(Accelerations {
+            independent: ud,
+            dependent_rates: [o.thetad, o.psid, o.thetaFd],
+            dependent,
+            rear_speed: o.rear_speed,
+            rear_centre,
+        })
+    }
+
+    /// Total energy (J) and the front contact relative to the rear one in the yawed frame (m).
+    pub fn observe(&self, c: &Configuration) -> (f64, [f64; 2]) {
+        let a = self.args(observe_scene::PARAMS, observe_scene::INPUTS, c);
+        let o = observe_scene::eval(&observe_scene::Args::from_array(a));
+        (o.energy, [o.front_contact_x, o.front_contact_y])
+    }
+
+    /// The nine accelerations in the coordinates of Basu-Mandal, Chatterjee and Papadopoulos
+    /// (2007), `q = [x, y, z, θ, ψ, φ, ψf, βr, βf]` and `qd` their rates, as
+    /// `[x'', y'', z'', θ'', ψ'', φ'', ψf'', βr'', βf'']`. The independent rates ψ', ψf', βr'
+    /// of `qd` are used; the pitch is solved from the constraint starting at `q`'s φ.
+    ///
+    /// # Errors
+    /// A non-finite entry is [`NonlinearError::InvalidParameter`] naming it; no contact or a
+    /// singular mass matrix as in [`pitch`](Self::pitch) and
+    /// [`accelerations`](Self::accelerations).
+    pub fn basu_mandal_accelerations(
+        &self,
+        q: [f64; 9],
+        qd: [f64; 9],
+    ) -> Result<[f64; 9], NonlinearError> {
+        const Q: [&str; 9] = [
+            "q[0] (x)",
+            "q[1] (y)",
+            "q[2] (z)",
+            "q[3] (theta)",
+            "q[4] (psi)",
+            "q[5] (phi)",
+            "q[6] (psif)",
+            "q[7] (betar)",
+            "q[8] (betaf)",
+        ];
+        const QD: [&str; 9] = [
+            "qd[0] (xd)",
+            "qd[1] (yd)",
+            "qd[2] (zd)",
+            "qd[3] (thetad)",
+            "qd[4] (psid)",
+            "qd[5] (phid)",
+            "qd[6] (psifd)",
+            "qd[7] (betard)",
+            "qd[8] (betafd)",
+        ];
+        for k in 0..9 {
+            finite(Q[k], q[k])?;
+            finite(QD[k], qd[k])?;
+        }
+        let pi = std::f64::consts::PI;
+        let lean = pi / 2.0 - q[4];
+        let steer = -q[6];
+        let pitch = self.pitch(lean, steer, pi - q[5])?;
+        let c = Configuration {
+            lean,
+            pitch,
+            steer,
+            lean_rate: -qd[4],
+            steer_rate: -qd[6],
+            rear_wheel_rate: -qd[7],
+        };
+        let acc = self.accelerations(&c)?;
+        // Rear wheel centre: yawed frame to ground frame (yaw = -theta_b), then (-X, Y, -Z).
+        let yaw = -q[3];
+        let (s, co) = yaw.sin_cos();
+        let [ax, ay, az] = acc.rear_centre;
+        // The yawed frame turns at the yaw rate: its components' acceleration is already the
+        // absolute acceleration (the generated terms include the frame's rotation).
+        let (gx, gy) = (co * ax - s * ay, s * ax + co * ay);
+        Ok([
+            -gx,
+            gy,
+            -az,
+            -acc.dependent[1],
+            -acc.independent[0],
+            -acc.dependent[0],
+            -acc.independent[1],
+            -acc.independent[2],
+            -acc.dependent[2],
+        ])
+    }
+
+    /// Solves the pitch for `s` (Newton from `guess`) and returns the configuration.
+    fn configuration(&self, s: &State, guess: f64) -> Result<Configuration, NonlinearError> {
+        let pitch = self.pitch(s.lean, s.steer, guess)?;
+        Ok(Configuration {
+            lean: s.lean,
+            pitch,
+            steer: s.steer,
+            lean_rate: s.lean_rate,
+            steer_rate: s.steer_rate,
+            rear_wheel_rate: s.rear_wheel_rate,
+        })
+    }
+
+    /// Time derivative of the state, and the pitch used.
+    fn rhs(&self, s: &State, guess: f64) -> Result<([f64; 10], f64), NonlinearError> {
+        let c = self.configuration(s, guess)?;
+        let a = self.accelerations(&c)?;
+        let (sy, cy) = s.yaw.sin_cos();
+        Ok((
+            [
+                a.rear_speed * cy,
+                a.rear_speed * sy,
+                a.dependent_rates[1],
+                s.lean_rate,
+                s.steer_rate,
+                s.rear_wheel_rate,
+                a.dependent_rates[2],
+                a.independent[0],
+                a.independent[1],
+                a.independent[2],
+            ],
+            c.pitch,
+        ))
+    }
+
+    fn sample(&self, t: f64, s: &State, guess: f64) -> Result<Sample, NonlinearError> {
+        let c = self.configuration(s, guess)?;
+        let a = self.accelerations(&c)?;
+        let (energy, fc) = self.observe(&c);
+        let (sy, cy) = s.yaw.sin_cos();
+        Ok(Sample {
+            t,
+            state: *s,
+            pitch: c.pitch,
+            speed: a.rear_speed,
+            rear_contact: [s.x, s.y],
+            front_contact: [s.x + cy * fc[0] - sy * fc[1], s.y + sy * fc[0] + cy * fc[1]],
+            energy,
+        })
+    }
+
+    /// The upright state moving straight ahead at `speed` (m/s) with the lean `lean0` (rad)
+    /// and every other angle and rate zero.
+    ///
+    /// # Errors
+    /// [`NonlinearError::InvalidParameter`] for a non-finite speed or lean.
+    pub fn initial_state(&self, speed: f64, lean0: f64) -> Result<State, NonlinearError> {
+        finite("speed", speed)?;
+        finite("lean0", lean0)?;
+        Ok(State {
+            x: 0.0,
+            y: 0.0,
+            yaw: 0.0,
+            lean: lean0,
+            steer: 0.0,
+            rear_wheel: 0.0,
+            front_wheel: 0.0,
+            lean_rate: 0.0,
+            steer_rate: 0.0,
+            rear_wheel_rate: -speed / self.param("rR"),
+        })
+    }
+
+    /// Integrates from `start` for `duration` seconds with the classical Runge–Kutta method of
+    /// step `step`, solving the pitch by Newton at every stage; keeps every `every`-th step
+    /// (and the first and last).
+    ///
+    /// # Errors
+    /// [`NonlinearError::InvalidParameter`] for a non-positive or non-finite duration or step,
+    /// a step longer than the duration, more than ten million steps, or `every == 0`; no
+    /// contact (the bicycle fell flat) or a singular mass matrix during the run.
+    pub fn simulate(
+        &self,
+        start: State,
+        duration: f64,
+        step: f64,
+        every: usize,
+    ) -> Result<Trajectory, NonlinearError> {
+        for (name, v) in [("duration", duration), ("step", step)] {
+            finite(name, v)?;
+            if v <= 0.0 {
+                return Err(NonlinearError::InvalidParameter {
+                    name,
+                    value: v,
+                    reason: "must be positive",
+                });
+            }
+        }
+        if step > duration {
+            return Err(NonlinearError::InvalidParameter {
+                name: "step",
+                value: step,
+                reason: "must not exceed the duration",
+            });
+        }
+        let n = (duration / step).round();
+        if n > 1e7 {
+            return Err(NonlinearError::InvalidParameter {
+                name: "step",
+                value: step,
+                reason: "gives more than ten million steps",
+            });
+        }
+        if every == 0 {
+            return Err(NonlinearError::InvalidParameter {
+                name: "every",
+                value: 0.0,
+                reason: "must be positive",
+            });
+        }
+        let n = n as usize;
+        let h = duration / n as f64;
+        for (k, v) in start.to_array().iter().enumerate() {
+            finite(
+                [
+                    "x",
+                    "y",
+                    "yaw",
+                    "lean",
+                    "steer",
+                    "rear wheel",
+                    "front wheel",
+                    "lean rate",
+                    "steer rate",
+                    "rear wheel rate",
+                ][k],
+                *v,
+            )?;
+        }
+        let mut s = start;
+        let mut pitch = self.pitch(s.lean, s.steer, 0.0)?;
+        let first = self.sample(0.0, &s, pitch)?;
+        let e0 = first.energy;
+        let mut samples = vec![first];
+        let (mut drift, mut residual) = (0.0f64, 0.0f64);
+        let add = |a: &[f64; 10], k: &[f64; 10], f: f64| -> State {
+            State::from_array(std::array::from_fn(|i| a[i] + f * k[i]))
+        };
+        for i in 1..=n {
+            let y = s.to_array();
+            let (k1, p1) = self.rhs(&s, pitch)?;
+            let (k2, p2) = self.rhs(&add(&y, &k1, h / 2.0), p1)?;
+            let (k3, p3) = self.rhs(&add(&y, &k2, h / 2.0), p2)?;
+            let (k4, _) = self.rhs(&add(&y, &k3, h), p3)?;
+            s = State::from_array(std::array::from_fn(|j| {
+                y[j] + h / 6.0 * (k1[j] + 2.0 * k2[j] + 2.0 * k3[j] + k4[j])
+            }));
+            let c = self.configuration(&s, p1)?;
+            pitch = c.pitch;
+            residual = residual.max(self.contact(c.lean, c.pitch, c.steer).0.abs());
+            let (e, _) = self.observe(&c);
+            drift = drift.max((e - e0).abs());
+            if i % every == 0 || i == n {
+                samples.push(self.sample(i as f64 * h, &s, pitch)?);
+            }
+        }
+        Ok(Trajectory { step: h, samples, energy_drift: drift, max_contact_residual: residual })
+    }
+}
