@@ -9,12 +9,14 @@
 pub use carvallo_ir as ir;
 pub use carvallo_macros::scene;
 
+pub mod bicycle_steady;
 pub mod error;
 pub mod hoop;
 pub mod hoop_discussion;
 pub mod report;
-pub mod report_unicycle;
+pub mod report_bicycle_steady;
 pub mod report_hoop_discussion;
+pub mod report_unicycle;
 pub mod report_whipple;
 pub mod unicycle;
 pub mod whipple;
