@@ -79,15 +79,21 @@ fn monomial_degree(m: &Atom, x: &Atom) -> Option<u32> {
 /// Reduces a polynomial in [`sin_t`] modulo $\sin^2\theta + \cos^2\theta - 1$ to the normal
 /// form $a + \sin\theta\,b$ where $a, b$ do not contain $\sin\theta$ (exact).
 pub fn reduce_trig(e: &Atom) -> Atom {
-    let st = sin_t();
-    let one_minus_c2 = Atom::num(1) - cos_t().pow(Atom::num(2));
+    reduce_pair(e, &sin_t(), &cos_t())
+}
+
+/// Reduces a polynomial in the stand-in `st` of a sine modulo $st^2 + ct^2 - 1$, `ct` being
+/// the stand-in of the cosine of the same angle, to the normal form $a + st\,b$ (exact); the
+/// rule of [`reduce_trig`] for any angle.
+pub fn reduce_pair(e: &Atom, st: &Atom, ct: &Atom) -> Atom {
+    let one_minus_c2 = Atom::num(1) - ct.pow(Atom::num(2));
     let expanded = e.expand();
     let mut out = Atom::num(0);
-    for (key, coeff) in expanded.coefficient_list::<u8>(std::slice::from_ref(&st)) {
-        let k = monomial_degree(&key, &st).unwrap_or(0);
+    for (key, coeff) in expanded.coefficient_list::<u8>(std::slice::from_ref(st)) {
+        let k = monomial_degree(&key, st).unwrap_or(0);
         let mut term = coeff * one_minus_c2.pow(Atom::num((k / 2) as i64));
         if k % 2 == 1 {
-            term *= &st;
+            term *= st;
         }
         out += term;
     }

@@ -34,6 +34,7 @@ pub const DERIVATIONS: &[(&str, DeriveFn)] = &[
     ("whipple", crate::whipple::derive),
     ("unicycle", crate::unicycle::derive),
     ("whipple_nonlinear", crate::whipple_nonlinear::derive),
+    ("bicycle_steady", crate::bicycle_steady::derive),
 ];
 
 /// The directory, relative to the workspace root, that holds the generated files.

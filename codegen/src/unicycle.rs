@@ -35,7 +35,8 @@ pub const PARAMS: [&str; 12] = ["R", "g", "mu", "z", "A", "B", "C", "L", "mu1", 
 /// Input names of the unicycle model, in order.
 pub const INPUTS: [&str; 7] = ["theta", "p", "n", "s", "dp", "dn", "ds"];
 
-fn degree(m: &Atom, x: &Atom) -> u32 {
+/// The degree in the symbol `x` of the monomial `m` (99 when above 15).
+pub(crate) fn degree(m: &Atom, x: &Atom) -> u32 {
     let sym = x.get_symbol().expect("a symbol");
     if !m.contains_symbol(sym) {
         return 0;

@@ -13,12 +13,14 @@ pub use carvallo_macros::scene;
 
 pub mod bench;
 pub mod certified;
+pub mod bicycle_steady;
 pub mod error;
 pub mod hoop;
 pub mod hoop_discussion;
 pub mod quartic;
 pub mod report;
 pub mod report_unicycle;
+pub mod report_bicycle_steady;
 pub mod report_hoop_discussion;
 pub mod report_markdown;
 pub mod report_whipple;

@@ -38,17 +38,20 @@ pub(crate) fn out(point: &Point, name: &str) -> f64 {
     eval(point)[name]
 }
 
-struct Rng(u64);
+/// The seeded splitmix64 generator of the sample points.
+pub(crate) struct Rng(pub(crate) u64);
 
 impl Rng {
-    fn next(&mut self) -> f64 {
+    /// A uniform number in [0, 1).
+    pub(crate) fn next(&mut self) -> f64 {
         self.0 = self.0.wrapping_add(0x9E37_79B9_7F4A_7C15);
         let mut z = self.0;
         z = (z ^ (z >> 30)).wrapping_mul(0xBF58_476D_1CE4_E5B9);
         z = (z ^ (z >> 27)).wrapping_mul(0x94D0_49BB_1331_11EB);
         ((z ^ (z >> 31)) >> 11) as f64 / (1u64 << 53) as f64
     }
-    fn uniform(&mut self, lo: f64, hi: f64) -> f64 {
+    /// A uniform number in [lo, hi).
+    pub(crate) fn uniform(&mut self, lo: f64, hi: f64) -> f64 {
         lo + (hi - lo) * self.next()
     }
 }
@@ -102,13 +105,13 @@ fn rel_diff(d: f64, m: f64) -> f64 {
 
 /// A formula entry: the largest relative difference of `derived` and `memoir` over `pts`.
 #[allow(clippy::too_many_arguments)]
-fn formula_entry(
+pub(crate) fn formula_entry<P>(
     section: &str,
     quantity: &str,
     printed: &str,
-    pts: &[Point],
-    derived: impl Fn(&Point) -> f64,
-    memoir: impl Fn(&Point) -> f64,
+    pts: &[P],
+    derived: impl Fn(&P) -> f64,
+    memoir: impl Fn(&P) -> f64,
     otherwise: Verdict,
     note: &str,
 ) -> Entry {
@@ -132,7 +135,7 @@ fn formula_entry(
 }
 
 /// A printed slide-rule number with `decimals` decimals (policy in the module docs).
-fn number(
+pub(crate) fn number(
     section: &str,
     quantity: &str,
     memoir: f64,
