@@ -9,6 +9,7 @@
 use std::io::Write;
 use std::process::ExitCode;
 
+mod straight;
 mod whipple;
 
 const HELP: &str = "\
@@ -18,6 +19,8 @@ Usage:
     carvallo report [--json]    print the memoir concordance (text table, or JSON with --json)
     carvallo window --model benchmark|FILE.toml [--json]
                                 stable speed range of the linearised Carvallo-Whipple bicycle
+    carvallo window --model carvallo|carvallo-formulas|carvallo-memoir|carvallo-quartic [--json]
+                                Carvallo's bicycle without hands (memoir n° 117-121)
     carvallo eig --model benchmark|FILE.toml --speed V [--json]
                                 eigenvalues of the linearised bicycle at speed V [m/s]
     carvallo --help             print this help
