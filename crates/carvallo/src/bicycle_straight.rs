@@ -499,6 +499,45 @@ pub fn friction_half_swing(a: f64, k: f64, theta0: f64, eps: f64, steps: usize) 
     (f64::NAN, f64::NAN)
 }
 
+/// Memoir n° 124: the virtual works of gravity on a mounted unicycle (mass $\mu$, centre of
+/// mass at height $h$ on the wheel plane's axis $k$) on ground inclined by $i$, for the lean
+/// $\theta$, the turn $\nu$ about the ground normal $K$ and the wheel rotation $\sigma$
+/// (radius $R$), with $\delta$ the angle of the travel direction $I$ with the upward slope line.
+///
+/// Computed by central differences ($h = 10^{-5}$) of the potential $V = \mu g\,(G\cdot K')$
+/// built from the vectors: ground axes $(x$ up the slope$, y, K)$, vertical $K' = (\sin i, 0,
+/// \cos i)$, $I = (\cos\delta, \sin\delta, 0)$, $J = K\times I$, $k = -J\sin\theta +
+/// K\cos\theta$ (n° 1), $G = O + hk$; a turn $\nu$ adds to $\delta$, a rotation $\sigma$
+/// moves $O$ by $R\sigma I$. Returns $(-\partial V/\partial\theta, -\partial V/\partial\nu,
+/// -\partial V/\partial\sigma)$.
+pub fn incline_virtual_works(
+    mu: f64,
+    g: f64,
+    h: f64,
+    r: f64,
+    i: f64,
+    delta: f64,
+    theta: f64,
+) -> [f64; 3] {
+    let v = |th: f64, nu: f64, sg: f64| {
+        let d = delta + nu;
+        let kv = [i.sin(), 0.0, i.cos()];
+        let ii = [d.cos(), d.sin(), 0.0];
+        let jj = [-d.sin(), d.cos(), 0.0];
+        let kk = [0.0, 0.0, 1.0];
+        let o = [r * sg * ii[0], r * sg * ii[1], 0.0];
+        let gpos: [f64; 3] =
+            std::array::from_fn(|n| o[n] + h * (-jj[n] * th.sin() + kk[n] * th.cos()));
+        mu * g * (0..3).map(|n| gpos[n] * kv[n]).sum::<f64>()
+    };
+    let e = 1e-5;
+    [
+        -(v(theta + e, 0.0, 0.0) - v(theta - e, 0.0, 0.0)) / (2.0 * e),
+        -(v(theta, e, 0.0) - v(theta, -e, 0.0)) / (2.0 * e),
+        -(v(theta, 0.0, e) - v(theta, 0.0, -e)) / (2.0 * e),
+    ]
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;

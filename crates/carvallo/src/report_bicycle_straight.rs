@@ -17,7 +17,8 @@
 //! (the note says where the slip is). OCR misreadings found by the same comparison are `ocr`.
 
 use crate::bicycle_straight::{
-    friction_half_swing, km_per_hour, memoir_quartic_120, window, Constants, Equations, Window,
+    friction_half_swing, incline_virtual_works, km_per_hour, memoir_quartic_120, window, Constants,
+    Equations, Window,
 };
 use crate::report::{Derived, Entry, Memoir, Verdict, AGREEMENT_TOLERANCE};
 
@@ -169,6 +170,7 @@ pub fn entries() -> Vec<Entry> {
     out.extend(limit_entries(&k, &memoir, &formulas, &general));
     out.extend(new_bicycle_entries(&k));
     out.extend(friction_entries());
+    out.extend(incline_entries());
     out
 }
 
@@ -561,4 +563,68 @@ fn friction_entries() -> Vec<Entry> {
         note: "RK4 of θ'' - 2εθ' + a²(θ + k) = 0 from rest at -θ0 to the next θ' = 0; the exact half period is π/sqrt(a² - ε²), so the memoir's form is right to the order ε² it neglects (agreement within ε² relative)".to_string(),
     });
     out
+}
+
+/// n° 124: the virtual works of gravity on inclined ground (unicycle).
+fn incline_entries() -> Vec<Entry> {
+    let (mu, g, h, r) = (80.0, 9.81, 1.1, 0.38);
+    let mut worst = [0.0f64; 4];
+    let mut scale = [0.0f64; 4];
+    for i in [0.05, 0.2] {
+        for delta in [0.3, 1.2, 2.5, -0.8] {
+            for theta in [0.1, -0.4, 0.7] {
+                let w = incline_virtual_works(mu, g, h, r, i, delta, theta);
+                let printed = [
+                    mu * g * h * (i.cos() * theta.sin() - i.sin() * theta.cos() * delta.sin()),
+                    -mu * g * h * i.sin() * theta.sin() * theta.cos(),
+                    -mu * g * h * i.sin() * theta.sin() * delta.cos(),
+                    mu * g * r * delta.cos() * i.sin(),
+                ];
+                let derived = [w[0], w[1], w[1], w[2]];
+                for n in 0..4 {
+                    worst[n] = worst[n].max((printed[n] - derived[n]).abs());
+                    scale[n] = scale[n].max(derived[n].abs());
+                }
+            }
+        }
+    }
+    let tol = 1e-6;
+    let rows = [
+        ("(δθ) virtual work on inclined ground", "μgh(cos i sin θ - sin i cos θ sin δ)", Verdict::Agrees,
+         "equals -dV/dθ of the potential built from the vectors (central differences)"),
+        ("(δν) virtual work on inclined ground, as printed", "- μgh sin i sin θ cos θ", Verdict::Ocr,
+         "as printed it differs from -dV/dν; read cos δ for the last cos θ (next entry), which agrees"),
+        ("(δν) virtual work, cos δ read for cos θ", "- μgh sin i sin θ cos δ", Verdict::Agrees,
+         "equals -dV/dν (central differences)"),
+        ("(δσ) virtual work on inclined ground", "+ μgR cos δ sin i", Verdict::MemoirError,
+         "-dV/dσ is -μgR cos δ sin i: rolling up the slope (cos δ > 0) gravity does negative work. The printed sign is that of the equation term +Σ m g dz/dq of n° 115, while the (δθ) and (δν) lines are virtual works: the three lines mix the two conventions"),
+    ];
+    rows.iter()
+        .enumerate()
+        .map(|(n, (q, text, expected, note))| {
+            let r = worst[n] / scale[n];
+            let agrees = r <= tol;
+            let verdict = match expected {
+                Verdict::Agrees if agrees => Verdict::Agrees,
+                Verdict::Agrees => Verdict::DerivationDiffers,
+                other if !agrees => *other,
+                _ => Verdict::Agrees,
+            };
+            Entry {
+                section: "124".to_string(),
+                quantity: q.to_string(),
+                memoir: Memoir::Formula(text.to_string()),
+                // Below the tolerance the central-difference error (about 1e-10) is not
+                // printed: its last digits depend on the platform's sin and cos.
+                derived: if agrees {
+                    numbers(&[("within 1e-6", 1.0)])
+                } else {
+                    numbers(&[("max |printed - derived| / max |derived|", r)])
+                },
+                rel_diff: if agrees { None } else { Some(r) },
+                verdict,
+                note: format!("{note}; 24 points (i, δ, θ), μ = 80, h = 1.1, R = 0.38; agreement within {tol:e} (central differences)"),
+            }
+        })
+        .collect()
 }

@@ -32,6 +32,8 @@ fn findings() -> BTreeMap<(&'static str, &'static str), Verdict> {
         (("121", "lower limit s^2 = 67.3 from (5)"), MemoirError),
         (("121", "lower limit speed 10 km/h"), MemoirError),
         (("122", "ratio s'^2/s^2 of the three-factor formula"), MemoirError),
+        (("124", "(δν) virtual work on inclined ground, as printed"), Ocr),
+        (("124", "(δσ) virtual work on inclined ground"), MemoirError),
     ])
 }
 
