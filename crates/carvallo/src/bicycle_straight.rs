@@ -253,8 +253,8 @@ impl Equations {
     /// $\mathfrak A_1'' = \mathfrak B''$, $\mathfrak A_1' = s(B_1 - \mu_1R^2)(2c_1/l + \cos\eta)$,
     /// $\mathfrak A_1 = gQ$,
     /// $\mathfrak B_1'' = (C + C_1)(c_1/l)^2 + C_1(c_1/l + \cos\eta)^2 + A_1\sin^2\eta$,
-    /// $\mathfrak B_1' = s[(Rc_1/l^2)\cos\eta(C + 2C_1) + C_1(R/l)\cos^2\eta + \mu Re(c_1/l)^2
-    /// + \mu_1R^2\sin\eta(\cos\eta + c_1/l)]$,
+    /// $\mathfrak B_1' = s[(Rc_1/l^2)\cos\eta(C + 2C_1) + C_1(R/l)\cos^2\eta +
+    /// \mu Re(c_1/l)^2 + \mu_1R^2\sin\eta(\cos\eta + c_1/l)]$,
     /// $\mathfrak B_1 = s^2(R/l)\cos\eta(\mu Rec_1/l + B_1\sin\eta) - gQ\sin\eta$.
     ///
     /// These are the memoir's formulas, not a derivation: [`Equations::via_whipple`] is the

@@ -245,7 +245,7 @@ fn quartic_entries(m: &Equations, f: &Equations) -> Vec<Entry> {
     let mut out = Vec::new();
     let s = 8.2;
     let c = m.coefficients(s);
-    let sc = |i: usize| c[i] / s.powi([0, 1, 2][i % 3] as i32);
+    let sc = |i: usize| c[i] / s.powi([0, 1, 2][i % 3]);
     let (a2, a1, a0, b2, b1, b0) = (sc(0), sc(1), sc(2), sc(3), sc(4), sc(5));
     let (p2, p1, _p0, q2, q1, q0) = (sc(6), sc(7), sc(8), sc(9), sc(10), sc(11));
     let q = m.quartic(s);

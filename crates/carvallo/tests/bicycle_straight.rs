@@ -3,6 +3,8 @@
 //! eigenvalues of the first-order system, the stability window against those eigenvalues, the
 //! closed-form upper limit against the scanned one, and rejection of bad constants by name.
 
+#![allow(clippy::needless_range_loop)]
+
 use carvallo::bicycle_straight::{
     friction_half_swing, hurwitz, memoir_quartic_120, window, Constants, Equations,
 };
