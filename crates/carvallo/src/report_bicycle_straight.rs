@@ -166,6 +166,7 @@ pub fn entries() -> Vec<Entry> {
     let memoir = Equations::memoir_118();
     out.extend(table_sign_entries());
     out.extend(coefficient_entries(&formulas, &general));
+    out.push(time_scale_entry(&general));
     out.extend(quartic_entries(&memoir, &formulas));
     out.extend(limit_entries(&k, &memoir, &formulas, &general));
     out.extend(new_bicycle_entries(&k));
@@ -627,4 +628,51 @@ fn incline_entries() -> Vec<Entry> {
             }
         })
         .collect()
+}
+
+/// n° 118–119: with $T = st$ the roots λ of the quartic are the eigenvalues of the equations in
+/// $t$ divided by $s$; checked at three spins with the general model's equations, the
+/// eigenvalues from the 4 × 4 first-order system (nalgebra).
+fn time_scale_entry(e: &Equations) -> Entry {
+    let mut worst: f64 = 0.0;
+    for s in [3.0, 8.2, 9.5] {
+        let m = e.m;
+        let d = m[0][0] * m[1][1] - m[0][1] * m[1][0];
+        let inv = [[m[1][1] / d, -m[0][1] / d], [-m[1][0] / d, m[0][0] / d]];
+        let mut a = nalgebra::Matrix4::<f64>::zeros();
+        a[(0, 2)] = 1.0;
+        a[(1, 3)] = 1.0;
+        for r in 0..2 {
+            for c in 0..2 {
+                let (mut kk, mut cc) = (0.0, 0.0);
+                for (j, row) in inv[r].iter().enumerate() {
+                    kk += row * (e.k0[j][c] + e.k2[j][c] * s * s);
+                    cc += row * e.c[j][c] * s;
+                }
+                a[(2 + r, c)] = -kk;
+                a[(2 + r, 2 + c)] = -cc;
+            }
+        }
+        let q = e.quartic(s);
+        for z in a.complex_eigenvalues().iter() {
+            let l = z / s;
+            let mut p = nalgebra::Complex::new(0.0, 0.0);
+            let mut scale = 0.0;
+            for (k, qk) in q.iter().enumerate() {
+                p += l.powi(k as i32) * *qk;
+                scale += (qk * l.norm().powi(k as i32)).abs();
+            }
+            worst = worst.max(p.norm() / scale);
+        }
+    }
+    let tol = 1e-10;
+    Entry {
+        section: "118".to_string(),
+        quantity: "T = s t: quartic roots times s are the eigenvalues in t".to_string(),
+        memoir: Memoir::Formula("d/dt = s d/dT, equations divided by s^2".to_string()),
+        derived: numbers(&[("within 1e-10", if worst <= tol { 1.0 } else { 0.0 })]),
+        rel_diff: None,
+        verdict: if worst <= tol { Verdict::Agrees } else { Verdict::DerivationDiffers },
+        note: "largest |quartic(eigenvalue / s)| / sum |q_k λ^k| over the four eigenvalues of the first-order system at s = 3, 8.2, 9.5 (general model at the constants of n° 117)".to_string(),
+    }
 }
