@@ -13,6 +13,7 @@ mod figures;
 mod report_out;
 mod perf;
 mod nonlinear;
+mod straight;
 mod whipple;
 
 const HELP: &str = "\
@@ -24,6 +25,8 @@ Usage:
                                 write DIR/report.md (concordance, errata) and the SVG figures
     carvallo window --model benchmark|FILE.toml [--json]
                                 stable speed range of the linearised Carvallo-Whipple bicycle
+    carvallo window --model carvallo|carvallo-formulas|carvallo-memoir|carvallo-quartic [--json]
+                                Carvallo's bicycle without hands (memoir n° 117-121)
     carvallo eig --model benchmark|FILE.toml --speed V [--json]
                                 eigenvalues of the linearised bicycle at speed V [m/s]
     carvallo bench [--json] [--quick]

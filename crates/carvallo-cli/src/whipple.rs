@@ -19,6 +19,7 @@ use serde_json::{json, Value};
 const HELP: &str = "\
 Usage:
     carvallo window --model benchmark|FILE.toml [--json]
+    carvallo window --model carvallo|carvallo-formulas|carvallo-memoir|carvallo-quartic [--json]
     carvallo eig --model benchmark|FILE.toml --speed V [--json]
 ";
 
@@ -85,6 +86,9 @@ fn finite(x: f64) -> Value {
 fn run(cmd: &Command) -> Result<String, String> {
     match cmd {
         Command::Window { model, json } => {
+            if let Some(out) = crate::straight::window_output(model, *json) {
+                return out;
+            }
             let w = Whipple::new(load(model)?).stability_window();
             let stable: Vec<Value> =
                 w.stable.iter().map(|(a, b)| json!([finite(*a), finite(*b)])).collect();
