@@ -36,6 +36,8 @@ use serde::Serialize;
 use crate::quartic::{self, C64};
 use crate::sweep::{self, EigenGrid, Method};
 use crate::whipple::{matrices_scene, Matrices, Whipple, WhippleParams, PARAM_NAMES};
+use crate::whipple_nonlinear::{dynamics_scene, Configuration, WhippleNonlinear};
+use nalgebra::{Matrix3, Vector3};
 
 const HOOP_IR: &str = include_str!("../../../generated/hoop.ir");
 const UNICYCLE_IR: &str = include_str!("../../../generated/unicycle.ir");
@@ -917,6 +919,34 @@ crate::scene! {
     }
 }
 
+crate::scene! {
+    /// The nonlinear bicycle's mass matrix $M_3$ and forcing $f_3$, free parameters.
+    pub mod nonlinear_rhs_scene {
+        model: whipple_nonlinear,
+        outputs: [m3_11, m3_12, m3_13, m3_22, m3_23, m3_33, f3_1, f3_2, f3_3],
+    }
+}
+
+crate::scene! {
+    /// The nonlinear bicycle's $M_3$ and $f_3$, every benchmark parameter fixed.
+    pub mod nonlinear_rhs_fixed_scene {
+        model: whipple_nonlinear,
+        fixed: { w: 1.02, c: 0.08, lambda: 0.3141592653589793, g: 9.81, rR: 0.3, mR: 2.0,
+                 IRxx: 0.0603, IRyy: 0.12, xB: 0.3, zB: -0.9, mB: 85.0, IBxx: 9.2, IByy: 11.0,
+                 IBzz: 2.8, IBxz: 2.4, xH: 0.9, zH: -0.7, mH: 4.0, IHxx: 0.05892, IHyy: 0.06,
+                 IHzz: 0.00708, IHxz: -0.00756, rF: 0.35, mF: 3.0, IFxx: 0.1405, IFyy: 0.28 },
+        outputs: [m3_11, m3_12, m3_13, m3_22, m3_23, m3_33, f3_1, f3_2, f3_3],
+    }
+}
+
+crate::scene! {
+    /// The nonlinear bicycle's mass matrix $M_3$ only, free parameters.
+    pub mod nonlinear_mass_scene {
+        model: whipple_nonlinear,
+        outputs: [m3_11, m3_12, m3_13, m3_22, m3_23, m3_33],
+    }
+}
+
 /// Table 6: scenes that ask for less.
 fn scene_rows(cfg: &Config, rows: &mut Vec<Row>) {
     let mut add = |name: &str, kind: &str, ops: usize, ns: f64, note: &str| {
@@ -1019,15 +1049,82 @@ fn scene_rows(cfg: &Config, rows: &mut Vec<Row>) {
     let a = arr!(unicycle_rhs_fixed_scene, 0.0);
     let t = time_ns(mt, || unicycle_rhs_fixed_scene::eval_array(black_box(&a)));
     add("unicycle (c) full right-hand side", "fixed", unicycle_rhs_fixed_scene::OP_COUNT, t, "");
-    rows.push(Row {
-        section: "scenes",
-        name: "bicycle (c) full nonlinear right-hand side".into(),
-        method: "-".into(),
-        ops: None,
-        ns: None,
-        max_rel_err: None,
-        note: "not available yet: the nonlinear bicycle is being added by another helper".into(),
+    // The nonlinear bicycle at a leaned, steered, moving configuration of the benchmark (the
+    // pitch solved from the contact constraint), solved for the three accelerations by LU.
+    let wn = WhippleNonlinear::new(WhippleParams::benchmark());
+    let (lean, steer) = (0.1, 0.05);
+    let config = wn.pitch(lean, steer, 0.0).map(|pitch| Configuration {
+        lean,
+        pitch,
+        steer,
+        lean_rate: 0.2,
+        steer_rate: -0.1,
+        rear_wheel_rate: -5.0 / 0.3,
     });
+    if let Ok(c) = config {
+        let nl_args = |names: &[&str]| -> Vec<f64> {
+            let b = WhippleParams::benchmark();
+            names
+                .iter()
+                .map(|n| match *n {
+                    "phi" => c.lean,
+                    "theta" => c.pitch,
+                    "delta" => c.steer,
+                    "phid" => c.lean_rate,
+                    "deltad" => c.steer_rate,
+                    "thetaRd" => c.rear_wheel_rate,
+                    n => b.get(n).unwrap_or(f64::NAN),
+                })
+                .collect()
+        };
+        let solve = |o: [f64; 9]| {
+            let m = Matrix3::new(o[0], o[1], o[2], o[1], o[3], o[4], o[2], o[4], o[5]);
+            m.lu().solve(&Vector3::new(o[6], o[7], o[8]))
+        };
+        macro_rules! nl_arr {
+            ($m:path) => {{
+                use $m as s;
+                let a = nl_args(&scene_args(s::PARAMS, s::INPUTS));
+                let arr: [f64; s::Args::LEN] = std::array::from_fn(|i| a[i]);
+                arr
+            }};
+        }
+        let a = nl_arr!(nonlinear_rhs_scene);
+        let t = time_ns(mt, || solve(nonlinear_rhs_scene::eval_array(black_box(&a))));
+        add(
+            "bicycle (c) full nonlinear right-hand side",
+            "free",
+            nonlinear_rhs_scene::OP_COUNT,
+            t,
+            "M3, f3 + LU (PyDy's mass matrix + forcing: 2,367 ops)",
+        );
+        let a = nl_arr!(nonlinear_rhs_fixed_scene);
+        let t = time_ns(mt, || solve(nonlinear_rhs_fixed_scene::eval_array(black_box(&a))));
+        add(
+            "bicycle (c) full nonlinear right-hand side",
+            "fixed",
+            nonlinear_rhs_fixed_scene::OP_COUNT,
+            t,
+            "M3, f3 + LU",
+        );
+        let a = nl_arr!(nonlinear_mass_scene);
+        let t = time_ns(mt, || nonlinear_mass_scene::eval_array(black_box(&a)));
+        add(
+            "bicycle (c') nonlinear mass matrix only",
+            "free",
+            nonlinear_mass_scene::OP_COUNT,
+            t,
+            "M3",
+        );
+        let t = time_ns(mt, || wn.accelerations(black_box(&c)));
+        add(
+            "bicycle (c) full nonlinear right-hand side",
+            "free, with dependent rates",
+            dynamics_scene::OP_COUNT,
+            t,
+            "WhippleNonlinear::accelerations (M3, f3, dependent rates and accelerations, LU)",
+        );
+    }
 }
 
 /// Table 7; returns the Hurwitz sweep's seconds per $10^6$ designs.
