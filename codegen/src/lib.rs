@@ -60,6 +60,7 @@ pub struct Derivation {
     pub checks: Vec<Check>,
 }
 
+pub mod bicycle_geometry;
 pub mod emit;
 pub mod frame;
 pub mod hoop;
