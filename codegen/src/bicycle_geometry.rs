@@ -721,7 +721,7 @@ pub fn derive() -> Result<Derivation> {
         detail: "j1 + CN, |I1 j1 - k1, I1|CN, k1|CN reduced to 0".into(),
     });
     // alpha, beta from CN on I, J, K: cos beta = Wb = sqrt(CN_I^2 + CN_J^2).
-    let k1_direct = Vector::new(Trihedron::IJK, &ci * &ck / wb(), &cj * &ck / wb(), wb());
+    let k1_direct = Vector::new(Trihedron::IJK, -(&ci * &ck / wb()), -(&cj * &ck / wb()), wb());
     let k1_from_abn = k1.map(|e| {
         let e = subst(e, &sa, &(&ci / wb()));
         let e = subst(&e, &ca, &(-&cj / wb()));
@@ -731,7 +731,7 @@ pub fn derive() -> Result<Derivation> {
     checks.push(Check {
         section: "58".into(),
         id: "front_axes_in_theta_gamma_sigma_58".into(),
-        statement: "with sin alpha = CN_I / cos beta, cos alpha = -CN_J / cos beta, sin beta = CN_K, cos beta = Wb = sqrt(CN_I^2 + CN_J^2), k1 = (CN_I CN_K, CN_J CN_K, Wb^2) / Wb, the steepest line of the front wheel (k1|CN = 0, k1|k1 = 1)".into(),
+        statement: "with sin alpha = CN_I / cos beta, cos alpha = -CN_J / cos beta, sin beta = CN_K, cos beta = Wb = sqrt(CN_I^2 + CN_J^2), k1 = (-CN_I CN_K, -CN_J CN_K, Wb^2) / Wb, the steepest line of the front wheel (k1|CN = 0, k1|k1 = 1)".into(),
         holds: k1_from_abn.sub(&k1_direct).comps.iter().all(is_zero_mod)
             && is_zero_mod(&k1_direct.dot(&cn))
             && is_zero_mod(&(k1_direct.dot(&k1_direct) - &one)),
@@ -780,8 +780,8 @@ pub fn derive() -> Result<Derivation> {
         formula("beta", "57", "beta (rad): angle of the front wheel with the vertical (sin beta = CN_K, cos beta >= 0).", &atan2(&ck, &wb_val)),
         formula("axis_i1_x", "58", "I1|I = cos alpha: tangent to the front wheel's path.", &(-&cj / &wb_val)),
         formula("axis_i1_y", "58", "I1|J = sin alpha.", &(&ci / &wb_val)),
-        formula("axis_k1_x", "58", "k1|I = sin alpha sin theta1 (theta1 = -beta): the front wheel's steepest line.", &(&ci * &ck / &wb_val)),
-        formula("axis_k1_y", "58", "k1|J = -cos alpha sin theta1.", &(&cj * &ck / &wb_val)),
+        formula("axis_k1_x", "58", "k1|I = sin alpha sin theta1 (theta1 = -beta): the front wheel's steepest line.", &(-(&ci * &ck / &wb_val))),
+        formula("axis_k1_y", "58", "k1|J = -cos alpha sin theta1.", &(-(&cj * &ck / &wb_val))),
         formula("axis_k1_z", "58", "k1|K = cos theta1 = cos beta.", &wb_val),
     ];
     Ok(Derivation {

@@ -33,8 +33,7 @@ fn bicycle_geometry_derivation() {
     let program = emit_program(&d).expect("the derivation emits");
     let names: Vec<&str> = program.outputs.iter().map(|o| o.name.as_str()).collect();
     let s0 = 25f64.to_radians();
-    let interp = carvallo_ir::Interpreter::new(&program).expect("the program compiles");
-    let values = interp
+    let values = program
         .eval_f64(&[0.38, 1.10, 0.08, s0], &[0.0, 0.0, s0, s0])
         .expect("the program evaluates");
     let at = |name: &str| values[names.iter().position(|n| *n == name).expect("an output")];
