@@ -33,6 +33,7 @@ pub const DERIVATIONS: &[(&str, DeriveFn)] = &[
     ("hoop_discussion", crate::hoop_discussion::derive),
     ("whipple", crate::whipple::derive),
     ("unicycle", crate::unicycle::derive),
+    ("bicycle_geometry", crate::bicycle_geometry::derive),
 ];
 
 /// The directory, relative to the workspace root, that holds the generated files.
