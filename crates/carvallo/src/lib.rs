@@ -9,10 +9,12 @@
 pub use carvallo_ir as ir;
 pub use carvallo_macros::scene;
 
+pub mod bicycle_geometry;
 pub mod error;
 pub mod hoop;
 pub mod hoop_discussion;
 pub mod report;
+pub mod report_bicycle_geometry;
 pub mod report_unicycle;
 pub mod report_hoop_discussion;
 pub mod report_whipple;

@@ -132,7 +132,7 @@ fn formula_entry(
 }
 
 /// A printed slide-rule number with `decimals` decimals (policy in the module docs).
-fn number(
+pub(crate) fn number(
     section: &str,
     quantity: &str,
     memoir: f64,
@@ -160,7 +160,7 @@ fn number(
 }
 
 /// `number` with a fixed verdict for a non-`agrees` outcome.
-fn number_as(
+pub(crate) fn number_as(
     section: &str,
     quantity: &str,
     memoir: f64,
