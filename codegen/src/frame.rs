@@ -71,7 +71,7 @@ pub fn from_trig(e: &Atom) -> Atom {
 }
 
 /// The degree of the monomial `m` in the symbol `x` (`m` a product of powers, no sum).
-fn monomial_degree(m: &Atom, x: &Atom) -> Option<u32> {
+pub fn monomial_degree(m: &Atom, x: &Atom) -> Option<u32> {
     let d = (x * &m.derivative(x.get_symbol()?) / m).expand();
     (0..64).find(|k| d == Atom::num(*k as i64))
 }

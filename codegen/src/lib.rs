@@ -61,6 +61,7 @@ pub struct Derivation {
 }
 
 pub mod bicycle_steady;
+pub mod bicycle_geometry;
 pub mod emit;
 pub mod frame;
 pub mod hoop;

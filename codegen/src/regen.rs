@@ -35,6 +35,7 @@ pub const DERIVATIONS: &[(&str, DeriveFn)] = &[
     ("unicycle", crate::unicycle::derive),
     ("whipple_nonlinear", crate::whipple_nonlinear::derive),
     ("bicycle_steady", crate::bicycle_steady::derive),
+    ("bicycle_geometry", crate::bicycle_geometry::derive),
 ];
 
 /// The directory, relative to the workspace root, that holds the generated files.

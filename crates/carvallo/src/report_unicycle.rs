@@ -163,7 +163,7 @@ pub(crate) fn number(
 }
 
 /// `number` with a fixed verdict for a non-`agrees` outcome.
-fn number_as(
+pub(crate) fn number_as(
     section: &str,
     quantity: &str,
     memoir: f64,

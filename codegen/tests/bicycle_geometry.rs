@@ -1,0 +1,61 @@
+//! The bicycle geometry derivation (memoir n° 43–58): every check must come out as expected
+//! (all hold except the findings listed in `EXPECTED_FALSE`), the emitted residuals must
+//! vanish at the normal position, and the formulas handed to the emission are pinned by their
+//! names, sections and sizes.
+
+use carvallo_codegen::bicycle_geometry;
+use carvallo_codegen::emit::emit_program;
+
+// The unlicensed symbolica runs in one thread only: this file has a single `#[test]`.
+
+/// Checks that must come out false: findings about the memoir, explained in their detail.
+const EXPECTED_FALSE: [&str; 1] = [
+    // n° 51: the printed (2)' has sin sigma0 where the derivation gives cos sigma0.
+    "first_order_coefficient_51_as_printed",
+];
+
+#[test]
+fn bicycle_geometry_derivation() {
+    let d = bicycle_geometry::derive().expect("the geometry derivation runs");
+    let mut report = String::new();
+    for c in &d.checks {
+        let expected = !EXPECTED_FALSE.contains(&c.id.as_str());
+        if c.holds != expected {
+            report.push_str(&format!("{} {} holds={} {}\n", c.section, c.id, c.holds, c.detail));
+        }
+    }
+    assert!(report.is_empty(), "unexpected check outcomes:\n{report}");
+    for id in EXPECTED_FALSE {
+        assert!(d.checks.iter().any(|c| c.id == id), "missing check {id}");
+    }
+    // The emitted program at the memoir's old bicycle (n° 52) in the normal position: both
+    // residuals vanish at sigma = sigma0, mu = sigma0, and the first-order sigma1 is 0.
+    let program = emit_program(&d).expect("the derivation emits");
+    let names: Vec<&str> = program.outputs.iter().map(|o| o.name.as_str()).collect();
+    let s0 = 25f64.to_radians();
+    let values = program
+        .eval_f64(&[0.38, 1.10, 0.08, s0], &[0.0, 0.0, s0, s0])
+        .expect("the program evaluates");
+    let at = |name: &str| values[names.iter().position(|n| *n == name).expect("an output")];
+    for name in
+        ["contact_height", "lowest_point", "sigma1_first", "memoir_sigma1_first", "contact_y"]
+    {
+        assert!(at(name).abs() < 1e-15, "{name} = {} in the normal position", at(name));
+    }
+    assert!((at("contact_x") - 1.10).abs() < 1e-15, "contact_x = {}", at("contact_x"));
+    assert!((at("mu_lowest") - s0).abs() < 1e-15);
+    assert!(at("d_lowest_d_mu") > 0.0, "the normal position is a lowest point");
+    let text: String = d
+        .formulas
+        .iter()
+        .map(|f| {
+            format!("{} (n° {}): {} characters\n", f.name, f.section, f.expr.to_string().len())
+        })
+        .collect();
+    insta::with_settings!({
+        description => "the bicycle geometry formulas handed to the emission: names, sections, sizes",
+        omit_expression => true,
+    }, {
+        insta::assert_snapshot!("bicycle_geometry_formulas", text);
+    });
+}

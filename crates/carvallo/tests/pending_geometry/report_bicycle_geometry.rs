@@ -1,0 +1,58 @@
+//! Tests of the bicycle geometry concordance (memoir n° 51–57): the expected verdict of the
+//! entries that are findings, every table of the memoir present, and a snapshot of the text
+//! table with numbers normalised to 4 significant digits.
+
+use std::collections::BTreeMap;
+
+use carvallo::report::{normalise_numbers, render_text, Verdict};
+use carvallo::report_bicycle_geometry::entries;
+
+/// Entries whose verdict is not `agrees` or `rounding`, by (section, quantity).
+fn findings() -> BTreeMap<(&'static str, &'static str), Verdict> {
+    use Verdict::*;
+    BTreeMap::from([
+        (("51", "first-order sigma1 of (2)' vs the exact solution, gamma = 0..90°"), MemoirError),
+        (("51", "bicycle geometry check first_order_coefficient_51_as_printed"), MemoirError),
+    ])
+}
+
+#[test]
+fn verdicts_are_the_expected_ones() {
+    let entries = entries();
+    let findings = findings();
+    let mut unexpected = String::new();
+    for e in &entries {
+        let key = (e.section.as_str(), e.quantity.as_str());
+        let ok = match findings.get(&key) {
+            Some(v) => e.verdict == *v,
+            None => matches!(e.verdict, Verdict::Agrees | Verdict::Rounding),
+        };
+        if !ok {
+            unexpected.push_str(&format!(
+                "n° {} {}: {} ({})\n",
+                e.section,
+                e.quantity,
+                e.verdict.as_str(),
+                e.note
+            ));
+        }
+    }
+    assert!(unexpected.is_empty(), "unexpected verdicts:\n{unexpected}");
+    for (s, q) in findings.keys() {
+        assert!(entries.iter().any(|e| e.section == *s && e.quantity == *q), "no entry n° {s} {q}");
+    }
+    for section in ["44", "46", "47", "48", "49", "50", "51", "52", "53", "54", "56", "57", "58"] {
+        assert!(entries.iter().any(|e| e.section == section), "no entry for n° {section}");
+    }
+}
+
+#[test]
+fn text_report_snapshot() {
+    let text = normalise_numbers(&render_text(&entries()));
+    insta::with_settings!({
+        description => "carvallo report: the bicycle geometry concordance table, numbers to 4 significant digits",
+        omit_expression => true,
+    }, {
+        insta::assert_snapshot!("bicycle_geometry_report_text", text);
+    });
+}
