@@ -793,4 +793,36 @@ mod tests {
         assert_eq!(svg.matches("pieces b").count(), 1);
         assert!(svg.matches("<text").count() >= 6 && svg.contains("<polyline"));
     }
+
+    #[test]
+    fn carvallo_eigenvalue_roots_agree_with_the_hurwitz_window() {
+        // The plotted roots (Aberth) and the shaded range (Routh–Hurwitz) are independent.
+        let k = Constants::MEMOIR;
+        let eq = Equations::via_whipple(&k).unwrap();
+        let w = window(&|s| eq.quartic(s));
+        let (lo, hi) = w.stable_s[0];
+        let max_re = |s: f64| {
+            aberth_compensated(&eq.quartic(s)).iter().map(|z| s * z.re).fold(f64::MIN, f64::max)
+        };
+        assert!(max_re(0.5 * (lo + hi)) < 0.0, "unstable inside the window");
+        assert!(max_re(0.99 * lo) > 0.0 && max_re(1.01 * hi) > 0.0, "stable outside it");
+    }
+
+    #[test]
+    fn the_benchmark_ground_tracks_cross_while_the_weave_decays() {
+        // n° 106: the tracks cross periodically; at 4.6 m/s the weave is damped, not gone.
+        let (speed, lean0, duration, step) = TRACK_RUN;
+        let bike = WhippleNonlinear::new(WhippleParams::benchmark());
+        let start = bike.initial_state(speed, lean0).unwrap();
+        let tr = bike.simulate(start, duration, step, 1).unwrap();
+        let rear: Vec<(f64, f64)> =
+            tr.samples.iter().map(|s| (s.rear_contact[0], s.rear_contact[1])).collect();
+        let front: Vec<(f64, f64)> =
+            tr.samples.iter().map(|s| (s.front_contact[0], s.front_contact[1])).collect();
+        let at = track_crossings(&rear, &front);
+        assert!(at.len() >= 2, "{at:?}");
+        assert!(at.windows(2).all(|w| w[1].0 > w[0].0), "{at:?}");
+        let svg = fig_tracks(&WhippleParams::benchmark()).unwrap();
+        assert!(svg.contains(&format!("cross {} times", at.len())));
+    }
 }
