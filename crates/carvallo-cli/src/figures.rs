@@ -9,14 +9,20 @@
 //! Memoir figures: 3, 4 and 4 bis (hoop, n° 13–17, from [`carvallo::hoop_discussion`]), 7 and
 //! 9 (unicycle, n° 32 and 41, from [`carvallo::unicycle_discussion`]). Modern figures: the
 //! benchmark bicycle's eigenvalues against speed with the stable range shaded, and its stable
-//! speed window against the trail and against the steer axis tilt.
+//! speed window against the trail and against the steer axis tilt; Carvallo's bicycle without
+//! hands (n° 117–122, [`carvallo::bicycle_straight`]): its eigenvalues against speed with the
+//! memoir's and the derived limits; the rear and front ground tracks of a nonlinear simulation
+//! ([`carvallo::whipple_nonlinear`]) with their crossings (n° 106) counted from the data.
 
 use std::ops::Range;
 
 use anyhow::{anyhow, Result};
+use carvallo::bicycle_straight::{window, Constants, Equations};
 use carvallo::hoop_discussion::{self, Series};
+use carvallo::quartic::aberth_compensated;
 use carvallo::unicycle_discussion;
 use carvallo::whipple::{Whipple, WhippleParams, PARAM_NAMES};
+use carvallo::whipple_nonlinear::WhippleNonlinear;
 use plotters::coord::types::RangedCoordf64;
 use plotters::coord::Shift;
 use plotters::prelude::*;
@@ -50,17 +56,17 @@ pub fn all() -> Vec<Figure> {
         Figure { file: "fig07_unicycle_diagram.svg", title: "Memoir fig. 7: unicycle steady states, h/R = 2.5 (n° 32, 41)", caption: "Polar diagram (angle θ from the vertical, radius s in √(g/R)): (ℰ), the curves n = const of (E), the separation (N) with its asymptote, the branch θ < 16° of the stability limit (S) of n° 41, and the practical limits s = 1 and 20 km/h.", draw: fig_7 },
         Figure { file: "fig09_unicycle_first_member.svg", title: "Memoir fig. 9: unicycle, reality condition of S(n²) (n° 41)", caption: "The first member 1/cos θ − (h/R) sin²θ cos θ − √(h/R) sin 2θ from the generated trinomial, against θ, with the memoir's table (n° 41); the derived zeros (marked) are 16.32° and 62.82°, which the memoir reads off its graph as 16°,0 and 62°,7.", draw: fig_9 },
         Figure { file: "benchmark_eigenvalues.svg", title: "Benchmark bicycle: eigenvalues against speed", caption: "Real and imaginary parts of the four eigenvalues of the linearised Carvallo–Whipple bicycle (Meijaard et al. 2007 parameters unless --model is given) against the forward speed; the stable range is shaded.", draw: fig_eigenvalues },
+        Figure { file: "carvallo_eigenvalues.svg", title: "Carvallo's bicycle without hands (n° 117–122): eigenvalues against speed", caption: "Time eigenvalues sλ (λ the roots of the quartic of n° 119, T = st) of Carvallo's bicycle, exactly linearised through the general model at the constants of n° 117, against v = Rs (R = 0.38 m), the stable range shaded; marked on the axis: the memoir's limits s² = 67.3 and 83.6 (v = 0.38√s²) and the derived ones.", draw: fig_carvallo_eigenvalues },
+        Figure { file: "nonlinear_ground_tracks.svg", title: "Wheel ground tracks from a nonlinear simulation", caption: "Rear and front contact tracks of the nonlinear Carvallo–Whipple bicycle (benchmark parameters unless --model is given), RK4 from upright straight running at 4.6 m/s with an initial lean of 0.05 rad for 6 s; the number of crossings of the two tracks (n° 106), counted from the simulated data, is in the figure's title.", draw: fig_tracks },
         Figure { file: "benchmark_window_trail.svg", title: "Benchmark bicycle: stable speed range against the trail", caption: "Weave and capsize speeds and the stable range (shaded) as the trail c is varied, the other parameters fixed.", draw: fig_window_trail },
         Figure { file: "benchmark_window_tilt.svg", title: "Benchmark bicycle: stable speed range against the steer axis tilt", caption: "Weave and capsize speeds and the stable range (shaded) as the steer axis tilt λ (head angle 90° − λ) is varied in steps of 0.5°, the other parameters fixed. Below about 9.5° the benchmark has no stable speed; the curves there are the lowest roots of a0 (capsize) and of the Hurwitz determinant H3 (weave), which bound no stable range (a0 has no positive root at 1.5°, hence the gap).", draw: fig_window_tilt },
     ]
 }
 
 /// Figures not drawn, with the reason (listed in `report.md`).
-pub const MISSING: [Missing; 4] = [
+pub const MISSING: [Missing; 2] = [
     Missing { figure: "memoir fig. 11 (n° 52: σ1 and μ against γ, frame vertical)", reason: "needs the bicycle geometry of Part II ch. I (functions σ and μ), not derived in this workspace yet" },
     Missing { figure: "memoir fig. 13 (n° 54: locus of the front wheel's contact point)", reason: "needs the same bicycle geometry model, not derived yet" },
-    Missing { figure: "Carvallo's bicycle (n° 117–122): eigenvalues against speed", reason: "needs the linearised bicycle of the memoir's Part II ch. IV, not in this branch yet" },
-    Missing { figure: "wheel ground tracks from a nonlinear simulation", reason: "needs a nonlinear bicycle simulation, not in this branch yet" },
 ];
 
 /// How a curve is stroked.
@@ -486,37 +492,165 @@ fn fig_9(_: &WhippleParams) -> Result<String> {
 fn fig_eigenvalues(p: &WhippleParams) -> Result<String> {
     let bike = Whipple::new(p.clone());
     let v_max = 10.0;
-    let (mut re, mut im) = (Vec::new(), Vec::new());
+    let mut points = Vec::new();
     for k in 0..=400 {
         let v = v_max * k as f64 / 400.0;
-        for e in bike.eigenvalues(v) {
-            re.push((v, e.re));
-            if e.im != 0.0 {
-                im.push((v, e.im.abs()));
-            }
-        }
+        points.extend(bike.eigenvalues(v).iter().map(|e| (v, e.re, e.im)));
     }
-    let mut c = Chart::new(
+    let mut c = eigenvalue_chart(
         "Benchmark bicycle: eigenvalues of the linearised equations",
-        "forward speed v (m/s)",
-        "eigenvalue (1/s)",
-        0.0..v_max,
-        -10.0..10.0,
+        v_max,
+        10.0,
+        points,
+        &bike.stability_window().stable,
     );
-    let window = bike.stability_window();
-    for &(a, b) in &window.stable {
-        c.shade.push([(a, -10.0), (b.min(v_max), 10.0)]);
+    c.legend = SeriesLabelPosition::LowerRight;
+    c.render()
+}
+
+/// The common part of the eigenvalue figures: `points` (speed, Re λ, Im λ) as dots of Re λ
+/// and of |Im λ| (non-real ones only) within ±`y_max`, the `stable` speed intervals shaded
+/// (the first one named in the legend) and the axis λ = 0.
+fn eigenvalue_chart(
+    title: &str,
+    v_max: f64,
+    y_max: f64,
+    points: Vec<(f64, f64, f64)>,
+    stable: &[(f64, f64)],
+) -> Chart {
+    let mut c =
+        Chart::new(title, "forward speed v (m/s)", "eigenvalue (1/s)", 0.0..v_max, -y_max..y_max);
+    for &(a, b) in stable {
+        c.shade.push([(a, -y_max), (b.min(v_max), y_max)]);
     }
-    c.shade_label = match window.stable.first() {
+    c.shade_label = match stable.first() {
         Some((a, b)) => format!("stable: {a:.3} < v < {b:.3} m/s"),
         None => "no stable speed".to_string(),
     };
-    re.retain(|(_, y)| (-10.0..=10.0).contains(y));
-    im.retain(|(_, y)| (-10.0..=10.0).contains(y));
+    let inside = |y: &f64| (-y_max..=y_max).contains(y);
+    let re = points.iter().map(|&(v, re, _)| (v, re)).filter(|(_, y)| inside(y)).collect();
+    let im = points
+        .iter()
+        // Real roots found by an iteration keep an imaginary part at rounding level.
+        .filter(|(_, re, im)| im.abs() > 1e-9 * re.abs().max(1.0))
+        .map(|&(v, _, im)| (v, im.abs()))
+        .filter(|(_, y)| inside(y))
+        .collect();
     c.add(Curve::new("Re λ", re, color(0), Stroke::Points));
     c.add(Curve::new("|Im λ|", im, color(1), Stroke::Points));
     c.add(Curve::new("", vec![(0.0, 0.0), (v_max, 0.0)], BLACK, Stroke::Solid));
+    c
+}
+
+/// Carvallo's bicycle without hands (n° 117–122), exactly linearised through the general
+/// model: the roots λ of the quartic of n° 119 ($T = st$) scaled back to time eigenvalues
+/// $s\lambda$ (1/s), against $v = Rs$, with the memoir's printed limits $s^2 = 67.3$ and
+/// $83.6$ (n° 120–121) and the derived ones marked on the axis.
+fn fig_carvallo_eigenvalues(_: &WhippleParams) -> Result<String> {
+    let k = Constants::MEMOIR;
+    let eq = Equations::via_whipple(&k).map_err(|e| anyhow!("{e}"))?;
+    let v_max = 8.0;
+    let mut points = Vec::new();
+    for i in 1..=400 {
+        let v = v_max * i as f64 / 400.0;
+        let s = v / k.r;
+        let roots = aberth_compensated(&eq.quartic(s));
+        points.extend(roots.iter().map(|z| (v, s * z.re, s * z.im)));
+    }
+    let w = window(&|s| eq.quartic(s));
+    let stable: Vec<(f64, f64)> = w.stable_s.iter().map(|(a, b)| (a * k.r, b * k.r)).collect();
+    let mut c = eigenvalue_chart(
+        "Carvallo's bicycle without hands (n° 117–122): eigenvalues against speed",
+        v_max,
+        12.0,
+        points,
+        &stable,
+    );
+    for (s2, name, dy) in [(67.3, "memoir lower", 22), (83.6, "memoir upper", 40)] {
+        let v = k.r * f64::sqrt(s2);
+        c.mark_at((v, 0.0), format!("{name} s² = {s2}: v = {v:.3}"), (40, dy));
+    }
+    for (s, name, dy) in [(w.weave_s, "derived lower", -40), (w.capsize_s, "derived upper", -22)] {
+        if let Some(s) = s {
+            let v = s * k.r;
+            c.mark_at((v, 0.0), format!("{name} s² = {:.1}: v = {v:.3}", s * s), (40, dy));
+        }
+    }
     c.legend = SeriesLabelPosition::LowerRight;
+    c.render()
+}
+
+/// Where the front track crosses the rear one (the front sample after each crossing): sign
+/// changes of the lateral gap
+/// $y_F - y_R$, the rear track interpolated linearly at the front samples' $x$ (both tracks
+/// run forward, so each is a function $y(x)$), over the $x$ range both tracks cover.
+fn track_crossings(rear: &[(f64, f64)], front: &[(f64, f64)]) -> Vec<(f64, f64)> {
+    let rear_y = |x: f64| {
+        let i = rear.partition_point(|p| p.0 < x);
+        if i == 0 || i >= rear.len() {
+            return None;
+        }
+        let ((x0, y0), (x1, y1)) = (rear[i - 1], rear[i]);
+        Some(y0 + (y1 - y0) * (x - x0) / (x1 - x0))
+    };
+    let gaps: Vec<((f64, f64), f64)> = front
+        .iter()
+        .filter_map(|&(x, y)| rear_y(x).map(|yr| ((x, y), y - yr)))
+        .filter(|(_, d)| *d != 0.0)
+        .collect();
+    gaps.windows(2).filter(|w| (w[0].1 > 0.0) != (w[1].1 > 0.0)).map(|w| w[1].0).collect()
+}
+
+/// Every `k`-th point and the last one, so that at most about `n` remain.
+fn decimate(points: &[(f64, f64)], n: usize) -> Vec<(f64, f64)> {
+    let k = points.len().div_ceil(n.max(1)).max(1);
+    let mut out: Vec<(f64, f64)> = points.iter().step_by(k).copied().collect();
+    if let Some(&last) = points.last() {
+        if out.last() != Some(&last) {
+            out.push(last);
+        }
+    }
+    out
+}
+
+/// Speed (m/s), initial lean (rad), duration (s) and step (s) of the ground-track run.
+const TRACK_RUN: (f64, f64, f64, f64) = (4.6, 0.05, 6.0, 0.004);
+
+/// The rear and front contact tracks of the nonlinear bicycle from upright straight running
+/// at 4.6 m/s with an initial lean of 0.05 rad, and the number of crossings counted from them
+/// (n° 106: the two tracks cross periodically).
+fn fig_tracks(p: &WhippleParams) -> Result<String> {
+    let (speed, lean0, duration, step) = TRACK_RUN;
+    let bike = WhippleNonlinear::new(p.clone());
+    let start = bike.initial_state(speed, lean0).map_err(|e| anyhow!("{e}"))?;
+    let tr = bike.simulate(start, duration, step, 1).map_err(|e| anyhow!("{e}"))?;
+    let rear: Vec<(f64, f64)> =
+        tr.samples.iter().map(|s| (s.rear_contact[0], s.rear_contact[1])).collect();
+    let front: Vec<(f64, f64)> =
+        tr.samples.iter().map(|s| (s.front_contact[0], s.front_contact[1])).collect();
+    let crossings = track_crossings(&rear, &front);
+    let range = |f: fn(&(f64, f64)) -> f64| {
+        let values = rear.iter().chain(&front).map(f);
+        values.fold((f64::INFINITY, f64::NEG_INFINITY), |(a, b), v| (a.min(v), b.max(v)))
+    };
+    let ((x0, x1), (y0, y1)) = (range(|p| p.0), range(|p| p.1));
+    let pad = 0.08 * (y1 - y0).max(1e-3);
+    let mut c = Chart::new(
+        &format!(
+            "Ground tracks, v = {speed} m/s, lean0 = {lean0} rad: the tracks cross {} times",
+            crossings.len()
+        ),
+        "x forward (m)",
+        "y lateral (m)",
+        x0..x1,
+        y0 - pad..y1 + pad,
+    );
+    for (i, &at) in crossings.iter().enumerate() {
+        c.mark_at(at, format!("crossing {}", i + 1), (-30, if i % 2 == 0 { -24 } else { 10 }));
+    }
+    c.add(Curve::new("rear contact", decimate(&rear, 1000), color(0), Stroke::Solid));
+    c.add(Curve::new("front contact", decimate(&front, 1000), color(1), Stroke::Dashed));
+    c.legend = SeriesLabelPosition::UpperLeft;
     c.render()
 }
 
@@ -612,6 +746,30 @@ mod tests {
         for memoir in ["fig. 11", "fig. 13"] {
             assert!(MISSING.iter().any(|m| m.figure.contains(memoir)), "{memoir} not listed");
         }
+        assert_eq!((figs.len(), MISSING.len()), (10, 2));
+        for drawn in ["carvallo_eigenvalues.svg", "nonlinear_ground_tracks.svg"] {
+            assert!(files.contains(&drawn), "{drawn} not drawn");
+        }
+    }
+
+    #[test]
+    fn track_crossings_counts_sign_changes_of_the_lateral_gap_and_decimate_keeps_the_ends() {
+        // Rear y = 0; front y = sin(x) on x in [1, 20]: zeros at π, 2π, ..., 6π (6 crossings).
+        let rear: Vec<(f64, f64)> = (0..=200).map(|i| (0.1 * i as f64, 0.0)).collect();
+        let front: Vec<(f64, f64)> =
+            (10..=200).map(|i| 0.1 * i as f64).map(|x| (x, x.sin())).collect();
+        let at: Vec<f64> = track_crossings(&rear, &front).iter().map(|p| p.0).collect();
+        assert_eq!(at.len(), 6, "{at:?}");
+        for (k, x) in at.iter().enumerate() {
+            let zero = (k + 1) as f64 * std::f64::consts::PI;
+            assert!(*x >= zero && *x - zero <= 0.1 + 1e-12, "crossing {x} after zero {zero}");
+        }
+        // Parallel tracks never cross.
+        let shifted: Vec<(f64, f64)> = rear.iter().map(|&(x, _)| (x, 0.01)).collect();
+        assert!(track_crossings(&rear, &shifted).is_empty());
+        let d = decimate(&front, 50);
+        assert!(d.len() <= 51, "{}", d.len());
+        assert_eq!((d[0], d[d.len() - 1]), (front[0], front[front.len() - 1]));
     }
 
     #[test]
@@ -634,5 +792,37 @@ mod tests {
         assert_eq!(c.curves.len(), 3);
         assert_eq!(svg.matches("pieces b").count(), 1);
         assert!(svg.matches("<text").count() >= 6 && svg.contains("<polyline"));
+    }
+
+    #[test]
+    fn carvallo_eigenvalue_roots_agree_with_the_hurwitz_window() {
+        // The plotted roots (Aberth) and the shaded range (Routh–Hurwitz) are independent.
+        let k = Constants::MEMOIR;
+        let eq = Equations::via_whipple(&k).unwrap();
+        let w = window(&|s| eq.quartic(s));
+        let (lo, hi) = w.stable_s[0];
+        let max_re = |s: f64| {
+            aberth_compensated(&eq.quartic(s)).iter().map(|z| s * z.re).fold(f64::MIN, f64::max)
+        };
+        assert!(max_re(0.5 * (lo + hi)) < 0.0, "unstable inside the window");
+        assert!(max_re(0.99 * lo) > 0.0 && max_re(1.01 * hi) > 0.0, "stable outside it");
+    }
+
+    #[test]
+    fn the_benchmark_ground_tracks_cross_while_the_weave_decays() {
+        // n° 106: the tracks cross periodically; at 4.6 m/s the weave is damped, not gone.
+        let (speed, lean0, duration, step) = TRACK_RUN;
+        let bike = WhippleNonlinear::new(WhippleParams::benchmark());
+        let start = bike.initial_state(speed, lean0).unwrap();
+        let tr = bike.simulate(start, duration, step, 1).unwrap();
+        let rear: Vec<(f64, f64)> =
+            tr.samples.iter().map(|s| (s.rear_contact[0], s.rear_contact[1])).collect();
+        let front: Vec<(f64, f64)> =
+            tr.samples.iter().map(|s| (s.front_contact[0], s.front_contact[1])).collect();
+        let at = track_crossings(&rear, &front);
+        assert!(at.len() >= 2, "{at:?}");
+        assert!(at.windows(2).all(|w| w[1].0 > w[0].0), "{at:?}");
+        let svg = fig_tracks(&WhippleParams::benchmark()).unwrap();
+        assert!(svg.contains(&format!("cross {} times", at.len())));
     }
 }
