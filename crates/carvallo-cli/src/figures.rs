@@ -17,6 +17,7 @@
 use std::ops::Range;
 
 use anyhow::{anyhow, Result};
+use carvallo::bicycle_geometry::Geometry;
 use carvallo::bicycle_straight::{window, Constants, Equations};
 use carvallo::hoop_discussion::{self, Series};
 use carvallo::quartic::aberth_compensated;
@@ -55,6 +56,8 @@ pub fn all() -> Vec<Figure> {
         Figure { file: "fig04bis_hoop_walking.svg", title: "Memoir fig. 4 bis: hoop, walking and pivoting (n° 17)", caption: "Polar diagram: (ℰ), (S), the separation (N) between walking and pivoting, and the curves n2 = −0.1, −0.3, −0.5.", draw: fig_4_bis },
         Figure { file: "fig07_unicycle_diagram.svg", title: "Memoir fig. 7: unicycle steady states, h/R = 2.5 (n° 32, 41)", caption: "Polar diagram (angle θ from the vertical, radius s in √(g/R)): (ℰ), the curves n = const of (E), the separation (N) with its asymptote, the branch θ < 16° of the stability limit (S) of n° 41, and the practical limits s = 1 and 20 km/h.", draw: fig_7 },
         Figure { file: "fig09_unicycle_first_member.svg", title: "Memoir fig. 9: unicycle, reality condition of S(n²) (n° 41)", caption: "The first member 1/cos θ − (h/R) sin²θ cos θ − √(h/R) sin 2θ from the generated trinomial, against θ, with the memoir's table (n° 41); the derived zeros (marked) are 16.32° and 62.82°, which the memoir reads off its graph as 16°,0 and 62°,7.", draw: fig_9 },
+        Figure { file: "fig11_bicycle_sigma1_mu1.svg", title: "Memoir fig. 11: bicycle geometry, frame vertical (n° 52)", caption: "The frame's rotation σ1 = σ − σ0 and the front contact's μ1 = μ − μ0 (tan μ0 = tan σ0 cos γ) against the steer γ, in minutes of arc, for the old bicycle of n° 52 (R = 0.38 m, l = 1.10 m, c = 0.08 m, σ0 = 25°): the exact solution of the contact equations (1), (2) by Newton's method (lines) and the memoir's table (points).", draw: fig_11 },
+        Figure { file: "fig13_bicycle_contact_locus.svg", title: "Memoir fig. 13: locus of the front wheel's contact with the ground (n° 54)", caption: "The front contact M relative to its position M0 at γ = 0, frame vertical, old bicycle of n° 52, for γ from 0° to 90°: the exact solution (line, with γ marked every 20°) and the memoir's table (points); y is counted as in the memoir's table, whose sign is opposite to its printed formula y = −(R sin μ − c) sin γ (see the report, n° 54).", draw: fig_13 },
         Figure { file: "benchmark_eigenvalues.svg", title: "Benchmark bicycle: eigenvalues against speed", caption: "Real and imaginary parts of the four eigenvalues of the linearised Carvallo–Whipple bicycle (Meijaard et al. 2007 parameters unless --model is given) against the forward speed; the stable range is shaded.", draw: fig_eigenvalues },
         Figure { file: "carvallo_eigenvalues.svg", title: "Carvallo's bicycle without hands (n° 117–122): eigenvalues against speed", caption: "Time eigenvalues sλ (λ the roots of the quartic of n° 119, T = st) of Carvallo's bicycle, exactly linearised through the general model at the constants of n° 117, against v = Rs (R = 0.38 m), the stable range shaded; marked on the axis: the memoir's limits s² = 67.3 and 83.6 (v = 0.38√s²) and the derived ones.", draw: fig_carvallo_eigenvalues },
         Figure { file: "nonlinear_ground_tracks.svg", title: "Wheel ground tracks from a nonlinear simulation", caption: "Rear and front contact tracks of the nonlinear Carvallo–Whipple bicycle (benchmark parameters unless --model is given), RK4 from upright straight running at 4.6 m/s with an initial lean of 0.05 rad for 6 s; the number of crossings of the two tracks (n° 106), counted from the simulated data, is in the figure's title.", draw: fig_tracks },
@@ -63,11 +66,9 @@ pub fn all() -> Vec<Figure> {
     ]
 }
 
-/// Figures not drawn, with the reason (listed in `report.md`).
-pub const MISSING: [Missing; 2] = [
-    Missing { figure: "memoir fig. 11 (n° 52: σ1 and μ against γ, frame vertical)", reason: "needs the bicycle geometry of Part II ch. I (functions σ and μ), not derived in this workspace yet" },
-    Missing { figure: "memoir fig. 13 (n° 54: locus of the front wheel's contact point)", reason: "needs the same bicycle geometry model, not derived yet" },
-];
+/// Figures not drawn, with the reason (listed in `report.md`); every figure the issues name is
+/// drawn now.
+pub const MISSING: [Missing; 0] = [];
 
 /// How a curve is stroked.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
@@ -489,6 +490,87 @@ fn fig_9(_: &WhippleParams) -> Result<String> {
     c.render()
 }
 
+/// The memoir's table of n° 52 (γ in degrees; σ1 and μ1 in minutes, with the minus signs the
+/// table's first row gives to the whole column).
+const TABLE_52: [(f64, f64, f64); 6] = [
+    (0.0, 0.0, 0.0),
+    (20.0, -5.0, -5.0),
+    (40.0, -19.0, -16.0),
+    (60.0, -31.0, -19.0),
+    (80.0, -19.0, -2.0),
+    (90.0, -5.0, 0.0),
+];
+
+/// The memoir's table of n° 54 (γ in degrees; x − l and y in centimetres, y as printed).
+const TABLE_54: [(f64, f64, f64); 6] = [
+    (0.0, 0.0, 0.0),
+    (20.0, 1.2, 2.5),
+    (40.0, 4.5, 3.0),
+    (60.0, 8.7, 0.4),
+    (80.0, 9.5, -4.8),
+    (90.0, 8.8, -8.0),
+];
+
+fn fig_11(_: &WhippleParams) -> Result<String> {
+    let g = Geometry::old_model();
+    let data = g.figure_11(181).map_err(|e| anyhow!("figure 11: {e}"))?;
+    let s0 = g.sigma0();
+    let mu0 = |gamma: f64| (s0.tan() * gamma.to_radians().cos()).atan().to_degrees();
+    let sigma1: Vec<(f64, f64)> = data.iter().map(|d| (d[0], 60.0 * d[1])).collect();
+    let mu1: Vec<(f64, f64)> = data.iter().map(|d| (d[0], 60.0 * (d[2] - mu0(d[0])))).collect();
+    let mut c = Chart::new(
+        "Memoir fig. 11 — old bicycle, frame vertical: σ1 and μ1 against the steer",
+        "steer γ (degrees)",
+        "angle (minutes of arc)",
+        0.0..90.0,
+        -35.0..5.0,
+    );
+    c.add(Curve::new("σ1 = σ − σ0, exact", sigma1, color(0), Stroke::Solid));
+    c.add(Curve::new("μ1 = μ − μ0, exact", mu1, color(1), Stroke::Solid));
+    c.add(Curve::new(
+        "σ1, memoir n° 52",
+        TABLE_52.iter().map(|t| (t.0, t.1)).collect(),
+        color(0),
+        Stroke::Points,
+    ));
+    c.add(Curve::new(
+        "μ1, memoir n° 52",
+        TABLE_52.iter().map(|t| (t.0, t.2)).collect(),
+        color(1),
+        Stroke::Points,
+    ));
+    c.legend = SeriesLabelPosition::LowerLeft;
+    c.render()
+}
+
+fn fig_13(_: &WhippleParams) -> Result<String> {
+    let g = Geometry::old_model();
+    let data = g.figure_13(181).map_err(|e| anyhow!("figure 13: {e}"))?;
+    // The table's y is minus the printed formula's (J to the rider's left).
+    let locus: Vec<(f64, f64)> = data.iter().map(|d| (100.0 * d[1], -100.0 * d[2])).collect();
+    let mut c = Chart::new(
+        "Memoir fig. 13 — locus of the front contact, frame vertical (old bicycle)",
+        "x − l (cm, forward)",
+        "y (cm, the table's sign)",
+        -1.0..11.0,
+        -9.0..5.0,
+    );
+    c.add(Curve::new("exact, γ = 0° … 90°", locus, color(0), Stroke::Solid));
+    c.add(Curve::new(
+        "memoir n° 54",
+        TABLE_54.iter().map(|t| (t.1, t.2)).collect(),
+        color(1),
+        Stroke::Points,
+    ));
+    for d in
+        data.iter().filter(|d| (d[0].round() - d[0]).abs() < 1e-9 && d[0].round() as i64 % 20 == 0)
+    {
+        c.mark((100.0 * d[1], -100.0 * d[2]), format!("γ = {:.0}°", d[0]));
+    }
+    c.legend = SeriesLabelPosition::LowerLeft;
+    c.render()
+}
+
 fn fig_eigenvalues(p: &WhippleParams) -> Result<String> {
     let bike = Whipple::new(p.clone());
     let v_max = 10.0;
@@ -743,11 +825,13 @@ mod tests {
         files.dedup();
         assert_eq!(files.len(), figs.len(), "two figures share a file name");
         assert!(files.iter().all(|f| f.ends_with(".svg") && !f.contains('/')));
-        for memoir in ["fig. 11", "fig. 13"] {
-            assert!(MISSING.iter().any(|m| m.figure.contains(memoir)), "{memoir} not listed");
-        }
-        assert_eq!((figs.len(), MISSING.len()), (10, 2));
-        for drawn in ["carvallo_eigenvalues.svg", "nonlinear_ground_tracks.svg"] {
+        assert_eq!((figs.len(), MISSING.len()), (12, 0));
+        for drawn in [
+            "carvallo_eigenvalues.svg",
+            "nonlinear_ground_tracks.svg",
+            "fig11_bicycle_sigma1_mu1.svg",
+            "fig13_bicycle_contact_locus.svg",
+        ] {
             assert!(files.contains(&drawn), "{drawn} not drawn");
         }
     }

@@ -114,6 +114,9 @@ pub fn figures_section(figs: &[figures::Figure]) -> String {
         s.push_str(&format!("### {}\n\n![{}]({})\n\n{}\n\n", f.title, f.title, f.file, f.caption));
     }
     s.push_str("### Figures not drawn yet\n\n");
+    if figures::MISSING.is_empty() {
+        s.push_str("None: every figure listed in the report's brief is drawn above.\n");
+    }
     for m in &figures::MISSING {
         s.push_str(&format!("- {}: {}.\n", m.figure, m.reason));
     }
