@@ -16,7 +16,7 @@
 use std::collections::BTreeMap;
 
 use crate::bicycle_geometry::{Contact, Geometry};
-use crate::report::{parse_checks, Derived, Entry, Memoir, Verdict};
+use crate::report::{Derived, Entry, Memoir, Verdict};
 use crate::report_unicycle::{number, number_as};
 
 const CHECKS_TSV: &str = include_str!("../../../generated/bicycle_geometry.checks.tsv");
@@ -365,48 +365,13 @@ const FINDINGS: &[(&str, Verdict, &str)] = &[(
 )];
 
 fn checks() -> Vec<Entry> {
-    let checks = match parse_checks(CHECKS_TSV) {
-        Ok(c) => c,
-        Err(message) => {
-            return vec![Entry {
-                section: "-".into(),
-                quantity: "bicycle geometry symbolic checks".into(),
-                memoir: Memoir::Formula("generated/bicycle_geometry.checks.tsv".into()),
-                derived: Derived::Numbers(BTreeMap::new()),
-                rel_diff: None,
-                verdict: Verdict::DerivationDiffers,
-                note: format!("cannot read generated/bicycle_geometry.checks.tsv: {message}"),
-            }]
-        }
-    };
-    checks
-        .into_iter()
-        .map(|c| {
-            let finding = FINDINGS.iter().find(|(id, _, _)| *id == c.id);
-            let detail: String = c.detail.chars().take(200).collect();
-            let (verdict, why) = match finding {
-                Some((_, v, why)) if !c.holds => (*v, format!("; {why}")),
-                Some(_) => (Verdict::DerivationDiffers, "; expected not to hold".to_string()),
-                None if c.holds => (Verdict::Agrees, String::new()),
-                None => (Verdict::DerivationDiffers, String::new()),
-            };
-            Entry {
-                section: c.section.clone(),
-                quantity: format!("bicycle geometry check {}", c.id),
-                memoir: Memoir::Formula(c.statement.clone()),
-                derived: Derived::Numbers(BTreeMap::from([(
-                    "holds".to_string(),
-                    if c.holds { 1.0 } else { 0.0 },
-                )])),
-                rel_diff: None,
-                verdict,
-                note: format!(
-                    "symbolic check at regen: {} ({detail}){why}",
-                    if c.holds { "holds" } else { "does not hold" }
-                ),
-            }
-        })
-        .collect()
+    crate::report::check_entries(
+        CHECKS_TSV,
+        "bicycle_geometry.checks.tsv",
+        "bicycle geometry",
+        FINDINGS,
+        200,
+    )
 }
 
 /// The bicycle geometry's entries, computed now.

@@ -306,60 +306,23 @@ const FINDINGS: &[(&str, Verdict, &str)] = &[
 ];
 
 fn checks() -> (Vec<Entry>, BTreeMap<String, String>) {
-    let mut notes = BTreeMap::new();
-    let checks = match parse_checks(CHECKS_TSV) {
-        Ok(c) => c,
-        Err(message) => {
-            let entry = Entry {
-                section: "-".into(),
-                quantity: "bicycle_steady symbolic checks".into(),
-                memoir: Memoir::Formula("generated/bicycle_steady.checks.tsv".into()),
-                derived: Derived::Numbers(BTreeMap::new()),
-                rel_diff: None,
-                verdict: Verdict::DerivationDiffers,
-                note: format!("cannot read generated/bicycle_steady.checks.tsv: {message}"),
-            };
-            return (vec![entry], notes);
-        }
-    };
-    let entries = checks
+    // Notes for the formula entries: whether each `<output>_memoir` check holds.
+    let notes = parse_checks(CHECKS_TSV)
+        .unwrap_or_default()
         .into_iter()
-        .map(|c| {
-            let finding = FINDINGS.iter().find(|(id, _, _)| *id == c.id);
-            let detail: String = c.detail.chars().take(240).collect();
-            if let Some(output) = c.id.strip_suffix("_memoir") {
-                notes.insert(
-                    output.to_string(),
-                    format!(
-                        "symbolic check {}: {}",
-                        c.id,
-                        if c.holds { "holds" } else { "does not hold" }
-                    ),
-                );
-            }
-            let (verdict, why) = match finding {
-                Some((_, v, why)) if !c.holds => (*v, format!("; {why}")),
-                Some(_) => (Verdict::DerivationDiffers, "; expected not to hold".to_string()),
-                None if c.holds => (Verdict::Agrees, String::new()),
-                None => (Verdict::DerivationDiffers, String::new()),
-            };
-            Entry {
-                section: c.section.clone(),
-                quantity: format!("bicycle check {}", c.id),
-                memoir: Memoir::Formula(c.statement.clone()),
-                derived: Derived::Numbers(BTreeMap::from([(
-                    "holds".to_string(),
-                    if c.holds { 1.0 } else { 0.0 },
-                )])),
-                rel_diff: None,
-                verdict,
-                note: format!(
-                    "symbolic check at regen: {} ({detail}){why}",
-                    if c.holds { "holds" } else { "does not hold" }
-                ),
-            }
+        .filter_map(|c| {
+            let output = c.id.strip_suffix("_memoir")?.to_string();
+            let holds = if c.holds { "holds" } else { "does not hold" };
+            Some((output, format!("symbolic check {}: {holds}", c.id)))
         })
         .collect();
+    let entries = crate::report::check_entries(
+        CHECKS_TSV,
+        "bicycle_steady.checks.tsv",
+        "bicycle",
+        FINDINGS,
+        240,
+    );
     (entries, notes)
 }
 

@@ -14,7 +14,7 @@
 
 use std::collections::BTreeMap;
 
-use crate::report::{parse_checks, Derived, Entry, Memoir, Verdict, AGREEMENT_TOLERANCE};
+use crate::report::{Derived, Entry, Memoir, Verdict, AGREEMENT_TOLERANCE};
 use crate::unicycle::all_scene as scene;
 
 const CHECKS_TSV: &str = include_str!("../../../generated/unicycle.checks.tsv");
@@ -946,48 +946,7 @@ const FINDINGS: &[(&str, Verdict, &str)] = &[
 ];
 
 fn checks() -> Vec<Entry> {
-    let checks = match parse_checks(CHECKS_TSV) {
-        Ok(c) => c,
-        Err(message) => {
-            return vec![Entry {
-                section: "-".into(),
-                quantity: "unicycle symbolic checks".into(),
-                memoir: Memoir::Formula("generated/unicycle.checks.tsv".into()),
-                derived: Derived::Numbers(BTreeMap::new()),
-                rel_diff: None,
-                verdict: Verdict::DerivationDiffers,
-                note: format!("cannot read generated/unicycle.checks.tsv: {message}"),
-            }]
-        }
-    };
-    checks
-        .into_iter()
-        .map(|c| {
-            let finding = FINDINGS.iter().find(|(id, _, _)| *id == c.id);
-            let detail: String = c.detail.chars().take(200).collect();
-            let (verdict, why) = match finding {
-                Some((_, v, why)) if !c.holds => (*v, format!("; {why}")),
-                Some(_) => (Verdict::DerivationDiffers, "; expected not to hold".to_string()),
-                None if c.holds => (Verdict::Agrees, String::new()),
-                None => (Verdict::DerivationDiffers, String::new()),
-            };
-            Entry {
-                section: c.section.clone(),
-                quantity: format!("unicycle check {}", c.id),
-                memoir: Memoir::Formula(c.statement.clone()),
-                derived: Derived::Numbers(BTreeMap::from([(
-                    "holds".to_string(),
-                    if c.holds { 1.0 } else { 0.0 },
-                )])),
-                rel_diff: None,
-                verdict,
-                note: format!(
-                    "symbolic check at regen: {} ({detail}){why}",
-                    if c.holds { "holds" } else { "does not hold" }
-                ),
-            }
-        })
-        .collect()
+    crate::report::check_entries(CHECKS_TSV, "unicycle.checks.tsv", "unicycle", FINDINGS, 200)
 }
 
 /// The unicycle's entries, computed now.
