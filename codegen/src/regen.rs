@@ -15,7 +15,7 @@
 
 use std::collections::{BTreeMap, BTreeSet};
 use std::fs;
-use std::io;
+use std::io::{self, IsTerminal};
 use std::path::{Path, PathBuf};
 
 use anyhow::{anyhow, bail, Context, Result};
@@ -134,8 +134,25 @@ pub fn regen_with(
     fs_ops: &mut dyn TreeFs,
 ) -> Result<RegenSummary> {
     let mut ds = Vec::with_capacity(derivations.len());
-    for (name, derive) in derivations {
-        let d = derive().with_context(|| format!("derivation {name} failed"))?;
+    // A progress bar on a terminal only; nothing when standard error is a file or a pipe.
+    let progress = std::io::stderr().is_terminal();
+    let n = derivations.len();
+    for (k, (name, derive)) in derivations.iter().enumerate() {
+        if progress {
+            let bar =
+                format!("{}{}", "#".repeat(20 * k / n.max(1)), "-".repeat(20 - 20 * k / n.max(1)));
+            eprint!("\r[{bar}] {k}/{n} deriving {name:<24}");
+        }
+        let d = derive().with_context(|| format!("derivation {name} failed"));
+        if progress && (d.is_err() || k + 1 == n) {
+            eprintln!(
+                "\r[{}] {}/{n} derived{:<32}",
+                "#".repeat(20),
+                k + usize::from(d.is_ok()),
+                ""
+            );
+        }
+        let d = d?;
         if d.model != *name {
             bail!("derivation {name} returned model {:?}", d.model);
         }
