@@ -139,6 +139,24 @@ fn run(command: Command) -> anyhow::Result<()> {
     Ok(())
 }
 
+/// Prints a subcommand's outcome: its text on standard output (exit 0; exit 1 if it cannot be
+/// written), or the error and the subcommand's `help` on standard error (exit 2).
+pub(crate) fn finish(out: Result<String, String>, help: &str) -> ExitCode {
+    match out {
+        Ok(text) => match emit(&format!("{}\n", text.trim_end())) {
+            Ok(()) => ExitCode::SUCCESS,
+            Err(err) => {
+                eprintln!("error: cannot write the output: {err}");
+                ExitCode::FAILURE
+            }
+        },
+        Err(err) => {
+            eprintln!("error: {err}\n\n{help}");
+            ExitCode::from(2)
+        }
+    }
+}
+
 /// Writes `text` to standard output. A reader that stops early (`carvallo report | head`)
 /// closes the pipe; that ends the output quietly instead of panicking like `print!` would.
 pub(crate) fn emit(text: &str) -> std::io::Result<()> {

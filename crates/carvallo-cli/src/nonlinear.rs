@@ -211,20 +211,7 @@ pub fn dispatch(args: &[String]) -> Option<ExitCode> {
     if !matches!(args.first().map(String::as_str), Some("accel" | "simulate")) {
         return None;
     }
-    let out = parse(args).and_then(|cmd| run(&cmd));
-    Some(match out {
-        Ok(text) => {
-            if let Err(err) = crate::emit(&format!("{}\n", text.trim_end())) {
-                eprintln!("error: cannot write the output: {err}");
-                return Some(ExitCode::FAILURE);
-            }
-            ExitCode::SUCCESS
-        }
-        Err(err) => {
-            eprintln!("error: {err}\n\n{HELP}");
-            ExitCode::from(2)
-        }
-    })
+    Some(crate::finish(parse(args).and_then(|cmd| run(&cmd)), HELP))
 }
 
 #[cfg(test)]

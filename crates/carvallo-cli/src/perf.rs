@@ -210,25 +210,7 @@ pub fn dispatch(args: &[String]) -> Option<ExitCode> {
             Err(_) => ExitCode::FAILURE,
         });
     }
-    Some(match parse(args) {
-        Err(err) => {
-            eprintln!("error: {err}\n\n{HELP}");
-            ExitCode::from(2)
-        }
-        Ok(cmd) => match run(cmd) {
-            Ok(text) => match crate::emit(&format!("{}\n", text.trim_end())) {
-                Ok(()) => ExitCode::SUCCESS,
-                Err(err) => {
-                    eprintln!("error: cannot write the output: {err}");
-                    ExitCode::FAILURE
-                }
-            },
-            Err(err) => {
-                eprintln!("error: {err}\n\n{HELP}");
-                ExitCode::from(2)
-            }
-        },
-    })
+    Some(crate::finish(parse(args).and_then(run), HELP))
 }
 
 #[cfg(test)]
