@@ -19,6 +19,12 @@ subcommands:
   regen --check    re-derive every model and fail if generated/ is out of date";
 
 fn main() -> ExitCode {
+    // symbolica colours printed expressions when standard output is a terminal (it caches that
+    // decision at the first print); generated/ must not depend on where the command runs.
+    // `.cargo/config.toml` sets the same for every cargo-run process; this covers a direct run.
+    if std::env::var_os("SYMBOLICA_COLOR").is_none() {
+        std::env::set_var("SYMBOLICA_COLOR", "0");
+    }
     match run(std::env::args().skip(1).collect()) {
         Ok(()) => ExitCode::SUCCESS,
         Err(e) => {
