@@ -15,6 +15,7 @@ pub mod bench;
 pub mod certified;
 pub mod bicycle_steady;
 pub mod bicycle_straight;
+pub mod bicycle_turn;
 pub mod bicycle_geometry;
 pub mod error;
 pub mod hoop;
