@@ -26,6 +26,7 @@ pub mod report_bicycle_straight;
 pub mod report_bicycle_geometry;
 pub mod report_unicycle;
 pub mod report_bicycle_steady;
+pub mod report_bicycle_turn;
 pub mod report_hoop_discussion;
 pub mod report_markdown;
 pub mod report_whipple;
