@@ -4,8 +4,10 @@
 //! model's static balance, $df/dp'$ and the gravity part of $df/d\theta$ against the model's
 //! energy (an independent output of the generated program), the vanishing pedal torque and
 //! the free-wheeling cubic's zero root (the family of turns), n° 105's sign table over a grid,
-//! and the rejection of bad inputs by name.
+//! the model's pitch against Carvallo's frame angle of n° 45 (an independent derivation of the
+//! contact geometry), and the rejection of bad inputs by name.
 
+use carvallo::bicycle_geometry::Geometry;
 use carvallo::bicycle_straight::{Constants, Equations};
 use carvallo::bicycle_turn::{Hold, LockedSteer, SteadyTurn, TurnError};
 use carvallo::whipple_nonlinear::Configuration;
@@ -151,4 +153,20 @@ fn bad_inputs_are_named_errors() {
     assert!(matches!(err, TurnError::NoSteadyTurn { .. }), "{err}");
     let bad = Constants { h: -1.0, ..Constants::MEMOIR };
     assert_eq!(LockedSteer::new(bad).unwrap_err().to_string(), "invalid h -1.0: must be positive");
+}
+
+/// The model's pitch at lean θ and steer −γ is Carvallo's frame angle σ(θ, γ) − σ₀ from the
+/// contact equations of n° 45 (`carvallo::bicycle_geometry`, derived separately), for the
+/// old model of n° 52 with $c_1 = R\sin\sigma_0 - c$ (absolute 1e-12 rad).
+#[test]
+fn pitch_is_carvallos_frame_angle() {
+    let g = Geometry::old_model();
+    let k = Constants { c1: g.radius() * g.sigma0().sin() - g.offset(), ..Constants::MEMOIR };
+    let b = LockedSteer::new(k).unwrap();
+    for (theta, gamma) in [(0.0, 0.1), (0.2, 0.0), (0.2, 0.1), (-0.3, 0.2), (0.1, -0.3), (0.5, 0.4)]
+    {
+        let pitch = b.model().pitch(theta, -gamma, 0.0).unwrap();
+        let sigma = g.solve(theta, gamma).unwrap().sigma;
+        assert!((pitch - (sigma - g.sigma0())).abs() < 1e-12, "{theta} {gamma}: {pitch} {sigma}");
+    }
 }
