@@ -29,6 +29,11 @@
 //! wheel's rate free: a cubic in λ whose constant term vanishes, because the steady turns at a
 //! fixed γ form a one-parameter family in the speed).
 //!
+//! **Constants.** Those of n° 117 ([`Constants::MEMOIR`]); the frame's moment $B$ about its
+//! pitch axis is not printed there (straight running does not need it), and the mapping sets
+//! the central $I_{Bxx} + I_{Bzz}$, the largest a mass distribution allows: illustrative, like
+//! the frame's moments of the steady module; [`LockedSteer::with_pitch_moment`] changes it.
+//!
 //! **Gravity and centrifugal parts (n° 104).** The forcing at zero speeds is the gravity
 //! alone, so $df/d\theta$ splits exactly into the derivative of the gravity forcing (at the
 //! same pitch law) and the rest, the centrifugal part, whose ratio to the gravity part the
@@ -231,11 +236,40 @@ impl LockedSteer {
     /// # Errors
     /// [`ParameterError`] from [`Constants::validate`].
     pub fn new(k: Constants) -> Result<LockedSteer, ParameterError> {
+        LockedSteer::build(k, None)
+    }
+
+    /// The same with the frame's central moment about its pitch axis set to `ibyy` (kg m²)
+    /// instead of the mapping's $I_{Bxx} + I_{Bzz}$: the memoir prints no $B$ for the bicycle
+    /// of n° 117 (it does not enter straight running), and in a turn it enters through the
+    /// frame's rotation $n\sin\theta$ about its own axle direction.
+    ///
+    /// # Errors
+    /// [`ParameterError`] from [`Constants::validate`], or `ibyy` not positive or above
+    /// $I_{Bxx} + I_{Bzz}$ (the triangle inequality of a mass distribution).
+    pub fn with_pitch_moment(k: Constants, ibyy: f64) -> Result<LockedSteer, ParameterError> {
+        LockedSteer::build(k, Some(ibyy))
+    }
+
+    fn build(k: Constants, ibyy: Option<f64>) -> Result<LockedSteer, ParameterError> {
         k.validate()?;
         let named = k.whipple_values();
-        let values: [f64; 26] = std::array::from_fn(|i| {
-            named.iter().find(|(n, _)| *n == PARAM_NAMES[i]).map_or(0.0, |(_, v)| *v)
-        });
+        let get = |name: &str| named.iter().find(|(n, _)| *n == name).map_or(0.0, |(_, v)| *v);
+        let mut values: [f64; 26] = std::array::from_fn(|i| get(PARAM_NAMES[i]));
+        if let Some(ibyy) = ibyy {
+            let bound = get("IBxx") + get("IBzz");
+            ParameterError::check_positive("ibyy", ibyy)?;
+            if ibyy > bound {
+                return Err(ParameterError::InvalidParameter {
+                    name: "ibyy",
+                    value: ibyy,
+                    reason: "exceeds the sum of the two other central moments",
+                });
+            }
+            if let Some(i) = PARAM_NAMES.iter().position(|n| *n == "IByy") {
+                values[i] = ibyy;
+            }
+        }
         let bike = WhippleNonlinear::new(WhippleParams::from_values_unchecked(values));
         Ok(LockedSteer { k, bike })
     }

@@ -5,6 +5,10 @@
 //! equation (C) of n° 101 with all three coefficients, the rolling speed $s$ held by the
 //! pedals as the memoir does (the bearing rate held and free-wheeling beside it).
 //!
+//! The frame's moment $B$ about its pitch axis is not printed in n° 117 (straight running
+//! does not need it); the mapping's value is illustrative, and the n° 105 entries repeat the
+//! roots with it halved.
+//!
 //! Verdict policy. The memoir reduces each coefficient to its leading term and calls the
 //! rest negligible, "of the second order in the angles θ, γ". An approximate value therefore
 //! `agrees` when its relative difference from the exact coefficient is below that declared
@@ -209,6 +213,13 @@ fn turn_entries(bike: &LockedSteer, gdeg: f64, kmh: f64, e: &mut Vec<Entry>) -> 
         .and_then(|r| bike.fall_equation(&r, Hold::Rolling))
         .map_err(|x| x.to_string())?;
     let without_dfdp = (-c.dfdtheta / c.dfdpp).sqrt();
+    // The frame's B is not in n° 117: the same turn with the central pitch moment halved.
+    let ibyy = k.whipple_values().iter().find(|(n, _)| *n == "IByy").map_or(f64::NAN, |x| x.1);
+    let half =
+        LockedSteer::with_pitch_moment(k, 0.5 * ibyy).map_err(|x| x.to_string()).and_then(|b| {
+            let t = b.steady_turn(gamma, v).map_err(|x| x.to_string())?;
+            b.fall_equation(&t, Hold::Rolling).map_err(|x| x.to_string())
+        })?;
     e.push(Entry {
         section: "105".into(),
         quantity: format!("roots of (C) with the handlebar held (1/s), {at}"),
@@ -221,17 +232,18 @@ fn turn_entries(bike: &LockedSteer, gdeg: f64, kmh: f64, e: &mut Vec<Entry>) -> 
             ("lambda_plus_without_dfdp".to_string(), without_dfdp),
             ("lambda_plus_at_rest".to_string(), lambda_plus(&rest)),
             ("bearing_held_lambda_plus".to_string(), lambda_plus(&cb)),
+            ("half_pitch_moment_lambda_plus".to_string(), lambda_plus(&half)),
             ("free_wheel_lambda_minus".to_string(), w.roots[0].re),
             ("free_wheel_lambda_plus".to_string(), w.roots[2].re),
         ])),
         rel_diff: None,
-        verdict: if c.saddle() && cb.saddle() && w.roots[2].re > 0.0 {
+        verdict: if c.saddle() && cb.saddle() && half.saddle() && w.roots[2].re > 0.0 {
             Verdict::Agrees
         } else {
             Verdict::DerivationDiffers
         },
         note: format!(
-            "df/dp' > 0 and df/dtheta < 0: real roots of opposite signs (also with the bearing rate held; free-wheeling, the cubic has a zero root, |lambda| {}, the family of turns in the speed, and one of each sign); df/dp moves lambda_plus by {:.2} % (second order {:.2} %), and lambda_plus is {:.2} % from the one at rest with the same gamma",
+            "df/dp' > 0 and df/dtheta < 0: real roots of opposite signs (also with the bearing rate held; free-wheeling, the cubic has a zero root, |lambda| {}, the family of turns in the speed, and one of each sign); df/dp moves lambda_plus by {:.2} % (second order {:.2} %), and lambda_plus is {:.2} % from the one at rest with the same gamma; the frame's B is not in n° 117 (the mapping's central I_Byy = I_Bxx + I_Bzz = {ibyy:.3} kg m^2, illustrative): with it halved the roots stay real and of opposite signs (half_pitch_moment_*)",
             small(w.roots[1].norm(), 1e-9),
             100.0 * (lambda_plus(&c) / without_dfdp - 1.0),
             100.0 * order,

@@ -170,3 +170,24 @@ fn pitch_is_carvallos_frame_angle() {
         assert!((pitch - (sigma - g.sigma0())).abs() < 1e-12, "{theta} {gamma}: {pitch} {sigma}");
     }
 }
+
+/// The frame's B is not in the memoir: the saddle of n° 105 does not depend on it (central
+/// pitch moment from 1 kg m² to its largest value), nor does the upright equation.
+#[test]
+fn the_saddle_does_not_depend_on_the_frames_b() {
+    for ibyy in [1.0, 10.0, 20.0] {
+        let b = LockedSteer::with_pitch_moment(Constants::MEMOIR, ibyy).unwrap();
+        for (gdeg, v) in [(5.0, 20.0 / 3.6), (12.0, 5.0), (3.0, 8.0)] {
+            let t = b.steady_turn(f64::to_radians(gdeg), v).unwrap();
+            let c = b.fall_equation(&t, Hold::Rolling).unwrap();
+            assert!(c.saddle(), "{ibyy} {gdeg} {v}: {c:?}");
+        }
+        let c = b.fall_equation(&b.steady_turn(0.0, 5.0).unwrap(), Hold::Rolling).unwrap();
+        assert!(close(c.dfdtheta, -723.978, 1e-12) && close(c.dfdpp, 100.0, 1e-12), "{c:?}");
+    }
+    let err = LockedSteer::with_pitch_moment(Constants::MEMOIR, 40.0).unwrap_err();
+    assert_eq!(
+        err.to_string(),
+        "invalid ibyy 40.0: exceeds the sum of the two other central moments"
+    );
+}
