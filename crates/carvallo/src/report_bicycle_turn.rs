@@ -61,10 +61,10 @@ fn approx(
     }
 }
 
-/// `below {bound:e}` when |x| is below `bound` (rounding noise, not printed), else x.
+/// `less than {bound:e}` when |x| is below `bound` (rounding noise, not printed), else x.
 fn small(x: f64, bound: f64) -> String {
     if x.abs() < bound {
-        format!("below {bound:e}")
+        format!("less than {bound:e}")
     } else {
         format!("{x:.3e}")
     }
@@ -275,9 +275,9 @@ pub fn entries() -> Vec<Entry> {
                 0,
                 c.dfdtheta,
                 &format!(
-                    "n° 117/118 print A = -724; derived from the nonlinear model at 20 km/h upright (the linear model's lean row gives g K0_11 = {:.4}, the two paths differ by less than 1e-9: {})",
+                    "n° 117/118 print A = -724; derived from the nonlinear model at 20 km/h upright (the linear model's lean row gives g K0_11 = {:.4}, the two paths differ by {})",
                     lin.k0[0][0],
-                    (c.dfdtheta - lin.k0[0][0]).abs() < 1e-9
+                    small(c.dfdtheta - lin.k0[0][0], 1e-9)
                 ),
             ));
             e.push(number(
