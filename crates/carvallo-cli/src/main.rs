@@ -14,6 +14,7 @@ mod report_out;
 mod perf;
 mod nonlinear;
 mod straight;
+mod turn;
 mod whipple;
 
 const HELP: &str = "\
@@ -39,6 +40,8 @@ Usage:
     carvallo simulate --model benchmark|FILE.toml --speed V --lean0 RAD --duration S
                       [--step DT] [--every N] [--json]
                                 simulate the nonlinear bicycle (time series, energy drift)
+    carvallo turn --model carvallo --gamma DEG --speed V [--json]
+                                steady turn with the handlebar held (memoir n° 99-105)
     carvallo --help             print this help
 
 Options:
@@ -68,7 +71,7 @@ enum UsageError {
 impl std::fmt::Display for UsageError {
     fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
         match self {
-            UsageError::Missing => write!(f, "missing command: expected `report`, `window`, `eig`, `bench`, `sweep`, `accel`, `simulate` or `--help`"),
+            UsageError::Missing => write!(f, "missing command: expected `report`, `window`, `eig`, `bench`, `sweep`, `accel`, `simulate`, `turn` or `--help`"),
             UsageError::Unknown(arg) => write!(f, "unknown argument `{arg}`"),
             UsageError::Repeated(arg) => write!(f, "argument `{arg}` given more than once"),
             UsageError::MissingValue(arg) => write!(f, "missing value after `{arg}`"),
@@ -176,6 +179,9 @@ fn main() -> ExitCode {
         return code;
     }
     if let Some(code) = nonlinear::dispatch(&args) {
+        return code;
+    }
+    if let Some(code) = turn::dispatch(&args) {
         return code;
     }
     let command = match parse(&args) {

@@ -992,6 +992,7 @@ pub fn all_entries() -> Vec<Entry> {
     entries.extend(crate::report_hoop_discussion::entries());
     entries.extend(crate::report_whipple::entries());
     entries.extend(crate::report_bicycle_steady::entries());
+    entries.extend(crate::report_bicycle_turn::entries());
     entries.extend(crate::report_bicycle_straight::entries());
     entries.extend(crate::report_bicycle_geometry::entries());
     // Stable sort: the models' own orders are kept within a section.

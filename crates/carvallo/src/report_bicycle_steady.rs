@@ -276,23 +276,7 @@ fn numbers() -> Vec<Entry> {
         p.mass * p.h,
         "mu = 70 kg, h = 1 m; mu g h = 686.7 N m = 70 kgf m",
     ));
-    // n° 105: with the handlebar held, f'' coefficient A > 0 and f_theta = -mu g h cos < 0.
-    let x = SteadyState { s: s20, ..SteadyState::default() };
-    let a_coef = bike.output(&x, "dfdpp_frame").unwrap_or(f64::NAN);
-    let df_dtheta = -(p.mass * p.h + (p.wheel_mass + p.wheel_mass) * r) * p.g;
-    let lambda = (-df_dtheta / a_coef).sqrt();
-    e.push(Entry {
-        section: "105".into(),
-        quantity: "characteristic roots with the handlebar held, upright (1/s)".into(),
-        memoir: Memoir::Formula("real and of opposite signs: unstable, independently of s".into()),
-        derived: Derived::Numbers(BTreeMap::from([
-            ("lambda_plus".to_string(), lambda),
-            ("lambda_minus".to_string(), -lambda),
-        ])),
-        rel_diff: None,
-        verdict: if a_coef > 0.0 && df_dtheta < 0.0 { Verdict::Agrees } else { Verdict::DerivationDiffers },
-        note: "df/dp' from the generated `dfdpp_frame` at theta = 0 (= A, the illustrative 75 kg m^2: d eta/d theta = d nu/d theta = 0 upright), df/dtheta = -(mu h + 2 mu1 R) g upright (n° 104, the wheels' weight added as the memoir says), df/dp left out as the memoir does: lambda^2 = -f_theta/f_p' > 0".into(),
-    });
+    // n° 101–105 (the handlebar held): crate::report_bicycle_turn.
     e
 }
 

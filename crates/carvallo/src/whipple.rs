@@ -214,6 +214,15 @@ impl WhippleParams {
         WhippleParams::from_values(values)
     }
 
+    /// A parameter set taken as given, without the checks of
+    /// [`from_values`](Self::from_values): for models outside them, such as Carvallo's
+    /// bicycle with its massless fork and handlebar
+    /// ([`crate::bicycle_straight::Constants::whipple_values`]), whose caller validates what
+    /// its own model needs.
+    pub(crate) fn from_values_unchecked(values: [f64; 26]) -> WhippleParams {
+        WhippleParams { values }
+    }
+
     /// Builds a parameter set from the values in the order of [`PARAM_NAMES`].
     ///
     /// # Errors

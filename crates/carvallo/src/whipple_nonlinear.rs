@@ -147,6 +147,19 @@ pub struct Accelerations {
     pub rear_centre: [f64; 3],
 }
 
+/// The terms of Kane's equations at one configuration ([`WhippleNonlinear::kane_terms`]).
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct KaneTerms {
+    /// $M_3$ (rows and columns lean, steer, rear wheel).
+    pub mass: [[f64; 3]; 3],
+    /// $f_3$: gravity and velocity terms.
+    pub forcing: [f64; 3],
+    /// Pitch, yaw and front wheel rates per unit lean, steer and rear wheel rate.
+    pub rates: [[f64; 3]; 3],
+    /// Speed of the rear contact along the heading, $-r_R(\dot\theta + \dot\theta_R)$ (m/s).
+    pub rear_speed: f64,
+}
+
 /// The nonlinear bicycle for one parameter set.
 #[derive(Clone, Debug)]
 pub struct WhippleNonlinear {
@@ -356,6 +369,32 @@ impl WhippleNonlinear {
             rear_speed: o.rear_speed,
             rear_centre,
         })
+    }
+
+    /// The generated terms of Kane's equations at `c` before any solve: the symmetric mass
+    /// matrix $M_3$ and forcing $f_3$ of $M_3\dot u = f_3$ (rows lean, steer, rear wheel), the
+    /// dependent rates per unit independent speed (rows pitch, yaw, front wheel rate; columns
+    /// $\dot\varphi$, $\dot\delta$, $\dot\theta_R$) and the rear contact's speed. The speeds
+    /// are relative rates (lean, steer of the fork on the frame, rear wheel on the frame), so a
+    /// steer torque between frame and fork enters the steer row only and a pedal torque between
+    /// frame and rear wheel the rear-wheel row only.
+    pub fn kane_terms(&self, c: &Configuration) -> KaneTerms {
+        let a = self.args(dynamics_scene::PARAMS, dynamics_scene::INPUTS, c);
+        let o = dynamics_scene::eval(&dynamics_scene::Args::from_array(a));
+        KaneTerms {
+            mass: [
+                [o.m3_11, o.m3_12, o.m3_13],
+                [o.m3_12, o.m3_22, o.m3_23],
+                [o.m3_13, o.m3_23, o.m3_33],
+            ],
+            forcing: [o.f3_1, o.f3_2, o.f3_3],
+            rates: [
+                [o.a_thetad_phid, o.a_thetad_deltad, o.a_thetad_thetaRd],
+                [o.a_psid_phid, o.a_psid_deltad, o.a_psid_thetaRd],
+                [o.a_thetaFd_phid, o.a_thetaFd_deltad, o.a_thetaFd_thetaRd],
+            ],
+            rear_speed: o.rear_speed,
+        }
     }
 
     /// Total energy (J) and the front contact relative to the rear one in the yawed frame (m).

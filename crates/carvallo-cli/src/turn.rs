@@ -1,0 +1,167 @@
+//! `carvallo turn --model carvallo --gamma DEG --speed V [--json]`: a steady turn of
+//! Carvallo's bicycle with the handlebar held (memoir n° 99–105, module
+//! [`carvallo::bicycle_turn`], the constants of n° 117) and its characteristic equation (C) of
+//! n° 101 with the rolling speed held: the lean θ₀, the pitch, the turning rate n, the hands'
+//! torque, the three coefficients $df/dp'$, $df/dp$, $df/d\theta$ and the two roots; the
+//! free-wheeling cubic's roots beside them.
+//!
+//! γ is in degrees (Carvallo's sign: the bicycle leans to −γ), V is the speed $Rs$ in m/s.
+//! Unknown, repeated or missing arguments, non-finite numbers, an out-of-range γ, a negative
+//! speed and a turn that does not exist are errors naming the value, exit code 2.
+
+use std::process::ExitCode;
+
+use carvallo::bicycle_straight::Constants;
+use carvallo::bicycle_turn::{Hold, LockedSteer, MAX_GAMMA};
+use serde_json::json;
+
+const HELP: &str = "\
+Usage:
+    carvallo turn --model carvallo --gamma DEG --speed V [--json]
+                                steady turn with the handlebar held at DEG degrees, speed V [m/s]
+";
+
+#[derive(Debug, PartialEq)]
+struct Command {
+    gamma_deg: f64,
+    speed: f64,
+    json: bool,
+}
+
+fn number(name: &str, v: &str) -> Result<f64, String> {
+    let x: f64 = v.parse().map_err(|_| format!("invalid {name} `{v}`"))?;
+    if !x.is_finite() {
+        return Err(format!("invalid {name} `{v}`: must be finite"));
+    }
+    Ok(x)
+}
+
+fn parse(args: &[String]) -> Result<Command, String> {
+    let mut seen: Vec<&str> = Vec::new();
+    let (mut model, mut gamma, mut speed, mut json) = (None, None, None, false);
+    let mut it = args.iter().skip(1);
+    while let Some(arg) = it.next() {
+        let a = arg.as_str();
+        if !matches!(a, "--model" | "--gamma" | "--speed" | "--json") {
+            return Err(format!("unknown argument `{arg}`"));
+        }
+        if seen.contains(&a) {
+            return Err(format!("argument `{arg}` given more than once"));
+        }
+        seen.push(a);
+        let mut value = || it.next().cloned().ok_or(format!("missing value after `{arg}`"));
+        match a {
+            "--model" => model = Some(value()?),
+            "--gamma" => gamma = Some(number("gamma", &value()?)?),
+            "--speed" => speed = Some(number("speed", &value()?)?),
+            _ => json = true,
+        }
+    }
+    match model.as_deref() {
+        Some("carvallo") => {}
+        Some(m) => return Err(format!("invalid model `{m}`: `turn` knows only `carvallo`")),
+        None => return Err("missing `--model carvallo`".into()),
+    }
+    let gamma_deg: f64 = gamma.ok_or("missing `--gamma DEG`")?;
+    let max = MAX_GAMMA.to_degrees();
+    if gamma_deg.abs() >= max {
+        return Err(format!(
+            "invalid gamma `{gamma_deg}`: must lie strictly between -{max:.1} and {max:.1} degrees"
+        ));
+    }
+    Ok(Command { gamma_deg, speed: speed.ok_or("missing `--speed V`")?, json })
+}
+
+fn run(c: &Command) -> Result<String, String> {
+    let err = |e: carvallo::bicycle_turn::TurnError| e.to_string();
+    let bike = LockedSteer::new(Constants::MEMOIR).map_err(|e| e.to_string())?;
+    let t = bike.steady_turn(c.gamma_deg.to_radians(), c.speed).map_err(err)?;
+    let f = bike.fall_equation(&t, Hold::Rolling).map_err(err)?;
+    let w = bike.free_wheel(&t).map_err(err)?;
+    let roots: Vec<f64> = f.roots.iter().map(|r| r.re).collect();
+    let free: Vec<[f64; 2]> = w.roots.iter().map(|r| [r.re, r.im]).collect();
+    if c.json {
+        let out = json!({
+            "model": "carvallo",
+            "gamma_deg": c.gamma_deg,
+            "speed": c.speed,
+            "lean": t.lean,
+            "pitch": t.pitch,
+            "turning_rate": t.yaw_rate,
+            "hands_torque": t.hands_torque,
+            "dfdpp": f.dfdpp,
+            "dfdp": f.dfdp,
+            "dfdtheta": f.dfdtheta,
+            "dfdtheta_gravity": f.dfdtheta_gravity,
+            "roots": roots,
+            "free_wheel_roots": free,
+        });
+        return serde_json::to_string_pretty(&out).map_err(|e| e.to_string());
+    }
+    // Upright, the lean and the rates are signed zeros: print them as 0.
+    let (lean, yaw) = (t.lean + 0.0, t.yaw_rate + 0.0);
+    let mut s = format!(
+        "model carvallo, handlebar held at gamma = {} deg, speed {} m/s\n",
+        c.gamma_deg, c.speed
+    );
+    s.push_str(&format!("lean theta0: {lean:.6} rad\n"));
+    s.push_str(&format!("pitch: {:.6e} rad\n", t.pitch));
+    s.push_str(&format!("turning rate n: {yaw:.6} 1/s\n"));
+    s.push_str(&format!("hands' torque: {:.6} N m\n", t.hands_torque));
+    s.push_str(&format!(
+        "(C) with s held: {:.6} lambda^2 {:+.6} lambda {:+.6} = 0\n",
+        f.dfdpp, f.dfdp, f.dfdtheta
+    ));
+    s.push_str(&format!("roots: {:.6} {:.6} 1/s\n", roots[0], roots[1]));
+    let zero = if w.roots[1].norm() < 1e-9 {
+        "0 (below 1e-9)".to_string()
+    } else {
+        format!("{:.6}", w.roots[1].re)
+    };
+    s.push_str(&format!(
+        "free-wheeling roots: {:.6} {zero} {:.6} 1/s\n",
+        w.roots[0].re, w.roots[2].re
+    ));
+    Ok(s)
+}
+
+/// Runs `turn` when `args` asks for it, `None` otherwise.
+pub fn dispatch(args: &[String]) -> Option<ExitCode> {
+    if args.first().map(String::as_str) != Some("turn") {
+        return None;
+    }
+    Some(crate::finish(parse(args).and_then(|cmd| run(&cmd)), HELP))
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    fn args(list: &[&str]) -> Vec<String> {
+        list.iter().map(|s| s.to_string()).collect()
+    }
+
+    #[test]
+    fn parses_and_rejects_by_value() {
+        assert_eq!(
+            parse(&args(&["turn", "--model", "carvallo", "--gamma", "5", "--speed", "5.5"])),
+            Ok(Command { gamma_deg: 5.0, speed: 5.5, json: false })
+        );
+        assert_eq!(
+            parse(&args(&["turn", "--model", "benchmark", "--gamma", "5", "--speed", "5"])),
+            Err("invalid model `benchmark`: `turn` knows only `carvallo`".into())
+        );
+        assert_eq!(
+            parse(&args(&["turn", "--model", "carvallo", "--gamma", "x", "--speed", "5"])),
+            Err("invalid gamma `x`".into())
+        );
+        assert_eq!(
+            parse(&args(&["turn", "--model", "carvallo", "--speed", "5"])),
+            Err("missing `--gamma DEG`".into())
+        );
+        assert_eq!(
+            parse(&args(&["turn", "--json", "--json"])),
+            Err("argument `--json` given more than once".into())
+        );
+    }
+}
