@@ -101,6 +101,9 @@ fn vcheck(section: &str, id: &str, statement: &str, diff: &Vector, detail: &str)
         .comps
         .iter()
         .map(|c| {
+            if is_zero_mod(c) {
+                return "0".to_string();
+            }
             let s = show(&geo::reduce(&c.expand()));
             if s.len() > 200 {
                 format!("{} terms", c.expand().nterms())
@@ -114,7 +117,10 @@ fn vcheck(section: &str, id: &str, statement: &str, diff: &Vector, detail: &str)
         id: id.into(),
         statement: statement.into(),
         holds,
-        detail: format!("{detail}; differences on I, J, K reduced: [{}]", shown.join(", ")),
+        detail: format!(
+            "{detail}; numerators of the differences on I, J, K, reduced: [{}]",
+            shown.join(", ")
+        ),
     }
 }
 
@@ -130,7 +136,8 @@ fn coeff(e: &Atom, sym: &Atom) -> Atom {
 
 /// Solves the three linear relations `eqs` for the unknowns `unknowns` by Cramer's rule.
 fn cramer(eqs: &[Atom; 3], unknowns: &[Atom; 3]) -> [Atom; 3] {
-    let a: [[Atom; 3]; 3] = std::array::from_fn(|i| std::array::from_fn(|j| coeff(&eqs[i], &unknowns[j])));
+    let a: [[Atom; 3]; 3] =
+        std::array::from_fn(|i| std::array::from_fn(|j| coeff(&eqs[i], &unknowns[j])));
     let zero_u = |e: &Atom| unknowns.iter().fold(e.clone(), |acc, u| subst(&acc, u, &Atom::num(0)));
     let b: [Atom; 3] = std::array::from_fn(|i| -zero_u(&eqs[i]));
     let d = det3(&a);
@@ -220,11 +227,19 @@ pub fn derive() -> Result<Derivation> {
         ),
         (
             "nu",
-            ["-(cos(theta)*sin(gamma) - sin(theta)*cos(gamma)*sin(eta))", "cos(eta)*cos(gamma)", "0"],
+            [
+                "-(cos(theta)*sin(gamma) - sin(theta)*cos(gamma)*sin(eta))",
+                "cos(eta)*cos(gamma)",
+                "0",
+            ],
         ),
         (
             "eta",
-            ["-sin(eta)*cos(gamma)", "-sin(theta)*cos(gamma)*cos(eta)", "cos(theta)*cos(gamma)*cos(eta)"],
+            [
+                "-sin(eta)*cos(gamma)",
+                "-sin(theta)*cos(gamma)*cos(eta)",
+                "cos(theta)*cos(gamma)*cos(eta)",
+            ],
         ),
         (
             "gamma",
@@ -243,7 +258,11 @@ pub fn derive() -> Result<Derivation> {
             if !vdiff_zero(&d) {
                 bad.push(format!(
                     "d{q}: [{}]",
-                    d.comps.iter().map(|c| show(&geo::reduce(&c.expand()))).collect::<Vec<_>>().join(", ")
+                    d.comps
+                        .iter()
+                        .map(|c| show(&geo::reduce(&c.expand())))
+                        .collect::<Vec<_>>()
+                        .join(", ")
                 ));
             }
             diff = diff.add(&d.scale(&var(&format!("w_{q}"))));
@@ -251,7 +270,9 @@ pub fn derive() -> Result<Derivation> {
         Check {
             section: "61".into(),
             id: id.into(),
-            statement: format!("the variation d{name} (n° 47 varied) is the printed line of (4){note}"),
+            statement: format!(
+                "the variation d{name} (n° 47 varied) is the printed line of (4){note}"
+            ),
             holds: vdiff_zero(&diff),
             detail: if bad.is_empty() {
                 "the coefficients of dtheta, dnu, deta, dgamma on I, J, K all agree".into()
@@ -318,9 +339,16 @@ pub fn derive() -> Result<Derivation> {
         ),
     ];
     for (id, statement, k, expected) in ident {
-        checks.push(check("61", id, statement, &(coeff(&k_dm, &delta(k)) - expected), "exact".into()));
+        checks.push(check(
+            "61",
+            id,
+            statement,
+            &(coeff(&k_dm, &delta(k)) - expected),
+            "exact".into(),
+        ));
     }
-    let deta_rel = &y_om * delta(1) + &x_om * &c_t * delta(3) + (&r_ * &s_mu - &c_) * &cn_k * delta(4);
+    let deta_rel =
+        &y_om * delta(1) + &x_om * &c_t * delta(3) + (&r_ * &s_mu - &c_) * &cn_k * delta(4);
     checks.push(check(
         "61",
         "condensed_deta_61",
@@ -400,9 +428,15 @@ pub fn derive() -> Result<Derivation> {
         ));
     }
     // Tables of n° 63, 64, 65.
-    let proj = |axis: &Vector| -> Vec<Atom> { geo_disp.iter().map(|d| axis.dot(d).expand()).collect() };
+    let proj =
+        |axis: &Vector| -> Vec<Atom> { geo_disp.iter().map(|d| axis.dot(d).expand()).collect() };
     let tables: [(&str, &str, &Vector, [&str; 6]); 3] = [
-        ("63", "table_k_63", &k_big, ["0", "y", "0", "x*cos(theta)", "(R*sin(mu) - c)*sin(beta)", "0"]),
+        (
+            "63",
+            "table_k_63",
+            &k_big,
+            ["0", "y", "0", "x*cos(theta)", "(R*sin(mu) - c)*sin(beta)", "0"],
+        ),
         (
             "64",
             "table_n1_64",
@@ -433,7 +467,8 @@ pub fn derive() -> Result<Derivation> {
     let mut rel = Vec::new();
     for (section, id, axis, printed) in tables {
         let p = proj(axis);
-        let total: Atom = (0..6).fold(Atom::num(0), |acc, k| acc + (&p[k] - pr(printed[k])) * delta(k));
+        let total: Atom =
+            (0..6).fold(Atom::num(0), |acc, k| acc + (&p[k] - pr(printed[k])) * delta(k));
         checks.push(check(
             section,
             id,
@@ -505,7 +540,8 @@ pub fn derive() -> Result<Derivation> {
     let dm_c = dm.map(|e| on_contact(e));
     let analytic_rel = [k_big.dot(&dm_c), n1c.dot(&dm_c), i1c.dot(&dm_c)];
     let printed_rel = [pr(printed_deta), pr(printed_dnu), pr(printed_dsig1)];
-    let diffs: Vec<Atom> = (0..3).map(|i| &analytic_rel[i] - on_contact(&geo_sub(&printed_rel[i]))).collect();
+    let diffs: Vec<Atom> =
+        (0..3).map(|i| &analytic_rel[i] - on_contact(&geo_sub(&printed_rel[i]))).collect();
     checks.push(Check {
         section: "66".into(),
         id: "analytic_equals_geometric_66".into(),
@@ -543,11 +579,21 @@ pub fn derive() -> Result<Derivation> {
     for (name, printed, unknown, known) in i_printed {
         let derived = coeff(&sol[unknown], &delta(known));
         let (section, id, what) = if name.starts_with("steady") {
-            ("66", format!("{name}_2_66"), format!("the steady state (2) (p = gamma' = eta' = 0): {name} / s = {printed}"))
+            (
+                "66",
+                format!("{name}_2_66"),
+                format!("the steady state (2) (p = gamma' = eta' = 0): {name} / s = {printed}"),
+            )
         } else {
             ("66", format!("{name}_i_66"), format!("(I): {name} = {printed}, from (delta) with the other fundamental displacements zero"))
         };
-        checks.push(check(section, &id, &what, &(&derived - pr(printed)), "Cramer's rule on the printed (delta) with symbols x, y, alpha, beta".into()));
+        checks.push(check(
+            section,
+            &id,
+            &what,
+            &(&derived - pr(printed)),
+            "Cramer's rule on the printed (delta) with symbols x, y, alpha, beta".into(),
+        ));
         formulas.push(formula(
             name,
             "66",
@@ -625,7 +671,8 @@ pub fn derive() -> Result<Derivation> {
         &((0..3).fold(Atom::num(0), |acc, i| acc + (&sys_derived[i] - pr(sys_printed[i])) * var(&format!("w{i}")))),
         "G = -I1 sin mu + k1 cos mu (checks projection_g_*), theta1 = -beta".into(),
     ));
-    let steady = |e: &Atom| [&p, &gp, &etap].iter().fold(e.clone(), |acc, v| subst(&acc, v, &Atom::num(0)));
+    let steady =
+        |e: &Atom| [&p, &gp, &etap].iter().fold(e.clone(), |acc, v| subst(&acc, v, &Atom::num(0)));
     let p1_val = &p1 - steady(&pr(sys_printed[0]));
     let s1_val = (&s1 * &c_b - steady(&pr(sys_printed[1]))) / &c_b;
     let n1_val = -steady(&subst(&pr(sys_printed[2]), &s1, &s1_val)) + &n1r;
@@ -659,7 +706,8 @@ pub fn derive() -> Result<Derivation> {
         "(delta) of n° 66 with symbols x, y, alpha, beta".into(),
     ));
     let unknowns = [delta(1), delta(3), delta(2)];
-    let mat: [[Atom; 3]; 3] = std::array::from_fn(|i| std::array::from_fn(|j| coeff(&fixed[i], &unknowns[j])));
+    let mat: [[Atom; 3]; 3] =
+        std::array::from_fn(|i| std::array::from_fn(|j| coeff(&fixed[i], &unknowns[j])));
     let minor = &mat[0][0] * &mat[1][2] - &mat[0][2] * &mat[1][0];
     checks.push(check(
         "68",
@@ -686,7 +734,9 @@ pub fn derive() -> Result<Derivation> {
     // n° 69: the rest equilibrium.
     let (ep, epp) = (var("etap"), var("etapp"));
     let total = |f: &Atom| {
-        d_angle(f, "theta") + d_angle(f, "sigma") * &ep + f.derivative(ep.get_symbol().expect("symbol")) * &epp
+        d_angle(f, "theta")
+            + d_angle(f, "sigma") * &ep
+            + f.derivative(ep.get_symbol().expect("symbol")) * &epp
     };
     let z_cg = pr("(R + xg*sin(sigma1) + zg*cos(sigma1))*cos(theta)");
     let zt = d_angle(&z_cg, "theta");
@@ -715,7 +765,9 @@ pub fn derive() -> Result<Derivation> {
     let f_eta = -&y_om / (&x_om * &c_t);
     let eq2 = eq2_ab.clone();
     let mu_p = -(d_angle(&eq2, "theta") + d_angle(&eq2, "sigma") * &f_eta) / d_angle(&eq2, "mu");
-    let eta_pp = d_angle(&f_eta, "theta") + d_angle(&f_eta, "sigma") * &f_eta + d_angle(&f_eta, "mu") * &mu_p;
+    let eta_pp = d_angle(&f_eta, "theta")
+        + d_angle(&f_eta, "sigma") * &f_eta
+        + d_angle(&f_eta, "mu") * &mu_p;
     // The particular case of n° 69: theta = 0, M at E (c = R sin mu), lowest point at theta = 0.
     let case_mu = |e: &Atom| {
         let e = subst(&zero_theta(e), &c_, &(&r_ * &s_mu));
