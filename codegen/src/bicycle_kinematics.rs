@@ -34,6 +34,7 @@ use crate::bicycle_geometry::{
     om_ab, sc, show, sq, subst, w50, wb, with_ab, zero_theta,
 };
 use crate::frame::{cos_t, sin_t, var, Trihedron, Vector};
+use crate::hoop::{det3, solve_linear};
 use crate::{Check, Derivation, Formula};
 
 /// The six virtual displacements of n° 60, as the symbols of the derivation, with their
@@ -124,30 +125,8 @@ fn vcheck(section: &str, id: &str, statement: &str, diff: &Vector, detail: &str)
     }
 }
 
-fn det3(m: &[[Atom; 3]; 3]) -> Atom {
-    &m[0][0] * (&m[1][1] * &m[2][2] - &m[1][2] * &m[2][1])
-        - &m[0][1] * (&m[1][0] * &m[2][2] - &m[1][2] * &m[2][0])
-        + &m[0][2] * (&m[1][0] * &m[2][1] - &m[1][1] * &m[2][0])
-}
-
 fn coeff(e: &Atom, sym: &Atom) -> Atom {
     e.derivative(sym.get_symbol().expect("a symbol")).expand()
-}
-
-/// Solves the three linear relations `eqs` for the unknowns `unknowns` by Cramer's rule.
-fn cramer(eqs: &[Atom; 3], unknowns: &[Atom; 3]) -> [Atom; 3] {
-    let a: [[Atom; 3]; 3] =
-        std::array::from_fn(|i| std::array::from_fn(|j| coeff(&eqs[i], &unknowns[j])));
-    let zero_u = |e: &Atom| unknowns.iter().fold(e.clone(), |acc, u| subst(&acc, u, &Atom::num(0)));
-    let b: [Atom; 3] = std::array::from_fn(|i| -zero_u(&eqs[i]));
-    let d = det3(&a);
-    std::array::from_fn(|j| {
-        let mut m = a.clone();
-        for i in 0..3 {
-            m[i][j] = b[i].clone();
-        }
-        det3(&m) / &d
-    })
 }
 
 /// Derives every kinematic and rest-equilibrium formula and runs the checks.
@@ -554,7 +533,7 @@ pub fn derive() -> Result<Derivation> {
     });
 
     // n° 66: (I) and the steady state (2), from (delta) solved for deta, dnu, dsigma1.
-    let sol = cramer(&printed_rel, &[delta(3), delta(2), delta(5)]);
+    let sol = solve_linear(&printed_rel, &[DELTAS[3].0, DELTAS[2].0, DELTAS[5].0]);
     let i_printed = [
         ("d_eta_d_theta", "-y/(x*cos(theta))", 0usize, 1usize),
         (
@@ -706,8 +685,8 @@ pub fn derive() -> Result<Derivation> {
         "(delta) of n° 66 with symbols x, y, alpha, beta".into(),
     ));
     let unknowns = [delta(1), delta(3), delta(2)];
-    let mat: [[Atom; 3]; 3] =
-        std::array::from_fn(|i| std::array::from_fn(|j| coeff(&fixed[i], &unknowns[j])));
+    let mat: Vec<Vec<Atom>> =
+        (0..3).map(|i| (0..3).map(|j| coeff(&fixed[i], &unknowns[j])).collect()).collect();
     let minor = &mat[0][0] * &mat[1][2] - &mat[0][2] * &mat[1][0];
     checks.push(check(
         "68",
