@@ -74,12 +74,12 @@ fn half_tau0() -> Atom {
 }
 
 /// Normaliser of the lowest-point condition of n° 50: $W = \cos\tau$ at θ = 0.
-fn w50() -> Atom {
+pub fn w50() -> Atom {
     var("W")
 }
 
 /// Normaliser of n° 57–58: $\cos\beta = \sqrt{CN_I^2 + CN_J^2}$.
-fn wb() -> Atom {
+pub fn wb() -> Atom {
     var("Wb")
 }
 
@@ -178,7 +178,7 @@ pub fn from_printed(text: &str) -> Atom {
 }
 
 /// Shows a stand-in expression with `sin(x)`, `cos(x)`.
-fn show(e: &Atom) -> String {
+pub fn show(e: &Atom) -> String {
     let mut s = to_trig(e);
     for (name, sn, cn) in &ANGLES[5..] {
         s = s
@@ -190,11 +190,13 @@ fn show(e: &Atom) -> String {
     s.to_string()
 }
 
-fn ijk(i: usize) -> Vector {
+/// The `i`-th unit vector of OIJK.
+pub fn ijk(i: usize) -> Vector {
     Vector::unit(Trihedron::IJK, i)
 }
 
-fn ijk_small(i: usize) -> Vector {
+/// The `i`-th unit vector of OIjk.
+pub fn ijk_small(i: usize) -> Vector {
     Vector::unit(Trihedron::Ijk, i)
 }
 
@@ -254,7 +256,9 @@ pub fn normal_components() -> [Atom; 3] {
     n.comps.map(|x| x.expand())
 }
 
-fn check(section: &str, id: &str, statement: &str, diff: &Atom, detail: String) -> Check {
+/// A [`Check`] that `diff` vanishes by [`is_zero_mod`], its detail ending with the reduced
+/// numerator of the difference.
+pub fn check(section: &str, id: &str, statement: &str, diff: &Atom, detail: String) -> Check {
     let holds = is_zero_mod(diff);
     let rp = diff.expand().to_rational_polynomial::<_, _, u16>(&Q, &Z, ());
     let reduced = reduce(&rp.numerator.to_expression());
@@ -312,7 +316,8 @@ fn compare_vec(
     }
 }
 
-fn formula(name: &str, section: &str, description: &str, e: &Atom) -> Formula {
+/// A [`Formula`] with the stand-ins replaced by `sin(x)`, `cos(x)` ([`to_trig`]).
+pub fn formula(name: &str, section: &str, description: &str, e: &Atom) -> Formula {
     Formula {
         name: name.into(),
         section: section.into(),
@@ -321,7 +326,8 @@ fn formula(name: &str, section: &str, description: &str, e: &Atom) -> Formula {
     }
 }
 
-fn zero_theta(e: &Atom) -> Atom {
+/// `e` at θ = 0 (the frame vertical).
+pub fn zero_theta(e: &Atom) -> Atom {
     e.replace(sin_t().to_pattern())
         .with(Atom::num(0).to_pattern())
         .replace(cos_t().to_pattern())
@@ -334,11 +340,13 @@ fn at_sigma0(e: &Atom) -> Atom {
     e.replace(s.to_pattern()).with(s0.to_pattern()).replace(c.to_pattern()).with(c0.to_pattern())
 }
 
-fn subst(e: &Atom, x: &Atom, v: &Atom) -> Atom {
+/// `e` with every occurrence of `x` replaced by `v`.
+pub fn subst(e: &Atom, x: &Atom, v: &Atom) -> Atom {
     e.replace(x.to_pattern()).with(v.to_pattern())
 }
 
-fn sq(e: &Atom) -> Atom {
+/// The square of `e`.
+pub fn sq(e: &Atom) -> Atom {
     e.pow(Atom::num(2))
 }
 

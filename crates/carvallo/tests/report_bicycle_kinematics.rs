@@ -1,0 +1,62 @@
+//! Tests of the bicycle kinematics concordance (memoir n° 59–69): the expected verdict of the
+//! entries that are findings, every section present, and a snapshot of the text table with
+//! numbers normalised to 4 significant digits.
+
+use std::collections::BTreeMap;
+
+use carvallo::report::{normalise_numbers, render_text, Verdict};
+use carvallo::report_bicycle_kinematics::entries;
+
+/// Entries whose verdict is not `agrees` or `rounding`, by (section, quantity).
+fn findings() -> BTreeMap<(&'static str, &'static str), Verdict> {
+    use Verdict::*;
+    BTreeMap::from([
+        (("61", "bicycle kinematics check variation_h_61_as_printed"), Ocr),
+        (("64", "bicycle kinematics check relation_dnu_64_as_printed"), Ocr),
+        (("69", "bicycle kinematics check mu_prime_9_69"), MemoirError),
+        (("69", "bicycle kinematics check eta_second_69_as_printed"), MemoirError),
+        (("69", "eta'' at the rest equilibrium (1/rad)"), MemoirError),
+        (("69", "steer of the rest equilibrium, the lowest frame position (degrees)"), MemoirError),
+    ])
+}
+
+#[test]
+fn verdicts_are_the_expected_ones() {
+    let entries = entries();
+    let findings = findings();
+    let mut unexpected = String::new();
+    for e in &entries {
+        let key = (e.section.as_str(), e.quantity.as_str());
+        let ok = match findings.get(&key) {
+            Some(v) => e.verdict == *v,
+            None => matches!(e.verdict, Verdict::Agrees | Verdict::Rounding),
+        };
+        if !ok {
+            unexpected.push_str(&format!(
+                "n° {} {}: {} ({})\n",
+                e.section,
+                e.quantity,
+                e.verdict.as_str(),
+                e.note
+            ));
+        }
+    }
+    assert!(unexpected.is_empty(), "unexpected verdicts:\n{unexpected}");
+    for (s, q) in findings.keys() {
+        assert!(entries.iter().any(|e| e.section == *s && e.quantity == *q), "no entry n° {s} {q}");
+    }
+    for section in ["59", "61", "62", "63", "64", "65", "66", "66 bis", "68", "69"] {
+        assert!(entries.iter().any(|e| e.section == section), "no entry for n° {section}");
+    }
+}
+
+#[test]
+fn text_report_snapshot() {
+    let text = normalise_numbers(&render_text(&entries()));
+    insta::with_settings!({
+        description => "carvallo report: the bicycle kinematics concordance table, numbers to 4 significant digits",
+        omit_expression => true,
+    }, {
+        insta::assert_snapshot!("bicycle_kinematics_report_text", text);
+    });
+}
