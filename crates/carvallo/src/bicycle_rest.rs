@@ -36,8 +36,10 @@ use std::fmt;
 use crate::bicycle_geometry::{ContactError, Geometry};
 use crate::error::ParameterError;
 
-/// Step (rad) of the central differences in γ.
+/// Step (rad) of the central first differences in γ.
 pub const STEP: f64 = 1e-4;
+/// Step (rad) of the central second differences in γ (larger against rounding).
+pub const SECOND_STEP: f64 = 1e-3;
 /// Tolerance (rad) on γ at which the Newton/bisection iteration stops.
 pub const GAMMA_TOLERANCE: f64 = 1e-10;
 /// Iterations of the Newton/bisection before giving up.
@@ -120,13 +122,14 @@ pub struct RestState {
     pub energy: f64,
 }
 
-/// A derivative by central differences: the value with step [`STEP`] and the estimate of its
-/// error, the difference from the value with step 2·[`STEP`].
+/// A derivative by central differences: the value with step [`STEP`] ([`SECOND_STEP`] for a
+/// second derivative) and the estimate of its error, the difference from the value with the
+/// step doubled.
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct Derivative {
-    /// The derivative with step [`STEP`].
+    /// The derivative with the finer step.
     pub value: f64,
-    /// |value with step [`STEP`] − value with step 2·[`STEP`]|, which bounds the truncation
+    /// |value with the finer step − value with the step doubled|, which bounds the truncation
     /// error of the finer one (it is a quarter of the difference) and shows the rounding noise.
     pub error: f64,
 }
@@ -367,9 +370,8 @@ fn first(f: impl Fn(f64) -> Result<f64, RestError>, x: f64) -> Result<Derivative
 fn second(f: impl Fn(f64) -> Result<f64, RestError>, x: f64) -> Result<Derivative, RestError> {
     let f0 = f(x)?;
     let d = |h: f64| -> Result<f64, RestError> { Ok((f(x + h)? - 2.0 * f0 + f(x - h)?) / (h * h)) };
-    // The second difference needs a larger step than the first against rounding.
-    let fine = d(10.0 * STEP)?;
-    let coarse = d(20.0 * STEP)?;
+    let fine = d(SECOND_STEP)?;
+    let coarse = d(2.0 * SECOND_STEP)?;
     Ok(Derivative { value: fine, error: (fine - coarse).abs() })
 }
 

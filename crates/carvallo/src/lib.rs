@@ -24,6 +24,7 @@ pub mod hoop_discussion;
 pub mod quartic;
 pub mod report;
 pub mod report_bicycle_geometry;
+pub mod report_bicycle_rest;
 pub mod report_bicycle_steady;
 pub mod report_bicycle_straight;
 pub mod report_bicycle_turn;
