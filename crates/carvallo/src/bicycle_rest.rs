@@ -183,7 +183,9 @@ impl RestPosition {
 /// let bike = RestBicycle::new(Geometry::old_model(), RestConstants::MEMOIR)?;
 /// let p = bike.rest_position(-20f64.to_radians())?;        // gamma > 0
 /// assert!(p.equilibrium.curvature.value > 0.0);            // stable
-/// assert!(p.difference().abs() < 5f64.to_radians());       // "voisine"
+/// let (g55, g67) = (p.lowest.gamma.to_degrees(), p.equilibrium.gamma.to_degrees());
+/// assert!((g55 - 27.99).abs() < 0.01 && (g67 - 34.70).abs() < 0.01);
+/// assert!(p.frame_rise() < 2e-4);                          // the frame 0.12 mm higher
 /// # Ok::<(), Box<dyn std::error::Error>>(())
 /// ```
 #[derive(Clone, Copy, Debug, PartialEq)]
