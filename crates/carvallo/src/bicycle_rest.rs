@@ -25,6 +25,18 @@
 //! derivative computed by central differences of the exact solution: step [`STEP`], error
 //! estimated by the difference with the step doubled (Richardson), carried in [`Derivative`].
 //!
+//! As in n° 67, U is minimised over the configurations (θ held, γ free) without asking how the
+//! front contact moves on the ground: a pivot of the whole bicycle about the vertical through
+//! the rear contact changes no height, and the rolling constraints are not imposed.
+//!
+//! Findings (memoir's bicycle, [`crate::report_bicycle_rest`]): γ55 is where the point E is
+//! on the ground with the upright frame's σ at every lean, as n° 56 says; γ67 lies beyond γ55
+//! (a larger γ lowers the front wheel, as n° 67 reasons) by 9.2° upright and 9.0° to 3.8° for
+//! θ = 5° to 40°, while the frame rises by only about 0.1 mm: the frame's height is stationary
+//! at γ55 and the wheel's is not, so the shift is first order in $\mu_1/\mu$ and large because
+//! the frame's minimum is flat. γ = 0 upright is an unstable equilibrium; as θ → 0 the rest
+//! positions tend to ±γ55 and ±γ67 of the upright frame, not to 0.
+//!
 //! The masses and the centre of gravity are those of the mounted bicycle of n° 117
 //! ([`RestConstants::MEMOIR`]: μ = 70 kg at e = 0.20 m ahead of the rear wheel and h = 1 m high,
 //! μ1 = 5 kg); the geometry is that of n° 52 ([`Geometry::old_model`]), whose offset c = 0.08 m
