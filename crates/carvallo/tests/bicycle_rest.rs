@@ -62,6 +62,17 @@ fn a_massless_front_wheel_rests_where_the_frame_is_lowest() {
             "theta {t}: mu1 = 0 gives gamma67 - gamma55 = {:e} rad",
             light.difference()
         );
+        // The lowest centre of gravity is the smallest sigma wherever G is in the frame
+        // (ahead of the rear centre): another G, massless wheel, the same position.
+        let other =
+            RestConstants { forward: 0.45, height: 1.3, wheel_mass: 0.0, ..RestConstants::MEMOIR };
+        let moved =
+            RestBicycle::new(*bike.geometry(), other).unwrap().rest_position(theta).unwrap();
+        assert!(
+            (moved.equilibrium.gamma - light.lowest.gamma).abs() <= 1e-7,
+            "theta {t}: another G gives {:e} rad",
+            moved.equilibrium.gamma - light.lowest.gamma
+        );
         // The shift is first order in mu1 / mu: a tenth of the mass, a tenth of the shift.
         let d =
             |m: f64| bike.with_wheel_mass(m).unwrap().rest_position(theta).unwrap().difference();
