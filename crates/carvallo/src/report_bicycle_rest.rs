@@ -14,11 +14,14 @@
 
 use std::collections::BTreeMap;
 
-use crate::bicycle_rest::{RestBicycle, RestError, RestPosition, SECOND_STEP};
+use crate::bicycle_rest::{RestBicycle, RestConstants, RestError, RestPosition, SECOND_STEP};
 use crate::report::{rel_diff, Derived, Entry, Memoir, Verdict};
 
 /// The leans tabulated (degrees).
 pub const LEANS: [f64; 5] = [5.0, 10.0, 20.0, 30.0, 40.0];
+
+/// The forward distance e (m) of the new bicycle of n° 122, the sensitivity case.
+pub const E_122: f64 = 0.35;
 
 /// The largest shift of the handlebar (degrees) that the memoir treats as negligible (n° 53).
 pub const NEGLIGIBLE_DEG: f64 = 0.6;
@@ -73,13 +76,21 @@ fn lean_entry(bike: &RestBicycle, td: f64) -> Result<(Entry, f64), String> {
     let lowering =
         bike.state(theta, 0.0).map_err(|e| e.to_string())?.frame_height - p.at_lowest.frame_height;
     let shift = deg(p.difference());
+    // The centre of gravity is illustrative: the same with n° 122's e = 0.35 m.
+    let forward = RestConstants { forward: E_122, ..*bike.constants() };
+    let far = RestBicycle::new(*bike.geometry(), forward)
+        .map_err(|e| e.to_string())?
+        .rest_position(theta)
+        .map_err(|e| e.to_string())?;
+    let mut n = numbers(&p);
+    n.insert("difference_with_e_0.35_deg".to_string(), deg(far.difference()));
     let entry = Entry {
         section: "67".into(),
         quantity: format!("handlebar at rest, theta = {td}°: gamma67 against gamma55 (degrees)"),
         memoir: Memoir::Formula(
             "the frame lowest in its plane (n° 55) without the front wheel's weight; with it 'voisine de celle du n° 55, sinon confondue'".into(),
         ),
-        derived: Derived::Numbers(numbers(&p)),
+        derived: Derived::Numbers(n),
         rel_diff: Some(rel_diff(p.equilibrium.gamma, p.lowest.gamma)),
         verdict: if shift.abs() <= NEGLIGIBLE_DEG {
             Verdict::Agrees
@@ -87,12 +98,13 @@ fn lean_entry(bike: &RestBicycle, td: f64) -> Result<(Entry, f64), String> {
             Verdict::DerivationDiffers
         },
         note: format!(
-            "gamma55: the minimum of the exact sigma(gamma) (M at E, sigma {:.4}° as upright, n° 56); gamma67: the stable zero of dU/dgamma, U = g(mu z_G + mu1 z_C), with n° 117's mu = 70 kg at e = 0.20 m, h = 1 m and mu1 = 5 kg on n° 52's geometry (an illustrative combination), by Newton/bisection on central differences (stiffness error {} J/rad^2); the handlebar turns {shift:.2}° beyond gamma55, against the 0.6° the memoir calls negligible in n° 53, while the frame rises by only {:.3} mm of the {:.2} mm it fell from gamma = 0: 'voisine' holds for the frame's height, not for the handlebar's angle. The frame's height is stationary at gamma55 and the front wheel's is not (dU/dgamma there is the wheel's mu1 g dz_C/dgamma = {:.4} J/rad), so the shift is of the first order in mu1/mu and the frame's flat minimum lets it be large: one Newton step from gamma55 already gives {one_step:.2}°",
+            "gamma55: the minimum of the exact sigma(gamma) (M at E, sigma {:.4}° as upright, n° 56); gamma67: the stable zero of dU/dgamma, U = g(mu z_G + mu1 z_C), with n° 117's mu = 70 kg at e = 0.20 m, h = 1 m and mu1 = 5 kg on n° 52's geometry (an illustrative combination), by Newton/bisection on central differences (stiffness error {} J/rad^2); the handlebar turns {shift:.2}° beyond gamma55, against the 0.6° the memoir calls negligible in n° 53, while the frame rises by only {:.3} mm of the {:.2} mm it fell from gamma = 0: 'voisine' holds for the frame's height, not for the handlebar's angle. The frame's height is stationary at gamma55 and the front wheel's is not (dU/dgamma there is the wheel's mu1 g dz_C/dgamma = {:.4} J/rad), so the shift is of the first order in mu1/mu and the frame's flat minimum lets it be large: one Newton step from gamma55 already gives {one_step:.2}°. The centre of gravity is illustrative; with n° 122's e = {E_122} m (a stiffer frame term) the shift is still {:.2}°",
             deg(p.at_lowest.sigma),
             small(p.equilibrium.curvature.error, 1e-3),
             1e3 * p.frame_rise(),
             1e3 * lowering,
             slope.value,
+            deg(far.difference()),
         ),
     };
     Ok((entry, slope.value))
