@@ -12,6 +12,7 @@ use std::process::ExitCode;
 mod figures;
 mod report_out;
 mod perf;
+mod rest;
 mod nonlinear;
 mod straight;
 mod turn;
@@ -42,6 +43,8 @@ Usage:
                                 simulate the nonlinear bicycle (time series, energy drift)
     carvallo turn --model carvallo --gamma DEG --speed V [--json]
                                 steady turn with the handlebar held (memoir n° 99-105)
+    carvallo rest --theta DEG [--wheel-mass KG] [--json]
+                                the handlebar's rest position at a lean (memoir n° 67)
     carvallo --help             print this help
 
 Options:
@@ -182,6 +185,9 @@ fn main() -> ExitCode {
         return code;
     }
     if let Some(code) = turn::dispatch(&args) {
+        return code;
+    }
+    if let Some(code) = rest::dispatch(&args) {
         return code;
     }
     let command = match parse(&args) {

@@ -996,6 +996,7 @@ pub fn all_entries() -> Vec<Entry> {
     entries.extend(crate::report_bicycle_straight::entries());
     entries.extend(crate::report_bicycle_geometry::entries());
     entries.extend(crate::report_bicycle_kinematics::entries());
+    entries.extend(crate::report_bicycle_rest::entries());
     // Stable sort: the models' own orders are kept within a section.
     entries.sort_by(|a, b| section_key(&a.section).total_cmp(&section_key(&b.section)));
     entries

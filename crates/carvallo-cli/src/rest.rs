@@ -1,0 +1,165 @@
+//! `carvallo rest --theta DEG [--wheel-mass KG] [--json]`: the handlebar's rest position at a
+//! lean of θ degrees (memoir n° 67, module [`carvallo::bicycle_rest`], the geometry of n° 52
+//! and the masses of n° 117): the frame's lowest position γ55, the equilibrium γ67 with the
+//! front wheel's weight, their difference, the stiffness $d^2U/d\gamma^2$ at γ67, the frame's
+//! rise and the front centre's drop from γ55 to γ67.
+//!
+//! The frame leans by θ to the side of positive γ (the convention of the report's n° 56 and
+//! n° 67 entries); the handlebar falls to the side of the lean. Unknown, repeated or missing
+//! arguments, non-finite numbers, |θ| ≥ 90°, a negative wheel mass and a lean without a rest
+//! position are errors naming the value, exit code 2.
+
+use std::process::ExitCode;
+
+use carvallo::bicycle_rest::RestBicycle;
+use serde_json::json;
+
+const HELP: &str = "\
+Usage:
+    carvallo rest --theta DEG [--wheel-mass KG] [--json]
+                                the handlebar's rest position at a lean of DEG degrees
+                                (memoir n° 67; front wheel mass KG, 5 by default)
+";
+
+#[derive(Debug, PartialEq)]
+struct Command {
+    theta_deg: f64,
+    wheel_mass: f64,
+    json: bool,
+}
+
+fn number(name: &str, v: &str) -> Result<f64, String> {
+    let x: f64 = v.parse().map_err(|_| format!("invalid {name} `{v}`"))?;
+    if !x.is_finite() {
+        return Err(format!("invalid {name} `{v}`: must be finite"));
+    }
+    Ok(x)
+}
+
+fn parse(args: &[String]) -> Result<Command, String> {
+    let mut seen: Vec<&str> = Vec::new();
+    let (mut theta, mut mass, mut json) = (None, None, false);
+    let mut it = args.iter().skip(1);
+    while let Some(arg) = it.next() {
+        let a = arg.as_str();
+        if !matches!(a, "--theta" | "--wheel-mass" | "--json") {
+            return Err(format!("unknown argument `{arg}`"));
+        }
+        if seen.contains(&a) {
+            return Err(format!("argument `{arg}` given more than once"));
+        }
+        seen.push(a);
+        let mut value = || it.next().cloned().ok_or(format!("missing value after `{arg}`"));
+        match a {
+            "--theta" => theta = Some(number("theta", &value()?)?),
+            "--wheel-mass" => mass = Some(number("wheel mass", &value()?)?),
+            _ => json = true,
+        }
+    }
+    let theta_deg: f64 = theta.ok_or("missing `--theta DEG`")?;
+    if theta_deg.abs() >= 90.0 {
+        return Err(format!(
+            "invalid theta `{theta_deg}`: must lie strictly between -90 and 90 degrees"
+        ));
+    }
+    let wheel_mass = mass.unwrap_or(5.0);
+    if wheel_mass < 0.0 {
+        return Err(format!("invalid wheel mass `{wheel_mass}`: must not be negative"));
+    }
+    Ok(Command { theta_deg, wheel_mass, json })
+}
+
+fn run(c: &Command) -> Result<String, String> {
+    let bike = RestBicycle::memoir().with_wheel_mass(c.wheel_mass).map_err(|e| e.to_string())?;
+    let p = bike.rest_position(-c.theta_deg.to_radians()).map_err(|e| e.to_string())?;
+    let deg = |x: f64| x.to_degrees();
+    let drop = p.at_lowest.wheel_height - p.at_equilibrium.wheel_height;
+    if c.json {
+        let out = json!({
+            "theta_deg": c.theta_deg,
+            "wheel_mass": c.wheel_mass,
+            "gamma55_deg": deg(p.lowest.gamma),
+            "gamma67_deg": deg(p.equilibrium.gamma),
+            "difference_deg": deg(p.difference()),
+            "stiffness": p.equilibrium.curvature.value,
+            "stiffness_error": p.equilibrium.curvature.error,
+            "frame_rise": p.frame_rise(),
+            "wheel_drop": drop,
+            "sigma55_deg": deg(p.at_lowest.sigma),
+            "mu55_deg": deg(p.at_lowest.mu),
+        });
+        return serde_json::to_string_pretty(&out).map_err(|e| e.to_string());
+    }
+    let mut s = format!(
+        "handlebar at rest, lean theta = {} deg, front wheel {} kg (memoir n° 67)\n",
+        c.theta_deg, c.wheel_mass
+    );
+    s.push_str(&format!(
+        "frame lowest (n° 55): gamma55 = {:.4} deg (sigma {:.4} deg, mu {:.4} deg)\n",
+        deg(p.lowest.gamma),
+        deg(p.at_lowest.sigma),
+        deg(p.at_lowest.mu)
+    ));
+    s.push_str(&format!("equilibrium: gamma67 = {:.4} deg\n", deg(p.equilibrium.gamma)));
+    s.push_str(&format!("difference: {:.4} deg\n", deg(p.difference())));
+    s.push_str(&format!(
+        "stiffness d2U/dgamma2: {:.4} J/rad^2 (error {:.1e})\n",
+        p.equilibrium.curvature.value, p.equilibrium.curvature.error
+    ));
+    s.push_str(&format!(
+        "frame rise: {:.4} mm, front centre drop: {:.4} mm\n",
+        1e3 * p.frame_rise(),
+        1e3 * drop
+    ));
+    Ok(s)
+}
+
+/// Runs `rest` when `args` asks for it, `None` otherwise.
+pub fn dispatch(args: &[String]) -> Option<ExitCode> {
+    if args.first().map(String::as_str) != Some("rest") {
+        return None;
+    }
+    Some(crate::finish(parse(args).and_then(|cmd| run(&cmd)), HELP))
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    fn args(list: &[&str]) -> Vec<String> {
+        list.iter().map(|s| s.to_string()).collect()
+    }
+
+    #[test]
+    fn parses_and_rejects_by_value() {
+        assert_eq!(
+            parse(&args(&["rest", "--theta", "20", "--json"])),
+            Ok(Command { theta_deg: 20.0, wheel_mass: 5.0, json: true })
+        );
+        assert_eq!(
+            parse(&args(&["rest", "--wheel-mass", "0", "--theta", "-5"])),
+            Ok(Command { theta_deg: -5.0, wheel_mass: 0.0, json: false })
+        );
+        for (a, msg) in [
+            (vec!["rest"], "missing `--theta DEG`"),
+            (
+                vec!["rest", "--theta", "90"],
+                "invalid theta `90`: must lie strictly between -90 and 90 degrees",
+            ),
+            (vec!["rest", "--theta", "nan"], "invalid theta `nan`: must be finite"),
+            (vec!["rest", "--theta", "x"], "invalid theta `x`"),
+            (
+                vec!["rest", "--theta", "5", "--wheel-mass", "-1"],
+                "invalid wheel mass `-1`: must not be negative",
+            ),
+            (
+                vec!["rest", "--theta", "5", "--theta", "6"],
+                "argument `--theta` given more than once",
+            ),
+            (vec!["rest", "--theta"], "missing value after `--theta`"),
+            (vec!["rest", "--lean", "5"], "unknown argument `--lean`"),
+        ] {
+            assert_eq!(parse(&args(&a)), Err(msg.to_string()), "{a:?}");
+        }
+    }
+}
