@@ -1,23 +1,20 @@
-//! The straight-running bicycle of memoir n° 107–122: every symbolic check of the derivation
-//! has its expected outcome (the n° 116 table sums equal the n° 117 closed forms and the general
-//! model's Kane linearisation with Carvallo's parameter set; the n° 122 closed forms; the n° 121
-//! Routh–Hurwitz relation), and the emitted IR evaluated at the constants of n° 117 gives the
-//! quartic of n° 119 as the determinant of the emitted coefficients (relative 1e-12).
+//! The straight-running bicycle of memoir n° 107–122: every check of the derivation has its
+//! expected outcome (the n° 116 table sums equal the n° 117 closed forms; every table entry, by
+//! part and by origin, equals the general model's at three exact rational points; the n° 122
+//! closed forms; the n° 121 Routh–Hurwitz relation), and the emitted IR evaluated at the
+//! constants of n° 117 gives the quartic of n° 119 as the determinant of the emitted
+//! coefficients (relative 1e-12).
 
 use carvallo_codegen::bicycle_straight;
 use carvallo_codegen::emit::emit_program;
 
 // The unlicensed symbolica runs in one thread only: one #[test] in this file.
 
-// Ignored: in the first run (restricted symbolica, debug test profile) the derivation had not
-// finished after 4 minutes (memory stayed at 15 MB), over the 3-minute budget of a symbolic test;
-// the likely cost is the fully symbolic comparison with the general model (`via_whipple`), which
-// should be replaced by a comparison at exact rational parameter points before this test and the
-// `DERIVATIONS` entry are enabled. Run with `symslot cargo test -- --ignored`.
 #[test]
-#[ignore = "derivation exceeds the 3-minute budget of a symbolic test; see the comment above"]
 fn straight_running_derivation() {
+    let t = std::time::Instant::now();
     let d = bicycle_straight::derive().expect("derivation");
+    eprintln!("derived in {:?}", t.elapsed());
     for c in &d.checks {
         eprintln!("{} {}: holds = {}; {}", c.section, c.id, c.holds, c.detail);
     }
@@ -25,7 +22,7 @@ fn straight_running_derivation() {
         assert!(c.holds, "check {} fails: {}", c.id, c.detail);
     }
     let prog = emit_program(&d).expect("emission");
-    // n° 117: R, l, c1, eta = 25°, e, h, mu, mu1, A + 2 A1, C, L; g = 9.81.
+    // n° 117: R, l, c_1, eta = 25°, e, h, mu, mu1, A + 2 A1, C, L; g = 9.81.
     let params =
         [0.38, 1.10, 0.08, 25f64.to_radians(), 0.20, 1.0, 70.0, 5.0, 100.0, 4.0, 14.0, 9.81];
     let names: Vec<&str> = prog.outputs.iter().map(|o| o.name.as_str()).collect();
