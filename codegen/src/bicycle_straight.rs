@@ -727,6 +727,19 @@ pub fn derive() -> Result<Derivation> {
     ));
     // n° 119-122.
     let q = quartic(&sums);
+    // n° 118-119: the characteristic determinant in the time eigenvalue z = s lambda, divided by
+    // s^4, is the quartic in lambda.
+    let (lam, z) = (v("lambda"), v("s") * v("lambda"));
+    let tri = |b: usize| &sums[b] * z.pow(n(2)) + &sums[b + 1] * &z + &sums[b + 2];
+    let det_t = (tri(0) * tri(9) - tri(3) * tri(6)) / v("s").pow(n(4));
+    let poly: Atom = (0..5).map(|k| &q[k] * lam.pow(n(k as i64))).fold(n(0), |acc, t| acc + t);
+    checks.push(check(
+        "119",
+        "quartic_time_scale",
+        "with T = s t (n° 118) the characteristic determinant of the n° 117 equations in the time eigenvalue z = s lambda, divided by s^4, is the quartic of n° 119 in lambda, identically in lambda and s",
+        &(det_t - &poly).expand(),
+        "det(coefficients at z = s lambda) / s^4 - sum q_k lambda^k = 0".to_string(),
+    ));
     let num0 = (&sums[2] * &sums[11] - &sums[8] * &sums[5]).expand();
     let n0 = subst(&num0, "s", &n(0));
     let n1 = (subst(&num0, "s", &n(1)) - &n0).expand();

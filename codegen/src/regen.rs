@@ -36,6 +36,7 @@ pub const DERIVATIONS: &[(&str, DeriveFn)] = &[
     ("whipple_nonlinear", crate::whipple_nonlinear::derive),
     ("bicycle_steady", crate::bicycle_steady::derive),
     ("bicycle_geometry", crate::bicycle_geometry::derive),
+    ("bicycle_straight", crate::bicycle_straight::derive),
 ];
 
 /// The directory, relative to the workspace root, that holds the generated files.
