@@ -60,8 +60,8 @@ pub struct Derivation {
     pub checks: Vec<Check>,
 }
 
-pub mod bicycle_geometry;
 pub mod bicycle_steady;
+pub mod bicycle_geometry;
 pub mod bicycle_straight;
 pub mod emit;
 pub mod frame;
