@@ -245,6 +245,28 @@ pub fn tables() -> Vec<(&'static str, &'static str, &'static str, Row)> {
     ]
 }
 
+/// The $\gamma''$ entries of the rows $(\partial T/\partial q')'$ of the n° 116 tables as the OCR
+/// prints them, where they differ from n° 109–111 (every other entry is printed as
+/// [`tables`] has it): `(equation, part, printed, text)`. All five have the sign opposite to
+/// that of n° 109–111, while the printed sums of n° 117 have the signs of n° 109–111.
+pub fn printed_gamma2() -> Vec<(&'static str, &'static str, Atom, &'static str)> {
+    let (sn, co) = sc();
+    let k = v("c_1") / v("l");
+    let (a1, _, cc1) = wheel_moments();
+    vec![
+        ("fall", "frame", v("L") * &k, "+L c1/l"),
+        ("fall", "front wheel", &a1 * &sn, "+A1 sin(eta)"),
+        ("bar", "frame", -(v("C") * k.pow(n(2))), "-C c1^2/l^2"),
+        ("bar", "rear wheel", -(&cc1 * k.pow(n(2))), "-C1 c1^2/l^2"),
+        (
+            "bar",
+            "front wheel",
+            -(&a1 * sn.pow(n(2)) + &cc1 * (&k + &co).pow(n(2))),
+            "-[A1 sin^2(eta) + C1 (c1/l + cos(eta))^2]",
+        ),
+    ]
+}
+
 /// The column sums of the tables: the twelve coefficients in the order of [`COEFFS`].
 pub fn table_sums() -> [Atom; 12] {
     let mut out: [Atom; 12] = std::array::from_fn(|_| n(0));
@@ -659,6 +681,29 @@ pub fn derive() -> Result<Derivation> {
             gen_kane.push(g.kane);
         }
         let key = part.replace(' ', "_");
+        for (eq_name, tpart, printed, text) in printed_gamma2() {
+            if tpart != *part {
+                continue;
+            }
+            let eq = usize::from(eq_name == "bar");
+            let mut bad = None;
+            for (k, pt) in pts.iter().enumerate() {
+                let (mine, general) = (at(&printed, pt), &gen_mom[k][eq][3]);
+                if bad.is_none() && !(&mine - general).expand().is_zero() {
+                    bad = Some(format!(
+                        "as printed {mine} vs general model {general} at point {}",
+                        k + 1
+                    ));
+                }
+            }
+            let holds = bad.is_none();
+            checks.push(numeric_check(
+                "116",
+                &format!("{eq_name}_{key}_gamma2_as_printed"),
+                &format!("the gamma'' entry {text} of the {part}'s row (dT/dq')' of the {eq_name} table, as the OCR of n° 116 prints it, equals the general model's momentum term for the {part} alone, {intro} (n° 109-111 and the sums of n° 117 have the opposite sign)"),
+                (holds, bad.unwrap_or_else(|| "equal at every point".to_string())),
+            ));
+        }
         for (eq, eq_name, q) in [(0, "fall", "theta"), (1, "bar", "gamma")] {
             checks.push(numeric_check(
                 "116",

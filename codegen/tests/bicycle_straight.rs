@@ -1,6 +1,7 @@
 //! The straight-running bicycle of memoir n° 107–122: every check of the derivation has its
 //! expected outcome (the n° 116 table sums equal the n° 117 closed forms; every table entry, by
-//! part and by origin, equals the general model's at three exact rational points; the n° 122
+//! part and by origin, equals the general model's at three exact rational points, except the
+//! five gamma'' entries as the OCR prints them, which have the opposite sign; the n° 122
 //! closed forms; the n° 121 Routh–Hurwitz relation), and the emitted IR evaluated at the
 //! constants of n° 117 gives the quartic of n° 119 as the determinant of the emitted
 //! coefficients (relative 1e-12).
@@ -18,8 +19,20 @@ fn straight_running_derivation() {
     for c in &d.checks {
         eprintln!("{} {}: holds = {}; {}", c.section, c.id, c.holds, c.detail);
     }
+    // Findings: the five gamma'' entries of the (dT/dq')' rows as the OCR prints them.
+    let findings = [
+        "fall_frame_gamma2_as_printed",
+        "fall_front_wheel_gamma2_as_printed",
+        "bar_frame_gamma2_as_printed",
+        "bar_rear_wheel_gamma2_as_printed",
+        "bar_front_wheel_gamma2_as_printed",
+    ];
     for c in &d.checks {
-        assert!(c.holds, "check {} fails: {}", c.id, c.detail);
+        let expected = !findings.contains(&c.id.as_str());
+        assert_eq!(c.holds, expected, "check {}: {}", c.id, c.detail);
+    }
+    for id in findings {
+        assert!(d.checks.iter().any(|c| c.id == id), "no check {id}");
     }
     let prog = emit_program(&d).expect("emission");
     // n° 117: R, l, c_1, eta = 25°, e, h, mu, mu1, A + 2 A1, C, L; g = 9.81.
