@@ -27,16 +27,28 @@ const CHECKS_TSV: &str = include_str!("../../../generated/bicycle_straight.check
 
 /// The symbolic checks of the derivation (`generated/bicycle_straight.checks.tsv`): the n° 116
 /// tables against the n° 117 closed forms and, entry by entry, against the general model; the
-/// quartic, the limits and the Routh–Hurwitz relation of n° 119–122. None is expected to fail.
+/// quartic, the limits and the Routh–Hurwitz relation of n° 119–122. The five $\gamma''$
+/// entries as the OCR prints them are expected to fail ([`FINDINGS`]).
 fn checks() -> Vec<Entry> {
     crate::report::check_entries(
         CHECKS_TSV,
         "bicycle_straight.checks.tsv",
         "bicycle straight",
-        &[],
+        FINDINGS,
         200,
     )
 }
+
+const SIGN_NOTE: &str = "the general model gives the sign of n° 109-111, which the printed sums of n° 117 also use; the OCR'd table has the opposite sign in all five gamma'' entries of the (dT/dq')' rows and nowhere else, read as an OCR sign loss (see the table entries of n° 116 above)";
+
+/// Check ids that are findings: expected not to hold, with the verdict and the reason.
+const FINDINGS: &[(&str, Verdict, &str)] = &[
+    ("fall_frame_gamma2_as_printed", Verdict::Ocr, SIGN_NOTE),
+    ("fall_front_wheel_gamma2_as_printed", Verdict::Ocr, SIGN_NOTE),
+    ("bar_frame_gamma2_as_printed", Verdict::Ocr, SIGN_NOTE),
+    ("bar_rear_wheel_gamma2_as_printed", Verdict::Ocr, SIGN_NOTE),
+    ("bar_front_wheel_gamma2_as_printed", Verdict::Ocr, SIGN_NOTE),
+];
 
 fn rel(d: f64, m: f64) -> f64 {
     (d - m).abs() / d.abs().max(m.abs()).max(1e-300)
