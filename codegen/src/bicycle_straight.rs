@@ -476,6 +476,8 @@ pub struct PartTerms {
 }
 
 /// The terms of one part (or of the whole bicycle, `None`) at `pt` from the general model.
+// The row and column index six matrices and the output rows together.
+#[allow(clippy::needless_range_loop)]
 pub fn general_terms(
     part: Option<usize>,
     pt: &Point,
