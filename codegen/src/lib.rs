@@ -63,6 +63,7 @@ pub struct Derivation {
 pub mod bicycle_steady;
 pub mod bicycle_geometry;
 pub mod bicycle_kinematics;
+pub mod bicycle_straight;
 pub mod emit;
 pub mod frame;
 pub mod hoop;

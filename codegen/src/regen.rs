@@ -37,6 +37,7 @@ pub const DERIVATIONS: &[(&str, DeriveFn)] = &[
     ("bicycle_steady", crate::bicycle_steady::derive),
     ("bicycle_geometry", crate::bicycle_geometry::derive),
     ("bicycle_kinematics", crate::bicycle_kinematics::derive),
+    ("bicycle_straight", crate::bicycle_straight::derive),
 ];
 
 /// The directory, relative to the workspace root, that holds the generated files.

@@ -39,6 +39,10 @@ pub struct CarvalloForm {
     /// The plain Lagrange expressions $\frac{d}{dt}\partial T^*/\partial q' - \partial T^*/\partial q$
     /// at first order, which ignore the constraints' history (for comparison).
     pub plain: [Atom; 2],
+    /// The first term of [`CarvalloForm::equations`] alone, $\frac{d}{dt}\partial T^*/\partial q'$
+    /// at first order (the equations minus these are the correction terms
+    /// $-\sum m\,M'\,|\,(\partial M/\partial q)'$).
+    pub momentum_terms: [Atom; 2],
 }
 
 /// Builds Carvallo's equations with the pitch $\theta_B = \varepsilon^2$ `pitch2`, the
@@ -159,9 +163,12 @@ pub fn carvallo_form(prm: &dyn Fn(&str) -> Atom, pitch2: &Atom) -> CarvalloForm 
     let t_star = trunc(&t_star, n);
     let mut equations = [Atom::num(0), Atom::num(0)];
     let mut plain = [Atom::num(0), Atom::num(0)];
+    let mut momentum_terms = [Atom::num(0), Atom::num(0)];
     for (r, u) in super::linear::QD.iter().enumerate() {
         let momentum = partial(&t_star, u);
         let mut eq = ddt(&momentum);
+        let first = coefficients(&at_psi0(&trunc(&eq, 1)), 1);
+        momentum_terms[r] = &first[1] + &first[0];
         let lag = &eq - partial(&t_star, super::linear::Q[r]);
         plain[r] = coefficients(&at_psi0(&trunc(&lag, 1)), 1)[1].clone();
         for (mass, vg, omc, h) in &states {
@@ -177,5 +184,5 @@ pub fn carvallo_form(prm: &dyn Fn(&str) -> Atom, pitch2: &Atom) -> CarvalloForm 
         // through the comparison, since Kane's forces have no zeroth-order term).
         equations[r] = &equations[r] + &first[0];
     }
-    CarvalloForm { rear_slip, front_slip, equations, plain }
+    CarvalloForm { rear_slip, front_slip, equations, plain, momentum_terms }
 }

@@ -215,6 +215,20 @@ pub struct Dynamics {
 
 /// First-order kinematics and Kane's equations for the lean and steer speeds.
 pub fn dynamics() -> Dynamics {
+    dynamics_with(&p)
+}
+
+/// [`dynamics`] with the parameters (and the stand-ins of $\sin\lambda$, $\cos\lambda$) given
+/// by `prm`: symbols, or exact numbers for a fast evaluation at a rational parameter point (the
+/// state, the rates and $v$ stay symbols).
+pub fn dynamics_with(prm: &dyn Fn(&str) -> Atom) -> Dynamics {
+    let p = |name: &str| -> Atom {
+        if super::PARAMS.contains(&name) || name == SIN_LAMBDA || name == COS_LAMBDA {
+            prm(name)
+        } else {
+            var(name)
+        }
+    };
     let n = 1;
     let e = eps();
     let one = Atom::num(1);
@@ -223,8 +237,8 @@ pub fn dynamics() -> Dynamics {
     let (sy, sp, sd) = (&e * p("psi"), &e * p("phi"), &e * p("delta"));
     let rz = rot_z(&sy, &one);
     let r_plane = mm(&rz, &rot_x(&sp, &one), n);
-    let st = steer(&sd, &one, n);
-    let geo = geometry(r_plane.clone(), r_plane.clone(), &st, n);
+    let st = steer_with(&p, &sd, &one, n);
+    let geo = geometry_with(&p, r_plane.clone(), r_plane.clone(), &st, n);
     let ex = v3(one.clone(), z.clone(), z.clone());
     let ey = v3(z.clone(), one.clone(), z.clone());
     let ez = v3(z.clone(), z.clone(), one.clone());

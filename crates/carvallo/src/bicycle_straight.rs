@@ -10,7 +10,7 @@
 //! held by [`Equations`] from three sources:
 //! * [`Equations::memoir_118`]: the numbers printed in n° 118 (and n° 117);
 //! * [`Equations::from_formulas`]: Carvallo's closed forms of n° 117 (the column sums of the
-//!   n° 116 tables), transcribed, at any [`Constants`];
+//!   n° 116 tables, `generated/bicycle_straight.ir`) at any [`Constants`];
 //! * [`Equations::via_whipple`]: the exact linearisation of Carvallo's model through the
 //!   general Carvallo–Whipple bicycle (`generated/whipple.ir`, Kane's method) with the mapping
 //!   of [`Constants::whipple_values`]: hoop wheels, massless fork and handlebar, trail
@@ -34,6 +34,17 @@ crate::scene! {
         model: whipple,
         outputs: [m11, m12, m21, m22, c1_11, c1_12, c1_21, c1_22,
                   k0_11, k0_12, k0_21, k0_22, k2_11, k2_12, k2_21, k2_22],
+    }
+}
+
+crate::scene! {
+    /// Carvallo's coefficients of n° 117 (column sums of the n° 116 tables) and the upper
+    /// limits of n° 122, from `generated/bicycle_straight.ir`.
+    pub mod straight_scene {
+        model: bicycle_straight,
+        outputs: [fall_a2, fall_a1, fall_a0, fall_b2, fall_b1, fall_b0,
+                  bar_a2, bar_a1, bar_a0, bar_b2, bar_b1, bar_b0,
+                  s2_upper, s2_upper_half_trail],
     }
 }
 
@@ -182,31 +193,45 @@ impl Constants {
         ]
     }
 
-    /// The upper limit of $s^2$ in closed form as printed in n° 122 (with $B_1 = 2\mu_1R^2$),
+    /// The outputs of `generated/bicycle_straight.ir` at these constants and the spin `s`, in
+    /// the order of [`straight_scene::OUTPUTS`] (no validation).
+    pub fn generated(&self, s: f64) -> [f64; straight_scene::OUTPUTS.len()] {
+        let k = self;
+        let values = [
+            ("R", k.r),
+            ("l", k.l),
+            ("c_1", k.c1),
+            ("eta", k.eta),
+            ("ecg", k.e),
+            ("h", k.h),
+            ("mu", k.mu),
+            ("mu1", k.mu1),
+            ("A2", k.a2),
+            ("C", k.c),
+            ("L", k.ll),
+            ("g", k.g),
+            ("s", s),
+        ];
+        let mut args = [0.0; straight_scene::PARAMS.len() + straight_scene::INPUTS.len()];
+        let names = straight_scene::PARAMS.iter().chain(straight_scene::INPUTS.iter());
+        for (slot, name) in args.iter_mut().zip(names) {
+            *slot = values.iter().find(|(n, _)| n == name).map_or(f64::NAN, |(_, v)| *v);
+        }
+        straight_scene::eval_array(&args)
+    }
+
+    /// The upper limit of $s^2$ (n° 120, n° 122): the root in $s^2$ of the quartic's constant
+    /// term, and the same for $c_1 = R\sin\eta/2$ (which ignores `c1`), from the generated IR.
+    /// The derivation checks them symbolically equal to the closed forms printed in n° 122,
     /// $s^2 = gQ(\mu h\sin\eta + \mu_1R\sin\eta - \mu ec_1/l) / (R(R/l)\cos\eta\,
     /// [(\mu h + 2\mu_1R)(\mu ec_1/l + 2\mu_1R\sin\eta) - (\mu h + 4\mu_1R)Q])$,
-    /// $Q = \mu ec_1/l + \mu_1R\sin\eta$, and its three-factor form for $c_1 = R\sin\eta/2$
-    /// (which ignores `c1`):
+    /// $Q = \mu ec_1/l + \mu_1R\sin\eta$ (with $B_1 = 2\mu_1R^2$), and
     /// $s^2 = \frac{g\sin\eta}{R(R/l)\cos\eta}\left(\frac12\frac{\mu}{\mu_1}\frac el + 1\right)
-    /// \frac{h - \frac12Re/l + (\mu_1/\mu)R}{h - Re/l}$. Memoir formulas, tested against the
-    /// root of the general model's constant term.
+    /// \frac{h - \frac12Re/l + (\mu_1/\mu)R}{h - Re/l}$ (checks `upper_limit_closed_form`,
+    /// `upper_limit_half_trail` of `generated/bicycle_straight.checks.tsv`).
     pub fn upper_limit_s2(&self) -> (f64, f64) {
-        let k = self;
-        let (sn, co) = (k.eta.sin(), k.eta.cos());
-        let (mu, mu1, r, h, e, l) = (k.mu, k.mu1, k.r, k.h, k.e, k.l);
-        let kk = k.c1 / l;
-        let q = mu * e * kk + mu1 * r * sn;
-        let general = k.g * q * (mu * h * sn + mu1 * r * sn - mu * e * kk)
-            / (r * r / l
-                * co
-                * ((mu * h + 2.0 * mu1 * r) * (mu * e * kk + 2.0 * mu1 * r * sn)
-                    - (mu * h + 4.0 * mu1 * r) * q));
-        let el = e / l;
-        let half = k.g * sn / (r * r / l * co)
-            * (0.5 * mu / mu1 * el + 1.0)
-            * (h - 0.5 * r * el + mu1 / mu * r)
-            / (h - r * el);
-        (general, half)
+        let o = self.generated(0.0);
+        (o[12], o[13])
     }
 }
 
@@ -241,8 +266,10 @@ impl Equations {
         Equations::MEMOIR_118
     }
 
-    /// Carvallo's closed forms of n° 117 at `k`, transcribed as printed (with the first term
-    /// of $\mathfrak B_1'$ read $Rc_1/l^2$; the OCR prints $Rc_1/l$), with the hoop moments
+    /// Carvallo's coefficients of n° 117 at `k`: the column sums of the n° 116 tables,
+    /// evaluated from `generated/bicycle_straight.ir`. The derivation checks them
+    /// symbolically equal to the closed forms printed in n° 117 (with the first term of
+    /// $\mathfrak B_1'$ read $Rc_1/l^2$; the OCR prints $Rc_1/l$), with the hoop moments
     /// $A_1 = \tfrac32\mu_1R^2$, $B_1 = 2\mu_1R^2$, $C_1 = \tfrac12\mu_1R^2$ (n° 4):
     ///
     /// $\mathfrak A'' = A + 2A_1$, $\mathfrak A' = 0$, $\mathfrak A = -g(\mu h + 2\mu_1R)$,
@@ -255,40 +282,28 @@ impl Equations {
     /// $\mathfrak B_1'' = (C + C_1)(c_1/l)^2 + C_1(c_1/l + \cos\eta)^2 + A_1\sin^2\eta$,
     /// $\mathfrak B_1' = s[(Rc_1/l^2)\cos\eta(C + 2C_1) + C_1(R/l)\cos^2\eta +
     /// \mu Re(c_1/l)^2 + \mu_1R^2\sin\eta(\cos\eta + c_1/l)]$,
-    /// $\mathfrak B_1 = s^2(R/l)\cos\eta(\mu Rec_1/l + B_1\sin\eta) - gQ\sin\eta$.
+    /// $\mathfrak B_1 = s^2(R/l)\cos\eta(\mu Rec_1/l + B_1\sin\eta) - gQ\sin\eta$,
+    /// and every table entry equal, part by part and origin by origin, to the general model's
+    /// at three rational points. The split $\mathfrak X = k_0 + k_2s^2$ is read from the values
+    /// at $s = 0$ and $s = 1$.
     ///
-    /// These are the memoir's formulas, not a derivation: [`Equations::via_whipple`] is the
-    /// independent derivation they are tested against (`tests/bicycle_straight.rs`).
+    /// These are Carvallo's equations; [`Equations::via_whipple`] is the independent
+    /// evaluation of the general model they are tested against at run time
+    /// (`tests/bicycle_straight.rs`).
     ///
     /// # Errors
     /// [`ParameterError`] from [`Constants::validate`].
     pub fn from_formulas(k: &Constants) -> Result<Equations, ParameterError> {
         k.validate()?;
-        let (r, l, c1, e, h, mu, mu1, g) = (k.r, k.l, k.c1, k.e, k.h, k.mu, k.mu1, k.g);
-        let (sn, co) = (k.eta.sin(), k.eta.cos());
-        let r2 = r * r;
-        let (a1, b1, cw) = (1.5 * mu1 * r2, 2.0 * mu1 * r2, 0.5 * mu1 * r2);
-        let kk = c1 / l;
-        let rl = r / l;
-        let q = mu * e * kk + mu1 * r * sn;
-        let b2 = -(k.ll * kk + a1 * sn);
+        let (o0, o1) = (k.generated(0.0), k.generated(1.0));
+        let mat = |f: &dyn Fn(usize) -> f64| -> Mat2 {
+            std::array::from_fn(|r| std::array::from_fn(|c| f(6 * r + 3 * c)))
+        };
         Ok(Equations {
-            m: [[k.a2, b2], [b2, (k.c + cw) * kk * kk + cw * (kk + co).powi(2) + a1 * sn * sn]],
-            c: [
-                [0.0, -(kk * (mu * r * h + 2.0 * b1) + co * (k.ll * rl + b1))],
-                [
-                    (b1 - mu1 * r2) * (2.0 * kk + co),
-                    r * c1 / (l * l) * co * (k.c + 2.0 * cw)
-                        + cw * rl * co * co
-                        + mu * r * e * kk * kk
-                        + mu1 * r2 * sn * (co + kk),
-                ],
-            ],
-            k0: [[-g * (mu * h + 2.0 * mu1 * r), g * q], [g * q, -g * sn * q]],
-            k2: [
-                [0.0, -rl * co * (mu * r * h + 2.0 * b1)],
-                [0.0, rl * co * (mu * r * e * kk + b1 * sn)],
-            ],
+            m: mat(&|i| o1[i]),
+            c: mat(&|i| o1[i + 1]),
+            k0: mat(&|i| o0[i + 2]),
+            k2: mat(&|i| o1[i + 2] - o0[i + 2]),
         })
     }
 
