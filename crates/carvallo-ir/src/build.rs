@@ -5,6 +5,9 @@
 //! operations `add` and `mul` are put in a canonical order first, so $a + b$ and $b + a$ share
 //! one instruction. Instruction names are generated (`c0, c1, ...` for constants, `t0, t1, ...`
 //! for the rest) so that the printed program is a deterministic function of the call sequence.
+//! A generated name never equals a parameter's or an input's: one that would is skipped, and an
+//! instruction whose name a later parameter or input takes is renamed (values refer to
+//! instructions by index, so only the printed label changes).
 
 use std::collections::HashMap;
 
@@ -89,6 +92,7 @@ impl Builder {
             return Value::Param(i as u32);
         }
         self.program.params.push(name.to_string());
+        self.free_name(name);
         Value::Param(self.program.params.len() as u32 - 1)
     }
 
@@ -98,6 +102,7 @@ impl Builder {
             return Value::Input(i as u32);
         }
         self.program.inputs.push(name.to_string());
+        self.free_name(name);
         Value::Input(self.program.inputs.len() as u32 - 1)
     }
 
@@ -112,17 +117,37 @@ impl Builder {
         if let Some(&v) = self.seen.get(&k) {
             return v;
         }
-        let name = if let Op::Const(_) = op {
-            self.n_const += 1;
-            format!("c{}", self.n_const - 1)
-        } else {
-            self.n_temp += 1;
-            format!("t{}", self.n_temp - 1)
-        };
+        let name = self.fresh_name(matches!(op, Op::Const(_)));
         self.program.insts.push(Inst { name, op });
         let v = Value::Inst(self.program.insts.len() as u32 - 1);
         self.seen.insert(k, v);
         v
+    }
+
+    /// The next generated name (`c<n>` for a constant, `t<n>` otherwise) that no parameter or
+    /// input uses.
+    fn fresh_name(&mut self, constant: bool) -> String {
+        loop {
+            let name = if constant {
+                self.n_const += 1;
+                format!("c{}", self.n_const - 1)
+            } else {
+                self.n_temp += 1;
+                format!("t{}", self.n_temp - 1)
+            };
+            let p = &self.program;
+            if !p.params.iter().chain(&p.inputs).any(|n| *n == name) {
+                return name;
+            }
+        }
+    }
+
+    /// Renames the instruction, if any, whose generated name a new parameter or input takes.
+    fn free_name(&mut self, name: &str) {
+        if let Some(i) = self.program.insts.iter().position(|inst| inst.name == name) {
+            let constant = matches!(self.program.insts[i].op, Op::Const(_));
+            self.program.insts[i].name = self.fresh_name(constant);
+        }
     }
 
     /// A constant. Non-finite values are a programming error of the caller and panic.
@@ -185,5 +210,36 @@ impl Builder {
     /// The finished program.
     pub fn finish(self) -> Program {
         self.program
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// A parameter or input named like a generated instruction (`c1`, `t0`), declared before or
+    /// after that instruction, gives a valid program whose evaluation is unchanged.
+    #[test]
+    fn generated_names_never_clash_with_parameters_or_inputs() {
+        let mut b = Builder::new("clash");
+        let x = b.input("x");
+        let two = b.constant(2.0);
+        let three = b.constant(3.0); // would be c1
+        let c1 = b.param("c1"); // declared after the constant c1: the constant is renamed
+        let t0 = b.input("t0"); // declared before any temporary: t0 is skipped
+        let p = b.mul(two, x);
+        let q = b.add(p, three);
+        let r = b.mul(q, c1);
+        let y = b.add(r, t0);
+        b.output("y", y);
+        let prog = b.finish();
+        let text = prog.to_string();
+        let back = Program::parse(&text).expect("printed program parses");
+        back.validate().expect("valid");
+        let names: Vec<&str> = prog.insts.iter().map(|i| i.name.as_str()).collect();
+        assert!(!names.contains(&"c1") && !names.contains(&"t0"), "{names:?}");
+        // y = (2 x + 3) c1 + t0 at x = 1.5, c1 = 0.5, t0 = 4: 3 + 4 = 7.
+        let out = back.eval_f64(&[0.5], &[1.5, 4.0]).expect("evaluates");
+        assert_eq!(out, vec![7.0]);
     }
 }
