@@ -10,6 +10,7 @@ use std::io::Write;
 use std::process::ExitCode;
 
 mod figures;
+mod kinematics;
 mod report_out;
 mod perf;
 mod rest;
@@ -45,6 +46,8 @@ Usage:
                                 steady turn with the handlebar held (memoir n° 99-105)
     carvallo rest --theta DEG [--wheel-mass KG] [--json]
                                 the handlebar's rest position at a lean (memoir n° 67)
+    carvallo kinematics --theta DEG --gamma DEG [--json]
+                                contact, relations (I) and steady rates (2) (memoir n° 59-69)
     carvallo --help             print this help
 
 Options:
@@ -188,6 +191,9 @@ fn main() -> ExitCode {
         return code;
     }
     if let Some(code) = rest::dispatch(&args) {
+        return code;
+    }
+    if let Some(code) = kinematics::dispatch(&args) {
         return code;
     }
     let command = match parse(&args) {
