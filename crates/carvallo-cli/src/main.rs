@@ -77,7 +77,7 @@ enum UsageError {
 impl std::fmt::Display for UsageError {
     fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
         match self {
-            UsageError::Missing => write!(f, "missing command: expected `report`, `window`, `eig`, `bench`, `sweep`, `accel`, `simulate`, `turn` or `--help`"),
+            UsageError::Missing => write!(f, "missing command: expected `report`, `window`, `eig`, `bench`, `sweep`, `accel`, `simulate`, `turn`, `rest`, `kinematics` or `--help`"),
             UsageError::Unknown(arg) => write!(f, "unknown argument `{arg}`"),
             UsageError::Repeated(arg) => write!(f, "argument `{arg}` given more than once"),
             UsageError::MissingValue(arg) => write!(f, "missing value after `{arg}`"),
