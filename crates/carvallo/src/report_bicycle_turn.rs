@@ -429,7 +429,7 @@ fn new_bicycle_grid() -> Entry {
             ] {
                 let c = match bike {
                     Ok(b) => b.steady_turn(gamma, v).and_then(|t| b.fall_equation(&t, hold)),
-                    Err(err) => Err(err.clone().into()),
+                    Err(err) => Err((*err).into()),
                 };
                 match c {
                     Ok(c) if c.saddle() => {
