@@ -235,6 +235,33 @@ impl Constants {
     }
 }
 
+/// A part of Carvallo's bicycle: a column of the tables of n° 116 (the fork and handlebar are
+/// massless, n° 117).
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum Part {
+    /// The mounted frame (frame and rider), the rear body of the general model.
+    Frame,
+    /// The rear wheel.
+    RearWheel,
+    /// The front wheel.
+    FrontWheel,
+}
+
+impl Part {
+    /// The three parts, in the order of the tables.
+    pub const ALL: [Part; 3] = [Part::Frame, Part::RearWheel, Part::FrontWheel];
+
+    /// The part's mass and moments among the general model's parameters
+    /// ([`Constants::whipple_values`]).
+    pub fn whipple_names(self) -> &'static [&'static str] {
+        match self {
+            Part::Frame => &["mB", "IBxx", "IByy", "IBzz", "IBxz"],
+            Part::RearWheel => &["mR", "IRxx", "IRyy"],
+            Part::FrontWheel => &["mF", "IFxx", "IFyy"],
+        }
+    }
+}
+
 /// The coefficients of the two equations: $\mathfrak X'' = m$, $\mathfrak X' = c\,s$,
 /// $\mathfrak X = k_0 + k_2 s^2$ (rows fall, handlebar; columns θ, γ).
 #[derive(Clone, Copy, Debug, PartialEq)]
@@ -315,7 +342,30 @@ impl Equations {
     /// [`ParameterError`] from [`Constants::validate`].
     pub fn via_whipple(k: &Constants) -> Result<Equations, ParameterError> {
         k.validate()?;
-        let values = k.whipple_values();
+        Ok(Equations::from_whipple_values(k, &k.whipple_values()))
+    }
+
+    /// The contribution of one [`Part`] to [`Equations::via_whipple`]: the general model with
+    /// the masses and moments of the two other parts set to zero (its equations are linear in
+    /// the masses and moments, so the three parts sum to the whole). These are the columns of
+    /// Carvallo's n° 116 tables, computed independently of them.
+    ///
+    /// # Errors
+    /// [`ParameterError`] from [`Constants::validate`].
+    pub fn via_whipple_part(k: &Constants, part: Part) -> Result<Equations, ParameterError> {
+        k.validate()?;
+        let mut values = k.whipple_values();
+        for (name, value) in values.iter_mut() {
+            if Part::ALL.iter().any(|p| *p != part && p.whipple_names().contains(name)) {
+                *value = 0.0;
+            }
+        }
+        Ok(Equations::from_whipple_values(k, &values))
+    }
+
+    /// The general model at the benchmark `values`, signs and scales as in
+    /// [`Equations::via_whipple`] (no validation).
+    fn from_whipple_values(k: &Constants, values: &[(&'static str, f64)]) -> Equations {
         let names = general_scene::PARAMS;
         let arr: [f64; general_scene::Args::LEN] = std::array::from_fn(|i| {
             names.get(i).and_then(|n| values.iter().find(|(k, _)| k == n)).map_or(0.0, |(_, x)| *x)
@@ -329,12 +379,7 @@ impl Equations {
         let map = |x: &Mat2, f: f64| -> Mat2 {
             std::array::from_fn(|r| std::array::from_fn(|c| sign(r, c) * f * x[r][c]))
         };
-        Ok(Equations {
-            m: map(&m, 1.0),
-            c: map(&c1, k.r),
-            k0: map(&k0, k.g),
-            k2: map(&k2, k.r * k.r),
-        })
+        Equations { m: map(&m, 1.0), c: map(&c1, k.r), k0: map(&k0, k.g), k2: map(&k2, k.r * k.r) }
     }
 
     /// The twelve coefficients at spin `s` in the order of n° 117: fall equation

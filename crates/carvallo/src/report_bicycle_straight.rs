@@ -19,7 +19,7 @@
 
 use crate::bicycle_straight::{
     friction_half_swing, incline_virtual_works, km_per_hour, memoir_quartic_120, window, Constants,
-    Equations, Window,
+    Equations, Part, Window,
 };
 use crate::report::{Derived, Entry, Memoir, Verdict, AGREEMENT_TOLERANCE};
 
@@ -204,29 +204,31 @@ pub fn entries() -> Vec<Entry> {
     out
 }
 
-/// n° 116: the signs the OCR of the tables loses or adds, shown by n° 109–111.
+/// n° 116: the signs the OCR of the tables loses or adds, shown by n° 109–111. The derived
+/// coefficient of each $\gamma''$ entry is the part's own term of the general model
+/// ([`Equations::via_whipple_part`] at the constants of n° 117): row fall $(\delta\theta)$ or
+/// handlebar $(\delta\gamma)$, column $\gamma$ of the second derivatives.
 fn table_sign_entries() -> Vec<Entry> {
     let k = Constants::MEMOIR;
-    let a1 = 1.5 * k.mu1 * k.r * k.r;
-    let c1w = 0.5 * k.mu1 * k.r * k.r;
-    let kk = k.c1 / k.l;
-    let (sn, co) = (k.eta.sin(), k.eta.cos());
     let cases = [
-        ("table (δθ) frame, γ''", "L c1/l γ''", -k.ll * kk,
+        ("table (δθ) frame, γ''", "L c1/l γ''", Part::Frame, 0,
          "n° 109 gives (dT0/dp)' = ... - L((R/l) cos η γ' s + (c1/l) γ''): the coefficient is -L c1/l; the printed table lost the minus sign (its sum with the front wheel's must be B'' = -(L c1/l + A1 sin η), as n° 117 prints)"),
-        ("table (δθ) front wheel, γ''", "A1 sin η γ''", -a1 * sn,
+        ("table (δθ) front wheel, γ''", "A1 sin η γ''", Part::FrontWheel, 0,
          "n° 111 gives (dT2/dp)' = A1(p' - γ'' sin η) - ...: the coefficient is -A1 sin η; minus sign lost by the OCR"),
-        ("table (δγ) frame, γ''", "- C c1²/l² γ''", k.c * kk * kk,
+        ("table (δγ) frame, γ''", "- C c1²/l² γ''", Part::Frame, 1,
          "n° 109 gives + C (c1/l)(... + (c1/l) γ''): the coefficient is +C c1²/l², and n° 117's B1'' = (C + C1)(c1/l)² + ... is positive; the printed minus sign is spurious"),
-        ("table (δγ) rear wheel, γ''", "- C1 c1²/l² γ''", c1w * kk * kk,
+        ("table (δγ) rear wheel, γ''", "- C1 c1²/l² γ''", Part::RearWheel, 1,
          "n° 110 gives + C1 (c1/l)(... + (c1/l) γ''): spurious minus sign, as for the frame"),
-        ("table (δγ) front wheel, γ''", "- [A1 sin²η + C1 (c1/l + cos η)²] γ''",
-         a1 * sn * sn + c1w * (kk + co).powi(2),
+        ("table (δγ) front wheel, γ''", "- [A1 sin²η + C1 (c1/l + cos η)²] γ''", Part::FrontWheel, 1,
          "n° 111 gives + A1 sin²η γ'' + C1 (c1/l + cos η)² γ'': spurious minus sign"),
     ];
     cases
         .iter()
-        .map(|(q, text, value, note)| ocr("116", q, text, Derived::Number(*value), note))
+        .map(|(q, text, part, row, note)| {
+            let value = Equations::via_whipple_part(&k, *part).map_or(f64::NAN, |e| e.m[*row][1]);
+            let note = format!("{note}; derived: the part's own γ'' term of the general model (the other parts' masses and moments zero)");
+            ocr("116", q, text, Derived::Number(value), &note)
+        })
         .collect()
 }
 

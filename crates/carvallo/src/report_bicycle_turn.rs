@@ -9,6 +9,13 @@
 //! does not need it); the mapping's value is illustrative, and the n° 105 entries repeat the
 //! roots with it halved.
 //!
+//! The n° 105 roots are also computed for the new bicycle of n° 122 at [`NEW_TURN`] and, as a
+//! count of the points where they are real and of opposite signs, across [`GRID_GAMMA`] ×
+//! [`GRID_KMH`]. n° 122 gives only its $e$, $\mu$, $l$, $\mu_1$; the other constants are
+//! carried over from n° 117 ([`Constants::MEMOIR_NEW`]), and because n° 117's $C$ and $L$ then
+//! leave the frame a negative central moment about the vertical, a second variant carries the
+//! old frame's central moments over instead ([`new_bicycle_central`]).
+//!
 //! Verdict policy. The memoir reduces each coefficient to its leading term and calls the
 //! rest negligible, "of the second order in the angles θ, γ". An approximate value therefore
 //! `agrees` when its relative difference from the exact coefficient is below that declared
@@ -300,7 +307,169 @@ pub fn entries() -> Vec<Entry> {
             e.push(failure(&err));
         }
     }
+    if let Err(err) = new_bicycle_roots(&bike, &mut e) {
+        e.push(failure(&err));
+    }
+    e.push(new_bicycle_grid());
     e
+}
+
+/// The turn at which the n° 105 roots are computed for the new bicycle of n° 122: handlebar
+/// angle γ (degrees) and speed (km/h).
+pub const NEW_TURN: (f64, f64) = (5.0, 20.0);
+
+/// The handlebar angles (degrees) of the new bicycle's grid.
+pub const GRID_GAMMA: [f64; 3] = [2.0, 5.0, 10.0];
+
+/// The speeds (km/h) of the new bicycle's grid.
+pub const GRID_KMH: [f64; 4] = [10.0, 15.0, 20.0, 25.0];
+
+/// The new bicycle of n° 122 with the frame's central moments of the old one carried over
+/// instead of its moments about the rear contact: the memoir gives the new $e$, $\mu$, $l$,
+/// $\mu_1$ only, and [`Constants::MEMOIR_NEW`] keeps n° 117's $A + 2A_1$, $C$, $L$, which with
+/// the new $\mu e^2 = 7.84 > C = 4$ leave the frame a negative central moment $C - \mu e^2$
+/// about the vertical. Here $A + 2A_1 = I_{Bxx} + \mu h^2 + 3\mu_1R^2$, $C = I_{Bzz} + \mu e^2$
+/// and $L = I_{Bxz} + \mu eh$ with the old bicycle's central $I_{Bxx}$, $I_{Bzz}$, $I_{Bxz}$.
+pub fn new_bicycle_central() -> Constants {
+    let (o, n) = (Constants::MEMOIR, Constants::MEMOIR_NEW);
+    let ibxx = o.a2 - 3.0 * o.mu1 * o.r * o.r - o.mu * o.h * o.h;
+    let ibzz = o.c - o.mu * o.e * o.e;
+    let ibxz = o.ll - o.mu * o.e * o.h;
+    Constants {
+        a2: ibxx + n.mu * n.h * n.h + 3.0 * n.mu1 * n.r * n.r,
+        c: ibzz + n.mu * n.e * n.e,
+        ll: ibxz + n.mu * n.e * n.h,
+        ..n
+    }
+}
+
+fn central_frame_moments(k: &Constants) -> (f64, f64, f64) {
+    let get =
+        |name: &str| k.whipple_values().iter().find(|(n, _)| *n == name).map_or(f64::NAN, |x| x.1);
+    (get("IBxx"), get("IBzz"), get("IBxz"))
+}
+
+/// The roots (C) of n° 105 for the new bicycle of n° 122 at [`NEW_TURN`].
+fn new_bicycle_roots(old: &LockedSteer, e: &mut Vec<Entry>) -> Result<(), String> {
+    let (gdeg, kmh) = NEW_TURN;
+    let (gamma, v) = (gdeg.to_radians(), kmh / 3.6);
+    let k = Constants::MEMOIR_NEW;
+    let roots = |b: &LockedSteer, speed: f64, hold: Hold| {
+        b.steady_turn(gamma, speed)
+            .and_then(|t| b.fall_equation(&t, hold))
+            .map_err(|x| x.to_string())
+    };
+    let bike = LockedSteer::new(k).map_err(|x| x.to_string())?;
+    let t = bike.steady_turn(gamma, v).map_err(|x| x.to_string())?;
+    let c = bike.fall_equation(&t, Hold::Rolling).map_err(|x| x.to_string())?;
+    let cb = bike.fall_equation(&t, Hold::BearingRate).map_err(|x| x.to_string())?;
+    let w = bike.free_wheel(&t).map_err(|x| x.to_string())?;
+    let rest = roots(&bike, 0.0, Hold::Rolling)?;
+    let (ibxx, ibzz, ibxz) = central_frame_moments(&k);
+    let half = LockedSteer::with_pitch_moment(k, 0.5 * (ibxx + ibzz))
+        .map_err(|x| x.to_string())
+        .and_then(|b| roots(&b, v, Hold::Rolling))?;
+    let central = new_bicycle_central();
+    let cc = LockedSteer::new(central)
+        .map_err(|x| x.to_string())
+        .and_then(|b| roots(&b, v, Hold::Rolling))?;
+    let oc = roots(old, v, Hold::Rolling)?;
+    let without_dfdp = (-c.dfdtheta / c.dfdpp).sqrt();
+    let all = [&c, &cb, &half, &cc, &oc];
+    e.push(Entry {
+        section: "105".into(),
+        quantity: format!("roots of (C), handlebar held (1/s), new bicycle of n° 122, {}", label(gdeg, kmh)),
+        memoir: Memoir::Formula("real and of opposite signs: unstable, whatever the speed (n° 105; n° 122 discusses only the straight running of the new bicycle)".into()),
+        derived: Derived::Numbers(BTreeMap::from([
+            ("lambda_minus".to_string(), c.roots[0].re),
+            ("lambda_plus".to_string(), lambda_plus(&c)),
+            ("lambda_plus_without_dfdp".to_string(), without_dfdp),
+            ("lambda_plus_at_rest".to_string(), lambda_plus(&rest)),
+            ("bearing_held_lambda_plus".to_string(), lambda_plus(&cb)),
+            ("half_pitch_moment_lambda_plus".to_string(), lambda_plus(&half)),
+            ("central_moments_lambda_plus".to_string(), lambda_plus(&cc)),
+            ("old_bicycle_lambda_plus".to_string(), lambda_plus(&oc)),
+            ("free_wheel_lambda_minus".to_string(), w.roots[0].re),
+            ("free_wheel_lambda_plus".to_string(), w.roots[2].re),
+        ])),
+        rel_diff: None,
+        verdict: if all.iter().all(|x| x.saddle()) && w.roots[2].re > 0.0 {
+            Verdict::Agrees
+        } else {
+            Verdict::DerivationDiffers
+        },
+        note: format!(
+            "the new bicycle of n° 122 gives e = {}, mu = {} (1/2 mu = 32; the OCR prints 3,2), l = {}, mu1 = {}; carried over from n° 117: R = {}, c1 = {}, eta = 25°, h = {}, A + 2 A1 = {}, C = {}, L = {}, g = {}, and the frame's pitch moment (not printed for either bicycle; the mapping's central I_Byy = I_Bxx + I_Bzz = {:.3} kg m^2, halved in half_pitch_moment_*). With C and L carried over the frame's central moments are I_Bxx = {ibxx:.3}, I_Bzz = C - mu e^2 = {ibzz:.3}, I_Bxz = {ibxz:.3} kg m^2: I_Bzz < 0 is no mass distribution, so central_moments_* carries the old frame's central moments over instead (A + 2 A1 = {:.4}, C = {:.4}, L = {:.4}). with s held df/dp' = {:.3} > 0 and df/dtheta = {:.2} < 0: real roots of opposite signs, as in every variant (bearing rate held, halved pitch moment, central moments, and the old bicycle at the same turn, old_bicycle_*); free-wheeling, one root of each sign and |lambda| of the zero root {}; lean {:.5} rad",
+            k.e, k.mu, k.l, k.mu1, k.r, k.c1, k.h, k.a2, k.c, k.ll, k.g,
+            ibxx + ibzz,
+            central.a2, central.c, central.ll,
+            c.dfdpp, c.dfdtheta,
+            small(w.roots[1].norm(), 1e-9),
+            t.lean
+        ),
+    });
+    Ok(())
+}
+
+/// n° 105 across [`GRID_GAMMA`] × [`GRID_KMH`] for the new bicycle of n° 122: the count of
+/// grid points where the roots of (C) are real and of opposite signs.
+fn new_bicycle_grid() -> Entry {
+    let total = GRID_GAMMA.len() * GRID_KMH.len();
+    let mut count = [0usize; 3];
+    let mut failed = Vec::new();
+    let mut range = (f64::INFINITY, f64::NEG_INFINITY);
+    let bikes = [LockedSteer::new(Constants::MEMOIR_NEW), LockedSteer::new(new_bicycle_central())];
+    for gdeg in GRID_GAMMA {
+        for kmh in GRID_KMH {
+            let (gamma, v) = (gdeg.to_radians(), kmh / 3.6);
+            for (n, hold, bike) in [
+                (0, Hold::Rolling, &bikes[0]),
+                (1, Hold::BearingRate, &bikes[0]),
+                (2, Hold::Rolling, &bikes[1]),
+            ] {
+                let c = match bike {
+                    Ok(b) => b.steady_turn(gamma, v).and_then(|t| b.fall_equation(&t, hold)),
+                    Err(err) => Err((*err).into()),
+                };
+                match c {
+                    Ok(c) if c.saddle() => {
+                        count[n] += 1;
+                        if n == 0 {
+                            range = (range.0.min(lambda_plus(&c)), range.1.max(lambda_plus(&c)));
+                        }
+                    }
+                    Ok(_) => {}
+                    Err(err) => failed.push(format!("{}: {err}", label(gdeg, kmh))),
+                }
+            }
+        }
+    }
+    let fmt = |x: &[f64]| x.iter().map(|v| v.to_string()).collect::<Vec<_>>().join(", ");
+    Entry {
+        section: "105".into(),
+        quantity: "roots of (C) real and of opposite signs across a grid, new bicycle of n° 122".into(),
+        memoir: Memoir::Formula("real and of opposite signs: unstable, whatever the speed".into()),
+        derived: Derived::Numbers(BTreeMap::from([
+            ("grid_points".to_string(), total as f64),
+            ("saddle_points".to_string(), count[0] as f64),
+            ("bearing_held_saddle_points".to_string(), count[1] as f64),
+            ("central_moments_saddle_points".to_string(), count[2] as f64),
+            ("lambda_plus_min".to_string(), range.0),
+            ("lambda_plus_max".to_string(), range.1),
+        ])),
+        rel_diff: None,
+        verdict: if count.iter().all(|c| *c == total) {
+            Verdict::Agrees
+        } else {
+            Verdict::DerivationDiffers
+        },
+        note: format!(
+            "gamma = {} degrees × {} km/h, the constants of the previous entry (C and L of n° 117 carried over; central_moments_*: the old frame's central moments carried over); a point counts when (C) has real roots of opposite signs; lambda_plus_* are the range of the positive root with s held{}",
+            fmt(&GRID_GAMMA),
+            fmt(&GRID_KMH),
+            if failed.is_empty() { String::new() } else { format!("; failed: {}", failed.join("; ")) }
+        ),
+    }
 }
 
 fn failure(why: &str) -> Entry {

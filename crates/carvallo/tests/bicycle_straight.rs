@@ -6,7 +6,7 @@
 #![allow(clippy::needless_range_loop)]
 
 use carvallo::bicycle_straight::{
-    friction_half_swing, hurwitz, memoir_quartic_120, window, Constants, Equations,
+    friction_half_swing, hurwitz, memoir_quartic_120, window, Constants, Equations, Part,
 };
 use nalgebra::Matrix4;
 
@@ -157,4 +157,48 @@ fn bad_constants_are_named() {
         Equations::from_formulas(&bad).unwrap_err().to_string(),
         "invalid ll NaN: must be finite"
     );
+}
+
+/// The three parts of the n° 116 tables sum to the general model's whole equations (its
+/// equations are linear in the masses and moments), at three constant sets, and the parts'
+/// second-derivative terms are the n° 109–111 expressions evaluated by hand.
+#[test]
+fn parts_sum_to_the_general_model() {
+    let sets = [
+        Constants::MEMOIR,
+        Constants::MEMOIR_NEW,
+        Constants { c1: 0.05, eta: 0.3, ll: 11.0, c: 6.0, ..Constants::MEMOIR },
+    ];
+    for k in sets {
+        let whole = Equations::via_whipple(&k).expect("valid");
+        let parts = Part::ALL.map(|p| Equations::via_whipple_part(&k, p).expect("valid"));
+        let pick = |e: &Equations| [e.m, e.c, e.k0, e.k2];
+        let w = pick(&whole);
+        let scale = w.iter().flatten().flatten().map(|x| x.abs()).fold(0.0, f64::max);
+        for n in 0..4 {
+            for r in 0..2 {
+                for c in 0..2 {
+                    let sum: f64 = parts.iter().map(|p| pick(p)[n][r][c]).sum();
+                    assert!(
+                        (sum - w[n][r][c]).abs() <= SAME * scale,
+                        "{k:?}: matrix {n} ({r}, {c}): parts {sum} vs whole {}",
+                        w[n][r][c]
+                    );
+                }
+            }
+        }
+        let (a1, c1w, kk) = (1.5 * k.mu1 * k.r * k.r, 0.5 * k.mu1 * k.r * k.r, k.c1 / k.l);
+        let (sn, co) = (k.eta.sin(), k.eta.cos());
+        let [frame, rear, front] = parts;
+        for (got, want) in [
+            (frame.m[0][1], -k.ll * kk),
+            (front.m[0][1], -a1 * sn),
+            (rear.m[0][1], 0.0),
+            (frame.m[1][1], k.c * kk * kk),
+            (rear.m[1][1], c1w * kk * kk),
+            (front.m[1][1], a1 * sn * sn + c1w * (kk + co).powi(2)),
+        ] {
+            assert!((got - want).abs() <= SAME * scale, "{k:?}: part term {got} vs {want}");
+        }
+    }
 }

@@ -4,8 +4,10 @@
 //! relative difference, every section present, the old upright-only n° 105 entry gone, and a
 //! snapshot of the text table with numbers normalised to 4 significant digits.
 
+use carvallo::bicycle_straight::Constants;
+use carvallo::report::Derived;
 use carvallo::report::{normalise_numbers, render_text, Memoir, Verdict};
-use carvallo::report_bicycle_turn::{entries, TURNS};
+use carvallo::report_bicycle_turn::{entries, new_bicycle_central, GRID_GAMMA, GRID_KMH, TURNS};
 
 /// Entries whose verdict is `derivation-differs`, by (section, quantity prefix).
 const FINDINGS: &[(&str, &str)] = &[
@@ -19,8 +21,8 @@ const FINDINGS: &[(&str, &str)] = &[
 #[test]
 fn verdicts_are_the_expected_ones() {
     let e = entries();
-    // Two upright entries, then nine per turn.
-    assert_eq!(e.len(), 2 + 9 * TURNS.len());
+    // Two upright entries, nine per turn, then the new bicycle's roots and grid.
+    assert_eq!(e.len(), 2 + 9 * TURNS.len() + 2);
     for x in &e {
         let finding = FINDINGS.iter().any(|(s, q)| x.section == *s && x.quantity == *q);
         let expected = if finding {
@@ -56,4 +58,49 @@ fn text_report_snapshot() {
     }, {
         insta::assert_snapshot!("bicycle_turn_report_text", text);
     });
+}
+
+/// The new bicycle of n° 122: the variant with the old frame's central moments has them
+/// (through the general model's mapping, an independent path), the printed n° 122 constants,
+/// and the grid entry counts every grid point in each of its three variants.
+#[test]
+fn new_bicycle_entries() {
+    let central = |k: &Constants| {
+        let v = k.whipple_values();
+        let get = |n: &str| v.iter().find(|(m, _)| *m == n).map(|x| x.1).expect("mapped");
+        [get("IBxx"), get("IBzz"), get("IBxz"), get("mB"), get("xB"), get("w"), get("mR")]
+    };
+    let (old, new, carried) = (
+        central(&Constants::MEMOIR),
+        central(&Constants::MEMOIR_NEW),
+        central(&new_bicycle_central()),
+    );
+    for i in 0..3 {
+        assert!(
+            (carried[i] - old[i]).abs() <= 1e-12 * old[0],
+            "central moment {i}: {carried:?} vs {old:?}"
+        );
+    }
+    assert_eq!(carried[3..], new[3..], "the n° 122 constants");
+    assert!(new[1] < 0.0, "n° 117's C with the new mu e^2 leaves I_Bzz = {}", new[1]);
+    let e = entries();
+    let grid = e
+        .iter()
+        .find(|x| x.section == "105" && x.quantity.contains("across a grid"))
+        .expect("grid entry");
+    let Derived::Numbers(n) = &grid.derived else { panic!("numbers expected: {:?}", grid.derived) };
+    let total = (GRID_GAMMA.len() * GRID_KMH.len()) as f64;
+    assert_eq!(n["grid_points"], total);
+    for key in ["saddle_points", "bearing_held_saddle_points", "central_moments_saddle_points"] {
+        assert_eq!(n[key], total, "{key}: {}", grid.note);
+    }
+    assert!(n["lambda_plus_min"] > 0.0 && n["lambda_plus_min"] <= n["lambda_plus_max"]);
+    let roots = e
+        .iter()
+        .find(|x| x.quantity.starts_with("roots of (C)") && x.quantity.contains("new bicycle"))
+        .expect("new bicycle roots");
+    let Derived::Numbers(r) = &roots.derived else { panic!("numbers expected") };
+    assert!(r["lambda_minus"] < 0.0 && r["lambda_plus"] > 0.0, "{r:?}");
+    // The n° 105 turn lies on the grid: its root is inside the grid's range.
+    assert!(r["lambda_plus"] >= n["lambda_plus_min"] && r["lambda_plus"] <= n["lambda_plus_max"]);
 }
