@@ -60,9 +60,9 @@ pub struct Derivation {
     pub checks: Vec<Check>,
 }
 
-pub mod bicycle_steady;
 pub mod bicycle_geometry;
 pub mod bicycle_kinematics;
+pub mod bicycle_steady;
 pub mod bicycle_straight;
 pub mod emit;
 pub mod frame;

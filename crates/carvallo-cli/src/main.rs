@@ -11,10 +11,10 @@ use std::process::ExitCode;
 
 mod figures;
 mod kinematics;
-mod report_out;
-mod perf;
-mod rest;
 mod nonlinear;
+mod perf;
+mod report_out;
+mod rest;
 mod straight;
 mod turn;
 mod whipple;

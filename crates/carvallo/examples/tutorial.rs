@@ -19,14 +19,20 @@ fn main() -> Result<(), Box<dyn std::error::Error>> {
     // 1. The scene: a plain function of the inputs its outputs need (theta, s, n).
     println!("scene `turning`: inputs {:?}, {} operations", turning::INPUTS, turning::OP_COUNT);
     let out = turning::eval(&turning::Args { theta: 0.2, n: -1.0, s: 6.0 });
-    println!("(E) residual = {:.6} 1/s², (S) first member = {:.6} 1/s²", out.equilibrium, out.stability);
+    println!(
+        "(E) residual = {:.6} 1/s², (S) first member = {:.6} 1/s²",
+        out.equilibrium, out.stability
+    );
 
     // 2. The model with validated parameters: the two steady turning rates of (E).
     let hoop = Hoop::new(0.5, 1.0, 9.81)?;
     if let Some([n1, n2]) = hoop.steady_turning_rates(0.2, 6.0) {
         for n in [n1, n2] {
             let stable = hoop.stability(0.2, 6.0, n) > 0.0;
-            println!("steady turning at n = {n:.6} 1/s: {}", if stable { "stable" } else { "unstable" });
+            println!(
+                "steady turning at n = {n:.6} 1/s: {}",
+                if stable { "stable" } else { "unstable" }
+            );
         }
     }
     // Bad input is a typed error naming the value.

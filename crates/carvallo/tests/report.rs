@@ -4,7 +4,7 @@
 
 use std::collections::BTreeMap;
 
-use carvallo::report::{normalise_numbers, hoop_entries, render_json, render_text, Verdict};
+use carvallo::report::{hoop_entries, normalise_numbers, render_json, render_text, Verdict};
 
 /// The verdict each (section, quantity) must get.
 fn expected() -> BTreeMap<(&'static str, &'static str), Verdict> {
@@ -81,7 +81,6 @@ fn json_has_the_required_keys() {
         assert!(object["rel_diff"].is_number() || object["rel_diff"].is_null());
     }
 }
-
 
 #[test]
 fn text_report_snapshot() {

@@ -5,7 +5,6 @@
 use carvallo::report::{normalise_numbers, render_text, Verdict};
 use carvallo::report_hoop_discussion::{entries, n12_forms_agree, point_entries};
 
-
 #[test]
 fn verdicts_are_the_expected_ones() {
     assert!(n12_forms_agree());

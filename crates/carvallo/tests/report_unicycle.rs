@@ -99,7 +99,6 @@ fn verdicts_are_the_expected_ones() {
     }
 }
 
-
 #[test]
 fn text_report_snapshot() {
     let text = normalise_numbers(&render_text(&entries()));
