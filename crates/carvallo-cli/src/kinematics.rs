@@ -19,6 +19,8 @@ use std::process::ExitCode;
 use carvallo::bicycle_kinematics::Kinematics;
 use serde_json::json;
 
+use crate::args::{number, options};
+
 const HELP: &str = "\
 Usage:
     carvallo kinematics --theta DEG --gamma DEG [--json]
@@ -39,31 +41,13 @@ struct Command {
     json: bool,
 }
 
-fn number(name: &str, v: &str) -> Result<f64, String> {
-    let x: f64 = v.parse().map_err(|_| format!("invalid {name} `{v}`"))?;
-    if !x.is_finite() {
-        return Err(format!("invalid {name} `{v}`: must be finite"));
-    }
-    Ok(x)
-}
-
 fn parse(args: &[String]) -> Result<Command, String> {
-    let mut seen: Vec<&str> = Vec::new();
     let (mut theta, mut gamma, mut json) = (None, None, false);
-    let mut it = args.iter().skip(1);
-    while let Some(arg) = it.next() {
-        let a = arg.as_str();
-        if !matches!(a, "--theta" | "--gamma" | "--json") {
-            return Err(format!("unknown argument `{arg}`"));
-        }
-        if seen.contains(&a) {
-            return Err(format!("argument `{arg}` given more than once"));
-        }
-        seen.push(a);
-        let mut value = || it.next().cloned().ok_or(format!("missing value after `{arg}`"));
+    let words = args.get(1..).unwrap_or_default();
+    for (a, v) in options(words, &["--theta", "--gamma"], &["--json"])? {
         match a {
-            "--theta" => theta = Some(number("theta", &value()?)?),
-            "--gamma" => gamma = Some(number("gamma", &value()?)?),
+            "--theta" => theta = Some(number("theta", v)?),
+            "--gamma" => gamma = Some(number("gamma", v)?),
             _ => json = true,
         }
     }

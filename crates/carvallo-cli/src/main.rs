@@ -9,6 +9,7 @@
 use std::io::Write;
 use std::process::ExitCode;
 
+mod args;
 mod figures;
 mod kinematics;
 mod nonlinear;

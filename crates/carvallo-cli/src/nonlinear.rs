@@ -21,6 +21,8 @@ use carvallo::whipple::WhippleParams;
 use carvallo::whipple_nonlinear::WhippleNonlinear;
 use serde_json::{json, Value};
 
+use crate::args::{number, options};
+
 const HELP: &str = "\
 Usage:
     carvallo accel --model benchmark|FILE.toml --basu-mandal   (reads {\"q\": [..9], \"qd\": [..9]} on stdin)
@@ -44,49 +46,26 @@ enum Command {
     },
 }
 
-fn number(name: &str, v: &str) -> Result<f64, String> {
-    let x: f64 = v.parse().map_err(|_| format!("invalid {name} `{v}`"))?;
-    if !x.is_finite() {
-        return Err(format!("invalid {name} `{v}`: must be finite"));
-    }
-    Ok(x)
-}
-
 fn parse(args: &[String]) -> Result<Command, String> {
     let (first, rest) = args.split_first().ok_or("missing command")?;
     let accel = first == "accel";
-    let mut seen: Vec<&str> = Vec::new();
     let (mut model, mut basu, mut json) = (None, false, false);
     let (mut speed, mut lean0, mut duration, mut step, mut every) = (None, None, None, 0.001, 10);
-    let mut it = rest.iter();
-    while let Some(arg) = it.next() {
-        let a = arg.as_str();
-        let known = if accel {
-            matches!(a, "--model" | "--basu-mandal")
-        } else {
-            matches!(
-                a,
-                "--model" | "--speed" | "--lean0" | "--duration" | "--step" | "--every" | "--json"
-            )
-        };
-        if !known {
-            return Err(format!("unknown argument `{arg}`"));
-        }
-        if seen.contains(&a) {
-            return Err(format!("argument `{arg}` given more than once"));
-        }
-        seen.push(a);
-        let mut value = || it.next().cloned().ok_or(format!("missing value after `{arg}`"));
+    let (valued, flags): (&[&str], &[&str]) = if accel {
+        (&["--model"], &["--basu-mandal"])
+    } else {
+        (&["--model", "--speed", "--lean0", "--duration", "--step", "--every"], &["--json"])
+    };
+    for (a, v) in options(rest, valued, flags)? {
         match a {
-            "--model" => model = Some(value()?),
+            "--model" => model = Some(v.to_string()),
             "--basu-mandal" => basu = true,
             "--json" => json = true,
-            "--speed" => speed = Some(number("speed", &value()?)?),
-            "--lean0" => lean0 = Some(number("lean0", &value()?)?),
-            "--duration" => duration = Some(number("duration", &value()?)?),
-            "--step" => step = number("step", &value()?)?,
+            "--speed" => speed = Some(number("speed", v)?),
+            "--lean0" => lean0 = Some(number("lean0", v)?),
+            "--duration" => duration = Some(number("duration", v)?),
+            "--step" => step = number("step", v)?,
             _ => {
-                let v = value()?;
                 every = v
                     .parse()
                     .ok()

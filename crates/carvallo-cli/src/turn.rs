@@ -15,6 +15,8 @@ use carvallo::bicycle_straight::Constants;
 use carvallo::bicycle_turn::{Hold, LockedSteer, MAX_GAMMA};
 use serde_json::json;
 
+use crate::args::{number, options};
+
 const HELP: &str = "\
 Usage:
     carvallo turn --model carvallo --gamma DEG --speed V [--json]
@@ -28,32 +30,14 @@ struct Command {
     json: bool,
 }
 
-fn number(name: &str, v: &str) -> Result<f64, String> {
-    let x: f64 = v.parse().map_err(|_| format!("invalid {name} `{v}`"))?;
-    if !x.is_finite() {
-        return Err(format!("invalid {name} `{v}`: must be finite"));
-    }
-    Ok(x)
-}
-
 fn parse(args: &[String]) -> Result<Command, String> {
-    let mut seen: Vec<&str> = Vec::new();
     let (mut model, mut gamma, mut speed, mut json) = (None, None, None, false);
-    let mut it = args.iter().skip(1);
-    while let Some(arg) = it.next() {
-        let a = arg.as_str();
-        if !matches!(a, "--model" | "--gamma" | "--speed" | "--json") {
-            return Err(format!("unknown argument `{arg}`"));
-        }
-        if seen.contains(&a) {
-            return Err(format!("argument `{arg}` given more than once"));
-        }
-        seen.push(a);
-        let mut value = || it.next().cloned().ok_or(format!("missing value after `{arg}`"));
+    let words = args.get(1..).unwrap_or_default();
+    for (a, v) in options(words, &["--model", "--gamma", "--speed"], &["--json"])? {
         match a {
-            "--model" => model = Some(value()?),
-            "--gamma" => gamma = Some(number("gamma", &value()?)?),
-            "--speed" => speed = Some(number("speed", &value()?)?),
+            "--model" => model = Some(v.to_string()),
+            "--gamma" => gamma = Some(number("gamma", v)?),
+            "--speed" => speed = Some(number("speed", v)?),
             _ => json = true,
         }
     }

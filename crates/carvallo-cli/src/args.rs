@@ -1,0 +1,67 @@
+//! Argument helpers shared by the subcommands `turn`, `rest`, `kinematics`, `accel` and
+//! `simulate`: every option at most once, an unknown argument or a missing value named in the
+//! error, and numbers that must parse and be finite.
+
+/// The finite number `v` given for the quantity `name`.
+pub fn number(name: &str, v: &str) -> Result<f64, String> {
+    let x: f64 = v.parse().map_err(|_| format!("invalid {name} `{v}`"))?;
+    if !x.is_finite() {
+        return Err(format!("invalid {name} `{v}`: must be finite"));
+    }
+    Ok(x)
+}
+
+/// Splits `words` (what follows the subcommand) into `(option, value)` pairs in order. An option
+/// listed in `valued` takes the next word as its value; one in `flags` takes none (its value is
+/// empty). Anything else, an option given twice or a valued option at the end is an error that
+/// names it.
+pub fn options<'a>(
+    words: &'a [String],
+    valued: &[&str],
+    flags: &[&str],
+) -> Result<Vec<(&'a str, &'a str)>, String> {
+    let mut out: Vec<(&str, &str)> = Vec::new();
+    let mut it = words.iter();
+    while let Some(arg) = it.next() {
+        let a = arg.as_str();
+        let takes_value = valued.contains(&a);
+        if !takes_value && !flags.contains(&a) {
+            return Err(format!("unknown argument `{arg}`"));
+        }
+        if out.iter().any(|(seen, _)| *seen == a) {
+            return Err(format!("argument `{arg}` given more than once"));
+        }
+        let value = if takes_value {
+            it.next().ok_or(format!("missing value after `{arg}`"))?.as_str()
+        } else {
+            ""
+        };
+        out.push((a, value));
+    }
+    Ok(out)
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    fn words(list: &[&str]) -> Vec<String> {
+        list.iter().map(|s| s.to_string()).collect()
+    }
+
+    #[test]
+    fn options_in_order_and_errors_named() {
+        let w = words(&["--theta", "20", "--json", "--gamma", "-5"]);
+        assert_eq!(
+            options(&w, &["--theta", "--gamma"], &["--json"]),
+            Ok(vec![("--theta", "20"), ("--json", ""), ("--gamma", "-5")])
+        );
+        let err = |list: &[&str]| options(&words(list), &["--theta"], &["--json"]).unwrap_err();
+        assert_eq!(err(&["--lean", "5"]), "unknown argument `--lean`");
+        assert_eq!(err(&["--json", "--json"]), "argument `--json` given more than once");
+        assert_eq!(err(&["--theta"]), "missing value after `--theta`");
+        assert_eq!(number("theta", "2.5"), Ok(2.5));
+        assert_eq!(number("theta", "five"), Err("invalid theta `five`".into()));
+        assert_eq!(number("theta", "inf"), Err("invalid theta `inf`: must be finite".into()));
+    }
+}
