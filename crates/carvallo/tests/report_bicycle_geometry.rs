@@ -2,6 +2,8 @@
 //! entries that are findings, every table of the memoir present, and a snapshot of the text
 //! table with numbers normalised to 4 significant digits.
 
+mod common;
+
 use std::collections::BTreeMap;
 
 use carvallo::report::{normalise_numbers, render_text, Verdict};
@@ -42,32 +44,11 @@ fn findings() -> BTreeMap<(&'static str, &'static str), Verdict> {
 
 #[test]
 fn verdicts_are_the_expected_ones() {
-    let entries = entries();
-    let findings = findings();
-    let mut unexpected = String::new();
-    for e in &entries {
-        let key = (e.section.as_str(), e.quantity.as_str());
-        let ok = match findings.get(&key) {
-            Some(v) => e.verdict == *v,
-            None => matches!(e.verdict, Verdict::Agrees | Verdict::Rounding),
-        };
-        if !ok {
-            unexpected.push_str(&format!(
-                "n° {} {}: {} ({})\n",
-                e.section,
-                e.quantity,
-                e.verdict.as_str(),
-                e.note
-            ));
-        }
-    }
-    assert!(unexpected.is_empty(), "unexpected verdicts:\n{unexpected}");
-    for (s, q) in findings.keys() {
-        assert!(entries.iter().any(|e| e.section == *s && e.quantity == *q), "no entry n° {s} {q}");
-    }
-    for section in ["44", "46", "47", "48", "49", "50", "51", "52", "53", "54", "56", "57", "58"] {
-        assert!(entries.iter().any(|e| e.section == section), "no entry for n° {section}");
-    }
+    common::assert_verdicts(
+        &entries(),
+        &findings(),
+        &["44", "46", "47", "48", "49", "50", "51", "52", "53", "54", "56", "57", "58"],
+    );
 }
 
 #[test]

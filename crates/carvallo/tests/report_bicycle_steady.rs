@@ -3,6 +3,8 @@
 //! runtime's validation, and a snapshot of the text table with numbers normalised to 4
 //! significant digits.
 
+mod common;
+
 use std::collections::BTreeMap;
 
 use carvallo::bicycle_steady::{BicycleParams, BicycleSteady, SteadyState};
@@ -38,22 +40,7 @@ fn findings() -> BTreeMap<(&'static str, &'static str), Verdict> {
 #[test]
 fn verdicts_are_the_expected_ones() {
     let entries = entries();
-    let findings = findings();
     for e in &entries {
-        let key = (e.section.as_str(), e.quantity.as_str());
-        match findings.iter().find(|((s, q), _)| (*s, *q) == key) {
-            Some((_, v)) => {
-                assert_eq!(e.verdict, *v, "n° {} {}: {}", e.section, e.quantity, e.note)
-            }
-            None => assert!(
-                matches!(e.verdict, Verdict::Agrees | Verdict::Rounding),
-                "n° {} {} is {} ({})",
-                e.section,
-                e.quantity,
-                e.verdict.as_str(),
-                e.note
-            ),
-        }
         if let (Some(rel), Memoir::Formula(_)) = (e.rel_diff, &e.memoir) {
             assert_eq!(
                 e.verdict == Verdict::Agrees,
@@ -64,12 +51,11 @@ fn verdicts_are_the_expected_ones() {
             );
         }
     }
-    for (s, q) in findings.keys() {
-        assert!(entries.iter().any(|e| e.section == *s && e.quantity == *q), "no entry n° {s} {q}");
-    }
-    for section in ["84", "85", "86", "87", "88", "89", "94", "95", "96", "97", "98", "99", "100"] {
-        assert!(entries.iter().any(|e| e.section == section), "no entry for n° {section}");
-    }
+    common::assert_verdicts(
+        &entries,
+        &findings(),
+        &["84", "85", "86", "87", "88", "89", "94", "95", "96", "97", "98", "99", "100"],
+    );
 }
 
 #[test]

@@ -3,6 +3,8 @@
 //! or a slide-rule rounding, and a snapshot of the text table with numbers normalised to 4
 //! significant digits.
 
+mod common;
+
 use std::collections::BTreeMap;
 
 use carvallo::report::{normalise_numbers, render_text, Verdict};
@@ -45,24 +47,7 @@ fn findings() -> BTreeMap<(&'static str, &'static str), Verdict> {
 #[test]
 fn verdicts_are_the_expected_ones() {
     let entries = entries();
-    let findings = findings();
-    for e in &entries {
-        match findings.get(&(e.section.as_str(), e.quantity.as_str())) {
-            Some(v) => assert_eq!(e.verdict, *v, "n° {} {}: {}", e.section, e.quantity, e.note),
-            None => assert!(
-                matches!(e.verdict, Verdict::Agrees | Verdict::Rounding),
-                "n° {} {} is {} ({:?}; {})",
-                e.section,
-                e.quantity,
-                e.verdict.as_str(),
-                e.derived,
-                e.note
-            ),
-        }
-    }
-    for (s, q) in findings.keys() {
-        assert!(entries.iter().any(|e| e.section == *s && e.quantity == *q), "no entry n° {s} {q}");
-    }
+    common::assert_verdicts(&entries, &findings(), &[]);
     // The concordance with the general model is the central finding: it must agree.
     let c = entries.iter().find(|e| e.section == "116" && e.quantity.starts_with("the twelve"));
     assert_eq!(c.map(|e| e.verdict), Some(Verdict::Agrees), "{c:?}");
