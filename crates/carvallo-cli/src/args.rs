@@ -41,13 +41,15 @@ pub fn options<'a>(
     Ok(out)
 }
 
+/// `list` as owned words, as the command line gives them (for the subcommands' tests).
+#[cfg(test)]
+pub fn words(list: &[&str]) -> Vec<String> {
+    list.iter().map(|s| s.to_string()).collect()
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;
-
-    fn words(list: &[&str]) -> Vec<String> {
-        list.iter().map(|s| s.to_string()).collect()
-    }
 
     #[test]
     fn options_in_order_and_errors_named() {

@@ -14,7 +14,6 @@
 //! numbers, |θ| ≥ 90°, a position without a contact solution and a singular displacement
 //! system are errors naming the value, exit code 2.
 
-use std::process::ExitCode;
 
 use carvallo::bicycle_kinematics::Kinematics;
 use serde_json::json;
@@ -162,21 +161,18 @@ fn sci(x: f64) -> String {
     format!("{x:+.6e}")
 }
 
-/// Runs `kinematics` when `args` asks for it, `None` otherwise.
-pub fn dispatch(args: &[String]) -> Option<ExitCode> {
-    if args.first().map(String::as_str) != Some("kinematics") {
-        return None;
-    }
-    Some(crate::finish(parse(args).and_then(|cmd| run(&cmd)), HELP))
-}
+/// The subcommand `kinematics`.
+pub const SUBCOMMAND: crate::Subcommand = crate::Subcommand {
+    names: &["kinematics"],
+    run: |args| parse(args).and_then(|c| run(&c)),
+    help: HELP,
+};
 
 #[cfg(test)]
 mod tests {
     use super::*;
 
-    fn args(list: &[&str]) -> Vec<String> {
-        list.iter().map(|s| s.to_string()).collect()
-    }
+    use crate::args::words as args;
 
     #[test]
     fn parses_and_rejects_by_value() {

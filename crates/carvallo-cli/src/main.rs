@@ -149,6 +149,41 @@ fn run(command: Command) -> anyhow::Result<()> {
     Ok(())
 }
 
+/// A subcommand handled by a module of its own.
+pub(crate) struct Subcommand {
+    /// The first words that select it.
+    pub names: &'static [&'static str],
+    /// Parses the whole argument list (the subcommand's name first) and runs it: the text to
+    /// print, or an error naming the bad argument or value.
+    pub run: fn(&[String]) -> Result<String, String>,
+    /// Its usage text.
+    pub help: &'static str,
+}
+
+impl Subcommand {
+    /// Prints the help (exit 0) when an argument is `-h` or `--help`, otherwise runs the
+    /// subcommand and prints its outcome with [`finish`].
+    fn dispatch(&self, args: &[String]) -> ExitCode {
+        if args.iter().any(|a| a == "-h" || a == "--help") {
+            return match emit(self.help) {
+                Ok(()) => ExitCode::SUCCESS,
+                Err(_) => ExitCode::FAILURE,
+            };
+        }
+        finish((self.run)(args), self.help)
+    }
+}
+
+/// The subcommands with a module of their own (`report` is parsed here).
+const SUBCOMMANDS: [&Subcommand; 6] = [
+    &whipple::SUBCOMMAND,
+    &perf::SUBCOMMAND,
+    &nonlinear::SUBCOMMAND,
+    &turn::SUBCOMMAND,
+    &rest::SUBCOMMAND,
+    &kinematics::SUBCOMMAND,
+];
+
 /// Prints a subcommand's outcome: its text on standard output (exit 0; exit 1 if it cannot be
 /// written), or the error and the subcommand's `help` on standard error (exit 2).
 pub(crate) fn finish(out: Result<String, String>, help: &str) -> ExitCode {
@@ -179,23 +214,9 @@ pub(crate) fn emit(text: &str) -> std::io::Result<()> {
 
 fn main() -> ExitCode {
     let args: Vec<String> = std::env::args().skip(1).collect();
-    if let Some(code) = whipple::dispatch(&args) {
-        return code;
-    }
-    if let Some(code) = perf::dispatch(&args) {
-        return code;
-    }
-    if let Some(code) = nonlinear::dispatch(&args) {
-        return code;
-    }
-    if let Some(code) = turn::dispatch(&args) {
-        return code;
-    }
-    if let Some(code) = rest::dispatch(&args) {
-        return code;
-    }
-    if let Some(code) = kinematics::dispatch(&args) {
-        return code;
+    let first = args.first().map(String::as_str).unwrap_or("");
+    if let Some(sub) = SUBCOMMANDS.iter().find(|sub| sub.names.contains(&first)) {
+        return sub.dispatch(&args);
     }
     let command = match parse(&args) {
         Ok(command) => command,
@@ -222,9 +243,7 @@ fn main() -> ExitCode {
 mod tests {
     use super::*;
 
-    fn args(list: &[&str]) -> Vec<String> {
-        list.iter().map(|s| s.to_string()).collect()
-    }
+    use crate::args::words as args;
 
     #[test]
     fn parses_the_commands() {

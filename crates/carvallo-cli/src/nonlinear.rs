@@ -15,7 +15,6 @@
 //! simulation (the bicycle fell flat) are errors naming the value, exit code 2.
 
 use std::io::Read;
-use std::process::ExitCode;
 
 use carvallo::whipple::WhippleParams;
 use carvallo::whipple_nonlinear::WhippleNonlinear;
@@ -185,21 +184,18 @@ fn run(cmd: &Command) -> Result<String, String> {
     }
 }
 
-/// Runs `accel` or `simulate` if `args` starts with one of them (`None` otherwise).
-pub fn dispatch(args: &[String]) -> Option<ExitCode> {
-    if !matches!(args.first().map(String::as_str), Some("accel" | "simulate")) {
-        return None;
-    }
-    Some(crate::finish(parse(args).and_then(|cmd| run(&cmd)), HELP))
-}
+/// The subcommands `accel` or `simulate`.
+pub const SUBCOMMAND: crate::Subcommand = crate::Subcommand {
+    names: &["accel", "simulate"],
+    run: |args| parse(args).and_then(|c| run(&c)),
+    help: HELP,
+};
 
 #[cfg(test)]
 mod tests {
     use super::*;
 
-    fn args(list: &[&str]) -> Vec<String> {
-        list.iter().map(|s| s.to_string()).collect()
-    }
+    use crate::args::words as args;
 
     #[test]
     fn parses_and_rejects_by_value() {

@@ -15,7 +15,6 @@
 //! Bad arguments are usage errors naming the value, exit code 2.
 
 use std::io::IsTerminal;
-use std::process::ExitCode;
 use std::sync::atomic::{AtomicBool, AtomicUsize, Ordering};
 use std::time::Duration;
 
@@ -199,27 +198,18 @@ fn rayon_threads() -> usize {
     std::thread::available_parallelism().map_or(1, |n| n.get())
 }
 
-/// Runs `bench` or `sweep` if `args` starts with one of them (`None` otherwise).
-pub fn dispatch(args: &[String]) -> Option<ExitCode> {
-    if !matches!(args.first().map(String::as_str), Some("bench" | "sweep")) {
-        return None;
-    }
-    if args.iter().any(|a| a == "-h" || a == "--help") {
-        return Some(match crate::emit(HELP) {
-            Ok(()) => ExitCode::SUCCESS,
-            Err(_) => ExitCode::FAILURE,
-        });
-    }
-    Some(crate::finish(parse(args).and_then(run), HELP))
-}
+/// The subcommands `bench` or `sweep`.
+pub const SUBCOMMAND: crate::Subcommand = crate::Subcommand {
+    names: &["bench", "sweep"],
+    run: |args| parse(args).and_then(run),
+    help: HELP,
+};
 
 #[cfg(test)]
 mod tests {
     use super::*;
 
-    fn args(list: &[&str]) -> Vec<String> {
-        list.iter().map(|s| s.to_string()).collect()
-    }
+    use crate::args::words as args;
 
     #[test]
     fn parses_and_rejects_by_value() {

@@ -9,7 +9,6 @@
 //! arguments, non-finite numbers, |θ| ≥ 90°, a negative wheel mass and a lean without a rest
 //! position are errors naming the value, exit code 2.
 
-use std::process::ExitCode;
 
 use carvallo::bicycle_rest::RestBicycle;
 use serde_json::json;
@@ -98,21 +97,18 @@ fn run(c: &Command) -> Result<String, String> {
     Ok(s)
 }
 
-/// Runs `rest` when `args` asks for it, `None` otherwise.
-pub fn dispatch(args: &[String]) -> Option<ExitCode> {
-    if args.first().map(String::as_str) != Some("rest") {
-        return None;
-    }
-    Some(crate::finish(parse(args).and_then(|cmd| run(&cmd)), HELP))
-}
+/// The subcommand `rest`.
+pub const SUBCOMMAND: crate::Subcommand = crate::Subcommand {
+    names: &["rest"],
+    run: |args| parse(args).and_then(|c| run(&c)),
+    help: HELP,
+};
 
 #[cfg(test)]
 mod tests {
     use super::*;
 
-    fn args(list: &[&str]) -> Vec<String> {
-        list.iter().map(|s| s.to_string()).collect()
-    }
+    use crate::args::words as args;
 
     #[test]
     fn parses_and_rejects_by_value() {

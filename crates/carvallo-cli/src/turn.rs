@@ -9,7 +9,6 @@
 //! Unknown, repeated or missing arguments, non-finite numbers, an out-of-range γ, a negative
 //! speed and a turn that does not exist are errors naming the value, exit code 2.
 
-use std::process::ExitCode;
 
 use carvallo::bicycle_straight::Constants;
 use carvallo::bicycle_turn::{Hold, LockedSteer, MAX_GAMMA};
@@ -109,21 +108,18 @@ fn run(c: &Command) -> Result<String, String> {
     Ok(s)
 }
 
-/// Runs `turn` when `args` asks for it, `None` otherwise.
-pub fn dispatch(args: &[String]) -> Option<ExitCode> {
-    if args.first().map(String::as_str) != Some("turn") {
-        return None;
-    }
-    Some(crate::finish(parse(args).and_then(|cmd| run(&cmd)), HELP))
-}
+/// The subcommand `turn`.
+pub const SUBCOMMAND: crate::Subcommand = crate::Subcommand {
+    names: &["turn"],
+    run: |args| parse(args).and_then(|c| run(&c)),
+    help: HELP,
+};
 
 #[cfg(test)]
 mod tests {
     use super::*;
 
-    fn args(list: &[&str]) -> Vec<String> {
-        list.iter().map(|s| s.to_string()).collect()
-    }
+    use crate::args::words as args;
 
     #[test]
     fn parses_and_rejects_by_value() {

@@ -11,7 +11,6 @@
 //! Unknown or missing arguments, a speed that is not a finite number and an unreadable or
 //! invalid parameter file are usage errors: a message naming the value, exit code 2.
 
-use std::process::ExitCode;
 
 use carvallo::whipple::{Whipple, WhippleParams};
 use serde_json::{json, Value};
@@ -132,21 +131,18 @@ fn run(cmd: &Command) -> Result<String, String> {
     }
 }
 
-/// Runs `window` or `eig` if `args` starts with one of them (`None` otherwise).
-pub fn dispatch(args: &[String]) -> Option<ExitCode> {
-    if !matches!(args.first().map(String::as_str), Some("window" | "eig")) {
-        return None;
-    }
-    Some(crate::finish(parse(args).and_then(|cmd| run(&cmd)), HELP))
-}
+/// The subcommands `window` or `eig`.
+pub const SUBCOMMAND: crate::Subcommand = crate::Subcommand {
+    names: &["window", "eig"],
+    run: |args| parse(args).and_then(|c| run(&c)),
+    help: HELP,
+};
 
 #[cfg(test)]
 mod tests {
     use super::*;
 
-    fn args(list: &[&str]) -> Vec<String> {
-        list.iter().map(|s| s.to_string()).collect()
-    }
+    use crate::args::words as args;
 
     #[test]
     fn parses_and_rejects_by_value() {

@@ -1,4 +1,5 @@
-//! End-to-end tests of the `carvallo` binary: the report in both formats, the help, the exit
+//! End-to-end tests of the `carvallo` binary: the report in both formats, the help (and every
+//! subcommand's), the exit
 //! code 2 with a message naming an unknown argument, and bad output directories and parameter
 //! files for `report --out` and `window` (exit code 2, empty standard output, nothing written).
 //! The successful `report --out` is checked by the README replay (`tests/readme.rs`).
@@ -36,6 +37,19 @@ fn help_and_unknown_arguments() {
     let (code, _, err) = carvallo(&[]);
     assert_eq!(code, 2);
     assert!(err.starts_with("error: missing command"), "{err}");
+    // Every subcommand prints its own usage for -h or --help, wherever it stands, with exit 0.
+    for (args, usage) in [
+        (&["window", "--help"][..], "carvallo window"),
+        (&["sweep", "-h"][..], "carvallo sweep"),
+        (&["simulate", "--help"][..], "carvallo simulate"),
+        (&["turn", "--gamma", "5", "-h"][..], "carvallo turn"),
+        (&["rest", "--help"][..], "carvallo rest"),
+        (&["kinematics", "--help"][..], "carvallo kinematics"),
+    ] {
+        let (code, text, err) = carvallo(args);
+        assert_eq!(code, 0, "{args:?}: {err}");
+        assert!(text.contains(usage), "{args:?}: {text}");
+    }
 }
 
 #[test]
