@@ -370,11 +370,13 @@ fn det3(a: &[[f64; 3]; 3]) -> f64 {
 }
 
 /// Gaussian elimination with partial pivoting; `None` for a (numerically) singular matrix.
+#[allow(clippy::needless_range_loop)] // row i is updated from row k of the same array
 fn solve3(mut a: [[f64; 3]; 3], mut b: [f64; 3]) -> Option<[f64; 3]> {
     let scale = a.iter().flatten().fold(0.0f64, |m, v| m.max(v.abs()));
     for k in 0..3 {
         let p = (k..3).max_by(|i, j| a[*i][k].abs().total_cmp(&a[*j][k].abs()))?;
-        if !(a[p][k].abs() > 1e-13 * scale) {
+        // (a NaN pivot counts as zero)
+        if a[p][k].abs().partial_cmp(&(1e-13 * scale)) != Some(std::cmp::Ordering::Greater) {
             return None;
         }
         a.swap(k, p);

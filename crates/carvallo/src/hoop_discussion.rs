@@ -285,7 +285,7 @@ pub fn carvallo_root() -> CarvalloRoot {
 fn quartic_coefficients(f: impl Fn(f64) -> f64) -> Vec<f64> {
     let vals: Vec<f64> = (0..5).map(|k| f(k as f64)).collect();
     // Solve the Vandermonde system exactly enough by Lagrange interpolation in f64.
-    let mut coeffs = vec![0.0; 5];
+    let mut coeffs = [0.0; 5];
     for (i, vi) in vals.iter().enumerate() {
         // basis polynomial prod_{j != i} (t - j)/(i - j), expanded (lowest first)
         let mut basis = vec![1.0];
