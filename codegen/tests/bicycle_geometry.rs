@@ -3,6 +3,8 @@
 //! vanish at the normal position, and the formulas handed to the emission are pinned by their
 //! names, sections and sizes.
 
+mod common;
+
 use carvallo_codegen::bicycle_geometry;
 use carvallo_codegen::emit::emit_program;
 
@@ -17,17 +19,7 @@ const EXPECTED_FALSE: [&str; 1] = [
 #[test]
 fn bicycle_geometry_derivation() {
     let d = bicycle_geometry::derive().expect("the geometry derivation runs");
-    let mut report = String::new();
-    for c in &d.checks {
-        let expected = !EXPECTED_FALSE.contains(&c.id.as_str());
-        if c.holds != expected {
-            report.push_str(&format!("{} {} holds={} {}\n", c.section, c.id, c.holds, c.detail));
-        }
-    }
-    assert!(report.is_empty(), "unexpected check outcomes:\n{report}");
-    for id in EXPECTED_FALSE {
-        assert!(d.checks.iter().any(|c| c.id == id), "missing check {id}");
-    }
+    common::assert_checks(&d.checks, &EXPECTED_FALSE);
     // The emitted program at the memoir's old bicycle (n° 52) in the normal position: both
     // residuals vanish at sigma = sigma0, mu = sigma0, and the first-order sigma1 is 0.
     let program = emit_program(&d).expect("the derivation emits");

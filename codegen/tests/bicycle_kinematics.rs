@@ -3,6 +3,8 @@
 //! the upright straight bicycle's known rates: no turning, no pitching and equal rolling of the
 //! two wheels (n° 66, (2)).
 
+mod common;
+
 use carvallo_codegen::bicycle_kinematics;
 use carvallo_codegen::emit::emit_program;
 
@@ -23,17 +25,7 @@ const EXPECTED_FALSE: [&str; 4] = [
 #[test]
 fn bicycle_kinematics_derivation() {
     let d = bicycle_kinematics::derive().expect("the kinematics derivation runs");
-    let mut report = String::new();
-    for c in &d.checks {
-        let expected = !EXPECTED_FALSE.contains(&c.id.as_str());
-        if c.holds != expected {
-            report.push_str(&format!("{} {} holds={} {}\n", c.section, c.id, c.holds, c.detail));
-        }
-    }
-    assert!(report.is_empty(), "unexpected check outcomes:\n{report}");
-    for id in EXPECTED_FALSE {
-        assert!(d.checks.iter().any(|c| c.id == id), "missing check {id}");
-    }
+    common::assert_checks(&d.checks, &EXPECTED_FALSE);
     // The old bicycle of n° 52 upright and straight (theta = gamma = 0, sigma = mu = sigma0):
     // M is at x = l, y = 0, alpha = beta = 0, so (I) gives no pitching or turning, the steady
     // turning rate is 0 and the front wheel rolls as the rear one (sigma1' = s).

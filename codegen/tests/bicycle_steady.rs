@@ -2,6 +2,8 @@
 //! expected (all hold except the findings listed in `EXPECTED_FALSE`, each explained in its
 //! detail and in the report's notes).
 
+mod common;
+
 use carvallo_codegen::bicycle_steady;
 
 // The unlicensed symbolica runs in one thread only: this file has a single `#[test]`.
@@ -23,15 +25,5 @@ const EXPECTED_FALSE: [&str; 5] = [
 #[test]
 fn bicycle_steady_derivation() {
     let d = bicycle_steady::derive().expect("the bicycle_steady derivation runs");
-    let mut report = String::new();
-    for c in &d.checks {
-        let expected = !EXPECTED_FALSE.contains(&c.id.as_str());
-        if c.holds != expected {
-            report.push_str(&format!("{} {} holds={} {}\n", c.section, c.id, c.holds, c.detail));
-        }
-    }
-    assert!(report.is_empty(), "unexpected check outcomes:\n{report}");
-    for id in EXPECTED_FALSE {
-        assert!(d.checks.iter().any(|c| c.id == id), "missing check {id}");
-    }
+    common::assert_checks(&d.checks, &EXPECTED_FALSE);
 }

@@ -6,6 +6,8 @@
 //! constants of n° 117 gives the quartic of n° 119 as the determinant of the emitted
 //! coefficients (relative 1e-12).
 
+mod common;
+
 use carvallo_codegen::bicycle_straight;
 use carvallo_codegen::emit::emit_program;
 
@@ -27,13 +29,7 @@ fn straight_running_derivation() {
         "bar_rear_wheel_gamma2_as_printed",
         "bar_front_wheel_gamma2_as_printed",
     ];
-    for c in &d.checks {
-        let expected = !findings.contains(&c.id.as_str());
-        assert_eq!(c.holds, expected, "check {}: {}", c.id, c.detail);
-    }
-    for id in findings {
-        assert!(d.checks.iter().any(|c| c.id == id), "no check {id}");
-    }
+    common::assert_checks(&d.checks, &findings);
     let prog = emit_program(&d).expect("emission");
     // n° 117: R, l, c_1, eta = 25°, e, h, mu, mu1, A + 2 A1, C, L; g = 9.81.
     let params =

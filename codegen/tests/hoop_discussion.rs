@@ -2,6 +2,8 @@
 //! outcome, and each derived polynomial or curve is snapshotted next to the memoir's printed
 //! one. One `#[test]` only: the unlicensed symbolica may be used from one thread per process.
 
+mod common;
+
 use carvallo_codegen::hoop_discussion::{self, printed};
 use symbolica::atom::AtomCore;
 
@@ -18,15 +20,7 @@ fn canonical(e: &symbolica::atom::Atom) -> String {
 fn discussion_derivation() {
     let d = hoop_discussion::derive().expect("derivation");
     // Checks: all hold except the table's s0 (a misprint of the memoir, n° 15).
-    let expected_false = ["s0_table_memoir"];
-    let mut failures = Vec::new();
-    for c in &d.checks {
-        let expected = !expected_false.contains(&c.id.as_str());
-        if c.holds != expected {
-            failures.push(format!("{} {}: {} ({})", c.section, c.id, c.statement, c.detail));
-        }
-    }
-    assert!(failures.is_empty(), "unexpected check outcomes:\n{}", failures.join("\n"));
+    common::assert_checks(&d.checks, &["s0_table_memoir"]);
     let find = |name: &str| {
         d.formulas.iter().find(|f| f.name == name).unwrap_or_else(|| panic!("no formula {name}"))
     };

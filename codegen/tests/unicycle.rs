@@ -2,6 +2,8 @@
 //! (all hold except the findings listed in `EXPECTED_FALSE`), and the formulas handed to the
 //! emission are pinned by one snapshot.
 
+mod common;
+
 use carvallo_codegen::unicycle;
 
 // The unlicensed symbolica runs in one thread only: this file has a single `#[test]`.
@@ -21,17 +23,7 @@ const EXPECTED_FALSE: [&str; 4] = [
 #[test]
 fn unicycle_derivation() {
     let d = unicycle::derive().expect("the unicycle derivation runs");
-    let mut report = String::new();
-    for c in &d.checks {
-        let expected = !EXPECTED_FALSE.contains(&c.id.as_str());
-        if c.holds != expected {
-            report.push_str(&format!("{} {} holds={} {}\n", c.section, c.id, c.holds, c.detail));
-        }
-    }
-    assert!(report.is_empty(), "unexpected check outcomes:\n{report}");
-    for id in EXPECTED_FALSE {
-        assert!(d.checks.iter().any(|c| c.id == id), "missing check {id}");
-    }
+    common::assert_checks(&d.checks, &EXPECTED_FALSE);
     // Formulas longer than this are pinned by their length only (the solved full system runs
     // to tens of thousands of characters); `generated/unicycle.md` has them whole.
     const LONG: usize = 600;

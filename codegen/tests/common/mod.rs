@@ -1,0 +1,20 @@
+//! What every derivation test asserts of its checks.
+
+use carvallo_codegen::Check;
+
+/// Every check holds except the findings named in `expected_false`, each of which is among the
+/// checks and does not hold; the panic lists every check with the other outcome, with its
+/// section and evidence.
+pub fn assert_checks(checks: &[Check], expected_false: &[&str]) {
+    let mut report = String::new();
+    for c in checks {
+        let expected = !expected_false.contains(&c.id.as_str());
+        if c.holds != expected {
+            report.push_str(&format!("{} {} holds={} {}\n", c.section, c.id, c.holds, c.detail));
+        }
+    }
+    assert!(report.is_empty(), "unexpected check outcomes:\n{report}");
+    for id in expected_false {
+        assert!(checks.iter().any(|c| c.id == *id), "missing check {id}");
+    }
+}
