@@ -14,7 +14,6 @@
 //! numbers, |θ| ≥ 90°, a position without a contact solution and a singular displacement
 //! system are errors naming the value, exit code 2.
 
-
 use carvallo::bicycle_kinematics::Kinematics;
 use serde_json::json;
 

@@ -9,7 +9,6 @@
 //! arguments, non-finite numbers, |θ| ≥ 90°, a negative wheel mass and a lean without a rest
 //! position are errors naming the value, exit code 2.
 
-
 use carvallo::bicycle_rest::RestBicycle;
 use serde_json::json;
 

@@ -9,7 +9,6 @@
 //! Unknown, repeated or missing arguments, non-finite numbers, an out-of-range γ, a negative
 //! speed and a turn that does not exist are errors naming the value, exit code 2.
 
-
 use carvallo::bicycle_straight::Constants;
 use carvallo::bicycle_turn::{Hold, LockedSteer, MAX_GAMMA};
 use serde_json::json;

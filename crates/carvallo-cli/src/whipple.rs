@@ -11,7 +11,6 @@
 //! Unknown or missing arguments, a speed that is not a finite number and an unreadable or
 //! invalid parameter file are usage errors: a message naming the value, exit code 2.
 
-
 use carvallo::whipple::{Whipple, WhippleParams};
 use serde_json::{json, Value};
 

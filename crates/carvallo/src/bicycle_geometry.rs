@@ -286,7 +286,10 @@ impl Geometry {
             let before = norm(&o);
             let mut t = 1.0;
             let mut next = self.contact_eval(theta, gamma, sigma - ds, mu - dm);
-            while norm(&next).partial_cmp(&before) != Some(std::cmp::Ordering::Less) && t > 1e-9 && before > NEWTON_TOLERANCE {
+            while norm(&next).partial_cmp(&before) != Some(std::cmp::Ordering::Less)
+                && t > 1e-9
+                && before > NEWTON_TOLERANCE
+            {
                 t *= 0.5;
                 next = self.contact_eval(theta, gamma, sigma - t * ds, mu - t * dm);
             }
