@@ -373,6 +373,64 @@ pub fn derive() -> Result<Derivation> {
             zeros.iter().map(|&(k, j)| format!("row {} {}: {}", k + 1, SPEEDS[j], coef[k][j])).collect::<Vec<_>>().join("; ")
         ),
     ));
+    let axle_sym = [0, 1, 2].map(|k| {
+        let n = ["ax", "ay", "az"][k];
+        nm.name(
+            n,
+            &format!("{n}, a component of the front axle's unit vector (yawed frame)"),
+            axle[k].clone(),
+        )
+    });
+    let [ax, ay, az_s] = &axle_sym;
+    // The rows' coefficients are handed over factored too: row k's coefficient of speed j is
+    // e_k . (dv_{C_F}/du_j + dw_F/du_j x r_F d), with the axle's components named and
+    // d = (-a_z a_x/n_F, -a_z a_y/n_F, n_F).
+    let e = [zhat.clone(), [ax.clone(), ay.clone(), num(0)], [ay.clone(), -ax, num(0)]];
+    let d_sym = [-(az_s * ax) / &nf, -(az_s * ay) / &nf, nf.clone()];
+    let w_f_axle = add(&sub(&w_f_yaw, &scale(&thetafd, &axle)), &scale(&thetafd, &axle_sym));
+    let mut unname: Vec<(String, Atom)> =
+        ["ax", "ay", "az"].iter().zip(&axle).map(|(n, a)| (n.to_string(), a.clone())).collect();
+    let mut factored = vec![vec![num(0); 6]; 3];
+    for j in 0..6 {
+        let dv = map3(&v_cf, |c| d(c, SPEEDS[j]).expand());
+        let dv = if dv.iter().all(|c| c.is_zero()) {
+            dv
+        } else {
+            let named = nm.name3(
+                &format!("vcF_{}", SPEEDS[j]),
+                &format!(
+                    "partial derivative of C_F's velocity (yawed frame) with respect to {}",
+                    SPEEDS[j]
+                ),
+                &dv,
+            );
+            for (k, c) in ["x", "y", "z"].iter().enumerate() {
+                unname.push((format!("vcF_{}_{c}", SPEEDS[j]), dv[k].clone()));
+            }
+            named
+        };
+        let dw = map3(&w_f_axle, |c| d(c, SPEEDS[j]).expand());
+        let part = add(&dv, &cross(&dw, &scale(&rf, &d_sym)));
+        for k in 0..3 {
+            factored[k][j] = dot(&e[k], &part);
+        }
+    }
+    let mut factored_ok = true;
+    for k in 0..3 {
+        for j in 0..6 {
+            let mut x = factored[k][j].clone();
+            for (n, v) in &unname {
+                x = subst(&x, n, v);
+            }
+            factored_ok &= (x - &coef[k][j]).expand().is_zero();
+        }
+    }
+    checks.push(check(
+        "rows_factored",
+        "the factored row coefficients e_k . (dv_CF/du_j + dw_F/du_j x r_F d) equal the coefficients of the expanded rows",
+        factored_ok,
+        "with the axle's components and C_F's partial velocities written out, each difference expands to 0".to_string(),
+    ));
     let mut bn = vec![vec![num(0); 6]; 3];
     for k in 0..3 {
         for j in 0..6 {
@@ -385,7 +443,7 @@ pub fn derive() -> Result<Derivation> {
                         k + 1,
                         ["the vertical", "(a_x, a_y, 0)", "(a_y, -a_x, 0)"][k]
                     ),
-                    coef[k][j].clone(),
+                    factored[k][j].clone(),
                 );
             }
         }
@@ -440,14 +498,6 @@ pub fn derive() -> Result<Derivation> {
     // wherever the rows do (v_c = 0 when the dependent speeds satisfy the constraints, as they
     // do at run time), and the second is built from named factors instead of differentiating
     // the expanded rows (that took 24,292 of the model's 30,554 operations).
-    let axle_sym = [0, 1, 2].map(|k| {
-        let n = ["ax", "ay", "az"][k];
-        nm.name(
-            n,
-            &format!("{n}, a component of the front axle's unit vector (yawed frame)"),
-            axle[k].clone(),
-        )
-    });
     let axle_dot = [0, 1, 2].map(|k| {
         let n = ["axd", "ayd", "azd"][k];
         nm.name(
@@ -456,15 +506,13 @@ pub fn derive() -> Result<Derivation> {
             dtf(&axle[k]),
         )
     });
-    let [ax, ay, az_s] = &axle_sym;
     let [axd, ayd, azd] = &axle_dot;
     let nfd = nm.name(
         "nfd",
         "time derivative of nf at constant speeds, -a_z a_z'/nf (1/s)",
         -(az_s * azd) / &nf,
     );
-    // d = (-a_z a_x/n_F, -a_z a_y/n_F, n_F) and its derivative.
-    let d_sym = [-(az_s * ax) / &nf, -(az_s * ay) / &nf, nf.clone()];
+    // The derivative of d.
     let d_dot = [
         -(azd * ax + az_s * axd) / &nf + az_s * ax * &nfd / nf.pow(num(2)),
         -(azd * ay + az_s * ayd) / &nf + az_s * ay * &nfd / nf.pow(num(2)),
@@ -483,7 +531,6 @@ pub fn derive() -> Result<Derivation> {
     );
     let vc_dot =
         add(&vcf_dot, &add(&cross(&wf_dot, &scale(&rf, &d_sym)), &cross(&wf, &scale(&rf, &d_dot))));
-    let e = [zhat.clone(), [ax.clone(), ay.clone(), num(0)], [ay.clone(), -ax, num(0)]];
     let dc: Vec<Atom> = e.iter().map(|ek| dot(ek, &vc_dot)).collect();
     let dcn: Vec<Atom> = (0..3)
         .map(|k| {
