@@ -182,6 +182,17 @@ fn rel_diff_cell(r: Option<f64>) -> String {
 /// Renders the entries as an aligned plain-text table (columns n°, quantity, memoir, derived,
 /// relative difference, verdict), each row followed by its note on an indented line.
 pub fn render_text(entries: &[Entry]) -> String {
+    render_text_with(entries, &|cell| cell)
+}
+
+/// [`render_text`] with every number to 4 significant digits ([`normalise_numbers`] applied to
+/// each cell and note before the columns are laid out, so the padding does not depend on the
+/// digits dropped): the form the snapshot tests compare.
+pub fn render_text_normalised(entries: &[Entry]) -> String {
+    render_text_with(entries, &|cell| normalise_numbers(&cell))
+}
+
+fn render_text_with(entries: &[Entry], cell: &dyn Fn(String) -> String) -> String {
     let header = ["n°", "quantity", "memoir", "derived", "rel. diff", "verdict"];
     let rows: Vec<[String; 6]> = entries
         .iter()
@@ -194,6 +205,7 @@ pub fn render_text(entries: &[Entry]) -> String {
                 rel_diff_cell(e.rel_diff),
                 e.verdict.as_str().to_string(),
             ]
+            .map(cell)
         })
         .collect();
     let mut widths = header.map(|h| h.chars().count());
@@ -222,7 +234,7 @@ pub fn render_text(entries: &[Entry]) -> String {
     for (row, entry) in rows.iter().zip(entries) {
         line(row, &mut out);
         if !entry.note.is_empty() {
-            let _ = writeln!(out, "    {}", entry.note);
+            let _ = writeln!(out, "    {}", cell(entry.note.clone()));
         }
     }
     out

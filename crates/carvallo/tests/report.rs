@@ -4,7 +4,7 @@
 
 use std::collections::BTreeMap;
 
-use carvallo::report::{hoop_entries, normalise_numbers, render_json, render_text, Verdict};
+use carvallo::report::{hoop_entries, render_json, render_text_normalised, Verdict};
 
 /// The verdict each (section, quantity) must get.
 fn expected() -> BTreeMap<(&'static str, &'static str), Verdict> {
@@ -84,7 +84,7 @@ fn json_has_the_required_keys() {
 
 #[test]
 fn text_report_snapshot() {
-    let text = normalise_numbers(&render_text(&hoop_entries()));
+    let text = render_text_normalised(&hoop_entries());
     insta::with_settings!({
         description => "carvallo report: the hoop concordance table, numbers to 4 significant digits",
         omit_expression => true,

@@ -6,7 +6,7 @@ mod common;
 
 use std::collections::BTreeMap;
 
-use carvallo::report::{normalise_numbers, render_text, Verdict};
+use carvallo::report::{render_text_normalised, Verdict};
 use carvallo::report_bicycle_kinematics::entries;
 
 /// Entries whose verdict is not `agrees` or `rounding`, by (section, quantity).
@@ -33,7 +33,7 @@ fn verdicts_are_the_expected_ones() {
 
 #[test]
 fn text_report_snapshot() {
-    let text = normalise_numbers(&render_text(&entries()));
+    let text = render_text_normalised(&entries());
     insta::with_settings!({
         description => "carvallo report: the bicycle kinematics concordance table, numbers to 4 significant digits",
         omit_expression => true,

@@ -4,7 +4,7 @@
 //! in the full report, and a snapshot of the text table with numbers normalised to 4
 //! significant digits.
 
-use carvallo::report::{normalise_numbers, render_text, Derived, Verdict};
+use carvallo::report::{render_text_normalised, Derived, Verdict};
 use carvallo::report_bicycle_rest::{entries, LEANS, NEGLIGIBLE_DEG};
 
 #[test]
@@ -35,7 +35,7 @@ fn verdicts_are_the_expected_ones() {
 
 #[test]
 fn text_report_snapshot() {
-    let text = normalise_numbers(&render_text(&entries()));
+    let text = render_text_normalised(&entries());
     insta::with_settings!({
         description => "carvallo report: the handlebar's rest position at a lean (n° 67), numbers to 4 significant digits",
         omit_expression => true,

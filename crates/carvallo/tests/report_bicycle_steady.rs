@@ -8,7 +8,7 @@ mod common;
 use std::collections::BTreeMap;
 
 use carvallo::bicycle_steady::{BicycleParams, BicycleSteady, SteadyState};
-use carvallo::report::{normalise_numbers, render_text, Memoir, Verdict, AGREEMENT_TOLERANCE};
+use carvallo::report::{render_text_normalised, Memoir, Verdict, AGREEMENT_TOLERANCE};
 use carvallo::report_bicycle_steady::entries;
 use carvallo::ParameterError;
 
@@ -115,7 +115,7 @@ fn equations_are_the_sums_of_their_parts() {
 
 #[test]
 fn text_report_snapshot() {
-    let text = normalise_numbers(&render_text(&entries()));
+    let text = render_text_normalised(&entries());
     insta::with_settings!({
         description => "carvallo report: the bicycle's steady states (n° 79-106), numbers to 4 significant digits",
         omit_expression => true,

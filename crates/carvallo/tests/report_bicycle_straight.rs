@@ -7,7 +7,7 @@ mod common;
 
 use std::collections::BTreeMap;
 
-use carvallo::report::{normalise_numbers, render_text, Verdict};
+use carvallo::report::{render_text_normalised, Verdict};
 use carvallo::report_bicycle_straight::entries;
 
 /// Entries whose verdict is not `agrees` or `rounding`, by (section, quantity).
@@ -55,7 +55,7 @@ fn verdicts_are_the_expected_ones() {
 
 #[test]
 fn text_report_snapshot() {
-    let text = normalise_numbers(&render_text(&entries()));
+    let text = render_text_normalised(&entries());
     insta::with_settings!({
         description => "carvallo report: memoir n° 116-123, the bicycle without hands near straight running, numbers to 4 significant digits",
         omit_expression => true,

@@ -6,7 +6,7 @@
 
 use carvallo::bicycle_straight::Constants;
 use carvallo::report::Derived;
-use carvallo::report::{normalise_numbers, render_text, Memoir, Verdict};
+use carvallo::report::{render_text_normalised, Memoir, Verdict};
 use carvallo::report_bicycle_turn::{entries, new_bicycle_central, GRID_GAMMA, GRID_KMH, TURNS};
 
 /// Entries whose verdict is `derivation-differs`, by (section, quantity prefix).
@@ -51,7 +51,7 @@ fn verdicts_are_the_expected_ones() {
 
 #[test]
 fn text_report_snapshot() {
-    let text = normalise_numbers(&render_text(&entries()));
+    let text = render_text_normalised(&entries());
     insta::with_settings!({
         description => "carvallo report: steady turns with the handlebar held (n° 86, 101-105), numbers to 4 significant digits",
         omit_expression => true,

@@ -2,7 +2,7 @@
 //! entries whose verdict is not `agrees`, the sign checks of n° 19, and a snapshot of the text
 //! table with numbers normalised to 4 significant digits (values below 1e-12 become `~0`).
 
-use carvallo::report::{normalise_numbers, render_text, Verdict};
+use carvallo::report::{render_text_normalised, Verdict};
 use carvallo::report_hoop_discussion::{entries, n12_forms_agree, point_entries};
 
 #[test]
@@ -46,7 +46,7 @@ fn verdicts_are_the_expected_ones() {
 
 #[test]
 fn text_report_snapshot() {
-    let text = normalise_numbers(&render_text(&entries()));
+    let text = render_text_normalised(&entries());
     insta::with_settings!({
         description => "carvallo report: the hoop discussion n° 13-19, numbers to 4 significant digits",
         omit_expression => true,

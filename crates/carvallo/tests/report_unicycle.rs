@@ -6,7 +6,7 @@ mod common;
 
 use std::collections::BTreeMap;
 
-use carvallo::report::{normalise_numbers, render_text, Memoir, Verdict, AGREEMENT_TOLERANCE};
+use carvallo::report::{render_text_normalised, Memoir, Verdict, AGREEMENT_TOLERANCE};
 use carvallo::report_unicycle::entries;
 
 /// Entries whose verdict is not `agrees`, by (section, quantity); every other entry agrees
@@ -87,7 +87,7 @@ fn verdicts_are_the_expected_ones() {
 
 #[test]
 fn text_report_snapshot() {
-    let text = normalise_numbers(&render_text(&entries()));
+    let text = render_text_normalised(&entries());
     insta::with_settings!({
         description => "carvallo report: the unicycle concordance table, numbers to 4 significant digits",
         omit_expression => true,
