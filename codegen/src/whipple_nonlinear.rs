@@ -33,8 +33,9 @@
 //! $M_3$ by LU.
 //!
 //! The expressions are handed over *factored*: each named intermediate quantity (the sines and
-//! cosines, the constraint coefficients, the dependent rates, the partial velocities, the
-//! velocity-part accelerations, ...) is its own formula, and later formulas refer to earlier
+//! cosines, the front axle's components, the position vectors of the rigid-body chain that gives
+//! the mass centres' velocities and accelerations, the constraint coefficients, the dependent
+//! rates, the partial velocities, the velocity-part accelerations, ...) is its own formula, and later formulas refer to earlier
 //! ones by name (see [`crate::emit::emit_program`]); substituting everything into $M_3$, $f_3$
 //! would expand them by orders of magnitude. Outputs also give the total energy and the front
 //! contact's position for the ground tracks.
@@ -343,7 +344,8 @@ pub fn derive() -> Result<Derivation> {
     // rho = X - Y, from the rear contact P (a_P = Omega x v_P, Omega = psid z the yawed
     // frame's rate) through the rear wheel centre (lean frame), the steering axis point A and
     // the mass centres (rear and front frames), with the position vectors rho named. Written
-    // out and expanded instead, the velocities' time derivatives took 1,800 operations more.
+    // out and expanded instead, the velocities and their time derivatives took about 2,400
+    // operations more.
     // Everything is at constant speeds (the dependent accelerations' velocity parts).
     let mut unname: Vec<(String, Atom)> = Vec::new();
     let mut name_vec = |nm: &mut Named, name: &str, description: &str, v: &V3| -> V3 {
@@ -403,9 +405,10 @@ pub fn derive() -> Result<Derivation> {
     // The chain's vectors equal the direct ones only with sin^2 + cos^2 = 1 (R R^T = 1 makes
     // R [w]x R^T = [R w]x): the comparisons are made, exactly, at two points with rational
     // sines and cosines (Pythagorean triples), every parameter and speed kept symbolic.
-    let trig_points: [[(&str, i64, i64); 4]; 2] = [
-        [("phi", 3, 5), ("th", 5, 13), ("del", 8, 17), ("lam", 7, 25)],
-        [("phi", -20, 29), ("th", 12, 37), ("del", -9, 41), ("lam", 11, 61)],
+    // (angle, numerators of its sine and cosine, their denominator)
+    let trig_points: [[(&str, i64, i64, i64); 4]; 2] = [
+        [("phi", 3, 4, 5), ("th", 5, 12, 13), ("del", 8, 15, 17), ("lam", 7, 24, 25)],
+        [("phi", -20, 21, 29), ("th", 12, 35, 37), ("del", -9, 40, 41), ("lam", 11, 60, 61)],
     ];
     let same = |a: &Atom, b: &Atom, table: &[(String, Atom)]| {
         let mut x = a - b;
@@ -414,12 +417,13 @@ pub fn derive() -> Result<Derivation> {
         }
         trig_points.iter().all(|point| {
             let mut y = x.clone();
-            for &(angle, num_s, den) in point {
-                let hyp2 = den * den;
-                let c2 = hyp2 - num_s * num_s;
-                let cos_num = (c2 as f64).sqrt() as i64;
-                assert_eq!(cos_num * cos_num, c2, "a Pythagorean triple");
-                y = subst(&y, &format!("s{angle}"), &(num(num_s) / num(den)));
+            for &(angle, sin_num, cos_num, den) in point {
+                assert_eq!(
+                    sin_num * sin_num + cos_num * cos_num,
+                    den * den,
+                    "{angle}: on the circle"
+                );
+                y = subst(&y, &format!("s{angle}"), &(num(sin_num) / num(den)));
                 y = subst(&y, &format!("c{angle}"), &(num(cos_num) / num(den)));
             }
             y.expand().is_zero()
