@@ -437,20 +437,20 @@ pub fn stick_theta_n(r: f64, g: f64, s: f64, m: f64, m1: f64, time: f64) -> (f64
 /// Integrates n° 19's equations (2) with the stick moments held constant, from rest upright
 /// ($\theta = p = n = 0$) with s held constant (as the memoir does), by RK4 with `steps` steps
 /// up to `time`: `linearised` uses the generated linearised equations (`stick_dp`,
-/// `stick_dn`), otherwise the full ones (`stick_full_dp`, `stick_full_dn`). Returns
-/// $(\theta, n)$ at `time`.
+/// `stick_dn`), otherwise the full ones (`stick_full_dp`, `stick_full_dn`); `moments` are
+/// $(M, M_1)$. Returns $(\theta, n)$ at `time`.
 pub fn stick_linearised_rk4(
     r: f64,
     g: f64,
     s: f64,
-    m: f64,
-    m1: f64,
+    moments: (f64, f64),
     time: f64,
     steps: usize,
     linearised: bool,
 ) -> (f64, f64) {
     let (dp, dn) =
         if linearised { ("stick_dp", "stick_dn") } else { ("stick_full_dp", "stick_full_dn") };
+    let (m, m1) = moments;
     let rhs = |x: [f64; 3]| {
         let v = eval(&[
             ("R", r),
@@ -562,7 +562,7 @@ mod tests {
         let (r, g) = (0.5_f64, 9.81_f64);
         let s = 2.0 * (g / r).sqrt();
         let (th, n) = stick_theta_n(r, g, s, -1.0, 2.0, 0.7);
-        let (th_rk, n_rk) = stick_linearised_rk4(r, g, s, -1.0, 2.0, 0.7, 1000, true);
+        let (th_rk, n_rk) = stick_linearised_rk4(r, g, s, (-1.0, 2.0), 0.7, 1000, true);
         // RK4 with h dt ~ 0.01: global error ~1e-8 relative; 1e-6 relative stated.
         assert!((th - th_rk).abs() < 1e-6 * th.abs().max(1e-3));
         assert!((n - n_rk).abs() < 1e-6 * n.abs().max(1e-3));

@@ -374,8 +374,10 @@ fn e_roots(theta: f64, s: f64) -> Option<(f64, f64)> {
 fn marche_entries() -> Vec<Entry> {
     let theta_i = (2.0f64 / 3.0).asin().to_degrees();
     // (region, printed ordering, θ range in degrees, s^2 from (ℰ)'s and (N)'s s^2 at a fraction)
+    type Region = (&'static str, &'static str, (f64, f64), Place, Test, &'static str);
     type Place = fn(f64, f64, f64) -> f64;
-    let regions: [(&str, &str, (f64, f64), Place, fn(f64, f64, f64) -> bool, &str); 3] = [
+    type Test = fn(f64, f64, f64) -> bool;
+    let regions: [Region; 3] = [
         (
             "above (N)",
             "-n2 < s < -n1",
@@ -507,8 +509,8 @@ fn stick_entries() -> Vec<Entry> {
         ("front push (M < 0, M1 > 0)", -1.0, 4.0, 1.0),
     ] {
         let (th_cf, n_cf) = hd::stick_theta_n(r, g, s, m, m1, 3.0 * time);
-        let (th_lin, n_lin) = hd::stick_linearised_rk4(r, g, s, m, m1, 3.0 * time, 400, true);
-        let (th_full, n_full) = hd::stick_linearised_rk4(r, g, s, m, m1, 3.0 * time, 400, false);
+        let (th_lin, n_lin) = hd::stick_linearised_rk4(r, g, s, (m, m1), 3.0 * time, 400, true);
+        let (th_full, n_full) = hd::stick_linearised_rk4(r, g, s, (m, m1), 3.0 * time, 400, false);
         let cf_vs_rk4 = rel_diff(th_cf, th_lin).max(rel_diff(n_cf, n_lin));
         let ok = th_cf.signum() == theta_sign
             && th_full.signum() == theta_sign
