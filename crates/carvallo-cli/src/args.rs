@@ -11,6 +11,16 @@ pub fn number(name: &str, v: &str) -> Result<f64, String> {
     Ok(x)
 }
 
+/// The lean angle `v` in degrees for the quantity `name`: a finite number strictly between
+/// -90 and 90.
+pub fn lean_deg(name: &str, v: &str) -> Result<f64, String> {
+    let x = number(name, v)?;
+    if x.abs() >= 90.0 {
+        return Err(format!("invalid {name} `{x}`: must lie strictly between -90 and 90 degrees"));
+    }
+    Ok(x)
+}
+
 /// Splits `words` (what follows the subcommand) into `(option, value)` pairs in order. An option
 /// listed in `valued` takes the next word as its value; one in `flags` takes none (its value is
 /// empty). Anything else, an option given twice or a valued option at the end is an error that

@@ -17,7 +17,7 @@
 use carvallo::bicycle_kinematics::Kinematics;
 use serde_json::json;
 
-use crate::args::{number, options};
+use crate::args::{lean_deg, number, options};
 
 const HELP: &str = "\
 Usage:
@@ -44,18 +44,13 @@ fn parse(args: &[String]) -> Result<Command, String> {
     let words = args.get(1..).unwrap_or_default();
     for (a, v) in options(words, &["--theta", "--gamma"], &["--json"])? {
         match a {
-            "--theta" => theta = Some(number("theta", v)?),
+            "--theta" => theta = Some(lean_deg("theta", v)?),
             "--gamma" => gamma = Some(number("gamma", v)?),
             _ => json = true,
         }
     }
     let theta_deg: f64 = theta.ok_or("missing `--theta DEG`")?;
     let gamma_deg: f64 = gamma.ok_or("missing `--gamma DEG`")?;
-    if theta_deg.abs() >= 90.0 {
-        return Err(format!(
-            "invalid theta `{theta_deg}`: must lie strictly between -90 and 90 degrees"
-        ));
-    }
     Ok(Command { theta_deg, gamma_deg, json })
 }
 

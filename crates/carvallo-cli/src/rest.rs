@@ -12,7 +12,7 @@
 use carvallo::bicycle_rest::RestBicycle;
 use serde_json::json;
 
-use crate::args::{number, options};
+use crate::args::{lean_deg, number, options};
 
 const HELP: &str = "\
 Usage:
@@ -33,17 +33,12 @@ fn parse(args: &[String]) -> Result<Command, String> {
     let words = args.get(1..).unwrap_or_default();
     for (a, v) in options(words, &["--theta", "--wheel-mass"], &["--json"])? {
         match a {
-            "--theta" => theta = Some(number("theta", v)?),
+            "--theta" => theta = Some(lean_deg("theta", v)?),
             "--wheel-mass" => mass = Some(number("wheel mass", v)?),
             _ => json = true,
         }
     }
     let theta_deg: f64 = theta.ok_or("missing `--theta DEG`")?;
-    if theta_deg.abs() >= 90.0 {
-        return Err(format!(
-            "invalid theta `{theta_deg}`: must lie strictly between -90 and 90 degrees"
-        ));
-    }
     let wheel_mass = mass.unwrap_or(5.0);
     if wheel_mass < 0.0 {
         return Err(format!("invalid wheel mass `{wheel_mass}`: must not be negative"));
