@@ -6,7 +6,6 @@
 mod common;
 
 use carvallo_codegen::bicycle_geometry;
-use carvallo_codegen::emit::emit_program;
 
 // The unlicensed symbolica runs in one thread only: this file has a single `#[test]`.
 
@@ -22,13 +21,8 @@ fn bicycle_geometry_derivation() {
     common::assert_checks(&d.checks, &EXPECTED_FALSE);
     // The emitted program at the memoir's old bicycle (n° 52) in the normal position: both
     // residuals vanish at sigma = sigma0, mu = sigma0, and the first-order sigma1 is 0.
-    let program = emit_program(&d).expect("the derivation emits");
-    let names: Vec<&str> = program.outputs.iter().map(|o| o.name.as_str()).collect();
     let s0 = 25f64.to_radians();
-    let values = program
-        .eval_f64(&[0.38, 1.10, 0.08, s0], &[0.0, 0.0, s0, s0])
-        .expect("the program evaluates");
-    let at = |name: &str| values[names.iter().position(|n| *n == name).expect("an output")];
+    let at = common::outputs_at(&d, &[0.38, 1.10, 0.08, s0], &[0.0, 0.0, s0, s0]);
     for name in
         ["contact_height", "lowest_point", "sigma1_first", "memoir_sigma1_first", "contact_y"]
     {

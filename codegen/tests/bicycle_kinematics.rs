@@ -6,7 +6,6 @@
 mod common;
 
 use carvallo_codegen::bicycle_kinematics;
-use carvallo_codegen::emit::emit_program;
 
 // The unlicensed symbolica runs in one thread only: this file has a single `#[test]`.
 
@@ -29,13 +28,8 @@ fn bicycle_kinematics_derivation() {
     // The old bicycle of n° 52 upright and straight (theta = gamma = 0, sigma = mu = sigma0):
     // M is at x = l, y = 0, alpha = beta = 0, so (I) gives no pitching or turning, the steady
     // turning rate is 0 and the front wheel rolls as the rear one (sigma1' = s).
-    let program = emit_program(&d).expect("the derivation emits");
-    let names: Vec<&str> = program.outputs.iter().map(|o| o.name.as_str()).collect();
     let s0 = 25f64.to_radians();
-    let values = program
-        .eval_f64(&[0.38, 1.10, 0.08, s0], &[0.0, 0.0, s0, s0])
-        .expect("the program evaluates");
-    let at = |name: &str| values[names.iter().position(|n| *n == name).expect("an output")];
+    let at = common::outputs_at(&d, &[0.38, 1.10, 0.08, s0], &[0.0, 0.0, s0, s0]);
     for name in ["d_eta_d_theta", "d_eta_d_gamma", "d_nu_d_theta", "steady_n", "eta_second"] {
         assert!(at(name).abs() < 1e-15, "{name} = {} upright", at(name));
     }

@@ -18,3 +18,19 @@ pub fn assert_checks(checks: &[Check], expected_false: &[&str]) {
         assert!(checks.iter().any(|c| c.id == *id), "missing check {id}");
     }
 }
+
+/// The emitted program of `d` evaluated in f64 at `params` and `inputs`: each output's value by
+/// name (a panic names an unknown output).
+#[allow(dead_code)] // not every derivation test evaluates its program
+pub fn outputs_at(
+    d: &carvallo_codegen::Derivation,
+    params: &[f64],
+    inputs: &[f64],
+) -> impl Fn(&str) -> f64 {
+    let program = carvallo_codegen::emit::emit_program(d).expect("the derivation emits");
+    let values = program.eval_f64(params, inputs).expect("the program evaluates");
+    let names: Vec<String> = program.outputs.iter().map(|o| o.name.clone()).collect();
+    move |name| {
+        values[names.iter().position(|n| n == name).unwrap_or_else(|| panic!("no output {name}"))]
+    }
+}
