@@ -2,7 +2,8 @@
 //! computer-algebra crate, and the emission of its results into `generated/`.
 //!
 //! This is the only library of the workspace that depends on symbolica. A derivation module
-//! (one per memoir object: [`hoop`], later the unicycle and the bicycle) returns a
+//! (one per memoir object under [`derive`]: the hoop, the unicycle, the Carvallo–Whipple
+//! bicycle and Carvallo's bicycle) returns a
 //! [`Derivation`]: the closed-form formulas the runtime needs, as symbolica expressions whose
 //! symbols are the model's parameter and input names, plus the symbolic [`Check`]s that were run
 //! on the way (for example "the modified Lagrange equations agree with the moments of the
@@ -47,8 +48,8 @@ pub struct Check {
 pub struct Derivation {
     /// Model name: the IR `model` line and the file stem under `generated/`.
     pub model: String,
-    /// The source file that derives it, for the generated headers (for example
-    /// `codegen/src/hoop.rs`).
+    /// The source file that derives it, for the generated headers (`file!()` of the
+    /// derivation, for example `codegen/src/derive/hoop/mod.rs`).
     pub source: String,
     /// Parameter names (fixable by a scene), in order.
     pub params: Vec<String>,
@@ -60,16 +61,9 @@ pub struct Derivation {
     pub checks: Vec<Check>,
 }
 
-pub mod bicycle_geometry;
-pub mod bicycle_kinematics;
-pub mod bicycle_steady;
-pub mod bicycle_straight;
+pub mod cas;
+pub mod derive;
 pub mod emit;
-pub mod frame;
-pub mod hoop;
-#[path = "hoop/discussion.rs"]
-pub mod hoop_discussion;
+pub mod mechanics;
+pub mod memoir;
 pub mod regen;
-pub mod unicycle;
-pub mod whipple;
-pub mod whipple_nonlinear;

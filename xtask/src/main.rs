@@ -2,8 +2,9 @@
 //!
 //! Subcommands (one module each):
 //!
-//! * `regen [--check]`: re-run every symbolic derivation and rewrite `generated/` atomically, or,
-//!   with `--check`, fail without writing anything when `generated/` is out of date.
+//! * `regen [--check] [MODEL...]`: re-run the symbolic derivations (all, or the named models
+//!   only) and rewrite `generated/` atomically, or, with `--check`, fail without writing
+//!   anything when `generated/` is out of date.
 
 mod regen;
 
@@ -12,11 +13,21 @@ use std::process::ExitCode;
 
 use anyhow::{bail, Result};
 
-const USAGE: &str = "usage: cargo xtask regen [--check]
+/// The usage text; the model list comes from the derivation table.
+fn usage() -> String {
+    let models: Vec<&str> = carvallo_codegen::derive::DERIVATIONS.iter().map(|(n, _)| *n).collect();
+    format!(
+        "usage: cargo xtask regen [--check] [MODEL...]
 
 subcommands:
-  regen            re-derive every model and rewrite generated/ atomically
-  regen --check    re-derive every model and fail if generated/ is out of date";
+  regen                     re-derive every model and rewrite generated/ atomically
+  regen MODEL...            re-derive the named models only (the others' files are kept)
+  regen --check [MODEL...]  re-derive and fail if generated/ is out of date
+
+models: {}",
+        models.join(", ")
+    )
+}
 
 fn main() -> ExitCode {
     // symbolica colours printed expressions when standard output is a terminal (it caches that
@@ -36,15 +47,15 @@ fn main() -> ExitCode {
 
 fn run(args: Vec<String>) -> Result<()> {
     let Some((command, rest)) = args.split_first() else {
-        bail!("missing subcommand\n{USAGE}");
+        bail!("missing subcommand\n{}", usage());
     };
     match command.as_str() {
         "regen" => regen::run(&workspace_root(), rest),
         "-h" | "--help" | "help" => {
-            println!("{USAGE}");
+            println!("{}", usage());
             Ok(())
         }
-        other => bail!("unknown subcommand {other:?}\n{USAGE}"),
+        other => bail!("unknown subcommand {other:?}\n{}", usage()),
     }
 }
 

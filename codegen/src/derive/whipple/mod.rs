@@ -1,0 +1,325 @@
+//! The Carvallo–Whipple bicycle (rear wheel R, rear frame with rider B, front frame H, front
+//! wheel F; knife-edge wheels rolling without slipping on flat ground), linearised exactly about
+//! upright straight running at speed $v$, with the 25 parameters of the 2007 benchmark
+//! (Meijaard, Papadopoulos, Ruina, Schwab, Proc. R. Soc. A 463, Table 1) kept as symbols.
+//!
+//! [`linear`] derives $M$, $C_1$, $K_0$, $K_2$ of
+//! $M\ddot q + v C_1 \dot q + (g K_0 + v^2 K_2) q = f$, $q = (\varphi, \delta)$ (lean, steer):
+//! $K_0$ from the potential energy at second order with the frame pitch eliminated by the
+//! holonomic front contact constraint, $M$, $C_1$, $K_2$ by Kane's method at first order with the
+//! yaw rate and the front wheel's spin from the non-holonomic rolling constraints. Nothing is
+//! transcribed from the paper: its published numbers are the test oracle
+//! (`tests/tests/whipple_benchmark.rs`, `codegen/tests/derive/whipple_linear.rs`).
+//!
+//! Outputs: the sixteen matrix entries `m11` … `k2_22` (parameters only) and the coefficients
+//! `a0` … `a4` of the characteristic polynomial
+//! $\det(M s^2 + v C_1 s + g K_0 + v^2 K_2) = a_4 s^4 + a_3 s^3 + a_2 s^2 + a_1 s + a_0$, written
+//! as polynomials in the input $v$ whose coefficients are products of the matrix entries (so
+//! that the emission's common-subexpression sharing reuses the entries). No matrix is inverted.
+//!
+//! [`carvallo`] derives the inertial part of the same equations a second way, by Carvallo's
+//! modified Lagrange equations (memoir n° 72) with the kinematics at second order, and the two
+//! are checked to agree exactly (at a fixed rational parameter point, in exact arithmetic). A
+//! finding recorded on the way: the plain Lagrange equation (no correction) is already right for
+//! the lean at the linear level, but not for the steer. The nonlinear equations are not derived
+//! yet.
+
+pub mod carvallo;
+pub mod linear;
+pub mod nonlinear;
+
+use anyhow::{ensure, Result};
+use symbolica::atom::{Atom, AtomCore};
+
+use crate::cas::{cos_t, is_zero, simplify, sin_t, var};
+use crate::cas::subst;
+use crate::{Check, Derivation, Formula};
+
+/// Parameter names, in order: the benchmark's Table 1 (with `lambda` the steer axis tilt).
+pub const PARAMS: [&str; 26] = [
+    "w", "c", "lambda", "g", "rR", "mR", "IRxx", "IRyy", "xB", "zB", "mB", "IBxx", "IByy", "IBzz",
+    "IBxz", "xH", "zH", "mH", "IHxx", "IHyy", "IHzz", "IHxz", "rF", "mF", "IFxx", "IFyy",
+];
+/// Input names, in order: the forward speed.
+pub const INPUTS: [&str; 1] = ["v"];
+
+/// Brings an expression in the stand-ins $\sin\lambda$, $\cos\lambda$ to the reduced normal form
+/// (one fraction, numerator reduced with $\sin^2\lambda + \cos^2\lambda = 1$).
+pub fn reduce(e: &Atom) -> Atom {
+    let a = subst(e, linear::SIN_LAMBDA, &sin_t());
+    let a = subst(&a, linear::COS_LAMBDA, &cos_t());
+    let a = simplify(&a);
+    let a = subst(&a, "sin_theta", &var(linear::SIN_LAMBDA));
+    subst(&a, "cos_theta", &var(linear::COS_LAMBDA))
+}
+
+/// Exact test that an expression in the stand-ins vanishes.
+pub fn vanishes(e: &Atom) -> bool {
+    let a = subst(e, linear::SIN_LAMBDA, &sin_t());
+    is_zero(&subst(&a, linear::COS_LAMBDA, &cos_t()))
+}
+
+/// Replaces the stand-ins by `sin(lambda)`, `cos(lambda)`.
+pub fn to_lambda(e: &Atom) -> Atom {
+    let a = subst(e, linear::SIN_LAMBDA, &var("sin(lambda)"));
+    subst(&a, linear::COS_LAMBDA, &var("cos(lambda)"))
+}
+
+/// The derived matrices, reduced, in the stand-ins.
+pub struct Matrices {
+    /// Mass matrix.
+    pub m: [[Atom; 2]; 2],
+    /// Velocity-proportional matrix.
+    pub c1: [[Atom; 2]; 2],
+    /// Gravity stiffness.
+    pub k0: [[Atom; 2]; 2],
+    /// Velocity-squared stiffness.
+    pub k2: [[Atom; 2]; 2],
+}
+
+fn check(id: &str, statement: &str, holds: bool, detail: String) -> Check {
+    Check {
+        section: "linear".to_string(),
+        id: id.to_string(),
+        statement: statement.to_string(),
+        holds,
+        detail,
+    }
+}
+
+/// Derives the matrices and the checks made on the way.
+pub fn matrices(checks: &mut Vec<Check>) -> Matrices {
+    let st = linear::statics();
+    checks.push(check(
+        "pitch_second_order",
+        "the front contact's height has no first-order term in lean and steer, so the frame pitch is of second order",
+        vanishes(&st.constraint_first_order),
+        format!("first-order term: {}", st.constraint_first_order),
+    ));
+    checks.push(check(
+        "upright_equilibrium",
+        "the potential energy has no first-order term in lean and steer (upright is an equilibrium)",
+        vanishes(&st.potential_first_order),
+        format!("first-order term: {}", st.potential_first_order),
+    ));
+    let dy = linear::dynamics();
+    let all0 = |v: &[Atom; 3]| v.iter().all(vanishes);
+    checks.push(check(
+        "rear_rolling",
+        "P' = v(cos psi, sin psi, 0) with rear wheel spin -v/rR makes the rear wheel's contact point velocity vanish to first order",
+        all0(&dy.rear_slip),
+        format!("{:?}", dy.rear_slip.iter().map(|x| x.expand().to_string()).collect::<Vec<_>>()),
+    ));
+    checks.push(check(
+        "front_rolling",
+        "with the solved yaw rate and front spin the front wheel's contact point velocity vanishes to first order (all three components)",
+        all0(&dy.front_slip),
+        format!("{:?}", dy.front_slip.iter().map(|x| x.expand().to_string()).collect::<Vec<_>>()),
+    ));
+    let yaw_expected =
+        (var("v") * var("delta") + var("c") * var("deltad")) * var(linear::COS_LAMBDA) / var("w");
+    checks.push(check(
+        "yaw_rate",
+        "the yaw rate from the front wheel's rolling is psi' = (v delta + c delta') cos(lambda) / w",
+        vanishes(&(&dy.yaw_rate - &yaw_expected)),
+        format!("derived: {}", reduce(&dy.yaw_rate)),
+    ));
+    checks.push(check(
+        "front_spin",
+        "the front wheel's spin rate has no first-order perturbation",
+        vanishes(&dy.front_spin),
+        format!("derived: {}", dy.front_spin),
+    ));
+    // Carvallo's route at a fixed rational parameter point (exact rational arithmetic; the
+    // second-order kinematics with all 25 parameters symbolic is too slow for regeneration).
+    let point = |name: &str| -> Atom { carvallo_point(name).unwrap_or_else(|| var(name)) };
+    let at_point = |e: &Atom| {
+        let mut a = e.clone();
+        for name in PARAMS.iter().chain(&[linear::SIN_LAMBDA, linear::COS_LAMBDA]) {
+            if let Some(x) = carvallo_point(name) {
+                a = subst(&a, name, &x);
+            }
+        }
+        a.expand()
+    };
+    let cf = carvallo::carvallo_form(&point, &at_point(&st.pitch2));
+    checks.push(check(
+        "rear_rolling_second_order",
+        "the rear wheel's contact point velocity also vanishes at second order (pitch, yaw and lean included)",
+        all0(&cf.rear_slip),
+        format!("{:?}", cf.rear_slip.iter().map(|x| x.expand().to_string()).collect::<Vec<_>>()),
+    ));
+    checks.push(check(
+        "front_rolling_second_order",
+        "with the yaw rate and front spin solved at second order the front wheel's contact point velocity vanishes at second order (its vertical component through the contact-constrained pitch)",
+        all0(&cf.front_slip),
+        format!("{:?}", cf.front_slip.iter().map(|x| x.expand().to_string()).collect::<Vec<_>>()),
+    ));
+    for r in 0..2 {
+        let diff = (&cf.equations[r] - at_point(&dy.inertia_forces[r])).expand();
+        checks.push(check(
+            &format!("carvallo_lagrange_{}", linear::Q[r]),
+            &format!("Carvallo's modified Lagrange equation of {} (d/dt dT*/dq' - sum m M'.(dM/dq)', T* to second order with the constraints substituted) equals Kane's generalised inertia force at first order, identically in the state, rates, accelerations and v, at the rational parameter point of carvallo_point (exact arithmetic)", linear::Q[r]),
+            vanishes(&diff),
+            format!("difference: {}", reduce(&diff)),
+        ));
+    }
+    for r in 0..2 {
+        let diff = (&cf.plain[r] - at_point(&dy.inertia_forces[r])).expand();
+        checks.push(check(
+            &format!("plain_lagrange_{}", linear::Q[r]),
+            &format!("the plain Lagrange expression d/dt dT*/dq' - dT*/dq of {} (no correction for the constraints) equals Kane's generalised inertia force at the rational point (informative: not required to hold)", linear::Q[r]),
+            vanishes(&diff),
+            format!("plain minus Kane: {diff}"),
+        ));
+    }
+    let red = |m: &[[Atom; 2]; 2]| {
+        [[reduce(&m[0][0]), reduce(&m[0][1])], [reduce(&m[1][0]), reduce(&m[1][1])]]
+    };
+    let mats = Matrices { m: red(&dy.m), c1: red(&dy.c1), k0: red(&st.k0), k2: red(&dy.k2) };
+    for r in 0..2 {
+        let rebuilt = linear::apply(&mats.m, &linear::QDD, r)
+            + var("v") * linear::apply(&mats.c1, &linear::QD, r)
+            + var("v").pow(Atom::num(2)) * linear::apply(&mats.k2, &linear::Q, r);
+        let diff = &dy.inertia_forces[r] - &rebuilt;
+        checks.push(check(
+            &format!("structure_{}", linear::Q[r]),
+            &format!("the generalised inertia force of {} is exactly M q'' + v C1 q' + v^2 K2 q (no other powers of v, no v-independent stiffness)", linear::Q[r]),
+            vanishes(&diff),
+            format!("residual: {}", reduce(&diff)),
+        ));
+    }
+    checks.push(check(
+        "mass_symmetric",
+        "M is symmetric",
+        vanishes(&(&mats.m[0][1] - &mats.m[1][0])),
+        format!("m12 = {}; m21 = {}", mats.m[0][1], mats.m[1][0]),
+    ));
+    checks.push(check(
+        "k0_symmetric",
+        "K0 is symmetric (a Hessian)",
+        vanishes(&(&mats.k0[0][1] - &mats.k0[1][0])),
+        format!("k0_12 = {}; k0_21 = {}", mats.k0[0][1], mats.k0[1][0]),
+    ));
+    checks.push(check(
+        "pitch_expression",
+        "the pitch at second order solved from the contact constraint (informative)",
+        true,
+        format!("theta_B / eps^2 = {}", reduce(&st.pitch2)),
+    ));
+    mats
+}
+
+/// The fixed rational parameter point of the Carvallo-route check: generic values near a
+/// bicycle's, with $\sin\lambda = 3/5$, $\cos\lambda = 4/5$ (an exact Pythagorean pair).
+pub fn carvallo_point(name: &str) -> Option<Atom> {
+    let (n, d) = match name {
+        "w" => (11, 10),
+        "c" => (1, 13),
+        "rR" => (3, 10),
+        "mR" => (2, 1),
+        "IRxx" => (7, 100),
+        "IRyy" => (13, 100),
+        "xB" => (2, 7),
+        "zB" => (-9, 10),
+        "mB" => (83, 1),
+        "IBxx" => (91, 10),
+        "IByy" => (109, 10),
+        "IBzz" => (29, 10),
+        "IBxz" => (23, 10),
+        "xH" => (8, 9),
+        "zH" => (-5, 7),
+        "mH" => (9, 2),
+        "IHxx" => (6, 100),
+        "IHyy" => (7, 100),
+        "IHzz" => (1, 100),
+        "IHxz" => (-3, 400),
+        "rF" => (7, 20),
+        "mF" => (3, 1),
+        "IFxx" => (15, 100),
+        "IFyy" => (29, 100),
+        linear::SIN_LAMBDA => (3, 5),
+        linear::COS_LAMBDA => (4, 5),
+        _ => return None,
+    };
+    Some(Atom::num(n) / Atom::num(d))
+}
+
+fn mix(a: &[[Atom; 2]; 2], b: &[[Atom; 2]; 2]) -> Atom {
+    &a[0][0] * &b[1][1] + &b[0][0] * &a[1][1] - &a[0][1] * &b[1][0] - &b[0][1] * &a[1][0]
+}
+
+fn det(a: &[[Atom; 2]; 2]) -> Atom {
+    &a[0][0] * &a[1][1] - &a[0][1] * &a[1][0]
+}
+
+/// The characteristic polynomial's coefficients $a_0, \dots, a_4$ as polynomials in $v$:
+/// with $A = M$, $B = vC_1$, $C = gK_0 + v^2K_2$ and
+/// $m(X, Y) = X_{11}Y_{22} + Y_{11}X_{22} - X_{12}Y_{21} - Y_{12}X_{21}$,
+/// $\det(As^2 + Bs + C) = s^4\det A + s^3 m(A,B) + s^2(m(A,C) + \det B) + s\,m(B,C) + \det C$.
+pub fn char_poly(m: &Matrices) -> [Atom; 5] {
+    let (v, g) = (var("v"), var("g"));
+    let v2 = v.pow(Atom::num(2));
+    [
+        g.pow(Atom::num(2)) * det(&m.k0)
+            + &g * &v2 * mix(&m.k0, &m.k2)
+            + v.pow(Atom::num(4)) * det(&m.k2),
+        &v * &g * mix(&m.c1, &m.k0) + v.pow(Atom::num(3)) * mix(&m.c1, &m.k2),
+        &g * mix(&m.m, &m.k0) + &v2 * (mix(&m.m, &m.k2) + det(&m.c1)),
+        &v * mix(&m.m, &m.c1),
+        det(&m.m),
+    ]
+}
+
+/// Derives the model's formulas and checks.
+#[allow(clippy::needless_range_loop)]
+pub fn derive() -> Result<Derivation> {
+    let mut checks = Vec::new();
+    let mats = matrices(&mut checks);
+    let mut formulas = Vec::new();
+    let names = [
+        ("m", &mats.m, "mass matrix M (kg m^2)"),
+        ("c1_", &mats.c1, "velocity-proportional matrix C1 (kg m)"),
+        ("k0_", &mats.k0, "gravity stiffness K0 (kg m)"),
+        ("k2_", &mats.k2, "velocity-squared stiffness K2 (kg)"),
+    ];
+    for (prefix, mat, what) in names {
+        for r in 0..2 {
+            for c in 0..2 {
+                formulas.push(Formula {
+                    name: format!("{prefix}{}{}", r + 1, c + 1),
+                    section: "linear".to_string(),
+                    description: format!(
+                        "entry ({}, {}) of the {what}, rows (lean, steer) equations, columns (lean, steer)",
+                        r + 1,
+                        c + 1
+                    ),
+                    expr: to_lambda(&mat[r][c]),
+                });
+            }
+        }
+    }
+    for (k, a) in char_poly(&mats).iter().enumerate() {
+        formulas.push(Formula {
+            name: format!("a{k}"),
+            section: "linear".to_string(),
+            description: format!(
+                "coefficient of s^{k} in det(M s^2 + v C1 s + g K0 + v^2 K2), a polynomial in v"
+            ),
+            expr: to_lambda(a),
+        });
+    }
+    ensure!(
+        checks.iter().all(|c| c.holds || c.id.starts_with("plain_lagrange")),
+        "whipple checks failed: {:?}",
+        checks.iter().filter(|c| !c.holds).map(|c| &c.id).collect::<Vec<_>>()
+    );
+    Ok(Derivation {
+        model: "whipple".to_string(),
+        source: file!().to_string(),
+        params: PARAMS.iter().map(|s| s.to_string()).collect(),
+        inputs: INPUTS.iter().map(|s| s.to_string()).collect(),
+        formulas,
+        checks,
+    })
+}

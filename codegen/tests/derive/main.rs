@@ -1,0 +1,88 @@
+//! Every test of the derivation side in one binary: the symbolic derivations (one module per
+//! model), the emission into IR, the regeneration of `generated/` (atomic writes, selection of
+//! models) and the staleness of `generated/`.
+//!
+//! Without a license key symbolica allows one thread per process, and a second thread that
+//! touches it aborts the process even after the first is done. So every test runs its body on
+//! one shared worker thread ([`on_symbolica_thread`]), the only thread of this binary that ever
+//! uses symbolica, and each model is derived once per run ([`derived`]) however many tests look
+//! at it: the staleness test renders the same derivations the model tests check.
+
+mod bicycle_geometry;
+mod bicycle_kinematics;
+mod bicycle_steady;
+mod bicycle_straight;
+mod common;
+mod emit;
+mod hoop_checks;
+mod hoop_discussion;
+mod hoop_formulas;
+mod hoop_frame;
+mod hoop_numeric;
+mod regen_atomic;
+mod regen_fresh;
+mod unicycle;
+mod whipple_linear;
+mod whipple_nonlinear;
+
+use std::cell::RefCell;
+use std::collections::BTreeMap;
+use std::panic::{catch_unwind, resume_unwind, AssertUnwindSafe};
+use std::sync::mpsc;
+use std::sync::{Mutex, OnceLock};
+
+use carvallo_codegen::derive::DERIVATIONS;
+use carvallo_codegen::Derivation;
+
+type Job = Box<dyn FnOnce() + Send>;
+
+/// Runs `body` on the single worker thread that owns all symbolica use of this test binary,
+/// and re-raises its panic (a failed assertion) in the calling test.
+pub fn on_symbolica_thread(body: fn()) {
+    static WORKER: OnceLock<Mutex<mpsc::Sender<Job>>> = OnceLock::new();
+    let worker = WORKER.get_or_init(|| {
+        let (tx, rx) = mpsc::channel::<Job>();
+        std::thread::spawn(move || {
+            for job in rx {
+                job();
+            }
+        });
+        Mutex::new(tx)
+    });
+    let (done_tx, done_rx) = mpsc::channel();
+    let job: Job = Box::new(move || {
+        let _ = done_tx.send(catch_unwind(AssertUnwindSafe(body)));
+    });
+    worker
+        .lock()
+        .unwrap_or_else(|poisoned| poisoned.into_inner())
+        .send(job)
+        .expect("the symbolica worker thread is running");
+    if let Err(payload) = done_rx.recv().expect("the symbolica worker thread answers") {
+        resume_unwind(payload);
+    }
+}
+
+/// The derivation of `model` (a name of `regen::DERIVATIONS`), derived at its first use in this
+/// run and kept for the others. Call it on the symbolica thread only (the cache is that
+/// thread's): a panic names a failed derivation or an unknown model.
+pub fn derived(model: &str) -> &'static Derivation {
+    thread_local! {
+        static CACHE: RefCell<BTreeMap<String, &'static Derivation>> =
+            const { RefCell::new(BTreeMap::new()) };
+    }
+    if let Some(d) = CACHE.with(|c| c.borrow().get(model).copied()) {
+        return d;
+    }
+    let derive = DERIVATIONS
+        .iter()
+        .find(|(name, _)| *name == model)
+        .unwrap_or_else(|| panic!("no derivation named {model}"))
+        .1;
+    let start = std::time::Instant::now();
+    let d = derive().unwrap_or_else(|e| panic!("the {model} derivation fails: {e:#}"));
+    eprintln!("derived {model} in {:.1} s", start.elapsed().as_secs_f64());
+    let d: &'static Derivation = Box::leak(Box::new(d));
+    CACHE.with(|c| c.borrow_mut().insert(model.to_string(), d));
+    d
+}

@@ -1,0 +1,111 @@
+//! The derived linearisation of the Carvallo–Whipple bicycle against the published benchmark
+//! (Meijaard et al. 2007, read from `../shared/anchors/whipple-benchmark.toml`): every symbolic
+//! check of the derivation holds, and the emitted IR evaluated at the benchmark parameters
+//! reproduces the published M, C1, K0, K2 (relative 1e-13; exact zeros absolute 1e-13) and the
+//! characteristic polynomial equals det(M s^2 + v C1 s + g K0 + v^2 K2) computed from the
+//! emitted matrices (relative 1e-12 at fixed (s, v) points).
+
+#![allow(clippy::needless_range_loop)]
+
+use std::path::PathBuf;
+
+use carvallo_codegen::emit::emit_program;
+use carvallo_codegen::derive::whipple;
+
+const REL_TOL: f64 = 1e-13;
+const ABS_TOL: f64 = 1e-13;
+
+fn anchors() -> String {
+    let path = PathBuf::from(env!("CARGO_MANIFEST_DIR"))
+        .join("../../shared/anchors/whipple-benchmark.toml");
+    std::fs::read_to_string(&path)
+        .unwrap_or_else(|e| panic!("anchors file {} unreadable: {e}", path.display()))
+}
+
+/// The value of `key = number` (or `"pi/N"`) in the anchors text, first occurrence.
+fn scalar(text: &str, key: &str) -> f64 {
+    for line in text.lines() {
+        let line = line.split('#').next().unwrap_or("");
+        if let Some((k, v)) = line.split_once('=') {
+            if k.trim() == key {
+                let v = v.trim().trim_matches('"');
+                if let Some(d) = v.strip_prefix("pi/") {
+                    return std::f64::consts::PI / d.parse::<f64>().expect("pi divisor");
+                }
+                return v.parse().unwrap_or_else(|e| panic!("{key} = {v}: {e}"));
+            }
+        }
+    }
+    panic!("key {key} missing from the anchors file")
+}
+
+/// The 2 × 2 matrix `key = [[a, b], [c, d]]` of the anchors text.
+fn matrix(text: &str, key: &str) -> [[f64; 2]; 2] {
+    let line = text
+        .lines()
+        .find(|l| l.split_once('=').is_some_and(|(k, _)| k.trim() == key))
+        .unwrap_or_else(|| panic!("matrix {key} missing"));
+    let nums: Vec<f64> = line
+        .split_once('=')
+        .expect("=")
+        .1
+        .replace(['[', ']'], " ")
+        .split(',')
+        .map(|x| x.trim().parse().expect("number"))
+        .collect();
+    assert_eq!(nums.len(), 4, "matrix {key}");
+    [[nums[0], nums[1]], [nums[2], nums[3]]]
+}
+
+fn whipple_linearisation_body() {
+    let d = crate::derived("whipple");
+    for c in &d.checks {
+        if c.id.starts_with("plain_lagrange") {
+            eprintln!("{}: holds = {}; {}", c.id, c.holds, c.detail);
+            continue;
+        }
+        assert!(c.holds, "check {} fails: {}", c.id, c.detail);
+    }
+    let prog = emit_program(&d).expect("emission");
+    let text = anchors();
+    let params: Vec<f64> = whipple::PARAMS.iter().map(|k| scalar(&text, k)).collect();
+    let names: Vec<&str> = prog.outputs.iter().map(|o| o.name.as_str()).collect();
+    let out = prog.eval_f64(&params, &[0.0]).expect("eval");
+    let get = |n: &str| out[names.iter().position(|x| *x == n).expect("output")];
+    for (key, prefix) in [("M", "m"), ("C1", "c1_"), ("K0", "k0_"), ("K2", "k2_")] {
+        let want = matrix(&text, key);
+        for r in 0..2 {
+            for c in 0..2 {
+                let got = get(&format!("{prefix}{}{}", r + 1, c + 1));
+                let w = want[r][c];
+                let err = (got - w).abs();
+                let ok = if w == 0.0 { err <= ABS_TOL } else { err <= REL_TOL * w.abs() };
+                assert!(ok, "{key}[{r}][{c}]: derived {got:e}, published {w:e}");
+            }
+        }
+    }
+    // Characteristic polynomial against the determinant of the emitted matrices.
+    let g = scalar(&text, "g");
+    for (s, v) in [(1.3, 0.0), (-0.7, 2.5), (3.1, 5.0), (0.25, 7.75)] {
+        let o = prog.eval_f64(&params, &[v]).expect("eval");
+        let at = |n: &str| o[names.iter().position(|x| *x == n).expect("output")];
+        let e = |r: usize, c: usize| {
+            let rc = format!("{}{}", r + 1, c + 1);
+            at(&format!("m{rc}")) * s * s
+                + v * at(&format!("c1_{rc}")) * s
+                + g * at(&format!("k0_{rc}"))
+                + v * v * at(&format!("k2_{rc}"))
+        };
+        let det = e(0, 0) * e(1, 1) - e(0, 1) * e(1, 0);
+        let poly: f64 = (0..5).map(|k| at(&format!("a{k}")) * s.powi(k)).sum();
+        let scale: f64 = (0..5).map(|k| (at(&format!("a{k}")) * s.powi(k)).abs()).sum();
+        assert!((poly - det).abs() <= 1e-12 * scale, "char poly at s={s}, v={v}: {poly} vs {det}");
+    }
+    let ops = prog.op_count();
+    eprintln!("whipple IR: {} ops", ops.total);
+}
+
+#[test]
+fn whipple_linearisation() {
+    crate::on_symbolica_thread(whipple_linearisation_body);
+}
