@@ -10,6 +10,7 @@ use std::io::Write;
 use std::process::ExitCode;
 
 mod args;
+mod bench;
 mod figures;
 mod kinematics;
 mod nonlinear;

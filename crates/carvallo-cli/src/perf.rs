@@ -137,7 +137,8 @@ fn run(cmd: Command) -> Result<String, String> {
             } else {
                 carvallo::bench::Config::full()
             };
-            let report = carvallo::bench::run(&cfg);
+            let mut report = carvallo::bench::run(&cfg);
+            crate::bench::extend(&cfg, &mut report);
             if json {
                 serde_json::to_string_pretty(&report).map_err(|e| e.to_string())
             } else {

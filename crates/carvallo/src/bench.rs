@@ -158,7 +158,7 @@ pub type Targets = Vec<Target>;
 /// Nanoseconds per call of `f`: the smallest of five means, each over calls lasting at least
 /// `min_time / 5` seconds (the minimum is the estimate least disturbed by other processes on a
 /// shared machine).
-fn time_ns<R>(min_time: f64, mut f: impl FnMut() -> R) -> f64 {
+pub fn time_ns<R>(min_time: f64, mut f: impl FnMut() -> R) -> f64 {
     let slice = min_time / 5.0;
     let mut n = 1u64;
     let mut best = f64::INFINITY;
