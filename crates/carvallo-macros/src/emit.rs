@@ -14,9 +14,12 @@
 //! arrays of live values passed in and returned, copied every crossing value two or three times
 //! and made the 2,498-op nonlinear bicycle 1.6 times slower than the same SSA compiled as C.)
 //!
-//! With `lanes: N` the same program is printed a second time over `[f64; N]` values
-//! (`eval_lanes`): every operation goes through a helper of the private module `lane` that
-//! applies the scalar operation to each lane, so lane `j` is bit for bit the scalar result.
+//! With `lanes: N` the same program is printed a second time inside a loop over `N` lanes
+//! (`eval_lanes`, structure of arrays): the loop has a constant trip count and independent
+//! iterations, so LLVM's loop vectorizer turns it into vector instructions (`mulpd`, `addpd`, ...;
+//! a call such as `sin` stays one scalar call per lane), while every lane performs exactly the
+//! scalar operations, so lane `j` is bit for bit the scalar result. (Writing each operation
+//! over `[f64; N]` arrays instead was scalarised again by LLVM and gained nothing.)
 
 use std::collections::{BTreeSet, HashSet};
 
@@ -46,7 +49,11 @@ const RESERVED: &[&str] = &[
     "eval_array",
     "eval_lanes",
     "LANES",
+    // Locals of the generated functions.
     "live",
+    "args",
+    "out",
+    "j",
 ];
 
 /// Lints that flat generated arithmetic trips for no fault of the user.
@@ -231,192 +238,6 @@ fn referenced(p: &Program, insts: &[usize], extra: impl Iterator<Item = Value>) 
         .collect()
 }
 
-/// How the values of an evaluator are represented.
-#[derive(Clone, Copy, PartialEq, Eq)]
-pub enum Flavor {
-    /// One `f64` per value: [`eval`].
-    Scalar,
-    /// `[f64; N]` per value, lane by lane the same operations: `eval_lanes`.
-    Lanes(usize),
-}
-
-impl Flavor {
-    /// The Rust type of one value.
-    fn ty(self) -> TokenStream {
-        match self {
-            Flavor::Scalar => quote!(f64),
-            Flavor::Lanes(n) => {
-                let n = Literal::usize_unsuffixed(n);
-                quote!([f64; #n])
-            }
-        }
-    }
-
-    /// The right-hand side of `let` for one operation.
-    fn expr(self, op: &Op, l: &Locals) -> TokenStream {
-        match self {
-            Flavor::Scalar => op_expr(op, l),
-            Flavor::Lanes(n) => lanes_expr(op, l, n),
-        }
-    }
-
-    /// The name of the `k`-th helper function.
-    fn part(self, k: usize) -> Ident {
-        match self {
-            Flavor::Scalar => format_ident!("part_{}", k),
-            Flavor::Lanes(_) => format_ident!("lanes_part_{}", k),
-        }
-    }
-
-    /// The struct of the values that cross helper functions.
-    fn live(self) -> Ident {
-        match self {
-            Flavor::Scalar => format_ident!("Live"),
-            Flavor::Lanes(_) => format_ident!("LiveLanes"),
-        }
-    }
-
-    /// A zero value.
-    fn zero(self) -> TokenStream {
-        match self {
-            Flavor::Scalar => quote!(0.0_f64),
-            Flavor::Lanes(n) => {
-                let n = Literal::usize_unsuffixed(n);
-                quote!([0.0_f64; #n])
-            }
-        }
-    }
-}
-
-/// The right-hand side of `let` for one operation on `[f64; n]` values: the scalar operation
-/// of every lane through the module's `lane` helpers (constants are splatted).
-fn lanes_expr(op: &Op, l: &Locals, n: usize) -> TokenStream {
-    let n = Literal::usize_unsuffixed(n);
-    match *op {
-        Op::Const(c) => {
-            let c = float(c);
-            quote!([#c; #n])
-        }
-        Op::Neg(a) => {
-            let a = l.get(a);
-            quote!(lane::neg(#a))
-        }
-        Op::Add(a, b) => {
-            let (a, b) = (l.get(a), l.get(b));
-            quote!(lane::add(#a, #b))
-        }
-        Op::Sub(a, b) => {
-            let (a, b) = (l.get(a), l.get(b));
-            quote!(lane::sub(#a, #b))
-        }
-        Op::Mul(a, b) => {
-            let (a, b) = (l.get(a), l.get(b));
-            quote!(lane::mul(#a, #b))
-        }
-        Op::Div(a, b) => {
-            let (a, b) = (l.get(a), l.get(b));
-            quote!(lane::div(#a, #b))
-        }
-        Op::Powi(a, k) => {
-            let (a, k) = (l.get(a), int(k));
-            quote!(lane::powi(#a, #k))
-        }
-        Op::Sqrt(a) => {
-            let a = l.get(a);
-            quote!(lane::sqrt(#a))
-        }
-        Op::Sin(a) => {
-            let a = l.get(a);
-            quote!(lane::sin(#a))
-        }
-        Op::Cos(a) => {
-            let a = l.get(a);
-            quote!(lane::cos(#a))
-        }
-        Op::Tan(a) => {
-            let a = l.get(a);
-            quote!(lane::tan(#a))
-        }
-        Op::Atan2(y, x) => {
-            let (y, x) = (l.get(y), l.get(x));
-            quote!(lane::atan2(#y, #x))
-        }
-    }
-}
-
-/// The module `lane` of a lanes scene: every IR operation on `[f64; n]`, lane by lane (a loop
-/// over the lanes with a constant trip count, which the compiler unrolls into vector
-/// instructions where the operation has one).
-fn lane_helpers(n: usize) -> TokenStream {
-    let ty = Flavor::Lanes(n).ty();
-    let unary = |name: &str, method: &str| {
-        let (name, method) = (format_ident!("{}", name), format_ident!("{}", method));
-        quote! {
-            #[inline(always)]
-            pub fn #name(a: #ty) -> #ty {
-                let mut r = a;
-                for x in &mut r {
-                    *x = x.#method();
-                }
-                r
-            }
-        }
-    };
-    let binary = |name: &str, op: TokenStream| {
-        let name = format_ident!("{}", name);
-        quote! {
-            #[inline(always)]
-            pub fn #name(a: #ty, b: #ty) -> #ty {
-                let mut r = a;
-                for (x, y) in r.iter_mut().zip(b) {
-                    *x = *x #op y;
-                }
-                r
-            }
-        }
-    };
-    let (sqrt, sin, cos, tan) =
-        (unary("sqrt", "sqrt"), unary("sin", "sin"), unary("cos", "cos"), unary("tan", "tan"));
-    let (add, sub, mul, div) = (
-        binary("add", quote!(+)),
-        binary("sub", quote!(-)),
-        binary("mul", quote!(*)),
-        binary("div", quote!(/)),
-    );
-    quote! {
-        /// The IR's operations on every lane of `[f64; LANES]` values: the scalar operation of
-        /// each lane, so that lane `k` of a result is bit for bit the scalar result.
-        mod lane {
-            #[inline(always)]
-            pub fn neg(a: #ty) -> #ty {
-                let mut r = a;
-                for x in &mut r {
-                    *x = -*x;
-                }
-                r
-            }
-            #add #sub #mul #div
-            #[inline(always)]
-            pub fn powi(a: #ty, n: i32) -> #ty {
-                let mut r = a;
-                for x in &mut r {
-                    *x = x.powi(n);
-                }
-                r
-            }
-            #sqrt #sin #cos #tan
-            #[inline(always)]
-            pub fn atan2(y: #ty, x: #ty) -> #ty {
-                let mut r = y;
-                for (a, b) in r.iter_mut().zip(x) {
-                    *a = a.atan2(b);
-                }
-                r
-            }
-        }
-    }
-}
-
 /// The body of an evaluator after the arguments are bound (the outputs are then bound to
 /// their locals), plus any helper functions and the struct of the values that cross them.
 ///
@@ -429,19 +250,18 @@ fn body(
     l: &Locals,
     max_fn_ops: usize,
     chunks: &[Vec<usize>],
-    flavor: Flavor,
 ) -> (TokenStream, TokenStream) {
     let out_values = || p.outputs.iter().map(|o| o.value);
     let const_lets = |used: &BTreeSet<usize>| {
         let lets = used.iter().filter(|&&i| is_const(p, i)).map(|&i| {
-            let (name, rhs) = (&l.insts[i], flavor.expr(&p.insts[i].op, l));
+            let (name, rhs) = (&l.insts[i], op_expr(&p.insts[i].op, l));
             quote!(let #name = #rhs;)
         });
         quote!(#(#lets)*)
     };
     let lets = |insts: &[usize]| {
         let lets = insts.iter().map(|&i| {
-            let (name, rhs) = (&l.insts[i], flavor.expr(&p.insts[i].op, l));
+            let (name, rhs) = (&l.insts[i], op_expr(&p.insts[i].op, l));
             quote!(let #name = #rhs;)
         });
         quote!(#(#lets)*)
@@ -474,22 +294,19 @@ fn body(
     let mut stored: BTreeSet<Value> = live_in.iter().flatten().copied().collect();
     stored
         .extend(out_values().filter(|v| matches!(*v, Value::Inst(j) if !is_const(p, j as usize))));
-    let live_ty = flavor.live();
-    let ty = flavor.ty();
     let fields: Vec<&Ident> = stored.iter().map(|&v| l.get(v)).collect();
-    let zero = flavor.zero();
     let inits = stored.iter().map(|&v| {
         let f = l.get(v);
         match v {
-            Value::Inst(_) => quote!(#f: #zero),
+            Value::Inst(_) => quote!(#f: 0.0_f64),
             _ => quote!(#f),
         }
     });
     let mut helpers = quote! {
         /// The values that cross the helper functions of one evaluation.
-        struct #live_ty { #(#fields: #ty,)* }
+        struct Live { #(#fields: f64,)* }
     };
-    let mut glue = quote!(let mut live = #live_ty { #(#inits),* };);
+    let mut glue = quote!(let mut live = Live { #(#inits),* };);
     for (k, c) in chunks.iter().enumerate() {
         let ins: Vec<&Ident> = live_in[k].iter().map(|&v| l.get(v)).collect();
         let outs: Vec<&Ident> = c
@@ -500,7 +317,7 @@ fn body(
         let (n_in, n_out) = (ins.len(), outs.len());
         let consts = const_lets(&referenced(p, c, std::iter::empty()));
         let ops = lets(c);
-        let name = flavor.part(k);
+        let name = format_ident!("part_{}", k);
         let doc = format!(
             " Operations {}..{} of the evaluation (at most {max_fn_ops} per function): reads {n_in} \
              earlier values from `live`, stores the {n_out} that later parts or the outputs use.",
@@ -510,7 +327,7 @@ fn body(
         helpers.extend(quote! {
             #[doc = #doc]
             #[inline(never)]
-            fn #name(live: &mut #live_ty) {
+            fn #name(live: &mut Live) {
                 #(let #ins = live.#ins;)*
                 #consts
                 #ops
@@ -528,6 +345,145 @@ fn body(
     glue.extend(quote!(#(let #outs = live.#outs;)*));
     let consts = const_lets(&referenced(p, &[], out_values()));
     (quote!(#glue #consts), helpers)
+}
+
+/// The body of `eval_lanes` (arguments `args`, result `out`) and its helpers: the scalar
+/// program inside a loop over the `n` lanes, each value a local of one lane. The loop has a
+/// constant trip count and no dependence between lanes, so the compiler's loop vectorizer turns
+/// it into vector instructions (calls such as `sin` become one scalar call per lane: the same
+/// bits). A split program becomes one such loop per helper, with the crossing values stored per
+/// lane in the struct `LiveLanes`.
+fn lanes_body(
+    p: &Program,
+    l: &Locals,
+    max_fn_ops: usize,
+    chunks: &[Vec<usize>],
+    n: usize,
+) -> (TokenStream, TokenStream) {
+    let n_lit = Literal::usize_unsuffixed(n);
+    let n_outs = Literal::usize_unsuffixed(p.outputs.len());
+    let arg_locals: Vec<&Ident> = l.params.iter().chain(&l.inputs).collect();
+    let arg_index: Vec<Literal> = (0..arg_locals.len()).map(Literal::usize_unsuffixed).collect();
+    let out_index: Vec<Literal> = (0..p.outputs.len()).map(Literal::usize_unsuffixed).collect();
+    let out_values = || p.outputs.iter().map(|o| o.value);
+    let out_locals: Vec<&Ident> = out_values().map(|v| l.get(v)).collect();
+    let lets = |insts: &[usize]| {
+        let lets = insts.iter().map(|&i| {
+            let (name, rhs) = (&l.insts[i], op_expr(&p.insts[i].op, l));
+            quote!(let #name = #rhs;)
+        });
+        quote!(#(#lets)*)
+    };
+    let const_lets = |used: &BTreeSet<usize>| {
+        lets(&used.iter().copied().filter(|&i| is_const(p, i)).collect::<Vec<_>>())
+    };
+    if chunks.len() <= 1 {
+        let work: Vec<usize> = (0..p.insts.len()).filter(|&i| !is_const(p, i)).collect();
+        let consts = const_lets(&referenced(p, &work, out_values()));
+        let ops = lets(&work);
+        let body = quote! {
+            let mut out = [[0.0_f64; #n_lit]; #n_outs];
+            for j in 0..#n_lit {
+                #(let #arg_locals = args[#arg_index][j];)*
+                #consts
+                #ops
+                #(out[#out_index][j] = #out_locals;)*
+            }
+            out
+        };
+        return (body, TokenStream::new());
+    }
+    let mut chunk_of = vec![usize::MAX; p.insts.len()];
+    for (k, c) in chunks.iter().enumerate() {
+        for &i in c {
+            chunk_of[i] = k;
+        }
+    }
+    let crosses = |v: &Value, k: usize| match *v {
+        Value::Inst(j) => !is_const(p, j as usize) && chunk_of[j as usize] != k,
+        _ => true,
+    };
+    let live_in: Vec<BTreeSet<Value>> = chunks
+        .iter()
+        .enumerate()
+        .map(|(k, c)| {
+            c.iter().flat_map(|&i| p.insts[i].op.operands()).filter(|v| crosses(v, k)).collect()
+        })
+        .collect();
+    let is_work = |v: &Value| matches!(*v, Value::Inst(j) if !is_const(p, j as usize));
+    let mut stored: BTreeSet<Value> = live_in.iter().flatten().copied().collect();
+    stored.extend(out_values().filter(is_work));
+    let fields: Vec<&Ident> = stored.iter().map(|&v| l.get(v)).collect();
+    let stored_args: Vec<(&Ident, Literal)> = arg_locals
+        .iter()
+        .zip(&arg_index)
+        .filter(|(a, _)| fields.contains(a))
+        .map(|(a, i)| (*a, i.clone()))
+        .collect();
+    let (sa, si): (Vec<&Ident>, Vec<Literal>) = stored_args.into_iter().unzip();
+    let mut helpers = quote! {
+        /// The values that cross the helper functions of one evaluation of [`eval_lanes`],
+        /// one array of lanes each.
+        struct LiveLanes { #(#fields: [f64; #n_lit],)* }
+    };
+    let mut glue = quote! {
+        let mut live = LiveLanes { #(#fields: [0.0_f64; #n_lit]),* };
+        for j in 0..#n_lit {
+            #(live.#sa[j] = args[#si][j];)*
+        }
+    };
+    for (k, c) in chunks.iter().enumerate() {
+        let ins: Vec<&Ident> = live_in[k].iter().map(|&v| l.get(v)).collect();
+        let outs: Vec<&Ident> = c
+            .iter()
+            .filter(|&&i| stored.contains(&Value::Inst(i as u32)))
+            .map(|&i| &l.insts[i])
+            .collect();
+        let consts = const_lets(&referenced(p, c, std::iter::empty()));
+        let ops = lets(c);
+        let name = format_ident!("lanes_part_{}", k);
+        let doc = format!(
+            " Operations {}..{} of [`eval_lanes`] (at most {max_fn_ops} per function), lane by lane.",
+            k * max_fn_ops,
+            k * max_fn_ops + c.len(),
+        );
+        helpers.extend(quote! {
+            #[doc = #doc]
+            #[inline(never)]
+            fn #name(live: &mut LiveLanes) {
+                for j in 0..#n_lit {
+                    #(let #ins = live.#ins[j];)*
+                    #consts
+                    #ops
+                    #(live.#outs[j] = #outs;)*
+                }
+            }
+        });
+        glue.extend(quote!(#name(&mut live);));
+    }
+    let out_exprs = out_values().map(|v| match v {
+        Value::Inst(i) if is_const(p, i as usize) => match p.insts[i as usize].op {
+            Op::Const(c) => float(c),
+            _ => quote!(0.0_f64),
+        },
+        Value::Inst(_) => {
+            let f = l.get(v);
+            quote!(live.#f[j])
+        }
+        Value::Param(_) | Value::Input(_) => {
+            let k = arg_locals.iter().position(|a| *a == l.get(v)).unwrap_or(0);
+            let k = Literal::usize_unsuffixed(k);
+            quote!(args[#k][j])
+        }
+    });
+    glue.extend(quote! {
+        let mut out = [[0.0_f64; #n_lit]; #n_outs];
+        for j in 0..#n_lit {
+            #(out[#out_index][j] = #out_exprs;)*
+        }
+        out
+    });
+    (glue, helpers)
 }
 
 /// `a`, `b` as "`a`, `b`" (or "none").
@@ -640,12 +596,10 @@ pub fn emit(scene: &Scene) -> TokenStream {
         names(outputs.iter().copied())
     );
 
-    let (scalar_body, helpers) = body(p, &l, scene.max_fn_ops, &chunks, Flavor::Scalar);
+    let (scalar_body, helpers) = body(p, &l, scene.max_fn_ops, &chunks);
     let lanes = scene.lanes.map(|n| {
-        let (lbody, lhelpers) = body(p, &l, scene.max_fn_ops, &chunks, Flavor::Lanes(n));
-        let lane_mod = lane_helpers(n);
+        let (lbody, lhelpers) = lanes_body(p, &l, scene.max_fn_ops, &chunks, n);
         let n_lit = Literal::usize_unsuffixed(n);
-        let out_locals = p.outputs.iter().map(|o| l.get(o.value));
         let doc = [
             format!(
                 " [`eval`] on {n} points at once, structure of arrays: `args[k][j]` is argument `k` \
@@ -666,13 +620,10 @@ pub fn emit(scene: &Scene) -> TokenStream {
             #[inline]
             #[must_use]
             pub fn eval_lanes(args: &[[f64; #n_lit]; #n_args_lit]) -> [[f64; #n_lit]; #n_outs_lit] {
-                let [#(#arg_locals),*] = *args;
                 #lbody
-                [#(#out_locals),*]
             }
 
             #lhelpers
-            #lane_mod
         }
     });
     let allow = allow_lints();

@@ -20,9 +20,11 @@ use std::fmt;
 use nalgebra::Matrix4;
 
 crate::scene! {
-    /// The sixteen entries of $M$, $C_1$, $K_0$, $K_2$.
+    /// The sixteen entries of $M$, $C_1$, $K_0$, $K_2$ (also on four designs per call, for
+    /// the sweeps).
     pub mod matrices_scene {
         model: whipple,
+        lanes: 4,
         outputs: [m11, m12, m21, m22, c1_11, c1_12, c1_21, c1_22,
                   k0_11, k0_12, k0_21, k0_22, k2_11, k2_12, k2_21, k2_22],
     }
