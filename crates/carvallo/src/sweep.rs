@@ -212,11 +212,13 @@ pub fn hurwitz_window_polished(m: &Matrices, g: f64) -> StabilityWindow {
 
 fn window(m: &Matrices, g: f64, polished: bool) -> StabilityWindow {
     let mut stable: Vec<(f64, f64)> = Vec::new();
-    let (weave_speed, capsize_speed) =
-        window_into(m, g, polished, &mut |lo, hi| match stable.last_mut() {
+    let (weave_speed, capsize_speed) = window_into(m, g, polished, &mut |lo, hi| {
+        match stable.last_mut() {
             Some(last) if last.1 == lo => last.1 = hi,
             _ => stable.push((lo, hi)),
-        });
+        }
+        true
+    });
     StabilityWindow { weave_speed, capsize_speed, stable }
 }
 
@@ -225,7 +227,10 @@ fn window(m: &Matrices, g: f64, polished: bool) -> StabilityWindow {
 /// design, without allocating.
 pub fn hurwitz_window_summary(m: &Matrices, g: f64) -> WindowSummary {
     let mut stable = false;
-    let (weave_speed, capsize_speed) = window_into(m, g, false, &mut |_, _| stable = true);
+    let (weave_speed, capsize_speed) = window_into(m, g, false, &mut |_, _| {
+        stable = true;
+        false
+    });
     WindowSummary { weave_speed, capsize_speed, stable }
 }
 
@@ -251,12 +256,12 @@ impl From<&StabilityWindow> for WindowSummary {
 }
 
 /// The Hurwitz window: returns the weave and capsize speeds and hands every stable interval
-/// between consecutive cuts, in increasing order, to `stable`.
+/// between consecutive cuts, in increasing order, to `stable`, until it returns `false`.
 fn window_into(
     m: &Matrices,
     g: f64,
     polished: bool,
-    stable: &mut dyn FnMut(f64, f64),
+    stable: &mut dyn FnMut(f64, f64) -> bool,
 ) -> (Option<f64>, Option<f64>) {
     let mut p = HurwitzPolys::new(m, g);
     let dd = polished.then(|| dd_coefficients(m, g));
@@ -310,8 +315,8 @@ fn window_into(
     for hi in cuts.iter().copied().chain([f64::INFINITY]) {
         if hi > lo {
             let mid = if hi.is_finite() { 0.5 * (lo + hi) } else { 2.0 * lo + 1.0 };
-            if stable_at(mid) {
-                stable(lo, hi);
+            if stable_at(mid) && !stable(lo, hi) {
+                break;
             }
         }
         lo = hi;
