@@ -820,6 +820,9 @@ pub struct SweepOutput {
     /// With `record`: the window of design `i`, `None` when the eigenvalue route failed or the
     /// random design was rejected; empty otherwise.
     pub windows: Vec<Option<WindowSummary>>,
+    /// With `record`: whether design `i` is valid (`false` for a rejected random design);
+    /// empty otherwise.
+    pub valid: Vec<bool>,
     /// How many random designs were rejected (always 0 for a grid).
     pub rejected: usize,
 }
@@ -920,7 +923,7 @@ pub fn sweep_designs(
                     for (s, &k) in spreads.iter().zip(&keys) {
                         v[k] = rng.scale(base_values[k], s.rel);
                     }
-                    if WhippleParams::from_values(*v).is_ok() {
+                    if crate::whipple::valid_fast(v) {
                         return true;
                     }
                 }
@@ -977,12 +980,14 @@ pub fn sweep_designs(
         .collect();
     let elapsed = start.elapsed().as_secs_f64();
     let mut acc = Acc::EMPTY;
-    let (mut values, mut windows, mut rejected) = (Vec::new(), Vec::new(), 0);
+    let (mut values, mut windows, mut valid, mut rejected) =
+        (Vec::new(), Vec::new(), Vec::new(), 0);
     for p in parts {
         acc = acc.merge(p.acc);
         rejected += p.rejected;
         values.extend(p.values);
         windows.extend(p.windows);
+        valid.extend(p.valid);
     }
     let range = |n: usize, r: (f64, f64)| (n > 0).then_some(r);
     let summary = SweepSummary {
@@ -996,7 +1001,7 @@ pub fn sweep_designs(
         capsize_range: range(acc.capsize, acc.capsize_range),
         failed: acc.failed,
     };
-    Ok(SweepOutput { summary, names, values, windows, rejected })
+    Ok(SweepOutput { summary, names, values, windows, valid, rejected })
 }
 
 /// The results of one parallel task of [`sweep_designs`].
@@ -1006,6 +1011,7 @@ struct Part {
     record: bool,
     values: Vec<f64>,
     windows: Vec<Option<WindowSummary>>,
+    valid: Vec<bool>,
 }
 
 impl Part {
@@ -1017,6 +1023,7 @@ impl Part {
             record,
             values: Vec::with_capacity(cap(n_values)),
             windows: Vec::with_capacity(cap(CHUNK)),
+            valid: Vec::with_capacity(cap(CHUNK)),
         }
     }
 
@@ -1032,6 +1039,7 @@ impl Part {
         if self.record {
             self.values.extend(values);
             self.windows.push(w);
+            self.valid.push(ok);
         }
     }
 }
