@@ -175,7 +175,7 @@ fn stream(seed: u64) -> impl FnMut() -> f64 {
     let mut n = 0u32;
     move || {
         n += 1;
-        if n % 17 == 0 {
+        if n.is_multiple_of(17) {
             return [0.0, -0.0, 1e-300, 1e300][(n / 17 % 4) as usize];
         }
         state = state.wrapping_add(0x9E37_79B9_7F4A_7C15);

@@ -91,7 +91,7 @@ pub(crate) fn valid_fast(v: &[f64; 26]) -> bool {
     if !v.iter().all(|x| x.is_finite() && x.abs() <= MAX_MAGNITUDE) {
         return false;
     }
-    if !POSITIVE_INDEX.iter().all(|&k| v[k] > 0.0 && v[k] >= MIN_POSITIVE) {
+    if !POSITIVE_INDEX.iter().all(|&k| v[k] >= MIN_POSITIVE) {
         return false;
     }
     if v[2].abs() >= std::f64::consts::FRAC_PI_2 {
@@ -669,7 +669,7 @@ mod tests {
                 let finite_and_sized = PARAM_NAMES.iter().zip(&v).all(|(key, &x)| {
                     x.is_finite()
                         && x.abs() <= MAX_MAGNITUDE
-                        && (!POSITIVE.contains(key) || (x > 0.0 && x >= MIN_POSITIVE))
+                        && (!POSITIVE.contains(key) || x >= MIN_POSITIVE)
                 });
                 finite_and_sized
                     && v[2].abs() < std::f64::consts::FRAC_PI_2
