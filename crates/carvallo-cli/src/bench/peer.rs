@@ -328,8 +328,11 @@ mod tests {
     fn source_names_every_value_and_reads_constants_back_exactly() {
         let src = c_source(&program());
         assert!(src.contains("const double t0 = sin(a1);"), "{src}");
-        assert!(src.contains("const double t3 = t1 * t2;"), "{src}");
-        assert!(src.contains("const double t2 = 1.0 / t2_s0;"), "{src}");
+        // C locals are numbered by instruction (the constant `c0` is instruction 3).
+        assert!(src.contains("const double t3 = (1e-1);"), "{src}");
+        assert!(src.contains("const double t4 = t1 * t2;"), "{src}");
+        assert!(src.contains("const double t2_r1 = a0 * t2_s0;"), "{src}");
+        assert!(src.contains("const double t2 = 1.0 / t2_r1;"), "{src}");
         assert!(src.contains("out[1] = t2;"), "{src}");
         assert_eq!(c_float(0.1), "(1e-1)");
         assert_eq!("1e-1".parse::<f64>().unwrap(), 0.1);
