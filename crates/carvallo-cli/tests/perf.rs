@@ -54,6 +54,23 @@ fn quick_bench_reports_times_beside_correct_errors() {
     let bench =
         targets.iter().find(|t| t["name"].as_str().unwrap().starts_with("benchmark")).unwrap();
     assert_eq!(bench["met"], true, "{bench}");
+    // The C peer computes the same outputs (where a C compiler exists), and the batched
+    // evaluators equal the scalar ones lane by lane.
+    let peer = rows(&v, "peer");
+    assert!(peer.len() >= 3, "{peer:?}");
+    for r in peer {
+        let note = r["note"].as_str().unwrap();
+        match r["method"].as_str().unwrap() {
+            m if m.starts_with("C peer") => assert!(
+                note.starts_with("skipped: no C compiler") || note.contains("outputs agree"),
+                "{r}"
+            ),
+            "generated Rust, 4 lanes" => {
+                assert!(note.contains("lanes equal the scalar evaluator bit for bit"), "{r}")
+            }
+            _ => {}
+        }
+    }
     let d = v["distributions"].as_array().unwrap();
     assert_eq!(d.len(), 5);
     for x in d {
