@@ -18,7 +18,12 @@
 //!    speeds in [0, 10] m/s), max and quantiles in units of $\varepsilon = 2^{-52}$;
 //! 6. **scenes**: operation count and time of scenes that ask for less (window only, one
 //!    speed's polynomial, full right-hand side), with the benchmark parameters free or fixed;
-//! 7. **sweep**: $10^6$ designs (fewer with `quick`) through [`crate::sweep::sweep`].
+//! 7. **sweep**: $10^6$ designs (fewer with `quick`) through [`crate::sweep::sweep`] (the trail
+//!    on a line) and [`crate::sweep::sweep_designs`] (a Monte Carlo of the 25 parameters other
+//!    than $g$, each scaled in [0.8, 1.2]), with the designs per second.
+//!
+//! The command line appends the C peer and the batched evaluators (`carvallo-cli`'s `bench`
+//! module: it spawns the system C compiler, which a library should not do).
 //!
 //! Timings are wall-clock means over repeated calls (`std::time::Instant`), so they vary from
 //! run to run and machine to machine; errors do not. [`Targets`] compares the ratios asked for in

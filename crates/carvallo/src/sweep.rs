@@ -47,6 +47,12 @@
 //!
 //! [`sweep`] computes the window for `count` designs that vary one parameter linearly between
 //! two values, in parallel with rayon, and summarises them ([`SweepSummary`]).
+//! [`sweep_designs`] does the same for a grid of several parameters or for seeded random designs
+//! around a base ([`Designs`]), optionally keeping every design's varied values and window
+//! ([`SweepOutput`]). Both evaluate the matrices four designs per call
+//! (`matrices_scene::eval_lanes`, bit for bit the scalar evaluator lane by lane) and keep of each
+//! window only [`hurwitz_window_summary`], the same code as [`hurwitz_window`] without the
+//! allocation of the stable intervals.
 
 use std::sync::atomic::{AtomicUsize, Ordering};
 use std::time::Instant;
@@ -700,7 +706,8 @@ pub fn sweep(
     match sweep_designs(base, &designs, method, false, progress) {
         Ok(out) => Ok(out.summary),
         Err(DesignsError::Sweep(e)) => Err(e),
-        // A grid of one parameter has no spreads and no second parameter.
+        // A grid of one axis has no spread, no repeated parameter, is not empty and its count
+        // fits: only `DesignsError::Sweep` can occur; any other is reported by its text.
         Err(e) => Err(SweepError::UnknownParameter { name: e.to_string() }),
     }
 }
