@@ -10,6 +10,7 @@ use std::io::Write;
 use std::process::ExitCode;
 
 mod args;
+mod bench;
 mod figures;
 mod kinematics;
 mod nonlinear;
@@ -35,8 +36,12 @@ Usage:
                                 eigenvalues of the linearised bicycle at speed V [m/s]
     carvallo bench [--json] [--quick]
                                 time per evaluation beside the error against 256 bits
-    carvallo sweep --model benchmark|FILE.toml --vary NAME=FROM:TO:COUNT [--method hurwitz|eigen] [--json]
-                                stability windows of many designs, in parallel
+    carvallo sweep --model benchmark|FILE.toml --vary NAME=FROM:TO:COUNT [--vary ...]
+                   [--method hurwitz|eigen] [--json | --csv]
+    carvallo sweep --model benchmark|FILE.toml --random N --spread NAME=REL [--spread ...]
+                   [--seed S] [--method hurwitz|eigen] [--json | --csv]
+                                stability windows of many designs (a grid or random
+                                designs around the model), in parallel
     carvallo accel --model benchmark|FILE.toml --basu-mandal
                                 accelerations of the nonlinear bicycle in Basu-Mandal's
                                 coordinates: reads {\"q\": [..9], \"qd\": [..9]} on stdin

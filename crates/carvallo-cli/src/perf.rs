@@ -5,12 +5,20 @@
 //!   the issue's targets), as text or as one JSON object `{mode, rows, distributions,
 //!   targets}`. `--quick` runs tiny samples (seconds); the default is the full measurement
 //!   ($10^6$ samples and sweep designs, 5 to 15 minutes on a busy 2-core machine).
-//! * `carvallo sweep --model benchmark|FILE.toml --vary NAME=FROM:TO:COUNT
-//!   [--method hurwitz|eigen] [--json]`: the stability window of COUNT designs varying one
-//!   parameter linearly, in parallel, with a progress bar when standard error is a terminal;
-//!   prints a summary (JSON keys `model`, `parameter`, `from`, `to`, `count`, `method`,
-//!   `threads`, `elapsed`, `designs_per_second`, `stable`, `with_weave`, `with_capsize`,
-//!   `weave_speed_range`, `capsize_speed_range`, `failed`).
+//! * `carvallo sweep --model benchmark|FILE.toml (--vary NAME=FROM:TO:COUNT ... |
+//!   --random N --spread NAME=REL ... [--seed S]) [--method hurwitz|eigen] [--json | --csv]`:
+//!   the stability window of many designs, in parallel, with a progress bar when standard error
+//!   is a terminal. Several `--vary` make a grid (every combination, the first varying slowest);
+//!   `--random N` draws N designs around the model, each `--spread` parameter scaled by a
+//!   uniform factor in [1 - REL, 1 + REL] (seeded: the same `--seed` gives the same designs on
+//!   any number of threads). Prints a summary (JSON keys `model`, `parameters`, `designs`
+//!   (`grid` or `random`), `count`, `method`, `threads`, `elapsed`, `designs_per_second`,
+//!   `stable`, `with_weave`, `with_capsize`, `weave_speed_range`, `capsize_speed_range`,
+//!   `failed`, `rejected`, and for one `--vary` also `parameter`, `from`, `to`; `vary` or
+//!   `random` describe the designs), or with `--csv` one row per design: `design`, the varied
+//!   parameters, `status` (`ok`, `failed`: no window, `rejected`: no valid random draw),
+//!   `stable`, `weave_speed`, `capsize_speed` (empty when there is none), for
+//!   `pandas.read_csv`.
 //!
 //! Bad arguments are usage errors naming the value, exit code 2.
 
@@ -18,34 +26,34 @@ use std::io::IsTerminal;
 use std::sync::atomic::{AtomicBool, AtomicUsize, Ordering};
 use std::time::Duration;
 
-use carvallo::sweep::{self, Method};
+use carvallo::sweep::{self, Designs, Method, Spread, SweepOutput, Vary};
 use serde_json::{json, Value};
 
 const HELP: &str = "\
 Usage:
     carvallo bench [--json] [--quick]
-    carvallo sweep --model benchmark|FILE.toml --vary NAME=FROM:TO:COUNT [--method hurwitz|eigen] [--json]
+    carvallo sweep --model benchmark|FILE.toml --vary NAME=FROM:TO:COUNT [--vary ...]
+                   [--method hurwitz|eigen] [--json | --csv]
+    carvallo sweep --model benchmark|FILE.toml --random N --spread NAME=REL [--spread ...]
+                   [--seed S] [--method hurwitz|eigen] [--json | --csv]
 ";
+
+/// How `sweep` prints its result.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+enum Output {
+    Text,
+    Json,
+    Csv,
+}
 
 #[derive(Debug, PartialEq)]
 enum Command {
-    Bench {
-        json: bool,
-        quick: bool,
-    },
-    Sweep {
-        model: String,
-        name: String,
-        from: f64,
-        to: f64,
-        count: usize,
-        method: Method,
-        json: bool,
-    },
+    Bench { json: bool, quick: bool },
+    Sweep { model: String, designs: Designs, method: Method, output: Output },
 }
 
 /// Reads `NAME=FROM:TO:COUNT`.
-fn parse_vary(text: &str) -> Result<(String, f64, f64, usize), String> {
+fn parse_vary(text: &str) -> Result<Vary, String> {
     let bad = || format!("invalid --vary `{text}`: expected NAME=FROM:TO:COUNT");
     let (name, range) = text.split_once('=').ok_or_else(bad)?;
     let parts: Vec<&str> = range.split(':').collect();
@@ -63,25 +71,60 @@ fn parse_vary(text: &str) -> Result<(String, f64, f64, usize), String> {
     if count == 0 {
         return Err(format!("invalid count `0` in --vary `{text}`: must be at least 1"));
     }
-    Ok((name.to_string(), num(from)?, num(to)?, count))
+    Ok(Vary { name: name.to_string(), from: num(from)?, to: num(to)?, count })
+}
+
+/// Reads `NAME=REL` of `--spread`.
+fn parse_spread(text: &str) -> Result<Spread, String> {
+    let (name, rel) = text
+        .split_once('=')
+        .ok_or_else(|| format!("invalid --spread `{text}`: expected NAME=REL"))?;
+    let rel: f64 =
+        rel.parse().map_err(|_| format!("invalid spread `{rel}` in --spread `{text}`"))?;
+    if !(0.0..1.0).contains(&rel) {
+        return Err(format!("invalid spread `{rel}` in --spread `{text}`: must lie in [0, 1)"));
+    }
+    Ok(Spread { name: name.to_string(), rel })
 }
 
 fn parse(args: &[String]) -> Result<Command, String> {
     let (first, rest) = args.split_first().ok_or("missing command")?;
-    let (mut json, mut quick, mut model, mut vary, mut method) = (false, false, None, None, None);
+    let (mut output, mut quick, mut model, mut method) = (Output::Text, false, None, None);
+    let (mut vary, mut spreads, mut random, mut seed) = (Vec::new(), Vec::new(), None, None);
     let mut it = rest.iter();
     while let Some(arg) = it.next() {
         let mut value =
             |what: &str| it.next().cloned().ok_or_else(|| format!("missing value after `{what}`"));
         match (first.as_str(), arg.as_str()) {
-            (_, "--json") if json => return Err("argument `--json` given more than once".into()),
-            (_, "--json") => json = true,
+            (_, "--json" | "--csv") if output != Output::Text => {
+                let given = if output == Output::Json { "--json" } else { "--csv" };
+                if given == arg {
+                    return Err(format!("argument `{arg}` given more than once"));
+                }
+                return Err(format!("`{arg}` cannot be combined with `{given}`"));
+            }
+            (_, "--json") => output = Output::Json,
+            ("sweep", "--csv") => output = Output::Csv,
             ("bench", "--quick") if quick => {
                 return Err("argument `--quick` given more than once".into())
             }
             ("bench", "--quick") => quick = true,
             ("sweep", "--model") if model.is_none() => model = Some(value("--model")?),
-            ("sweep", "--vary") if vary.is_none() => vary = Some(parse_vary(&value("--vary")?)?),
+            ("sweep", "--vary") => vary.push(parse_vary(&value("--vary")?)?),
+            ("sweep", "--spread") => spreads.push(parse_spread(&value("--spread")?)?),
+            ("sweep", "--random") if random.is_none() => {
+                let v = value("--random")?;
+                match v.parse::<usize>() {
+                    Ok(n) if n >= 1 => random = Some(n),
+                    _ => {
+                        return Err(format!("invalid count `{v}` of --random: expected at least 1"))
+                    }
+                }
+            }
+            ("sweep", "--seed") if seed.is_none() => {
+                let v = value("--seed")?;
+                seed = Some(v.parse::<u64>().map_err(|_| format!("invalid seed `{v}`"))?);
+            }
             ("sweep", "--method") if method.is_none() => {
                 method = Some(match value("--method")?.as_str() {
                     "hurwitz" => Method::Hurwitz,
@@ -91,26 +134,30 @@ fn parse(args: &[String]) -> Result<Command, String> {
                     }
                 })
             }
-            ("sweep", "--model" | "--vary" | "--method") => {
+            ("sweep", "--model" | "--method" | "--random" | "--seed") => {
                 return Err(format!("argument `{arg}` given more than once"))
             }
             _ => return Err(format!("unknown argument `{arg}`")),
         }
     }
     if first == "bench" {
-        return Ok(Command::Bench { json, quick });
+        return Ok(Command::Bench { json: output == Output::Json, quick });
     }
     let model = model.ok_or("missing `--model benchmark|FILE.toml`")?;
-    let (name, from, to, count) = vary.ok_or("missing `--vary NAME=FROM:TO:COUNT`")?;
-    Ok(Command::Sweep {
-        model,
-        name,
-        from,
-        to,
-        count,
-        method: method.unwrap_or(Method::Hurwitz),
-        json,
-    })
+    let designs = match (random, vary.is_empty()) {
+        (Some(_), false) => return Err("`--vary` cannot be combined with `--random`".into()),
+        (Some(count), true) => {
+            if spreads.is_empty() {
+                return Err("missing `--spread NAME=REL` for `--random`".into());
+            }
+            Designs::Random { count, spreads, seed: seed.unwrap_or(1) }
+        }
+        (None, _) if !spreads.is_empty() => return Err("`--spread` needs `--random N`".into()),
+        (None, _) if seed.is_some() => return Err("`--seed` needs `--random N`".into()),
+        (None, true) => return Err("missing `--vary NAME=FROM:TO:COUNT` or `--random N`".into()),
+        (None, false) => Designs::Grid(vary),
+    };
+    Ok(Command::Sweep { model, designs, method: method.unwrap_or(Method::Hurwitz), output })
 }
 
 /// Draws a progress bar on standard error until `done` is set.
@@ -137,60 +184,141 @@ fn run(cmd: Command) -> Result<String, String> {
             } else {
                 carvallo::bench::Config::full()
             };
-            let report = carvallo::bench::run(&cfg);
+            let mut report = carvallo::bench::run(&cfg);
+            crate::bench::extend(&cfg, &mut report);
             if json {
                 serde_json::to_string_pretty(&report).map_err(|e| e.to_string())
             } else {
                 Ok(carvallo::bench::render_text(&report))
             }
         }
-        Command::Sweep { model, name, from, to, count, method, json } => {
+        Command::Sweep { model, designs, method, output } => {
             let base = crate::whipple::load(&model)?;
+            let count = match &designs {
+                Designs::Grid(axes) => axes.iter().map(|a| a.count).product::<usize>(),
+                Designs::Random { count, .. } => *count,
+            };
             let counter = AtomicUsize::new(0);
             let done = AtomicBool::new(false);
-            let summary = std::thread::scope(|s| {
+            let record = output == Output::Csv;
+            let out = std::thread::scope(|s| {
                 if std::io::stderr().is_terminal() {
                     s.spawn(|| progress_bar(&counter, count, &done));
                 }
-                let r = sweep::sweep(&base, &name, from, to, count, method, &counter);
+                let r = sweep::sweep_designs(&base, &designs, method, record, &counter);
                 done.store(true, Ordering::Relaxed);
                 r
             })
             .map_err(|e| e.to_string())?;
             let method = if method == Method::Hurwitz { "hurwitz" } else { "eigen" };
-            let v = json!({
-                "model": model,
-                "parameter": name,
-                "from": from,
-                "to": to,
-                "count": summary.count,
-                "method": method,
-                "threads": rayon_threads(),
-                "elapsed": summary.elapsed,
-                "designs_per_second": summary.designs_per_second,
-                "stable": summary.stable,
-                "with_weave": summary.with_weave,
-                "with_capsize": summary.with_capsize,
-                "weave_speed_range": range(summary.weave_range),
-                "capsize_speed_range": range(summary.capsize_range),
-                "failed": summary.failed,
-            });
-            if json {
-                serde_json::to_string_pretty(&v).map_err(|e| e.to_string())
-            } else {
-                Ok(format!(
-                    "{count} designs, {name} from {from} to {to}, method {method}: {:.3} s \
-                     ({:.0} designs/s), {} with a stable speed range, weave speeds {}, capsize \
-                     speeds {}",
-                    summary.elapsed,
-                    summary.designs_per_second,
-                    summary.stable,
-                    range(summary.weave_range),
-                    range(summary.capsize_range)
-                ))
+            match output {
+                Output::Csv => Ok(csv(&out)),
+                Output::Json => {
+                    serde_json::to_string_pretty(&summary_json(&model, &designs, method, &out))
+                        .map_err(|e| e.to_string())
+                }
+                Output::Text => Ok(summary_text(&designs, method, &out)),
             }
         }
     }
+}
+
+/// The JSON summary of a sweep (see the [module docs](self)).
+fn summary_json(model: &str, designs: &Designs, method: &str, out: &SweepOutput) -> Value {
+    let s = &out.summary;
+    let mut v = json!({
+        "model": model,
+        "parameters": out.names,
+        "count": s.count,
+        "method": method,
+        "threads": rayon_threads(),
+        "elapsed": s.elapsed,
+        "designs_per_second": s.designs_per_second,
+        "stable": s.stable,
+        "with_weave": s.with_weave,
+        "with_capsize": s.with_capsize,
+        "weave_speed_range": range(s.weave_range),
+        "capsize_speed_range": range(s.capsize_range),
+        "failed": s.failed,
+        "rejected": out.rejected,
+    });
+    match designs {
+        Designs::Grid(axes) => {
+            v["designs"] = json!("grid");
+            v["vary"] = axes
+                .iter()
+                .map(|a| json!({"parameter": a.name, "from": a.from, "to": a.to, "count": a.count}))
+                .collect();
+            if let [a] = &axes[..] {
+                v["parameter"] = json!(a.name);
+                v["from"] = json!(a.from);
+                v["to"] = json!(a.to);
+            }
+        }
+        Designs::Random { count, spreads, seed } => {
+            v["designs"] = json!("random");
+            v["random"] = json!({
+                "count": count,
+                "seed": seed,
+                "spreads": spreads.iter().map(|s| json!({"parameter": s.name, "rel": s.rel})).collect::<Vec<_>>(),
+            });
+        }
+    }
+    v
+}
+
+/// The one-line text summary of a sweep.
+fn summary_text(designs: &Designs, method: &str, out: &SweepOutput) -> String {
+    let s = &out.summary;
+    let what = match designs {
+        Designs::Grid(axes) => axes
+            .iter()
+            .map(|a| format!("{} from {} to {} ({})", a.name, a.from, a.to, a.count))
+            .collect::<Vec<_>>()
+            .join(" x "),
+        Designs::Random { spreads, seed, .. } => format!(
+            "random around the model ({}; seed {seed}), {} rejected",
+            spreads
+                .iter()
+                .map(|s| format!("{} +-{}", s.name, s.rel))
+                .collect::<Vec<_>>()
+                .join(", "),
+            out.rejected
+        ),
+    };
+    format!(
+        "{} designs, {what}, method {method}: {:.3} s ({:.0} designs/s), {} with a stable speed \
+         range, weave speeds {}, capsize speeds {}",
+        s.count,
+        s.elapsed,
+        s.designs_per_second,
+        s.stable,
+        range(s.weave_range),
+        range(s.capsize_range)
+    )
+}
+
+/// One CSV row per design (see the [module docs](self)); floats in Rust's shortest round-trip
+/// form.
+fn csv(out: &SweepOutput) -> String {
+    use std::fmt::Write as _;
+    let k = out.names.len();
+    let mut s = format!("design,{},status,stable,weave_speed,capsize_speed\n", out.names.join(","));
+    let opt = |x: Option<f64>| x.map_or(String::new(), |x| format!("{x:?}"));
+    for (i, (w, valid)) in out.windows.iter().zip(&out.valid).enumerate() {
+        let values: Vec<String> =
+            out.values[i * k..(i + 1) * k].iter().map(|x| format!("{x:?}")).collect();
+        let _ = write!(s, "{i},{},", values.join(","));
+        let _ = match w {
+            Some(w) => {
+                writeln!(s, "ok,{},{},{}", w.stable, opt(w.weave_speed), opt(w.capsize_speed))
+            }
+            None if *valid => writeln!(s, "failed,,,"),
+            None => writeln!(s, "rejected,,,"),
+        };
+    }
+    s.pop();
+    s
 }
 
 /// The number of worker threads the sweep uses.
@@ -217,30 +345,107 @@ mod tests {
             parse(&args(&["bench", "--quick", "--json"])),
             Ok(Command::Bench { json: true, quick: true })
         );
+        let vary = |name: &str, from: f64, to: f64, count: usize| Vary {
+            name: name.into(),
+            from,
+            to,
+            count,
+        };
         assert_eq!(
             parse(&args(&["sweep", "--model", "benchmark", "--vary", "c=0:0.2:10"])),
             Ok(Command::Sweep {
                 model: "benchmark".into(),
-                name: "c".into(),
-                from: 0.0,
-                to: 0.2,
-                count: 10,
+                designs: Designs::Grid(vec![vary("c", 0.0, 0.2, 10)]),
                 method: Method::Hurwitz,
-                json: false
+                output: Output::Text,
             })
         );
         assert_eq!(
-            parse(&args(&["sweep", "--model", "benchmark", "--vary", "c=0:x:10"])),
-            Err("invalid number `x` in --vary `c=0:x:10`".into())
+            parse(&args(&[
+                "sweep",
+                "--model",
+                "b",
+                "--vary",
+                "c=0:0.2:10",
+                "--csv",
+                "--vary",
+                "w=1:1.2:3"
+            ])),
+            Ok(Command::Sweep {
+                model: "b".into(),
+                designs: Designs::Grid(vec![vary("c", 0.0, 0.2, 10), vary("w", 1.0, 1.2, 3)]),
+                method: Method::Hurwitz,
+                output: Output::Csv,
+            })
         );
         assert_eq!(
-            parse(&args(&["sweep", "--model", "b", "--vary", "c=0:1:10", "--method", "qr"])),
-            Err("invalid method `qr`: expected hurwitz or eigen".into())
+            parse(&args(&[
+                "sweep", "--model", "b", "--random", "100", "--spread", "c=0.1", "--spread",
+                "mB=0.2", "--seed", "9", "--json"
+            ])),
+            Ok(Command::Sweep {
+                model: "b".into(),
+                designs: Designs::Random {
+                    count: 100,
+                    spreads: vec![
+                        Spread { name: "c".into(), rel: 0.1 },
+                        Spread { name: "mB".into(), rel: 0.2 }
+                    ],
+                    seed: 9
+                },
+                method: Method::Hurwitz,
+                output: Output::Json,
+            })
+        );
+        let err = |list: &[&str]| parse(&args(list)).unwrap_err();
+        assert_eq!(
+            err(&["sweep", "--model", "benchmark", "--vary", "c=0:x:10"]),
+            "invalid number `x` in --vary `c=0:x:10`"
         );
         assert_eq!(
-            parse(&args(&["sweep", "--model", "b", "--vary", "c=0:1"])),
-            Err("invalid --vary `c=0:1`: expected NAME=FROM:TO:COUNT".into())
+            err(&["sweep", "--model", "b", "--vary", "c=0:1:10", "--method", "qr"]),
+            "invalid method `qr`: expected hurwitz or eigen"
         );
-        assert_eq!(parse(&args(&["bench", "--fast"])), Err("unknown argument `--fast`".into()));
+        assert_eq!(
+            err(&["sweep", "--model", "b", "--vary", "c=0:1"]),
+            "invalid --vary `c=0:1`: expected NAME=FROM:TO:COUNT"
+        );
+        assert_eq!(err(&["bench", "--fast"]), "unknown argument `--fast`");
+        assert_eq!(
+            err(&["sweep", "--model", "b", "--vary", "c=0:1:3", "--json", "--csv"]),
+            "`--csv` cannot be combined with `--json`"
+        );
+        assert_eq!(
+            err(&["sweep", "--model", "b", "--vary", "c=0:1:3", "--random", "5"]),
+            "`--vary` cannot be combined with `--random`"
+        );
+        assert_eq!(
+            err(&["sweep", "--model", "b", "--random", "5"]),
+            "missing `--spread NAME=REL` for `--random`"
+        );
+        assert_eq!(
+            err(&["sweep", "--model", "b", "--random", "0", "--spread", "c=0.1"]),
+            "invalid count `0` of --random: expected at least 1"
+        );
+        assert_eq!(
+            err(&["sweep", "--model", "b", "--random", "5", "--spread", "c=1.5"]),
+            "invalid spread `1.5` in --spread `c=1.5`: must lie in [0, 1)"
+        );
+        assert_eq!(
+            err(&["sweep", "--model", "b", "--random", "5", "--spread", "c"]),
+            "invalid --spread `c`: expected NAME=REL"
+        );
+        assert_eq!(
+            err(&["sweep", "--model", "b", "--random", "5", "--spread", "c=.1", "--seed", "-1"]),
+            "invalid seed `-1`"
+        );
+        assert_eq!(
+            err(&["sweep", "--model", "b", "--spread", "c=0.1"]),
+            "`--spread` needs `--random N`"
+        );
+        assert_eq!(
+            err(&["sweep", "--model", "b"]),
+            "missing `--vary NAME=FROM:TO:COUNT` or `--random N`"
+        );
     }
 }

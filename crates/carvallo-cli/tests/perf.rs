@@ -54,6 +54,23 @@ fn quick_bench_reports_times_beside_correct_errors() {
     let bench =
         targets.iter().find(|t| t["name"].as_str().unwrap().starts_with("benchmark")).unwrap();
     assert_eq!(bench["met"], true, "{bench}");
+    // The C peer computes the same outputs (where a C compiler exists), and the batched
+    // evaluators equal the scalar ones lane by lane.
+    let peer = rows(&v, "peer");
+    assert!(peer.len() >= 3, "{peer:?}");
+    for r in peer {
+        let note = r["note"].as_str().unwrap();
+        match r["method"].as_str().unwrap() {
+            m if m.starts_with("C peer") => assert!(
+                note.starts_with("skipped: no C compiler") || note.contains("outputs agree"),
+                "{r}"
+            ),
+            "generated Rust, 4 lanes" => {
+                assert!(note.contains("lanes equal the scalar evaluator bit for bit"), "{r}")
+            }
+            _ => {}
+        }
+    }
     let d = v["distributions"].as_array().unwrap();
     assert_eq!(d.len(), 5);
     for x in d {
@@ -89,4 +106,68 @@ fn sweep_prints_a_summary_and_rejects_bad_ranges() {
     let (code, _, err) = carvallo(&["bench", "--slow"]);
     assert_eq!(code, 2);
     assert!(err.starts_with("error: unknown argument `--slow`"), "{err}");
+}
+
+#[test]
+fn sweep_grids_and_random_designs_as_csv_and_json() {
+    let (code, csv, err) = carvallo(&[
+        "sweep",
+        "--model",
+        "benchmark",
+        "--vary",
+        "c=0.0:0.2:5",
+        "--vary",
+        "w=0.9:1.3:3",
+        "--csv",
+    ]);
+    assert_eq!(code, 0, "{err}");
+    let lines: Vec<&str> = csv.lines().collect();
+    assert_eq!(lines[0], "design,c,w,status,stable,weave_speed,capsize_speed");
+    assert_eq!(lines.len(), 1 + 15);
+    // The first axis varies slowest; the benchmark itself (c = 0.08 is not on this grid) has
+    // its window at c = 0.1, w = 1.1 (design 2 * 3 + 1).
+    assert!(lines[1].starts_with("0,0.0,0.9,ok,"), "{}", lines[1]);
+    assert!(lines[15].starts_with("14,0.2,1.3,ok,"), "{}", lines[15]);
+    let row: Vec<&str> = lines[8].split(',').collect();
+    assert_eq!(&row[..4], ["7", "0.1", "1.1", "ok"]);
+    let weave: f64 = row[5].parse().unwrap();
+    assert!(weave > 2.0 && weave < 6.0, "{}", lines[8]);
+
+    let run = |seed: &str| {
+        let (code, json, err) = carvallo(&[
+            "sweep",
+            "--model",
+            "benchmark",
+            "--random",
+            "2000",
+            "--spread",
+            "c=0.3",
+            "--spread",
+            "IBxx=0.9",
+            "--seed",
+            seed,
+            "--json",
+        ]);
+        assert_eq!(code, 0, "{err}");
+        serde_json::from_str::<Value>(&json).unwrap()
+    };
+    let (a, b) = (run("3"), run("3"));
+    assert_eq!(a["designs"], "random");
+    assert_eq!(a["parameters"], serde_json::json!(["c", "IBxx"]));
+    assert_eq!(a["random"]["seed"], 3);
+    let n = |v: &Value, k: &str| v[k].as_u64().unwrap();
+    assert_eq!(n(&a, "count"), 2000);
+    // IBxx up to 1.9 times the benchmark's breaks a triangle inequality; such draws are
+    // redrawn (up to 100 times), so no design is rejected in the end.
+    assert_eq!(n(&a, "rejected"), 0, "{a}");
+    assert!(n(&a, "stable") <= 2000, "{a}");
+    for k in ["stable", "with_weave", "rejected"] {
+        assert_eq!(a[k], b[k], "the same seed gives the same designs: {k}");
+    }
+    assert_eq!(a["weave_speed_range"], b["weave_speed_range"]);
+
+    let (code, _, err) =
+        carvallo(&["sweep", "--model", "benchmark", "--vary", "c=0:0.1:3", "--vary", "c=0:0.2:3"]);
+    assert_eq!(code, 2);
+    assert!(err.starts_with("error: parameter c is varied more than once"), "{err}");
 }

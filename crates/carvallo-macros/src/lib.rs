@@ -32,8 +32,12 @@
 //!   optionally negated and optionally suffixed `f64`, and must be finite.
 //! * `outputs: [NAME, ...]` selects and orders the outputs.
 //! * `max_fn_ops: N` splits programs of more than `N` operations (default
-//!   400) into several `#[inline(never)]` helper functions, which
-//!   keeps rustc's compile time in check for very large formulas.
+//!   1500) into several `#[inline(never)]` helper functions, which
+//!   keeps rustc's compile time in check for very large formulas. The helpers share one
+//!   struct of the values that cross them (each stored once and loaded where it is used).
+//! * `lanes: N` (2, 4, 8 or 16) also emits `eval_lanes`, the same evaluator on `N` points per
+//!   call in structure-of-arrays form (`[[f64; N]; K]` in, `[[f64; N]; M]` out), lane `j`
+//!   bit for bit equal to `eval_array` of point `j`.
 //!
 //! # What a scene module contains
 //!
@@ -42,7 +46,8 @@
 //! model program before fixing and pruning); the structs `Args` (one `f64` field per free
 //! parameter, then per input, named as in the IR) and `Out` (one field per output), with
 //! `from_array`/`to_array`; and the evaluators `eval(&Args) -> Out` and
-//! `eval_array(&[f64; N]) -> [f64; M]`. The code is straight-line `f64` arithmetic and `f64`
+//! `eval_array(&[f64; N]) -> [f64; M]`; with `lanes: L` also `LANES` and
+//! `eval_lanes(&[[f64; L]; N]) -> [[f64; L]; M]`. The code is straight-line `f64` arithmetic and `f64`
 //! methods (`sqrt`, `sin`, `cos`, `tan`, `atan2`, `powi`): no allocation, no panics, no macros.
 //! The module also holds `const _: &str = include_str!(...)` of the IR file, so Cargo rebuilds
 //! the calling crate when the file changes.

@@ -49,6 +49,8 @@ pub enum EntryValue {
     Outputs(Vec<Ident>),
     /// `max_fn_ops: N`.
     MaxFnOps(LitInt),
+    /// `lanes: N`.
+    Lanes(LitInt),
 }
 
 /// One `NAME: VALUE` pair of `fixed`; the value is any expression here and must turn out to be
@@ -61,7 +63,7 @@ pub struct FixedEntry {
 }
 
 /// The keys a scene accepts, for error messages.
-pub const KEYS: &str = "`model`, `path`, `fixed`, `outputs`, `max_fn_ops`";
+pub const KEYS: &str = "`model`, `path`, `fixed`, `outputs`, `max_fn_ops`, `lanes`";
 
 impl Parse for SceneInput {
     fn parse(input: ParseStream) -> syn::Result<Self> {
@@ -114,6 +116,7 @@ impl Parse for Entry {
                 EntryValue::Outputs(items.into_iter().collect())
             }
             "max_fn_ops" => EntryValue::MaxFnOps(input.parse()?),
+            "lanes" => EntryValue::Lanes(input.parse()?),
             other => {
                 return Err(syn::Error::new_spanned(
                     &key,

@@ -153,10 +153,14 @@ fn large_programs_are_split() {
     let text = pretty(quote! {
         mod split { model: demo, max_fn_ops: 4 }
     });
-    // 19 operations in chunks of 4: five helper functions.
+    // 19 operations in chunks of 4: five helper functions sharing one struct of crossing values.
     for k in 0..5 {
-        assert!(text.contains(&format!("fn part_{k}(live: &[f64; ")), "part_{k} missing:\n{text}");
+        assert!(
+            text.contains(&format!("fn part_{k}(live: &mut Live)")),
+            "part_{k} missing:\n{text}"
+        );
     }
+    assert_eq!(text.matches("struct Live {").count(), 1, "{text}");
     assert!(!text.contains("fn part_5("), "{text}");
     assert_eq!(text.matches("#[inline(never)]").count(), 5);
     insta::with_settings!({
@@ -165,6 +169,31 @@ fn large_programs_are_split() {
     }, {
         insta::assert_snapshot!("demo_split", text);
     });
+}
+
+#[test]
+fn lanes_add_a_structure_of_arrays_evaluator() {
+    let text = pretty(quote! {
+        mod four { model: demo, max_fn_ops: 8, lanes: 4 }
+    });
+    assert_eq!(const_usize(&text, "LANES"), 4);
+    assert!(text.contains("pub fn eval_lanes(args: &[[f64; 4]; 5]) -> [[f64; 4]; 4]"), "{text}");
+    // Both evaluators are split the same way, each with its own struct of crossing values.
+    for k in 0..3 {
+        assert!(text.contains(&format!("fn part_{k}(live: &mut Live)")), "{text}");
+        assert!(text.contains(&format!("fn lanes_part_{k}(live: &mut LiveLanes)")), "{text}");
+    }
+    // Each helper runs the scalar operations in a loop over the four lanes.
+    assert_eq!(text.matches("for j in 0..4 {").count(), 3 + 2, "{text}");
+    assert!(text.contains("let t6 = x.sin();"), "{text}");
+    insta::with_settings!({
+        description => "scene! over tests/fixtures/demo.ir with 4 lanes, at most 8 operations per function",
+        prepend_module_to_snapshot => false,
+    }, {
+        insta::assert_snapshot!("demo_lanes", text);
+    });
+    let plain = pretty(quote!(mod one { model: demo }));
+    assert!(!plain.contains("eval_lanes") && !plain.contains("LANES"), "{plain}");
 }
 
 #[test]
@@ -323,6 +352,13 @@ fn bad_files() {
         quote!(mod a { model: demo, max_fn_ops: 0 }),
         "`max_fn_ops` must be a positive integer, found `0`",
     );
+    for bad in [quote!(3), quote!(0), quote!(32)] {
+        assert_one_error(
+            quote!(mod a { model: demo, lanes: #bad }),
+            &format!("`lanes` must be 2, 4, 8 or 16, found `{bad}`"),
+        );
+    }
+    assert_one_error(quote!(mod a { model: demo, lanes: 4, lanes: 8 }), "duplicate key `lanes`");
 }
 
 #[test]
@@ -330,7 +366,7 @@ fn malformed_scene_is_one_error() {
     assert_one_error(quote!(mod a { model demo }), "expected `:`");
     assert_one_error(
         quote!(mod a { model: demo, colour: red }),
-        "unknown scene key `colour`; expected one of `model`, `path`, `fixed`, `outputs`, `max_fn_ops`",
+        "unknown scene key `colour`; expected one of `model`, `path`, `fixed`, `outputs`, `max_fn_ops`, `lanes`",
     );
 }
 

@@ -44,6 +44,8 @@ pub struct Scene {
     pub program: Program,
     /// Largest number of operations emitted in one function before splitting.
     pub max_fn_ops: usize,
+    /// `lanes: N`: also emit `eval_lanes` over `N` points per call.
+    pub lanes: Option<usize>,
 }
 
 /// A list of errors that are combined into one `syn::Error`.
@@ -87,6 +89,7 @@ struct Entries {
     fixed: Option<(Ident, Vec<FixedEntry>)>,
     outputs: Option<(Ident, Vec<Ident>)>,
     max_fn_ops: Option<syn::LitInt>,
+    lanes: Option<syn::LitInt>,
 }
 
 /// Validates one scene declaration against its IR file; see the module docs.
@@ -103,6 +106,7 @@ pub fn validate(decl: SceneDecl, ctx: &Context) -> syn::Result<Scene> {
             EntryValue::Fixed(v) => set(&mut e.fixed, (key.clone(), v)),
             EntryValue::Outputs(v) => set(&mut e.outputs, (key.clone(), v)),
             EntryValue::MaxFnOps(v) => set(&mut e.max_fn_ops, v),
+            EntryValue::Lanes(v) => set(&mut e.lanes, v),
         };
         if taken {
             errors.push(syn::Error::new_spanned(&key, format!("duplicate key `{key}`")));
@@ -159,6 +163,16 @@ pub fn validate(decl: SceneDecl, ctx: &Context) -> syn::Result<Scene> {
             }
         },
     };
+    let lanes = e.lanes.as_ref().and_then(|lit| match lit.base10_parse::<usize>() {
+        Ok(n) if emit::LANE_COUNTS.contains(&n) => Some(n),
+        _ => {
+            errors.push(syn::Error::new_spanned(
+                lit,
+                format!("`lanes` must be 2, 4, 8 or 16, found `{lit}`"),
+            ));
+            None
+        }
+    });
 
     let Some(model) = e.model else {
         return Err(errors.fail(syn::Error::new_spanned(
@@ -302,6 +316,7 @@ pub fn validate(decl: SceneDecl, ctx: &Context) -> syn::Result<Scene> {
         source_op_count,
         program,
         max_fn_ops,
+        lanes,
     })
 }
 

@@ -40,6 +40,23 @@ carvallo_macros::scene! {
         path: "fixtures/demo.ir",
         max_fn_ops: 2,
     }
+
+    /// Every output, also on four points per call.
+    pub mod four {
+        model: demo,
+        path: "fixtures/demo.ir",
+        lanes: 4,
+    }
+
+    /// As `fixed`, on eight points per call, at most three operations per function.
+    pub mod eight_split {
+        model: demo,
+        path: "fixtures/demo.ir",
+        fixed: { R: 0.5, g: 9.81 },
+        outputs: [scaled, poly],
+        max_fn_ops: 3,
+        lanes: 8,
+    }
 }
 
 /// Relative tolerance of the comparisons with the 40-digit values: a few ulps of the largest
@@ -150,4 +167,48 @@ fn args_and_outputs_round_trip_through_arrays() {
     let o = full::eval(&a);
     assert_eq!(full::Out::from_array(o.to_array()), o);
     assert_eq!(full::Args::default().to_array(), [0.0; 5]);
+}
+
+/// A seeded SplitMix64 stream of numbers in [-4, 4), with a few special values mixed in.
+fn stream(seed: u64) -> impl FnMut() -> f64 {
+    let mut state = seed;
+    let mut n = 0u32;
+    move || {
+        n += 1;
+        if n.is_multiple_of(17) {
+            return [0.0, -0.0, 1e-300, 1e300][(n / 17 % 4) as usize];
+        }
+        state = state.wrapping_add(0x9E37_79B9_7F4A_7C15);
+        let mut z = state;
+        z = (z ^ (z >> 30)).wrapping_mul(0xBF58_476D_1CE4_E5B9);
+        z = (z ^ (z >> 27)).wrapping_mul(0x94D0_49BB_1331_11EB);
+        z ^= z >> 31;
+        8.0 * ((z >> 11) as f64 / (1u64 << 53) as f64) - 4.0
+    }
+}
+
+#[test]
+fn lanes_equal_the_scalar_evaluator_lane_by_lane_bit_for_bit() {
+    let mut next = stream(15);
+    for _ in 0..500 {
+        let mut args = [[0.0; 4]; 5];
+        args.iter_mut().flatten().for_each(|a| *a = next());
+        let got = four::eval_lanes(&args);
+        for j in 0..4 {
+            let want = full::eval_array(&args.map(|a| a[j]));
+            for k in 0..4 {
+                assert_eq!(got[k][j].to_bits(), want[k].to_bits(), "output {k} lane {j}");
+            }
+        }
+        let mut args = [[0.0; 8]; 2];
+        args.iter_mut().flatten().for_each(|a| *a = next());
+        let got = eight_split::eval_lanes(&args);
+        for j in 0..8 {
+            let want = fixed::eval_array(&args.map(|a| a[j]));
+            for k in 0..2 {
+                assert_eq!(got[k][j].to_bits(), want[k].to_bits(), "fixed output {k} lane {j}");
+            }
+        }
+    }
+    assert_eq!((four::LANES, eight_split::LANES), (4, 8));
 }

@@ -18,7 +18,12 @@
 //!    speeds in [0, 10] m/s), max and quantiles in units of $\varepsilon = 2^{-52}$;
 //! 6. **scenes**: operation count and time of scenes that ask for less (window only, one
 //!    speed's polynomial, full right-hand side), with the benchmark parameters free or fixed;
-//! 7. **sweep**: $10^6$ designs (fewer with `quick`) through [`crate::sweep::sweep`].
+//! 7. **sweep**: $10^6$ designs (fewer with `quick`) through [`crate::sweep::sweep`] (the trail
+//!    on a line) and [`crate::sweep::sweep_designs`] (a Monte Carlo of the 25 parameters other
+//!    than $g$, each scaled in [0.8, 1.2]), with the designs per second.
+//!
+//! The command line appends the C peer and the batched evaluators (`carvallo-cli`'s `bench`
+//! module: it spawns the system C compiler, which a library should not do).
 //!
 //! Timings are wall-clock means over repeated calls (`std::time::Instant`), so they vary from
 //! run to run and machine to machine; errors do not. [`Targets`] compares the ratios asked for in
@@ -158,7 +163,7 @@ pub type Targets = Vec<Target>;
 /// Nanoseconds per call of `f`: the smallest of five means, each over calls lasting at least
 /// `min_time / 5` seconds (the minimum is the estimate least disturbed by other processes on a
 /// shared machine).
-fn time_ns<R>(min_time: f64, mut f: impl FnMut() -> R) -> f64 {
+pub fn time_ns<R>(min_time: f64, mut f: impl FnMut() -> R) -> f64 {
     let slice = min_time / 5.0;
     let mut n = 1u64;
     let mut best = f64::INFINITY;
@@ -923,6 +928,7 @@ crate::scene! {
     /// The nonlinear bicycle's mass matrix $M_3$ and forcing $f_3$, free parameters.
     pub mod nonlinear_rhs_scene {
         model: whipple_nonlinear,
+        lanes: 4,
         outputs: [m3_11, m3_12, m3_13, m3_22, m3_23, m3_33, f3_1, f3_2, f3_3],
     }
 }
@@ -1127,10 +1133,12 @@ fn scene_rows(cfg: &Config, rows: &mut Vec<Row>) {
     }
 }
 
-/// Table 7; returns the Hurwitz sweep's seconds per $10^6$ designs.
-fn sweep_rows(cfg: &Config, rows: &mut Vec<Row>) -> f64 {
+/// Table 7; returns the Hurwitz sweep's seconds per $10^6$ designs and the designs per second
+/// of the Hurwitz sweep and of the Monte Carlo sweep.
+fn sweep_rows(cfg: &Config, rows: &mut Vec<Row>) -> (f64, f64, f64) {
     let base = WhippleParams::benchmark();
     let mut per_million = f64::INFINITY;
+    let mut rates = (0.0, 0.0);
     for (method, count, label) in [
         (Method::Hurwitz, cfg.sweep_count, "hurwitz"),
         (Method::Eigen, cfg.eigen_sweep_count, "eigen"),
@@ -1139,6 +1147,7 @@ fn sweep_rows(cfg: &Config, rows: &mut Vec<Row>) -> f64 {
         let Ok(s) = sweep::sweep(&base, "c", 0.0, 0.2, count, method, &progress) else { continue };
         if method == Method::Hurwitz {
             per_million = s.elapsed * 1e6 / count as f64;
+            rates.0 = s.designs_per_second;
         }
         rows.push(Row {
             section: "sweep",
@@ -1157,7 +1166,36 @@ fn sweep_rows(cfg: &Config, rows: &mut Vec<Row>) -> f64 {
             ),
         });
     }
-    per_million
+    // Monte Carlo: every parameter but g scaled by a factor in [0.8, 1.2].
+    let spreads = PARAM_NAMES
+        .iter()
+        .filter(|n| **n != "g")
+        .map(|n| sweep::Spread { name: n.to_string(), rel: 0.2 })
+        .collect();
+    let designs = sweep::Designs::Random { count: cfg.sweep_count, spreads, seed: 15 };
+    let progress = AtomicUsize::new(0);
+    if let Ok(out) = sweep::sweep_designs(&base, &designs, Method::Hurwitz, false, &progress) {
+        let s = &out.summary;
+        rates.1 = s.designs_per_second;
+        rows.push(Row {
+            section: "sweep",
+            name: format!("random 25 parameters +-20 %, {}", s.count),
+            method: "hurwitz".into(),
+            ops: None,
+            ns: Some(s.elapsed * 1e9 / s.count as f64),
+            max_rel_err: None,
+            note: format!(
+                "{:.3} s, {:.0} designs/s on {} threads, {} stable, {} rejected, weave {:?}",
+                s.elapsed,
+                s.designs_per_second,
+                rayon::current_num_threads(),
+                s.stable,
+                out.rejected,
+                s.weave_range
+            ),
+        });
+    }
+    (per_million, rates.0, rates.1)
 }
 
 /// Runs every measurement (see the [module docs](self)).
@@ -1213,7 +1251,7 @@ pub fn run(cfg: &Config) -> Report {
     certified_rows(cfg, &mut rows);
     let distributions = distributions(cfg);
     scene_rows(cfg, &mut rows);
-    let per_million = sweep_rows(cfg, &mut rows);
+    let (per_million, grid_rate, random_rate) = sweep_rows(cfg, &mut rows);
     let mut targets: Targets = ratios
         .iter()
         .map(|(name, r)| Target {
@@ -1253,6 +1291,17 @@ pub fn run(cfg: &Config) -> Report {
         required: 1.0,
         met: per_million < 1.0,
     });
+    for (what, rate) in [("c sweep", grid_rate), ("Monte Carlo", random_rate)] {
+        targets.push(Target {
+            name: format!(
+                "designs per second, {what}, hurwitz, {} threads (at least)",
+                rayon::current_num_threads()
+            ),
+            measured: rate,
+            required: 1e7,
+            met: rate >= 1e7,
+        });
+    }
     Report {
         mode: if cfg.samples >= 1_000_000 { "full" } else { "quick" },
         rows,

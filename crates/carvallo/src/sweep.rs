@@ -47,6 +47,12 @@
 //!
 //! [`sweep`] computes the window for `count` designs that vary one parameter linearly between
 //! two values, in parallel with rayon, and summarises them ([`SweepSummary`]).
+//! [`sweep_designs`] does the same for a grid of several parameters or for seeded random designs
+//! around a base ([`Designs`]), optionally keeping every design's varied values and window
+//! ([`SweepOutput`]). Both evaluate the matrices four designs per call
+//! (`matrices_scene::eval_lanes`, bit for bit the scalar evaluator lane by lane) and keep of each
+//! window only [`hurwitz_window_summary`], the same code as [`hurwitz_window`] without the
+//! allocation of the stable intervals.
 
 use std::sync::atomic::{AtomicUsize, Ordering};
 use std::time::Instant;
@@ -211,6 +217,58 @@ pub fn hurwitz_window_polished(m: &Matrices, g: f64) -> StabilityWindow {
 }
 
 fn window(m: &Matrices, g: f64, polished: bool) -> StabilityWindow {
+    let mut stable: Vec<(f64, f64)> = Vec::new();
+    let (weave_speed, capsize_speed) = window_into(m, g, polished, &mut |lo, hi| {
+        match stable.last_mut() {
+            Some(last) if last.1 == lo => last.1 = hi,
+            _ => stable.push((lo, hi)),
+        }
+        true
+    });
+    StabilityWindow { weave_speed, capsize_speed, stable }
+}
+
+/// The weave and capsize speeds and whether any speed is stable, as [`hurwitz_window`] computes
+/// them (the same code), without collecting the stable intervals: what a sweep keeps of each
+/// design, without allocating.
+pub fn hurwitz_window_summary(m: &Matrices, g: f64) -> WindowSummary {
+    let mut stable = false;
+    let (weave_speed, capsize_speed) = window_into(m, g, false, &mut |_, _| {
+        stable = true;
+        false
+    });
+    WindowSummary { weave_speed, capsize_speed, stable }
+}
+
+/// What a sweep keeps of one design's window.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct WindowSummary {
+    /// [`StabilityWindow::weave_speed`].
+    pub weave_speed: Option<f64>,
+    /// [`StabilityWindow::capsize_speed`].
+    pub capsize_speed: Option<f64>,
+    /// Whether [`StabilityWindow::stable`] is not empty.
+    pub stable: bool,
+}
+
+impl From<&StabilityWindow> for WindowSummary {
+    fn from(w: &StabilityWindow) -> WindowSummary {
+        WindowSummary {
+            weave_speed: w.weave_speed,
+            capsize_speed: w.capsize_speed,
+            stable: !w.stable.is_empty(),
+        }
+    }
+}
+
+/// The Hurwitz window: returns the weave and capsize speeds and hands every stable interval
+/// between consecutive cuts, in increasing order, to `stable`, until it returns `false`.
+fn window_into(
+    m: &Matrices,
+    g: f64,
+    polished: bool,
+    stable: &mut dyn FnMut(f64, f64) -> bool,
+) -> (Option<f64>, Option<f64>) {
     let mut p = HurwitzPolys::new(m, g);
     let dd = polished.then(|| dd_coefficients(m, g));
     let (mut a0_roots, n_a0) = positive_roots(p.a0);
@@ -221,7 +279,7 @@ fn window(m: &Matrices, g: f64, polished: bool) -> StabilityWindow {
     }
     let capsize_speed = (n_a0 > 0).then(|| a0_roots[0].sqrt());
     if p.a4 == 0.0 || !p.a4.is_finite() {
-        return StabilityWindow { weave_speed: None, capsize_speed, stable: Vec::new() };
+        return (None, capsize_speed);
     }
     if p.a4 < 0.0 {
         // Same roots, a positive leading coefficient; H3 is homogeneous of degree 3.
@@ -259,21 +317,17 @@ fn window(m: &Matrices, g: f64, polished: bool) -> StabilityWindow {
     let cuts = &mut cuts[..n];
     cuts.sort_by(f64::total_cmp);
     let stable_at = |v: f64| p.at(v).iter().all(|&x| x > 0.0);
-    let mut stable: Vec<(f64, f64)> = Vec::new();
     let mut lo = 0.0;
     for hi in cuts.iter().copied().chain([f64::INFINITY]) {
         if hi > lo {
             let mid = if hi.is_finite() { 0.5 * (lo + hi) } else { 2.0 * lo + 1.0 };
-            if stable_at(mid) {
-                match stable.last_mut() {
-                    Some(last) if last.1 == lo => last.1 = hi,
-                    _ => stable.push((lo, hi)),
-                }
+            if stable_at(mid) && !stable(lo, hi) {
+                break;
             }
         }
         lo = hi;
     }
-    StabilityWindow { weave_speed, capsize_speed, stable }
+    (weave_speed, capsize_speed)
 }
 
 /// The state matrix of $(\varphi, \delta, \varphi', \delta')$ at speed `v`.
@@ -594,12 +648,12 @@ impl Acc {
         capsize_range: (f64::INFINITY, f64::NEG_INFINITY),
     };
 
-    fn add(mut self, w: Option<&StabilityWindow>) -> Acc {
+    fn add(mut self, w: Option<&WindowSummary>) -> Acc {
         let Some(w) = w else {
             self.failed += 1;
             return self;
         };
-        self.stable += usize::from(!w.stable.is_empty());
+        self.stable += usize::from(w.stable);
         if let Some(x) = w.weave_speed {
             self.weave += 1;
             self.weave_range = (self.weave_range.0.min(x), self.weave_range.1.max(x));
@@ -635,6 +689,7 @@ impl Acc {
 ///
 /// Both ends are validated with [`WhippleParams::from_values`]; every check there confines one
 /// parameter to an interval, so the designs in between are valid too and are not checked again.
+/// The same as [`sweep_designs`] with one [`Vary`].
 ///
 /// # Errors
 /// [`SweepError`] for an unknown name, a zero count or an invalid end of the range.
@@ -647,47 +702,302 @@ pub fn sweep(
     method: Method,
     progress: &AtomicUsize,
 ) -> Result<SweepSummary, SweepError> {
-    let k = PARAM_NAMES
-        .iter()
-        .position(|n| *n == name)
-        .ok_or_else(|| SweepError::UnknownParameter { name: name.to_string() })?;
-    if count == 0 {
-        return Err(SweepError::InvalidCount { count });
+    let designs = Designs::Grid(vec![Vary { name: name.to_string(), from, to, count }]);
+    match sweep_designs(base, &designs, method, false, progress) {
+        Ok(out) => Ok(out.summary),
+        Err(DesignsError::Sweep(e)) => Err(e),
+        // A grid of one axis has no spread, no repeated parameter, is not empty and its count
+        // fits: only `DesignsError::Sweep` can occur; any other is reported by its text.
+        Err(e) => Err(SweepError::UnknownParameter { name: e.to_string() }),
     }
-    for x in [from, to] {
-        let mut v = *base.values();
-        v[k] = x;
-        WhippleParams::from_values(v).map_err(SweepError::InvalidDesign)?;
+}
+
+/// One axis of a grid: `count` values of parameter `name` from `from` to `to` (both included;
+/// `count = 1` takes `from`), $x_i = \text{from} + (\text{to} - \text{from})\,i/(\text{count}-1)$
+/// and the last exactly `to`.
+#[derive(Clone, Debug, PartialEq)]
+pub struct Vary {
+    /// The parameter, one of [`PARAM_NAMES`].
+    pub name: String,
+    /// The first value.
+    pub from: f64,
+    /// The last value.
+    pub to: f64,
+    /// The number of values.
+    pub count: usize,
+}
+
+impl Vary {
+    /// The `i`-th value.
+    fn at(&self, i: usize) -> f64 {
+        if self.count == 1 {
+            self.from
+        } else if i + 1 == self.count {
+            self.to
+        } else {
+            self.from + (self.to - self.from) * (i as f64 / (self.count - 1) as f64)
+        }
     }
+}
+
+/// A random perturbation: parameter `name` times a uniform factor in $[1 - r, 1 + r]$.
+#[derive(Clone, Debug, PartialEq)]
+pub struct Spread {
+    /// The parameter, one of [`PARAM_NAMES`].
+    pub name: String,
+    /// The relative spread $r$, in $[0, 1)$.
+    pub rel: f64,
+}
+
+/// The designs of [`sweep_designs`].
+#[derive(Clone, Debug, PartialEq)]
+pub enum Designs {
+    /// Every combination of the axes' values; the first axis varies slowest (design
+    /// $i = (i_1 n_2 + i_2) n_3 + i_3 \dots$).
+    Grid(Vec<Vary>),
+    /// `count` designs around the base, each parameter of `spreads` scaled independently, drawn
+    /// from the seeded SplitMix64 stream [`Rng`](crate::bench::Rng) of design $i$ (seed
+    /// `seed + i`), so that the designs do not depend on the number of threads. A draw that
+    /// [`WhippleParams::from_values`] rejects is redrawn from the same stream, at most
+    /// [`MAX_DRAWS`] times; a design still invalid then is counted as rejected.
+    Random {
+        /// The number of designs.
+        count: usize,
+        /// The perturbed parameters.
+        spreads: Vec<Spread>,
+        /// The seed.
+        seed: u64,
+    },
+}
+
+/// The most draws of one random design (see [`Designs::Random`]).
+pub const MAX_DRAWS: usize = 100;
+
+/// Why [`sweep_designs`] could not run.
+#[derive(Clone, Debug, PartialEq)]
+pub enum DesignsError {
+    /// An unknown parameter, a zero count or an invalid corner of a grid.
+    Sweep(SweepError),
+    /// A parameter given twice.
+    DuplicateParameter {
+        /// The name.
+        name: String,
+    },
+    /// A spread outside $[0, 1)$.
+    InvalidSpread {
+        /// The parameter.
+        name: String,
+        /// The spread given.
+        rel: f64,
+    },
+    /// A grid with no axis.
+    EmptyGrid,
+    /// More designs than a `usize` holds.
+    TooManyDesigns,
+}
+
+impl std::fmt::Display for DesignsError {
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        match self {
+            DesignsError::Sweep(e) => write!(f, "{e}"),
+            DesignsError::DuplicateParameter { name } => {
+                write!(f, "parameter {name} is varied more than once")
+            }
+            DesignsError::InvalidSpread { name, rel } => {
+                write!(f, "invalid spread {rel} of {name}: must lie in [0, 1)")
+            }
+            DesignsError::EmptyGrid => write!(f, "no parameter to vary"),
+            DesignsError::TooManyDesigns => write!(f, "too many designs"),
+        }
+    }
+}
+
+impl std::error::Error for DesignsError {}
+
+/// What [`sweep_designs`] found.
+#[derive(Clone, Debug, PartialEq)]
+pub struct SweepOutput {
+    /// The summary over the designs (rejected random designs not counted in `stable`, ...).
+    pub summary: SweepSummary,
+    /// The varied parameters, in the order of the axes or spreads.
+    pub names: Vec<String>,
+    /// With `record`: the varied parameters' values of design `i` at
+    /// `values[i * names.len()..(i + 1) * names.len()]`; empty otherwise.
+    pub values: Vec<f64>,
+    /// With `record`: the window of design `i`, `None` when the eigenvalue route failed or the
+    /// random design was rejected; empty otherwise.
+    pub windows: Vec<Option<WindowSummary>>,
+    /// With `record`: whether design `i` is valid (`false` for a rejected random design);
+    /// empty otherwise.
+    pub valid: Vec<bool>,
+    /// How many random designs were rejected (always 0 for a grid).
+    pub rejected: usize,
+}
+
+/// The index in [`PARAM_NAMES`] of each name, each at most once.
+fn param_indices<'a>(names: impl Iterator<Item = &'a str>) -> Result<Vec<usize>, DesignsError> {
+    let mut out: Vec<usize> = Vec::new();
+    for name in names {
+        let k = PARAM_NAMES.iter().position(|n| *n == name).ok_or_else(|| {
+            DesignsError::Sweep(SweepError::UnknownParameter { name: name.to_string() })
+        })?;
+        if out.contains(&k) {
+            return Err(DesignsError::DuplicateParameter { name: name.to_string() });
+        }
+        out.push(k);
+    }
+    Ok(out)
+}
+
+/// Designs processed per parallel task (a multiple of the lanes).
+const CHUNK: usize = 4096;
+/// Designs per call of [`matrices_scene::eval_lanes`].
+const LANES: usize = matrices_scene::LANES;
+
+/// Computes the window of every design of `designs` (a grid or random designs around `base`),
+/// in parallel with rayon, four designs per evaluation of the matrices
+/// ([`matrices_scene::eval_lanes`], bit for bit the scalar evaluator, so the answers are those
+/// of [`hurwitz_window`] or [`eigen_window`] design by design). With `record` the varied values
+/// and the window of every design are kept in [`SweepOutput`]. `progress` is increased by the
+/// number of designs done as chunks finish.
+///
+/// The corners of a grid are validated with [`WhippleParams::from_values`]: its checks are
+/// linear inequalities (intervals, positive values, triangle inequalities of the moments of
+/// inertia), whose valid set is convex, so every design of the grid is valid too.
+///
+/// # Errors
+/// [`DesignsError`] for an unknown or repeated name, a zero count, an empty grid, an invalid
+/// corner or spread.
+pub fn sweep_designs(
+    base: &WhippleParams,
+    designs: &Designs,
+    method: Method,
+    record: bool,
+    progress: &AtomicUsize,
+) -> Result<SweepOutput, DesignsError> {
+    let base_values = *base.values();
+    let (names, keys, count): (Vec<String>, Vec<usize>, usize) = match designs {
+        Designs::Grid(axes) => {
+            if axes.is_empty() {
+                return Err(DesignsError::EmptyGrid);
+            }
+            let keys = param_indices(axes.iter().map(|a| a.name.as_str()))?;
+            let mut count = 1usize;
+            for a in axes {
+                if a.count == 0 {
+                    return Err(DesignsError::Sweep(SweepError::InvalidCount { count: 0 }));
+                }
+                count = count.checked_mul(a.count).ok_or(DesignsError::TooManyDesigns)?;
+            }
+            // Every corner of the box (2^axes of them; the axes are few).
+            for corner in 0..1usize << axes.len().min(20) {
+                let mut v = base_values;
+                for (j, (a, &k)) in axes.iter().zip(&keys).enumerate() {
+                    v[k] = if corner >> j & 1 == 0 { a.from } else { a.to };
+                }
+                WhippleParams::from_values(v)
+                    .map_err(|e| DesignsError::Sweep(SweepError::InvalidDesign(e)))?;
+            }
+            (axes.iter().map(|a| a.name.clone()).collect(), keys, count)
+        }
+        Designs::Random { count, spreads, .. } => {
+            if *count == 0 {
+                return Err(DesignsError::Sweep(SweepError::InvalidCount { count: 0 }));
+            }
+            let keys = param_indices(spreads.iter().map(|s| s.name.as_str()))?;
+            for s in spreads {
+                if !(0.0..1.0).contains(&s.rel) {
+                    return Err(DesignsError::InvalidSpread { name: s.name.clone(), rel: s.rel });
+                }
+            }
+            (spreads.iter().map(|s| s.name.clone()).collect(), keys, *count)
+        }
+    };
+    // Design i's parameter vector; false for a rejected random design.
+    let fill = |i: usize, v: &mut [f64; 26]| -> bool {
+        match designs {
+            Designs::Grid(axes) => {
+                let mut rest = i;
+                for (a, &k) in axes.iter().zip(&keys).rev() {
+                    v[k] = a.at(rest % a.count);
+                    rest /= a.count;
+                }
+                true
+            }
+            Designs::Random { spreads, seed, .. } => {
+                let mut rng = crate::bench::Rng::new(seed.wrapping_add(i as u64));
+                for _ in 0..MAX_DRAWS {
+                    for (s, &k) in spreads.iter().zip(&keys) {
+                        v[k] = rng.scale(base_values[k], s.rel);
+                    }
+                    if crate::whipple::valid_fast(v) {
+                        return true;
+                    }
+                }
+                false
+            }
+        }
+    };
     let index: Vec<usize> = matrices_scene::PARAMS
         .iter()
         .map(|p| PARAM_NAMES.iter().position(|n| n == p).unwrap_or(0))
         .collect();
     let g = base.get("g").unwrap_or(f64::NAN);
+    let n_names = names.len();
     let start = Instant::now();
-    let chunk = 4096;
-    let acc = (0..count.div_ceil(chunk))
+    let parts: Vec<Part> = (0..count.div_ceil(CHUNK))
         .into_par_iter()
         .map(|c| {
-            let mut acc = Acc::EMPTY;
-            let mut values = *base.values();
-            let end = ((c + 1) * chunk).min(count);
-            for i in c * chunk..end {
-                let t = if count == 1 { 0.0 } else { i as f64 / (count - 1) as f64 };
-                values[k] = if count > 1 && i + 1 == count { to } else { from + (to - from) * t };
-                let m = matrices_of(&values, &index);
-                acc = match method {
-                    Method::Hurwitz => acc.add(Some(&hurwitz_window(&m, g))),
-                    Method::Eigen => acc.add(eigen_window(&m, g, EigenGrid::default()).as_ref()),
+            let (lo, hi) = (c * CHUNK, ((c + 1) * CHUNK).min(count));
+            let mut part = Part::new(record, (hi - lo) * n_names);
+            let mut values = [base_values; LANES];
+            let mut ok = [true; LANES];
+            for group in (lo..hi).step_by(LANES) {
+                let n = LANES.min(hi - group);
+                for j in 0..n {
+                    values[j] = base_values;
+                    ok[j] = fill(group + j, &mut values[j]);
+                }
+                let windows: [Option<WindowSummary>; LANES] = match method {
+                    Method::Hurwitz => {
+                        let args: [[f64; LANES]; matrices_scene::Args::LEN] =
+                            std::array::from_fn(|a| std::array::from_fn(|j| values[j][index[a]]));
+                        let o = matrices_scene::eval_lanes(&args);
+                        std::array::from_fn(|j| {
+                            let r = |k: usize| [[o[k][j], o[k + 1][j]], [o[k + 2][j], o[k + 3][j]]];
+                            let m = Matrices { m: r(0), c1: r(4), k0: r(8), k2: r(12) };
+                            Some(hurwitz_window_summary(&m, g))
+                        })
+                    }
+                    Method::Eigen => std::array::from_fn(|j| {
+                        if j >= n {
+                            return None;
+                        }
+                        let m = matrices_of(&values[j], &index);
+                        eigen_window(&m, g, EigenGrid::default()).as_ref().map(WindowSummary::from)
+                    }),
                 };
+                for j in 0..n {
+                    part.add(ok[j], windows[j], keys.iter().map(|&k| values[j][k]));
+                }
             }
-            progress.fetch_add(end - c * chunk, Ordering::Relaxed);
-            acc
+            progress.fetch_add(hi - lo, Ordering::Relaxed);
+            part
         })
-        .reduce(|| Acc::EMPTY, Acc::merge);
+        .collect();
     let elapsed = start.elapsed().as_secs_f64();
+    let mut acc = Acc::EMPTY;
+    let (mut values, mut windows, mut valid, mut rejected) =
+        (Vec::new(), Vec::new(), Vec::new(), 0);
+    for p in parts {
+        acc = acc.merge(p.acc);
+        rejected += p.rejected;
+        values.extend(p.values);
+        windows.extend(p.windows);
+        valid.extend(p.valid);
+    }
     let range = |n: usize, r: (f64, f64)| (n > 0).then_some(r);
-    Ok(SweepSummary {
+    let summary = SweepSummary {
         count,
         elapsed,
         designs_per_second: count as f64 / elapsed,
@@ -697,5 +1007,46 @@ pub fn sweep(
         weave_range: range(acc.weave, acc.weave_range),
         capsize_range: range(acc.capsize, acc.capsize_range),
         failed: acc.failed,
-    })
+    };
+    Ok(SweepOutput { summary, names, values, windows, valid, rejected })
+}
+
+/// The results of one parallel task of [`sweep_designs`].
+struct Part {
+    acc: Acc,
+    rejected: usize,
+    record: bool,
+    values: Vec<f64>,
+    windows: Vec<Option<WindowSummary>>,
+    valid: Vec<bool>,
+}
+
+impl Part {
+    fn new(record: bool, n_values: usize) -> Part {
+        let cap = |n: usize| if record { n } else { 0 };
+        Part {
+            acc: Acc::EMPTY,
+            rejected: 0,
+            record,
+            values: Vec::with_capacity(cap(n_values)),
+            windows: Vec::with_capacity(cap(CHUNK)),
+            valid: Vec::with_capacity(cap(CHUNK)),
+        }
+    }
+
+    /// Adds one design: `ok` false for a rejected random design, `w` `None` when the window
+    /// could not be computed.
+    fn add(&mut self, ok: bool, w: Option<WindowSummary>, values: impl Iterator<Item = f64>) {
+        let w = if ok { w } else { None };
+        if ok {
+            self.acc = self.acc.add(w.as_ref());
+        } else {
+            self.rejected += 1;
+        }
+        if self.record {
+            self.values.extend(values);
+            self.windows.push(w);
+            self.valid.push(ok);
+        }
+    }
 }

@@ -20,9 +20,11 @@ use std::fmt;
 use nalgebra::Matrix4;
 
 crate::scene! {
-    /// The sixteen entries of $M$, $C_1$, $K_0$, $K_2$.
+    /// The sixteen entries of $M$, $C_1$, $K_0$, $K_2$ (also on four designs per call, for
+    /// the sweeps).
     pub mod matrices_scene {
         model: whipple,
+        lanes: 4,
         outputs: [m11, m12, m21, m22, c1_11, c1_12, c1_21, c1_22,
                   k0_11, k0_12, k0_21, k0_22, k2_11, k2_12, k2_21, k2_22],
     }
@@ -77,6 +79,43 @@ const POSITIVE: [&str; 17] = [
     "w", "g", "rR", "mR", "IRxx", "IRyy", "mB", "IBxx", "IByy", "IBzz", "mH", "IHxx", "IHyy",
     "IHzz", "rF", "mF", "IFxx",
 ];
+
+/// The positions of [`POSITIVE`] in [`PARAM_NAMES`] (a test checks them).
+const POSITIVE_INDEX: [usize; 17] = [0, 3, 4, 5, 6, 7, 10, 11, 12, 13, 17, 18, 19, 20, 22, 23, 24];
+
+/// Whether [`WhippleParams::from_values`] accepts `v`: the same conditions, by index and without
+/// building an error (a sweep of random designs checks every design; the detailed checks that
+/// name the offending key take microseconds). A test checks the two against each other.
+pub(crate) fn valid_fast(v: &[f64; 26]) -> bool {
+    const SLACK: f64 = 1e-9;
+    if !v.iter().all(|x| x.is_finite() && x.abs() <= MAX_MAGNITUDE) {
+        return false;
+    }
+    if !POSITIVE_INDEX.iter().all(|&k| v[k] >= MIN_POSITIVE) {
+        return false;
+    }
+    if v[2].abs() >= std::f64::consts::FRAC_PI_2 {
+        return false;
+    }
+    for (xx, yy) in [(6, 7), (24, 25)] {
+        if v[yy] > 2.0 * v[xx] * (1.0 + SLACK) {
+            return false;
+        }
+    }
+    for (xx, yy, zz, xz) in [(11, 12, 13, 14), (18, 19, 20, 21)] {
+        let (a, c, d, yy) = (v[xx], v[zz], v[xz], v[yy]);
+        if a * c - d * d <= 0.0 {
+            return false;
+        }
+        let mean = 0.5 * (a + c);
+        let half = (0.25 * (a - c) * (a - c) + d * d).sqrt();
+        let (l1, l2) = (mean - half, mean + half);
+        if yy > (l1 + l2) * (1.0 + SLACK) || l2 > (l1 + yy) * (1.0 + SLACK) {
+            return false;
+        }
+    }
+    true
+}
 
 /// Largest magnitude accepted for any parameter (SI units). The Hurwitz determinant is a
 /// product of up to six matrix entries, each a product of up to three parameters, so beyond
@@ -232,6 +271,9 @@ impl WhippleParams {
     /// not positive definite in its x–z plane, or moments of inertia that break the triangle
     /// inequalities.
     pub fn from_values(values: [f64; 26]) -> Result<WhippleParams, WhippleError> {
+        if valid_fast(&values) {
+            return Ok(WhippleParams { values });
+        }
         for (key, &value) in PARAM_NAMES.iter().zip(&values) {
             if !value.is_finite() {
                 return Err(WhippleError::InvalidParameter {
@@ -586,5 +628,64 @@ impl Whipple {
     /// microsecond from the matrices).
     pub fn stability_window(&self) -> StabilityWindow {
         crate::sweep::hurwitz_window_polished(&self.matrices, self.params.value("g"))
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn fast_validity_is_the_detailed_one() {
+        let names: Vec<&str> = POSITIVE_INDEX.iter().map(|&k| PARAM_NAMES[k]).collect();
+        assert_eq!(names, POSITIVE);
+        let base = *WhippleParams::benchmark().values();
+        let mut state = 99u64;
+        let mut next = || {
+            state = state.wrapping_add(0x9E37_79B9_7F4A_7C15);
+            let mut z = state;
+            z = (z ^ (z >> 30)).wrapping_mul(0xBF58_476D_1CE4_E5B9);
+            z = (z ^ (z >> 27)).wrapping_mul(0x94D0_49BB_1331_11EB);
+            (z ^ (z >> 31)) >> 11
+        };
+        let (mut valid, mut invalid) = (0, 0);
+        for i in 0..200_000 {
+            let mut v = base;
+            // Scale a few parameters by factors in [-1, 3], sometimes to special values.
+            for _ in 0..1 + i % 4 {
+                let k = (next() % 26) as usize;
+                let u = next() as f64 / (1u64 << 53) as f64;
+                v[k] = match next() % 50 {
+                    0 => f64::NAN,
+                    1 => 0.0,
+                    2 => 1e-16,
+                    3 => 2e15,
+                    _ => v[k] * (4.0 * u - 1.0),
+                };
+            }
+            // The detailed checks alone (what from_values did before the fast path).
+            let detailed = {
+                let p = WhippleParams { values: v };
+                let finite_and_sized = PARAM_NAMES.iter().zip(&v).all(|(key, &x)| {
+                    x.is_finite()
+                        && x.abs() <= MAX_MAGNITUDE
+                        && (!POSITIVE.contains(key) || x >= MIN_POSITIVE)
+                });
+                finite_and_sized
+                    && v[2].abs() < std::f64::consts::FRAC_PI_2
+                    && [(11, 13, 14), (18, 20, 21)]
+                        .iter()
+                        .all(|&(a, c, d)| v[a] * v[c] - v[d] * v[d] > 0.0)
+                    && p.check_triangle_inequalities().is_ok()
+            };
+            assert_eq!(valid_fast(&v), detailed, "{v:?}");
+            assert_eq!(WhippleParams::from_values(v).is_ok(), detailed, "{v:?}");
+            if detailed {
+                valid += 1;
+            } else {
+                invalid += 1;
+            }
+        }
+        assert!(valid > 10_000 && invalid > 10_000, "{valid} valid, {invalid} invalid");
     }
 }

@@ -198,3 +198,148 @@ fn eigenvalues_of_x4_plus_1_terminate() {
         }
     }
 }
+
+/// The window of one design by the scalar route: the matrices by `Whipple::matrices` (the
+/// scalar generated evaluator), then the summary of the Hurwitz window.
+fn scalar_summary(values: [f64; 26]) -> sweep::WindowSummary {
+    let w = Whipple::new(WhippleParams::from_values(values).expect("a valid design"));
+    let (m, g) = parts(&w);
+    let summary = sweep::hurwitz_window_summary(&m, g);
+    assert_eq!(summary, sweep::WindowSummary::from(&sweep::hurwitz_window(&m, g)));
+    summary
+}
+
+#[test]
+fn grid_of_two_parameters_gives_the_scalar_windows_design_by_design() {
+    use sweep::{Designs, Vary};
+    let base = WhippleParams::benchmark();
+    let axes = vec![
+        Vary { name: "c".into(), from: 0.0, to: 0.2, count: 7 },
+        Vary { name: "w".into(), from: 0.9, to: 1.3, count: 5 },
+    ];
+    let progress = AtomicUsize::new(0);
+    let out = sweep::sweep_designs(&base, &Designs::Grid(axes), Method::Hurwitz, true, &progress)
+        .unwrap();
+    assert_eq!(out.summary.count, 35);
+    assert_eq!(progress.into_inner(), 35);
+    assert_eq!(out.names, ["c", "w"]);
+    assert_eq!((out.values.len(), out.windows.len(), out.rejected), (70, 35, 0));
+    let (k_c, k_w) = (1, 0);
+    let mut stable = 0;
+    for i in 0..35 {
+        // The first axis varies slowest; the last value of an axis is exactly `to`.
+        let (c, w) = (out.values[2 * i], out.values[2 * i + 1]);
+        let want_c = if i / 5 == 6 { 0.2 } else { 0.2 * ((i / 5) as f64 / 6.0) };
+        let want_w = if i % 5 == 4 { 1.3 } else { 0.9 + 0.4 * ((i % 5) as f64 / 4.0) };
+        assert_eq!((c, w), (want_c, want_w), "design {i}");
+        let mut v = *base.values();
+        (v[k_c], v[k_w]) = (c, w);
+        let got = out.windows[i].expect("the Hurwitz route always gives a window");
+        assert_eq!(got, scalar_summary(v), "design {i}: c = {c}, w = {w}");
+        stable += usize::from(got.stable);
+    }
+    assert_eq!(out.summary.stable, stable);
+    // One axis gives what `sweep` gives.
+    let one = sweep::sweep(&base, "c", 0.0, 0.2, 7, Method::Hurwitz, &AtomicUsize::new(0)).unwrap();
+    let grid = sweep::sweep_designs(
+        &base,
+        &Designs::Grid(vec![Vary { name: "c".into(), from: 0.0, to: 0.2, count: 7 }]),
+        Method::Hurwitz,
+        false,
+        &AtomicUsize::new(0),
+    )
+    .unwrap();
+    assert_eq!(
+        (one.stable, one.weave_range, one.capsize_range),
+        (7, grid.summary.weave_range, grid.summary.capsize_range)
+    );
+    assert!(grid.values.is_empty() && grid.windows.is_empty());
+}
+
+#[test]
+fn random_designs_are_seeded_valid_and_give_the_scalar_windows() {
+    use sweep::{Designs, Spread};
+    let base = WhippleParams::benchmark();
+    let spreads = vec![
+        Spread { name: "c".into(), rel: 0.5 },
+        Spread { name: "IBxx".into(), rel: 0.9 },
+        Spread { name: "mB".into(), rel: 0.2 },
+    ];
+    let designs = Designs::Random { count: 1001, spreads, seed: 7 };
+    let run = || {
+        sweep::sweep_designs(&base, &designs, Method::Hurwitz, true, &AtomicUsize::new(0)).unwrap()
+    };
+    let (a, b) = (run(), run());
+    assert_eq!(a.values, b.values, "the same seed gives the same designs");
+    assert_eq!(a.windows, b.windows);
+    let keys = [1, 11, 10];
+    let mut valid = 0;
+    for i in 0..1001 {
+        let mut v = *base.values();
+        for (j, &k) in keys.iter().enumerate() {
+            let x = a.values[3 * i + j];
+            let rel = [0.5, 0.9, 0.2][j];
+            assert!((x / v[k] - 1.0).abs() <= rel * (1.0 + 1e-15), "design {i}: {x}");
+            v[k] = x;
+        }
+        match a.windows[i] {
+            Some(w) => {
+                assert_eq!(w, scalar_summary(v), "design {i}");
+                valid += 1;
+            }
+            // IBxx scaled by up to 1.9 can violate IBxx <= IByy + IBzz a hundred times over.
+            None => assert!(WhippleParams::from_values(v).is_err(), "design {i}"),
+        }
+    }
+    assert_eq!(valid + a.rejected, 1001);
+    assert_eq!(a.summary.count, 1001);
+    let other = sweep::sweep_designs(
+        &base,
+        &Designs::Random {
+            count: 1001,
+            spreads: vec![Spread { name: "c".into(), rel: 0.5 }],
+            seed: 8,
+        },
+        Method::Hurwitz,
+        true,
+        &AtomicUsize::new(0),
+    )
+    .unwrap();
+    assert_ne!(other.values[..3], a.values[..3]);
+}
+
+#[test]
+fn bad_designs_are_errors_naming_the_value() {
+    use sweep::{Designs, DesignsError, Spread, Vary};
+    let base = WhippleParams::benchmark();
+    let run = |d: Designs| {
+        sweep::sweep_designs(&base, &d, Method::Hurwitz, false, &AtomicUsize::new(0)).unwrap_err()
+    };
+    let vary =
+        |name: &str, from: f64, to: f64, count: usize| Vary { name: name.into(), from, to, count };
+    assert_eq!(
+        run(Designs::Grid(vec![vary("c", 0.0, 0.1, 3), vary("c", 0.0, 0.2, 3)])),
+        DesignsError::DuplicateParameter { name: "c".into() }
+    );
+    assert_eq!(run(Designs::Grid(vec![])), DesignsError::EmptyGrid);
+    assert_eq!(
+        run(Designs::Grid(vec![vary("c", 0.0, 0.1, 3), vary("x", 0.0, 0.2, 3)])).to_string(),
+        "unknown parameter x"
+    );
+    // Every corner of the grid is validated.
+    let err = run(Designs::Grid(vec![vary("mB", 85.0, -1.0, 3), vary("w", 1.0, 1.1, 2)]));
+    assert!(err.to_string().starts_with("invalid design at an end of the range"), "{err}");
+    assert_eq!(
+        run(Designs::Random {
+            count: 5,
+            spreads: vec![Spread { name: "w".into(), rel: 1.0 }],
+            seed: 1
+        })
+        .to_string(),
+        "invalid spread 1 of w: must lie in [0, 1)"
+    );
+    assert_eq!(
+        run(Designs::Random { count: 0, spreads: vec![], seed: 1 }).to_string(),
+        "invalid count 0: must be at least 1"
+    );
+}
