@@ -29,7 +29,7 @@ crate::scene! {
 }
 
 /// The IR text of the model, for high-precision cross-checks.
-pub const HOOP_DISCUSSION_IR: &str = include_str!("../../../generated/hoop_discussion.ir");
+pub const HOOP_DISCUSSION_IR: &str = crate::artifacts::HOOP_DISCUSSION.ir;
 
 /// Evaluates every output of the model at the named parameter and input values (missing names
 /// are 0); returns the outputs by name. Outputs that do not depend on a given argument ignore
@@ -94,8 +94,9 @@ pub struct VerticalTangent {
     pub y_product: f64,
 }
 
-/// Bisection for a root of a continuous `f` with a sign change on `[lo, hi]`.
-pub(crate) fn bisect(f: impl Fn(f64) -> f64, mut lo: f64, mut hi: f64) -> Option<f64> {
+/// Bisection for a root of a continuous `f` with a sign change on `[lo, hi]`; `None` when `f`
+/// is not finite at an end or has the same sign at both.
+pub fn bisect(f: impl Fn(f64) -> f64, mut lo: f64, mut hi: f64) -> Option<f64> {
     let flo = f(lo);
     if !(flo.is_finite() && f(hi).is_finite()) || flo.signum() == f(hi).signum() {
         return None;
