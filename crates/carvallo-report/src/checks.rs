@@ -6,6 +6,7 @@ use std::collections::BTreeMap;
 pub use carvallo::artifacts::{parse_checks, SymbolicCheck};
 
 use crate::entry::{Derived, Entry, Memoir, Verdict};
+use crate::policy::{self, Expect};
 
 /// The symbolic checks of one model's `checks.tsv` (text `tsv`, file `generated/{file}`) as
 /// report entries, one per check, named `{label} check {id}`. A check listed in `findings`
@@ -28,7 +29,7 @@ pub(crate) fn check_entries(
                 memoir: Memoir::Formula(format!("generated/{file}")),
                 derived: Derived::Numbers(BTreeMap::new()),
                 rel_diff: None,
-                verdict: Verdict::DerivationDiffers,
+                verdict: policy::finding(Verdict::DerivationDiffers),
                 note: format!("cannot read generated/{file}: {message}"),
             }]
         }
@@ -38,12 +39,13 @@ pub(crate) fn check_entries(
         .map(|c| {
             let finding = findings.iter().find(|(id, _, _)| *id == c.id);
             let detail: String = c.detail.chars().take(detail_chars).collect();
-            let (verdict, why) = match finding {
-                Some((_, v, why)) if !c.holds => (*v, format!("; {why}")),
-                Some(_) => (Verdict::DerivationDiffers, "; expected not to hold".to_string()),
-                None if c.holds => (Verdict::Agrees, String::new()),
-                None => (Verdict::DerivationDiffers, String::new()),
+            let why = match finding {
+                Some((_, _, why)) if !c.holds => format!("; {why}"),
+                Some(_) => "; expected not to hold".to_string(),
+                None => String::new(),
             };
+            let expect = finding.map_or(Expect::Holds, |(_, v, _)| Expect::Finding(*v));
+            let verdict = policy::check(c.holds, expect);
             Entry {
                 section: c.section.clone(),
                 quantity: format!("{label} check {}", c.id),

@@ -19,7 +19,7 @@ use carvallo::hoop_discussion::bisect;
 
 use crate::checks::{parse_checks, SymbolicCheck};
 use crate::entry::{section_key, Derived, Entry, Memoir, Verdict};
-use crate::policy::{number_entry, rel_diff, AGREEMENT_TOLERANCE, REL_DIFF_FLOOR};
+use crate::policy::{self, number_entry, rel_diff, Expect, AGREEMENT_TOLERANCE, REL_DIFF_FLOOR};
 use crate::render::text::format_significant;
 use crate::sample::Rng;
 
@@ -220,7 +220,7 @@ fn formula_entries(
         let derived: Vec<f64> = table.iter().map(|v| v[name]).collect();
         let memoir: Vec<f64> = table.iter().map(|v| v[memoir_key]).collect();
         let cmp = compare(&derived, &memoir);
-        let agrees = cmp.max_rel <= AGREEMENT_TOLERANCE;
+        let agrees = policy::formula(cmp.max_rel, Verdict::DerivationDiffers) == Verdict::Agrees;
         let mut note = format!(
             "generated `{name}` vs transcribed `{memoir_name}` at {SAMPLE_POINTS} seeded points"
         );
@@ -246,7 +246,7 @@ fn formula_entries(
                 ("max_abs_diff".to_string(), cmp.max_abs),
             ])),
             rel_diff: Some(cmp.max_rel),
-            verdict: if agrees { Verdict::Agrees } else { Verdict::DerivationDiffers },
+            verdict: policy::formula(cmp.max_rel, Verdict::DerivationDiffers),
             note,
         });
     }
@@ -288,7 +288,7 @@ fn inertia_entries(
                     "generated `{name}` at mu = R = 1; at the {SAMPLE_POINTS} sample points {name} / (mu R^2) differs from {printed} by at most {spread:.1e} (relative)"
                 ),
             );
-            if spread > AGREEMENT_TOLERANCE {
+            if policy::formula(spread, Verdict::DerivationDiffers) != Verdict::Agrees {
                 entry.verdict = Verdict::DerivationDiffers;
             }
             entry
@@ -324,7 +324,7 @@ fn threshold_entries() -> Vec<Entry> {
                 ("stability_n12(s=2)".to_string(), stability_n12(2.0)),
             ])),
             rel_diff: None,
-            verdict: Verdict::DerivationDiffers,
+            verdict: policy::finding(Verdict::DerivationDiffers),
             note: "the generated stability_n12(theta=0, s, n=0) has no sign change for 0 <= s <= 2"
                 .into(),
         }];
@@ -389,7 +389,7 @@ fn consistency_entries(
                     reference: Vec<f64>,
                     what: &str| {
         let cmp = compare(&derived, &reference);
-        let agrees = cmp.max_rel <= AGREEMENT_TOLERANCE;
+        let agrees = policy::formula(cmp.max_rel, Verdict::DerivationDiffers) == Verdict::Agrees;
         let mut note = format!("{what}, at {SAMPLE_POINTS} seeded points");
         if !agrees {
             note.push_str(&format!(
@@ -408,7 +408,7 @@ fn consistency_entries(
                 ("max_abs_diff".to_string(), cmp.max_abs),
             ])),
             rel_diff: Some(cmp.max_rel),
-            verdict: if agrees { Verdict::Agrees } else { Verdict::DerivationDiffers },
+            verdict: policy::formula(cmp.max_rel, Verdict::DerivationDiffers),
             note,
         });
     };
@@ -495,7 +495,7 @@ fn fold_checks(entries: &mut Vec<Entry>, checks: Result<Vec<SymbolicCheck>, Stri
                 memoir: Memoir::Formula("generated/hoop.checks.tsv".into()),
                 derived: Derived::Numbers(BTreeMap::new()),
                 rel_diff: None,
-                verdict: Verdict::DerivationDiffers,
+                verdict: policy::finding(Verdict::DerivationDiffers),
                 note: format!("cannot read generated/hoop.checks.tsv: {message}"),
             });
             return;
@@ -520,12 +520,12 @@ fn fold_checks(entries: &mut Vec<Entry>, checks: Result<Vec<SymbolicCheck>, Stri
             entry.note.push_str("; ");
             entry.note.push_str(&text);
             if !check.holds {
-                entry.verdict = Verdict::DerivationDiffers;
+                entry.verdict = policy::check(false, Expect::Holds);
             }
             continue;
         }
         let expected = EXPECTED_TO_FAIL.iter().find(|(id, _)| *id == check.id);
-        let as_expected = check.holds == expected.is_none();
+        let expect = if expected.is_some() { Expect::FailsAsTheMemoirSays } else { Expect::Holds };
         let mut note = format!(
             "symbolic check at regen: {} ({detail})",
             if check.holds { "holds" } else { "does not hold" }
@@ -542,7 +542,7 @@ fn fold_checks(entries: &mut Vec<Entry>, checks: Result<Vec<SymbolicCheck>, Stri
                 if check.holds { 1.0 } else { 0.0 },
             )])),
             rel_diff: None,
-            verdict: if as_expected { Verdict::Agrees } else { Verdict::DerivationDiffers },
+            verdict: policy::check(check.holds, expect),
             note,
         });
     }

@@ -11,7 +11,7 @@ use std::collections::BTreeMap;
 
 use crate::checks::parse_checks;
 use crate::entry::{Derived, Entry, Memoir, Verdict};
-use crate::policy::{number_entry, printed_number, rel_diff, AGREEMENT_TOLERANCE};
+use crate::policy::{self, number_entry, printed_number, rel_diff, Expect};
 use carvallo::hoop_discussion::{self as hd, carvallo_root, special_points};
 
 /// Number of seeded points at which formulas are compared.
@@ -71,14 +71,13 @@ fn formula_entry(
     note: &str,
 ) -> Entry {
     let rel = max_rel(derived, memoir);
-    let agrees = rel <= AGREEMENT_TOLERANCE;
     Entry {
         section: section.into(),
         quantity: quantity.into(),
         memoir: Memoir::Formula(printed.into()),
         derived: Derived::Numbers(BTreeMap::from([("points".to_string(), POINTS as f64)])),
         rel_diff: Some(rel),
-        verdict: if agrees { Verdict::Agrees } else { otherwise },
+        verdict: policy::formula(rel, otherwise),
         note: format!(
             "generated `{derived}` vs transcribed `{memoir}` at {POINTS} seeded points; {note}"
         ),
@@ -194,7 +193,7 @@ pub fn entries() -> Vec<Entry> {
         memoir: Memoir::Formula("28u^4 + 68u^3 + 51u^2 + 14u + 1".into()),
         derived: Derived::Numbers(root.shifted.iter().enumerate().map(|(k, c)| (format!("u^{}", 4 - k), *c)).collect()),
         rel_diff: None,
-        verdict: if shifted_ok { Verdict::Agrees } else { Verdict::DerivationDiffers },
+        verdict: policy::claim(shifted_ok, Verdict::DerivationDiffers),
         note: "Carvallo's Horner tableau (repeated synthetic division by t - 1) run on the generated F(t); rows equal to the printed ones".into(),
     });
     out.push(printed_number("14", "root squaring: v^4 after two squarings", 7332.0, 0, root.v4, fa, "second root-squaring row of v^4 + 14v^3 + 51v^2 + 68v + 28 (v = 1/u): 94^2 - 2 x 753 = 7330; Carvallo's slide rule reads 51^2 = 2601 as 2600, whence his 752 and 7332"));
@@ -220,7 +219,7 @@ pub fn entries() -> Vec<Entry> {
             ("root_rel_error".to_string(), ((-0.10807 - root.exact_u) / root.exact_u).abs()),
         ])),
         rel_diff: None,
-        verdict: if rel_to_14u < 5e-4 { Verdict::Agrees } else { Verdict::MemoirError },
+        verdict: policy::claim(rel_to_14u < 5e-4, Verdict::MemoirError),
         note: "the claim is about the equation (residual relative to the term 14u), which holds; the root u itself is off by about 1.1e-3 relative".into(),
     });
     let v = sp.vertical;
@@ -292,7 +291,7 @@ pub fn entries() -> Vec<Entry> {
             ("R_needed_at_g_9.81".to_string(), 2.40 * 2.40 / g),
         ])),
         rel_diff: Some(rel_diff(g * 0.5, 2.40 * 2.40)),
-        verdict: Verdict::MemoirError,
+        verdict: policy::finding(Verdict::MemoirError),
         note: "V = sR = sqrt(gR) at s = 1: 2,40 m/s needs g = 11.52 m/s^2 at R = 0.50 m or R = 0.587 m at g = 9.81; no terrestrial g gives it, so the slip is in his square root; n° 18's 1,20 = 0.5 x 2,40 inherits it (the right values are 2.21 and 1.11 m/s)".into(),
     });
     // n° 17.
@@ -342,8 +341,8 @@ pub fn entries() -> Vec<Entry> {
             ("points".to_string(), arc.len() as f64),
         ])),
         rel_diff: Some(dev),
-        verdict: if dev < 0.06 { Verdict::Agrees } else { Verdict::DerivationDiffers },
-        note: "upper branch of the generated (S) for th from 0 to th_H; the memoir says \"grossièrement assimilé\": agreement means within 6 %".into(),
+        verdict: policy::approx(dev, 0.06, Verdict::DerivationDiffers),
+        note: "upper branch of the generated (S) for th from 0 to th_H; the memoir says \"grossièrement assimilé\", an approximation it declares: rounding within 6 %".into(),
     });
     // n° 19.
     out.extend(stick_entries());
@@ -420,10 +419,10 @@ fn marche_entries() -> Vec<Entry> {
         }
         let all = points == 100 && ok == points;
         let literal_possible = printed == derived_order;
-        let verdict = match (all, literal_possible) {
-            (true, true) => Verdict::Agrees,
-            (true, false) => Verdict::Ocr,
-            (false, _) => Verdict::DerivationDiffers,
+        let verdict = if literal_possible {
+            policy::claim(all, Verdict::DerivationDiffers)
+        } else {
+            policy::finding_if(all, Verdict::Ocr)
         };
         let mut note = format!("roots n1, n2 (|n2| < |n1|) of the generated normalised (E) at 20 x 5 points of the region, s^2 placed between the generated (ℰ) and (N) (above (N): up to three times (N)'s s^2), th in ({lo:.1}°, {hi:.1}°); derived ordering {derived_order}; a root marche when |n| < s (ρ = Rs/|n| > R), pivote otherwise");
         if !literal_possible {
@@ -467,8 +466,8 @@ fn speed_entries() -> Vec<Entry> {
                 ("s_with_memoir_2.40".to_string(), 2.27 / 2.40),
             ])),
             rel_diff: None,
-            verdict: if (gym - 1.0).abs() <= 0.05 { Verdict::Agrees } else { Verdict::DerivationDiffers },
-            note: format!("{why} (\"la partie utilisée du diagramme ne sortira guère du cercle s = 1\"): s = V/sqrt(gR) at R = 0.5 m, g = 9.81; agrees when within 5 % of 1"),
+            verdict: policy::approx((gym - 1.0).abs(), 0.05, Verdict::DerivationDiffers),
+            note: format!("{why} (\"la partie utilisée du diagramme ne sortira guère du cercle s = 1\"): s = V/sqrt(gR) at R = 0.5 m, g = 9.81; an approximation the memoir declares: rounding within 5 % of 1"),
         },
         Entry {
             section: "18".into(),
@@ -479,7 +478,7 @@ fn speed_entries() -> Vec<Entry> {
                 ("s_of_1.50_at_R_0.5_g_9.81".to_string(), 1.50 / unit),
             ])),
             rel_diff: None,
-            verdict: if accel_threshold < 1.50 { Verdict::Agrees } else { Verdict::DerivationDiffers },
+            verdict: policy::claim(accel_threshold < 1.50, Verdict::DerivationDiffers),
             note: format!("{why} (the threshold sR >= 0.5 sqrt(gR) is \"un peu inférieure\" to it): threshold s from the root of the generated normalised (S) at th = 0, n = 0, times sqrt(gR); the memoir's 1,20 is 0.5 x his 2,40 (entry of n° 16)"),
         },
     ]
@@ -498,7 +497,7 @@ fn stick_entries() -> Vec<Entry> {
         memoir: Memoir::Formula("theta = ... - [M/h^2 cosh ht + 4sM1/(3h^3) sin ht]".into()),
         derived: Derived::Numbers(BTreeMap::new()),
         rel_diff: None,
-        verdict: Verdict::Ocr,
+        verdict: policy::finding(Verdict::Ocr),
         note: "the OCR prints cosh; with h^2 > 0 the solution of (4) is cos ht (symbolic check stick_6_memoir, and (6') has 1 - cos ht)".into(),
     }];
     // (moments M, M1 in 1/s^2; back push on the right cheek: both negative)
@@ -528,7 +527,7 @@ fn stick_entries() -> Vec<Entry> {
                 ("closed_form_vs_rk4".to_string(), cf_vs_rk4),
             ])),
             rel_diff: None,
-            verdict: if ok { Verdict::Agrees } else { Verdict::DerivationDiffers },
+            verdict: policy::claim(ok, Verdict::DerivationDiffers),
             note: format!("R = {r} m, g = {g}, s = 2 sqrt(g/R), at t = 6/h; memoir column: sign of th (n must have the opposite sign); closed forms (6), (7) generated, RK4 (400 steps) of the linearised and of the full equations (2) of n° 19 with constant moments and s"),
         });
     }
@@ -545,7 +544,7 @@ fn stick_entries() -> Vec<Entry> {
             ("sign_change_time_h_t".to_string(), t_change.map_or(f64::NAN, |t| t * h)),
         ])),
         rel_diff: None,
-        verdict: if n_e * th_e > 0.0 { Verdict::MemoirError } else { Verdict::Agrees },
+        verdict: policy::claim(!(n_e * th_e > 0.0), Verdict::MemoirError),
         note: "for the M1 term, n = M1 t - 2 s th ~ M1 t - (4/9) s^2 M1 t^3 has the sign of M1 (that of th) at first and only takes the opposite sign after h t = sign_change_time_h_t (closed form (7), M = 0, M1 = 1): the memoir's \"dans les trois cas\" holds after that delay, the M term is opposite at once".into(),
     });
     out
@@ -562,7 +561,7 @@ fn check_entries() -> Vec<Entry> {
                 memoir: Memoir::Formula("generated/hoop_discussion.checks.tsv".into()),
                 derived: Derived::Numbers(BTreeMap::new()),
                 rel_diff: None,
-                verdict: Verdict::DerivationDiffers,
+                verdict: policy::finding(Verdict::DerivationDiffers),
                 note: format!("cannot read generated/hoop_discussion.checks.tsv: {message}"),
             }]
         }
@@ -571,7 +570,6 @@ fn check_entries() -> Vec<Entry> {
         .into_iter()
         .map(|c| {
             let expected = EXPECTED_TO_FAIL.iter().find(|(id, _)| *id == c.id);
-            let as_expected = c.holds == expected.is_none();
             let mut detail: String = c.detail.chars().take(160).collect();
             if detail.len() < c.detail.len() {
                 detail.push_str("...");
@@ -580,18 +578,14 @@ fn check_entries() -> Vec<Entry> {
                 "symbolic check at regen: {} ({detail})",
                 if c.holds { "holds" } else { "does not hold" }
             );
-            let verdict = match expected {
-                Some((_, why)) => {
-                    note.push_str(&format!("; expected not to hold: {why}"));
-                    if as_expected {
-                        Verdict::MemoirError
-                    } else {
-                        Verdict::DerivationDiffers
-                    }
-                }
-                None if as_expected => Verdict::Agrees,
-                None => Verdict::DerivationDiffers,
+            if let Some((_, why)) = expected {
+                note.push_str(&format!("; expected not to hold: {why}"));
+            }
+            let expect = match expected {
+                Some(_) => Expect::Finding(Verdict::MemoirError),
+                None => Expect::Holds,
             };
+            let verdict = policy::check(c.holds, expect);
             Entry {
                 section: c.section,
                 quantity: format!("check {}", c.id),

@@ -15,7 +15,7 @@
 use std::collections::BTreeMap;
 
 use crate::entry::{Derived, Entry, Memoir, Verdict};
-use crate::policy::{formula_entry, number, number_as, rel_diff};
+use crate::policy::{self, formula_entry, number, number_as, rel_diff};
 use carvallo::unicycle_discussion::{
     bisect, eval, first_member_41, minimum_on_e, n32, out, s_on_e, trinomial, Point, H_OVER_R,
 };
@@ -326,8 +326,7 @@ fn numbers() -> Vec<Entry> {
             entry.note = format!("{note}; evaluated at point I, theta = {:.4}° (the row's printed 11.5 is that angle rounded)", point_i);
         }
         if th == 20.0 && col == "D" {
-            entry.verdict =
-                if entry.verdict == Verdict::Agrees { Verdict::Agrees } else { Verdict::Ocr };
+            entry.verdict = policy::formula(entry.rel_diff.unwrap_or(f64::NAN), Verdict::Ocr);
             entry.note = "D = tan 20° = 0.364: the printed 0.354 is one misread digit (the OCR or the print), the row's other values are right".into();
         }
         e.push(entry);
@@ -338,7 +337,7 @@ fn numbers() -> Vec<Entry> {
         memoir: Memoir::Formula("s0 = (2/n0) tan(theta)".into()),
         derived: Derived::Number(minimum_on_e(20.0).1 * minimum_on_e(20.0).0 / 20f64.to_radians().tan()),
         rel_diff: None,
-        verdict: Verdict::MemoirError,
+        verdict: policy::finding(Verdict::MemoirError),
         note: "derived s0 n0 / tan(theta) at theta = 20° is -2: s0 = -(2/n0) tan(theta) (n0 < 0, s0 > 0 in the table); n° 41 prints it with the minus sign".into(),
     });
     // (N), asymptote, point I.
@@ -478,7 +477,7 @@ fn numbers() -> Vec<Entry> {
         let s_lim = s_on_e(th, n_lim);
         let mut en = number("39", &format!("table n° 39, theta = {th}°, |n| limit"), n_pr, n_dec, -n_lim, "n < 0 where the generated (S1) vanishes along the generated (E) (n^2 = 1/((h/R) cos^3))");
         if th == 0.0 {
-            en.verdict = Verdict::Ocr;
+            en.verdict = policy::finding(Verdict::Ocr);
             en.note = "0.63 = sqrt(R/h) read 0.03 by the OCR".into();
         }
         if th == 50.0 {
@@ -641,7 +640,7 @@ fn ocr_entries() -> Vec<Entry> {
             ("points".to_string(), 16.0),
         ])),
         rel_diff: None,
-        verdict: if ok { Verdict::Ocr } else { Verdict::DerivationDiffers },
+        verdict: policy::finding_if(ok, Verdict::Ocr),
         note: format!("derived row: -L cos(theta) lambda^2 + dN/dtheta' lambda + dN/dtheta, with the coefficients taken by central differences (tolerance {FD_TOLERANCE:e}) of the generated rider_n + wheel_n (N = the (n) residual at zero accelerations, p = theta') at 16 seeded points with p = 0; the determinant expanded with that row, divided by lambda, reproduces the generated char78_c2, c1, c0; dN/dtheta and dN/dn vanish (N has theta' as factor) so the constant term of the row is 0 and lambda factors out, as the memoir says next; with the printed row (dN/dtheta' as constant term) lambda would not factor out and the memoir's own (1)' (L^2 cos^2 in the lambda^2 coefficient, L cos(theta)(dP/dn + dN/dtheta') for lambda) would not follow: the text's (1)' is the corrected row, so the printed row is a misreading (cos theta lost, the primes swapped), not the memoir's"),
     });
     // n° 78: dN/dp at theta = 0, n = 0 with the hoop wheel B1 = 2 mu1 R^2 (n° 4).
@@ -667,7 +666,7 @@ fn ocr_entries() -> Vec<Entry> {
             ("rel_B1".to_string(), general_rel),
         ])),
         rel_diff: None,
-        verdict: if rel <= FD_TOLERANCE && general_rel <= FD_TOLERANCE { Verdict::Ocr } else { Verdict::DerivationDiffers },
+        verdict: policy::finding_if(rel <= FD_TOLERANCE && general_rel <= FD_TOLERANCE, Verdict::Ocr),
         note: format!("central difference in p of the generated rider_n + wheel_n at theta = 0, n = 0, p = 0 (first seeded point, mu = {mu:.4} kg, mu1 = {mu1:.4} kg, R = {r:.4} m, s = {s:.4}/s): (B1 - mu1 R^2) s in general, and mu1 R^2 s with B1 = 2 mu1 R^2 (n° 4); the printed line lost the factor s after B1 - mu1 R^2 and the subscript of mu1; the memoir's next line (2) -C mu g h + mu mu1 R^3 h s^2 is -dP/dn dN/dp with dP/dn = -mu R h s only for dN/dp = mu1 R^2 s, so the memoir used the right value"),
     });
     // n° 40: A dp'/dn, printed A1 dp'/dn, with the n° 40 letters (massless wheel parts kept
@@ -704,7 +703,7 @@ fn ocr_entries() -> Vec<Entry> {
             ("points".to_string(), 16.0),
         ])),
         rel_diff: None,
-        verdict: if worst40 <= FD_TOLERANCE && coeff40 <= FD_TOLERANCE { Verdict::Ocr } else { Verdict::DerivationDiffers },
+        verdict: policy::finding_if(worst40 <= FD_TOLERANCE && coeff40 <= FD_TOLERANCE, Verdict::Ocr),
         note: "-dP/dn by central differences of the generated rider_p + wheel_p (wheel massless, B = C + mu h^2) at 16 seeded points equals the printed right side, and the coefficient of p' in the same residual is the rider's A (not the wheel's A1, which is 0 here): the left side is A dp'/dn, as the two neighbouring lines of the same table print it (A dp'/dtheta, A dp'/ds); a stray subscript of the OCR".into(),
     });
     // n° 41 conclusion: the straight-running speed limit.
@@ -717,7 +716,7 @@ fn ocr_entries() -> Vec<Entry> {
             ("s_limit".to_string(), limit),
         ])),
         rel_diff: None,
-        verdict: if rel_diff(limit, 1.0) <= 1e-9 { Verdict::Ocr } else { Verdict::DerivationDiffers },
+        verdict: policy::finding_if(rel_diff(limit, 1.0) <= 1e-9, Verdict::Ocr),
         note: "root in s of the generated (S) of n° 40 at theta = 0, n = 0 (units sqrt(g/R), mu1 R^2 = C): s = sqrt(C/(mu1 R^2)) = 1, the n° 36 condition s^2 > C/(mu1 R^2); the printed mu1 R/C is not a speed (unit 1/m) and is the OCR's flattening of the fraction under the root (its \"= 1\" holds only because mu1 R^2/C = 1 here); a print slip cannot be excluded without the facsimile, but the memoir's own n° 36 and n° 78 (2) give the right form".into(),
     });
     // n° 36: the first member with mu0, mu1 for the rider's mu.
@@ -750,7 +749,7 @@ fn ocr_entries() -> Vec<Entry> {
             ("mu0_mu1".to_string(), printed),
         ])),
         rel_diff: None,
-        verdict: if rel_diff(ratio, with_mu) <= 1e-9 { Verdict::Ocr } else { Verdict::DerivationDiffers },
+        verdict: policy::finding_if(rel_diff(ratio, with_mu) <= 1e-9, Verdict::Ocr),
         note: format!("the generated stability of the simplified model (n° 33) at theta = 0, n = 0 is a + b s^2 (first seeded point, mu = {mu:.4} kg, mu1 = {mu1:.4} kg); b/a equals -R (B1 - mu1 R^2)/(g C), i.e. -mu g z + mu R z (B1 - mu1 R^2)/C s^2 with the rider's mu in both terms; the memoir's own next step divides by mu0 z and reaches s^2 > C/(mu1 R^2), which needs the same mass in both terms (mu0 is its name for the rider's mass in the example), so the second term's mu1 is a misread subscript"),
     });
     e

@@ -16,7 +16,7 @@ use std::collections::BTreeMap;
 
 use crate::checks::parse_checks;
 use crate::entry::{Derived, Entry, Memoir, Verdict};
-use crate::policy::{AGREEMENT_TOLERANCE, REL_DIFF_FLOOR};
+use crate::policy::{self, Expect, REL_DIFF_FLOOR};
 use carvallo::whipple::{Whipple, WhippleParams};
 
 /// Section label of the entries.
@@ -53,11 +53,7 @@ fn number_entry(quantity: String, published: f64, derived: f64, note: &str) -> E
         memoir: Memoir::Number(published),
         derived: Derived::Number(derived),
         rel_diff: Some(r),
-        verdict: if r <= AGREEMENT_TOLERANCE {
-            Verdict::Agrees
-        } else {
-            Verdict::DerivationDiffers
-        },
+        verdict: policy::formula(r, Verdict::DerivationDiffers),
         note: note.to_string(),
     }
 }
@@ -120,7 +116,7 @@ pub fn entries() -> Vec<Entry> {
                 memoir: Memoir::Number(published),
                 derived: Derived::Numbers(BTreeMap::new()),
                 rel_diff: None,
-                verdict: Verdict::DerivationDiffers,
+                verdict: policy::finding(Verdict::DerivationDiffers),
                 note: "not found by the runtime".to_string(),
             }),
         }
@@ -137,11 +133,14 @@ pub fn entries() -> Vec<Entry> {
                         if ch.holds { 1.0 } else { 0.0 },
                     )])),
                     rel_diff: None,
-                    verdict: if ch.holds == expected_outcome(&ch.id) {
-                        Verdict::Agrees
-                    } else {
-                        Verdict::DerivationDiffers
-                    },
+                    verdict: policy::check(
+                        ch.holds,
+                        if expected_outcome(&ch.id) {
+                            Expect::Holds
+                        } else {
+                            Expect::FailsAsTheMemoirSays
+                        },
+                    ),
                     note: if expected_outcome(&ch.id) {
                         ch.detail.chars().take(200).collect()
                     } else {
@@ -159,7 +158,7 @@ pub fn entries() -> Vec<Entry> {
             memoir: Memoir::Formula("generated/whipple.checks.tsv".to_string()),
             derived: Derived::Numbers(BTreeMap::new()),
             rel_diff: None,
-            verdict: Verdict::DerivationDiffers,
+            verdict: policy::finding(Verdict::DerivationDiffers),
             note: format!("unreadable: {e}"),
         }),
     }

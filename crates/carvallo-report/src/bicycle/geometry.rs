@@ -16,7 +16,7 @@
 use std::collections::BTreeMap;
 
 use crate::entry::{Derived, Entry, Memoir, Verdict};
-use crate::policy::{number, number_as};
+use crate::policy::{self, number, number_as};
 use carvallo::bicycle_geometry::{Contact, Geometry};
 
 const CHECKS_TSV: &str = carvallo::artifacts::BICYCLE_GEOMETRY.checks;
@@ -61,7 +61,7 @@ fn failed(section: &str, quantity: String, memoir: f64, why: String) -> Entry {
         memoir: Memoir::Number(memoir),
         derived: Derived::Numbers(BTreeMap::new()),
         rel_diff: None,
-        verdict: Verdict::DerivationDiffers,
+        verdict: policy::finding(Verdict::DerivationDiffers),
         note: format!("the solver failed: {why}"),
     }
 }
@@ -352,7 +352,7 @@ fn first_order_51(g: &Geometry) -> Vec<Entry> {
             ("points".to_string(), points),
         ])),
         rel_diff: None,
-        verdict: Verdict::MemoirError,
+        verdict: policy::finding(Verdict::MemoirError),
         note: "the printed coefficient has sin sigma0 where the expansion of (2) through (3)' gives cos sigma0 (check first_order_coefficient_51_as_printed); over the old model's steers the printed form errs by up to max_err_printed minutes against the exact Newton solution, the derived first-order form by max_err_derived (the second-order remainder)".into(),
     }]
 }

@@ -14,7 +14,7 @@
 use std::collections::BTreeMap;
 
 use crate::entry::{Derived, Entry, Memoir, Verdict};
-use crate::policy::number;
+use crate::policy::{self, number};
 use carvallo::bicycle_kinematics::{Kinematics, RestEquilibrium};
 
 const CHECKS_TSV: &str = carvallo::artifacts::BICYCLE_KINEMATICS.checks;
@@ -58,7 +58,7 @@ fn failed(section: &str, quantity: &str, why: String) -> Entry {
         memoir: Memoir::Formula("-".into()),
         derived: Derived::Numbers(BTreeMap::new()),
         rel_diff: None,
-        verdict: Verdict::DerivationDiffers,
+        verdict: policy::finding(Verdict::DerivationDiffers),
         note: format!("the computation failed: {why}"),
     }
 }
@@ -81,7 +81,7 @@ fn worst_entry(
             ("points".to_string(), points as f64),
         ])),
         rel_diff: Some(worst),
-        verdict: if worst <= tolerance { Verdict::Agrees } else { Verdict::DerivationDiffers },
+        verdict: policy::numeric(worst, tolerance, Verdict::DerivationDiffers),
         note: format!("{note}; tolerance {tolerance:e} relative"),
     }
 }
@@ -210,7 +210,7 @@ fn relations_66(k: &Kinematics) -> Vec<Entry> {
             memoir: Memoir::Formula("dnu/dtheta, dnu/dgamma of (I)".into()),
             derived: Derived::Numbers(BTreeMap::from([("defect".to_string(), d)])),
             rel_diff: None,
-            verdict: if d.abs() > 1e-4 { Verdict::Agrees } else { Verdict::DerivationDiffers },
+            verdict: policy::claim(d.abs() > 1e-4, Verdict::DerivationDiffers),
             note: "d/dgamma(dnu/dtheta) - d/dtheta(dnu/dgamma) by central differences is far from 0: the relations are non-holonomic, and the memoir's dnu/dtheta, dnu/dgamma are ratios of virtual displacements at dsigma = 0, not partial derivatives of a function nu".into(),
         }),
         Err(err) => e.push(failed("66", "ν is not a function of (θ, γ)", err.to_string())),
@@ -267,11 +267,7 @@ fn rest_69(k: &Kinematics) -> Vec<Entry> {
             ("central_differences".to_string(), eq.eta_prime_fd),
         ])),
         rel_diff: None,
-        verdict: if r.d_eta_d_theta.abs() < 1e-12 && eq.eta_prime_fd.abs() < 1e-8 {
-            Verdict::Agrees
-        } else {
-            Verdict::DerivationDiffers
-        },
+        verdict: policy::claim(r.d_eta_d_theta.abs() < 1e-12 && eq.eta_prime_fd.abs() < 1e-8, Verdict::DerivationDiffers),
         note: "(7): eta' = -y/(x cos theta) = 0 since y = -(R sin mu - c) sin gamma = 0; the exact eta(theta) at that steer is flat (differences of step 1e-4)".into(),
     });
     let derived_fd = rel(r.eta_second, eq.eta_second_fd);
@@ -281,7 +277,7 @@ fn rest_69(k: &Kinematics) -> Vec<Entry> {
         memoir: Memoir::Number(r.memoir_eta_second),
         derived: Derived::Number(r.eta_second),
         rel_diff: Some(rel(r.eta_second, r.memoir_eta_second)),
-        verdict: if derived_fd <= 1e-5 { Verdict::MemoirError } else { Verdict::DerivationDiffers },
+        verdict: policy::finding_if(derived_fd <= 1e-5, Verdict::MemoirError),
         note: format!(
             "memoir value: the printed R cos^3 mu sin gamma/(lambda cos eta) evaluated at the exact position (lambda = {:.4} m); derived: R cos^3 mu sin^2 gamma/(lambda cos eta) (check eta_second_69), equal to the second differences of the exact eta(theta) (step 1e-3: {:.6}, rel. diff. {derived_fd:.1e}); the print loses one factor sin gamma ({:.4}): y' = (J|dOM/dmu) mu' has sin gamma from J|H1 and from mu' of (9). The memoir's formulas (4)-(8) are lost in the OCR ('Dans cette dernière formule'); eta' of (7) and eta'' were re-derived from (I)",
             eq.lambda,
@@ -304,11 +300,7 @@ fn rest_69(k: &Kinematics) -> Vec<Entry> {
                     ("bound_z_r_x_lambda".to_string(), bound),
                 ])),
                 rel_diff: Some(rel(st.d2z, st.d2z_fd)),
-                verdict: if st.d2z < 0.0 && st.d2z_fd < 0.0 && bound < 0.0 && rel(st.d2z, st.d2z_fd) < 1e-5 {
-                    Verdict::Agrees
-                } else {
-                    Verdict::DerivationDiffers
-                },
+                verdict: policy::claim(st.d2z < 0.0 && st.d2z_fd < 0.0 && bound < 0.0 && rel(st.d2z, st.d2z_fd) < 1e-5, Verdict::DerivationDiffers),
                 note: format!(
                     "illustrative centre of gravity (not in the memoir) x = {x} m, z = {z} m from S in the normal position (Z = {:.4} m, X = {:.4} m): -Z + X eta'' with the derived eta'' agrees with second differences of Z along the exact contact, and is negative as the memoir concludes (unstable); bound_z_r_x_lambda = -R + lambda eta'' < 0 covers every centre of gravity with Z > R and X < lambda, the memoir's argument; the printed eta'' gives memoir_formula, the same sign",
                     st.z, st.x

@@ -15,7 +15,7 @@
 use std::collections::BTreeMap;
 
 use crate::entry::{Derived, Entry, Memoir, Verdict};
-use crate::policy::rel_diff;
+use crate::policy::{self, rel_diff};
 use carvallo::bicycle_rest::{RestBicycle, RestConstants, RestError, RestPosition, SECOND_STEP};
 
 /// The leans tabulated (degrees).
@@ -47,7 +47,7 @@ fn failure(quantity: String, why: &str) -> Entry {
         memoir: Memoir::Formula("voisine de celle du n° 55, sinon confondue".into()),
         derived: Derived::Numbers(BTreeMap::new()),
         rel_diff: None,
-        verdict: Verdict::DerivationDiffers,
+        verdict: policy::finding(Verdict::DerivationDiffers),
         note: format!("the computation failed: {why}"),
     }
 }
@@ -93,11 +93,7 @@ fn lean_entry(bike: &RestBicycle, td: f64) -> Result<(Entry, f64), String> {
         ),
         derived: Derived::Numbers(n),
         rel_diff: Some(rel_diff(p.equilibrium.gamma, p.lowest.gamma)),
-        verdict: if shift.abs() <= NEGLIGIBLE_DEG {
-            Verdict::Agrees
-        } else {
-            Verdict::DerivationDiffers
-        },
+        verdict: policy::approx(shift.abs(), NEGLIGIBLE_DEG, Verdict::DerivationDiffers),
         note: format!(
             "gamma55: the minimum of the exact sigma(gamma) (M at E, sigma {:.4}° as upright, n° 56); gamma67: the stable zero of dU/dgamma, U = g(mu z_G + mu1 z_C), with n° 117's mu = 70 kg at e = 0.20 m, h = 1 m and mu1 = 5 kg on n° 52's geometry (an illustrative combination), by Newton/bisection on central differences (stiffness error {} J/rad^2); the handlebar turns {shift:.2}° beyond gamma55, against the 0.6° the memoir calls negligible in n° 53, while the frame rises by only {:.3} mm of the {:.2} mm it fell from gamma = 0: 'voisine' holds for the frame's height, not for the handlebar's angle. The frame's height is stationary at gamma55 and the front wheel's is not (dU/dgamma there is the wheel's mu1 g dz_C/dgamma = {:.4} J/rad), so the shift is of the first order in mu1/mu and the frame's flat minimum lets it be large: one Newton step from gamma55 already gives {one_step:.2}°. The centre of gravity is illustrative; with n° 122's e = {E_122} m (a stiffer frame term) the shift is still {:.2}°",
             deg(p.at_lowest.sigma),
@@ -142,7 +138,7 @@ pub fn entries() -> Vec<Entry> {
         ),
         derived: Derived::Numbers(wheel_slopes),
         rel_diff: None,
-        verdict: if lowers && beyond { Verdict::Agrees } else { Verdict::DerivationDiffers },
+        verdict: policy::claim(lowers && beyond, Verdict::DerivationDiffers),
         note: "the frame's part of dU/dgamma vanishes at gamma55, the front wheel's mu1 g dz_C/dgamma is negative (a larger gamma lowers the wheel), and gamma67 lies beyond gamma55 with the frame higher and the wheel lower, at every lean of the table, as the memoir reasons".into(),
     });
     let all_stable = stiffness.len() == LEANS.len() && stiffness.values().all(|k| *k > 0.0);
@@ -152,7 +148,7 @@ pub fn entries() -> Vec<Entry> {
         memoir: Memoir::Formula("the front wheel 'va prendre une position d'équilibre stable'".into()),
         derived: Derived::Numbers(stiffness),
         rel_diff: None,
-        verdict: if all_stable { Verdict::Agrees } else { Verdict::DerivationDiffers },
+        verdict: policy::claim(all_stable, Verdict::DerivationDiffers),
         note: format!("central second differences of U at gamma67 (step {SECOND_STEP:e} rad), one per lean of the table; positive: a minimum of U, stable with the lean held"),
     });
     // The normal position and the limit of small leans.
@@ -171,7 +167,7 @@ pub fn entries() -> Vec<Entry> {
                 memoir: Memoir::Formula("the front wheel 'est au départ dans une position d'équilibre instable'".into()),
                 derived: Derived::Number(at_zero.value),
                 rel_diff: None,
-                verdict: if at_zero.value < 0.0 { Verdict::Agrees } else { Verdict::DerivationDiffers },
+                verdict: policy::claim(at_zero.value < 0.0, Verdict::DerivationDiffers),
                 note: format!(
                     "dU/dgamma vanishes at gamma = 0 upright by symmetry and U is a maximum there (error {} J/rad^2); leaning, gamma = 0 is no longer an equilibrium and the handlebar falls to the side of the lean",
                     small(at_zero.error, 1e-3)
@@ -191,11 +187,7 @@ pub fn entries() -> Vec<Entry> {
                 ),
                 derived: Derived::Numbers(n),
                 rel_diff: Some(rel_diff(upright.equilibrium.gamma, upright.lowest.gamma)),
-                verdict: if shift.abs() <= NEGLIGIBLE_DEG {
-                    Verdict::Agrees
-                } else {
-                    Verdict::DerivationDiffers
-                },
+                verdict: policy::approx(shift.abs(), NEGLIGIBLE_DEG, Verdict::DerivationDiffers),
                 note: format!(
                     "as theta -> 0 the rest position tends to that of the upright frame, not to gamma = 0 (unstable): gamma55 to the exact lowest position of n° 53 ({:.2}°; 61°,6 printed is the n° 53 entry), gamma67 to {:.2}°, {shift:.2}° beyond it; upright, +gamma67 and -gamma67 are equally stable and the lean decides the side",
                     deg(upright.lowest.gamma),

@@ -17,7 +17,7 @@ use std::collections::BTreeMap;
 
 use crate::checks::parse_checks;
 use crate::entry::{Derived, Entry, Memoir, Verdict};
-use crate::policy::{formula_entry, number};
+use crate::policy::{self, formula_entry, number};
 use crate::sample::Rng;
 use carvallo::bicycle_steady::{BicycleParams, BicycleSteady, SteadyState};
 
@@ -224,7 +224,7 @@ fn numbers() -> Vec<Entry> {
         memoir: Memoir::Number(memoir_ratio),
         derived: Derived::Number(derived_ratio),
         rel_diff: Some((derived_ratio - memoir_ratio).abs() / derived_ratio.abs()),
-        verdict: Verdict::MemoirError,
+        verdict: policy::finding(Verdict::MemoirError),
         note: format!("generated `theta1_over_theta` with the constants of n° 96: (2 mu1 sin(eta) + X)/(mu1 sin(eta) + X) = {derived_ratio:.4} > 1, X = {x_term:.3} kg; the memoir's {memoir_ratio:.4} < 1 comes from the dropped sin(omega) of (1)' (n° 95). With the factor kept the handlebar equation does not contradict the geometry (theta1 > theta), and n° 97's conclusion 'impossible to turn without hands' does not follow"),
     });
     let geo20 = bike.geometric_theta1_over_theta(eta, s20);
@@ -234,7 +234,7 @@ fn numbers() -> Vec<Entry> {
         memoir: Memoir::Formula("theta1 > theta (sin(theta1) = sin(theta) cos(gamma) - cos(theta) sin(gamma) sin(eta))".into()),
         derived: Derived::Number(geo20),
         rel_diff: None,
-        verdict: if geo20 > 1.0 { Verdict::Agrees } else { Verdict::DerivationDiffers },
+        verdict: policy::claim(geo20 > 1.0, Verdict::DerivationDiffers),
         note: "generated `theta1_over_theta_geometry` = 1 + (g l/(R s)^2) tan(eta): the front axle derived in the codegen with (3)'".into(),
     });
     let speed = bike.no_hands_speed(eta);
@@ -255,7 +255,7 @@ fn numbers() -> Vec<Entry> {
             ("memoir_ratio_speed_m_per_s".to_string(), memoir_speed.unwrap_or(f64::NAN)),
         ])),
         rel_diff: None,
-        verdict: if speed.is_some() { Verdict::MemoirError } else { Verdict::Agrees },
+        verdict: policy::claim(!(speed.is_some()), Verdict::MemoirError),
         note: "beyond the memoir: the derived ratio and the geometric one agree at one speed (generated `no_hands_s2`, first order, memoir's constants of n° 96); with the memoir's printed ratio there is no such speed (s^2 < 0, shown as NaN)".into(),
     });
     let shift20 = bike.lateral_shift(eta, s20);
@@ -267,7 +267,7 @@ fn numbers() -> Vec<Entry> {
         memoir: Memoir::Number(shift20_memoir),
         derived: Derived::Number(shift20),
         rel_diff: Some((shift20 - shift20_memoir).abs() / shift20.abs().max(shift20_memoir.abs())),
-        verdict: Verdict::MemoirError,
+        verdict: policy::finding(Verdict::MemoirError),
         note: "the memoir prints no number: its (delta theta), (delta gamma) of n° 98 with the geometry solved for epsilon/theta, with its printed ratio (memoir column) and with the derived one (generated `shift_98`); at this speed the derived shift is about a quarter of theta and of the opposite sign to the memoir's".into(),
     });
     e.push(number(
@@ -288,7 +288,7 @@ const FINDINGS: &[(&str, Verdict, &str)] = &[
     ("steer_frame_memoir", Verdict::MemoirError, "the same two terms, copied into n° 94"),
     ("steer_95_from_before", Verdict::MemoirError, "(1) of n° 95 drops the 1/cos(alpha) of the frame's term (second order, harmless at the first order the memoir then uses)"),
     ("theta1_ratio_memoir", Verdict::MemoirError, "(1)' of n° 95 writes mu1 for mu1 sin(omega)"),
-    ("dfdpp_memoir", Verdict::Agrees, "the memoir's df/dp' = A is an approximation it declares; the exact frame coefficient is A upright (d eta/d theta = d nu/d theta = 0); of the neglected terms the memoir lists -L cos(theta) dn/dp where the exact one is -2 L cos(theta) d nu/d theta"),
+    ("dfdpp_memoir", Verdict::Rounding, "the memoir's df/dp' = A is an approximation it declares; the exact frame coefficient is A upright (d eta/d theta = d nu/d theta = 0); of the neglected terms the memoir lists -L cos(theta) dn/dp where the exact one is -2 L cos(theta) d nu/d theta"),
 ];
 
 fn checks() -> (Vec<Entry>, BTreeMap<String, String>) {

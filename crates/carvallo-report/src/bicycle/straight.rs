@@ -18,7 +18,7 @@
 //! (the note says where the slip is). OCR misreadings found by the same comparison are `ocr`.
 
 use crate::entry::{Derived, Entry, Memoir, Verdict};
-use crate::policy::AGREEMENT_TOLERANCE;
+use crate::policy;
 use carvallo::bicycle_straight::{
     friction_half_swing, incline_virtual_works, km_per_hour, memoir_quartic_120, window, Constants,
     Equations, Part, Window,
@@ -52,18 +52,7 @@ const FINDINGS: &[(&str, Verdict, &str)] = &[
 ];
 
 fn rel(d: f64, m: f64) -> f64 {
-    (d - m).abs() / d.abs().max(m.abs()).max(1e-300)
-}
-
-/// The slide-rule verdict of a printed number `m` with last-digit unit `unit` against `d`.
-fn judge(m: f64, unit: f64, d: f64) -> Verdict {
-    if rel(d, m) <= AGREEMENT_TOLERANCE {
-        Verdict::Agrees
-    } else if (d - m).abs() <= unit * (1.0 + 1e-9) || rel(d, m) <= 2e-3 {
-        Verdict::Rounding
-    } else {
-        Verdict::MemoirError
-    }
+    policy::rel_diff(d, m)
 }
 
 fn numbers(pairs: &[(&str, f64)]) -> Derived {
@@ -81,7 +70,7 @@ fn printed(
     note_ok: &str,
     note_err: &str,
 ) -> Entry {
-    let verdict = judge(m, unit, d);
+    let verdict = policy::printed(d, m, unit, Verdict::MemoirError);
     let mut all = vec![("value", d)];
     all.extend_from_slice(extra);
     Entry {
@@ -102,7 +91,7 @@ fn ocr(section: &str, quantity: &str, text: &str, derived: Derived, note: &str) 
         memoir: Memoir::Formula(text.to_string()),
         derived,
         rel_diff: None,
-        verdict: Verdict::Ocr,
+        verdict: policy::finding(Verdict::Ocr),
         note: note.to_string(),
     }
 }
@@ -179,7 +168,7 @@ fn concordance_entry() -> Entry {
         memoir: Memoir::Formula("(δθ), (δγ) of n° 117 (column sums of the n° 116 tables)".to_string()),
         derived: numbers(&[("max difference / max |coefficient|", worst)]),
         rel_diff: Some(worst),
-        verdict: if worst <= AGREEMENT_TOLERANCE { Verdict::Agrees } else { Verdict::DerivationDiffers },
+        verdict: policy::formula(worst, Verdict::DerivationDiffers),
         note: "general model: Kane linearisation of the Carvallo-Whipple bicycle (generated/whipple.ir) with hoop wheels, massless fork and handlebar, trail c1/cos η, θ = φ, γ = -δ, v = R s; constants of n° 117, of the new bicycle of n° 122 and a third set; s = 0.5, 3, 8.2, 20. Agreement means his first-order bookkeeping (A + 2A1 merged, s1 ≈ s) loses nothing: his equations are the exact linearisation of his model".to_string(),
     }
 }
@@ -366,7 +355,7 @@ fn quartic_entries(m: &Equations, f: &Equations) -> Vec<Entry> {
         memoir: Memoir::Formula("+ + - - + / + + - + + / + + + + + / + + + + -".to_string()),
         derived: numbers(&[("mismatches", mismatches)]),
         rel_diff: None,
-        verdict: if mismatches == 0.0 { Verdict::Agrees } else { Verdict::MemoirError },
+        verdict: policy::claim(mismatches == 0.0, Verdict::MemoirError),
         note: "signs of the printed n° 120 quartic at s^2 = 20, 42, 65, 150 (inside each printed interval)".to_string(),
     });
     // The cubic at s^2 = 83.6 and its roots.
@@ -550,7 +539,7 @@ fn new_bicycle_entries(k: &Constants) -> Vec<Entry> {
             ("new limit km/h (three factors)", 12.5 * full.sqrt()),
         ]),
         rel_diff: Some(rel(full, 1.67)),
-        verdict: Verdict::MemoirError,
+        verdict: policy::finding(Verdict::MemoirError),
         note: "Carvallo keeps only the middle factor, judging the outer two insensitive; with l = 1.15 and e = 0.35 the first factor (∝ l) and the third change too, and the whole ratio is the value shown".to_string(),
     });
     out
@@ -578,7 +567,7 @@ fn friction_entries() -> Vec<Entry> {
             memoir: Memoir::Formula(formula.to_string()),
             derived: numbers(&[("closed form", m), ("rk4", d)]),
             rel_diff: Some(r),
-            verdict: if r <= tol { Verdict::Agrees } else { Verdict::DerivationDiffers },
+            verdict: policy::numeric(r, tol, Verdict::DerivationDiffers),
             note: format!("RK4 of θ'' = -a²(θ + k) from rest at -θ0, 20000 steps per 1/a, stopped where θ' = 0; agreement within {tol:e} relative (RK4 accuracy)"),
         });
     }
@@ -592,7 +581,7 @@ fn friction_entries() -> Vec<Entry> {
         memoir: Memoir::Formula("-k + (θ0 - k) e^(ε T/2), ε² neglected (ε = 0.01)".to_string()),
         derived: numbers(&[("closed form", his), ("rk4", th_g)]),
         rel_diff: Some(r),
-        verdict: if r <= eps * eps { Verdict::Agrees } else { Verdict::DerivationDiffers },
+        verdict: policy::numeric(r, eps * eps, Verdict::DerivationDiffers),
         note: "RK4 of θ'' - 2εθ' + a²(θ + k) = 0 from rest at -θ0 to the next θ' = 0; the exact half period is π/sqrt(a² - ε²), so the memoir's form is right to the order ε² it neglects (agreement within ε² relative)".to_string(),
     });
     out
@@ -637,12 +626,9 @@ fn incline_entries() -> Vec<Entry> {
         .map(|(n, (q, text, expected, note))| {
             let r = worst[n] / scale[n];
             let agrees = r <= tol;
-            let verdict = match expected {
-                Verdict::Agrees if agrees => Verdict::Agrees,
-                Verdict::Agrees => Verdict::DerivationDiffers,
-                other if !agrees => *other,
-                _ => Verdict::Agrees,
-            };
+            // An expected `agrees` that fails is `derivation-differs` (the policy never lets a
+            // failed comparison agree); an expected finding that does not show agrees.
+            let verdict = policy::numeric(r, tol, *expected);
             Entry {
                 section: "124".to_string(),
                 quantity: q.to_string(),
@@ -704,7 +690,7 @@ fn time_scale_entry(e: &Equations) -> Entry {
         memoir: Memoir::Formula("d/dt = s d/dT, equations divided by s^2".to_string()),
         derived: numbers(&[("within 1e-10", if worst <= tol { 1.0 } else { 0.0 })]),
         rel_diff: None,
-        verdict: if worst <= tol { Verdict::Agrees } else { Verdict::DerivationDiffers },
+        verdict: policy::numeric(worst, tol, Verdict::DerivationDiffers),
         note: "largest |quartic(eigenvalue / s)| / sum |q_k λ^k| over the four eigenvalues of the first-order system at s = 3, 8.2, 9.5 (general model at the constants of n° 117)".to_string(),
     }
 }

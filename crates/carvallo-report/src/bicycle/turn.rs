@@ -25,8 +25,8 @@
 use std::collections::BTreeMap;
 
 use crate::entry::{Derived, Entry, Memoir, Verdict};
-use crate::policy::number;
 use crate::policy::rel_diff;
+use crate::policy::{self, number};
 use carvallo::bicycle_straight::{Constants, Equations};
 use carvallo::bicycle_turn::{FallEquation, Hold, LockedSteer, SteadyTurn};
 
@@ -36,15 +36,6 @@ pub const TURNS: [(f64, f64); 3] = [(5.0, 20.0), (10.0, 20.0), (5.0, 10.0)];
 
 fn label(gdeg: f64, kmh: f64) -> String {
     format!("gamma = {gdeg}°, {kmh} km/h")
-}
-
-/// Agrees when `rel` is within the declared order `order`, otherwise derivation-differs.
-fn within(rel: f64, order: f64) -> Verdict {
-    if rel <= order {
-        Verdict::Agrees
-    } else {
-        Verdict::DerivationDiffers
-    }
 }
 
 fn approx(
@@ -62,7 +53,7 @@ fn approx(
         memoir: Memoir::Number(memoir),
         derived: Derived::Number(derived),
         rel_diff: Some(rel),
-        verdict: within(rel, order),
+        verdict: policy::approx(rel, order, Verdict::DerivationDiffers),
         note: format!(
             "{note}; relative difference {rel:.3e} against the declared second order theta0^2 + gamma^2 = {order:.3e}"
         ),
@@ -135,11 +126,7 @@ fn turn_entries(bike: &LockedSteer, gdeg: f64, kmh: f64, e: &mut Vec<Entry>) -> 
             ("bearing_held_dfdpp".to_string(), cb.dfdpp),
         ])),
         rel_diff: None,
-        verdict: if c.dfdpp.is_finite() && c.dfdp.is_finite() && c.dfdtheta.is_finite() {
-            Verdict::Agrees
-        } else {
-            Verdict::DerivationDiffers
-        },
+        verdict: policy::claim(c.dfdpp.is_finite() && c.dfdp.is_finite() && c.dfdtheta.is_finite(), Verdict::DerivationDiffers),
         note: format!(
             "f is the lean row of the nonlinear model with the steer row dropped (the hands hold gamma) and the rear-wheel row dropped (the pedals hold the rolling speed s on the ground; the bearing rate then follows the lean rate); df/dp' = M11 + M13 dU/dp exact, df/dp and df/dtheta by central differences with Richardson's extrapolation (the two levels differ by {}); with the bearing rate held instead (bearing_held_*) df/dtheta is the same, lean {th:.5} rad, pitch {:.3e} rad",
             small(c.error, 1e-5),
@@ -204,7 +191,7 @@ fn turn_entries(bike: &LockedSteer, gdeg: f64, kmh: f64, e: &mut Vec<Entry>) -> 
         memoir: Memoir::Number(tan2),
         derived: Derived::Number(ratio),
         rel_diff: Some(rel_diff(ratio, tan2)),
-        verdict: Verdict::DerivationDiffers,
+        verdict: policy::finding(Verdict::DerivationDiffers),
         note: format!(
             "memoir: tan^2(theta0), the ratio of the leading centrifugal term mu R h s n sin(theta) to the gravity term, by (3)'; derived: the ratio of the whole centrifugal part (the frame's, the wheels' gyroscopic terms, the dn/dtheta term and the pitch), {} and of the second order as the memoir says, but not equal to tan^2(theta0): the other centrifugal terms are of the same order. At this lean the whole makes df/dtheta {:.1} % larger than its gravity part",
             if ratio > 0.0 {
@@ -245,11 +232,7 @@ fn turn_entries(bike: &LockedSteer, gdeg: f64, kmh: f64, e: &mut Vec<Entry>) -> 
             ("free_wheel_lambda_plus".to_string(), w.roots[2].re),
         ])),
         rel_diff: None,
-        verdict: if c.saddle() && cb.saddle() && half.saddle() && w.roots[2].re > 0.0 {
-            Verdict::Agrees
-        } else {
-            Verdict::DerivationDiffers
-        },
+        verdict: policy::claim(c.saddle() && cb.saddle() && half.saddle() && w.roots[2].re > 0.0, Verdict::DerivationDiffers),
         note: format!(
             "df/dp' > 0 and df/dtheta < 0: real roots of opposite signs (also with the bearing rate held; free-wheeling, the cubic has a zero root, |lambda| {}, the family of turns in the speed, and one of each sign); df/dp moves lambda_plus by {:.2} % (second order {:.2} %), and lambda_plus is {:.2} % from the one at rest with the same gamma; the frame's B is not in n° 117 (the mapping's central I_Byy = I_Bxx + I_Bzz = {ibyy:.3} kg m^2, illustrative): with it halved the roots stay real and of opposite signs (half_pitch_moment_*)",
             small(w.roots[1].norm(), 1e-9),
@@ -394,11 +377,7 @@ fn new_bicycle_roots(old: &LockedSteer, e: &mut Vec<Entry>) -> Result<(), String
             ("free_wheel_lambda_plus".to_string(), w.roots[2].re),
         ])),
         rel_diff: None,
-        verdict: if all.iter().all(|x| x.saddle()) && w.roots[2].re > 0.0 {
-            Verdict::Agrees
-        } else {
-            Verdict::DerivationDiffers
-        },
+        verdict: policy::claim(all.iter().all(|x| x.saddle()) && w.roots[2].re > 0.0, Verdict::DerivationDiffers),
         note: format!(
             "the new bicycle of n° 122 gives e = {}, mu = {} (1/2 mu = 32; the OCR prints 3,2), l = {}, mu1 = {}; carried over from n° 117: R = {}, c1 = {}, eta = 25°, h = {}, A + 2 A1 = {}, C = {}, L = {}, g = {}, and the frame's pitch moment (not printed for either bicycle; the mapping's central I_Byy = I_Bxx + I_Bzz = {:.3} kg m^2, halved in half_pitch_moment_*). With C and L carried over the frame's central moments are I_Bxx = {ibxx:.3}, I_Bzz = C - mu e^2 = {ibzz:.3}, I_Bxz = {ibxz:.3} kg m^2: I_Bzz < 0 is no mass distribution, so central_moments_* carries the old frame's central moments over instead (A + 2 A1 = {:.4}, C = {:.4}, L = {:.4}). with s held df/dp' = {:.3} > 0 and df/dtheta = {:.2} < 0: real roots of opposite signs, as in every variant (bearing rate held, halved pitch moment, central moments, and the old bicycle at the same turn, old_bicycle_*); free-wheeling, one root of each sign and |lambda| of the zero root {}; lean {:.5} rad",
             k.e, k.mu, k.l, k.mu1, k.r, k.c1, k.h, k.a2, k.c, k.ll, k.g,
@@ -459,11 +438,7 @@ fn new_bicycle_grid() -> Entry {
             ("lambda_plus_max".to_string(), range.1),
         ])),
         rel_diff: None,
-        verdict: if count.iter().all(|c| *c == total) {
-            Verdict::Agrees
-        } else {
-            Verdict::DerivationDiffers
-        },
+        verdict: policy::claim(count.iter().all(|c| *c == total), Verdict::DerivationDiffers),
         note: format!(
             "gamma = {} degrees × {} km/h, the constants of the previous entry (C and L of n° 117 carried over; central_moments_*: the old frame's central moments carried over); a point counts when (C) has real roots of opposite signs; lambda_plus_* are the range of the positive root with s held{}",
             fmt(&GRID_GAMMA),
@@ -480,7 +455,7 @@ fn failure(why: &str) -> Entry {
         memoir: Memoir::Formula("unstable".into()),
         derived: Derived::Number(f64::NAN),
         rel_diff: None,
-        verdict: Verdict::DerivationDiffers,
+        verdict: policy::finding(Verdict::DerivationDiffers),
         note: format!("the computation failed: {why}"),
     }
 }

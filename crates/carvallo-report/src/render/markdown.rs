@@ -207,12 +207,13 @@ fn verdict_meaning(v: Verdict) -> &'static str {
         }
         Verdict::Ocr => "the printed text is an OCR misreading of what the memoir means",
         Verdict::Rounding => {
-            "the memoir's number is the derived one rounded (slide-rule precision)"
+            "the memoir's number is the derived one rounded (slide-rule precision), or an \
+             approximation the memoir declares, within the order it neglects"
         }
         Verdict::DerivationDiffers => {
             "the derivation gives something else and the cause is not (yet) attributed"
         }
-        Verdict::Agrees => "equal within the stated tolerance",
+        Verdict::Agrees => "equal within the tolerance of the policy above",
     }
 }
 
@@ -238,6 +239,7 @@ pub fn render_markdown(entries: &[Entry], figures_section: &str) -> String {
         .map(|v| format!("{} {}", counts.get(v.as_str()).copied().unwrap_or(0), v.as_str()))
         .collect();
     let _ = writeln!(out, "{} entries: {}.\n", entries.len(), summary.join(", "));
+    let _ = writeln!(out, "{}", crate::policy::PREAMBLE);
     if !figures_section.is_empty() {
         out.push_str(figures_section.trim_end());
         out.push_str("\n\n");

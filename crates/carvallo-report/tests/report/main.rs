@@ -13,4 +13,5 @@ mod bicycle_straight;
 mod bicycle_turn;
 mod hoop;
 mod hoop_discussion;
+mod policy;
 mod unicycle;
