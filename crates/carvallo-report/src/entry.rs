@@ -10,7 +10,7 @@ use serde::{Deserialize, Serialize};
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Hash, Serialize, Deserialize)]
 #[serde(rename_all = "kebab-case")]
 pub enum Verdict {
-    /// Equal within [`AGREEMENT_TOLERANCE`] (formulas) or exactly as printed (numbers).
+    /// Equal within [`AGREEMENT_TOLERANCE`](crate::policy::AGREEMENT_TOLERANCE) (formulas) or exactly as printed (numbers).
     Agrees,
     /// The memoir's number is the derived one rounded (Carvallo used a slide rule, n° 14).
     Rounding,

@@ -9,10 +9,11 @@
 
 use std::collections::BTreeMap;
 
+use carvallo::hoop_discussion::{self as hd, carvallo_root, special_points};
+
 use crate::checks::parse_checks;
 use crate::entry::{Derived, Entry, Memoir, Verdict};
 use crate::policy::{self, number_entry, printed_number, rel_diff, Expect};
-use carvallo::hoop_discussion::{self as hd, carvallo_root, special_points};
 
 /// Number of seeded points at which formulas are compared.
 pub const POINTS: usize = 64;
@@ -88,7 +89,7 @@ fn formula_entry(
 /// `equilibrium_n12_memoir` and `stability_n12_memoir` of `generated/hoop.checks.tsv`): then a
 /// slip in a printed number of the discussion is Carvallo's arithmetic.
 pub fn n12_forms_agree() -> bool {
-    crate::hoop::hoop_checks().is_ok_and(|checks| {
+    parse_checks(carvallo::artifacts::HOOP.checks).is_ok_and(|checks| {
         ["equilibrium_n12_memoir", "stability_n12_memoir"]
             .iter()
             .all(|id| checks.iter().any(|c| c.id == *id && c.holds))
@@ -96,7 +97,7 @@ pub fn n12_forms_agree() -> bool {
 }
 
 /// The remarkable points of the stability discussion that the hoop's own concordance
-/// ([`crate::hoop::hoop_entries`]) lists: point F and the vertical tangent of (S) (n° 14),
+/// (`hoop::hoop_entries`, which calls this one) lists: point F and the vertical tangent of (S) (n° 14),
 /// point H (n° 17 bis), now from the exact closed forms of `generated/hoop_discussion.ir`.
 pub fn point_entries(formulas_agree: bool) -> Vec<Entry> {
     let mut out = Vec::new();

@@ -14,12 +14,12 @@
 
 use std::collections::BTreeMap;
 
-use crate::entry::{Derived, Entry, Memoir, Verdict};
-use crate::policy::{self, formula_entry, number, number_as, rel_diff};
 use carvallo::unicycle_discussion::{
     bisect, eval, first_member_41, minimum_on_e, n32, out, s_on_e, trinomial, Point, H_OVER_R,
 };
 
+use crate::entry::{Derived, Entry, Memoir, Verdict};
+use crate::policy::{self, formula_entry, number, number_as, rel_diff};
 use crate::sample::Rng;
 
 const CHECKS_TSV: &str = carvallo::artifacts::UNICYCLE.checks;

@@ -7,17 +7,18 @@
 //! The "memoir" column of these entries holds the published value. The relative difference is
 //! the report's usual $|d - m| / \max(|d|, |m|, \varepsilon)$ with
 //! $\varepsilon$ = [`REL_DIFF_FLOOR`]; an entry agrees when it is at most
-//! [`AGREEMENT_TOLERANCE`] (the published values carry 14 decimals). The published numbers are
+//! [`AGREEMENT_TOLERANCE`](crate::policy::AGREEMENT_TOLERANCE) (the published values carry 14 decimals). The published numbers are
 //! typed here from the paper's Table 2 and section 5 as the anchors file
 //! `../shared/anchors/whipple-benchmark.toml` gives them; `tests/tests/whipple_benchmark.rs`
 //! checks that they equal that file.
 
 use std::collections::BTreeMap;
 
+use carvallo::whipple::{Whipple, WhippleParams};
+
 use crate::checks::parse_checks;
 use crate::entry::{Derived, Entry, Memoir, Verdict};
 use crate::policy::{self, Expect, REL_DIFF_FLOOR};
-use carvallo::whipple::{Whipple, WhippleParams};
 
 /// Section label of the entries.
 pub const SECTION: &str = "benchmark";

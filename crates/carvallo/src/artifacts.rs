@@ -38,8 +38,8 @@ artifact!(BICYCLE_KINEMATICS, "bicycle_kinematics");
 artifact!(BICYCLE_STEADY, "bicycle_steady");
 artifact!(BICYCLE_STRAIGHT, "bicycle_straight");
 
-/// Every model with committed artifacts, in memoir order (the order of `generated/README.md`'s
-/// derivations does not matter here).
+/// Every model with committed artifacts: the hoop and the unicycle (Part I), the modern
+/// Carvallo–Whipple bicycle, then Carvallo's bicycle of Part II.
 pub const MODELS: [Artifact; 9] = [
     HOOP,
     UNICYCLE,

@@ -94,30 +94,7 @@ pub struct VerticalTangent {
     pub y_product: f64,
 }
 
-/// Bisection for a root of a continuous `f` with a sign change on `[lo, hi]`; `None` when `f`
-/// is not finite at an end or has the same sign at both.
-pub fn bisect(f: impl Fn(f64) -> f64, mut lo: f64, mut hi: f64) -> Option<f64> {
-    let flo = f(lo);
-    if !(flo.is_finite() && f(hi).is_finite()) || flo.signum() == f(hi).signum() {
-        return None;
-    }
-    for _ in 0..200 {
-        let mid = 0.5 * (lo + hi);
-        if mid <= lo || mid >= hi {
-            break;
-        }
-        let fm = f(mid);
-        if fm == 0.0 {
-            return Some(mid);
-        }
-        if fm.signum() == flo.signum() {
-            lo = mid;
-        } else {
-            hi = mid;
-        }
-    }
-    Some(0.5 * (lo + hi))
-}
+pub use crate::numerics::poly::bisect;
 
 /// Coefficients $(a, b, c)$ of a function quadratic in its argument, read at $0, \pm1$.
 fn quadratic(f: impl Fn(f64) -> f64) -> (f64, f64, f64) {
@@ -468,11 +445,7 @@ pub fn stick_linearised_rk4(
     let h = time / steps as f64;
     let mut x = [0.0; 3];
     for _ in 0..steps {
-        let k1 = rhs(x);
-        let k2 = rhs(std::array::from_fn(|i| x[i] + 0.5 * h * k1[i]));
-        let k3 = rhs(std::array::from_fn(|i| x[i] + 0.5 * h * k2[i]));
-        let k4 = rhs(std::array::from_fn(|i| x[i] + h * k3[i]));
-        x = std::array::from_fn(|i| x[i] + h / 6.0 * (k1[i] + 2.0 * k2[i] + 2.0 * k3[i] + k4[i]));
+        x = crate::numerics::ode::rk4_step(&rhs, x, h);
     }
     (x[0], x[2])
 }

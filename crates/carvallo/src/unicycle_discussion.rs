@@ -228,37 +228,7 @@ pub fn out(point: &Point, name: &str) -> f64 {
     eval(point)[name]
 }
 
-/// Bisection of a sign change of `f` on `[lo, hi]` (200 halvings or until the midpoint no
-/// longer moves); the midpoint of the last bracket.
-pub fn bisect(f: impl Fn(f64) -> f64, mut lo: f64, mut hi: f64) -> f64 {
-    let flo = f(lo);
-    for _ in 0..200 {
-        let mid = 0.5 * (lo + hi);
-        if mid <= lo || mid >= hi {
-            break;
-        }
-        if (f(mid) > 0.0) == (flo > 0.0) {
-            lo = mid;
-        } else {
-            hi = mid;
-        }
-    }
-    0.5 * (lo + hi)
-}
-
-/// Golden-section minimisation of a unimodal `f` on `[lo, hi]`.
-pub fn minimise(f: impl Fn(f64) -> f64, mut lo: f64, mut hi: f64) -> f64 {
-    let r = (5f64.sqrt() - 1.0) / 2.0;
-    for _ in 0..200 {
-        let (x1, x2) = (hi - r * (hi - lo), lo + r * (hi - lo));
-        if f(x1) < f(x2) {
-            hi = x2;
-        } else {
-            lo = x1;
-        }
-    }
-    0.5 * (lo + hi)
-}
+pub use crate::numerics::poly::{bisect_unchecked as bisect, minimise};
 
 /// A normalised point of n° 32–41: R = g = mu = 1, z = h/R, rates in units of sqrt(g/R).
 pub fn n32(theta_deg: f64, s: f64, n: f64) -> Point {

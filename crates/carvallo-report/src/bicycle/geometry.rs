@@ -15,9 +15,10 @@
 
 use std::collections::BTreeMap;
 
+use carvallo::bicycle_geometry::{Contact, Geometry};
+
 use crate::entry::{Derived, Entry, Memoir, Verdict};
 use crate::policy::{self, number, number_as};
-use carvallo::bicycle_geometry::{Contact, Geometry};
 
 const CHECKS_TSV: &str = carvallo::artifacts::BICYCLE_GEOMETRY.checks;
 

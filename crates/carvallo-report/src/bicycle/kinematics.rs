@@ -13,9 +13,10 @@
 
 use std::collections::BTreeMap;
 
+use carvallo::bicycle_kinematics::{Kinematics, RestEquilibrium};
+
 use crate::entry::{Derived, Entry, Memoir, Verdict};
 use crate::policy::{self, number};
-use carvallo::bicycle_kinematics::{Kinematics, RestEquilibrium};
 
 const CHECKS_TSV: &str = carvallo::artifacts::BICYCLE_KINEMATICS.checks;
 

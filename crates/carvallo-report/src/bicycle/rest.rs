@@ -14,9 +14,10 @@
 
 use std::collections::BTreeMap;
 
+use carvallo::bicycle_rest::{RestBicycle, RestConstants, RestError, RestPosition, SECOND_STEP};
+
 use crate::entry::{Derived, Entry, Memoir, Verdict};
 use crate::policy::{self, rel_diff};
-use carvallo::bicycle_rest::{RestBicycle, RestConstants, RestError, RestPosition, SECOND_STEP};
 
 /// The leans tabulated (degrees).
 pub const LEANS: [f64; 5] = [5.0, 10.0, 20.0, 30.0, 40.0];

@@ -15,11 +15,12 @@
 
 use std::collections::BTreeMap;
 
+use carvallo::bicycle_steady::{BicycleParams, BicycleSteady, SteadyState};
+
 use crate::checks::parse_checks;
 use crate::entry::{Derived, Entry, Memoir, Verdict};
 use crate::policy::{self, formula_entry, number};
 use crate::sample::Rng;
-use carvallo::bicycle_steady::{BicycleParams, BicycleSteady, SteadyState};
 
 const CHECKS_TSV: &str = carvallo::artifacts::BICYCLE_STEADY.checks;
 

@@ -13,16 +13,18 @@
 //! # Verdicts
 //! A printed number is compared with the value computed from the memoir's own inputs of the
 //! step that prints it (for n° 120 the n° 118 numbers; for n° 121 the n° 120 numbers):
-//! `agrees` within [`AGREEMENT_TOLERANCE`] relative, `rounding` within one unit of the last
+//! `agrees` within [`AGREEMENT_TOLERANCE`](crate::policy::AGREEMENT_TOLERANCE) relative, `rounding` within one unit of the last
 //! printed digit or $2\cdot10^{-3}$ relative (a slide rule, n° 14), `memoir-error` otherwise
 //! (the note says where the slip is). OCR misreadings found by the same comparison are `ocr`.
 
-use crate::entry::{Derived, Entry, Memoir, Verdict};
-use crate::policy;
 use carvallo::bicycle_straight::{
     friction_half_swing, incline_virtual_works, km_per_hour, memoir_quartic_120, window, Constants,
     Equations, Part, Window,
 };
+use carvallo::numerics::mat2::{det, mix};
+
+use crate::entry::{Derived, Entry, Memoir, Verdict};
+use crate::policy;
 
 const CHECKS_TSV: &str = carvallo::artifacts::BICYCLE_STRAIGHT.checks;
 
@@ -94,14 +96,6 @@ fn ocr(section: &str, quantity: &str, text: &str, derived: Derived, note: &str) 
         verdict: policy::finding(Verdict::Ocr),
         note: note.to_string(),
     }
-}
-
-fn mix(a: &[[f64; 2]; 2], b: &[[f64; 2]; 2]) -> f64 {
-    a[0][0] * b[1][1] + b[0][0] * a[1][1] - a[0][1] * b[1][0] - b[0][1] * a[1][0]
-}
-
-fn det(a: &[[f64; 2]; 2]) -> f64 {
-    a[0][0] * a[1][1] - a[0][1] * a[1][0]
 }
 
 /// The seven numbers of the normalised quartic of n° 120, in the printed order and sign:

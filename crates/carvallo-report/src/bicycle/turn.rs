@@ -24,11 +24,12 @@
 
 use std::collections::BTreeMap;
 
+use carvallo::bicycle_straight::{Constants, Equations};
+use carvallo::bicycle_turn::{FallEquation, Hold, LockedSteer, SteadyTurn};
+
 use crate::entry::{Derived, Entry, Memoir, Verdict};
 use crate::policy::rel_diff;
 use crate::policy::{self, number};
-use carvallo::bicycle_straight::{Constants, Equations};
-use carvallo::bicycle_turn::{FallEquation, Hold, LockedSteer, SteadyTurn};
 
 /// The steady turns of the concordance: handlebar angle γ (degrees) and speed (km/h), the
 /// memoir's 20 and 10 km/h of n° 88.

@@ -369,6 +369,8 @@ mod tests {
         assert!(at("§ V — complément pratique") < at("§ III — équilibre du monocycle"));
         assert!(at("§ III — équilibre du monocycle") < at(BEYOND));
         assert!(at("## Figures") < at("## Concordance") && at("## Concordance") < at("## Errata"));
+        // The one verdict policy is stated before the concordance.
+        assert!(at("How the verdicts are decided") < at("## Concordance"));
         assert!(md.contains(
             "4 entries: 2 agrees, 1 memoir-error, 0 ocr, 1 rounding, 0 derivation-differs."
         ));

@@ -2,11 +2,12 @@
 //! entries that are findings, every table of the memoir present, and a snapshot of the text
 //! table with numbers normalised to 4 significant digits.
 
-use crate::common;
 use std::collections::BTreeMap;
 
 use carvallo_report::bicycle::geometry::entries;
 use carvallo_report::{render_text_normalised, Verdict};
+
+use crate::common;
 
 /// Entries whose verdict is not `agrees` or `rounding`, by (section, quantity). The n° 52–56
 /// table findings agree with an independent recomputation (exact Newton solution of (1), (2)

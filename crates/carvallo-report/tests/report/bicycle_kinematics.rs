@@ -2,11 +2,12 @@
 //! entries that are findings, every section present, and a snapshot of the text table with
 //! numbers normalised to 4 significant digits.
 
-use crate::common;
 use std::collections::BTreeMap;
 
 use carvallo_report::bicycle::kinematics::entries;
 use carvallo_report::{render_text_normalised, Verdict};
+
+use crate::common;
 
 /// Entries whose verdict is not `agrees` or `rounding`, by (section, quantity).
 fn findings() -> BTreeMap<(&'static str, &'static str), Verdict> {

@@ -3,13 +3,14 @@
 //! runtime's validation, and a snapshot of the text table with numbers normalised to 4
 //! significant digits.
 
-use crate::common;
 use std::collections::BTreeMap;
 
 use carvallo::bicycle_steady::{BicycleParams, BicycleSteady, SteadyState};
 use carvallo::ParameterError;
 use carvallo_report::bicycle::steady::entries;
 use carvallo_report::{render_text_normalised, Memoir, Verdict, AGREEMENT_TOLERANCE};
+
+use crate::common;
 
 /// Entries whose verdict is not `agrees` or `rounding`, by (section, quantity).
 fn findings() -> BTreeMap<(&'static str, &'static str), Verdict> {

@@ -3,11 +3,12 @@
 //! or a slide-rule rounding, and a snapshot of the text table with numbers normalised to 4
 //! significant digits.
 
-use crate::common;
 use std::collections::BTreeMap;
 
 use carvallo_report::bicycle::straight::entries;
 use carvallo_report::{render_text_normalised, Verdict};
+
+use crate::common;
 
 /// Entries whose verdict is not `agrees` or `rounding`, by (section, quantity).
 fn findings() -> BTreeMap<(&'static str, &'static str), Verdict> {

@@ -2,11 +2,12 @@
 //! entries that are findings, every formula entry consistent with its tolerance, and a
 //! snapshot of the text table with numbers normalised to 4 significant digits.
 
-use crate::common;
 use std::collections::BTreeMap;
 
 use carvallo_report::unicycle::entries;
 use carvallo_report::{render_text_normalised, Memoir, Verdict, AGREEMENT_TOLERANCE};
+
+use crate::common;
 
 /// Entries whose verdict is not `agrees`, by (section, quantity); every other entry agrees
 /// or is a slide-rule `rounding`.
