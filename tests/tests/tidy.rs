@@ -84,8 +84,8 @@ fn no_test_is_ignored_or_expected_to_panic() {
     );
 }
 
-/// The report modules that are leaves (shape, policy, samples, checks, renderers).
-const REPORT_LEAVES: [&str; 5] = ["entry", "policy", "sample", "checks", "render"];
+/// The report modules that are leaves (shape, policy, samples, checks, outline, renderers).
+const REPORT_LEAVES: [&str; 6] = ["entry", "policy", "sample", "checks", "outline", "render"];
 /// The per-model report modules.
 const REPORT_MODELS: [&str; 5] = ["hoop", "hoop_discussion", "unicycle", "whipple", "bicycle"];
 

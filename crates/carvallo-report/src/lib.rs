@@ -30,6 +30,7 @@ pub mod checks;
 pub mod entry;
 pub mod hoop;
 pub mod hoop_discussion;
+pub mod outline;
 pub mod policy;
 pub mod render;
 pub mod sample;
