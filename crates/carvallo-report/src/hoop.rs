@@ -17,7 +17,7 @@ use std::collections::BTreeMap;
 
 use carvallo::hoop_discussion::bisect;
 
-use crate::checks::{parse_checks, SymbolicCheck};
+use crate::checks::{self, parse_checks, Finding, SymbolicCheck};
 use crate::entry::{section_key, Derived, Entry, Memoir, Verdict};
 use crate::policy::{self, number_entry, rel_diff, Expect, AGREEMENT_TOLERANCE, REL_DIFF_FLOOR};
 use crate::render::text::format_significant;
@@ -467,12 +467,12 @@ pub fn hoop_checks() -> Result<Vec<SymbolicCheck>, String> {
 
 /// Checks whose expected outcome is `false`, with the memoir's reason: a check that fails as
 /// the memoir says it must is a concordance, not a discrepancy.
-const EXPECTED_TO_FAIL: &[(&str, &str)] = &[
-    (
+const FINDINGS: &[Finding] = &[
+    Finding::fails_as_the_memoir_says(
         "lagrange_unmodified_nu",
         "n° 71: the memoir says Lagrange's equations do not apply to the parameters chosen",
     ),
-    (
+    Finding::fails_as_the_memoir_says(
         "lagrange_unmodified_sigma",
         "n° 71: the memoir says Lagrange's equations do not apply to the parameters chosen",
     ),
@@ -484,7 +484,7 @@ const DETAIL_CHARS: usize = 160;
 /// Folds the symbolic checks into the entries. A check named `<output>_memoir` annotates the
 /// formula entry of that output (its note gains "symbolic check at regen: ..."); every other
 /// check becomes an entry of its own, which agrees when the check's outcome is the expected
-/// one (`true`, except the checks of [`EXPECTED_TO_FAIL`]).
+/// one (`true`, except the checks of [`FINDINGS`]).
 fn fold_checks(entries: &mut Vec<Entry>, checks: Result<Vec<SymbolicCheck>, String>) {
     let checks = match checks {
         Ok(checks) => checks,
@@ -524,14 +524,12 @@ fn fold_checks(entries: &mut Vec<Entry>, checks: Result<Vec<SymbolicCheck>, Stri
             }
             continue;
         }
-        let expected = EXPECTED_TO_FAIL.iter().find(|(id, _)| *id == check.id);
-        let expect = if expected.is_some() { Expect::FailsAsTheMemoirSays } else { Expect::Holds };
         let mut note = format!(
             "symbolic check at regen: {} ({detail})",
             if check.holds { "holds" } else { "does not hold" }
         );
-        if let Some((_, why)) = expected {
-            note.push_str(&format!("; expected not to hold: {why}"));
+        if let Some(f) = checks::find(FINDINGS, &check.id) {
+            note.push_str(&format!("; expected not to hold: {}", f.why));
         }
         entries.push(Entry {
             section: check.section.clone(),
@@ -542,7 +540,7 @@ fn fold_checks(entries: &mut Vec<Entry>, checks: Result<Vec<SymbolicCheck>, Stri
                 if check.holds { 1.0 } else { 0.0 },
             )])),
             rel_diff: None,
-            verdict: policy::check(check.holds, expect),
+            verdict: policy::check(check.holds, checks::expect(FINDINGS, &check.id)),
             note,
         });
     }

@@ -11,32 +11,27 @@ use std::collections::BTreeMap;
 
 use carvallo::hoop_discussion::{self as hd, carvallo_root, special_points};
 
-use crate::checks::parse_checks;
+use crate::checks::{self, parse_checks, Finding};
 use crate::entry::{Derived, Entry, Memoir, Verdict};
-use crate::policy::{self, number_entry, printed_number, rel_diff, Expect};
+use crate::policy::{self, number_entry, printed_number, rel_diff};
+use crate::sample::Rng;
 
 /// Number of seeded points at which formulas are compared.
 pub const POINTS: usize = 64;
 
 const CHECKS_TSV: &str = carvallo::artifacts::HOOP_DISCUSSION.checks;
 
-/// Checks whose expected outcome is `false`, with the reason.
-const EXPECTED_TO_FAIL: &[(&str, &str)] = &[(
+/// Checks whose expected outcome is `false` (a slip of the memoir), with the reason.
+const FINDINGS: &[Finding] = &[Finding::new(
     "s0_table_memoir",
+    Verdict::MemoirError,
     "the table of variations of n° 15 prints s0 = tan(th) sqrt(2/(3 cos(th))), the text's s0 = tan(th) sqrt(3 cos(th)/2) is the right one",
 )];
 
 /// Deterministic points (SplitMix64 with a fixed seed).
 fn points() -> Vec<[(&'static str, f64); 6]> {
-    let mut state: u64 = 0x1897_0C0A_4A11_0013;
-    let mut next = |lo: f64, hi: f64| {
-        state = state.wrapping_add(0x9E37_79B9_7F4A_7C15);
-        let mut z = state;
-        z = (z ^ (z >> 30)).wrapping_mul(0xBF58_476D_1CE4_E5B9);
-        z = (z ^ (z >> 27)).wrapping_mul(0x94D0_49BB_1331_11EB);
-        z ^= z >> 31;
-        lo + (hi - lo) * ((z >> 11) as f64 / (1u64 << 53) as f64)
-    };
+    let mut rng = Rng(0x1897_0C0A_4A11_0013);
+    let mut next = |lo: f64, hi: f64| rng.uniform(lo, hi);
     (0..POINTS)
         .map(|_| {
             [
@@ -570,7 +565,6 @@ fn check_entries() -> Vec<Entry> {
     checks
         .into_iter()
         .map(|c| {
-            let expected = EXPECTED_TO_FAIL.iter().find(|(id, _)| *id == c.id);
             let mut detail: String = c.detail.chars().take(160).collect();
             if detail.len() < c.detail.len() {
                 detail.push_str("...");
@@ -579,14 +573,10 @@ fn check_entries() -> Vec<Entry> {
                 "symbolic check at regen: {} ({detail})",
                 if c.holds { "holds" } else { "does not hold" }
             );
-            if let Some((_, why)) = expected {
-                note.push_str(&format!("; expected not to hold: {why}"));
+            if let Some(f) = checks::find(FINDINGS, &c.id) {
+                note.push_str(&format!("; expected not to hold: {}", f.why));
             }
-            let expect = match expected {
-                Some(_) => Expect::Finding(Verdict::MemoirError),
-                None => Expect::Holds,
-            };
-            let verdict = policy::check(c.holds, expect);
+            let verdict = policy::check(c.holds, checks::expect(FINDINGS, &c.id));
             Entry {
                 section: c.section,
                 quantity: format!("check {}", c.id),

@@ -18,6 +18,7 @@ use carvallo::unicycle_discussion::{
     bisect, eval, first_member_41, minimum_on_e, n32, out, s_on_e, trinomial, Point, H_OVER_R,
 };
 
+use crate::checks::Finding;
 use crate::entry::{Derived, Entry, Memoir, Verdict};
 use crate::policy::{self, formula_entry, number, number_as, rel_diff};
 use crate::sample::Rng;
@@ -756,11 +757,11 @@ fn ocr_entries() -> Vec<Entry> {
 }
 
 /// The ids of the checks that are findings, with their verdict.
-const FINDINGS: &[(&str, Verdict, &str)] = &[
-    ("merge_is_substitution", Verdict::DerivationDiffers, "n° 24: the merge of letters is an approximation"),
-    ("lagrange_theta_74_as_printed", Verdict::Ocr, "n° 74: the text reads mu h R sin(theta) for mu g h sin(theta); with g the (theta) equation agrees (check lagrange_74_memoir)"),
-    ("skid_full_memoir", Verdict::MemoirError, "n° 30: the denominator's z terms have the wrong sign"),
-    ("sum_78_full_model", Verdict::DerivationDiffers, "n° 78: the full model's sum condition differs from the merged one"),
+const FINDINGS: &[Finding] = &[
+    Finding::new("merge_is_substitution", Verdict::DerivationDiffers, "n° 24: the merge of letters is an approximation"),
+    Finding::new("lagrange_theta_74_as_printed", Verdict::Ocr, "n° 74: the text reads mu h R sin(theta) for mu g h sin(theta); with g the (theta) equation agrees (check lagrange_74_memoir)"),
+    Finding::new("skid_full_memoir", Verdict::MemoirError, "n° 30: the denominator's z terms have the wrong sign"),
+    Finding::new("sum_78_full_model", Verdict::DerivationDiffers, "n° 78: the full model's sum condition differs from the merged one"),
 ];
 
 fn checks() -> Vec<Entry> {

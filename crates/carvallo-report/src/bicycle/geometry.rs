@@ -17,6 +17,7 @@ use std::collections::BTreeMap;
 
 use carvallo::bicycle_geometry::{Contact, Geometry};
 
+use crate::checks::Finding;
 use crate::entry::{Derived, Entry, Memoir, Verdict};
 use crate::policy::{self, number, number_as};
 
@@ -359,7 +360,7 @@ fn first_order_51(g: &Geometry) -> Vec<Entry> {
 }
 
 /// Check ids that are findings: expected to fail, with the verdict and the reason.
-const FINDINGS: &[(&str, Verdict, &str)] = &[(
+const FINDINGS: &[Finding] = &[Finding::new(
     "first_order_coefficient_51_as_printed",
     Verdict::MemoirError,
     "n° 51: the printed (2)' has R tan tau0 sin sigma0 sin gamma; the derivation gives cos sigma0",

@@ -15,6 +15,7 @@ use std::collections::BTreeMap;
 
 use carvallo::bicycle_kinematics::{Kinematics, RestEquilibrium};
 
+use crate::checks::Finding;
 use crate::entry::{Derived, Entry, Memoir, Verdict};
 use crate::policy::{self, number};
 
@@ -314,23 +315,23 @@ fn rest_69(k: &Kinematics) -> Vec<Entry> {
 }
 
 /// Check ids that are findings: expected to fail, with the verdict and the reason.
-const FINDINGS: &[(&str, Verdict, &str)] = &[
-    (
+const FINDINGS: &[Finding] = &[
+    Finding::new(
         "variation_h_61_as_printed",
         Verdict::Ocr,
         "n° 61, (4): the deta term of dH reads -I sin eta - I sin theta cos eta; the derivation (and dG, dH1 beside it) has -J sin theta cos eta (a J printed or read as I)",
     ),
-    (
+    Finding::new(
         "relation_dnu_64_as_printed",
         Verdict::Ocr,
         "n° 64: the summary (dnu) reads R (sin mu - c) cos beta, not homogeneous; the table of n° 64, the (dnu) of n° 66 and the derivation have (R sin mu - c) cos beta",
     ),
-    (
+    Finding::new(
         "mu_prime_9_69",
         Verdict::MemoirError,
         "n° 69, (9): the derivative of tan theta sin gamma / cos eta in eta is missing; it vanishes at theta = 0, the only place (9) is used",
     ),
-    (
+    Finding::new(
         "eta_second_69_as_printed",
         Verdict::MemoirError,
         "n° 69: eta'' = R cos^3 mu sin^2 gamma/(lambda cos eta), the print has sin gamma",

@@ -18,6 +18,7 @@ use std::collections::BTreeMap;
 use carvallo::bicycle_steady::{BicycleParams, BicycleSteady, SteadyState};
 
 use crate::checks::parse_checks;
+use crate::checks::Finding;
 use crate::entry::{Derived, Entry, Memoir, Verdict};
 use crate::policy::{self, formula_entry, number};
 use crate::sample::Rng;
@@ -284,12 +285,12 @@ fn numbers() -> Vec<Entry> {
 }
 
 /// Checks that are findings: (id, verdict, why).
-const FINDINGS: &[(&str, Verdict, &str)] = &[
-    ("fall_frame_memoir", Verdict::MemoirError, "the memoir's frame row of n° 83/85 has two wrong third-order terms (see the formula entry)"),
-    ("steer_frame_memoir", Verdict::MemoirError, "the same two terms, copied into n° 94"),
-    ("steer_95_from_before", Verdict::MemoirError, "(1) of n° 95 drops the 1/cos(alpha) of the frame's term (second order, harmless at the first order the memoir then uses)"),
-    ("theta1_ratio_memoir", Verdict::MemoirError, "(1)' of n° 95 writes mu1 for mu1 sin(omega)"),
-    ("dfdpp_memoir", Verdict::Rounding, "the memoir's df/dp' = A is an approximation it declares; the exact frame coefficient is A upright (d eta/d theta = d nu/d theta = 0); of the neglected terms the memoir lists -L cos(theta) dn/dp where the exact one is -2 L cos(theta) d nu/d theta"),
+const FINDINGS: &[Finding] = &[
+    Finding::new("fall_frame_memoir", Verdict::MemoirError, "the memoir's frame row of n° 83/85 has two wrong third-order terms (see the formula entry)"),
+    Finding::new("steer_frame_memoir", Verdict::MemoirError, "the same two terms, copied into n° 94"),
+    Finding::new("steer_95_from_before", Verdict::MemoirError, "(1) of n° 95 drops the 1/cos(alpha) of the frame's term (second order, harmless at the first order the memoir then uses)"),
+    Finding::new("theta1_ratio_memoir", Verdict::MemoirError, "(1)' of n° 95 writes mu1 for mu1 sin(omega)"),
+    Finding::new("dfdpp_memoir", Verdict::Rounding, "the memoir's df/dp' = A is an approximation it declares; the exact frame coefficient is A upright (d eta/d theta = d nu/d theta = 0); of the neglected terms the memoir lists -L cos(theta) dn/dp where the exact one is -2 L cos(theta) d nu/d theta"),
 ];
 
 fn checks() -> (Vec<Entry>, BTreeMap<String, String>) {

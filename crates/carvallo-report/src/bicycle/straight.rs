@@ -23,6 +23,7 @@ use carvallo::bicycle_straight::{
 };
 use carvallo::numerics::mat2::{det, mix};
 
+use crate::checks::Finding;
 use crate::entry::{Derived, Entry, Memoir, Verdict};
 use crate::policy;
 
@@ -45,12 +46,12 @@ fn checks() -> Vec<Entry> {
 const SIGN_NOTE: &str = "the general model gives the sign of n° 109-111, which the printed sums of n° 117 also use; the OCR'd table has the opposite sign in all five gamma'' entries of the (dT/dq')' rows and nowhere else, read as an OCR sign loss (see the table entries of n° 116 above)";
 
 /// Check ids that are findings: expected not to hold, with the verdict and the reason.
-const FINDINGS: &[(&str, Verdict, &str)] = &[
-    ("fall_frame_gamma2_as_printed", Verdict::Ocr, SIGN_NOTE),
-    ("fall_front_wheel_gamma2_as_printed", Verdict::Ocr, SIGN_NOTE),
-    ("bar_frame_gamma2_as_printed", Verdict::Ocr, SIGN_NOTE),
-    ("bar_rear_wheel_gamma2_as_printed", Verdict::Ocr, SIGN_NOTE),
-    ("bar_front_wheel_gamma2_as_printed", Verdict::Ocr, SIGN_NOTE),
+const FINDINGS: &[Finding] = &[
+    Finding::new("fall_frame_gamma2_as_printed", Verdict::Ocr, SIGN_NOTE),
+    Finding::new("fall_front_wheel_gamma2_as_printed", Verdict::Ocr, SIGN_NOTE),
+    Finding::new("bar_frame_gamma2_as_printed", Verdict::Ocr, SIGN_NOTE),
+    Finding::new("bar_rear_wheel_gamma2_as_printed", Verdict::Ocr, SIGN_NOTE),
+    Finding::new("bar_front_wheel_gamma2_as_printed", Verdict::Ocr, SIGN_NOTE),
 ];
 
 fn rel(d: f64, m: f64) -> f64 {
