@@ -531,6 +531,7 @@ fn stick_entries() -> Vec<Entry> {
     let n_early = |t: f64| hd::stick_theta_n(r, g, s, 0.0, 1.0, t);
     let t_change = carvallo::hoop_discussion::bisect(|t| n_early(t).1, 0.01 / h, 20.0 / h);
     let (th_e, n_e) = n_early(0.5 / h);
+    let same_sign = n_e * th_e > 0.0;
     out.push(Entry {
         section: "19".into(),
         quantity: "n opposite to th \"dans les trois cas\" (M1 term)".into(),
@@ -540,7 +541,7 @@ fn stick_entries() -> Vec<Entry> {
             ("sign_change_time_h_t".to_string(), t_change.map_or(f64::NAN, |t| t * h)),
         ])),
         rel_diff: None,
-        verdict: policy::claim(!(n_e * th_e > 0.0), Verdict::MemoirError),
+        verdict: policy::claim(!same_sign, Verdict::MemoirError),
         note: "for the M1 term, n = M1 t - 2 s th ~ M1 t - (4/9) s^2 M1 t^3 has the sign of M1 (that of th) at first and only takes the opposite sign after h t = sign_change_time_h_t (closed form (7), M = 0, M1 = 1): the memoir's \"dans les trois cas\" holds after that delay, the M term is opposite at once".into(),
     });
     out

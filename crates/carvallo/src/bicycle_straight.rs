@@ -465,7 +465,7 @@ pub fn window(quartic: &dyn Fn(f64) -> [f64; 5]) -> Window {
             let s = step * i as f64;
             let y = f(s);
             if (y > 0.0) != (prev > 0.0) {
-                cuts.push((k, bisect_unchecked(&f, s - step, s), y > 0.0));
+                cuts.push((k, bisect_unchecked(f, s - step, s), y > 0.0));
             }
             prev = y;
         }

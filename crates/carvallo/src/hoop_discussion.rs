@@ -445,7 +445,7 @@ pub fn stick_linearised_rk4(
     let h = time / steps as f64;
     let mut x = [0.0; 3];
     for _ in 0..steps {
-        x = crate::numerics::ode::rk4_step(&rhs, x, h);
+        x = crate::numerics::ode::rk4_step(rhs, x, h);
     }
     (x[0], x[2])
 }

@@ -257,7 +257,7 @@ fn numbers() -> Vec<Entry> {
             ("memoir_ratio_speed_m_per_s".to_string(), memoir_speed.unwrap_or(f64::NAN)),
         ])),
         rel_diff: None,
-        verdict: policy::claim(!(speed.is_some()), Verdict::MemoirError),
+        verdict: policy::claim(speed.is_none(), Verdict::MemoirError),
         note: "beyond the memoir: the derived ratio and the geometric one agree at one speed (generated `no_hands_s2`, first order, memoir's constants of n° 96); with the memoir's printed ratio there is no such speed (s^2 < 0, shown as NaN)".into(),
     });
     let shift20 = bike.lateral_shift(eta, s20);
