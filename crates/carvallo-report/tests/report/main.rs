@@ -14,4 +14,5 @@ mod bicycle_turn;
 mod hoop;
 mod hoop_discussion;
 mod policy;
+mod registry;
 mod unicycle;
