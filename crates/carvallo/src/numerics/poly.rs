@@ -1,5 +1,10 @@
-//! Scalar root finding and minimisation on an interval: bisection (two flavours, each written
-//! once) and golden-section search.
+//! Polynomials and scalar root finding on an interval: Horner evaluation, bisection (two
+//! flavours, each written once) and golden-section search.
+
+/// Evaluates a polynomial (highest degree first) by Horner's rule.
+pub fn poly_eval(coeffs: &[f64], x: f64) -> f64 {
+    coeffs.iter().fold(0.0, |acc, c| acc * x + c)
+}
 
 /// Bisection for a root of a continuous `f` with a sign change on `[lo, hi]`; `None` when `f`
 /// is not finite at an end or has the same sign at both. Stops at an exact zero, after 200
