@@ -16,11 +16,13 @@
 //! leave the frame a negative central moment about the vertical, a second variant carries the
 //! old frame's central moments over instead ([`new_bicycle_central`]).
 //!
-//! Verdict policy. The memoir reduces each coefficient to its leading term and calls the
-//! rest negligible, "of the second order in the angles θ, γ". An approximate value therefore
-//! `agrees` when its relative difference from the exact coefficient is below that declared
-//! order, $\theta_0^2 + \gamma^2$ (stated in each note with the difference itself), and is a
-//! `derivation-differs` otherwise. Signs and the nature of the roots are compared exactly.
+//! Verdicts ([`crate::policy`]). The memoir reduces each coefficient to its leading term and
+//! calls the rest negligible, "of the second order in the angles θ, γ": an approximation it
+//! declares ([`crate::policy::approx`]). An approximate value is therefore `rounding` when its
+//! relative difference from the exact coefficient is below that declared order,
+//! $\theta_0^2 + \gamma^2$ (stated in each note with the difference itself), `agrees` only
+//! when exact, and `derivation-differs` beyond the order. Signs and the nature of the roots are
+//! claims ([`crate::policy::claim`]).
 
 use std::collections::BTreeMap;
 
