@@ -74,6 +74,7 @@ pub const PREAMBLE: &str = "How the verdicts are decided (one policy for every e
 - A number the memoir prints is judged by the digits it prints: it **agrees** when equal within 1e-12, is **rounding** when the derived value is within one unit of its last printed digit or within 2e-3 relative (a slide rule's three significant digits), and beyond that is a `memoir-error` when the formulas it comes from agree with the memoir (the slip is in Carvallo's arithmetic), otherwise the finding the note names or `derivation-differs`.\n\
 - An approximation the memoir declares (first order, \"negligible\", \"à peu près\") **agrees** only when it is exact; it is **rounding** when the difference is within the order the memoir declares it neglects (for a first-order theory the second-order terms, θ0² + γ²), and beyond that a finding or `derivation-differs`.\n\
 - A qualitative claim (a sign, real roots, an inequality) **agrees** when the derivation shows it.\n\
+- An entry whose verdict is the report's attribution alone (an OCR misreading or a slip the note names, confirmed by the derivation where it can be) carries that verdict; it never `agrees`.\n\
 - A symbolic check recorded at regeneration **agrees** when it holds; a failing check is never `agrees`, except where the memoir itself says the statement fails (n° 71: the unmodified Lagrange equations), and otherwise takes the verdict of the finding it records or `derivation-differs`.\n";
 
 /// Relative difference with the floor [`REL_DIFF_FLOOR`] (module docs).
