@@ -1,5 +1,5 @@
-//! The symbolica license boundary (../shared/SYMBOLICA.md): the runtime, the proc-macro, the IR
-//! and the CLI must build and run without the computer-algebra crate. This test walks the
+//! The symbolica license boundary (../shared/SYMBOLICA.md): the runtime, the concordance report,
+//! the proc-macro, the IR and the CLI must build and run without the computer-algebra crate. This test walks the
 //! dependency graph recorded in the committed `Cargo.lock` from each of those packages and fails
 //! if `symbolica` (or its arithmetic crate `numerica`) is reachable.
 
@@ -45,7 +45,7 @@ fn reachable(graph: &BTreeMap<String, Vec<String>>, from: &str) -> BTreeSet<Stri
 #[test]
 fn user_facing_crates_do_not_depend_on_symbolica() {
     let graph = lock_graph();
-    for krate in ["carvallo", "carvallo-ir", "carvallo-macros", "carvallo-cli"] {
+    for krate in ["carvallo", "carvallo-report", "carvallo-ir", "carvallo-macros", "carvallo-cli"] {
         assert!(graph.contains_key(krate), "{krate} is missing from Cargo.lock");
         let deps = reachable(&graph, krate);
         for forbidden in ["symbolica", "numerica"] {
@@ -63,4 +63,12 @@ fn the_derivation_side_does_use_symbolica() {
     let graph = lock_graph();
     assert!(reachable(&graph, "carvallo-codegen").contains("symbolica"));
     assert!(reachable(&graph, "xtask").contains("symbolica"));
+}
+
+#[test]
+fn the_library_does_not_depend_on_the_report() {
+    // Layers run numerics -> models -> report -> CLI: `carvallo` must not reach the concordance.
+    let graph = lock_graph();
+    assert!(reachable(&graph, "carvallo-report").contains("carvallo"));
+    assert!(!reachable(&graph, "carvallo").contains("carvallo-report"));
 }

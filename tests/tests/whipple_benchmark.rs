@@ -159,7 +159,7 @@ fn bad_parameter_files_are_rejected_with_the_key() {
 
 #[test]
 fn report_published_values_equal_the_anchors() {
-    use carvallo::report_whipple::{entries, PUBLISHED_MATRICES, PUBLISHED_SPEEDS};
+    use carvallo_report::whipple::{entries, PUBLISHED_MATRICES, PUBLISHED_SPEEDS};
     let (_, t) = model();
     for (key, m) in PUBLISHED_MATRICES {
         let rows = t["published"][key].as_array().expect("matrix");
@@ -179,7 +179,7 @@ fn report_published_values_equal_the_anchors() {
     for e in &all {
         assert_eq!(
             e.verdict,
-            carvallo::report::Verdict::Agrees,
+            carvallo_report::Verdict::Agrees,
             "{} disagrees: {}",
             e.quantity,
             e.note

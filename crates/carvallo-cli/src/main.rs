@@ -143,11 +143,11 @@ fn run(command: Command) -> anyhow::Result<()> {
             emit(&list)?;
         }
         Command::Report { json } => {
-            let entries = carvallo::report::all_entries();
+            let entries = carvallo_report::all_entries();
             if json {
                 emit(&format!("{}\n", serde_json::to_string_pretty(&entries)?))?;
             } else {
-                emit(&carvallo::report::render_text(&entries))?;
+                emit(&carvallo_report::render_text(&entries))?;
             }
         }
     }

@@ -130,7 +130,7 @@ pub fn write_report(dir: &Path, params: &WhippleParams, model: &str) -> Result<V
     let figs = figures::all();
     let mut progress = Progress::new(figs.len() + 2);
     progress.start("concordance");
-    let entries = carvallo::report::all_entries();
+    let entries = carvallo_report::all_entries();
     progress.done();
     let mut files: Vec<(String, String)> = Vec::new();
     for f in &figs {
@@ -140,7 +140,7 @@ pub fn write_report(dir: &Path, params: &WhippleParams, model: &str) -> Result<V
         progress.done();
     }
     progress.start("writing");
-    let mut md = carvallo::report_markdown::render_markdown(&entries, &figures_section(&figs));
+    let mut md = carvallo_report::render_markdown(&entries, &figures_section(&figs));
     if model != "benchmark" {
         md.push_str(&format!("The bicycle figures use the parameter file `{model}`.\n"));
     }

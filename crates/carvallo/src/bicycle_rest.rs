@@ -29,7 +29,7 @@
 //! front contact moves on the ground: a pivot of the whole bicycle about the vertical through
 //! the rear contact changes no height, and the rolling constraints are not imposed.
 //!
-//! Findings (memoir's bicycle, [`crate::report_bicycle_rest`]): γ55 is where the point E is
+//! Findings (memoir's bicycle, the concordance `carvallo_report::bicycle::rest`): γ55 is where the point E is
 //! on the ground with the upright frame's σ at every lean, as n° 56 says; γ67 lies beyond γ55
 //! (a larger γ lowers the front wheel, as n° 67 reasons) by 9.2° upright and 9.0° to 3.8° for
 //! θ = 5° to 40°, while the frame rises by only about 0.1 mm: the frame's height is stationary

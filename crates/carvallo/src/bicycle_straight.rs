@@ -27,6 +27,8 @@
 //! change to adjacent floats.
 
 use crate::error::ParameterError;
+use crate::numerics::ode::rk4_step;
+use crate::numerics::poly::bisect_unchecked;
 
 crate::scene! {
     /// The general model's matrices, evaluated at Carvallo's parameter set.
@@ -49,7 +51,7 @@ crate::scene! {
 }
 
 /// A 2 × 2 matrix by rows: (fall, handlebar) equation × (θ, γ).
-pub type Mat2 = [[f64; 2]; 2];
+pub use crate::numerics::mat2::Mat2;
 
 /// The characteristic constants of Carvallo's bicycle (n° 117; metre, kilogram, second).
 #[derive(Clone, Copy, Debug, PartialEq)]
@@ -449,22 +451,6 @@ pub const S_MAX: f64 = 100.0;
 /// Grid points of the scan of [`window`].
 const GRID: usize = 20_000;
 
-fn bisect(f: &dyn Fn(f64) -> f64, mut lo: f64, mut hi: f64) -> f64 {
-    let pos = f(lo) > 0.0;
-    for _ in 0..200 {
-        let mid = 0.5 * (lo + hi);
-        if mid <= lo || mid >= hi {
-            break;
-        }
-        if (f(mid) > 0.0) == pos {
-            lo = mid;
-        } else {
-            hi = mid;
-        }
-    }
-    0.5 * (lo + hi)
-}
-
 /// Scans $s \in (0, S_{\max}]$ on a uniform grid of 20 000 points, bisects every sign change
 /// of the Routh–Hurwitz functions ([`hurwitz`]) of `quartic(s)` to adjacent floats and returns
 /// the weave and capsize limits and the stable intervals.
@@ -479,7 +465,7 @@ pub fn window(quartic: &dyn Fn(f64) -> [f64; 5]) -> Window {
             let s = step * i as f64;
             let y = f(s);
             if (y > 0.0) != (prev > 0.0) {
-                cuts.push((k, bisect(&f, s - step, s), y > 0.0));
+                cuts.push((k, bisect_unchecked(f, s - step, s), y > 0.0));
             }
             prev = y;
         }
@@ -521,17 +507,7 @@ pub fn km_per_hour(s: f64, r: f64) -> f64 {
 /// \pi/a}$ when $\varepsilon^2$ is neglected.
 pub fn friction_half_swing(a: f64, k: f64, theta0: f64, eps: f64, steps: usize) -> (f64, f64) {
     let f = |y: [f64; 2]| [y[1], 2.0 * eps * y[1] - a * a * (y[0] + k)];
-    let rk4 = |y: [f64; 2], h: f64| {
-        let add = |y: [f64; 2], d: [f64; 2], c: f64| [y[0] + c * d[0], y[1] + c * d[1]];
-        let k1 = f(y);
-        let k2 = f(add(y, k1, 0.5 * h));
-        let k3 = f(add(y, k2, 0.5 * h));
-        let k4 = f(add(y, k3, h));
-        [
-            y[0] + h / 6.0 * (k1[0] + 2.0 * k2[0] + 2.0 * k3[0] + k4[0]),
-            y[1] + h / 6.0 * (k1[1] + 2.0 * k2[1] + 2.0 * k3[1] + k4[1]),
-        ]
-    };
+    let rk4 = |y: [f64; 2], h: f64| rk4_step(f, y, h);
     let h = 1.0 / (a * steps as f64);
     let mut y = [-theta0, 0.0];
     let mut t = 0.0;

@@ -15,6 +15,7 @@
 //! dimensionless forms of n° 12 ($g/R = 1$).
 
 use crate::error::ParameterError;
+use crate::numerics::ode::rk4_step;
 
 crate::scene! {
     /// System (1) of n° 7/8: $p'$, $q'$, $r'$ as functions of $\theta, p, q, r$.
@@ -350,16 +351,6 @@ impl Hoop {
         }
         Ok(Trajectory { states, energy0, max_energy_drift })
     }
-}
-
-/// One classical Runge–Kutta step of $x' = f(x)$.
-fn rk4_step(f: impl Fn([f64; 4]) -> [f64; 4], x: [f64; 4], dt: f64) -> [f64; 4] {
-    let axpy = |a: f64, k: [f64; 4]| std::array::from_fn(|i| x[i] + a * k[i]);
-    let k1 = f(x);
-    let k2 = f(axpy(0.5 * dt, k1));
-    let k3 = f(axpy(0.5 * dt, k2));
-    let k4 = f(axpy(dt, k3));
-    std::array::from_fn(|i| x[i] + dt / 6.0 * (k1[i] + 2.0 * k2[i] + 2.0 * k3[i] + k4[i]))
 }
 
 /// The real roots $r_1 \le r_2$ of $a x^2 + b x + c$, or `None` when $a = 0$, the discriminant

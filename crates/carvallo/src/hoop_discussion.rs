@@ -29,7 +29,7 @@ crate::scene! {
 }
 
 /// The IR text of the model, for high-precision cross-checks.
-pub const HOOP_DISCUSSION_IR: &str = include_str!("../../../generated/hoop_discussion.ir");
+pub const HOOP_DISCUSSION_IR: &str = crate::artifacts::HOOP_DISCUSSION.ir;
 
 /// Evaluates every output of the model at the named parameter and input values (missing names
 /// are 0); returns the outputs by name. Outputs that do not depend on a given argument ignore
@@ -94,29 +94,8 @@ pub struct VerticalTangent {
     pub y_product: f64,
 }
 
-/// Bisection for a root of a continuous `f` with a sign change on `[lo, hi]`.
-pub(crate) fn bisect(f: impl Fn(f64) -> f64, mut lo: f64, mut hi: f64) -> Option<f64> {
-    let flo = f(lo);
-    if !(flo.is_finite() && f(hi).is_finite()) || flo.signum() == f(hi).signum() {
-        return None;
-    }
-    for _ in 0..200 {
-        let mid = 0.5 * (lo + hi);
-        if mid <= lo || mid >= hi {
-            break;
-        }
-        let fm = f(mid);
-        if fm == 0.0 {
-            return Some(mid);
-        }
-        if fm.signum() == flo.signum() {
-            lo = mid;
-        } else {
-            hi = mid;
-        }
-    }
-    Some(0.5 * (lo + hi))
-}
+pub use crate::numerics::graeffe::{graeffe_largest, graeffe_step, horner_shift};
+pub use crate::numerics::poly::{bisect, poly_eval};
 
 /// Coefficients $(a, b, c)$ of a function quadratic in its argument, read at $0, \pm1$.
 fn quadratic(f: impl Fn(f64) -> f64) -> (f64, f64, f64) {
@@ -155,41 +134,6 @@ pub fn special_points() -> SpecialPoints {
     }
 }
 
-/// Horner's scheme for the shift $t = a + u$ (Carvallo's first tableau of n° 14): repeated
-/// synthetic division of the polynomial (coefficients highest degree first) by $t - a$.
-/// Returns the coefficients in u (highest first) and every row of the tableau.
-pub fn horner_shift(coeffs: &[f64], a: f64) -> (Vec<f64>, Vec<Vec<f64>>) {
-    let mut work = coeffs.to_vec();
-    let mut rows = Vec::new();
-    let n = work.len();
-    for end in (1..n).rev() {
-        for i in 1..=end {
-            work[i] += a * work[i - 1];
-        }
-        rows.push(work[..=end].to_vec());
-    }
-    (work, rows)
-}
-
-/// One root-squaring (Graeffe) step as Carvallo lays it out: from the coefficients
-/// $a_0, \dots, a_m$ (highest degree first) of a polynomial with roots $r_i$, those of the
-/// polynomial with roots $-r_i^2$ up to sign, $b_k = a_k^2 - 2a_{k-1}a_{k+1} + 2a_{k-2}a_{k+2}
-/// - \dots$ (his rows: the squares, then the double products).
-pub fn graeffe_step(a: &[f64]) -> Vec<f64> {
-    let m = a.len();
-    (0..m)
-        .map(|k| {
-            let mut b = a[k] * a[k];
-            let mut sign = -2.0;
-            for j in 1..=k.min(m - 1 - k) {
-                b += sign * a[k - j] * a[k + j];
-                sign = -sign;
-            }
-            b
-        })
-        .collect()
-}
-
 /// Carvallo's computation of n° 14 and its comparison with the exact root.
 #[derive(Clone, Debug, PartialEq)]
 pub struct CarvalloRoot {
@@ -220,24 +164,6 @@ pub struct CarvalloRoot {
     pub method_rel_error: f64,
     /// The relative error after six squarings (the method converged).
     pub converged_rel_error: f64,
-}
-
-/// Evaluates a polynomial (highest degree first) by Horner's rule.
-pub fn poly_eval(coeffs: &[f64], x: f64) -> f64 {
-    coeffs.iter().fold(0.0, |acc, c| acc * x + c)
-}
-
-/// The largest-modulus root magnitude after `steps` squarings of `coeffs` (highest first):
-/// $|r_1| \approx (b_1 / b_0)^{1/2^k}$.
-pub fn graeffe_largest(coeffs: &[f64], steps: u32) -> (Vec<Vec<f64>>, f64) {
-    let mut rows = vec![coeffs.to_vec()];
-    for _ in 0..steps {
-        let next = graeffe_step(rows.last().map_or(coeffs, |r| r.as_slice()));
-        rows.push(next);
-    }
-    let last = &rows[rows.len() - 1];
-    let ratio = last[1] / last[0];
-    (rows.clone(), ratio.powf(1.0 / 2f64.powi(steps as i32)))
 }
 
 /// Runs Carvallo's method of n° 14 on his quartic $F(t) = 28t^4 - 44t^3 + 15t^2 + 4t - 2$
@@ -467,11 +393,7 @@ pub fn stick_linearised_rk4(
     let h = time / steps as f64;
     let mut x = [0.0; 3];
     for _ in 0..steps {
-        let k1 = rhs(x);
-        let k2 = rhs(std::array::from_fn(|i| x[i] + 0.5 * h * k1[i]));
-        let k3 = rhs(std::array::from_fn(|i| x[i] + 0.5 * h * k2[i]));
-        let k4 = rhs(std::array::from_fn(|i| x[i] + h * k3[i]));
-        x = std::array::from_fn(|i| x[i] + h / 6.0 * (k1[i] + 2.0 * k2[i] + 2.0 * k3[i] + k4[i]));
+        x = crate::numerics::ode::rk4_step(rhs, x, h);
     }
     (x[0], x[2])
 }

@@ -3,14 +3,16 @@
 //! The formulas are derived symbolically by the `codegen` crate and committed as IR in
 //! `generated/`; the [`scene!`] macro turns a chosen subset of their outputs into plain,
 //! allocation-free Rust at compile time. This crate wraps those evaluators with validated
-//! parameters ([`error`]) and compares every derived formula with the memoir's printed one
-//! ([`report`]).
+//! parameters ([`error`]). The concordance with the memoir's printed formulas and numbers
+//! lives in the `carvallo-report` crate, which depends on this one (the old `carvallo::report*`
+//! paths are now `carvallo_report::*`).
 
 #![warn(missing_docs)]
 
 pub use carvallo_ir as ir;
 pub use carvallo_macros::scene;
 
+pub mod artifacts;
 pub mod bench;
 pub mod bicycle_geometry;
 pub mod bicycle_kinematics;
@@ -22,18 +24,8 @@ pub mod certified;
 pub mod error;
 pub mod hoop;
 pub mod hoop_discussion;
+pub mod numerics;
 pub mod quartic;
-pub mod report;
-pub mod report_bicycle_geometry;
-pub mod report_bicycle_kinematics;
-pub mod report_bicycle_rest;
-pub mod report_bicycle_steady;
-pub mod report_bicycle_straight;
-pub mod report_bicycle_turn;
-pub mod report_hoop_discussion;
-pub mod report_markdown;
-pub mod report_unicycle;
-pub mod report_whipple;
 pub mod sweep;
 pub mod unicycle;
 pub mod unicycle_discussion;

@@ -11,7 +11,7 @@
 //!   (error-free transformation, double-double) Horner scheme, so the roots are as accurate as
 //!   if computed in twice the working precision, then rounded;
 //! * [`graeffe_moduli`]: Carvallo's own root-squaring method (n° 14, Graeffe), with the step of
-//!   [`crate::hoop_discussion::graeffe_step`]: the moduli of the roots only, as he used it.
+//!   [`crate::numerics::graeffe::graeffe_step`]: the moduli of the roots only, as he used it.
 //!
 //! [`reference_roots`] runs Aberth's iteration in 256-bit arithmetic (astro-float) from the
 //! compensated roots: the exact roots of the `f64` coefficients, to far below `f64` resolution.
@@ -231,7 +231,7 @@ pub fn aberth_compensated(c: &[f64; 5]) -> [C64; 4] {
 
 /// The moduli of the four roots, largest first, by root squaring (Carvallo's method of n° 14).
 ///
-/// The polynomial is squared ([`crate::hoop_discussion::graeffe_step`], rescaled to a unit
+/// The polynomial is squared ([`crate::numerics::graeffe::graeffe_step`], rescaled to a unit
 /// leading coefficient after each step) until its coefficients span 250 decades or ten steps
 /// are done. A coefficient whose value after the last step is within 1 % of the square of its
 /// value before is *regular* and gives a modulus ratio; a pair of roots of equal modulus (a
@@ -242,7 +242,7 @@ pub fn graeffe_moduli(c: &[f64; 5]) -> [f64; 4] {
     let mut prev = a.clone();
     let mut steps = 0;
     while steps < 10 {
-        let mut next = crate::hoop_discussion::graeffe_step(&a);
+        let mut next = crate::numerics::graeffe::graeffe_step(&a);
         let lead = next[0];
         next.iter_mut().for_each(|x| *x /= lead);
         let span = next

@@ -299,15 +299,8 @@ impl Unicycle {
     /// Integrates the full equations with the classical Runge–Kutta method: `steps` steps of
     /// `dt` seconds from `state`; returns the final state.
     pub fn simulate(&self, mut state: [f64; 4], dt: f64, steps: usize) -> [f64; 4] {
-        let add = |a: [f64; 4], b: [f64; 4], h: f64| std::array::from_fn(|i| a[i] + h * b[i]);
         for _ in 0..steps {
-            let k1 = self.rhs(state);
-            let k2 = self.rhs(add(state, k1, dt / 2.0));
-            let k3 = self.rhs(add(state, k2, dt / 2.0));
-            let k4 = self.rhs(add(state, k3, dt));
-            state = std::array::from_fn(|i| {
-                state[i] + dt / 6.0 * (k1[i] + 2.0 * k2[i] + 2.0 * k3[i] + k4[i])
-            });
+            state = crate::numerics::ode::rk4_step(|y| self.rhs(y), state, dt);
         }
         state
     }

@@ -1,7 +1,7 @@
 //! The unicycle's diagrams (memoir n° 32 and n° 41, figures 7 and 9) as data series, evaluated
 //! from the generated evaluators of `generated/unicycle.ir` (scene
 //! [`crate::unicycle::all_scene`]), for the memoir's example $h/R = 2.5$
-//! ([`crate::report_unicycle::H_OVER_R`]), $B - C = \mu h^2$, $L = 0$, no wheel inertia.
+//! ([`H_OVER_R`]), $B - C = \mu h^2$, $L = 0$, no wheel inertia.
 //!
 //! Units: as in n° 12 and n° 32, the rates $s$ and $n$ are in the unit $\sqrt{g/R}$.
 //!
@@ -21,10 +21,10 @@
 //!   $-b - 2\sqrt{ac}$ for the coefficients of the generated trinomial (`trinomial_n41`), so it
 //!   is the derived curve, not the memoir's formula.
 
+use std::collections::BTreeMap;
+
 use crate::hoop_discussion::Series;
-use crate::report_unicycle::{
-    bisect, first_member_41, minimum_on_e, n32, out, s_on_e, trinomial, H_OVER_R,
-};
+use crate::unicycle::all_scene as scene;
 
 /// Coordinates of the polar series of figure 7: the lean in degrees and the rate $s$.
 pub const POLAR: &str = "theta (degrees), s";
@@ -201,4 +201,71 @@ mod tests {
         let derived = &figure_9()[0].points;
         assert!(derived.iter().all(|(_, y)| y.is_finite()));
     }
+}
+
+// The normalised forms of n° 32–41, evaluated from the generated program: shared by the
+// diagrams above and by the concordance report (`carvallo_report::unicycle`).
+
+/// $h/R$ of the diagram of n° 32 and of n° 39–41.
+pub const H_OVER_R: f64 = 2.5;
+
+/// A point of the unicycle model: a value for parameters and inputs by name (missing names
+/// evaluate as NaN).
+pub type Point = BTreeMap<&'static str, f64>;
+
+/// Every output of `generated/unicycle.ir` at `point`, by output name.
+pub fn eval(point: &Point) -> BTreeMap<&'static str, f64> {
+    let names: Vec<&str> = scene::PARAMS.iter().chain(scene::INPUTS.iter()).copied().collect();
+    let args = std::array::from_fn(|i| point.get(names[i]).copied().unwrap_or(f64::NAN));
+    scene::OUTPUTS.iter().copied().zip(scene::eval_array(&args)).collect()
+}
+
+/// The output `name` of `generated/unicycle.ir` at `point`.
+///
+/// # Panics
+/// When the program has no output `name` (a fixed name of this crate, so a bug).
+pub fn out(point: &Point, name: &str) -> f64 {
+    eval(point)[name]
+}
+
+pub use crate::numerics::poly::{bisect_unchecked as bisect, minimise};
+
+/// A normalised point of n° 32–41: R = g = mu = 1, z = h/R, rates in units of sqrt(g/R).
+pub fn n32(theta_deg: f64, s: f64, n: f64) -> Point {
+    BTreeMap::from([
+        ("R", 1.0),
+        ("g", 1.0),
+        ("mu", 1.0),
+        ("z", H_OVER_R),
+        ("theta", theta_deg.to_radians()),
+        ("s", s),
+        ("n", n),
+    ])
+}
+
+/// s on (E) of n° 32 for given θ and n, from the generated form (linear in s).
+pub fn s_on_e(theta_deg: f64, n: f64) -> f64 {
+    let e0 = out(&n32(theta_deg, 0.0, n), "equilibrium_n32");
+    let e1 = out(&n32(theta_deg, 1.0, n), "equilibrium_n32");
+    -e0 / (e1 - e0)
+}
+
+/// (n0, s0): the smallest s on (E) at θ and the n < 0 where it is reached (n° 32).
+pub fn minimum_on_e(theta_deg: f64) -> (f64, f64) {
+    let n0 = minimise(|n| s_on_e(theta_deg, n), -5.0, -1e-3);
+    (n0, s_on_e(theta_deg, n0))
+}
+
+/// Coefficients (a, b, c) of the generated trinomial S(n^2) = a m^2 + b m + c, m = n^2.
+pub fn trinomial(theta_deg: f64) -> (f64, f64, f64) {
+    let t = |m: f64| out(&n32(theta_deg, 0.0, m.sqrt()), "trinomial_n41");
+    let (t0, t1, t2) = (t(0.0), t(1.0), t(2.0));
+    let a = (t2 - 2.0 * t1 + t0) / 2.0;
+    (a, t1 - t0 - a, t0)
+}
+
+/// The first member of n° 41, $-b - 2\sqrt{ac}$ for the trinomial's (a, b, c).
+pub fn first_member_41(theta_deg: f64) -> f64 {
+    let (a, b, c) = trinomial(theta_deg);
+    -b - 2.0 * (a * c).sqrt()
 }

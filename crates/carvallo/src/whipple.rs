@@ -19,6 +19,8 @@ use std::fmt;
 
 use nalgebra::Matrix4;
 
+use crate::numerics::mat2::{det, mix};
+
 crate::scene! {
     /// The sixteen entries of $M$, $C_1$, $K_0$, $K_2$ (also on four designs per call, for
     /// the sweeps).
@@ -401,7 +403,7 @@ impl WhippleParams {
 }
 
 /// A 2 × 2 matrix by rows.
-pub type Mat2 = [[f64; 2]; 2];
+pub use crate::numerics::mat2::Mat2;
 
 /// The linearised equations' matrices.
 #[derive(Clone, Copy, Debug, PartialEq)]
@@ -445,14 +447,6 @@ fn horner(c: &[f64], x: f64) -> f64 {
 
 fn poly_deriv(a: &[f64]) -> Vec<f64> {
     a.iter().enumerate().skip(1).map(|(i, x)| i as f64 * x).collect()
-}
-
-fn mix(a: &Mat2, b: &Mat2) -> f64 {
-    a[0][0] * b[1][1] + b[0][0] * a[1][1] - a[0][1] * b[1][0] - b[0][1] * a[1][0]
-}
-
-fn det(a: &Mat2) -> f64 {
-    a[0][0] * a[1][1] - a[0][1] * a[1][0]
 }
 
 /// The linearised Carvallo–Whipple bicycle for one parameter set.

@@ -4,6 +4,7 @@
 //! and front axes of n° 57–58, and the typed errors.
 
 use carvallo::bicycle_geometry::{ContactError, Geometry};
+use carvallo::numerics::rng::SplitMix64;
 use carvallo::ParameterError;
 
 /// $K|OM$ written by hand from n° 46–47 (not from the generated code): OM = Rk + aH - bG +
@@ -23,14 +24,8 @@ fn height_by_hand(g: &Geometry, theta: f64, gamma: f64, sigma: f64, mu: f64) -> 
 
 /// Seeded (θ, γ) pairs: |θ| ≤ 40°, |γ| ≤ 90° (SplitMix64, seed fixed).
 fn positions() -> Vec<(f64, f64)> {
-    let mut state: u64 = 0x6765_6f6d_6574_7279;
-    let mut next = || {
-        state = state.wrapping_add(0x9E37_79B9_7F4A_7C15);
-        let mut z = state;
-        z = (z ^ (z >> 30)).wrapping_mul(0xBF58_476D_1CE4_E5B9);
-        z = (z ^ (z >> 27)).wrapping_mul(0x94D0_49BB_1331_11EB);
-        ((z ^ (z >> 31)) >> 11) as f64 / (1u64 << 53) as f64
-    };
+    let mut rng = SplitMix64(0x6765_6f6d_6574_7279);
+    let mut next = || rng.next_unit();
     (0..200)
         .map(|_| ((next() * 80.0 - 40.0).to_radians(), (next() * 180.0 - 90.0).to_radians()))
         .collect()

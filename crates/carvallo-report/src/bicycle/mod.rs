@@ -1,0 +1,9 @@
+//! The concordance of Carvallo's bicycle (memoir Part II): one module per chapter's model, as
+//! in `carvallo::bicycle_*`.
+
+pub mod geometry;
+pub mod kinematics;
+pub mod rest;
+pub mod steady;
+pub mod straight;
+pub mod turn;

@@ -1,0 +1,233 @@
+//! The concordance as a Markdown document (`report.md` of `carvallo report --out DIR`): the
+//! entries of [`crate::all_entries`] grouped by the memoir's part, chapter and §
+//! (its table of contents, [`OUTLINE`]), each with the memoir's value, the derived value, the
+//! difference and the verdict, followed by an errata section that explains every entry whose
+//! verdict is not `agrees`, grouped by verdict.
+
+use std::collections::BTreeMap;
+use std::fmt::Write;
+
+use crate::entry::{Derived, Entry, Memoir, Verdict};
+pub use crate::outline::{division_of, Division, BEYOND, OUTLINE};
+use crate::render::text::format_significant;
+
+/// A table cell: pipes escaped, line breaks turned into spaces.
+fn cell(text: &str) -> String {
+    text.replace('|', "\\|").replace(['\n', '\r'], " ")
+}
+
+fn memoir_text(m: &Memoir) -> String {
+    match m {
+        Memoir::Number(x) => format_significant(*x, 10),
+        Memoir::Formula(text) => format!("`{}`", text.replace('`', "'")),
+    }
+}
+
+fn derived_text(d: &Derived) -> String {
+    match d {
+        Derived::Number(x) => format_significant(*x, 10),
+        Derived::Numbers(map) => map
+            .iter()
+            .map(|(k, v)| format!("{k} = {}", format_significant(*v, 10)))
+            .collect::<Vec<_>>()
+            .join(", "),
+    }
+}
+
+/// The difference column: the relative difference and, for two numbers, the signed absolute
+/// difference derived − memoir.
+fn difference_text(e: &Entry) -> String {
+    let rel = e.rel_diff.map(|r| format!("{r:.1e}"));
+    let abs = match (&e.memoir, &e.derived) {
+        (Memoir::Number(m), Derived::Number(d)) => Some(format_significant(d - m, 3)),
+        _ => None,
+    };
+    match (rel, abs) {
+        (Some(r), Some(a)) => format!("{r} (Δ = {a})"),
+        (Some(r), None) => r,
+        (None, Some(a)) => format!("Δ = {a}"),
+        (None, None) => "–".to_string(),
+    }
+}
+
+/// The verdicts in the order of the errata section (`agrees` last, not listed there).
+pub const ERRATA_ORDER: [Verdict; 4] =
+    [Verdict::MemoirError, Verdict::Ocr, Verdict::Rounding, Verdict::DerivationDiffers];
+
+fn verdict_meaning(v: Verdict) -> &'static str {
+    match v {
+        Verdict::MemoirError => {
+            "the memoir's own arithmetic or algebra is wrong; the derivation shows where"
+        }
+        Verdict::Ocr => "the printed text is an OCR misreading of what the memoir means",
+        Verdict::Rounding => {
+            "the memoir's number is the derived one rounded (slide-rule precision), or an \
+             approximation the memoir declares, within the order it neglects"
+        }
+        Verdict::DerivationDiffers => {
+            "the derivation gives something else and the cause is not (yet) attributed"
+        }
+        Verdict::Agrees => "equal within the tolerance of the policy above",
+    }
+}
+
+/// Renders `entries` as the Markdown report: a title and a count by verdict, then
+/// `figures_section` as given (Markdown, may be empty), the concordance grouped by part,
+/// chapter and §, and the errata.
+pub fn render_markdown(entries: &[Entry], figures_section: &str) -> String {
+    let mut out = String::new();
+    let _ = writeln!(out, "# Carvallo's memoir re-derived: the concordance report\n");
+    let _ = writeln!(
+        out,
+        "E. Carvallo, *Théorie du mouvement du monocycle et de la bicyclette* (1897), every printed \
+         formula and number beside the value derived symbolically in this workspace and \
+         evaluated when this report was written (`carvallo report --out DIR`).\n"
+    );
+    let mut counts: BTreeMap<&str, usize> = BTreeMap::new();
+    for e in entries {
+        *counts.entry(e.verdict.as_str()).or_default() += 1;
+    }
+    let summary: Vec<String> = [Verdict::Agrees]
+        .iter()
+        .chain(ERRATA_ORDER.iter())
+        .map(|v| format!("{} {}", counts.get(v.as_str()).copied().unwrap_or(0), v.as_str()))
+        .collect();
+    let _ = writeln!(out, "{} entries: {}.\n", entries.len(), summary.join(", "));
+    let _ = writeln!(out, "{}", crate::policy::PREAMBLE);
+    if !figures_section.is_empty() {
+        out.push_str(figures_section.trim_end());
+        out.push_str("\n\n");
+    }
+    let _ = writeln!(out, "## Concordance\n");
+    let _ = writeln!(
+        out,
+        "Columns: the memoir's n°, the quantity, what the memoir prints, what is derived, the \
+         relative difference (and the absolute one, derived − memoir, for two numbers), the \
+         verdict and the note saying how the value was obtained.\n"
+    );
+    // Group in the order of the outline; entries without a n° last.
+    let mut groups: Vec<(Option<&'static Division>, Vec<&Entry>)> = Vec::new();
+    for e in entries {
+        let d = division_of(&e.section);
+        match groups.iter_mut().find(|(g, _)| *g == d) {
+            Some((_, list)) => list.push(e),
+            None => groups.push((d, vec![e])),
+        }
+    }
+    groups.sort_by_key(|(d, _)| d.map_or(u32::MAX, |d| d.first));
+    let (mut part, mut chapter) = ("", "");
+    for (division, list) in &groups {
+        match division {
+            Some(d) => {
+                if d.part != part {
+                    part = d.part;
+                    chapter = "";
+                    let _ = writeln!(out, "### {part}\n");
+                }
+                if d.chapter != chapter {
+                    chapter = d.chapter;
+                    let _ = writeln!(out, "#### {chapter}\n");
+                }
+                let _ = writeln!(out, "##### {} (n° {}–{})\n", d.paragraph, d.first, d.last);
+            }
+            None => {
+                let _ = writeln!(out, "### {BEYOND}\n");
+            }
+        }
+        let _ = writeln!(out, "| n° | quantity | memoir | derived | difference | verdict | note |");
+        let _ = writeln!(out, "|---|---|---|---|---|---|---|");
+        for e in list {
+            let _ = writeln!(
+                out,
+                "| {} | {} | {} | {} | {} | {} | {} |",
+                cell(&e.section),
+                cell(&e.quantity),
+                cell(&memoir_text(&e.memoir)),
+                cell(&derived_text(&e.derived)),
+                cell(&difference_text(e)),
+                e.verdict.as_str(),
+                cell(&e.note)
+            );
+        }
+        out.push('\n');
+    }
+    let _ = writeln!(out, "## Errata\n");
+    let _ = writeln!(
+        out,
+        "Every entry whose verdict is not `agrees`, grouped by verdict, with the explanation.\n"
+    );
+    for v in ERRATA_ORDER {
+        let list: Vec<&Entry> = entries.iter().filter(|e| e.verdict == v).collect();
+        let _ = writeln!(out, "### `{}` ({}): {}\n", v.as_str(), list.len(), verdict_meaning(v));
+        if list.is_empty() {
+            let _ = writeln!(out, "None.\n");
+            continue;
+        }
+        for e in list {
+            let _ = writeln!(
+                out,
+                "- **n° {}, {}**: memoir {}, derived {}; difference {}. {}",
+                e.section,
+                e.quantity.replace('\n', " "),
+                memoir_text(&e.memoir),
+                derived_text(&e.derived),
+                difference_text(e),
+                e.note.replace('\n', " ")
+            );
+        }
+        out.push('\n');
+    }
+    out
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    fn entry(section: &str, verdict: Verdict, note: &str) -> Entry {
+        Entry {
+            section: section.to_string(),
+            quantity: format!("q {section}"),
+            memoir: Memoir::Number(1.0),
+            derived: Derived::Number(1.5),
+            rel_diff: Some(1.0 / 3.0),
+            verdict,
+            note: note.to_string(),
+        }
+    }
+
+    #[test]
+    fn entries_are_grouped_by_the_outline_and_explained_in_the_errata() {
+        let entries = [
+            entry("32", Verdict::MemoirError, "slip | in n° 32"),
+            entry("4", Verdict::Agrees, "exact"),
+            entry("benchmark", Verdict::Agrees, "modern"),
+            entry("17 bis", Verdict::Rounding, "slide rule"),
+        ];
+        let md = render_markdown(&entries, "## Figures\n\nnone");
+        let at = |text: &str| md.find(text).unwrap_or_else(|| panic!("no `{text}` in\n{md}"));
+        // Outline order: n° 4, 17 bis, 32, then the entries without a n°.
+        assert!(at("§ I — cinématique du cerceau") < at("§ V — complément pratique"));
+        assert!(at("§ V — complément pratique") < at("§ III — équilibre du monocycle"));
+        assert!(at("§ III — équilibre du monocycle") < at(BEYOND));
+        assert!(at("## Figures") < at("## Concordance") && at("## Concordance") < at("## Errata"));
+        // The one verdict policy is stated before the concordance.
+        assert!(at("How the verdicts are decided") < at("## Concordance"));
+        assert!(md.contains(
+            "4 entries: 2 agrees, 1 memoir-error, 0 ocr, 1 rounding, 0 derivation-differs."
+        ));
+        assert!(md.contains(
+            "| 32 | q 32 | 1 | 1.5 | 3.3e-1 (Δ = 0.5) | memoir-error | slip \\| in n° 32 |"
+        ));
+        // The errata list the three non-agreeing verdict groups with their entries only.
+        let errata = &md[at("## Errata")..];
+        assert!(errata.contains("- **n° 32, q 32**: memoir 1, derived 1.5; difference 3.3e-1 (Δ = 0.5). slip | in n° 32"));
+        assert!(errata.contains("### `rounding` (1)") && errata.contains("### `ocr` (0)"));
+        assert!(!errata.contains("exact") && !errata.contains("modern"));
+    }
+
+    #[test]
+    fn cells_cannot_break_the_table() {
+        assert_eq!(cell("a | b\nc"), "a \\| b c");
+    }
+}

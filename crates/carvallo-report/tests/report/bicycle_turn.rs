@@ -1,0 +1,107 @@
+//! Tests of the steady-turn stability concordance (memoir n° 101–105, module
+//! `carvallo_report::bicycle::turn`): the expected verdicts (the findings listed), every
+//! approximate coefficient judged against its declared second order consistently with its
+//! relative difference, every section present, the old upright-only n° 105 entry gone, and a
+//! snapshot of the text table with numbers normalised to 4 significant digits.
+
+use carvallo::bicycle_straight::Constants;
+use carvallo_report::bicycle::turn::{entries, new_bicycle_central, GRID_GAMMA, GRID_KMH, TURNS};
+use carvallo_report::Derived;
+use carvallo_report::{render_text_normalised, Memoir, Verdict, AGREEMENT_TOLERANCE};
+
+/// Entries whose verdict is `derivation-differs`, by (section, quantity prefix).
+const FINDINGS: &[(&str, &str)] = &[
+    ("103", "dn/dtheta at fixed gamma and s (1/s per rad), gamma = 5°, 20 km/h"),
+    ("103", "dn/dtheta at fixed gamma and s (1/s per rad), gamma = 5°, 10 km/h"),
+    ("104", "centrifugal part / gravity part of df/dtheta, gamma = 5°, 20 km/h"),
+    ("104", "centrifugal part / gravity part of df/dtheta, gamma = 10°, 20 km/h"),
+    ("104", "centrifugal part / gravity part of df/dtheta, gamma = 5°, 10 km/h"),
+];
+
+#[test]
+fn verdicts_are_the_expected_ones() {
+    let e = entries();
+    // Two upright entries, nine per turn, then the new bicycle's roots and grid.
+    assert_eq!(e.len(), 2 + 9 * TURNS.len() + 2);
+    for x in &e {
+        let finding = FINDINGS.iter().any(|(s, q)| x.section == *s && x.quantity == *q);
+        let order =
+            x.note.split("theta0^2 + gamma^2 = ").nth(1).and_then(|t| t.parse::<f64>().ok());
+        // Approximations of the declared second order are `rounding` (one verdict policy: an
+        // approximation agrees only when exact).
+        let expected = if finding {
+            Verdict::DerivationDiffers
+        } else if order.is_some() || x.quantity.starts_with("df/dtheta upright") {
+            Verdict::Rounding
+        } else {
+            Verdict::Agrees
+        };
+        assert_eq!(x.verdict, expected, "n° {} {}: {}", x.section, x.quantity, x.note);
+        // Approximations: the verdict follows the relative difference and the stated order.
+        if let (Some(rel), Memoir::Number(_), Some(order)) = (x.rel_diff, &x.memoir, order) {
+            assert_eq!(x.verdict == Verdict::Rounding, rel <= order, "{}", x.quantity);
+            assert!(rel > AGREEMENT_TOLERANCE, "{}: an exact approximation", x.quantity);
+        }
+    }
+    for section in ["86", "101", "102", "103", "104", "105"] {
+        assert!(e.iter().any(|x| x.section == section), "no entry for n° {section}");
+    }
+    let old = carvallo_report::bicycle::steady::entries();
+    assert!(old.iter().all(|x| x.section != "105"), "the upright-only n° 105 entry is back");
+}
+
+#[test]
+fn text_report_snapshot() {
+    let text = render_text_normalised(&entries());
+    insta::with_settings!({
+        description => "carvallo report: steady turns with the handlebar held (n° 86, 101-105), numbers to 4 significant digits",
+        omit_expression => true,
+    }, {
+        insta::assert_snapshot!("bicycle_turn_report_text", text);
+    });
+}
+
+/// The new bicycle of n° 122: the variant with the old frame's central moments has them
+/// (through the general model's mapping, an independent path), the printed n° 122 constants,
+/// and the grid entry counts every grid point in each of its three variants.
+#[test]
+fn new_bicycle_entries() {
+    let central = |k: &Constants| {
+        let v = k.whipple_values();
+        let get = |n: &str| v.iter().find(|(m, _)| *m == n).map(|x| x.1).expect("mapped");
+        [get("IBxx"), get("IBzz"), get("IBxz"), get("mB"), get("xB"), get("w"), get("mR")]
+    };
+    let (old, new, carried) = (
+        central(&Constants::MEMOIR),
+        central(&Constants::MEMOIR_NEW),
+        central(&new_bicycle_central()),
+    );
+    for i in 0..3 {
+        assert!(
+            (carried[i] - old[i]).abs() <= 1e-12 * old[0],
+            "central moment {i}: {carried:?} vs {old:?}"
+        );
+    }
+    assert_eq!(carried[3..], new[3..], "the n° 122 constants");
+    assert!(new[1] < 0.0, "n° 117's C with the new mu e^2 leaves I_Bzz = {}", new[1]);
+    let e = entries();
+    let grid = e
+        .iter()
+        .find(|x| x.section == "105" && x.quantity.contains("across a grid"))
+        .expect("grid entry");
+    let Derived::Numbers(n) = &grid.derived else { panic!("numbers expected: {:?}", grid.derived) };
+    let total = (GRID_GAMMA.len() * GRID_KMH.len()) as f64;
+    assert_eq!(n["grid_points"], total);
+    for key in ["saddle_points", "bearing_held_saddle_points", "central_moments_saddle_points"] {
+        assert_eq!(n[key], total, "{key}: {}", grid.note);
+    }
+    assert!(n["lambda_plus_min"] > 0.0 && n["lambda_plus_min"] <= n["lambda_plus_max"]);
+    let roots = e
+        .iter()
+        .find(|x| x.quantity.starts_with("roots of (C)") && x.quantity.contains("new bicycle"))
+        .expect("new bicycle roots");
+    let Derived::Numbers(r) = &roots.derived else { panic!("numbers expected") };
+    assert!(r["lambda_minus"] < 0.0 && r["lambda_plus"] > 0.0, "{r:?}");
+    // The n° 105 turn lies on the grid: its root is inside the grid's range.
+    assert!(r["lambda_plus"] >= n["lambda_plus_min"] && r["lambda_plus"] <= n["lambda_plus_max"]);
+}

@@ -1,0 +1,41 @@
+//! Helpers shared by the report tests: the check that a concordance's verdicts are the expected
+//! ones (each listed finding has its verdict, every other entry agrees or is a rounding), that
+//! every listed finding and section has an entry.
+
+use std::collections::BTreeMap;
+
+use carvallo_report::{Entry, Verdict};
+
+/// Asserts the verdicts of `entries`: an entry listed in `findings` by (section, quantity) has
+/// the listed verdict, any other entry is `agrees` or `rounding`; every finding and every
+/// section of `sections` has an entry. All mismatches are reported at once.
+pub fn assert_verdicts(
+    entries: &[Entry],
+    findings: &BTreeMap<(&str, &str), Verdict>,
+    sections: &[&str],
+) {
+    let mut unexpected = String::new();
+    for e in entries {
+        let ok = match findings.get(&(e.section.as_str(), e.quantity.as_str())) {
+            Some(v) => e.verdict == *v,
+            None => matches!(e.verdict, Verdict::Agrees | Verdict::Rounding),
+        };
+        if !ok {
+            unexpected.push_str(&format!(
+                "n° {} {}: {} ({:?}; {})\n",
+                e.section,
+                e.quantity,
+                e.verdict.as_str(),
+                e.derived,
+                e.note
+            ));
+        }
+    }
+    assert!(unexpected.is_empty(), "unexpected verdicts:\n{unexpected}");
+    for (s, q) in findings.keys() {
+        assert!(entries.iter().any(|e| e.section == *s && e.quantity == *q), "no entry n° {s} {q}");
+    }
+    for section in sections {
+        assert!(entries.iter().any(|e| e.section == *section), "no entry for n° {section}");
+    }
+}

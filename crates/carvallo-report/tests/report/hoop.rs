@@ -1,0 +1,94 @@
+//! Tests of the hoop concordance report: the expected verdict of every entry, the JSON keys,
+//! and a snapshot of the text table with numbers normalised to 4 significant digits (values
+//! below 1e-12 in magnitude, rounding noise, become `~0`).
+
+use std::collections::BTreeMap;
+
+use carvallo_report::{hoop_entries, render_json, render_text_normalised, Verdict};
+
+/// The verdict each (section, quantity) must get.
+fn expected() -> BTreeMap<(&'static str, &'static str), Verdict> {
+    use Verdict::*;
+    BTreeMap::from([
+        (("4", "A / (mu R^2)"), Agrees),
+        (("4", "B / (mu R^2)"), Agrees),
+        (("4", "C / (mu R^2)"), Agrees),
+        (("14/18", "upright threshold s^2 (units g/R)"), Agrees),
+        (("18", "upright threshold s (units sqrt(g/R))"), Agrees),
+        (("16", "V = sR at s = 1 (m/s), R = 0.50 m"), MemoirError),
+        (("18", "threshold speed sR (m/s), R = 0.50 m"), MemoirError),
+        (("14", "point F: x = cos(th)"), Rounding),
+        (("14", "point F: y = s^2"), MemoirError),
+        (("14", "vertical tangent of (S): t = x^2"), Rounding),
+        (("14", "vertical tangent of (S): x = cos(th)"), Rounding),
+        (("14", "vertical tangent of (S): th (degrees)"), MemoirError),
+        (("14", "vertical tangent of (S): y = s^2"), Rounding),
+        (("14", "vertical tangent of (S): s"), MemoirError),
+        (("17", "point H: sin(th)"), Rounding),
+        (("17", "point H: th (degrees)"), Rounding),
+        (("17", "point H: s"), Rounding),
+        (("71", "check lagrange_unmodified_nu"), Agrees),
+        (("71", "check lagrange_unmodified_sigma"), Agrees),
+    ])
+}
+
+#[test]
+fn verdicts_are_the_expected_ones() {
+    let entries = hoop_entries();
+    let expected = expected();
+    for ((section, quantity), verdict) in &expected {
+        let entry = entries
+            .iter()
+            .find(|e| e.section == *section && e.quantity == *quantity)
+            .unwrap_or_else(|| panic!("no entry for n° {section} {quantity}"));
+        assert_eq!(entry.verdict, *verdict, "n° {section} {quantity}: {}", entry.note);
+    }
+    // Every section the report must cover is there.
+    for section in ["4", "7", "7/8", "8", "9", "10", "11", "12", "14/18"] {
+        assert!(entries.iter().any(|e| e.section == section), "no entry for n° {section}");
+    }
+    // The derivation reproduces every printed formula of n° 4 to 12 (the memoir's algebra
+    // is right there), and every symbolic check has its expected outcome.
+    for e in &entries {
+        if matches!(e.memoir, carvallo_report::Memoir::Formula(_)) {
+            assert_eq!(e.verdict, Verdict::Agrees, "n° {} {}: {}", e.section, e.quantity, e.note);
+        }
+    }
+    // A formula entry agrees exactly when its largest relative difference is within tolerance.
+    for e in &entries {
+        if let (Some(rel), carvallo_report::Memoir::Formula(_)) = (e.rel_diff, &e.memoir) {
+            let agrees = rel <= carvallo_report::AGREEMENT_TOLERANCE;
+            assert_eq!(e.verdict == Verdict::Agrees, agrees, "n° {} {}", e.section, e.quantity);
+        }
+    }
+}
+
+#[test]
+fn json_has_the_required_keys() {
+    let json: serde_json::Value = serde_json::from_str(&render_json(&hoop_entries())).unwrap();
+    let array = json.as_array().expect("a JSON array");
+    assert!(array.len() >= 20);
+    let verdicts = ["agrees", "rounding", "memoir-error", "ocr", "derivation-differs"];
+    for item in array {
+        let object = item.as_object().expect("an object");
+        for key in ["section", "quantity", "memoir", "derived", "rel_diff", "verdict", "note"] {
+            assert!(object.contains_key(key), "missing {key} in {item}");
+        }
+        assert_eq!(object.len(), 7);
+        assert!(verdicts.contains(&object["verdict"].as_str().unwrap()));
+        assert!(object["memoir"].is_number() || object["memoir"].is_string());
+        assert!(object["derived"].is_number() || object["derived"].is_object());
+        assert!(object["rel_diff"].is_number() || object["rel_diff"].is_null());
+    }
+}
+
+#[test]
+fn text_report_snapshot() {
+    let text = render_text_normalised(&hoop_entries());
+    insta::with_settings!({
+        description => "carvallo report: the hoop concordance table, numbers to 4 significant digits",
+        omit_expression => true,
+    }, {
+        insta::assert_snapshot!("hoop_report_text", text);
+    });
+}

@@ -1,0 +1,56 @@
+//! Tests of the hoop-discussion concordance (memoir n° 13–19): the expected verdict of the
+//! entries whose verdict is not `agrees`, the sign checks of n° 19, and a snapshot of the text
+//! table with numbers normalised to 4 significant digits (values below 1e-12 become `~0`).
+
+use carvallo_report::hoop_discussion::{entries, n12_forms_agree, point_entries};
+use carvallo_report::{render_text_normalised, Verdict};
+
+#[test]
+fn verdicts_are_the_expected_ones() {
+    assert!(n12_forms_agree());
+    let mut all = point_entries(true);
+    all.extend(entries());
+    let expected = [
+        ("14", "point F: y = s^2", Verdict::MemoirError),
+        ("14", "vertical tangent of (S): th (degrees)", Verdict::MemoirError),
+        ("14", "vertical tangent of (S): s", Verdict::MemoirError),
+        ("14", "residual of the u equation at u = -0,10807", Verdict::MemoirError),
+        ("15", "s0 (table of variations)", Verdict::MemoirError),
+        ("15", "check s0_table_memoir", Verdict::MemoirError),
+        ("16", "g R implied by V = 2,40 m/s (m^2/s^2)", Verdict::MemoirError),
+        ("19", "(6): cosh ht", Verdict::Ocr),
+        ("19", "n opposite to th \"dans les trois cas\" (M1 term)", Verdict::MemoirError),
+    ];
+    for (section, quantity, verdict) in expected {
+        let e = all
+            .iter()
+            .find(|e| e.section == section && e.quantity == quantity)
+            .unwrap_or_else(|| panic!("no entry n° {section} {quantity}"));
+        assert_eq!(e.verdict, verdict, "n° {section} {quantity}: {}", e.note);
+    }
+    // Nothing is left unexplained.
+    for e in &all {
+        assert_ne!(
+            e.verdict,
+            Verdict::DerivationDiffers,
+            "n° {} {}: {}",
+            e.section,
+            e.quantity,
+            e.note
+        );
+    }
+    for section in ["13", "14", "15", "16", "17", "18", "19"] {
+        assert!(all.iter().any(|e| e.section == section), "no entry for n° {section}");
+    }
+}
+
+#[test]
+fn text_report_snapshot() {
+    let text = render_text_normalised(&entries());
+    insta::with_settings!({
+        description => "carvallo report: the hoop discussion n° 13-19, numbers to 4 significant digits",
+        omit_expression => true,
+    }, {
+        insta::assert_snapshot!("hoop_discussion_report_text", text);
+    });
+}

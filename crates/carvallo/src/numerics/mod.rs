@@ -1,0 +1,9 @@
+//! Numerical leaves shared by the models: each primitive written once, depending on nothing
+//! else in the crate (a `tidy` test checks it).
+
+pub mod dd;
+pub mod graeffe;
+pub mod mat2;
+pub mod ode;
+pub mod poly;
+pub mod rng;
