@@ -22,6 +22,7 @@ pub mod certified;
 pub mod error;
 pub mod hoop;
 pub mod hoop_discussion;
+pub mod parameter_text;
 pub mod quartic;
 pub mod report;
 pub mod report_bicycle_geometry;
@@ -39,5 +40,6 @@ pub mod unicycle;
 pub mod unicycle_discussion;
 pub mod whipple;
 pub mod whipple_nonlinear;
+pub mod whipple_uncertainty;
 
 pub use error::ParameterError;
