@@ -32,7 +32,10 @@ pub fn values_from_pairs(pairs: &[(String, f64)]) -> Result<[f64; 26], String> {
     let mut seen = [false; 26];
     for (name, value) in pairs {
         let k = index_of(name).ok_or_else(|| {
-            format!("unknown parameter {name} = {value:?} (the names are {})", PARAM_NAMES.join(", "))
+            format!(
+                "unknown parameter {name} = {value:?} (the names are {})",
+                PARAM_NAMES.join(", ")
+            )
         })?;
         if seen[k] {
             return Err(format!("parameter {} given twice ({name} = {value:?})", PARAM_NAMES[k]));
@@ -63,7 +66,8 @@ pub fn sigma_from_pairs(pairs: &[(String, f64)]) -> Result<[f64; 26], String> {
     let mut sigma = [0.0; 26];
     let mut seen = [false; 26];
     for (name, s) in pairs {
-        let k = index_of(name).ok_or_else(|| format!("unknown parameter {name} in the uncertainties"))?;
+        let k = index_of(name)
+            .ok_or_else(|| format!("unknown parameter {name} in the uncertainties"))?;
         if seen[k] {
             return Err(format!("uncertainty of {} given twice ({name} = {s:?})", PARAM_NAMES[k]));
         }

@@ -9,7 +9,9 @@ use carvallo::sweep::Method;
 use carvallo::whipple::{StabilityWindow, Whipple, WhippleParams, PARAM_NAMES};
 use carvallo::whipple_nonlinear::WhippleNonlinear;
 use carvallo::whipple_uncertainty as unc;
-use numpy::{Complex64, PyArray1, PyArray2, PyArrayMethods, PyReadonlyArray2, PyUntypedArrayMethods};
+use numpy::{
+    Complex64, PyArray1, PyArray2, PyArrayMethods, PyReadonlyArray2, PyUntypedArrayMethods,
+};
 use pyo3::create_exception;
 use pyo3::exceptions::PyValueError;
 use pyo3::prelude::*;
@@ -33,8 +35,12 @@ fn pairs(mapping: &Bound<'_, PyAny>, what: &str) -> PyResult<Vec<(String, f64)>>
         .map_err(|_| err(format!("{what} must be a dict of name -> number")))?;
     let mut out = Vec::with_capacity(dict.len());
     for (k, v) in dict.iter() {
-        let name: String =
-            k.extract().map_err(|_| err(format!("{what}: key {} is not a string", k.repr().map(|r| r.to_string()).unwrap_or_default())))?;
+        let name: String = k.extract().map_err(|_| {
+            err(format!(
+                "{what}: key {} is not a string",
+                k.repr().map(|r| r.to_string()).unwrap_or_default()
+            ))
+        })?;
         let value: f64 = v.extract().map_err(|_| {
             let shown = v.repr().map(|r| r.to_string()).unwrap_or_default();
             err(format!("parameter {name} = {shown} is not a number"))
@@ -81,16 +87,26 @@ fn benchmark(py: Python<'_>) -> PyResult<Bound<'_, PyDict>> {
 /// Reads a parameter file: the anchors TOML format or BicycleParameters' `name = value+/-sigma`
 /// text. Returns `(params, sigma)`, two dicts.
 #[pyfunction]
-fn load_parameters<'py>(py: Python<'py>, path: &str) -> PyResult<(Bound<'py, PyDict>, Bound<'py, PyDict>)> {
-    let text = std::fs::read_to_string(path).map_err(|e| err(format!("cannot read parameter file `{path}`: {}", e.to_string().to_lowercase())))?;
-    let u = UncertainParams::from_any(&text).map_err(|e| err(format!("invalid parameter file `{path}`: {e}")))?;
+fn load_parameters<'py>(
+    py: Python<'py>,
+    path: &str,
+) -> PyResult<(Bound<'py, PyDict>, Bound<'py, PyDict>)> {
+    let text = std::fs::read_to_string(path).map_err(|e| {
+        err(format!("cannot read parameter file `{path}`: {}", e.to_string().to_lowercase()))
+    })?;
+    let u = UncertainParams::from_any(&text)
+        .map_err(|e| err(format!("invalid parameter file `{path}`: {e}")))?;
     Ok((dict_of(py, u.params.values())?, dict_of(py, &u.sigma)?))
 }
 
 /// Parses a parameter text (either format, see `load_parameters`).
 #[pyfunction]
-fn parse_parameters<'py>(py: Python<'py>, text: &str) -> PyResult<(Bound<'py, PyDict>, Bound<'py, PyDict>)> {
-    let u = UncertainParams::from_any(text).map_err(|e| err(format!("invalid parameter text: {e}")))?;
+fn parse_parameters<'py>(
+    py: Python<'py>,
+    text: &str,
+) -> PyResult<(Bound<'py, PyDict>, Bound<'py, PyDict>)> {
+    let u =
+        UncertainParams::from_any(text).map_err(|e| err(format!("invalid parameter text: {e}")))?;
     Ok((dict_of(py, u.params.values())?, dict_of(py, &u.sigma)?))
 }
 
@@ -109,7 +125,11 @@ fn matrices<'py>(py: Python<'py>, params: &Bound<'py, PyAny>) -> PyResult<Bound<
 /// The 4x4 state matrix of (lean, steer, lean rate, steer rate) at `speed`; an array of speeds
 /// gives shape (n, 4, 4).
 #[pyfunction]
-fn state_matrix<'py>(py: Python<'py>, params: &Bound<'py, PyAny>, speed: &Bound<'py, PyAny>) -> PyResult<Bound<'py, PyAny>> {
+fn state_matrix<'py>(
+    py: Python<'py>,
+    params: &Bound<'py, PyAny>,
+    speed: &Bound<'py, PyAny>,
+) -> PyResult<Bound<'py, PyAny>> {
     let bike = Whipple::new(params_of(params)?);
     let scalar = speed.extract::<f64>().is_ok();
     let speeds = speeds_of(speed)?;
@@ -133,7 +153,11 @@ fn state_matrix<'py>(py: Python<'py>, params: &Bound<'py, PyAny>, speed: &Bound<
 /// The eigenvalues at each speed, shape (n, 4) complex, sorted by real then imaginary part (as
 /// `carvallo eig`).
 #[pyfunction]
-fn eigenvalues<'py>(py: Python<'py>, params: &Bound<'py, PyAny>, speeds: &Bound<'py, PyAny>) -> PyResult<Bound<'py, PyArray2<Complex64>>> {
+fn eigenvalues<'py>(
+    py: Python<'py>,
+    params: &Bound<'py, PyAny>,
+    speeds: &Bound<'py, PyAny>,
+) -> PyResult<Bound<'py, PyArray2<Complex64>>> {
     let bike = Whipple::new(params_of(params)?);
     let speeds = speeds_of(speeds)?;
     let mut flat = Vec::with_capacity(4 * speeds.len());
@@ -178,7 +202,11 @@ fn designs_of(designs: PyReadonlyArray2<'_, f64>) -> PyResult<Vec<[f64; 26]>> {
 /// for Monte Carlo samples). Parallel; the same numbers as `window` row by row.
 #[pyfunction]
 #[pyo3(signature = (designs, validate = true))]
-fn windows<'py>(py: Python<'py>, designs: PyReadonlyArray2<'py, f64>, validate: bool) -> PyResult<Bound<'py, PyArray2<f64>>> {
+fn windows<'py>(
+    py: Python<'py>,
+    designs: PyReadonlyArray2<'py, f64>,
+    validate: bool,
+) -> PyResult<Bound<'py, PyArray2<f64>>> {
     let rows = designs_of(designs)?;
     let ws = if validate {
         unc::windows(&rows).map_err(|(i, e)| err(format!("design {i}: {e}")))?
@@ -200,7 +228,15 @@ fn range(r: Option<(f64, f64)>) -> Option<(f64, f64)> {
 /// `carvallo sweep --json` (method "hurwitz" or "eigen").
 #[pyfunction]
 #[pyo3(signature = (params, name, start, stop, count, method = "hurwitz"))]
-fn sweep<'py>(py: Python<'py>, params: &Bound<'py, PyAny>, name: &str, start: f64, stop: f64, count: usize, method: &str) -> PyResult<Bound<'py, PyDict>> {
+fn sweep<'py>(
+    py: Python<'py>,
+    params: &Bound<'py, PyAny>,
+    name: &str,
+    start: f64,
+    stop: f64,
+    count: usize,
+    method: &str,
+) -> PyResult<Bound<'py, PyDict>> {
     let base = params_of(params)?;
     let m = match method {
         "hurwitz" => Method::Hurwitz,
@@ -239,10 +275,20 @@ fn sweep<'py>(py: Python<'py>, params: &Bound<'py, PyAny>, name: &str, start: f6
 /// `step`, `energy_drift`, `max_contact_residual`.
 #[pyfunction]
 #[pyo3(signature = (params, speed, lean0, duration, step = 0.001, every = 10))]
-fn simulate<'py>(py: Python<'py>, params: &Bound<'py, PyAny>, speed: f64, lean0: f64, duration: f64, step: f64, every: usize) -> PyResult<Bound<'py, PyDict>> {
+fn simulate<'py>(
+    py: Python<'py>,
+    params: &Bound<'py, PyAny>,
+    speed: f64,
+    lean0: f64,
+    duration: f64,
+    step: f64,
+    every: usize,
+) -> PyResult<Bound<'py, PyDict>> {
     let bike = WhippleNonlinear::new(params_of(params)?);
     let start = bike.initial_state(speed, lean0).map_err(|e| err(e.to_string()))?;
-    let tr = py.detach(|| bike.simulate(start, duration, step, every)).map_err(|e| err(e.to_string()))?;
+    let tr = py
+        .detach(|| bike.simulate(start, duration, step, every))
+        .map_err(|e| err(e.to_string()))?;
     let d = PyDict::new(py);
     type Column = fn(&carvallo::whipple_nonlinear::Sample) -> f64;
     let columns: [(&str, Column); 10] = [
@@ -278,7 +324,10 @@ fn report(py: Python<'_>) -> PyResult<Bound<'_, PyAny>> {
 /// `{"weave_speed", "capsize_speed", "d_weave": {name: dv/dp}, "d_capsize": {...}}` (None
 /// where a speed does not exist).
 #[pyfunction]
-fn speed_gradients<'py>(py: Python<'py>, params: &Bound<'py, PyAny>) -> PyResult<Bound<'py, PyDict>> {
+fn speed_gradients<'py>(
+    py: Python<'py>,
+    params: &Bound<'py, PyAny>,
+) -> PyResult<Bound<'py, PyDict>> {
     let g = unc::speed_gradients(&params_of(params)?);
     let d = PyDict::new(py);
     d.set_item("weave_speed", g.weave.as_ref().map(|w| w.speed))?;
@@ -292,7 +341,11 @@ fn speed_gradients<'py>(py: Python<'py>, params: &Bound<'py, PyAny>) -> PyResult
 /// with the standard deviations `sigma` (a dict; missing names have none):
 /// `{"weave_speed", "weave_std", "capsize_speed", "capsize_std"}`.
 #[pyfunction]
-fn first_order<'py>(py: Python<'py>, params: &Bound<'py, PyAny>, sigma: &Bound<'py, PyAny>) -> PyResult<Bound<'py, PyDict>> {
+fn first_order<'py>(
+    py: Python<'py>,
+    params: &Bound<'py, PyAny>,
+    sigma: &Bound<'py, PyAny>,
+) -> PyResult<Bound<'py, PyDict>> {
     let u = uncertain_of(params, sigma)?;
     let g = unc::speed_gradients(&u.params);
     let d = PyDict::new(py);
@@ -307,7 +360,13 @@ fn first_order<'py>(py: Python<'py>, params: &Bound<'py, PyAny>, sigma: &Bound<'
 /// `{"weave": array, "capsize": array, "invalid": int}` (NaN where a sample has no such speed).
 #[pyfunction]
 #[pyo3(signature = (params, sigma, samples = 10000, seed = 1897))]
-fn monte_carlo<'py>(py: Python<'py>, params: &Bound<'py, PyAny>, sigma: &Bound<'py, PyAny>, samples: usize, seed: u64) -> PyResult<Bound<'py, PyDict>> {
+fn monte_carlo<'py>(
+    py: Python<'py>,
+    params: &Bound<'py, PyAny>,
+    sigma: &Bound<'py, PyAny>,
+    samples: usize,
+    seed: u64,
+) -> PyResult<Bound<'py, PyDict>> {
     let u = uncertain_of(params, sigma)?;
     let mc = py.detach(|| unc::monte_carlo(&u, samples, seed));
     let d = PyDict::new(py);
@@ -327,7 +386,15 @@ fn rows4<'py>(py: Python<'py>, rows: &[[f64; 4]]) -> PyResult<Bound<'py, PyArray
 /// rank of the sorted real parts.
 #[pyfunction]
 #[pyo3(signature = (params, sigma, speeds, samples = 2000, seed = 1897, quantiles = (0.025, 0.975)))]
-fn eigenvalue_bands<'py>(py: Python<'py>, params: &Bound<'py, PyAny>, sigma: &Bound<'py, PyAny>, speeds: &Bound<'py, PyAny>, samples: usize, seed: u64, quantiles: (f64, f64)) -> PyResult<Bound<'py, PyDict>> {
+fn eigenvalue_bands<'py>(
+    py: Python<'py>,
+    params: &Bound<'py, PyAny>,
+    sigma: &Bound<'py, PyAny>,
+    speeds: &Bound<'py, PyAny>,
+    samples: usize,
+    seed: u64,
+    quantiles: (f64, f64),
+) -> PyResult<Bound<'py, PyDict>> {
     let u = uncertain_of(params, sigma)?;
     let speeds = speeds_of(speeds)?;
     let (lo, hi) = quantiles;
