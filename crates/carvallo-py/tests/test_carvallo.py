@@ -165,7 +165,7 @@ def test_other_bad_input_raises(tmp_path):
     del missing["c"]
     with pytest.raises(ValueError, match="missing parameter c"):
         carvallo.eigenvalues(missing, [1.0])
-    with pytest.raises(carvallo.ParameterError, match="invalid speed nan"):
+    with pytest.raises(carvallo.ParameterError, match="invalid speed NaN: must be finite"):
         carvallo.eigenvalues(p, [1.0, float("nan")])
     with pytest.raises(carvallo.ParameterError, match=r"shape \(n, 26\)"):
         carvallo.windows(np.zeros((3, 25)))
@@ -173,13 +173,13 @@ def test_other_bad_input_raises(tmp_path):
     bad[2, carvallo.PARAM_NAMES.index("mF")] = 0.0
     with pytest.raises(carvallo.ParameterError, match="design 2: invalid mF 0.0: must be positive"):
         carvallo.windows(bad)
-    with pytest.raises(carvallo.ParameterError, match="unknown parameter c in the uncertainties|invalid uncertainty c = -1.0"):
+    with pytest.raises(carvallo.ParameterError, match="invalid uncertainty c = -1.0: must be a finite standard deviation"):
         carvallo.first_order(p, {"c": -1.0})
     with pytest.raises(carvallo.ParameterError, match="unknown parameter q"):
         carvallo.sweep(p, "q", 0, 1, 10)
     with pytest.raises(carvallo.ParameterError, match="invalid method `fast`"):
         carvallo.sweep(p, "c", 0, 1, 10, method="fast")
-    with pytest.raises(carvallo.ParameterError, match="invalid duration -1.0|duration"):
+    with pytest.raises(carvallo.ParameterError, match="invalid duration -1.0: must be positive"):
         carvallo.simulate(p, 4.0, 0.0, -1.0)
     f = tmp_path / "bike.txt"
     f.write_text("w = 1.02+/-0.01\nc = 0.08+/-oops\n")
