@@ -111,6 +111,9 @@ struct Mark {
     offset: (i32, i32),
 }
 
+/// A filled band: polygon, colour, legend label.
+type Band = (Vec<(f64, f64)>, RGBColor, String);
+
 /// What a figure draws: axes, curves, shaded rectangles and labelled points.
 pub struct Chart {
     title: String,
@@ -124,7 +127,7 @@ pub struct Chart {
     marks: Vec<Mark>,
     /// Filled bands: a polygon (the lower edge forward, the upper edge back), its colour and
     /// legend label (empty: not in the legend).
-    bands: Vec<(Vec<(f64, f64)>, RGBColor, String)>,
+    bands: Vec<Band>,
     /// Polar grid: maximal radius and ray step in degrees (`None`: Cartesian mesh).
     polar: Option<(f64, f64)>,
     legend: SeriesLabelPosition,

@@ -133,6 +133,7 @@ impl<const N: usize> Sub for Dual<N> {
     }
 }
 
+#[allow(clippy::suspicious_arithmetic_impl)] // The product rule adds.
 impl<const N: usize> Mul for Dual<N> {
     type Output = Dual<N>;
     fn mul(self, b: Dual<N>) -> Dual<N> {
@@ -143,6 +144,7 @@ impl<const N: usize> Mul for Dual<N> {
     }
 }
 
+#[allow(clippy::suspicious_arithmetic_impl)] // The quotient rule subtracts and multiplies.
 impl<const N: usize> Div for Dual<N> {
     type Output = Dual<N>;
     fn div(self, b: Dual<N>) -> Dual<N> {

@@ -168,7 +168,7 @@ fn eigenvalues<'py>(
         }
         flat.extend(ev.iter().map(|e| Complex64::new(e.re, e.im)));
     }
-    Ok(PyArray1::from_vec(py, flat).reshape([speeds.len(), 4])?)
+    PyArray1::from_vec(py, flat).reshape([speeds.len(), 4])
 }
 
 fn window_dict<'py>(py: Python<'py>, w: &StabilityWindow) -> PyResult<Bound<'py, PyDict>> {
@@ -217,7 +217,7 @@ fn windows<'py>(
         .iter()
         .flat_map(|w| [w.weave_speed.unwrap_or(f64::NAN), w.capsize_speed.unwrap_or(f64::NAN)])
         .collect();
-    Ok(PyArray1::from_vec(py, flat).reshape([rows.len(), 2])?)
+    PyArray1::from_vec(py, flat).reshape([rows.len(), 2])
 }
 
 fn range(r: Option<(f64, f64)>) -> Option<(f64, f64)> {
@@ -378,7 +378,7 @@ fn monte_carlo<'py>(
 
 fn rows4<'py>(py: Python<'py>, rows: &[[f64; 4]]) -> PyResult<Bound<'py, PyArray2<f64>>> {
     let flat: Vec<f64> = rows.iter().flatten().copied().collect();
-    Ok(PyArray1::from_vec(py, flat).reshape([rows.len(), 4])?)
+    PyArray1::from_vec(py, flat).reshape([rows.len(), 4])
 }
 
 /// Quantile bands of the eigenvalues' real parts against speed for `samples` Monte Carlo
