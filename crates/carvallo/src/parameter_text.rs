@@ -166,12 +166,13 @@ impl UncertainParams {
     }
 
     /// Reads either format: TOML (the anchors format, every uncertainty zero) when the text has
-    /// a `[parameters]` table, the BicycleParameters text otherwise.
+    /// a table header (a line starting with `[`, such as `[parameters]`), the BicycleParameters
+    /// text otherwise.
     ///
     /// # Errors
     /// As [`WhippleParams::from_toml_str`] or [`from_text`](Self::from_text).
     pub fn from_any(text: &str) -> Result<UncertainParams, ParameterTextError> {
-        if text.lines().any(|l| l.trim() == "[parameters]") {
+        if text.lines().any(|l| l.trim_start().starts_with('[')) {
             Ok(UncertainParams::exact(WhippleParams::from_toml_str(text)?))
         } else {
             UncertainParams::from_text(text)
