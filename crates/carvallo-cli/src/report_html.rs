@@ -177,11 +177,7 @@ fn derived_html(d: &Derived) -> String {
         Derived::Numbers(map) => map
             .iter()
             .map(|(k, v)| {
-                format!(
-                    "<span class=\"math\">{}</span> = <span class=\"num\">{}</span>",
-                    math(k),
-                    format_significant(*v, 10)
-                )
+                format!("{} = <span class=\"num\">{}</span>", escape(k), format_significant(*v, 10))
             })
             .collect::<Vec<_>>()
             .join(", "),
@@ -233,7 +229,7 @@ h1 { font-size: 1.7em; margin-top: 1.2em; }
 h2 { border-bottom: 1px solid #bbb; margin-top: 2em; }
 h3 { margin-top: 1.6em; } h4 { margin: 1.2em 0 0.4em; } h5 { margin: 1em 0 0.3em; font-size: 1em; }
 table { border-collapse: collapse; width: 100%; font-size: 0.88em; margin-bottom: 0.8em; }
-th, td { border: 1px solid #ddd; padding: 0.25em 0.4em; vertical-align: top; text-align: left; }
+th, td { border: 1px solid #ddd; padding: 0.25em 0.4em; vertical-align: top; text-align: left; overflow-wrap: anywhere; }
 th { background: #f2f2f2; }
 td.n { white-space: nowrap; }
 .math { font-family: "STIX Two Math", "Cambria Math", "Latin Modern Math", "DejaVu Serif", "Times New Roman", serif; font-style: italic; }
