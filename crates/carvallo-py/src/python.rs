@@ -220,10 +220,6 @@ fn windows<'py>(
     PyArray1::from_vec(py, flat).reshape([rows.len(), 2])
 }
 
-fn range(r: Option<(f64, f64)>) -> Option<(f64, f64)> {
-    r
-}
-
 /// Varies one parameter linearly over `count` designs and summarises their windows, as
 /// `carvallo sweep --json` (method "hurwitz" or "eigen").
 #[pyfunction]
@@ -263,8 +259,8 @@ fn sweep<'py>(
     d.set_item("stable", s.stable)?;
     d.set_item("with_weave", s.with_weave)?;
     d.set_item("with_capsize", s.with_capsize)?;
-    d.set_item("weave_speed_range", range(s.weave_range))?;
-    d.set_item("capsize_speed_range", range(s.capsize_range))?;
+    d.set_item("weave_speed_range", s.weave_range)?;
+    d.set_item("capsize_speed_range", s.capsize_range)?;
     d.set_item("failed", s.failed)?;
     Ok(d)
 }
