@@ -1,5 +1,5 @@
 //! The symbolica license boundary (../shared/SYMBOLICA.md): the runtime, the concordance report,
-//! the proc-macro, the IR and the CLI must build and run without the computer-algebra crate. This test walks the
+//! the proc-macro, the IR, the CLI and the Python package must build and run without the computer-algebra crate. This test walks the
 //! dependency graph recorded in the committed `Cargo.lock` from each of those packages and fails
 //! if `symbolica` (or its arithmetic crate `numerica`) is reachable.
 
@@ -45,7 +45,7 @@ fn reachable(graph: &BTreeMap<String, Vec<String>>, from: &str) -> BTreeSet<Stri
 #[test]
 fn user_facing_crates_do_not_depend_on_symbolica() {
     let graph = lock_graph();
-    for krate in ["carvallo", "carvallo-report", "carvallo-ir", "carvallo-macros", "carvallo-cli"] {
+    for krate in ["carvallo", "carvallo-report", "carvallo-ir", "carvallo-macros", "carvallo-cli", "carvallo-py"] {
         assert!(graph.contains_key(krate), "{krate} is missing from Cargo.lock");
         let deps = reachable(&graph, krate);
         for forbidden in ["symbolica", "numerica"] {
@@ -54,6 +54,15 @@ fn user_facing_crates_do_not_depend_on_symbolica() {
                 "{krate} depends (transitively) on {forbidden}; only codegen/xtask may"
             );
         }
+    }
+}
+
+#[test]
+fn the_python_package_links_pyo3_and_the_runtime() {
+    // Guards the boundary test above for carvallo-py: its graph does hold its real dependencies.
+    let deps = reachable(&lock_graph(), "carvallo-py");
+    for needed in ["carvallo", "pyo3", "numpy"] {
+        assert!(deps.contains(needed), "carvallo-py does not reach {needed}");
     }
 }
 

@@ -20,10 +20,12 @@ use anyhow::{anyhow, Result};
 use carvallo::bicycle_geometry::Geometry;
 use carvallo::bicycle_straight::{window, Constants, Equations};
 use carvallo::hoop_discussion::{self, Series};
+use carvallo::parameter_text::UncertainParams;
 use carvallo::quartic::aberth_compensated;
 use carvallo::unicycle_discussion;
 use carvallo::whipple::{Whipple, WhippleParams, PARAM_NAMES};
 use carvallo::whipple_nonlinear::WhippleNonlinear;
+use carvallo::whipple_uncertainty::eigenvalue_bands;
 use plotters::coord::types::RangedCoordf64;
 use plotters::coord::Shift;
 use plotters::prelude::*;
@@ -109,6 +111,9 @@ struct Mark {
     offset: (i32, i32),
 }
 
+/// A filled band: polygon, colour, legend label.
+type Band = (Vec<(f64, f64)>, RGBColor, String);
+
 /// What a figure draws: axes, curves, shaded rectangles and labelled points.
 pub struct Chart {
     title: String,
@@ -120,6 +125,9 @@ pub struct Chart {
     shade: Vec<[(f64, f64); 2]>,
     shade_label: String,
     marks: Vec<Mark>,
+    /// Filled bands: a polygon (the lower edge forward, the upper edge back), its colour and
+    /// legend label (empty: not in the legend).
+    bands: Vec<Band>,
     /// Polar grid: maximal radius and ray step in degrees (`None`: Cartesian mesh).
     polar: Option<(f64, f64)>,
     legend: SeriesLabelPosition,
@@ -162,6 +170,7 @@ impl Chart {
             shade: Vec::new(),
             shade_label: String::new(),
             marks: Vec::new(),
+            bands: Vec::new(),
             polar: None,
             legend: SeriesLabelPosition::UpperRight,
         }
@@ -286,6 +295,15 @@ impl Chart {
             if !self.shade_label.is_empty() {
                 series
                     .label(self.shade_label.as_str())
+                    .legend(move |(x, y)| Rectangle::new([(x, y - 6), (x + 20, y + 6)], fill));
+            }
+        }
+        for (polygon, color, label) in &self.bands {
+            let fill = color.mix(0.25).filled();
+            let series = chart.draw_series(std::iter::once(Polygon::new(polygon.clone(), fill)))?;
+            if !label.is_empty() {
+                series
+                    .label(label.as_str())
                     .legend(move |(x, y)| Rectangle::new([(x, y - 6), (x + 20, y + 6)], fill));
             }
         }
@@ -662,11 +680,10 @@ fn fig_carvallo_eigenvalues(_: &WhippleParams) -> Result<String> {
     c.render()
 }
 
-/// Where the front track crosses the rear one (the front sample after each crossing): sign
-/// changes of the lateral gap
-/// $y_F - y_R$, the rear track interpolated linearly at the front samples' $x$ (both tracks
-/// run forward, so each is a function $y(x)$), over the $x$ range both tracks cover.
-fn track_crossings(rear: &[(f64, f64)], front: &[(f64, f64)]) -> Vec<(f64, f64)> {
+/// The lateral gap $y_F - y_R$ between the tracks at each front sample $(x, y_F)$, the rear
+/// track interpolated linearly at the same $x$ (both tracks run forward, so each is a function
+/// $y(x)$), over the $x$ range both tracks cover: `((x, y_F), gap)`.
+fn lateral_gaps(rear: &[(f64, f64)], front: &[(f64, f64)]) -> Vec<((f64, f64), f64)> {
     let rear_y = |x: f64| {
         let i = rear.partition_point(|p| p.0 < x);
         if i == 0 || i >= rear.len() {
@@ -675,11 +692,14 @@ fn track_crossings(rear: &[(f64, f64)], front: &[(f64, f64)]) -> Vec<(f64, f64)>
         let ((x0, y0), (x1, y1)) = (rear[i - 1], rear[i]);
         Some(y0 + (y1 - y0) * (x - x0) / (x1 - x0))
     };
-    let gaps: Vec<((f64, f64), f64)> = front
-        .iter()
-        .filter_map(|&(x, y)| rear_y(x).map(|yr| ((x, y), y - yr)))
-        .filter(|(_, d)| *d != 0.0)
-        .collect();
+    front.iter().filter_map(|&(x, y)| rear_y(x).map(|yr| ((x, y), y - yr))).collect()
+}
+
+/// Where the front track crosses the rear one (the front sample after each crossing): sign
+/// changes of the lateral gap $y_F - y_R$ of [`lateral_gaps`].
+fn track_crossings(rear: &[(f64, f64)], front: &[(f64, f64)]) -> Vec<(f64, f64)> {
+    let gaps: Vec<((f64, f64), f64)> =
+        lateral_gaps(rear, front).into_iter().filter(|(_, d)| *d != 0.0).collect();
     gaps.windows(2).filter(|w| (w[0].1 > 0.0) != (w[1].1 > 0.0)).map(|w| w[1].0).collect()
 }
 
@@ -711,12 +731,23 @@ fn fig_tracks(p: &WhippleParams) -> Result<String> {
     let front: Vec<(f64, f64)> =
         tr.samples.iter().map(|s| (s.front_contact[0], s.front_contact[1])).collect();
     let crossings = track_crossings(&rear, &front);
-    let range = |f: fn(&(f64, f64)) -> f64| {
-        let values = rear.iter().chain(&front).map(f);
-        values.fold((f64::INFINITY, f64::NEG_INFINITY), |(a, b), v| (a.min(v), b.max(v)))
+    // The weave shows in the gap between the tracks, centimetres beside metres of drift: the
+    // gap is drawn magnified by a power of ten (named in the legend) so that it fills about
+    // half the lateral range of the tracks.
+    let gaps = lateral_gaps(&rear, &front);
+    let span = |it: &mut dyn Iterator<Item = f64>| {
+        it.fold((f64::INFINITY, f64::NEG_INFINITY), |(a, b), v| (a.min(v), b.max(v)))
     };
-    let ((x0, x1), (y0, y1)) = (range(|p| p.0), range(|p| p.1));
-    let pad = 0.08 * (y1 - y0).max(1e-3);
+    let (y0, y1) = span(&mut rear.iter().chain(&front).map(|p| p.1));
+    let (g0, g1) = span(&mut gaps.iter().map(|g| g.1));
+    let gap_max = g0.abs().max(g1.abs()).max(1e-12);
+    let track_span = (y1 - y0).max(1e-3);
+    let magnify = 10f64.powf((0.5 * track_span / gap_max).log10().floor()).max(1.0);
+    let gap: Vec<(f64, f64)> = gaps.iter().map(|&((x, _), d)| (x, magnify * d)).collect();
+    let (lo, hi) = (y0.min(-magnify * gap_max), y1.max(magnify * gap_max));
+    let pad = 0.08 * (hi - lo);
+    let x0 = rear.iter().chain(&front).map(|p| p.0).fold(f64::INFINITY, f64::min);
+    let x1 = rear.iter().chain(&front).map(|p| p.0).fold(f64::NEG_INFINITY, f64::max);
     let mut c = Chart::new(
         &format!(
             "Ground tracks, v = {speed} m/s, lean0 = {lean0} rad: the tracks cross {} times",
@@ -725,16 +756,79 @@ fn fig_tracks(p: &WhippleParams) -> Result<String> {
         "x forward (m)",
         "y lateral (m)",
         x0..x1,
-        y0 - pad..y1 + pad,
+        lo - pad..hi + pad,
     );
-    for (i, &at) in crossings.iter().enumerate() {
-        c.mark_at(at, format!("crossing {}", i + 1), (-30, if i % 2 == 0 { -24 } else { 10 }));
+    for (i, &(x, _)) in crossings.iter().enumerate() {
+        c.mark_at(
+            (x, 0.0),
+            format!("crossing {}", i + 1),
+            (-30, if i % 2 == 0 { -24 } else { 10 }),
+        );
     }
-    c.add(Curve::new("rear contact", decimate(&rear, 1000), color(0), Stroke::Solid));
-    c.add(Curve::new("front contact", decimate(&front, 1000), color(1), Stroke::Dashed));
+    c.add(Curve::new("rear contact y", decimate(&rear, 1000), color(0), Stroke::Solid));
+    c.add(Curve::new("front contact y", decimate(&front, 1000), color(1), Stroke::Dashed));
+    let label = if magnify > 1.0 {
+        format!("lateral gap front − rear × {magnify}")
+    } else {
+        "lateral gap front − rear".to_string()
+    };
+    c.add(Curve::new(label, decimate(&gap, 1000), color(2), Stroke::Solid));
+    c.add(Curve::new("", vec![(x0, 0.0), (x1, 0.0)], GREY, Stroke::Solid));
     c.legend = SeriesLabelPosition::UpperLeft;
     c.render()
 }
+
+/// The benchmark-style eigenvalue figure of a bicycle with stated uncertainties: the nominal
+/// real parts against speed and, for each of the four (sorted) real parts, the band between
+/// the 2.5 % and 97.5 % quantiles of a seeded Monte Carlo sample
+/// ([`carvallo::whipple_uncertainty::eigenvalue_bands`]); the nominal stable range shaded.
+pub fn fig_eigenvalue_bands(u: &UncertainParams, samples: usize) -> Result<String> {
+    let v_max = 10.0;
+    let y_max = 10.0;
+    let speeds: Vec<f64> = (0..=100).map(|k| v_max * k as f64 / 100.0).collect();
+    let b = eigenvalue_bands(u, &speeds, samples, BAND_SEED, 0.025, 0.975);
+    let mut c = Chart::new(
+        &format!("Eigenvalues (real parts) with 95 % bands, {samples} Monte Carlo samples"),
+        "forward speed v (m/s)",
+        "Re λ (1/s)",
+        0.0..v_max,
+        -y_max..y_max,
+    );
+    let stable = Whipple::new(u.params.clone()).stability_window().stable;
+    for &(a, bb) in &stable {
+        c.shade.push([(a, -y_max), (bb.min(v_max), y_max)]);
+    }
+    c.shade_label = match stable.first() {
+        Some((a, bb)) => format!("nominal stable: {a:.3} < v < {bb:.3} m/s"),
+        None => "no stable speed (nominal)".to_string(),
+    };
+    let clip = |y: f64| y.clamp(-y_max, y_max);
+    for k in 0..4 {
+        let mut polygon: Vec<(f64, f64)> =
+            speeds.iter().zip(&b.lower).map(|(&v, r)| (v, clip(r[k]))).collect();
+        polygon.extend(speeds.iter().zip(&b.upper).rev().map(|(&v, r)| (v, clip(r[k]))));
+        let label = if k == 0 { "95 % band of each Re λ".to_string() } else { String::new() };
+        c.bands.push((polygon, color(0), label));
+        let nominal: Vec<(f64, f64)> = speeds
+            .iter()
+            .zip(&b.nominal)
+            .map(|(&v, r)| (v, r[k]))
+            .filter(|(_, y)| y.abs() <= y_max)
+            .collect();
+        c.add(Curve::new(
+            if k == 0 { "nominal Re λ" } else { "" },
+            nominal,
+            color(0),
+            Stroke::Points,
+        ));
+    }
+    c.add(Curve::new("", vec![(0.0, 0.0), (v_max, 0.0)], BLACK, Stroke::Solid));
+    c.legend = SeriesLabelPosition::LowerRight;
+    c.render()
+}
+
+/// The seed of the Monte Carlo sample of the report's uncertainty bands.
+pub const BAND_SEED: u64 = 1897;
 
 /// The stable window of `p` with parameter `key` set to each value of `values` (given in the
 /// plotted unit, multiplied by `scale` for the model).

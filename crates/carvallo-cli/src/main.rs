@@ -15,6 +15,7 @@ mod figures;
 mod kinematics;
 mod nonlinear;
 mod perf;
+mod report_html;
 mod report_out;
 mod rest;
 mod straight;
@@ -26,8 +27,11 @@ carvallo: E. Carvallo's memoir (1897) on the hoop, unicycle and bicycle, re-deri
 
 Usage:
     carvallo report [--json]    print the memoir concordance (text table, or JSON with --json)
-    carvallo report --out DIR [--model benchmark|FILE.toml]
-                                write DIR/report.md (concordance, errata) and the SVG figures
+    carvallo report --out DIR [--model benchmark|FILE.toml|FILE.txt]
+                                write DIR/report.md and DIR/report.html (concordance, errata)
+                                and the SVG figures; a FILE.txt with uncertainties
+                                (BicycleParameters' name = value+/-sigma) adds their
+                                propagation and the eigenvalues with uncertainty bands
     carvallo window --model benchmark|FILE.toml [--json]
                                 stable speed range of the linearised Carvallo-Whipple bicycle
     carvallo window --model carvallo|carvallo-formulas|carvallo-memoir|carvallo-quartic [--json]
@@ -137,7 +141,7 @@ fn run(command: Command) -> anyhow::Result<()> {
     match command {
         Command::Help => emit(HELP)?,
         Command::ReportOut { dir, model } => {
-            let params = whipple::load(&model).map_err(report_out::BadInput)?;
+            let params = whipple::load_uncertain(&model).map_err(report_out::BadInput)?;
             let files = report_out::write_report(std::path::Path::new(&dir), &params, &model)?;
             let list: String = files.iter().map(|f| format!("{dir}/{f}\n")).collect();
             emit(&list)?;

@@ -7,10 +7,12 @@
 //! * `carvallo eig --model benchmark|FILE.toml --speed V [--json]`: the four eigenvalues of the
 //!   linearised equations at speed V, as JSON `{ "speed", "eigenvalues": [{"re", "im"}, ...] }`.
 //!
-//! A parameter file has the format of the benchmark anchors file (a `[parameters]` table).
+//! A parameter file has the format of the benchmark anchors file (a `[parameters]` table) or
+//! BicycleParameters' benchmark text format (`name = value+/-sigma`, one per line).
 //! Unknown or missing arguments, a speed that is not a finite number and an unreadable or
 //! invalid parameter file are usage errors: a message naming the value, exit code 2.
 
+use carvallo::parameter_text::UncertainParams;
 use carvallo::whipple::{Whipple, WhippleParams};
 use serde_json::{json, Value};
 
@@ -62,15 +64,23 @@ fn parse(args: &[String]) -> Result<Command, String> {
     }
 }
 
-/// The bicycle `benchmark` or the one in the parameter file `model`.
+/// The bicycle `benchmark` or the one in the parameter file `model` (either format of
+/// [`load_uncertain`]).
 pub(crate) fn load(model: &str) -> Result<WhippleParams, String> {
+    load_uncertain(model).map(|u| u.params)
+}
+
+/// The bicycle `benchmark` (no uncertainty) or the one in the parameter file `model`: the
+/// anchors TOML format or BicycleParameters' text format `name = value+/-sigma`
+/// ([`UncertainParams::from_any`]).
+pub(crate) fn load_uncertain(model: &str) -> Result<UncertainParams, String> {
     if model == "benchmark" {
-        return Ok(WhippleParams::benchmark());
+        return Ok(UncertainParams::exact(WhippleParams::benchmark()));
     }
     let text = std::fs::read_to_string(model).map_err(|e| {
         format!("cannot read model file `{model}`: {}", e.to_string().to_lowercase())
     })?;
-    WhippleParams::from_toml_str(&text).map_err(|e| format!("invalid model file `{model}`: {e}"))
+    UncertainParams::from_any(&text).map_err(|e| format!("invalid model file `{model}`: {e}"))
 }
 
 fn finite(x: f64) -> Value {

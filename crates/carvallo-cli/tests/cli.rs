@@ -171,3 +171,51 @@ fn bad_parameter_files_are_usage_errors_and_nothing_is_written() {
     assert!(listing(&dir).iter().all(|n| n.ends_with(".toml")), "{:?}", listing(&dir));
     let _ = std::fs::remove_dir_all(&dir);
 }
+
+#[test]
+fn parameter_text_files_with_uncertainties() {
+    let dir = scratch("text");
+    let fixture = concat!(env!("CARGO_MANIFEST_DIR"), "/../../data/benchmark-1pct.txt");
+    let good = std::fs::read_to_string(fixture).unwrap();
+    std::fs::write(dir.join("bike.txt"), &good).unwrap();
+    // Bad lines are usage errors naming the file, the line and the value; nothing is written.
+    let bad = [
+        (
+            "bad-sigma.txt",
+            good.replace("mB = 85.0+/-0.85", "mB = 85.0+/-heavy"),
+            "line 15: mB: uncertainty `heavy` is not a number (`mB = 85.0+/-heavy`)",
+        ),
+        ("bad-name.txt", good.replace("rF = ", "rFront = "), "line 27: unknown parameter `rFront`"),
+        ("no-table.toml", "[params]\nw = 1.0\n".to_string(), "no [parameters] table"),
+    ];
+    for (name, text, message) in &bad {
+        std::fs::write(dir.join(name), text).unwrap();
+        for args in [vec!["report", "--out", "r", "--model", name], vec!["window", "--model", name]]
+        {
+            let (code, stdout, stderr) = carvallo_in(&dir, &args);
+            assert_eq!(code, 2, "{args:?}: {stderr}");
+            assert_eq!(stdout, "");
+            assert!(stderr.contains(message) && stderr.contains(name), "{args:?}: {stderr}");
+        }
+    }
+    assert!(!dir.join("r").exists(), "nothing may be written");
+    // The window of the text file is the benchmark's.
+    let (code, stdout, _) = carvallo_in(&dir, &["window", "--model", "bike.txt"]);
+    assert_eq!(code, 0);
+    assert!(stdout.contains("stable from 4.292382536341106 to 6.024262015388359 m/s"), "{stdout}");
+    // The report adds the uncertainty section and the bands figure, in both pages.
+    let (code, _, stderr) = carvallo_in(&dir, &["report", "--out", "r", "--model", "bike.txt"]);
+    assert_eq!(code, 0, "{stderr}");
+    let md = std::fs::read_to_string(dir.join("r/report.md")).unwrap();
+    let html = std::fs::read_to_string(dir.join("r/report.html")).unwrap();
+    for page in [&md, &html] {
+        assert!(page.contains("Uncertainty of the bicycle"));
+        assert!(page.contains("4.2924") && page.contains("0.0397"), "weave speed and its std");
+        assert!(page.contains("6.0243") && page.contains("0.0928"), "capsize speed and its std");
+    }
+    assert!(md.contains("](eigenvalue_bands.svg)"));
+    assert!(html.contains("<figure id=\"eigenvalue_bands.svg\">"));
+    let svg = std::fs::read_to_string(dir.join("r/eigenvalue_bands.svg")).unwrap();
+    assert!(svg.contains("95 % band") && svg.contains("<polygon"), "the bands are drawn");
+    let _ = std::fs::remove_dir_all(&dir);
+}

@@ -173,7 +173,8 @@ fn every_cli_example_in_the_readme_replays() {
 }
 
 /// The directory the README's `report --out report` wrote: the report with its sections, every
-/// figure it links (SVG documents with text), and the README's picture identical to its copy.
+/// figure it links (SVG documents with text), the HTML page with every figure inline, and the
+/// README's picture identical to its copy.
 fn check_report_dir(out: &Path) {
     let md = std::fs::read_to_string(out.join("report.md")).unwrap();
     for heading in ["## Figures", "### Figures not drawn yet", "## Concordance", "## Errata"] {
@@ -186,6 +187,15 @@ fn check_report_dir(out: &Path) {
         let svg = std::fs::read_to_string(out.join(link)).unwrap();
         assert!(svg.starts_with("<svg") && svg.contains("<text"), "{link} is not an SVG with text");
         assert!(svg.len() < 400_000, "{link} is {} bytes", svg.len());
+    }
+    // The HTML page: every SVG figure inline, no script (the browser test opens it).
+    let html = std::fs::read_to_string(out.join("report.html")).unwrap();
+    assert!(html.starts_with("<!DOCTYPE html>") && !html.contains("<script"));
+    for entry in std::fs::read_dir(out).unwrap() {
+        let name = entry.unwrap().file_name().to_string_lossy().into_owned();
+        if name.ends_with(".svg") {
+            assert!(html.contains(&format!("<figure id=\"{name}\">\n<svg")), "{name} not inline");
+        }
     }
     let docs = Path::new(env!("CARGO_MANIFEST_DIR")).join("../../docs/fig04bis_hoop_walking.svg");
     assert!(

@@ -70,6 +70,7 @@
 
 pub mod build;
 pub mod count;
+pub mod dual;
 pub mod error;
 pub mod hp;
 pub mod interp;

@@ -25,11 +25,13 @@ pub mod error;
 pub mod hoop;
 pub mod hoop_discussion;
 pub mod numerics;
+pub mod parameter_text;
 pub mod quartic;
 pub mod sweep;
 pub mod unicycle;
 pub mod unicycle_discussion;
 pub mod whipple;
 pub mod whipple_nonlinear;
+pub mod whipple_uncertainty;
 
 pub use error::ParameterError;

@@ -184,7 +184,7 @@ impl fmt::Display for WhippleError {
 impl std::error::Error for WhippleError {}
 
 /// Reads `"pi"`, `"pi/N"`, `"K*pi"`, `"K*pi/N"` or a plain number.
-fn parse_pi(text: &str) -> Option<f64> {
+pub(crate) fn parse_pi(text: &str) -> Option<f64> {
     let t: String = text.chars().filter(|c| !c.is_whitespace()).collect();
     let (num, den) = match t.split_once('/') {
         Some((a, b)) => (a.to_string(), b.parse::<f64>().ok()?),

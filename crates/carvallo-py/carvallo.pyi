@@ -1,0 +1,85 @@
+"""Fast, verified evaluators of the Carvallo-Whipple bicycle (the `carvallo` Rust crate).
+
+Parameters are dicts in the benchmark names of Meijaard et al. (2007) (`PARAM_NAMES`; the steer
+axis tilt also as BicycleParameters' `lam`), SI units. Every error is a `ParameterError` (a
+`ValueError`) whose message names the key and the value.
+"""
+
+from typing import Mapping, Optional, Sequence, Union
+
+import numpy as np
+import numpy.typing as npt
+
+__version__: str
+PARAM_NAMES: list[str]
+
+Params = Mapping[str, float]
+Speeds = Union[float, Sequence[float], npt.NDArray[np.float64]]
+
+class ParameterError(ValueError):
+    """A bad parameter, parameter file or argument; the message names the key and the value."""
+
+def benchmark() -> dict[str, float]:
+    """The benchmark bicycle of Meijaard et al. (2007), Table 1."""
+
+def load_parameters(path: str) -> tuple[dict[str, float], dict[str, float]]:
+    """(params, sigma) from a TOML file (anchors format) or a BicycleParameters text file."""
+
+def parse_parameters(text: str) -> tuple[dict[str, float], dict[str, float]]:
+    """(params, sigma) from the text of a parameter file (either format)."""
+
+def matrices(params: Params) -> dict[str, npt.NDArray[np.float64]]:
+    """{"M", "C1", "K0", "K2"}: the 2x2 matrices of M q'' + v C1 q' + (g K0 + v^2 K2) q = f."""
+
+def state_matrix(params: Params, speed: Speeds) -> npt.NDArray[np.float64]:
+    """The 4x4 state matrix of (lean, steer, lean rate, steer rate); shape (n, 4, 4) for n speeds."""
+
+def eigenvalues(params: Params, speeds: Speeds) -> npt.NDArray[np.complex128]:
+    """Eigenvalues at each speed, shape (n, 4), sorted by real then imaginary part."""
+
+def window(params: Params) -> dict[str, object]:
+    """{"weave_speed", "capsize_speed", "stable": [(from, to), ...]} in m/s (None if none)."""
+
+def windows(designs: npt.NDArray[np.float64], validate: bool = True) -> npt.NDArray[np.float64]:
+    """Weave and capsize speeds of the rows of an (n, 26) array (columns as PARAM_NAMES): (n, 2), NaN if none."""
+
+def sweep(
+    params: Params, name: str, start: float, stop: float, count: int, method: str = "hurwitz"
+) -> dict[str, object]:
+    """Summary of the windows as `name` runs linearly from start to stop (as `carvallo sweep --json`)."""
+
+def simulate(
+    params: Params,
+    speed: float,
+    lean0: float,
+    duration: float,
+    step: float = 0.001,
+    every: int = 10,
+) -> dict[str, Union[float, npt.NDArray[np.float64]]]:
+    """Nonlinear simulation (RK4) from upright straight running; arrays t, lean, steer, pitch,
+    speed_rear, rear_x, rear_y, front_x, front_y, energy and floats step, energy_drift,
+    max_contact_residual."""
+
+def report() -> list[dict[str, object]]:
+    """The memoir concordance, the entries of `carvallo report --json`."""
+
+def speed_gradients(params: Params) -> dict[str, object]:
+    """Weave and capsize speeds with their exact derivatives: d_weave, d_capsize dicts."""
+
+def first_order(params: Params, sigma: Params) -> dict[str, Optional[float]]:
+    """First-order standard deviations weave_std, capsize_std for independent parameters."""
+
+def monte_carlo(
+    params: Params, sigma: Params, samples: int = 10000, seed: int = 1897
+) -> dict[str, object]:
+    """Seeded Monte Carlo: arrays weave and capsize (NaN if none) and the count invalid."""
+
+def eigenvalue_bands(
+    params: Params,
+    sigma: Params,
+    speeds: Speeds,
+    samples: int = 2000,
+    seed: int = 1897,
+    quantiles: tuple[float, float] = (0.025, 0.975),
+) -> dict[str, npt.NDArray[np.float64]]:
+    """Quantile bands of the sorted real parts of the eigenvalues: speeds, nominal, lower, upper."""

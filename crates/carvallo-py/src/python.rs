@@ -1,0 +1,433 @@
+//! The Python module `carvallo` (PyO3): thin wrappers over the runtime crate, numpy arrays in
+//! and out, every error a `carvallo.ParameterError` (a `ValueError`) whose message names the key
+//! and the value. `carvallo.pyi` beside `Cargo.toml` gives the types.
+
+use std::sync::atomic::AtomicUsize;
+
+use carvallo::parameter_text::UncertainParams;
+use carvallo::sweep::Method;
+use carvallo::whipple::{StabilityWindow, Whipple, WhippleParams, PARAM_NAMES};
+use carvallo::whipple_nonlinear::WhippleNonlinear;
+use carvallo::whipple_uncertainty as unc;
+use numpy::{
+    Complex64, PyArray1, PyArray2, PyArrayMethods, PyReadonlyArray2, PyUntypedArrayMethods,
+};
+use pyo3::create_exception;
+use pyo3::exceptions::PyValueError;
+use pyo3::prelude::*;
+use pyo3::types::{PyDict, PyList};
+
+create_exception!(
+    carvallo,
+    ParameterError,
+    PyValueError,
+    "A bad parameter, parameter file or argument; the message names the key and the value."
+);
+
+fn err(message: impl Into<String>) -> PyErr {
+    ParameterError::new_err(message.into())
+}
+
+/// `(name, value)` pairs from a mapping of numbers.
+fn pairs(mapping: &Bound<'_, PyAny>, what: &str) -> PyResult<Vec<(String, f64)>> {
+    let dict = mapping
+        .cast::<PyDict>()
+        .map_err(|_| err(format!("{what} must be a dict of name -> number")))?;
+    let mut out = Vec::with_capacity(dict.len());
+    for (k, v) in dict.iter() {
+        let name: String = k.extract().map_err(|_| {
+            err(format!(
+                "{what}: key {} is not a string",
+                k.repr().map(|r| r.to_string()).unwrap_or_default()
+            ))
+        })?;
+        let value: f64 = v.extract().map_err(|_| {
+            let shown = v.repr().map(|r| r.to_string()).unwrap_or_default();
+            err(format!("parameter {name} = {shown} is not a number"))
+        })?;
+        out.push((name, value));
+    }
+    Ok(out)
+}
+
+fn params_of(mapping: &Bound<'_, PyAny>) -> PyResult<WhippleParams> {
+    crate::params_from_pairs(&pairs(mapping, "params")?).map_err(err)
+}
+
+fn uncertain_of(params: &Bound<'_, PyAny>, sigma: &Bound<'_, PyAny>) -> PyResult<UncertainParams> {
+    crate::uncertain_from_pairs(&pairs(params, "params")?, &pairs(sigma, "sigma")?).map_err(err)
+}
+
+fn dict_of<'py>(py: Python<'py>, values: &[f64; 26]) -> PyResult<Bound<'py, PyDict>> {
+    let d = PyDict::new(py);
+    for (name, v) in crate::pairs_of(values) {
+        d.set_item(name, v)?;
+    }
+    Ok(d)
+}
+
+fn speeds_of(speeds: &Bound<'_, PyAny>) -> PyResult<Vec<f64>> {
+    let v: Vec<f64> = if let Ok(x) = speeds.extract::<f64>() {
+        vec![x]
+    } else {
+        speeds.extract().map_err(|_| err("speeds must be a number or a 1-d sequence of numbers"))?
+    };
+    if let Some(x) = v.iter().find(|x| !x.is_finite()) {
+        return Err(err(format!("invalid speed {x}: must be finite")));
+    }
+    Ok(v)
+}
+
+/// The benchmark bicycle of Meijaard et al. (2007), `{name: value}` in the benchmark's names.
+#[pyfunction]
+fn benchmark(py: Python<'_>) -> PyResult<Bound<'_, PyDict>> {
+    dict_of(py, WhippleParams::benchmark().values())
+}
+
+/// Reads a parameter file: the anchors TOML format or BicycleParameters' `name = value+/-sigma`
+/// text. Returns `(params, sigma)`, two dicts.
+#[pyfunction]
+fn load_parameters<'py>(
+    py: Python<'py>,
+    path: &str,
+) -> PyResult<(Bound<'py, PyDict>, Bound<'py, PyDict>)> {
+    let text = std::fs::read_to_string(path).map_err(|e| {
+        err(format!("cannot read parameter file `{path}`: {}", e.to_string().to_lowercase()))
+    })?;
+    let u = UncertainParams::from_any(&text)
+        .map_err(|e| err(format!("invalid parameter file `{path}`: {e}")))?;
+    Ok((dict_of(py, u.params.values())?, dict_of(py, &u.sigma)?))
+}
+
+/// Parses a parameter text (either format, see `load_parameters`).
+#[pyfunction]
+fn parse_parameters<'py>(
+    py: Python<'py>,
+    text: &str,
+) -> PyResult<(Bound<'py, PyDict>, Bound<'py, PyDict>)> {
+    let u =
+        UncertainParams::from_any(text).map_err(|e| err(format!("invalid parameter text: {e}")))?;
+    Ok((dict_of(py, u.params.values())?, dict_of(py, &u.sigma)?))
+}
+
+/// `{"M", "C1", "K0", "K2"}`: the 2x2 matrices of the linearised equations.
+#[pyfunction]
+fn matrices<'py>(py: Python<'py>, params: &Bound<'py, PyAny>) -> PyResult<Bound<'py, PyDict>> {
+    let m = Whipple::new(params_of(params)?).matrices();
+    let d = PyDict::new(py);
+    for (name, a) in [("M", m.m), ("C1", m.c1), ("K0", m.k0), ("K2", m.k2)] {
+        let rows: Vec<Vec<f64>> = a.iter().map(|r| r.to_vec()).collect();
+        d.set_item(name, PyArray2::from_vec2(py, &rows).map_err(|e| err(e.to_string()))?)?;
+    }
+    Ok(d)
+}
+
+/// The 4x4 state matrix of (lean, steer, lean rate, steer rate) at `speed`; an array of speeds
+/// gives shape (n, 4, 4).
+#[pyfunction]
+fn state_matrix<'py>(
+    py: Python<'py>,
+    params: &Bound<'py, PyAny>,
+    speed: &Bound<'py, PyAny>,
+) -> PyResult<Bound<'py, PyAny>> {
+    let bike = Whipple::new(params_of(params)?);
+    let scalar = speed.extract::<f64>().is_ok();
+    let speeds = speeds_of(speed)?;
+    let mut flat = Vec::with_capacity(16 * speeds.len());
+    for v in &speeds {
+        let a = bike.state_matrix(*v);
+        for i in 0..4 {
+            for j in 0..4 {
+                flat.push(a[(i, j)]);
+            }
+        }
+    }
+    let arr = PyArray1::from_vec(py, flat);
+    if scalar {
+        Ok(arr.reshape([4, 4])?.into_any())
+    } else {
+        Ok(arr.reshape([speeds.len(), 4, 4])?.into_any())
+    }
+}
+
+/// The eigenvalues at each speed, shape (n, 4) complex, sorted by real then imaginary part (as
+/// `carvallo eig`).
+#[pyfunction]
+fn eigenvalues<'py>(
+    py: Python<'py>,
+    params: &Bound<'py, PyAny>,
+    speeds: &Bound<'py, PyAny>,
+) -> PyResult<Bound<'py, PyArray2<Complex64>>> {
+    let bike = Whipple::new(params_of(params)?);
+    let speeds = speeds_of(speeds)?;
+    let mut flat = Vec::with_capacity(4 * speeds.len());
+    for v in &speeds {
+        let ev = bike.eigenvalues(*v);
+        if ev.len() != 4 {
+            return Err(err(format!("the eigenvalues at speed {v} did not converge")));
+        }
+        flat.extend(ev.iter().map(|e| Complex64::new(e.re, e.im)));
+    }
+    PyArray1::from_vec(py, flat).reshape([speeds.len(), 4])
+}
+
+fn window_dict<'py>(py: Python<'py>, w: &StabilityWindow) -> PyResult<Bound<'py, PyDict>> {
+    let d = PyDict::new(py);
+    d.set_item("weave_speed", w.weave_speed)?;
+    d.set_item("capsize_speed", w.capsize_speed)?;
+    d.set_item("stable", PyList::new(py, w.stable.iter().map(|&(a, b)| (a, b)))?)?;
+    Ok(d)
+}
+
+/// `{"weave_speed", "capsize_speed", "stable": [(from, to), ...]}` (m/s; None where a speed
+/// does not exist, inf for an interval stable at every larger speed), as `carvallo window`.
+#[pyfunction]
+fn window<'py>(py: Python<'py>, params: &Bound<'py, PyAny>) -> PyResult<Bound<'py, PyDict>> {
+    window_dict(py, &Whipple::new(params_of(params)?).stability_window())
+}
+
+fn designs_of(designs: PyReadonlyArray2<'_, f64>) -> PyResult<Vec<[f64; 26]>> {
+    let shape = designs.shape();
+    if shape[1] != 26 {
+        return Err(err(format!(
+            "designs must have shape (n, 26), columns in the order of PARAM_NAMES; got {shape:?}"
+        )));
+    }
+    let a = designs.as_array();
+    Ok(a.rows().into_iter().map(|r| std::array::from_fn(|k| r[k])).collect())
+}
+
+/// The weave and capsize speeds of many designs (rows in the order of `PARAM_NAMES`), shape
+/// (n, 2), NaN where a design has none; each row is validated (`validate=False` skips it, as
+/// for Monte Carlo samples). Parallel; the same numbers as `window` row by row.
+#[pyfunction]
+#[pyo3(signature = (designs, validate = true))]
+fn windows<'py>(
+    py: Python<'py>,
+    designs: PyReadonlyArray2<'py, f64>,
+    validate: bool,
+) -> PyResult<Bound<'py, PyArray2<f64>>> {
+    let rows = designs_of(designs)?;
+    let ws = if validate {
+        unc::windows(&rows).map_err(|(i, e)| err(format!("design {i}: {e}")))?
+    } else {
+        py.detach(|| unc::windows_unchecked(&rows))
+    };
+    let flat: Vec<f64> = ws
+        .iter()
+        .flat_map(|w| [w.weave_speed.unwrap_or(f64::NAN), w.capsize_speed.unwrap_or(f64::NAN)])
+        .collect();
+    PyArray1::from_vec(py, flat).reshape([rows.len(), 2])
+}
+
+/// Varies one parameter linearly over `count` designs and summarises their windows, as
+/// `carvallo sweep --json` (method "hurwitz" or "eigen").
+#[pyfunction]
+#[pyo3(signature = (params, name, start, stop, count, method = "hurwitz"))]
+fn sweep<'py>(
+    py: Python<'py>,
+    params: &Bound<'py, PyAny>,
+    name: &str,
+    start: f64,
+    stop: f64,
+    count: usize,
+    method: &str,
+) -> PyResult<Bound<'py, PyDict>> {
+    let base = params_of(params)?;
+    let m = match method {
+        "hurwitz" => Method::Hurwitz,
+        "eigen" => Method::Eigen,
+        _ => return Err(err(format!("invalid method `{method}`: hurwitz or eigen"))),
+    };
+    for (what, x) in [("start", start), ("stop", stop)] {
+        if !x.is_finite() {
+            return Err(err(format!("invalid {what} {x}: must be finite")));
+        }
+    }
+    let progress = AtomicUsize::new(0);
+    let s = py
+        .detach(|| carvallo::sweep::sweep(&base, name, start, stop, count, m, &progress))
+        .map_err(|e| err(e.to_string()))?;
+    let d = PyDict::new(py);
+    d.set_item("parameter", name)?;
+    d.set_item("from", start)?;
+    d.set_item("to", stop)?;
+    d.set_item("count", s.count)?;
+    d.set_item("method", method)?;
+    d.set_item("elapsed", s.elapsed)?;
+    d.set_item("designs_per_second", s.designs_per_second)?;
+    d.set_item("stable", s.stable)?;
+    d.set_item("with_weave", s.with_weave)?;
+    d.set_item("with_capsize", s.with_capsize)?;
+    d.set_item("weave_speed_range", s.weave_range)?;
+    d.set_item("capsize_speed_range", s.capsize_range)?;
+    d.set_item("failed", s.failed)?;
+    Ok(d)
+}
+
+/// Integrates the nonlinear bicycle from upright straight running at `speed` with the lean
+/// `lean0` (RK4), as `carvallo simulate --json`: a dict of numpy arrays (`t`, `lean`, `steer`,
+/// `pitch`, `speed_rear`, `rear_x`, `rear_y`, `front_x`, `front_y`, `energy`) and the floats
+/// `step`, `energy_drift`, `max_contact_residual`.
+#[pyfunction]
+#[pyo3(signature = (params, speed, lean0, duration, step = 0.001, every = 10))]
+fn simulate<'py>(
+    py: Python<'py>,
+    params: &Bound<'py, PyAny>,
+    speed: f64,
+    lean0: f64,
+    duration: f64,
+    step: f64,
+    every: usize,
+) -> PyResult<Bound<'py, PyDict>> {
+    let bike = WhippleNonlinear::new(params_of(params)?);
+    let start = bike.initial_state(speed, lean0).map_err(|e| err(e.to_string()))?;
+    let tr = py
+        .detach(|| bike.simulate(start, duration, step, every))
+        .map_err(|e| err(e.to_string()))?;
+    let d = PyDict::new(py);
+    type Column = fn(&carvallo::whipple_nonlinear::Sample) -> f64;
+    let columns: [(&str, Column); 10] = [
+        ("t", |s| s.t),
+        ("lean", |s| s.state.lean),
+        ("steer", |s| s.state.steer),
+        ("pitch", |s| s.pitch),
+        ("speed_rear", |s| s.speed),
+        ("rear_x", |s| s.rear_contact[0]),
+        ("rear_y", |s| s.rear_contact[1]),
+        ("front_x", |s| s.front_contact[0]),
+        ("front_y", |s| s.front_contact[1]),
+        ("energy", |s| s.energy),
+    ];
+    for (name, f) in columns {
+        d.set_item(name, PyArray1::from_vec(py, tr.samples.iter().map(f).collect()))?;
+    }
+    d.set_item("step", tr.step)?;
+    d.set_item("energy_drift", tr.energy_drift)?;
+    d.set_item("max_contact_residual", tr.max_contact_residual)?;
+    Ok(d)
+}
+
+/// The memoir concordance: a list of dicts with the keys of `carvallo report --json`.
+#[pyfunction]
+fn report(py: Python<'_>) -> PyResult<Bound<'_, PyAny>> {
+    let entries = py.detach(carvallo_report::all_entries);
+    let text = carvallo_report::render_json(&entries);
+    py.import("json")?.call_method1("loads", (text,))
+}
+
+/// The weave and capsize speeds and their exact derivatives with respect to every parameter:
+/// `{"weave_speed", "capsize_speed", "d_weave": {name: dv/dp}, "d_capsize": {...}}` (None
+/// where a speed does not exist).
+#[pyfunction]
+fn speed_gradients<'py>(
+    py: Python<'py>,
+    params: &Bound<'py, PyAny>,
+) -> PyResult<Bound<'py, PyDict>> {
+    let g = unc::speed_gradients(&params_of(params)?);
+    let d = PyDict::new(py);
+    d.set_item("weave_speed", g.weave.as_ref().map(|w| w.speed))?;
+    d.set_item("capsize_speed", g.capsize.as_ref().map(|c| c.speed))?;
+    d.set_item("d_weave", g.weave.as_ref().map(|w| dict_of(py, &w.grad)).transpose()?)?;
+    d.set_item("d_capsize", g.capsize.as_ref().map(|c| dict_of(py, &c.grad)).transpose()?)?;
+    Ok(d)
+}
+
+/// First-order standard deviations of the weave and capsize speeds for independent parameters
+/// with the standard deviations `sigma` (a dict; missing names have none):
+/// `{"weave_speed", "weave_std", "capsize_speed", "capsize_std"}`.
+#[pyfunction]
+fn first_order<'py>(
+    py: Python<'py>,
+    params: &Bound<'py, PyAny>,
+    sigma: &Bound<'py, PyAny>,
+) -> PyResult<Bound<'py, PyDict>> {
+    let u = uncertain_of(params, sigma)?;
+    let g = unc::speed_gradients(&u.params);
+    let d = PyDict::new(py);
+    d.set_item("weave_speed", g.weave.as_ref().map(|w| w.speed))?;
+    d.set_item("weave_std", g.weave.as_ref().map(|w| w.std(&u.sigma)))?;
+    d.set_item("capsize_speed", g.capsize.as_ref().map(|c| c.speed))?;
+    d.set_item("capsize_std", g.capsize.as_ref().map(|c| c.std(&u.sigma)))?;
+    Ok(d)
+}
+
+/// Monte Carlo: `samples` designs drawn normal about `params` with `sigma` (seeded);
+/// `{"weave": array, "capsize": array, "invalid": int}` (NaN where a sample has no such speed).
+#[pyfunction]
+#[pyo3(signature = (params, sigma, samples = 10000, seed = 1897))]
+fn monte_carlo<'py>(
+    py: Python<'py>,
+    params: &Bound<'py, PyAny>,
+    sigma: &Bound<'py, PyAny>,
+    samples: usize,
+    seed: u64,
+) -> PyResult<Bound<'py, PyDict>> {
+    let u = uncertain_of(params, sigma)?;
+    let mc = py.detach(|| unc::monte_carlo(&u, samples, seed));
+    let d = PyDict::new(py);
+    d.set_item("weave", PyArray1::from_vec(py, mc.weave))?;
+    d.set_item("capsize", PyArray1::from_vec(py, mc.capsize))?;
+    d.set_item("invalid", mc.invalid)?;
+    Ok(d)
+}
+
+fn rows4<'py>(py: Python<'py>, rows: &[[f64; 4]]) -> PyResult<Bound<'py, PyArray2<f64>>> {
+    let flat: Vec<f64> = rows.iter().flatten().copied().collect();
+    PyArray1::from_vec(py, flat).reshape([rows.len(), 4])
+}
+
+/// Quantile bands of the eigenvalues' real parts against speed for `samples` Monte Carlo
+/// designs: `{"speeds", "nominal", "lower", "upper"}`, the last three of shape (n, 4), rank by
+/// rank of the sorted real parts.
+#[pyfunction]
+#[pyo3(signature = (params, sigma, speeds, samples = 2000, seed = 1897, quantiles = (0.025, 0.975)))]
+fn eigenvalue_bands<'py>(
+    py: Python<'py>,
+    params: &Bound<'py, PyAny>,
+    sigma: &Bound<'py, PyAny>,
+    speeds: &Bound<'py, PyAny>,
+    samples: usize,
+    seed: u64,
+    quantiles: (f64, f64),
+) -> PyResult<Bound<'py, PyDict>> {
+    let u = uncertain_of(params, sigma)?;
+    let speeds = speeds_of(speeds)?;
+    let (lo, hi) = quantiles;
+    if !(0.0..=1.0).contains(&lo) || !(0.0..=1.0).contains(&hi) || lo > hi {
+        return Err(err(format!("invalid quantiles ({lo}, {hi}): need 0 <= low <= high <= 1")));
+    }
+    let b = py.detach(|| unc::eigenvalue_bands(&u, &speeds, samples, seed, lo, hi));
+    let d = PyDict::new(py);
+    d.set_item("speeds", PyArray1::from_vec(py, b.speeds))?;
+    d.set_item("nominal", rows4(py, &b.nominal)?)?;
+    d.set_item("lower", rows4(py, &b.lower)?)?;
+    d.set_item("upper", rows4(py, &b.upper)?)?;
+    Ok(d)
+}
+
+/// Fast, verified evaluators of the Carvallo–Whipple bicycle (the `carvallo` Rust crate).
+#[pymodule]
+#[pyo3(name = "carvallo")]
+fn carvallo_module(m: &Bound<'_, PyModule>) -> PyResult<()> {
+    let py = m.py();
+    m.add("ParameterError", py.get_type::<ParameterError>())?;
+    m.add("PARAM_NAMES", PyList::new(py, PARAM_NAMES)?)?;
+    m.add("__version__", env!("CARGO_PKG_VERSION"))?;
+    m.add_function(wrap_pyfunction!(benchmark, m)?)?;
+    m.add_function(wrap_pyfunction!(load_parameters, m)?)?;
+    m.add_function(wrap_pyfunction!(parse_parameters, m)?)?;
+    m.add_function(wrap_pyfunction!(matrices, m)?)?;
+    m.add_function(wrap_pyfunction!(state_matrix, m)?)?;
+    m.add_function(wrap_pyfunction!(eigenvalues, m)?)?;
+    m.add_function(wrap_pyfunction!(window, m)?)?;
+    m.add_function(wrap_pyfunction!(windows, m)?)?;
+    m.add_function(wrap_pyfunction!(sweep, m)?)?;
+    m.add_function(wrap_pyfunction!(simulate, m)?)?;
+    m.add_function(wrap_pyfunction!(report, m)?)?;
+    m.add_function(wrap_pyfunction!(speed_gradients, m)?)?;
+    m.add_function(wrap_pyfunction!(first_order, m)?)?;
+    m.add_function(wrap_pyfunction!(monte_carlo, m)?)?;
+    m.add_function(wrap_pyfunction!(eigenvalue_bands, m)?)?;
+    Ok(())
+}
