@@ -111,7 +111,6 @@ pub fn simplify(e: &Atom) -> Atom {
     }
 }
 
-
 /// Replaces the symbol `name` by `value` everywhere in `e`.
 pub fn subst(e: &Atom, name: &str, value: &Atom) -> Atom {
     e.replace(var(name).to_pattern()).with(value.to_pattern())

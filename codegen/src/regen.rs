@@ -28,10 +28,9 @@ use std::time::{Duration, Instant};
 use anyhow::{anyhow, bail, Context, Result};
 use carvallo_ir::Program;
 
-use crate::emit::{emit_program, generated_header, normalize_text, render_checks, render_markdown};
 pub use crate::derive::{DeriveFn, DERIVATIONS};
+use crate::emit::{emit_program, generated_header, normalize_text, render_checks, render_markdown};
 use crate::Derivation;
-
 
 /// The directory, relative to the workspace root, that holds the generated files.
 pub const GENERATED_DIR: &str = "generated";
@@ -331,17 +330,19 @@ fn kept_model(model: &str, on_disk: &BTreeMap<String, Option<Vec<u8>>>) -> Resul
     let text = |ext: &str| -> Result<String> {
         let name = format!("{model}.{ext}");
         match on_disk.get(&name) {
-            Some(Some(bytes)) => String::from_utf8(bytes.clone())
-                .map_err(|_| anyhow!("generated/{name} is not UTF-8; run `cargo xtask regen {model}`")),
+            Some(Some(bytes)) => String::from_utf8(bytes.clone()).map_err(|_| {
+                anyhow!("generated/{name} is not UTF-8; run `cargo xtask regen {model}`")
+            }),
             _ => bail!("generated/{name} is missing; run `cargo xtask regen {model}`"),
         }
     };
     let (ir, md, tsv) = (text("ir")?, text("md")?, text("checks.tsv")?);
-    let program = Program::parse(&ir)
-        .map_err(|e| anyhow!("generated/{model}.ir does not parse ({e}); run `cargo xtask regen {model}`"))?;
-    program
-        .validate()
-        .map_err(|e| anyhow!("generated/{model}.ir is invalid ({e}); run `cargo xtask regen {model}`"))?;
+    let program = Program::parse(&ir).map_err(|e| {
+        anyhow!("generated/{model}.ir does not parse ({e}); run `cargo xtask regen {model}`")
+    })?;
+    program.validate().map_err(|e| {
+        anyhow!("generated/{model}.ir is invalid ({e}); run `cargo xtask regen {model}`")
+    })?;
     let source = header_source(&ir)
         .ok_or_else(|| anyhow!("generated/{model}.ir has no generated header naming its source"))?;
     for (ext, contents) in [("md", &md), ("checks.tsv", &tsv)] {

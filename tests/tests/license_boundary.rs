@@ -45,7 +45,14 @@ fn reachable(graph: &BTreeMap<String, Vec<String>>, from: &str) -> BTreeSet<Stri
 #[test]
 fn user_facing_crates_do_not_depend_on_symbolica() {
     let graph = lock_graph();
-    for krate in ["carvallo", "carvallo-report", "carvallo-ir", "carvallo-macros", "carvallo-cli", "carvallo-py"] {
+    for krate in [
+        "carvallo",
+        "carvallo-report",
+        "carvallo-ir",
+        "carvallo-macros",
+        "carvallo-cli",
+        "carvallo-py",
+    ] {
         assert!(graph.contains_key(krate), "{krate} is missing from Cargo.lock");
         let deps = reachable(&graph, krate);
         for forbidden in ["symbolica", "numerica"] {

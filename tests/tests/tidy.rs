@@ -156,3 +156,47 @@ fn layers_point_one_way() {
     }
     assert!(wrong.is_empty(), "layering rules broken:\n{}", wrong.join("\n"));
 }
+
+/// The derivation side's layers: the shared algebra (`cas`), the mechanics and the memoir's
+/// transcription shape are leaves; the emission knows no derivation; no derivation knows the
+/// regeneration that runs it.
+#[test]
+fn codegen_layers_point_one_way() {
+    let rules: [(&str, &[&str]); 5] = [
+        (
+            "codegen/src/cas.rs",
+            &["crate::derive", "crate::emit", "crate::regen", "crate::mechanics", "crate::memoir"],
+        ),
+        (
+            "codegen/src/mechanics/",
+            &["crate::derive", "crate::emit", "crate::regen", "crate::memoir"],
+        ),
+        (
+            "codegen/src/memoir.rs",
+            &["crate::derive", "crate::emit", "crate::regen", "crate::mechanics"],
+        ),
+        (
+            "codegen/src/emit/",
+            &["crate::derive", "crate::regen", "crate::mechanics", "crate::memoir"],
+        ),
+        ("codegen/src/derive/", &["crate::regen", "crate::emit"]),
+    ];
+    let mut wrong = Vec::new();
+    for path in rust_files("codegen/src") {
+        let name = rel(&path);
+        let text = read(&path);
+        for (prefix, forbidden) in rules {
+            if !name.starts_with(prefix) {
+                continue;
+            }
+            for (n, line) in code_lines(&text) {
+                for f in forbidden {
+                    if line.contains(f) {
+                        wrong.push(format!("{name}:{n}: {prefix} must not use {f}"));
+                    }
+                }
+            }
+        }
+    }
+    assert!(wrong.is_empty(), "codegen layering rules broken:\n{}", wrong.join("\n"));
+}

@@ -32,4 +32,3 @@ pub(super) fn check_line(c: &Check) -> String {
         one_line(&c.detail)
     )
 }
-

@@ -296,4 +296,3 @@ pub fn rational_to_f64(r: &Rational) -> Option<f64> {
     }
     None
 }
-

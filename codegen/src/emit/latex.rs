@@ -4,7 +4,7 @@
 use symbolica::domains::rational::Rational;
 
 use super::expr::{Expr, Func};
-use super::text::{precedence, split_product, half, PREC_ATOM, PREC_MUL, PREC_POW};
+use super::text::{half, precedence, split_product, PREC_ATOM, PREC_MUL, PREC_POW};
 
 pub(super) const GREEK: &[&str] = &[
     "alpha", "beta", "gamma", "delta", "epsilon", "zeta", "eta", "theta", "iota", "kappa",
@@ -127,4 +127,3 @@ pub(super) fn wrap_latex(e: &Expr, min: u8) -> String {
         latex(e)
     }
 }
-

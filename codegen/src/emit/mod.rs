@@ -68,7 +68,6 @@ pub use text::text;
 
 use lower::{is_ir_name, Lowerer};
 
-
 /// Why a derivation could not be emitted.
 #[derive(Clone, Debug, PartialEq, Eq)]
 pub enum EmitError {
@@ -122,7 +121,6 @@ impl fmt::Display for EmitError {
 }
 
 impl std::error::Error for EmitError {}
-
 
 /// The header line every generated file starts with (without comment markers).
 pub fn generated_header(source: &str) -> String {
@@ -231,4 +229,3 @@ pub fn formula_op_count(
     b.output(&f.name, v);
     Ok(count_ops(&b.finish()))
 }
-

@@ -5,7 +5,6 @@ use symbolica::domains::rational::Rational;
 
 use super::expr::{rat, Expr};
 
-
 pub(super) const PREC_ADD: u8 = 1;
 pub(super) const PREC_MUL: u8 = 2;
 pub(super) const PREC_POW: u8 = 3;
@@ -28,7 +27,10 @@ pub(super) fn half() -> Rational {
 
 /// Splits a product into (sign is negative, |coefficient|, numerator factors, denominator
 /// factors with their exponents made positive).
-pub(super) fn split_product(factors: &[Expr], c: &Rational) -> (bool, Rational, Vec<Expr>, Vec<Expr>) {
+pub(super) fn split_product(
+    factors: &[Expr],
+    c: &Rational,
+) -> (bool, Rational, Vec<Expr>, Vec<Expr>) {
     let mut num = Vec::new();
     let mut den = Vec::new();
     for f in factors {
@@ -118,4 +120,3 @@ pub(super) fn wrap_text(e: &Expr, min: u8) -> String {
         text(e)
     }
 }
-

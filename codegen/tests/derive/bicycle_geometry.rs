@@ -5,7 +5,6 @@
 
 use crate::common;
 
-
 /// Checks that must come out false: findings about the memoir, explained in their detail.
 const EXPECTED_FALSE: [&str; 1] = [
     // n° 51: the printed (2)' has sin sigma0 where the derivation gives cos sigma0.

@@ -5,7 +5,6 @@
 
 use crate::common;
 
-
 /// Checks that must come out false: findings about the memoir, explained in their detail.
 const EXPECTED_FALSE: [&str; 4] = [
     // n° 61: the printed dH has I where J belongs in its deta term.

@@ -4,7 +4,6 @@
 
 use crate::common;
 
-
 /// Checks that must come out false: findings about the memoir.
 const EXPECTED_FALSE: [&str; 5] = [
     // n° 83/85: two third-order terms of the loaded frame's row are wrong.

@@ -3,8 +3,8 @@
 //! circle means used to sum over the hoop's points (n° 4).
 
 use carvallo_codegen::cas::{cos_t, expr, from_trig, is_zero, sin_t, var};
-use carvallo_codegen::mechanics::frame::{Trihedron, Vector};
 use carvallo_codegen::derive::hoop::body::{circle_mean, cos_phi, sin_phi};
+use carvallo_codegen::mechanics::frame::{Trihedron, Vector};
 use symbolica::atom::{Atom, AtomCore};
 
 fn ijk(a: &str, b: &str, c: &str) -> Vector {

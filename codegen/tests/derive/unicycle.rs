@@ -4,7 +4,6 @@
 
 use crate::common;
 
-
 /// Checks that must come out false: findings about the memoir, explained in their detail.
 const EXPECTED_FALSE: [&str; 4] = [
     // n° 24: the memoir's merge of rider and wheel letters is not a substitution.

@@ -9,8 +9,8 @@
 
 use std::path::PathBuf;
 
-use carvallo_codegen::emit::emit_program;
 use carvallo_codegen::derive::whipple;
+use carvallo_codegen::emit::emit_program;
 
 const REL_TOL: f64 = 1e-13;
 const ABS_TOL: f64 = 1e-13;

@@ -9,8 +9,8 @@
 use std::collections::BTreeMap;
 use std::fmt::Write;
 
-use carvallo_report::{format_significant, Derived, Entry, Memoir, Verdict};
 use carvallo_report::render::markdown::{division_of, Division, BEYOND, ERRATA_ORDER};
+use carvallo_report::{format_significant, Derived, Entry, Memoir, Verdict};
 
 /// A figure as it goes into the page: its anchor, title, caption and SVG document.
 pub struct HtmlFigure<'a> {

@@ -29,13 +29,13 @@
 use anyhow::Result;
 use symbolica::atom::{Atom, AtomCore};
 
+use crate::cas::{cos_t, sin_t, var};
+use crate::cas::{det3, solve_linear};
 use crate::derive::bicycle::geometry::{
     self as geo, check, d_angle, formula, h, h1, ijk, ijk_small, is_zero_mod, normal_components,
     om_ab, sc, show, sq, subst, w50, wb, with_ab, zero_theta,
 };
-use crate::cas::{cos_t, sin_t, var};
 use crate::mechanics::frame::{Trihedron, Vector};
-use crate::cas::{det3, solve_linear};
 use crate::{Check, Derivation, Formula};
 
 /// The six virtual displacements of n° 60, as the symbols of the derivation, with their

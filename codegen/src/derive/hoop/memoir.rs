@@ -7,9 +7,8 @@
 //! "tang θ"; `dp`, `dq`, `dr`, `dn`, `ds` stand for p', q', r', n', s'; `A`, `B`, `C` are the
 //! moments of inertia left symbolic where the memoir leaves them so.
 
-pub use crate::memoir::Printed;
 use crate::memoir::printed;
-
+pub use crate::memoir::Printed;
 
 printed! {
     // n° 4, (7): moments of inertia.

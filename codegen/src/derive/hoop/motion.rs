@@ -11,8 +11,8 @@
 use symbolica::atom::Atom;
 
 use super::body;
-use crate::cas::{solve_linear, subst};
 use crate::cas::{cos_t, sin_t, var};
+use crate::cas::{solve_linear, subst};
 use crate::mechanics::frame::{time_derivative, Trihedron, Vector};
 
 /// $\Omega = pI + qj + rk$.

@@ -12,8 +12,8 @@
 use symbolica::atom::{Atom, AtomCore};
 
 use super::body;
-use crate::cas::{det3, subst};
 use crate::cas::{cos_t, is_zero, simplify, sin_t, var};
+use crate::cas::{det3, subst};
 use crate::mechanics::frame::{time_derivative, Trihedron, Vector};
 
 fn d(f: &Atom, x: &str) -> Atom {

@@ -10,8 +10,8 @@
 //! the rider's mass, its "μhR" for "μgh" of n° 74 and its "\tilde s / R" for h/R of n° 32 are
 //! kept as printed where a transcription is marked "as printed", read otherwise.
 
-pub use crate::memoir::Printed;
 use crate::memoir::printed;
+pub use crate::memoir::Printed;
 
 printed! {
     // n° 23, (2): virtual works of the rider's inertia forces.

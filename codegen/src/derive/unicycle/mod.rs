@@ -27,9 +27,9 @@ use anyhow::{ensure, Result};
 use symbolica::atom::{Atom, AtomCore};
 
 use crate::cas::{cos_t, is_zero, simplify, sin_t, var};
-use crate::mechanics::frame::{time_derivative, Trihedron, Vector};
 use crate::cas::{show, solve_linear, subst};
 use crate::derive::hoop::{self, formula, printed_formula};
+use crate::mechanics::frame::{time_derivative, Trihedron, Vector};
 use crate::{Check, Derivation};
 
 /// Parameter names of the unicycle model, in order.

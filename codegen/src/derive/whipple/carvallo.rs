@@ -22,11 +22,11 @@
 use symbolica::atom::{Atom, AtomCore};
 
 use super::linear::{dt, geometry_with, steer_with};
+use crate::cas::{solve_linear, subst};
 use crate::mechanics::series::{
     add, coefficients, cross, dot, eps, inertia, map3, mm, mv, rot_x, rot_y, rot_z, scale,
     transpose, trunc, v3, M3, V3,
 };
-use crate::cas::{solve_linear, subst};
 
 /// The outcome of the second-order route.
 pub struct CarvalloForm {

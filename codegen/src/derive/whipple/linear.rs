@@ -24,12 +24,12 @@
 
 use symbolica::atom::{Atom, AtomCore};
 
+use crate::cas::var;
+use crate::cas::{solve_linear, subst};
 use crate::mechanics::series::{
     add, coefficients, cross, dot, eps, inertia, map3, mm, mv, rot_x, rot_y, rot_z, scale, sub,
     transpose, trunc, v3, M3, V3,
 };
-use crate::cas::var;
-use crate::cas::{solve_linear, subst};
 
 /// Stand-in symbol for $\sin\lambda$.
 pub const SIN_LAMBDA: &str = "sin_lambda";

@@ -31,8 +31,8 @@ pub mod nonlinear;
 use anyhow::{ensure, Result};
 use symbolica::atom::{Atom, AtomCore};
 
-use crate::cas::{cos_t, is_zero, simplify, sin_t, var};
 use crate::cas::subst;
+use crate::cas::{cos_t, is_zero, simplify, sin_t, var};
 use crate::{Check, Derivation, Formula};
 
 /// Parameter names, in order: the benchmark's Table 1 (with `lambda` the steer axis tilt).

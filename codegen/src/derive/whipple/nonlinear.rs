@@ -43,8 +43,8 @@
 use anyhow::{ensure, Result};
 use symbolica::atom::{Atom, AtomCore};
 
-use crate::cas::var;
 use crate::cas::subst;
+use crate::cas::var;
 use crate::{Check, Derivation, Formula};
 
 /// Parameter names, in order (those of the `whipple` model).

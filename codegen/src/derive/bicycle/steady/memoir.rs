@@ -12,8 +12,8 @@
 //! "first member − second member"; tables are transcribed row by row, each row with the sign
 //! printed in front of it ("Terme + Σ m M′|(dM/dθ)′", "Terme + Σ m g dz/dθ").
 
-pub use crate::memoir::Printed;
 use crate::memoir::printed;
+pub use crate::memoir::Printed;
 
 printed! {
     // n° 85, table, first part: the steady "centrifugal" terms Σ m M'|(dM/dθ)'.

@@ -44,12 +44,12 @@ use symbolica::atom::{Atom, AtomCore};
 use symbolica::domains::integer::Z;
 use symbolica::domains::rational::Q;
 
-use crate::cas::{cos_t, expr, reduce_pair, sin_t, var};
-use crate::mechanics::frame::{Trihedron, Vector};
-use crate::memoir::Printed;
 use crate::cas::subst;
+use crate::cas::{cos_t, expr, reduce_pair, sin_t, var};
 use crate::derive::hoop;
 use crate::derive::unicycle::degree;
+use crate::mechanics::frame::{Trihedron, Vector};
+use crate::memoir::Printed;
 use crate::{Check, Derivation, Formula};
 
 /// Parameter names of the model, in order.
