@@ -5,8 +5,9 @@
 //! Without a license key symbolica allows one thread per process, and a second thread that
 //! touches it aborts the process even after the first is done. So every test runs its body on
 //! one shared worker thread ([`on_symbolica_thread`]), the only thread of this binary that ever
-//! uses symbolica, and each model is derived once per run ([`derived`]) however many tests look
-//! at it: the staleness test renders the same derivations the model tests check.
+//! uses symbolica, and each model is derived once per run ([`derived`]), every model in the
+//! order of `cargo xtask regen` before any test runs, however many tests look at it: the
+//! staleness test renders the same derivations the model tests check.
 
 mod bicycle_geometry;
 mod bicycle_kinematics;
@@ -43,6 +44,14 @@ pub fn on_symbolica_thread(body: fn()) {
     let worker = WORKER.get_or_init(|| {
         let (tx, rx) = mpsc::channel::<Job>();
         std::thread::spawn(move || {
+            // Symbolica prints an expression's terms in the order its symbols were created in
+            // the process, and some check details (written to `generated/*.checks.tsv`) are such
+            // prints: derive every model first, in the order `cargo xtask regen` does, so that
+            // every test sees the state the regeneration had (a derivation that fails is
+            // reported by the tests that use it).
+            for (model, _) in DERIVATIONS {
+                let _ = catch_unwind(|| derived(model));
+            }
             for job in rx {
                 job();
             }
@@ -59,12 +68,21 @@ pub fn on_symbolica_thread(body: fn()) {
         .send(job)
         .expect("the symbolica worker thread is running");
     if let Err(payload) = done_rx.recv().expect("the symbolica worker thread answers") {
-        resume_unwind(payload);
+        // The worker's own panic message went to whichever test's output the worker inherited:
+        // say it again here, in the failing test.
+        let message = payload
+            .downcast_ref::<String>()
+            .map(String::as_str)
+            .or_else(|| payload.downcast_ref::<&str>().copied());
+        match message {
+            Some(m) => panic!("{m}"),
+            None => resume_unwind(payload),
+        }
     }
 }
 
-/// The derivation of `model` (a name of `regen::DERIVATIONS`), derived at its first use in this
-/// run and kept for the others. Call it on the symbolica thread only (the cache is that
+/// The derivation of `model` (a name of `derive::DERIVATIONS`), derived once in this run (all of
+/// them when the worker starts, in the table's order) and kept. Call it on the symbolica thread only (the cache is that
 /// thread's): a panic names a failed derivation or an unknown model.
 pub fn derived(model: &str) -> &'static Derivation {
     thread_local! {
