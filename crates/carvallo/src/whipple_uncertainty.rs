@@ -36,7 +36,7 @@ use crate::parameter_text::UncertainParams;
 use crate::whipple::{matrices_scene, Mat2, Matrices, StabilityWindow, WhippleParams, PARAM_NAMES};
 
 /// The generated program of the linearised bicycle (matrices and characteristic polynomial).
-pub const WHIPPLE_IR: &str = include_str!("../../../generated/whipple.ir");
+pub const WHIPPLE_IR: &str = crate::artifacts::WHIPPLE.ir;
 
 /// The number of parameters.
 const N: usize = 26;

@@ -15,7 +15,7 @@ use carvallo::whipple::{matrices_scene, WhippleParams};
 use carvallo::whipple_nonlinear::{Configuration, WhippleNonlinear};
 use nalgebra::{Matrix3, Vector3};
 
-const WHIPPLE_IR: &str = include_str!("../../../../generated/whipple.ir");
+const WHIPPLE_IR: &str = carvallo::artifacts::WHIPPLE.ir;
 const WHIPPLE_NONLINEAR_IR: &str = include_str!("../../../../generated/whipple_nonlinear.ir");
 const UNICYCLE_IR: &str = include_str!("../../../../generated/unicycle.ir");
 
