@@ -86,7 +86,7 @@ pub fn entries() -> Vec<Entry> {
                     format!("{name}[{},{}] (modern anchor)", r + 1, c + 1),
                     published[r][c],
                     derived[r][c],
-                    "Meijaard et al. 2007 benchmark; derived symbolically (codegen/src/whipple.rs), evaluated from generated/whipple.ir",
+                    "Meijaard et al. 2007 benchmark; derived symbolically (codegen/src/derive/whipple/mod.rs), evaluated from generated/whipple.ir",
                 ));
             }
         }

@@ -7,7 +7,7 @@
 //! $K|\frac{dOM}{d\mu} = 0$ (M the lowest point of the front wheel). Their residuals and their
 //! Jacobian with respect to (σ, μ) come from evaluators that [`scene!`](crate::scene) generates
 //! from `generated/bicycle_geometry.ir` (`cargo xtask regen`, derivation
-//! `codegen/src/bicycle_geometry.rs`); [`Geometry::solve`] runs a damped Newton iteration on
+//! `codegen/src/derive/bicycle/geometry.rs`); [`Geometry::solve`] runs a damped Newton iteration on
 //! them. The first-order method of n° 51 is [`Geometry::first_order`].
 //!
 //! The specific constants (n° 44) are the wheels' radius $R$, the distance $l$ of the wheel

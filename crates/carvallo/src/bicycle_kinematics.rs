@@ -4,7 +4,7 @@
 //! wheel's rolling σ; the turning ν of the frame, its pitch η (the σ of ch. I, n° 58 bis) and
 //! the front wheel's rolling σ1 follow from the front contact point M having no velocity
 //! (n° 60). Two independent paths are generated from `generated/bicycle_kinematics.ir`
-//! (`cargo xtask regen`, derivation `codegen/src/bicycle_kinematics.rs`):
+//! (`cargo xtask regen`, derivation `codegen/src/derive/bicycle/kinematics.rs`):
 //!
 //! * the 18 coefficients of the analytic displacement $\delta M$ of n° 61 on I, J, K, which
 //!   [`Kinematics::solve_displacements`] solves numerically for δη, δν, δσ1;

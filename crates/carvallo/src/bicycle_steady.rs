@@ -1,7 +1,7 @@
 //! The bicycle's steady states with and without hands and the stability with hands (memoir
 //! Part II, ch. IV, n° 79–106), evaluated from the generated code of
 //! `generated/bicycle_steady.ir` (`cargo xtask regen`, derivation
-//! `codegen/src/bicycle_steady.rs`).
+//! `codegen/src/derive/bicycle/steady/mod.rs`).
 //!
 //! The model is the memoir's: a loaded frame (frame with a rigid rider) of mass $\mu$, centre
 //! of gravity at $e$ ahead of and $h$ above the rear contact point O in the frame's plane,

@@ -1,5 +1,5 @@
 //! The discussion of the hoop's steady states (memoir n° 13–19), evaluated from
-//! `generated/hoop_discussion.ir` (derived by `codegen/src/hoop/discussion.rs` from the
+//! `generated/hoop_discussion.ir` (derived by `codegen/src/derive/hoop/discussion.rs` from the
 //! normalised (E), (S), (D) of n° 12).
 //!
 //! Units: as in n° 12, the rates $s$ and $n$ are in the unit $\sqrt{g/R}$ (that is $g/R = 1$),

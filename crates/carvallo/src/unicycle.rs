@@ -3,7 +3,7 @@
 //! with its centre of gravity on the wheel's steepest diameter (n° 20–21).
 //!
 //! Every number comes from evaluators that [`scene!`](crate::scene) generates at compile time
-//! from `generated/unicycle.ir` (`cargo xtask regen`, derivation `codegen/src/unicycle.rs`).
+//! from `generated/unicycle.ir` (`cargo xtask regen`, derivation `codegen/src/derive/unicycle/mod.rs`).
 //! The rider's constants are those of n° 21: mass $\mu$, height $z$ of its centre of gravity
 //! on Ok (called $h$ from n° 39), moments $A, B, C$ about $I, j, k$ at the contact point and
 //! the product $L = \sum m\zeta\xi$; the wheel has mass $\mu_1$ and moments $A_1, B_1, C_1$

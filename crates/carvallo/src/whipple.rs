@@ -5,7 +5,7 @@
 //! The matrices and the polynomial coefficients are evaluated by [`scene!`](crate::scene)
 //! evaluators over `generated/whipple.ir`, derived symbolically from the 25 parameters of the
 //! 2007 benchmark (Meijaard, Papadopoulos, Ruina, Schwab, Proc. R. Soc. A 463, Table 1) by
-//! `codegen/src/whipple.rs`. Parameters are read from a TOML file in the format of that
+//! `codegen/src/derive/whipple/mod.rs`. Parameters are read from a TOML file in the format of that
 //! benchmark's anchors file: a `[parameters]` table with the keys of [`PARAM_NAMES`], numbers or
 //! the strings `"pi"`, `"pi/N"`, `"K*pi/N"`.
 //!

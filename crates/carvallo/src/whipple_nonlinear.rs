@@ -1,6 +1,6 @@
 //! The nonlinear Carvallo–Whipple bicycle: accelerations, total energy, ground tracks and a
 //! simulation, from the evaluators generated over `generated/whipple_nonlinear.ir`
-//! (derived by Kane's method in `codegen/src/whipple_nonlinear.rs`, the 25 benchmark
+//! (derived by Kane's method in `codegen/src/derive/whipple/nonlinear.rs`, the 25 benchmark
 //! parameters symbolic).
 //!
 //! Coordinates (benchmark axes, x forward, y right, z down): the rear contact $(x, y)$, yaw ψ,
