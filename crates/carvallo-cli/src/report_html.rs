@@ -9,7 +9,9 @@
 use std::collections::BTreeMap;
 use std::fmt::Write;
 
-use carvallo_report::render::markdown::{division_of, Division, BEYOND, ERRATA_ORDER};
+use carvallo_report::render::markdown::{
+    difference_text, division_of, Division, BEYOND, ERRATA_ORDER,
+};
 use carvallo_report::{format_significant, Derived, Entry, Memoir, Verdict};
 
 /// A figure as it goes into the page: its anchor, title, caption and SVG document.
@@ -181,20 +183,6 @@ fn derived_html(d: &Derived) -> String {
             })
             .collect::<Vec<_>>()
             .join(", "),
-    }
-}
-
-fn difference_html(e: &Entry) -> String {
-    let rel = e.rel_diff.map(|r| format!("{r:.1e}"));
-    let abs = match (&e.memoir, &e.derived) {
-        (Memoir::Number(m), Derived::Number(d)) => Some(format_significant(d - m, 3)),
-        _ => None,
-    };
-    match (rel, abs) {
-        (Some(r), Some(a)) => format!("{r} (Δ = {a})"),
-        (Some(r), None) => r,
-        (None, Some(a)) => format!("Δ = {a}"),
-        (None, None) => "–".to_string(),
     }
 }
 
@@ -378,7 +366,7 @@ pub fn render_html(entries: &[Entry], figures: &[HtmlFigure<'_>], extra: &str) -
                 escape(&e.quantity),
                 memoir_html(&e.memoir),
                 derived_html(&e.derived),
-                escape(&difference_html(e)),
+                escape(&difference_text(e)),
                 escape_with_code(&e.note)
             );
         }
@@ -413,7 +401,7 @@ pub fn render_html(entries: &[Entry], figures: &[HtmlFigure<'_>], extra: &str) -
                 escape(&e.quantity),
                 memoir_html(&e.memoir),
                 derived_html(&e.derived),
-                escape(&difference_html(e)),
+                escape(&difference_text(e)),
                 escape_with_code(&e.note)
             );
         }

@@ -36,7 +36,7 @@ fn derived_text(d: &Derived) -> String {
 
 /// The difference column: the relative difference and, for two numbers, the signed absolute
 /// difference derived − memoir.
-fn difference_text(e: &Entry) -> String {
+pub fn difference_text(e: &Entry) -> String {
     let rel = e.rel_diff.map(|r| format!("{r:.1e}"));
     let abs = match (&e.memoir, &e.derived) {
         (Memoir::Number(m), Derived::Number(d)) => Some(format_significant(d - m, 3)),
