@@ -9,9 +9,7 @@
 use std::collections::BTreeMap;
 use std::fmt::Write;
 
-use carvallo_report::render::markdown::{
-    difference_text, division_of, Division, BEYOND, ERRATA_ORDER,
-};
+use carvallo_report::render::markdown::{by_division, difference_text, BEYOND, ERRATA_ORDER};
 use carvallo_report::{format_significant, Derived, Entry, Memoir, Verdict};
 
 /// A figure as it goes into the page: its anchor, title, caption and SVG document.
@@ -321,15 +319,7 @@ pub fn render_html(entries: &[Entry], figures: &[HtmlFigure<'_>], extra: &str) -
          verdict (linked to its erratum when it is not <i>agrees</i>) and the note saying how the \
          value was obtained.</p>"
     );
-    let mut groups: Vec<(Option<&'static Division>, Vec<&Entry>)> = Vec::new();
-    for e in entries {
-        let d = division_of(&e.section);
-        match groups.iter_mut().find(|(g, _)| *g == d) {
-            Some((_, list)) => list.push(e),
-            None => groups.push((d, vec![e])),
-        }
-    }
-    groups.sort_by_key(|(d, _)| d.map_or(u32::MAX, |d| d.first));
+    let groups = by_division(entries);
     let (mut part, mut chapter) = ("", "");
     for (division, list) in &groups {
         match division {
@@ -411,6 +401,37 @@ pub fn render_html(entries: &[Entry], figures: &[HtmlFigure<'_>], extra: &str) -
     out
 }
 
+/// The one verdict policy (`carvallo_report::policy::PREAMBLE`, as `report.md` states it) as
+/// HTML: its first line a paragraph, its `- ` lines a list, `**bold**` and `` `code` `` kept.
+fn policy_html() -> String {
+    let mut html = String::from("<section id=\"policy\">\n");
+    let mut in_list = false;
+    for line in carvallo_report::policy::PREAMBLE.lines().filter(|l| !l.trim().is_empty()) {
+        let bold = |t: &str| {
+            let parts: Vec<&str> = t.split("**").collect();
+            parts
+                .iter()
+                .enumerate()
+                .map(|(k, p)| if k % 2 == 1 { format!("<b>{p}</b>") } else { p.to_string() })
+                .collect::<String>()
+        };
+        if let Some(item) = line.strip_prefix("- ") {
+            if !in_list {
+                html.push_str("<ul>\n");
+                in_list = true;
+            }
+            html.push_str(&format!("<li>{}</li>\n", bold(&escape_with_code(item))));
+        } else {
+            html.push_str(&format!("<p>{}</p>\n", bold(&escape_with_code(line))));
+        }
+    }
+    if in_list {
+        html.push_str("</ul>\n");
+    }
+    html.push_str("</section>\n");
+    html
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;
@@ -461,35 +482,4 @@ mod tests {
         );
         assert!(html.contains("<span class=\"anchor\" id=\"only-ocr\"></span>"));
     }
-}
-
-/// The one verdict policy (`carvallo_report::policy::PREAMBLE`, as `report.md` states it) as
-/// HTML: its first line a paragraph, its `- ` lines a list, `**bold**` and `` `code` `` kept.
-fn policy_html() -> String {
-    let mut html = String::from("<section id=\"policy\">\n");
-    let mut in_list = false;
-    for line in carvallo_report::policy::PREAMBLE.lines().filter(|l| !l.trim().is_empty()) {
-        let bold = |t: &str| {
-            let parts: Vec<&str> = t.split("**").collect();
-            parts
-                .iter()
-                .enumerate()
-                .map(|(k, p)| if k % 2 == 1 { format!("<b>{p}</b>") } else { p.to_string() })
-                .collect::<String>()
-        };
-        if let Some(item) = line.strip_prefix("- ") {
-            if !in_list {
-                html.push_str("<ul>\n");
-                in_list = true;
-            }
-            html.push_str(&format!("<li>{}</li>\n", bold(&escape_with_code(item))));
-        } else {
-            html.push_str(&format!("<p>{}</p>\n", bold(&escape_with_code(line))));
-        }
-    }
-    if in_list {
-        html.push_str("</ul>\n");
-    }
-    html.push_str("</section>\n");
-    html
 }

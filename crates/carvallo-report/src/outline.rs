@@ -148,6 +148,23 @@ pub fn division_of(section: &str) -> Option<&'static Division> {
     OUTLINE.iter().find(|d| d.first <= n && n <= d.last)
 }
 
+/// The entries grouped by their division of the outline, the groups in the memoir's order and
+/// the entries without a n° (or outside the outline) last; within a group, the entries' order.
+pub fn by_division(
+    entries: &[crate::entry::Entry],
+) -> Vec<(Option<&'static Division>, Vec<&crate::entry::Entry>)> {
+    let mut groups: Vec<(Option<&'static Division>, Vec<&crate::entry::Entry>)> = Vec::new();
+    for e in entries {
+        let d = division_of(&e.section);
+        match groups.iter_mut().find(|(g, _)| *g == d) {
+            Some((_, list)) => list.push(e),
+            None => groups.push((d, vec![e])),
+        }
+    }
+    groups.sort_by_key(|(d, _)| d.map_or(u32::MAX, |d| d.first));
+    groups
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;

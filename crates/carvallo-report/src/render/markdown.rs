@@ -8,7 +8,7 @@ use std::collections::BTreeMap;
 use std::fmt::Write;
 
 use crate::entry::{Derived, Entry, Memoir, Verdict};
-pub use crate::outline::{division_of, Division, BEYOND, OUTLINE};
+pub use crate::outline::{by_division, division_of, Division, BEYOND, OUTLINE};
 use crate::render::text::format_significant;
 
 /// A table cell: pipes escaped, line breaks turned into spaces.
@@ -106,15 +106,7 @@ pub fn render_markdown(entries: &[Entry], figures_section: &str) -> String {
          verdict and the note saying how the value was obtained.\n"
     );
     // Group in the order of the outline; entries without a n° last.
-    let mut groups: Vec<(Option<&'static Division>, Vec<&Entry>)> = Vec::new();
-    for e in entries {
-        let d = division_of(&e.section);
-        match groups.iter_mut().find(|(g, _)| *g == d) {
-            Some((_, list)) => list.push(e),
-            None => groups.push((d, vec![e])),
-        }
-    }
-    groups.sort_by_key(|(d, _)| d.map_or(u32::MAX, |d| d.first));
+    let groups = by_division(entries);
     let (mut part, mut chapter) = ("", "");
     for (division, list) in &groups {
         match division {
