@@ -55,7 +55,7 @@ mod text;
 use std::collections::BTreeMap;
 use std::fmt;
 
-use carvallo_ir::{Builder, Op, Program, Value};
+use carvallo_ir::{Builder, Program, Value};
 use symbolica::atom::Atom;
 
 use crate::{Derivation, Formula};
@@ -197,17 +197,10 @@ pub fn emit_program(d: &Derivation) -> Result<Program, EmitError> {
 }
 
 /// Op counts of a program: the number of non-constant instructions and their split by
-/// mnemonic (the same definition as `Program::op_count`).
+/// mnemonic ([`Program::op_count`] as a pair).
 pub fn count_ops(p: &Program) -> (usize, BTreeMap<&'static str, usize>) {
-    let mut by_op = BTreeMap::new();
-    let mut total = 0;
-    for inst in &p.insts {
-        if !matches!(inst.op, Op::Const(_)) {
-            total += 1;
-            *by_op.entry(inst.op.mnemonic()).or_insert(0) += 1;
-        }
-    }
-    (total, by_op)
+    let c = p.op_count();
+    (c.total, c.by_op)
 }
 
 /// The op count of one formula on its own, after common-subexpression elimination.
