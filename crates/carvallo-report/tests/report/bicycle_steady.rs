@@ -8,7 +8,7 @@ use std::collections::BTreeMap;
 use carvallo::bicycle_steady::{BicycleParams, BicycleSteady, SteadyState};
 use carvallo::ParameterError;
 use carvallo_report::bicycle::steady::entries;
-use carvallo_report::{render_text_normalised, Memoir, Verdict, AGREEMENT_TOLERANCE};
+use carvallo_report::{render_text_normalised, Verdict};
 
 use crate::common;
 
@@ -40,17 +40,7 @@ fn findings() -> BTreeMap<(&'static str, &'static str), Verdict> {
 #[test]
 fn verdicts_are_the_expected_ones() {
     let entries = entries();
-    for e in &entries {
-        if let (Some(rel), Memoir::Formula(_)) = (e.rel_diff, &e.memoir) {
-            assert_eq!(
-                e.verdict == Verdict::Agrees,
-                rel <= AGREEMENT_TOLERANCE,
-                "n° {} {}",
-                e.section,
-                e.quantity
-            );
-        }
-    }
+    common::assert_formulas_agree_within_tolerance(&entries);
     common::assert_verdicts(
         &entries,
         &findings(),

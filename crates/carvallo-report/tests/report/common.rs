@@ -4,7 +4,7 @@
 
 use std::collections::BTreeMap;
 
-use carvallo_report::{Entry, Verdict};
+use carvallo_report::{Entry, Memoir, Verdict, AGREEMENT_TOLERANCE};
 
 /// Asserts the verdicts of `entries`: an entry listed in `findings` by (section, quantity) has
 /// the listed verdict, any other entry is `agrees` or `rounding`; every finding and every
@@ -37,5 +37,21 @@ pub fn assert_verdicts(
     }
     for section in sections {
         assert!(entries.iter().any(|e| e.section == *section), "no entry for n° {section}");
+    }
+}
+
+/// Every formula entry with a relative difference agrees exactly when that difference is within
+/// [`AGREEMENT_TOLERANCE`] (the policy's formula rule).
+pub fn assert_formulas_agree_within_tolerance(entries: &[Entry]) {
+    for e in entries {
+        if let (Some(rel), Memoir::Formula(_)) = (e.rel_diff, &e.memoir) {
+            assert_eq!(
+                e.verdict == Verdict::Agrees,
+                rel <= AGREEMENT_TOLERANCE,
+                "n° {} {}",
+                e.section,
+                e.quantity
+            );
+        }
     }
 }
