@@ -1070,18 +1070,7 @@ fn scene_rows(cfg: &Config, rows: &mut Vec<Row>) {
     if let Ok(c) = config {
         let nl_args = |names: &[&str]| -> Vec<f64> {
             let b = WhippleParams::benchmark();
-            names
-                .iter()
-                .map(|n| match *n {
-                    "phi" => c.lean,
-                    "theta" => c.pitch,
-                    "delta" => c.steer,
-                    "phid" => c.lean_rate,
-                    "deltad" => c.steer_rate,
-                    "thetaRd" => c.rear_wheel_rate,
-                    n => b.get(n).unwrap_or(f64::NAN),
-                })
-                .collect()
+            names.iter().map(|n| c.input(n).or_else(|| b.get(n)).unwrap_or(f64::NAN)).collect()
         };
         let solve = |o: [f64; 9]| {
             let m = Matrix3::new(o[0], o[1], o[2], o[1], o[3], o[4], o[2], o[4], o[5]);

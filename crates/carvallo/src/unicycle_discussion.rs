@@ -156,53 +156,6 @@ pub fn figure_9() -> Vec<Series> {
     ]
 }
 
-#[cfg(test)]
-mod tests {
-    use super::*;
-
-    #[test]
-    fn figure_7_matches_the_memoir_landmarks() {
-        // n° 32: the asymptote of (N) at 23°,6 and the speed limit 2,58 (printed to 3 digits).
-        assert!((asymptote_deg() - 23.578).abs() < 1e-3, "{}", asymptote_deg());
-        assert!((speed_limit() - 2.51).abs() < 0.01, "{}", speed_limit());
-        // (N) touches (ℰ) at I (θ = 11°,5, s0 = 0,639): there s on (N) equals s0.
-        let t = (1.0 / H_OVER_R / 2.0).asin().to_degrees();
-        let (_, s0) = minimum_on_e(t);
-        let sn = curve_n_s(t).unwrap();
-        assert!((sn - s0).abs() < 1e-6 * s0, "{sn} vs {s0}");
-        assert!((s0 - 0.639).abs() < 5e-4, "{s0}");
-        // Each limit point of (S) makes the generated stability condition vanish.
-        let [(na, sa), (nb, sb)] = stability_limit(10.0).unwrap();
-        for (n, s) in [(na, sa), (nb, sb)] {
-            let v = out(&n32(10.0, s, n), "stability_n40");
-            assert!(v.abs() < 1e-9 * (1.0 + s * s), "S = {v} at n = {n}, s = {s}");
-        }
-        assert!(stability_limit(30.0).is_none());
-        let series = figure_7();
-        assert_eq!(series.len(), 11);
-        assert!(series.iter().all(|s| s.points.len() >= 10), "a series is almost empty");
-    }
-
-    #[test]
-    fn figure_9_zeros_are_those_of_the_printed_closed_form() {
-        // Independent path: the memoir's printed closed form, bisected directly. (Its zeros
-        // are 16.32° and 62.82°; the memoir's 16°,0 and 62°,7 are slide-rule values.)
-        let k = H_OVER_R;
-        let printed = |t: f64| {
-            let t = t.to_radians();
-            1.0 / t.cos() - k * t.sin().powi(2) * t.cos() - k.sqrt() * (2.0 * t).sin()
-        };
-        let (r1, r2) = first_member_roots();
-        for (r, lo, hi) in [(r1, 5.0, 30.0), (r2, 50.0, 70.0)] {
-            let exact = bisect(printed, lo, hi);
-            assert!((r - exact).abs() < 1e-9, "{r} vs {exact}");
-        }
-        assert!((r1 - 16.3157).abs() < 1e-4 && (r2 - 62.8156).abs() < 1e-4, "{r1} {r2}");
-        let derived = &figure_9()[0].points;
-        assert!(derived.iter().all(|(_, y)| y.is_finite()));
-    }
-}
-
 // The normalised forms of n° 32–41, evaluated from the generated program: shared by the
 // diagrams above and by the concordance report (`carvallo_report::unicycle`).
 
@@ -268,4 +221,51 @@ pub fn trinomial(theta_deg: f64) -> (f64, f64, f64) {
 pub fn first_member_41(theta_deg: f64) -> f64 {
     let (a, b, c) = trinomial(theta_deg);
     -b - 2.0 * (a * c).sqrt()
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn figure_7_matches_the_memoir_landmarks() {
+        // n° 32: the asymptote of (N) at 23°,6 and the speed limit 2,58 (printed to 3 digits).
+        assert!((asymptote_deg() - 23.578).abs() < 1e-3, "{}", asymptote_deg());
+        assert!((speed_limit() - 2.51).abs() < 0.01, "{}", speed_limit());
+        // (N) touches (ℰ) at I (θ = 11°,5, s0 = 0,639): there s on (N) equals s0.
+        let t = (1.0 / H_OVER_R / 2.0).asin().to_degrees();
+        let (_, s0) = minimum_on_e(t);
+        let sn = curve_n_s(t).unwrap();
+        assert!((sn - s0).abs() < 1e-6 * s0, "{sn} vs {s0}");
+        assert!((s0 - 0.639).abs() < 5e-4, "{s0}");
+        // Each limit point of (S) makes the generated stability condition vanish.
+        let [(na, sa), (nb, sb)] = stability_limit(10.0).unwrap();
+        for (n, s) in [(na, sa), (nb, sb)] {
+            let v = out(&n32(10.0, s, n), "stability_n40");
+            assert!(v.abs() < 1e-9 * (1.0 + s * s), "S = {v} at n = {n}, s = {s}");
+        }
+        assert!(stability_limit(30.0).is_none());
+        let series = figure_7();
+        assert_eq!(series.len(), 11);
+        assert!(series.iter().all(|s| s.points.len() >= 10), "a series is almost empty");
+    }
+
+    #[test]
+    fn figure_9_zeros_are_those_of_the_printed_closed_form() {
+        // Independent path: the memoir's printed closed form, bisected directly. (Its zeros
+        // are 16.32° and 62.82°; the memoir's 16°,0 and 62°,7 are slide-rule values.)
+        let k = H_OVER_R;
+        let printed = |t: f64| {
+            let t = t.to_radians();
+            1.0 / t.cos() - k * t.sin().powi(2) * t.cos() - k.sqrt() * (2.0 * t).sin()
+        };
+        let (r1, r2) = first_member_roots();
+        for (r, lo, hi) in [(r1, 5.0, 30.0), (r2, 50.0, 70.0)] {
+            let exact = bisect(printed, lo, hi);
+            assert!((r - exact).abs() < 1e-9, "{r} vs {exact}");
+        }
+        assert!((r1 - 16.3157).abs() < 1e-4 && (r2 - 62.8156).abs() < 1e-4, "{r1} {r2}");
+        let derived = &figure_9()[0].points;
+        assert!(derived.iter().all(|(_, y)| y.is_finite()));
+    }
 }

@@ -132,6 +132,22 @@ pub struct Configuration {
     pub rear_wheel_rate: f64,
 }
 
+impl Configuration {
+    /// The value of the input `name` of `generated/whipple_nonlinear.ir` (`phi`, `theta`,
+    /// `delta`, `phid`, `deltad`, `thetaRd`); `None` for any other name.
+    pub fn input(&self, name: &str) -> Option<f64> {
+        match name {
+            "phi" => Some(self.lean),
+            "theta" => Some(self.pitch),
+            "delta" => Some(self.steer),
+            "phid" => Some(self.lean_rate),
+            "deltad" => Some(self.steer_rate),
+            "thetaRd" => Some(self.rear_wheel_rate),
+            _ => None,
+        }
+    }
+}
+
 /// The equations of motion evaluated at one configuration.
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct Accelerations {
@@ -281,15 +297,7 @@ impl WhippleNonlinear {
             if i < params.len() {
                 self.param(params[i])
             } else {
-                match inputs[i - params.len()] {
-                    "phi" => c.lean,
-                    "theta" => c.pitch,
-                    "delta" => c.steer,
-                    "phid" => c.lean_rate,
-                    "deltad" => c.steer_rate,
-                    "thetaRd" => c.rear_wheel_rate,
-                    _ => f64::NAN,
-                }
+                c.input(inputs[i - params.len()]).unwrap_or(f64::NAN)
             }
         })
     }

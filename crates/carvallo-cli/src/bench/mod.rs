@@ -58,18 +58,7 @@ fn nonlinear_args(names: &[&str]) -> Vec<f64> {
         steer_rate: -0.1,
         rear_wheel_rate: -5.0 / 0.3,
     };
-    names
-        .iter()
-        .map(|n| match *n {
-            "phi" => c.lean,
-            "theta" => c.pitch,
-            "delta" => c.steer,
-            "phid" => c.lean_rate,
-            "deltad" => c.steer_rate,
-            "thetaRd" => c.rear_wheel_rate,
-            n => b.get(n).unwrap_or(f64::NAN),
-        })
-        .collect()
+    names.iter().map(|n| c.input(n).or_else(|| b.get(n)).unwrap_or(f64::NAN)).collect()
 }
 
 /// Arguments of the other scenes: the benchmark's parameters, made-up values for the rest.
