@@ -9,8 +9,10 @@
 use std::collections::BTreeMap;
 use std::fmt::Write;
 
-use carvallo_report::render::markdown::{by_division, difference_text, BEYOND, ERRATA_ORDER};
-use carvallo_report::{format_significant, Derived, Entry, Memoir, Verdict};
+use carvallo_report::render::markdown::{
+    by_division, difference_text, division_of, BEYOND, ERRATA_ORDER,
+};
+use carvallo_report::{format_significant, Assertion, Claim, Derived, Entry, Memoir, Verdict};
 
 /// A figure as it goes into the page: its anchor, title, caption and SVG document.
 pub struct HtmlFigure<'a> {
@@ -252,7 +254,13 @@ body:has(#only-derivation-differs:target) a[href="#only-derivation-differs"] { f
 /// before the figures, for example the uncertainty of a parameter file; may be empty), the
 /// figures, the concordance grouped by the memoir's part, chapter and § (as `report.md`) and
 /// the errata, each erratum linked from its row and back.
-pub fn render_html(entries: &[Entry], figures: &[HtmlFigure<'_>], extra: &str) -> String {
+pub fn render_html(
+    entries: &[Entry],
+    claims: &[Claim],
+    assertions: &[Assertion],
+    figures: &[HtmlFigure<'_>],
+    extra: &str,
+) -> String {
     let mut out = String::new();
     let _ = write!(
         out,
@@ -281,6 +289,11 @@ pub fn render_html(entries: &[Entry], figures: &[HtmlFigure<'_>], extra: &str) -
         .collect();
     let _ =
         writeln!(out, "<p id=\"summary\">{} entries: {}.</p>", entries.len(), summary.join(", "));
+    let _ = writeln!(
+        out,
+        "<p id=\"claims-summary\">{}</p>",
+        escape(&carvallo_report::render::markdown::claims_summary(claims, assertions))
+    );
     // The filter: the anchors are targets of the links; CSS hides the other rows.
     out.push_str("<nav class=\"filter\" aria-label=\"filter by verdict\">Show entries: <a href=\"#concordance\">all</a>");
     for v in VERDICTS {
@@ -321,15 +334,16 @@ pub fn render_html(entries: &[Entry], figures: &[HtmlFigure<'_>], extra: &str) -
     );
     let groups = by_division(entries);
     let (mut part, mut chapter) = ("", "");
+    let mut done: Vec<&str> = Vec::new();
     for (division, list) in &groups {
         match division {
             Some(d) => {
                 if d.part != part {
                     part = d.part;
-                    chapter = "";
                     let _ = writeln!(out, "<h3>{}</h3>", escape(part));
                 }
                 if d.chapter != chapter {
+                    claims_html(&mut out, &mut done, chapter, claims);
                     chapter = d.chapter;
                     let _ = writeln!(out, "<h4>{}</h4>", escape(chapter));
                 }
@@ -337,6 +351,8 @@ pub fn render_html(entries: &[Entry], figures: &[HtmlFigure<'_>], extra: &str) -
                     writeln!(out, "<h5>{} (n° {}–{})</h5>", escape(d.paragraph), d.first, d.last);
             }
             None => {
+                claims_html(&mut out, &mut done, chapter, claims);
+                chapter = "";
                 let _ = writeln!(out, "<h3>{}</h3>", escape(BEYOND));
             }
         }
@@ -362,6 +378,7 @@ pub fn render_html(entries: &[Entry], figures: &[HtmlFigure<'_>], extra: &str) -
         }
         out.push_str("</tbody>\n</table>\n");
     }
+    claims_html(&mut out, &mut done, chapter, claims);
     let _ = writeln!(out, "<h2 id=\"errata\">Errata</h2>");
     let _ = writeln!(
         out,
@@ -370,14 +387,15 @@ pub fn render_html(entries: &[Entry], figures: &[HtmlFigure<'_>], extra: &str) -
     );
     for v in ERRATA_ORDER {
         let list: Vec<&Entry> = entries.iter().filter(|e| e.verdict == v).collect();
+        let wrong: Vec<&Claim> = claims.iter().filter(|c| c.verdict == v).collect();
         let _ = writeln!(
             out,
             "<h3 id=\"errata-{0}\"><span class=\"verdict v-{0}\">{0}</span> ({1}): {2}</h3>",
             v.as_str(),
-            list.len(),
+            list.len() + wrong.len(),
             verdict_meaning(v)
         );
-        if list.is_empty() {
+        if list.is_empty() && wrong.is_empty() {
             out.push_str("<p>None.</p>\n");
             continue;
         }
@@ -395,10 +413,56 @@ pub fn render_html(entries: &[Entry], figures: &[HtmlFigure<'_>], extra: &str) -
                 escape_with_code(&e.note)
             );
         }
+        for c in wrong {
+            let _ = writeln!(
+                out,
+                "<li class=\"erratum\" id=\"claim-erratum-{0}\"><b>n° {1}, claim</b>: {2} Checked by: {3} Evidence: {4}. {5} <a href=\"#claim-{0}\">↩</a></li>",
+                escape(&c.id),
+                escape(&c.section),
+                escape_with_code(&c.claim),
+                escape_with_code(&c.how),
+                escape(&c.evidence_text()),
+                escape_with_code(&c.note)
+            );
+        }
         out.push_str("</ul>\n");
     }
     out.push_str("</body>\n</html>\n");
     out
+}
+
+/// The claims table of `chapter` after its last § (when it has claims and was not written
+/// yet), each claim's verdict linked to its erratum when it is not `agrees`.
+fn claims_html<'a>(out: &mut String, done: &mut Vec<&'a str>, chapter: &'a str, claims: &[Claim]) {
+    if chapter.is_empty() || done.contains(&chapter) {
+        return;
+    }
+    done.push(chapter);
+    let in_chapter = |c: &&Claim| division_of(&c.section).is_some_and(|d| d.chapter == chapter);
+    let list: Vec<&Claim> = claims.iter().filter(in_chapter).collect();
+    if list.is_empty() {
+        return;
+    }
+    out.push_str("<h5>Claims of this chapter</h5>\n<table class=\"claims\">\n<thead><tr><th>n°</th><th>claim</th><th>how checked</th><th>evidence</th><th>verdict</th><th>note</th></tr></thead>\n<tbody>\n");
+    for c in list {
+        let v = c.verdict.as_str();
+        let id = escape(&c.id);
+        let verdict = if c.verdict == Verdict::Agrees {
+            format!("<span class=\"verdict\">{v}</span>")
+        } else {
+            format!("<a class=\"verdict\" href=\"#claim-erratum-{id}\">{v}</a>")
+        };
+        let _ = writeln!(
+            out,
+            "<tr class=\"claim v-{v}\" id=\"claim-{id}\"><td class=\"n\">{}</td><td>{}</td><td>{}</td><td class=\"num\">{}</td><td>{verdict}</td><td class=\"note\">{}</td></tr>",
+            escape(&c.section),
+            escape_with_code(&c.claim),
+            escape_with_code(&c.how),
+            escape(&c.evidence_text()),
+            escape_with_code(&c.note)
+        );
+    }
+    out.push_str("</tbody>\n</table>\n");
 }
 
 /// The one verdict policy (`carvallo_report::policy::PREAMBLE`, as `report.md` states it) as
@@ -465,7 +529,7 @@ mod tests {
             caption: "C",
             svg: "<?xml version=\"1.0\"?>\n<svg xmlns=\"http://www.w3.org/2000/svg\"></svg>",
         };
-        let html = render_html(&entries, &[fig], "");
+        let html = render_html(&entries, &[], &[], &[fig], "");
         assert!(html.starts_with("<!DOCTYPE html>"));
         assert!(!html.contains("<script"));
         assert!(!html.contains("<?xml"));

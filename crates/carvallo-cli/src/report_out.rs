@@ -263,7 +263,9 @@ pub fn write_report(dir: &Path, params: &UncertainParams, model: &str) -> Result
     if !extra_md.is_empty() {
         figures_md = format!("{extra_md}{figures_md}");
     }
-    let mut md = carvallo_report::render_markdown(&entries, &figures_md);
+    let claims = carvallo_report::all_claims();
+    let assertions = carvallo_report::all_assertions();
+    let mut md = carvallo_report::render_markdown(&entries, &claims, &assertions, &figures_md);
     let html_figs: Vec<HtmlFigure<'_>> = files
         .iter()
         .map(|(file, svg)| {
@@ -274,7 +276,7 @@ pub fn write_report(dir: &Path, params: &UncertainParams, model: &str) -> Result
             HtmlFigure { file, title, caption, svg }
         })
         .collect();
-    let mut html = render_html(&entries, &html_figs, &extra_html);
+    let mut html = render_html(&entries, &claims, &assertions, &html_figs, &extra_html);
     if model != "benchmark" {
         let note = format!("The bicycle figures use the parameter file `{model}`.");
         md.push_str(&format!("{note}\n"));

@@ -27,6 +27,7 @@
 
 pub mod bicycle;
 pub mod checks;
+pub mod claims;
 pub mod entry;
 pub mod hoop;
 pub mod hoop_discussion;
@@ -38,6 +39,7 @@ pub mod unicycle;
 pub mod whipple;
 
 pub use checks::{parse_checks, SymbolicCheck};
+pub use claims::{Assertion, Claim, Status};
 pub use entry::{Derived, Entry, Memoir, Verdict};
 pub use hoop::hoop_entries;
 pub use policy::{AGREEMENT_TOLERANCE, REL_DIFF_FLOOR};
@@ -56,28 +58,86 @@ pub struct Report {
     pub sections: &'static str,
     /// Computes the entries now, from the generated evaluators and the recorded checks.
     pub entries: fn() -> Vec<Entry>,
+    /// Checks the memoir's claims in these sections now ([`claims`]).
+    pub claims: fn() -> Vec<Claim>,
+    /// Every assertion of the memoir in these sections, with how it is covered.
+    pub inventory: &'static [Assertion],
 }
 
 /// Every model's report, in the order their entries are gathered by [`all_entries`] (the
 /// order the models were added; a stable sort by section then puts them in memoir order, and
 /// within one section this order decides, so it must not change without a reason).
 pub const REPORTS: [Report; 10] = [
-    Report { model: "hoop", sections: "4–19, 71–77", entries: hoop::entries },
-    Report { model: "unicycle", sections: "21–41, 74, 78", entries: unicycle::entries },
-    Report { model: "hoop_discussion", sections: "13–19", entries: hoop_discussion::entries },
-    Report { model: "whipple", sections: "modern benchmark", entries: whipple::entries },
-    Report { model: "bicycle_steady", sections: "79–100", entries: bicycle::steady::entries },
-    Report { model: "bicycle_turn", sections: "101–106", entries: bicycle::turn::entries },
     Report {
-        model: "bicycle_straight", sections: "107–124", entries: bicycle::straight::entries
+        model: "hoop",
+        sections: "4–19, 71–77",
+        entries: hoop::entries,
+        claims: hoop::claims,
+        inventory: hoop::INVENTORY,
     },
-    Report { model: "bicycle_geometry", sections: "43–58", entries: bicycle::geometry::entries },
+    Report {
+        model: "unicycle",
+        sections: "21–41, 74, 78",
+        entries: unicycle::entries,
+        claims: unicycle::claims,
+        inventory: unicycle::INVENTORY,
+    },
+    Report {
+        model: "hoop_discussion",
+        sections: "13–19",
+        entries: hoop_discussion::entries,
+        claims: hoop_discussion::claims,
+        inventory: hoop_discussion::INVENTORY,
+    },
+    Report {
+        model: "whipple",
+        sections: "modern benchmark",
+        entries: whipple::entries,
+        claims: whipple::claims,
+        inventory: whipple::INVENTORY,
+    },
+    Report {
+        model: "bicycle_steady",
+        sections: "79–100",
+        entries: bicycle::steady::entries,
+        claims: bicycle::steady::claims,
+        inventory: bicycle::steady::INVENTORY,
+    },
+    Report {
+        model: "bicycle_turn",
+        sections: "101–106",
+        entries: bicycle::turn::entries,
+        claims: bicycle::turn::claims,
+        inventory: bicycle::turn::INVENTORY,
+    },
+    Report {
+        model: "bicycle_straight",
+        sections: "107–124",
+        entries: bicycle::straight::entries,
+        claims: bicycle::straight::claims,
+        inventory: bicycle::straight::INVENTORY,
+    },
+    Report {
+        model: "bicycle_geometry",
+        sections: "43–58",
+        entries: bicycle::geometry::entries,
+        claims: bicycle::geometry::claims,
+        inventory: bicycle::geometry::INVENTORY,
+    },
     Report {
         model: "bicycle_kinematics",
         sections: "59–69",
         entries: bicycle::kinematics::entries,
+        claims: bicycle::kinematics::claims,
+        inventory: bicycle::kinematics::INVENTORY,
     },
-    Report { model: "bicycle_rest", sections: "67", entries: bicycle::rest::entries },
+    Report {
+        model: "bicycle_rest",
+        sections: "67",
+        entries: bicycle::rest::entries,
+        claims: bicycle::rest::claims,
+        inventory: bicycle::rest::INVENTORY,
+    },
 ];
 
 /// The whole concordance: every report of [`REPORTS`], in memoir order (a stable sort by the
@@ -88,4 +148,20 @@ pub fn all_entries() -> Vec<Entry> {
     entries
         .sort_by(|a, b| entry::section_key(&a.section).total_cmp(&entry::section_key(&b.section)));
     entries
+}
+
+/// Every claim of every report, in memoir order (a stable sort by section as for the entries).
+pub fn all_claims() -> Vec<Claim> {
+    let mut claims: Vec<Claim> = REPORTS.iter().flat_map(|r| (r.claims)()).collect();
+    claims
+        .sort_by(|a, b| entry::section_key(&a.section).total_cmp(&entry::section_key(&b.section)));
+    claims
+}
+
+/// Every assertion of the memoir found n° by n°, in memoir order.
+pub fn all_assertions() -> Vec<Assertion> {
+    let mut all: Vec<Assertion> =
+        REPORTS.iter().flat_map(|r| r.inventory.iter().copied()).collect();
+    all.sort_by(|a, b| entry::section_key(a.section).total_cmp(&entry::section_key(b.section)));
+    all
 }

@@ -35,3 +35,59 @@ fn the_concordance_is_the_registry() {
     let total: usize = REPORTS.iter().map(|r| (r.entries)().len()).sum();
     assert_eq!(all_entries().len(), total);
 }
+
+/// Every assertion of an inventory is covered by what it names: a claim of that id in the same
+/// report, or a value entry of the same n° whose quantity contains the text; every claim is
+/// cited by exactly one assertion of its report's inventory, and ids are unique.
+#[test]
+fn every_inventory_names_what_covers_it() {
+    use carvallo_report::Status;
+    let mut ids: Vec<String> = Vec::new();
+    for r in &REPORTS {
+        let claims = (r.claims)();
+        let entries = (r.entries)();
+        for a in r.inventory {
+            match a.status {
+                Status::Checked(id) => {
+                    let c = claims.iter().find(|c| c.id == id);
+                    let c = c.unwrap_or_else(|| {
+                        panic!("{}: n° {}: no claim `{id}`", r.model, a.section)
+                    });
+                    assert_eq!(c.section, a.section, "{}: claim `{id}`", r.model);
+                }
+                Status::Value(quantity) => assert!(
+                    entries.iter().any(|e| e.section == a.section && e.quantity.contains(quantity)),
+                    "{}: n° {}: no entry whose quantity contains `{quantity}`",
+                    r.model,
+                    a.section
+                ),
+                Status::Left(why) => {
+                    assert!(!why.trim().is_empty(), "{}: n° {}", r.model, a.section)
+                }
+            }
+            assert!(!a.says.trim().is_empty(), "{}: n° {}", r.model, a.section);
+        }
+        for c in &claims {
+            let cited = r
+                .inventory
+                .iter()
+                .filter(|a| matches!(a.status, Status::Checked(id) if id == c.id))
+                .count();
+            assert_eq!(cited, 1, "{}: claim `{}` cited {cited} times", r.model, c.id);
+            assert!(!c.how.trim().is_empty() && !c.claim.trim().is_empty(), "{}", c.id);
+            ids.push(c.id.clone());
+        }
+    }
+    let n = ids.len();
+    ids.sort_unstable();
+    ids.dedup();
+    assert_eq!(ids.len(), n, "a claim id is used twice");
+}
+
+#[test]
+fn the_claims_are_the_registry() {
+    let total: usize = REPORTS.iter().map(|r| (r.claims)().len()).sum();
+    assert_eq!(carvallo_report::all_claims().len(), total);
+    let found: usize = REPORTS.iter().map(|r| r.inventory.len()).sum();
+    assert_eq!(carvallo_report::all_assertions().len(), found);
+}
