@@ -214,8 +214,19 @@ fn frame_point() -> Vector {
 /// # Panics
 /// Panics on a monomial of degree above 2 (the derivation never produces one).
 pub fn frame_sum(f: &Atom) -> Atom {
+    frame_sum_shifted(f, None)
+}
+
+/// [`frame_sum`] for the loaded frame translated sideways by `shift` along j (n° 98: the
+/// rider's body moved out of the frame's plane; the whole loaded frame is moved, which bounds
+/// the rider's share): $\sum m y = \mu y_c$, $\sum m xy = \mu e y_c$, $\sum m yz = \mu h y_c$,
+/// $\sum m y^2 = (A + C - B)/2 + \mu y_c^2$, the other sums unchanged ($A, B, C, L$ are the
+/// unshifted frame's). `None` is the symmetric frame.
+fn frame_sum_shifted(f: &Atom, shift: Option<&Atom>) -> Atom {
     let (x, y, w) = (var("xm"), var("ym"), var("zm"));
     let (a, b, c) = (var("A"), var("B"), var("C"));
+    let yc = shift.cloned().unwrap_or_else(zero);
+    let lateral = |moment: Atom| var("mu") * moment * &yc;
     let mut out = zero();
     for (key, coeff) in f.expand().coefficient_list::<u8>(&[x.clone(), y.clone(), w.clone()]) {
         let value = match (degree(&key, &x), degree(&key, &y), degree(&key, &w)) {
@@ -224,9 +235,11 @@ pub fn frame_sum(f: &Atom) -> Atom {
             (0, 0, 1) => var("mu") * var("h"),
             (1, 0, 1) => var("L"),
             (2, 0, 0) => (&b + &c - &a) / Atom::num(2),
-            (0, 2, 0) => (&a + &c - &b) / Atom::num(2),
+            (0, 2, 0) => (&a + &c - &b) / Atom::num(2) + lateral(yc.clone()),
             (0, 0, 2) => (&a + &b - &c) / Atom::num(2),
-            (0, 1, 0) | (0, 1, 1) | (1, 1, 0) => zero(),
+            (0, 1, 0) => lateral(Atom::num(1)),
+            (1, 1, 0) => lateral(var("e")),
+            (0, 1, 1) => lateral(var("h")),
             other => panic!("frame sum of a monomial of degree {other:?}"),
         };
         out += coeff * value;
@@ -263,13 +276,18 @@ fn frame_virtual_dot(c: &[Atom; 3], r: &Vector) -> Vector {
 /// The loaded frame's steady $\sum m M'|(dM/d\,\cdot)'$ by route A and by route B, and its
 /// gravity term $g\sum m K|dM/d\,\cdot$.
 fn frame_terms(c: &[Atom; 3]) -> (Atom, Atom, Atom) {
+    frame_terms_shifted(c, None)
+}
+
+/// [`frame_terms`] for the loaded frame translated sideways by `shift` ([`frame_sum_shifted`]).
+fn frame_terms_shifted(c: &[Atom; 3], shift: Option<&Atom>) -> (Atom, Atom, Atom) {
     let r = frame_point();
     let vel = contact_velocity().add(&rot(&r));
     let acc = rot(&contact_velocity()).add(&rot(&rot(&r)));
     let v = frame_virtual(c, &r);
-    let route_a = frame_sum(&vel.dot(&frame_virtual_dot(c, &r)));
-    let route_b = -frame_sum(&acc.dot(&v));
-    let gravity = var("g") * frame_sum(&k_big().dot(&v));
+    let route_a = frame_sum_shifted(&vel.dot(&frame_virtual_dot(c, &r)), shift);
+    let route_b = -frame_sum_shifted(&acc.dot(&v), shift);
+    let gravity = var("g") * frame_sum_shifted(&k_big().dot(&v), shift);
     (simplify_all(&route_a), simplify_all(&route_b), simplify_all(&gravity))
 }
 
@@ -733,6 +751,44 @@ pub fn derive() -> Result<Derivation> {
     let shift = |ratio: &Atom| simplify_all(&((&one - ratio + &k97) / (ratio - &k97)));
     let shift_98 = shift(&ratio_95);
     let shift_98_memoir = shift(&ratio_95_memoir);
+
+    // n° 98: the body moved sideways by y_c (the angle ε of the memoir, tan ε = y_c/h).
+    let yc = var("yc");
+    let (fall_a_98, _, fall_grav_98) =
+        frame_terms_shifted(&[one.clone(), deta.clone(), dnu.clone()], Some(&yc));
+    let (steer_a_98, _, steer_grav_98) =
+        frame_terms_shifted(&[zero(), deta_g.clone(), dnu_g.clone()], Some(&yc));
+    let mut chk = compare("98", "shift_fall_gravity", "moving the loaded frame sideways by y_c adds g mu y_c cos(theta) to the gravity term of the fall equation: mu g h sin(theta) becomes mu g (h sin(theta) + y_c cos(theta)) = mu g sqrt(h^2 + y_c^2) sin(theta + epsilon) with tan(epsilon) = y_c/h, the printed mu g h sin(theta + epsilon) of n° 98 at first order in epsilon", &(&fall_grav_98 - &frame_grav), &(&g * &mu * &yc * &ct));
+    chk.detail = format!(
+        "{}; exact change {}",
+        chk.detail,
+        show_all(&simplify_all(&(&fall_grav_98 - &frame_grav)))
+    );
+    checks.push(chk);
+    let mut small_98 = small();
+    small_98.push(("yc", var("eps") * &yc));
+    let first_order_change = |change: &Atom| -> (Atom, bool, bool) {
+        let (first, lower) = leading(change, &small_98, 1);
+        (simplify_all(change), lower, is_zero_all(&first))
+    };
+    let (fall_inertia_change, low0, first0) = first_order_change(&(&fall_a_98 - &frame_a));
+    checks.push(Check {
+        section: "98".into(),
+        id: "shift_fall_inertia".into(),
+        statement: "the inertia (centrifugal) terms of the fall equation are unchanged by the sideways shift at first order in theta, alpha, n, d eta/d theta and y_c (n° 98: the moment of the centrifugal force is not changed appreciably)".into(),
+        holds: low0 && first0,
+        detail: format!("order 0 vanishes: {low0}; order 1 vanishes: {first0}; exact change {}", show_all(&fall_inertia_change)),
+    });
+    let steer_change = &(&steer_a_98 - &steer_grav_98) - &(&steer_frame_a - &steer_grav_frame);
+    let (steer_change, low0, first0) = first_order_change(&steer_change);
+    let grav_unchanged = is_zero_all(&(&steer_grav_98 - &steer_grav_frame));
+    checks.push(Check {
+        section: "98".into(),
+        id: "shift_steer_unchanged".into(),
+        statement: "the handlebar equation is unchanged by the sideways shift at first order (its frame gravity term exactly, its inertia terms up to second order in theta, alpha, n, d eta/d gamma and y_c): n° 98's 'l'équation du guidon n'est pas changée'".into(),
+        holds: low0 && first0 && grav_unchanged,
+        detail: format!("gravity term unchanged: {grav_unchanged}; order 0 vanishes: {low0}; order 1 vanishes: {first0}; exact change {}", show_all(&steer_change)),
+    });
 
     // n° 99–102: the loaded frame's kinetic energy.
     let phi = Vector::new(Trihedron::IJK, var("p"), zero(), var("n"));
