@@ -19,6 +19,15 @@ pub fn expr(text: &str) -> Atom {
     parse!(text)
 }
 
+/// The names of the symbols of this crate's namespace in the order they were created in this
+/// process (the order symbolica sorts the terms of an expression by).
+pub fn created_symbols() -> Vec<String> {
+    let prefix = concat!(env!("CARGO_CRATE_NAME"), "::");
+    symbolica::state::State::symbol_iter()
+        .filter_map(|(_, name)| name.strip_prefix(prefix).map(str::to_string))
+        .collect()
+}
+
 /// The symbol `name` as an expression.
 pub fn var(name: &str) -> Atom {
     expr(name)

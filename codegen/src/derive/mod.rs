@@ -4,10 +4,13 @@
 
 pub mod bicycle;
 pub mod hoop;
+pub mod symbols;
 pub mod unicycle;
 pub mod whipple;
 
 use anyhow::Result;
+
+pub use symbols::declare_symbols;
 
 use crate::Derivation;
 

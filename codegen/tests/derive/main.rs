@@ -37,6 +37,27 @@ use carvallo_codegen::Derivation;
 
 type Job = Box<dyn FnOnce() + Send>;
 
+/// The symbols the derivations created that `derive::symbols::SYMBOLS` does not list, in
+/// creation order (set by the worker once every model is derived).
+static NEW_SYMBOLS: OnceLock<Vec<String>> = OnceLock::new();
+
+/// Every symbol a derivation creates is declared in `derive::symbols::SYMBOLS`, so that
+/// `cargo xtask regen MODEL` prints its terms in the order of a full regeneration.
+#[test]
+fn every_derivation_symbol_is_declared_in_order() {
+    on_symbolica_thread(|| {
+        let new = NEW_SYMBOLS.get().expect("set when the worker started");
+        assert!(
+            new.is_empty(),
+            "append these symbols, in this order, at the end of codegen/src/derive/symbols.rs: {new:?}"
+        );
+        // The declared order is the creation order (nothing was created before it).
+        let created = carvallo_codegen::cas::created_symbols();
+        let known = carvallo_codegen::derive::symbols::SYMBOLS;
+        assert_eq!(&created[..known.len()], known);
+    });
+}
+
 /// Runs `body` on the single worker thread that owns all symbolica use of this test binary,
 /// and re-raises its panic (a failed assertion) in the calling test.
 pub fn on_symbolica_thread(body: fn()) {
@@ -49,9 +70,14 @@ pub fn on_symbolica_thread(body: fn()) {
             // prints: derive every model first, in the order `cargo xtask regen` does, so that
             // every test sees the state the regeneration had (a derivation that fails is
             // reported by the tests that use it).
+            carvallo_codegen::derive::declare_symbols();
             for (model, _) in DERIVATIONS {
                 let _ = catch_unwind(|| derived(model));
             }
+            let created = carvallo_codegen::cas::created_symbols();
+            let known = carvallo_codegen::derive::symbols::SYMBOLS;
+            let _ = NEW_SYMBOLS
+                .set(created.into_iter().filter(|s| !known.contains(&s.as_str())).collect());
             for job in rx {
                 job();
             }
