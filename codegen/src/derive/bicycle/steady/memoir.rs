@@ -24,6 +24,16 @@ printed! {
     GRAV_REAR, "85", "-mu1*g*R*sin(theta)";
     GRAV_FRONT, "85", "-mu1*g*R*sin(theta1)*(cos(alpha) - sin(alpha)*cos(theta)*deta)";
     GRAV_FRAME, "85", "g*(-mu*h*sin(theta) + mu*e*cos(theta)*deta)";
+    // n° 83, the six terms of Σ m M'|(dM/dθ)' for the loaded frame, non-steady (p, η' = deta_t,
+    // (dη/dθ)' = ddeta, (dν/dθ)' = ddnu kept; the memoir underlines what vanishes in a steady
+    // state). Term (4) is transcribed as printed: "μ R sin θ", where the steady row of n° 85
+    // has μ R e.
+    FRAME_83_1, "83", "mu*R*deta*(e*n*sin(theta) - e*deta_t)*(s + n*sin(theta))";
+    FRAME_83_2, "83", "mu*R*s*dnu*(-e*n + h*p*cos(theta) + e*deta_t*sin(theta))";
+    FRAME_83_3, "83", "mu*R*h*(s + deta_t)*n*cos(theta) + B*n*cos(theta)*(n*sin(theta) - deta_t) - n*sin(theta)*(L*p + C*n*cos(theta))";
+    FRAME_83_4, "83", "deta*(-L*p^2 + (A - C - mu*R*h)*n*p*cos(theta) + n^2*cos(theta)*(L*cos(theta) - mu*R*sin(theta)))";
+    FRAME_83_5, "83", "-ddeta*((B - mu*R*h)*n*sin(theta) + mu*R*(h - R)*s + mu*R*(2*h - R)*deta_t)";
+    FRAME_83_6, "83", "ddnu*((mu*R*h*(s + deta_t) + B*(n*sin(theta) - deta_t))*sin(theta) + (L*p + C*n*cos(theta))*cos(theta))";
     // n° 86, (1): the reduced fall equation; (3)' of n° 86 bis; n° 87; n° 88 (1); n° 89.
     FALL_86, "86", "mu*R*h*s*n*cos(theta) + mu*g*h*sin(theta) - mu*g*e*cos(theta)*deta";
     TAN_THETA_86, "86", "-R/l*R*s^2/g*tan(alpha)";

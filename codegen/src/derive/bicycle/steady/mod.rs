@@ -291,6 +291,73 @@ fn frame_terms_shifted(c: &[Atom; 3], shift: Option<&Atom>) -> (Atom, Atom, Atom
     (simplify_all(&route_a), simplify_all(&route_b), simplify_all(&gravity))
 }
 
+/// n° 83: the loaded frame's $\sum m M'|(dM/d\theta)'$ in any motion (not only a steady one):
+/// $M' = IRs + |\Phi(M - O) - \eta'|j(M - S)$ with $\Phi = pI + nK$ (as in n° 99),
+/// $S' = O' + |\Phi(S - O)$, $I' = |\Phi I$, $j' = |\Phi j$, $K' = 0$; the whole sum from the
+/// time derivative of the virtual velocity, and each of the memoir's six terms from its
+/// definition ($[abc] = a|(b \times c)$), compared with the printed ones; the sum of the six is
+/// the whole, and at $p = \eta' = 0$ with constant $d\eta/d\theta$, $d\nu/d\theta$ it is the
+/// steady frame term of n° 85.
+fn frame_six_terms() -> Vec<Check> {
+    use memoir as m;
+    let (deta, dnu, ddeta, ddnu) = (var("deta"), var("dnu"), var("ddeta"), var("ddnu"));
+    let eta_t = var("deta_t");
+    let phi = Vector::new(Trihedron::IJK, var("p"), zero(), var("n"));
+    let i = Vector::unit(Trihedron::Ijk, 0);
+    let j = Vector::unit(Trihedron::Ijk, 1);
+    let kk = k_big();
+    let r = frame_point();
+    let rs = r.sub(&centre_rear());
+    let o_dot = contact_velocity();
+    let s_dot = o_dot.add(&phi.cross(&centre_rear()));
+    let m_dot = o_dot.add(&phi.cross(&r)).add(&j.cross(&rs).scale(&-eta_t.clone()));
+    let (i_dot, j_dot) = (phi.cross(&i), phi.cross(&j));
+    let triple = |a: &Vector, b: &Vector| frame_sum(&a.dot(&b.cross(&m_dot)));
+    let terms = [
+        &deta * triple(&j, &s_dot),
+        -(&dnu * triple(&kk, &o_dot)),
+        triple(&i_dot, &r),
+        -(&deta * triple(&j_dot, &rs)),
+        -(&ddeta * triple(&j, &rs)),
+        &ddnu * triple(&kk, &r),
+    ];
+    // (dM/dθ)' = |I'(M-O) + |I(M'-O') - (dη/dθ)'|j(M-S) - dη/dθ (|j'(M-S) + |j(M'-S'))
+    //          + (dν/dθ)'|K(M-O) + dν/dθ |K(M'-O').
+    let virtual_dot = i_dot
+        .cross(&r)
+        .add(&i.cross(&m_dot.sub(&o_dot)))
+        .add(&j.cross(&rs).scale(&-ddeta.clone()))
+        .add(&j_dot.cross(&rs).add(&j.cross(&m_dot.sub(&s_dot))).scale(&-deta.clone()))
+        .add(&kk.cross(&r).scale(&ddnu))
+        .add(&kk.cross(&m_dot.sub(&o_dot)).scale(&dnu));
+    let whole = frame_sum(&m_dot.dot(&virtual_dot));
+    let printed_terms = [
+        &m::FRAME_83_1,
+        &m::FRAME_83_2,
+        &m::FRAME_83_3,
+        &m::FRAME_83_4,
+        &m::FRAME_83_5,
+        &m::FRAME_83_6,
+    ];
+    let mut checks = Vec::new();
+    let mut sum = zero();
+    for (k, (t, p)) in terms.iter().zip(printed_terms).enumerate() {
+        checks.push(compare(
+            "83",
+            &format!("frame_83_term{}", k + 1),
+            &format!("the loaded frame's term ({}) of n° 83, derived from its definition in any motion (p, eta', (d eta/d theta)', (d nu/d theta)' kept), is the printed one", k + 1),
+            t,
+            &printed(p),
+        ));
+        sum += t;
+    }
+    checks.push(compare("83", "frame_83_six_terms_sum", "the six terms of n° 83 add up to the whole sum m M'|(dM/d theta)' from the time derivative of the virtual velocity (the first line's three parallelograms and the O' term vanish)", &sum, &whole));
+    let steady =
+        with(&whole, &[("p", zero()), ("deta_t", zero()), ("ddeta", zero()), ("ddnu", zero())]);
+    checks.push(compare("83", "frame_83_steady", "at p = eta' = 0 and constant d eta/d theta, d nu/d theta (a steady state: the underlined terms vanish) the whole frame term of n° 83 is the steady one derived for n° 85", &steady, &frame_terms(&[Atom::num(1), deta.clone(), dnu.clone()]).0));
+    checks
+}
+
 /// The hoop's steady moment of the inertia forces about its contact point (n° 6 with
 /// $A_1, B_1, C_1, \mu_1$, at $p = p' = n' = s' = 0$), on (I, J, K); its momentum moment
 /// about O; and $O'$, $S'$.
@@ -751,6 +818,10 @@ pub fn derive() -> Result<Derivation> {
     let shift = |ratio: &Atom| simplify_all(&((&one - ratio + &k97) / (ratio - &k97)));
     let shift_98 = shift(&ratio_95);
     let shift_98_memoir = shift(&ratio_95_memoir);
+
+    // n° 83: the loaded frame's six terms, in a motion that is not steady (p, eta' and the
+    // rates of d eta/d theta, d nu/d theta kept), each from its definition.
+    checks.extend(frame_six_terms());
 
     // n° 98: the body moved sideways by y_c (the angle ε of the memoir, tan ε = y_c/h).
     let yc = var("yc");
