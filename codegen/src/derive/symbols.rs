@@ -399,6 +399,9 @@ pub const SYMBOLS: &[&str] = &[
     "a2",
     "a3",
     "a4",
+    // Appended: n° 83 (bicycle_steady).
+    "ddeta",
+    "ddnu",
 ];
 
 /// Creates every symbol of [`SYMBOLS`] in order (a symbol that exists already keeps its place).

@@ -5,7 +5,7 @@
 use crate::common;
 
 /// Checks that must come out false: findings about the memoir.
-const EXPECTED_FALSE: [&str; 5] = [
+const EXPECTED_FALSE: [&str; 9] = [
     // n° 83/85: two third-order terms of the loaded frame's row are wrong.
     "fall_frame_memoir",
     // n° 94: the same terms, copied into the handlebar equation.
@@ -16,6 +16,13 @@ const EXPECTED_FALSE: [&str; 5] = [
     "theta1_ratio_memoir",
     // n° 102: df/dp' = A is the memoir's declared approximation.
     "dfdpp_memoir",
+    // n° 83: terms (3), (4), (6) print every L term with the sign opposite to n° 99-100.
+    "frame_83_term3",
+    // n° 83: (4) also prints -mu R sin(theta) for +mu R e cos(theta) (the error of n° 85's row).
+    "frame_83_term4",
+    // n° 83: (5) drops -B eta' (the frame's own moment about Sj).
+    "frame_83_term5",
+    "frame_83_term6",
 ];
 
 fn bicycle_steady_derivation_body() {
