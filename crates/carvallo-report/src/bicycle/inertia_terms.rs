@@ -118,11 +118,11 @@ fn frame_cloud(rng: &mut Rng) -> Vec<Point> {
     for _ in 0..4 {
         let m = rng.uniform(5.0, 25.0);
         let (x, y, z) = (rng.uniform(-0.6, 1.0), rng.uniform(0.0, 0.3), rng.uniform(0.2, 1.6));
-        pts.push((m, (x, y, z)));
-        pts.push((m, (x, -y, z)));
+        // coordinates on I, j, k (placed on the state's axes in `frame_terms`)
+        pts.push((m, V::new(x, y, z)));
+        pts.push((m, V::new(x, -y, z)));
     }
-    // positions are set on the axes of the state in `frame_terms`
-    pts.into_iter().map(|(m, (x, y, z))| (m, V::new(x, y, z))).collect()
+    pts
 }
 
 /// n° 83 term by term.
@@ -375,12 +375,5 @@ mod tests {
             assert!(v < 1e-12, "{w:?}");
         }
         assert!(w.front_printed_whole > 1e-3, "{w:?}");
-    }
-
-    #[test]
-    fn print_claims() {
-        for c in crate::bicycle::steady::claims().iter().chain(crate::bicycle::geometry::claims().iter()).chain(crate::bicycle::kinematics::claims().iter()).chain(crate::bicycle::rest::claims().iter()) {
-            println!("{}", crate::claims::render_claims_text(std::slice::from_ref(c)));
-        }
     }
 }

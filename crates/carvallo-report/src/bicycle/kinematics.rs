@@ -420,7 +420,7 @@ pub fn claims() -> Vec<crate::claims::Claim> {
 /// The memoir's assertions in this report's sections, n° by n°, with how each is covered.
 pub const INVENTORY: &[crate::claims::Assertion] = &[
     Assertion { section: "59", says: "with the rear contact fixed, two displacements delta theta, delta gamma; freed, the rolling delta sigma: three degrees of freedom", status: Status::Value("degree of freedom") },
-    Assertion { section: "60", says: "delta sigma1, delta nu, delta eta are functions of the three: the front contact's velocity is zero, three conditions", status: Status::Value("degree of freedom") },
+    Assertion { section: "60", says: "delta sigma1, delta nu, delta eta are functions of the three: the front contact's velocity is zero, three conditions", status: Status::Left("the same count as n° 59, whose entry decides it") },
     Assertion { section: "61", says: "the displacement delta(M - O) is (3) with the variations (4) of k, H, G, H1", status: Status::Value("variation_3_61") },
     Assertion { section: "61", says: "projected on K, delta sigma, delta nu, delta sigma1 drop out: the coefficient of delta sigma1 vanishes by the contact condition (2) of n° 48", status: Status::Value("coefficient_dsigma1_61") },
     Assertion { section: "61", says: "the coefficient of delta theta is y", status: Status::Value("coefficient_dtheta_61") },

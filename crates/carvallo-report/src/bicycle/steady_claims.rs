@@ -522,7 +522,7 @@ fn action_claims() -> Vec<Claim> {
             ("sum_of_both_upright", upright),
         ],
         policy::claim(deta_t.abs() < 1e-12 && deta_g.abs() < 1e-12, Verdict::MemoirError),
-        "holds for the handlebar; for the pedals only upright and straight: off it the pedal torque enters the fall equation as Q d eta/d theta and the handlebar equation as Q d eta/d gamma (first order in the angles), by the memoir's own n° 68. In the steady states of n° 80-98 the pedals give no torque (no resistance in the model), so the conclusions there are unaffected; in the stability of n° 100-105, where the pedals hold s, the term belongs to the fall equation",
+        "holds for the handlebar; for the pedals only upright and straight: off it the pedal torque enters the fall equation as Q d eta/d theta and the handlebar equation as Q d eta/d gamma (first order in the angles), by the memoir's own rule of n° 68 (the bearings turn by delta sigma + delta eta). In the steady states of n° 80-98 the pedals give no torque (no resistance in the model), so the conclusions there are unaffected; in the stability of n° 100-105, where the pedals hold s, the term belongs to the fall equation",
     ));
     out
 }
