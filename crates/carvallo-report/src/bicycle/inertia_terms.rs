@@ -90,11 +90,14 @@ struct FrameState {
 
 /// The six terms of n° 83 as derived here by hand from the moments of momentum about O and S,
 /// $H_O = I(Ap - Ln\cos\theta) + j[\mu Rh(s + \eta') + B(n\sin\theta - \eta')] + k(Cn\cos\theta
-/// - Lp)$ and $H_S = H_O - \mu R\,k \times G'$, with $L = \sum m\,zx$ as in the $2T_0$ of n° 99:
-/// the printed terms with $-L$ for $L$ in (3), (4), (6), $+\mu R e\,n^2\cos^2\theta$ for
-/// $-\mu R e\,n^2\sin\theta\cos\theta$ in (4), and $-B\eta'$ added in (5).
+/// - Lp)$ and $H_S = H_O - \mu R\,k \times G'$, with $L = \sum m\,zx$ as in the $2T_0$ of n° 99.
+///
+/// They are the printed terms with $-L$ for $L$ in (3), (4) and (6), with
+/// $+\mu R e\,n^2\cos^2\theta$ for $-\mu R e\,n^2\sin\theta\cos\theta$ in (4), and with
+/// $-B\eta'$ added in (5).
 fn corrected_terms(f: &FrameState) -> [f64; 6] {
-    let FrameState { mu, r, e, h, a, b, c, l, theta, p, n, s, eta_t, deta, dnu, deta_dot, dnu_dot } = *f;
+    let FrameState { mu, r, e, h, a, b, c, l, theta, p, n, s, eta_t, deta, dnu, deta_dot, dnu_dot } =
+        *f;
     let (st, ct) = (theta.sin(), theta.cos());
     [
         mu * r * deta * (e * n * st - e * eta_t) * (s + n * st),
@@ -107,8 +110,7 @@ fn corrected_terms(f: &FrameState) -> [f64; 6] {
                 + mu * r * (h - r) * s
                 + (mu * r * (2.0 * h - r) - b) * eta_t),
         dnu_dot
-            * ((mu * r * h * (s + eta_t) + b * (n * st - eta_t)) * st
-                + (-l * p + c * n * ct) * ct),
+            * ((mu * r * h * (s + eta_t) + b * (n * st - eta_t)) * st + (-l * p + c * n * ct) * ct),
     ]
 }
 
@@ -189,12 +191,32 @@ pub fn frame_terms() -> FrameTerms {
                 + (a - c - mu * r * h) * n * p * ct
                 + n * n * ct * (l * ct - mu * r * e * st)),
             -deta_dot
-                * ((b - mu * r * h) * n * st + mu * r * (h - r) * s + mu * r * (2.0 * h - r) * eta_t),
+                * ((b - mu * r * h) * n * st
+                    + mu * r * (h - r) * s
+                    + mu * r * (2.0 * h - r) * eta_t),
             dnu_dot
                 * ((mu * r * h * (s + eta_t) + b * (n * st - eta_t)) * st
                     + (l * p + c * n * ct) * ct),
         ];
-        let fixed = corrected_terms(&FrameState { mu, r, e, h, a, b, c, l, theta, p, n, s, eta_t, deta, dnu, deta_dot, dnu_dot });
+        let fixed = corrected_terms(&FrameState {
+            mu,
+            r,
+            e,
+            h,
+            a,
+            b,
+            c,
+            l,
+            theta,
+            p,
+            n,
+            s,
+            eta_t,
+            deta,
+            dnu,
+            deta_dot,
+            dnu_dot,
+        });
         let worst = if steady { &mut out.steady } else { &mut out.whole };
         for k in 0..6 {
             worst[k] = worst[k].max(rel(t[k], printed[k]));
@@ -293,7 +315,8 @@ pub fn wheel_terms() -> WheelTerms {
         out.rear_whole = out.rear_whole.max(rel(sum, printed));
         if !steady {
             // term (2) alone: −Σ m [Θ O' M'].
-            let t2: f64 = rear.iter().map(|(m, x)| -m * det(&big_theta, &o_dot, &omega.cross(x))).sum();
+            let t2: f64 =
+                rear.iter().map(|(m, x)| -m * det(&big_theta, &o_dot, &omega.cross(x))).sum();
             out.rear_term2 = out.rear_term2.max(rel(t2, term2));
         }
         let q = s + n * st;
@@ -310,18 +333,19 @@ pub fn wheel_terms() -> WheelTerms {
         let vrot = i - j * deta + kk * dnu + j1 * dsig; // Θ1 of (1)
         let j_dot = (i * p + kk * n).cross(&j);
         let j1_dot = (i1 * p1 + kk * n1).cross(&j1);
-        let vrot_dot = jj * n - j_dot * deta - j * deta_dot + kk * dnu_dot + j1_dot * dsig + j1 * dsig_dot;
+        let vrot_dot =
+            jj * n - j_dot * deta - j * deta_dot + kk * dnu_dot + j1_dot * dsig + j1 * dsig_dot;
         // (1') as printed: Jn + (−pk + I n cos θ) dη/dθ + (−p1 k1 + I1 n1 cos θ1) dσ1/dθ − ...
-        let vrot_printed = jj * n + (-k * p + i * (n * ct)) * deta
-            + (-k1 * p1 + i1 * (n1 * theta1.cos())) * dsig
-            - j * deta_dot
-            + kk * dnu_dot
-            + j1 * dsig_dot;
-        let vrot_flipped = jj * n + (-k * p + i * (n * ct)) * deta
-            + (k1 * p1 - i1 * (n1 * theta1.cos())) * dsig
-            - j * deta_dot
-            + kk * dnu_dot
-            + j1 * dsig_dot;
+        let vrot_printed =
+            jj * n + (-k * p + i * (n * ct)) * deta + (-k1 * p1 + i1 * (n1 * theta1.cos())) * dsig
+                - j * deta_dot
+                + kk * dnu_dot
+                + j1 * dsig_dot;
+        let vrot_flipped =
+            jj * n + (-k * p + i * (n * ct)) * deta + (k1 * p1 - i1 * (n1 * theta1.cos())) * dsig
+                - j * deta_dot
+                + kk * dnu_dot
+                + j1 * dsig_dot;
         let o1_dot = i1 * (r * s1);
         let mut fsum = 0.0;
         let mut fkin = 0.0;
@@ -371,7 +395,15 @@ mod tests {
     #[test]
     fn the_wheel_terms_hold_but_for_the_sign_of_the_front_wheels_sigma1_term() {
         let w = wheel_terms();
-        for v in [w.rear_whole, w.rear_term2, w.front_route, w.front_printed_steady, w.front_sign_corrected, w.kinetic, w.ring_moments] {
+        for v in [
+            w.rear_whole,
+            w.rear_term2,
+            w.front_route,
+            w.front_printed_steady,
+            w.front_sign_corrected,
+            w.kinetic,
+            w.ring_moments,
+        ] {
             assert!(v < 1e-12, "{w:?}");
         }
         assert!(w.front_printed_whole > 1e-3, "{w:?}");

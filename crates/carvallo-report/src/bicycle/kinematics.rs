@@ -378,7 +378,9 @@ pub fn claims() -> Vec<crate::claims::Claim> {
         })
     };
     let (d2, z0, drift) = match (height(-h), height(0.0), height(h), geo.solve(0.3, 0.0)) {
-        (Ok(a), Ok(b), Ok(c), Ok(lean)) => ((a - 2.0 * b + c) / (h * h), b, (lean.sigma - s0).abs()),
+        (Ok(a), Ok(b), Ok(c), Ok(lean)) => {
+            ((a - 2.0 * b + c) / (h * h), b, (lean.sigma - s0).abs())
+        }
         _ => (f64::NAN, f64::NAN, f64::NAN),
     };
     out.push(Claim::new(

@@ -412,4 +412,3 @@ pub const INVENTORY: &[crate::claims::Assertion] = &[
     Assertion { section: "100", says: "d eta'/dp and dn/dp equal d eta/d theta and d nu/d theta of n° 66", status: Status::Left("the rate relations of n° 66 are its displacement relations with the same coefficients (entries of n° 66)") },
     Assertion { section: "100", says: "the complete calculation would be long and fruitless: only the terms that matter for stability are kept", status: Status::Left("an opinion on method") },
 ];
-

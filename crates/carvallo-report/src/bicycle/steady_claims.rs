@@ -75,8 +75,10 @@ fn inertia_claims() -> Vec<Claim> {
         policy::claim(f.decomposition <= tol, Verdict::DerivationDiffers),
         "the six computed terms sum to the whole sum m M'|(dM/d theta)' at every state, underlined terms included",
     ));
-    let names = |ks: &[usize]| ks.iter().map(|k| format!("({})", k + 1)).collect::<Vec<_>>().join(", ");
-    let failing = |v: &[f64; 6]| (0..6).filter(|&k| !(v[k] <= tol)).collect::<Vec<usize>>();
+    let names =
+        |ks: &[usize]| ks.iter().map(|k| format!("({})", k + 1)).collect::<Vec<_>>().join(", ");
+    let failing =
+        |v: &[f64; 6]| (0..6).filter(|&k| v[k].is_nan() || v[k] > tol).collect::<Vec<usize>>();
     let bad_steady = failing(&f.steady);
     let bad_whole = failing(&f.whole);
     let bad_fixed = failing(&f.corrected);
@@ -510,7 +512,8 @@ fn action_claims() -> Vec<Claim> {
     let (deta_t, deta_g) = turn
         .and_then(|t| kin.relations(t.lean, t.gamma).ok())
         .map_or((f64::NAN, f64::NAN), |r| (r.d_eta_d_theta, r.d_eta_d_gamma));
-    let upright = kin.relations(0.0, 0.0).map_or(f64::NAN, |r| r.d_eta_d_theta.abs() + r.d_eta_d_gamma.abs());
+    let upright =
+        kin.relations(0.0, 0.0).map_or(f64::NAN, |r| r.d_eta_d_theta.abs() + r.d_eta_d_gamma.abs());
     out.push(Claim::new(
         "steady-pedals-enter-the-rolling-equation-only",
         "79",
@@ -531,7 +534,10 @@ fn action_claims() -> Vec<Claim> {
 fn leading_term_claim() -> Option<Claim> {
     let bike = BicycleSteady::new(BicycleParams::memoir()).ok()?;
     let p = bike.params();
-    let t = LockedSteer::new(Constants::MEMOIR).ok()?.steady_turn(5f64.to_radians(), 20.0 / 3.6).ok()?;
+    let t = LockedSteer::new(Constants::MEMOIR)
+        .ok()?
+        .steady_turn(5f64.to_radians(), 20.0 / 3.6)
+        .ok()?;
     let x = exact_state(t.lean, t.gamma, t.speed / p.radius)?;
     let o = |name: &str| bike.output(&x, name).unwrap_or(f64::NAN);
     let lead = p.mass * p.radius * p.h * x.s * x.n * x.theta.cos();

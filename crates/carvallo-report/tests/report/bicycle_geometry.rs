@@ -76,9 +76,20 @@ fn expected_claims() -> BTreeMap<&'static str, Verdict> {
 fn claims_have_the_expected_verdicts() {
     let claims = carvallo_report::bicycle::geometry::claims();
     let expected = expected_claims();
-    assert_eq!(claims.len(), expected.len(), "claims: {:?}", claims.iter().map(|c| &c.id).collect::<Vec<_>>());
+    assert_eq!(
+        claims.len(),
+        expected.len(),
+        "claims: {:?}",
+        claims.iter().map(|c| &c.id).collect::<Vec<_>>()
+    );
     for c in &claims {
-        assert_eq!(expected.get(c.id.as_str()), Some(&c.verdict), "{}: {}", c.id, c.evidence_text());
+        assert_eq!(
+            expected.get(c.id.as_str()),
+            Some(&c.verdict),
+            "{}: {}",
+            c.id,
+            c.evidence_text()
+        );
     }
 }
 

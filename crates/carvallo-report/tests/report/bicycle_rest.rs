@@ -48,18 +48,27 @@ fn text_report_snapshot() {
 
 /// The claims of this report ([`carvallo_report::claims`]): the expected verdict of each.
 fn expected_claims() -> BTreeMap<&'static str, Verdict> {
-    BTreeMap::from([
-        ("rest-light-front-wheel-rests-at-lowest-frame", Verdict::Agrees),
-    ])
+    BTreeMap::from([("rest-light-front-wheel-rests-at-lowest-frame", Verdict::Agrees)])
 }
 
 #[test]
 fn claims_have_the_expected_verdicts() {
     let claims = carvallo_report::bicycle::rest::claims();
     let expected = expected_claims();
-    assert_eq!(claims.len(), expected.len(), "claims: {:?}", claims.iter().map(|c| &c.id).collect::<Vec<_>>());
+    assert_eq!(
+        claims.len(),
+        expected.len(),
+        "claims: {:?}",
+        claims.iter().map(|c| &c.id).collect::<Vec<_>>()
+    );
     for c in &claims {
-        assert_eq!(expected.get(c.id.as_str()), Some(&c.verdict), "{}: {}", c.id, c.evidence_text());
+        assert_eq!(
+            expected.get(c.id.as_str()),
+            Some(&c.verdict),
+            "{}: {}",
+            c.id,
+            c.evidence_text()
+        );
     }
 }
 

@@ -142,9 +142,20 @@ fn expected_claims() -> BTreeMap<&'static str, Verdict> {
 fn claims_have_the_expected_verdicts() {
     let claims = carvallo_report::bicycle::steady::claims();
     let expected = expected_claims();
-    assert_eq!(claims.len(), expected.len(), "claims: {:?}", claims.iter().map(|c| &c.id).collect::<Vec<_>>());
+    assert_eq!(
+        claims.len(),
+        expected.len(),
+        "claims: {:?}",
+        claims.iter().map(|c| &c.id).collect::<Vec<_>>()
+    );
     for c in &claims {
-        assert_eq!(expected.get(c.id.as_str()), Some(&c.verdict), "{}: {}", c.id, c.evidence_text());
+        assert_eq!(
+            expected.get(c.id.as_str()),
+            Some(&c.verdict),
+            "{}: {}",
+            c.id,
+            c.evidence_text()
+        );
     }
 }
 
@@ -164,7 +175,10 @@ fn the_reduction_is_exact_and_term_4_is_the_frames_steady_error() {
     }
     assert!(f["max_rel_term4_steady"] > 0.1 && f["max_rel_term4_corrected"] < 1e-12, "{f:?}");
     let b = &get("steady-neglected-term-bound").evidence;
-    assert!(b["largest_epsilon_20kmh"] < b["bound"] && b["largest_epsilon_10kmh"] > b["bound"], "{b:?}");
+    assert!(
+        b["largest_epsilon_20kmh"] < b["bound"] && b["largest_epsilon_10kmh"] > b["bound"],
+        "{b:?}"
+    );
 }
 
 #[test]
