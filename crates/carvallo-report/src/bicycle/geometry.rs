@@ -18,6 +18,7 @@ use std::collections::BTreeMap;
 use carvallo::bicycle_geometry::{Contact, Geometry};
 
 use crate::checks::Finding;
+use crate::claims::{Assertion, Status};
 use crate::entry::{Derived, Entry, Memoir, Verdict};
 use crate::policy::{self, number, number_as};
 
@@ -388,10 +389,136 @@ pub fn entries() -> Vec<Entry> {
     e
 }
 
-/// The memoir's claims checked in this report ([`crate::claims`]).
+/// The steer grid (degrees) of the claims on the upright frame: 0° to 90° by 0.05°.
+fn fine_steers() -> impl Iterator<Item = f64> {
+    (0..=1800).map(|k| k as f64 * 0.05)
+}
+
+/// The memoir's claims checked in this report ([`crate::claims`]): the old bicycle of n° 52,
+/// exact contact ([`Geometry::solve`]).
 pub fn claims() -> Vec<crate::claims::Claim> {
-    Vec::new()
+    use crate::claims::Claim;
+    let g = Geometry::old_model();
+    let (r, c, s0) = (g.radius(), g.offset(), g.sigma0());
+    let mut out = Vec::new();
+    // n° 43: the steering axis crosses the vertical radius CM (positive trail).
+    let crossing = c / s0.sin();
+    let trail = (r * s0.sin() - c) / s0.cos();
+    out.push(Claim::new(
+        "geometry-axis-crosses-contact-radius",
+        "43",
+        "'Le prolongement de l'axe du guidon AG traverse le rayon vertical CM. On verra plus loin l'importance de cette condition.'",
+        "upright and straight, the steering axis (inclined sigma0 on the vertical, at the distance c behind the front centre C) meets the vertical through C at c/sin(sigma0) below C; it crosses the radius CM when that is less than R, i.e. R sin(sigma0) > c, the trail (R sin(sigma0) - c)/cos(sigma0) being positive; old bicycle of n° 52",
+        &[("crossing_below_C_m", crossing), ("radius_m", r), ("trail_m", trail)],
+        policy::claim(crossing < r && trail > 0.0, Verdict::DerivationDiffers),
+        "holds for the bicycle of n° 52: the axis meets CM 0.19 m below C, inside the 0.38 m radius; the point E where it meets the rim is the lowest position of n° 53 and the rest equilibrium of n° 69",
+    ));
+    // n° 44: a right-angle turn of the handlebar, frame vertical: mu = 0, sigma decreases.
+    let quarter = g.solve(0.0, std::f64::consts::FRAC_PI_2).ok();
+    let (mu90, dsig90) = quarter.map_or((f64::NAN, f64::NAN), |k| (k.mu, k.sigma - s0));
+    out.push(Claim::new(
+        "geometry-right-angle-turn-lowers-frame",
+        "44",
+        "With the frame vertical and the handlebar turned by a right angle, GA is the steepest line of the front wheel, mu = 0, and C having come down, sigma decreases a little.",
+        "exact contact (Newton on the generated equations (1), (2) of n° 48) at theta = 0, gamma = 90°",
+        &[("mu_rad", mu90), ("sigma_minus_sigma0_deg", dsig90.to_degrees())],
+        policy::claim(mu90.abs() < 1e-12 && dsig90 < 0.0, Verdict::DerivationDiffers),
+        "holds: mu = 0 and sigma is 5 minutes below sigma0 (the table of n° 52 at 90°)",
+    ));
+    // n° 52: the influence of sigma1 on mu, and the maximum of -sigma1.
+    let mut max_mu1 = 0.0f64;
+    let (mut best, mut best_gamma) = (f64::INFINITY, f64::NAN);
+    let mut solved = 0usize;
+    for gd in fine_steers() {
+        let gr = gd.to_radians();
+        if let Ok(k) = g.solve(0.0, gr) {
+            solved += 1;
+            let mu0 = (s0.tan() * gr.cos()).atan();
+            max_mu1 = max_mu1.max((k.mu - mu0).abs());
+            if k.sigma < best {
+                best = k.sigma;
+                best_gamma = gd;
+            }
+        }
+    }
+    let max_mu1_deg = max_mu1.to_degrees();
+    out.push(Claim::new(
+        "geometry-sigma1-barely-moves-mu",
+        "52",
+        "'L'influence de sigma1 sur mu est faible, montant au maximum à un peu plus de 0°,3'; near 60° a maximum of -sigma1, the frame's lowest position.",
+        "exact contact at theta = 0 on gamma = 0..90° by 0.05°: the largest |mu - mu0| (tan(mu0) = tan(sigma0) cos(gamma), sigma1 neglected) and the steer where sigma is smallest",
+        &[
+            ("steers", solved as f64),
+            ("largest_mu_minus_mu0_deg", max_mu1_deg),
+            ("steer_of_largest_minus_sigma1_deg", best_gamma),
+        ],
+        policy::claim((0.25..0.35).contains(&max_mu1_deg) && (55.0..=65.0).contains(&best_gamma), Verdict::DerivationDiffers),
+        "holds, reading 'un peu plus de 0°,3' as about 0.3° (to the slide rule's precision, 0.25-0.35° accepted): the exact largest effect is 0.296°, just under 0.3°; the memoir's 'a little more' comes from its first-order mu1 of -19' at 60° (0.32°, an entry of the table of n° 52). -sigma1 is largest at 61.85°, near the 60° the memoir sees on its curve",
+    ));
+    // n° 53: the lowest frame is where E touches (R sin(mu) = c), also d sigma/d gamma = 0.
+    let (sig_e, mu_e, gamma_e) = g.lowest_frame();
+    let refine = {
+        // golden-section search of min sigma(gamma) around the grid's best
+        let f = |gd: f64| g.solve(0.0, gd.to_radians()).map_or(f64::INFINITY, |k| k.sigma);
+        let (mut a, mut b) = (best_gamma - 1.0, best_gamma + 1.0);
+        let phi = 0.5 * (5f64.sqrt() - 1.0);
+        for _ in 0..80 {
+            let (x1, x2) = (b - phi * (b - a), a + phi * (b - a));
+            if f(x1) < f(x2) {
+                b = x2;
+            } else {
+                a = x1;
+            }
+        }
+        0.5 * (a + b)
+    };
+    let sig_min = g.solve(0.0, refine.to_radians()).map_or(f64::NAN, |k| k.sigma);
+    out.push(Claim::new(
+        "geometry-lowest-frame-where-e-touches",
+        "53",
+        "The axis and so the frame are lowest when the point E, where the steering axis meets the rim, is on the ground (mu = arcsin(c/R)); the footnote: the same by the minimum condition d sigma/d gamma = 0.",
+        "the minimum of the exact sigma(gamma) at theta = 0 by golden-section search (80 steps around the 0.05° grid's best) against Geometry::lowest_frame (M at E: R sin(mu) = c, sigma from (1), gamma from tan(mu) = tan(sigma) cos(gamma))",
+        &[
+            ("gamma_of_min_sigma_deg", refine),
+            ("gamma_with_e_on_ground_deg", gamma_e.to_degrees()),
+            ("sigma_min_minus_sigma_e_rad", sig_min - sig_e),
+            ("mu_e_deg", mu_e.to_degrees()),
+        ],
+        policy::claim((refine - gamma_e.to_degrees()).abs() < 1e-3 && (sig_min - sig_e).abs() < 1e-12, Verdict::DerivationDiffers),
+        "holds: the minimum of sigma is at E on the ground, 61.86° (the memoir's 61°,6 is the n° 53 entry); sigma is flat there (difference below 1e-12 rad)",
+    ));
+    out
 }
 
 /// The memoir's assertions in this report's sections, n° by n°, with how each is covered.
-pub const INVENTORY: &[crate::claims::Assertion] = &[];
+pub const INVENTORY: &[crate::claims::Assertion] = &[
+    Assertion { section: "43", says: "the bicycle's organs: frame, fork bent forward, fixed (rear, driving) and mobile (front, steering) wheels, chain", status: Status::Left("description of the machine") },
+    Assertion { section: "43", says: "the handlebar axis extended crosses the vertical radius CM; this condition matters later", status: Status::Checked("geometry-axis-crosses-contact-radius") },
+    Assertion { section: "44", says: "the constants a, b, c, l, sigma0 are linked by (a) a + c = l cos(sigma0), (b) b = l sin(sigma0)", status: Status::Value("relations_ab_44") },
+    Assertion { section: "44", says: "theta and gamma are independent, sigma and mu follow from them", status: Status::Left("definitional; the solver finds one contact per (theta, gamma), as the entries of n° 52-56 show") },
+    Assertion { section: "44", says: "frame vertical, handlebar at a right angle: mu = 0 and sigma decreases a little", status: Status::Checked("geometry-right-angle-turn-lowers-frame") },
+    Assertion { section: "45", says: "M is on the ground and is the lowest point of the front wheel: the two equations K|OM = 0, K|dOM/dmu = 0", status: Status::Left("the definition of the contact; its two equations are checks of n° 48") },
+    Assertion { section: "46", says: "the vectors of OM are 'intuitives sur la figure'", status: Status::Value("om_46") },
+    Assertion { section: "47", says: "the directions H, G, H1 on I, J, K", status: Status::Value("direction_h1_47") },
+    Assertion { section: "48", says: "the second equation is the derivative of the first with respect to mu, whence tan(mu)", status: Status::Value("tan_mu_48") },
+    Assertion { section: "49", says: "ordered in theta, with (a), (b), the first equation takes the form (1)", status: Status::Value("equation_1_final_49") },
+    Assertion { section: "50", says: "the second equation says that M is the lowest point of the wheel (spherical triangle right-angled at M)", status: Status::Value("lowest_point_50") },
+    Assertion { section: "50", says: "the coefficient of R is 1 - cos K'M: (1) is the projection of OSCM on the vertical", status: Status::Value("cos_km_50") },
+    Assertion { section: "50", says: "(1), (2) are thus verified by a more geometric method; the three equations in sigma, mu, tau", status: Status::Value("equation_2_50") },
+    Assertion { section: "51", says: "the first-order method gives sigma1 (and mu1) from (3)', (2)'", status: Status::Value("first-order sigma1 of (2)'") },
+    Assertion { section: "52", says: "the influence of sigma1 on mu is small, at most a little over 0°,3; near 60° a maximum of -sigma1, the lowest frame", status: Status::Checked("geometry-sigma1-barely-moves-mu") },
+    Assertion { section: "53", says: "the frame is lowest when E is on the ground, the footnote's d sigma/d gamma = 0 giving the same", status: Status::Checked("geometry-lowest-frame-where-e-touches") },
+    Assertion { section: "53", says: "mu = arcsin(c/R) = 12°,1, sigma = 24°,5, gamma = 61°,6 there", status: Status::Value("gamma at the lowest frame position") },
+    Assertion { section: "53", says: "with sigma0 for sigma, gamma = 62°,2: 'l'erreur eût été assez faible'", status: Status::Value("gamma at the lowest position with sigma = sigma0") },
+    Assertion { section: "54", says: "y = -(R sin(mu) - c) sin(gamma) 'peut être obtenue directement sur la figure'", status: Status::Value("locus_y_54") },
+    Assertion { section: "54", says: "x = l cos(sigma1) - c cos(sigma)(1 - cos(gamma)) + R cos(CM, OI) 'peut être écrite immédiatement par la Géométrie'", status: Status::Value("locus_x_second_54") },
+    Assertion { section: "54", says: "the second order of sigma1 can be neglected in x (x - l from the last two terms)", status: Status::Left("a step of Carvallo's computation of the table; the table entries compare its result with the exact contact") },
+    Assertion { section: "55", says: "infinitesimal geometry retrieves sigma1 and the first-order formulas; applied as a verification, not printed", status: Status::Left("the demonstrations are not printed; the first-order formulas themselves are checks of n° 51") },
+    Assertion { section: "56", says: "leaning, the frame is again lowest when E touches, with the same largest -sigma1 (0°,5), the frame having turned by theta about OE", status: Status::Value("largest -sigma1 at theta = 20°") },
+    Assertion { section: "56", says: "the table of mu at theta != 0 with sigma0 for sigma", status: Status::Value("table n° 56, gamma = 20°, theta = 10°") },
+    Assertion { section: "56", says: "one correction of sigma1 from (1) is already good since mu at the lowest point makes sigma stationary (second-order variation)", status: Status::Left("the correction procedure is not computed here; the exact contact replaces it") },
+    Assertion { section: "57", says: "the three formulas of alpha, beta are not independent: the sums of the squares are one", status: Status::Value("normal_unit_57") },
+    Assertion { section: "57", says: "CN = |H1 G gives cos(beta) sin(alpha), cos(beta) cos(alpha), sin(beta)", status: Status::Value("normal_57") },
+    Assertion { section: "58", says: "beta corresponds, up to sign, to the hoop's theta: beta = -theta1; the front wheel's axes I1, J1, j1, k1", status: Status::Value("front_axes_58") },
+    Assertion { section: "58 bis", says: "change of notation: sigma, sigma0, sigma1 become eta, eta0, eta1 and mu becomes omega", status: Status::Left("notation") },
+];

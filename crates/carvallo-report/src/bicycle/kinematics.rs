@@ -16,6 +16,7 @@ use std::collections::BTreeMap;
 use carvallo::bicycle_kinematics::{Kinematics, RestEquilibrium};
 
 use crate::checks::Finding;
+use crate::claims::{Assertion, Status};
 use crate::entry::{Derived, Entry, Memoir, Verdict};
 use crate::policy::{self, number};
 
@@ -359,10 +360,94 @@ pub fn entries() -> Vec<Entry> {
     e
 }
 
-/// The memoir's claims checked in this report ([`crate::claims`]).
+/// The memoir's claims checked in this report ([`crate::claims`]): the rest equilibrium of
+/// n° 69 for the old bicycle of n° 52.
 pub fn claims() -> Vec<crate::claims::Claim> {
-    Vec::new()
+    use crate::claims::Claim;
+    let k = Kinematics::old_model();
+    let geo = *k.geometry();
+    let (r, s0) = (geo.radius(), geo.sigma0());
+    let (x, z) = ILLUSTRATIVE_CG;
+    let mut out = Vec::new();
+    // Upright and straight: eta stays eta0 whatever theta, so d2Z/dtheta2 = -Z.
+    let h = carvallo::bicycle_kinematics::FD_STEP_SECOND;
+    let height = |t: f64| {
+        geo.solve(t, 0.0).map(|c| {
+            let e1 = c.sigma - s0;
+            (r + x * e1.sin() + z * e1.cos()) * t.cos()
+        })
+    };
+    let (d2, z0, drift) = match (height(-h), height(0.0), height(h), geo.solve(0.3, 0.0)) {
+        (Ok(a), Ok(b), Ok(c), Ok(lean)) => {
+            ((a - 2.0 * b + c) / (h * h), b, (lean.sigma - s0).abs())
+        }
+        _ => (f64::NAN, f64::NAN, f64::NAN),
+    };
+    out.push(Claim::new(
+        "kinematics-upright-rest-unstable",
+        "69",
+        "'Quand la bicyclette est droite, dans sa position normale, l'équilibre est essentiellement instable, puisque l'abaissement du centre de gravité dû à la rotation autour de OM ne peut recevoir aucune compensation.'",
+        &format!("handlebar straight (gamma = 0), brake and pedals held: the exact contact gives eta(theta, 0) = eta0 at every lean (checked at theta = 0.3 rad), and the height Z of the illustrative centre of gravity (x = {x} m, z = {z} m from S) by central second differences (step {h} rad) against -Z"),
+        &[("d2z_dtheta2", d2), ("minus_z", -z0), ("eta_drift_at_0_3_rad", drift)],
+        policy::claim(d2 < 0.0 && (d2 + z0).abs() < 1e-5 && drift < 1e-12, Verdict::DerivationDiffers),
+        "holds: the frame only turns about OM, the centre of gravity falls as cos(theta), nothing compensates",
+    ));
+    let stab = k.rest_equilibrium().ok().and_then(|eq| {
+        let base = k.rest_stability(&eq, x, z).ok()?;
+        let lower = k.rest_stability(&eq, x, z - 0.2).ok()?;
+        let forward = k.rest_stability(&eq, x + 0.2, z).ok()?;
+        Some((eq, base, lower, forward))
+    });
+    if let Some((eq, base, lower, forward)) = stab {
+        let at_m = eq.lambda * eq.relations.eta_second;
+        out.push(Claim::new(
+            "kinematics-rider-low-and-forward",
+            "69",
+            "'Le cavalier diminue l'instabilité en se baissant et se portant en avant'; footnote: he would make it stable if he could move to the contact point M itself, 'puisque le point M ne peut que monter'.",
+            "d2Z/dtheta2 = -Z + X eta'' at the rest equilibrium (gamma = 61.86°, derived eta'' of the generated relations, checked against second differences of the exact contact in the n° 69 entries) for the illustrative centre of gravity, the same 0.2 m lower, the same 0.2 m further forward, and at M (Z = 0, X = lambda)",
+            &[
+                ("d2z_illustrative", base.d2z),
+                ("d2z_lower", lower.d2z),
+                ("d2z_forward", forward.d2z),
+                ("d2z_at_m", at_m),
+                ("eta_second", eq.relations.eta_second),
+            ],
+            policy::claim(lower.d2z > base.d2z && forward.d2z > base.d2z && at_m > 0.0 && base.d2z < 0.0, Verdict::DerivationDiffers),
+            "holds: lowering Z and increasing X both raise d2Z/dtheta2 toward zero (eta'' > 0), and at M the height's curvature is positive (stable), as the footnote says",
+        ));
+    }
+    out
 }
 
 /// The memoir's assertions in this report's sections, n° by n°, with how each is covered.
-pub const INVENTORY: &[crate::claims::Assertion] = &[];
+pub const INVENTORY: &[crate::claims::Assertion] = &[
+    Assertion { section: "59", says: "with the rear contact fixed, two displacements delta theta, delta gamma; freed, the rolling delta sigma: three degrees of freedom", status: Status::Value("degree of freedom") },
+    Assertion { section: "60", says: "delta sigma1, delta nu, delta eta are functions of the three: the front contact's velocity is zero, three conditions", status: Status::Left("the same count as n° 59, whose entry decides it") },
+    Assertion { section: "61", says: "the displacement delta(M - O) is (3) with the variations (4) of k, H, G, H1", status: Status::Value("variation_3_61") },
+    Assertion { section: "61", says: "projected on K, delta sigma, delta nu, delta sigma1 drop out: the coefficient of delta sigma1 vanishes by the contact condition (2) of n° 48", status: Status::Value("coefficient_dsigma1_61") },
+    Assertion { section: "61", says: "the coefficient of delta theta is y", status: Status::Value("coefficient_dtheta_61") },
+    Assertion { section: "61", says: "the coefficient of delta eta is x cos(theta)", status: Status::Value("coefficient_deta_61") },
+    Assertion { section: "61", says: "the coefficient of delta gamma is (R sin(mu) - c) sin(beta)", status: Status::Value("coefficient_dgamma_61") },
+    Assertion { section: "61", says: "'on trouverait d'une façon analogue les deux autres équations'", status: Status::Left("they are found in n° 64-65, whose relations are entries there") },
+    Assertion { section: "62", says: "the geometric method gives the same formulas more simply: the six partial displacements of M", status: Status::Value("partial_displacements_62") },
+    Assertion { section: "62", says: "the front wheel's rolling moves M backwards by R delta sigma1, which compensates the forward motion of C", status: Status::Value("displacement_sigma1_62") },
+    Assertion { section: "63", says: "delta sigma, delta nu, delta sigma1 give no component along K; -[Kj(M - S)] = x cos(theta), K|N = sin(beta): the same (delta eta)", status: Status::Value("relation_deta_63") },
+    Assertion { section: "64", says: "projected on N1, delta theta and delta sigma1 give zero: the relation (delta nu)", status: Status::Value("table_n1_64") },
+    Assertion { section: "65", says: "projected on I1, delta theta and delta gamma give zero: the relation (delta sigma1)", status: Status::Value("table_i1_65") },
+    Assertion { section: "65", says: "the coefficients of delta eta are the displacement R delta eta of O plus the rotation carried from S to O", status: Status::Value("relation_dsigma1_65") },
+    Assertion { section: "66", says: "the relations (I) between the derivatives of eta and nu", status: Status::Value("(I) dη/dθ, dν/dθ, dη/dγ, dν/dγ vs the analytic dM = 0") },
+    Assertion { section: "66", says: "in a steady state n = R sin(alpha) s/(x cos(alpha) + y sin(alpha)), sigma1' = x s/(...): 'se vérifient aisément par la Géométrie'", status: Status::Value("vs the instantaneous centre of both wheels rolling") },
+    Assertion { section: "66 bis", says: "the rolling rate s1 on the ground and sigma1' on the bearings differ (by the fork's rate in its plane): system (I)", status: Status::Value("system_i_66bis") },
+    Assertion { section: "66 bis", says: "in a steady state (I) reduces to the evident p1 = 0, s1 = sigma1', n1 = n", status: Status::Value("steady_ii_66bis") },
+    Assertion { section: "68", says: "if three displacements vanish the three others do; but with brake, pedals and handlebar held (delta sigma = -delta eta, delta gamma = delta sigma1 = 0) the last two equations are proportional", status: Status::Value("rank_two_68") },
+    Assertion { section: "68", says: "'ainsi la chute est libre, contrairement aux premières apparences du calcul et conformément à l'expérience'", status: Status::Value("rank of (delta)") },
+    Assertion { section: "68", says: "holding the pedals fixed cancels the rotation on the bearings delta sigma + delta eta", status: Status::Left("kinematic definition (the rear wheel's rotation relative to the frame); used by the rank entries") },
+    Assertion { section: "69", says: "with brake, pedals and handlebar held, any position with G on the line of support OM is an equilibrium", status: Status::Left("statics of the one remaining degree of freedom (dZ/dtheta = 0); only the positions below are computed") },
+    Assertion { section: "69", says: "upright and straight the equilibrium is essentially unstable", status: Status::Checked("kinematics-upright-rest-unstable") },
+    Assertion { section: "69", says: "the frame vertical at its lowest position (gamma = 61°,6) is an equilibrium: eta' = 0", status: Status::Value("eta' at the rest equilibrium") },
+    Assertion { section: "69", says: "the steer of that position, 61°,6 of n° 53", status: Status::Value("steer of the rest equilibrium") },
+    Assertion { section: "69", says: "eta'' = R cos^3(mu) sin(gamma)/(lambda cos(eta))", status: Status::Value("eta'' at the rest equilibrium") },
+    Assertion { section: "69", says: "since Z > R and X < lambda, d2Z/dtheta2 < 0: the position is unstable", status: Status::Value("d2Z/dtheta2 at the rest equilibrium") },
+    Assertion { section: "69", says: "the rider lessens the instability by lowering himself and moving forward; at M itself it would be stable", status: Status::Checked("kinematics-rider-low-and-forward") },
+    Assertion { section: "69", says: "'le résultat est trop net ... pour permettre de trouver un équilibre stable en dehors du cas examiné'", status: Status::Left("the memoir itself gives no proof; a search for stable rest positions over all (theta, gamma) and centres of gravity is not made here") },
+];

@@ -2,8 +2,10 @@
 //! in `carvallo::bicycle_*`.
 
 pub mod geometry;
+pub mod inertia_terms;
 pub mod kinematics;
 pub mod rest;
 pub mod steady;
+pub mod steady_claims;
 pub mod straight;
 pub mod turn;

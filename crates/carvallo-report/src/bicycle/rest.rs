@@ -16,6 +16,7 @@ use std::collections::BTreeMap;
 
 use carvallo::bicycle_rest::{RestBicycle, RestConstants, RestError, RestPosition, SECOND_STEP};
 
+use crate::claims::{Assertion, Status};
 use crate::entry::{Derived, Entry, Memoir, Verdict};
 use crate::policy::{self, rel_diff};
 
@@ -201,10 +202,51 @@ pub fn entries() -> Vec<Entry> {
     e
 }
 
+/// Front wheel masses (kg) of the claim that the rest position tends to the lowest frame.
+pub const WHEEL_MASSES: [f64; 3] = [5.0, 0.5, 0.05];
+
 /// The memoir's claims checked in this report ([`crate::claims`]).
 pub fn claims() -> Vec<crate::claims::Claim> {
-    Vec::new()
+    use crate::claims::Claim;
+    let bike = RestBicycle::memoir();
+    let theta = -20f64.to_radians();
+    let shifts: Vec<f64> = WHEEL_MASSES
+        .iter()
+        .map(|&m| {
+            bike.with_wheel_mass(m)
+                .ok()
+                .and_then(|b| b.rest_position(theta).ok())
+                .map_or(f64::NAN, |p| p.difference().to_degrees())
+        })
+        .collect();
+    let scaling = shifts[1] / shifts[2];
+    let holds = shifts.iter().all(|d| d.is_finite() && *d > 0.0)
+        && shifts[2] < 0.1
+        && (scaling - 10.0).abs() < 1.0;
+    vec![Claim::new(
+        "rest-light-front-wheel-rests-at-lowest-frame",
+        "67",
+        "'Si l'on néglige le poids de la roue directrice devant celui du cadre, la position d'équilibre est celle qui donne au cadre la position la plus basse dans son plan.'",
+        "the handlebar's rest position gamma67 (dU/dgamma = 0, stable) against the frame's lowest position gamma55 at theta = 20° (carvallo::bicycle_rest, n° 117's loaded frame on n° 52's geometry) with the front wheel's mass 5, 0.5 and 0.05 kg: the shift must vanish with the wheel's mass",
+        &[
+            ("shift_deg_mu1_5kg", shifts[0]),
+            ("shift_deg_mu1_0_5kg", shifts[1]),
+            ("shift_deg_mu1_0_05kg", shifts[2]),
+            ("shift_ratio_per_decade", scaling),
+        ],
+        policy::claim(holds, Verdict::DerivationDiffers),
+        "holds as a limit: the shift is proportional to the wheel's mass and vanishes with it; with a real wheel (5 kg) it is several degrees because the frame's minimum is flat (entries 'gamma67 against gamma55')",
+    )]
 }
 
 /// The memoir's assertions in this report's sections, n° by n°, with how each is covered.
-pub const INVENTORY: &[crate::claims::Assertion] = &[];
+pub const INVENTORY: &[crate::claims::Assertion] = &[
+    Assertion { section: "67", says: "leaning the frame with the handlebar free, the front wheel starts from an unstable equilibrium", status: Status::Value("stiffness d2U/dgamma2 in the normal position") },
+    Assertion { section: "67", says: "it turns about the steering axis to a stable equilibrium", status: Status::Value("stiffness d2U/dgamma2 at the handlebar's rest position") },
+    Assertion { section: "67", says: "neglecting the front wheel's weight, the equilibrium is the frame's lowest position in its plane", status: Status::Checked("rest-light-front-wheel-rests-at-lowest-frame") },
+    Assertion { section: "67", says: "from there a larger gamma lowers the front wheel and raises the frame", status: Status::Value("direction of the shift") },
+    Assertion { section: "67", says: "the equilibrium is close to that of n° 55, if not the same", status: Status::Value("gamma67 against gamma55") },
+    Assertion { section: "67", says: "the rigorous solution has no interest for what follows", status: Status::Left("an opinion on the rest of the memoir") },
+    Assertion { section: "70", says: "the equations of motion by the methods of the hoop and the unicycle become too long; Lagrange's equations do not apply without modification", status: Status::Left("announces n° 71-72, outside this range (checked there with the symbolic check that the unmodified equations fail)") },
+    Assertion { section: "70", says: "the artifice that gave the stability of the first apparatus fails for the bicycle", status: Status::Left("methodological statement, not a result") },
+];

@@ -19,6 +19,7 @@ use carvallo::bicycle_steady::{BicycleParams, BicycleSteady, SteadyState};
 
 use crate::checks::parse_checks;
 use crate::checks::Finding;
+use crate::claims::{Assertion, Status};
 use crate::entry::{Derived, Entry, Memoir, Verdict};
 use crate::policy::{self, formula_entry, number};
 use crate::sample::Rng;
@@ -325,8 +326,89 @@ pub fn entries() -> Vec<Entry> {
 
 /// The memoir's claims checked in this report ([`crate::claims`]).
 pub fn claims() -> Vec<crate::claims::Claim> {
-    Vec::new()
+    super::steady_claims::claims()
 }
 
+/// Why n° 98's statements on a lateral shift of the rider are left.
+const LATERAL_98: &str = "needs a symbolic derivation: no generated model has the rider's centre of gravity off the frame's plane; bicycle_steady would need the loaded frame's centre of gravity at (e, d, h) on (I, j, k) with the products of inertia sum m x y and sum m y z, and the steady rows of the fall and handlebar equations (n° 83-84, 91-93) recomputed, to show that the handlebar rows change only by terms of the first order in d times the angles while the fall equation's gravity row becomes -mu g (h sin(theta) + d cos(theta))";
+
 /// The memoir's assertions in this report's sections, n° by n°, with how each is covered.
-pub const INVENTORY: &[crate::claims::Assertion] = &[];
+pub const INVENTORY: &[crate::claims::Assertion] = &[
+    Assertion { section: "79", says: "three equations of motion, of rolling, handlebar and fall, from the three virtual displacements", status: Status::Left("definitional") },
+    Assertion { section: "79", says: "the rolling equation needs no further study, done for the unicycle", status: Status::Left("a reference to the unicycle's ch. II § II") },
+    Assertion { section: "79", says: "first problem (pedals and handlebar let go): great complication, doubtful interest; it falls into the fourth when s changes little", status: Status::Left("a remark on the problems; the free motion is the subject of n° 107 ff., outside this range") },
+    Assertion { section: "79", says: "second problem: the pedals' action enters the rolling equation only, the handlebar's the handlebar equation only; the fall equation alone decides", status: Status::Checked("steady-pedals-enter-the-rolling-equation-only") },
+    Assertion { section: "79", says: "third problem (pedals let go): of little interest, approximated by the second", status: Status::Left("qualitative judgement") },
+    Assertion { section: "79", says: "fourth problem (hands let go): the handlebar and fall equations decide the equilibrium", status: Status::Left("definitional; treated in n° 90-98") },
+    Assertion { section: "80", says: "in a steady state (dT/d theta')' vanishes: T is the same at every instant of the state", status: Status::Left("structural: T depends on the state through theta, gamma and the rates, all constant in a steady state (the generated dT0/dp, dT0/d eta', dT0/dn of n° 100 have no other inputs); not computed separately") },
+    Assertion { section: "80", says: "the inertia term has no acceleration and is quadratic in the velocities: forces of the nature of centrifugal forces", status: Status::Left("structural, visible in the generated steady rows of n° 85 (products of two rates)") },
+    Assertion { section: "80", says: "each term splits into the parts of the rear wheel, the front wheel and the loaded frame", status: Status::Left("definitional") },
+    Assertion { section: "81", says: "the rear wheel's sum m M'|(dM/d theta)': [Theta M' M'] = 0, terms (2), (3), the underlined part vanishing in a steady state", status: Status::Checked("steady-rear-wheel-terms") },
+    Assertion { section: "81", says: "the rear wheel's steady term equals the moment of its inertia forces", status: Status::Value("bicycle check rear_routes") },
+    Assertion { section: "82", says: "the front wheel's motion, real or virtual, is a rotation about its contact O1: the calculation of n° 81 applies", status: Status::Value("bicycle check front_routes") },
+    Assertion { section: "82", says: "the front wheel's Theta1' of (1'), terms (2), (3) and the steady result (4)", status: Status::Checked("steady-front-wheel-terms") },
+    Assertion { section: "82", says: "'on reconnaît une parenté étroite' with the rear wheel's expression", status: Status::Left("a remark") },
+    Assertion { section: "83", says: "of the loaded frame's terms the first line's three parallelepipeds and [I O' M'] vanish: six terms remain", status: Status::Checked("steady-frame-decomposition") },
+    Assertion { section: "83", says: "the six terms (1)-(6): their steady parts", status: Status::Checked("steady-frame-six-terms-steady") },
+    Assertion { section: "83", says: "the six terms (1)-(6) with their underlined parts, which vanish in a steady state", status: Status::Checked("steady-frame-six-terms-unsteady") },
+    Assertion { section: "83", says: "the loaded frame's steady sum by the memoir's route equals the inertia forces' moment", status: Status::Value("bicycle check frame_routes") },
+    Assertion { section: "84", says: "the rear wheel's gravity term -mu1 R sin(theta) from its centre S", status: Status::Value("bicycle check grav_rear_heights") },
+    Assertion { section: "84", says: "the front wheel's gravity term from its centre S1", status: Status::Value("bicycle check grav_front_heights") },
+    Assertion { section: "84", says: "the loaded frame's gravity term from its centre C", status: Status::Value("bicycle check grav_frame_heights") },
+    Assertion { section: "85", says: "the equilibrium with hands: the centrifugal rows equal the gravity rows", status: Status::Value("equilibrium with hands, whole equation") },
+    Assertion { section: "85", says: "the loaded frame's row of the table", status: Status::Value("table n° 85, loaded frame, centrifugal terms") },
+    Assertion { section: "85", says: "neglecting the front wheel and the frame gives the hoop's equation; the front wheel only, with d eta/d theta = d nu/d theta = 0, the unicycle's", status: Status::Checked("steady-reduces-to-hoop-and-unicycle") },
+    Assertion { section: "85", says: "the geometric method, simpler, would more easily miss an error and fails for the complete equations", status: Status::Left("an opinion on methods") },
+    Assertion { section: "86", says: "the most important inertia term is the loaded frame's mu R h s n cos(theta), the moment of its centrifugal force; the front wheel's terms are small", status: Status::Checked("steady-leading-inertia-term") },
+    Assertion { section: "86", says: "y is first order with the factor (R sin(omega) - c)/l < 0,07; d eta/d theta first order, d nu/d theta second", status: Status::Checked("steady-orders-fall") },
+    Assertion { section: "86", says: "with n = (R/l) s tan(alpha) and the third order dropped, the equation reduces to (1); the rear wheel merges into the frame's constants", status: Status::Value("bicycle check fall_86_first_order") },
+    Assertion { section: "86", says: "(3) is the equation of the moments of the loaded frame's weight and centrifugal force", status: Status::Left("an interpretation of (3)") },
+    Assertion { section: "86", says: "(3) solved for tan(theta) and tan(alpha): (3)'", status: Status::Value("(3)' of n° 86 bis") },
+    Assertion { section: "86 bis", says: "alpha and n have the sign opposite to theta: leaning left, the rider pulls the left hand and the bicycle turns left", status: Status::Checked("steady-turns-toward-the-lean") },
+    Assertion { section: "86 bis", says: "an error on the handlebar angle gives the centrifugal force a preponderance growing with the speed: at speed the handlebar is moved imperceptibly", status: Status::Checked("steady-handlebar-action-grows-with-speed") },
+    Assertion { section: "86 bis", says: "at high speed tan(alpha)/tan(theta) is small: small handlebar movements compensate the lean", status: Status::Left("quantified in n° 88, whose entries find 0.35 at 20 km/h where the memoir prints 0,035") },
+    Assertion { section: "86 bis", says: "beginners fall by moving the handlebar too briskly; one-handed or centre grip is hard; without hands the balance is assured at sufficient speed (n° 121)", status: Status::Left("riders' experience; the hands-free stability is n° 121, outside this range") },
+    Assertion { section: "86 bis", says: "the rider's position on the saddle does not matter; a passenger can mount and dismount during the ride", status: Status::Left("qualitative; it rests on the ratio of n° 88, ten times larger than printed, so the compensating alpha is not 'très faible' at moderate speed") },
+    Assertion { section: "86 bis", says: "at low speed gravity's influence grows; at rest the equilibrium depends on the body's position only (n° 69)", status: Status::Left("qualitative; the s^2 law of the handlebar's moment is the claim of n° 86 bis above") },
+    Assertion { section: "87", says: "the curvature n/s = (R/l) tan(alpha) = -g tan(theta)/(R s^2) is inversely proportional to the square of the speed", status: Status::Value("conversion curvature n/s") },
+    Assertion { section: "87", says: "1°: a beginner who turns the handlebar left without leaning is thrown to the ground on his right", status: Status::Checked("steady-abrupt-handlebar-throws-outward") },
+    Assertion { section: "87", says: "2°: not slowing enough, the rider cannot give the turn enough curvature", status: Status::Value("conversion curvature n/s") },
+    Assertion { section: "87", says: "3°: on slippery ground theta is limited by the skidding angle (n° 50-52)", status: Status::Left("skidding is not part of the bicycle model; the unicycle's skid entries are n° 30-31") },
+    Assertion { section: "88", says: "tan(alpha)/tan(theta) = 0,035 at 20 km/h: gravity's influence weak, the body's movements 1/30 of the handlebar's", status: Status::Value("|tan(alpha)/tan(theta)| at 20 km/h") },
+    Assertion { section: "88", says: "at half the speed gravity's influence is quadrupled", status: Status::Checked("steady-gravity-quadrupled-at-half-speed") },
+    Assertion { section: "88", says: "at 10 km/h, 0,14: 'elle est encore faible'", status: Status::Value("|tan(alpha)/tan(theta)| at 10 km/h") },
+    Assertion { section: "89", says: "the relative error of the neglected term is (e/h) y/(x sin(theta))", status: Status::Value("bicycle check epsilon_89") },
+    Assertion { section: "89", says: "y/sin(theta) is a small fraction of c - R sin(omega), above all at high speed, so epsilon < (e/h)(c/l)", status: Status::Checked("steady-neglected-term-bound") },
+    Assertion { section: "89", says: "epsilon < 0,20 x 0,073 = 0,015: the approximation was entirely legitimate", status: Status::Value("bound of epsilon") },
+    Assertion { section: "90", says: "hands off, gamma is left to the bicycle's reactions; in a steady state the first term of the handlebar equation vanishes", status: Status::Left("as n° 80, structural") },
+    Assertion { section: "91", says: "dM/d gamma has no partial d/d gamma part for the rear wheel and the frame: their terms are those of n° 83 with d/d theta replaced by d/d gamma", status: Status::Value("bicycle check steer_frame_routes") },
+    Assertion { section: "92", says: "the front wheel's term from the rotation G carried to O1: its first part vanishes in a steady state, G' has no vertical component", status: Status::Value("bicycle check steer_front_routes") },
+    Assertion { section: "93", says: "the gravity terms follow those of n° 85, plus -mu1 R g sin(omega) sin(beta) ([K G k1] 'intuitive par la Géométrie')", status: Status::Left("the term is in the table of n° 94, whose front wheel gravity row is an entry there") },
+    Assertion { section: "94", says: "the handlebar equation: the sum of the first table equals that of the second; front wheel rows", status: Status::Value("table n° 94, front wheel, centrifugal terms") },
+    Assertion { section: "94", says: "the loaded frame's row of the handlebar table", status: Status::Value("table n° 94, loaded frame, centrifugal terms") },
+    Assertion { section: "95", says: "the front wheel's inertia reduces to -B1 s1 n cos(theta1) sin(eta) cos(alpha), the other terms of the factor being second order", status: Status::Value("bicycle check steer_95_first_order") },
+    Assertion { section: "95", says: "d eta/d gamma is first order, d nu/d gamma of order zero", status: Status::Checked("steady-orders-handlebar") },
+    Assertion { section: "95", says: "mu R e and L are not far from equal: no numerical compensation to fear", status: Status::Left("the memoir gives no L; the report's frame moments are illustrative") },
+    Assertion { section: "95", says: "mu e/(mu1 R) = 10,5/3,9: the result is favourable, the term reduces to mu e g (d eta/d gamma) cos(theta)", status: Status::Value("mu1 R (kg m)") },
+    Assertion { section: "95", says: "the simplified handlebar equation and its form (1)", status: Status::Value("bicycle check steer_95_from_before") },
+    Assertion { section: "95", says: "(1)' of the handlebar equation", status: Status::Value("theta1/theta of (1)'") },
+    Assertion { section: "96", says: "mu (e/R)(R sin(omega) - c)/l has the upper limit mu (e/R)(R sin(eta) - c)/l", status: Status::Checked("steady-omega-below-eta") },
+    Assertion { section: "96", says: "2 sin(eta) differs little from 1", status: Status::Value("2 sin(eta)") },
+    Assertion { section: "96", says: "the handlebar equation in mu', mu'', mu'''", status: Status::Value("theta1/theta = (mu' - mu''')/mu'") },
+    Assertion { section: "97", says: "theta1 has the sign of theta: both wheels lean to the same side in a turn", status: Status::Checked("steady-wheels-lean-alike") },
+    Assertion { section: "97", says: "but theta1 < theta by (1) of n° 96", status: Status::Value("theta1/theta of the handlebar equation") },
+    Assertion { section: "97", says: "whereas the geometry imposes theta1 > theta (gamma negative when theta positive)", status: Status::Value("theta1/theta imposed by the geometry") },
+    Assertion { section: "97", says: "so the normal position is the only equilibrium without hands: 'il serait impossible d'effectuer une conversion sans les mains'", status: Status::Value("speed of a steady turn without hands") },
+    Assertion { section: "97", says: "the rider must shift his body laterally to change the steady state and to keep it", status: Status::Value("speed of a steady turn without hands") },
+    Assertion { section: "98", says: "a lateral shift of the body does not change the centrifugal moment sensibly; the gravity moment becomes mu g h sin(theta + epsilon)", status: Status::Left(LATERAL_98) },
+    Assertion { section: "98", says: "the handlebar equation is not changed by the lateral shift", status: Status::Left(LATERAL_98) },
+    Assertion { section: "98", says: "the approximate equations (delta theta), (delta gamma) with epsilon, and theta1 proportional to theta + epsilon", status: Status::Value("lateral shift epsilon/theta at 20 km/h") },
+    Assertion { section: "98", says: "epsilon makes the formula compatible with the geometry: turns without hands become possible", status: Status::Value("lateral shift epsilon/theta at 20 km/h") },
+    Assertion { section: "99", says: "the kinetic energy, useless for the steady equations, is needed for the stability", status: Status::Left("structural (n° 80)") },
+    Assertion { section: "99", says: "the wheels' doubled kinetic energies 2 T1, 2 T2", status: Status::Checked("steady-wheel-kinetic-energies") },
+    Assertion { section: "99", says: "the loaded frame's velocity M' = I R (s + eta') + |Psi (M - O) and its 2 T0", status: Status::Value("2 T0 of the loaded frame") },
+    Assertion { section: "100", says: "dT/dp by the chain rule through n, eta', n1, s1, p1, functions of s, p, gamma' (n° 66, 66 bis)", status: Status::Left("structural; the relations of n° 66 are entries there") },
+    Assertion { section: "100", says: "the partial derivatives (1)-(3) of T0", status: Status::Value("dT0/d eta'") },
+    Assertion { section: "100", says: "d eta'/dp and dn/dp equal d eta/d theta and d nu/d theta of n° 66", status: Status::Left("the rate relations of n° 66 are its displacement relations with the same coefficients (entries of n° 66)") },
+    Assertion { section: "100", says: "the complete calculation would be long and fruitless: only the terms that matter for stability are kept", status: Status::Left("an opinion on method") },
+];

@@ -92,12 +92,12 @@ fn turn_entries(bike: &LockedSteer, gdeg: f64, kmh: f64, e: &mut Vec<Entry>) -> 
     if let Some(memoir_lean) = bike.memoir_lean(gamma, v) {
         e.push(approx(
             "86",
-            format!("lean theta0 of the steady turn with the handlebar held (rad), {at}"),
+            format!("lean theta0 of a steady turn, hands held (rad), reconstructed, {at}"),
             memoir_lean,
             th,
             order,
             format!(
-                "memoir: (3)' of n° 86 bis, tan(theta) = -(R/l)(R s^2/g) tan(alpha), alpha of n° 57 at theta (eta = 25°); derived: the lean that balances the lean row of the nonlinear model (Newton, residual {} N m, pitch {:.3e} rad, hands' torque {:.4} N m, pedal torque {} N m); (3)' keeps only the frame's centrifugal term: it drops the wheels' gyroscopic 2 B1 s n, the wheels' weight 2 mu1 R and the weight moment g Q of the front contact's trail and the frame's e (the n° 117 coefficient B)",
+                "memoir (reconstructed, not printed: the memoir gives no number for this turn): (3)' of n° 86 bis, tan(theta) = -(R/l)(R s^2/g) tan(alpha), alpha of n° 57 at theta (eta = 25°), evaluated here at a turn of our choosing, so the verdict judges the approximation the memoir declares (policy approx), never a printed digit; derived: the lean that balances the lean row of the nonlinear model (Newton, residual {} N m, pitch {:.3e} rad, hands' torque {:.4} N m, pedal torque {} N m); (3)' keeps only the frame's centrifugal term: it drops the wheels' gyroscopic 2 B1 s n, the wheels' weight 2 mu1 R and the weight moment g Q of the front contact's trail and the frame's e (the n° 117 coefficient B)",
                 small(t.lean_residual, 1e-12),
                 t.pitch,
                 t.hands_torque,
@@ -108,11 +108,11 @@ fn turn_entries(bike: &LockedSteer, gdeg: f64, kmh: f64, e: &mut Vec<Entry>) -> 
     let memoir_n = bike.memoir_yaw_rate(gamma, v, th);
     e.push(approx(
         "86",
-        format!("turning rate n of the steady turn (1/s), {at}"),
+        format!("turning rate n of a steady turn (1/s), reconstructed, {at}"),
         memoir_n,
         t.yaw_rate,
         order,
-        "memoir: (2) of n° 86, n = (R/l) s tan(alpha) at the exact lean; derived: the yaw rate of the nonlinear model's rolling constraints".into(),
+        "memoir (reconstructed, not printed): (2) of n° 86, n = (R/l) s tan(alpha) at the exact lean, evaluated here at a turn of our choosing (policy approx); derived: the yaw rate of the nonlinear model's rolling constraints".into(),
     ));
     // (C) itself.
     e.push(Entry {

@@ -61,3 +61,47 @@ fn text_report_snapshot() {
         insta::assert_snapshot!("bicycle_geometry_report_text", text);
     });
 }
+
+/// The claims of this report ([`carvallo_report::claims`]): the expected verdict of each.
+fn expected_claims() -> BTreeMap<&'static str, Verdict> {
+    BTreeMap::from([
+        ("geometry-axis-crosses-contact-radius", Verdict::Agrees),
+        ("geometry-right-angle-turn-lowers-frame", Verdict::Agrees),
+        ("geometry-sigma1-barely-moves-mu", Verdict::Agrees),
+        ("geometry-lowest-frame-where-e-touches", Verdict::Agrees),
+    ])
+}
+
+#[test]
+fn claims_have_the_expected_verdicts() {
+    let claims = carvallo_report::bicycle::geometry::claims();
+    let expected = expected_claims();
+    assert_eq!(
+        claims.len(),
+        expected.len(),
+        "claims: {:?}",
+        claims.iter().map(|c| &c.id).collect::<Vec<_>>()
+    );
+    for c in &claims {
+        assert_eq!(
+            expected.get(c.id.as_str()),
+            Some(&c.verdict),
+            "{}: {}",
+            c.id,
+            c.evidence_text()
+        );
+    }
+}
+
+#[test]
+fn claims_text_snapshot() {
+    let text = carvallo_report::normalise_numbers(&carvallo_report::claims::render_claims_text(
+        &carvallo_report::bicycle::geometry::claims(),
+    ));
+    insta::with_settings!({
+        description => "carvallo report: the memoir's claims checked in the bicycle geometry report, numbers to 4 significant digits",
+        omit_expression => true,
+    }, {
+        insta::assert_snapshot!("bicycle_geometry_claims_text", text);
+    });
+}

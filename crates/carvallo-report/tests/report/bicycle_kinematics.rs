@@ -41,3 +41,45 @@ fn text_report_snapshot() {
         insta::assert_snapshot!("bicycle_kinematics_report_text", text);
     });
 }
+
+/// The claims of this report ([`carvallo_report::claims`]): the expected verdict of each.
+fn expected_claims() -> BTreeMap<&'static str, Verdict> {
+    BTreeMap::from([
+        ("kinematics-upright-rest-unstable", Verdict::Agrees),
+        ("kinematics-rider-low-and-forward", Verdict::Agrees),
+    ])
+}
+
+#[test]
+fn claims_have_the_expected_verdicts() {
+    let claims = carvallo_report::bicycle::kinematics::claims();
+    let expected = expected_claims();
+    assert_eq!(
+        claims.len(),
+        expected.len(),
+        "claims: {:?}",
+        claims.iter().map(|c| &c.id).collect::<Vec<_>>()
+    );
+    for c in &claims {
+        assert_eq!(
+            expected.get(c.id.as_str()),
+            Some(&c.verdict),
+            "{}: {}",
+            c.id,
+            c.evidence_text()
+        );
+    }
+}
+
+#[test]
+fn claims_text_snapshot() {
+    let text = carvallo_report::normalise_numbers(&carvallo_report::claims::render_claims_text(
+        &carvallo_report::bicycle::kinematics::claims(),
+    ));
+    insta::with_settings!({
+        description => "carvallo report: the memoir's claims checked in the bicycle kinematics report, numbers to 4 significant digits",
+        omit_expression => true,
+    }, {
+        insta::assert_snapshot!("bicycle_kinematics_claims_text", text);
+    });
+}

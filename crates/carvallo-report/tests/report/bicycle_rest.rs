@@ -4,6 +4,8 @@
 //! in the full report, and a snapshot of the text table with numbers normalised to 4
 //! significant digits.
 
+use std::collections::BTreeMap;
+
 use carvallo_report::bicycle::rest::{entries, LEANS, NEGLIGIBLE_DEG};
 use carvallo_report::{render_text_normalised, Derived, Verdict};
 
@@ -41,5 +43,51 @@ fn text_report_snapshot() {
         omit_expression => true,
     }, {
         insta::assert_snapshot!("bicycle_rest_report_text", text);
+    });
+}
+
+/// The claims of this report ([`carvallo_report::claims`]): the expected verdict of each.
+fn expected_claims() -> BTreeMap<&'static str, Verdict> {
+    BTreeMap::from([("rest-light-front-wheel-rests-at-lowest-frame", Verdict::Agrees)])
+}
+
+#[test]
+fn claims_have_the_expected_verdicts() {
+    let claims = carvallo_report::bicycle::rest::claims();
+    let expected = expected_claims();
+    assert_eq!(
+        claims.len(),
+        expected.len(),
+        "claims: {:?}",
+        claims.iter().map(|c| &c.id).collect::<Vec<_>>()
+    );
+    for c in &claims {
+        assert_eq!(
+            expected.get(c.id.as_str()),
+            Some(&c.verdict),
+            "{}: {}",
+            c.id,
+            c.evidence_text()
+        );
+    }
+}
+
+#[test]
+fn the_rest_position_shift_vanishes_with_the_front_wheel() {
+    let c = carvallo_report::bicycle::rest::claims();
+    let e = &c[0].evidence;
+    assert!(e["shift_deg_mu1_5kg"] > 5.0 && e["shift_deg_mu1_0_05kg"] < 0.1, "{e:?}");
+}
+
+#[test]
+fn claims_text_snapshot() {
+    let text = carvallo_report::normalise_numbers(&carvallo_report::claims::render_claims_text(
+        &carvallo_report::bicycle::rest::claims(),
+    ));
+    insta::with_settings!({
+        description => "carvallo report: the memoir's claims checked in the bicycle rest report, numbers to 4 significant digits",
+        omit_expression => true,
+    }, {
+        insta::assert_snapshot!("bicycle_rest_claims_text", text);
     });
 }

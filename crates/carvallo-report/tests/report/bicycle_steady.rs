@@ -113,3 +113,83 @@ fn text_report_snapshot() {
         insta::assert_snapshot!("bicycle_steady_report_text", text);
     });
 }
+
+/// The claims of this report ([`carvallo_report::claims`]): the expected verdict of each.
+fn expected_claims() -> BTreeMap<&'static str, Verdict> {
+    BTreeMap::from([
+        ("steady-pedals-enter-the-rolling-equation-only", Verdict::MemoirError),
+        ("steady-frame-decomposition", Verdict::Agrees),
+        ("steady-frame-six-terms-steady", Verdict::MemoirError),
+        ("steady-frame-six-terms-unsteady", Verdict::MemoirError),
+        ("steady-rear-wheel-terms", Verdict::Agrees),
+        ("steady-front-wheel-terms", Verdict::MemoirError),
+        ("steady-wheel-kinetic-energies", Verdict::Agrees),
+        ("steady-reduces-to-hoop-and-unicycle", Verdict::Agrees),
+        ("steady-leading-inertia-term", Verdict::Agrees),
+        ("steady-orders-fall", Verdict::Agrees),
+        ("steady-orders-handlebar", Verdict::Agrees),
+        ("steady-handlebar-action-grows-with-speed", Verdict::Agrees),
+        ("steady-abrupt-handlebar-throws-outward", Verdict::Agrees),
+        ("steady-gravity-quadrupled-at-half-speed", Verdict::Agrees),
+        ("steady-turns-toward-the-lean", Verdict::Agrees),
+        ("steady-neglected-term-bound", Verdict::MemoirError),
+        ("steady-wheels-lean-alike", Verdict::Agrees),
+        ("steady-omega-below-eta", Verdict::Agrees),
+    ])
+}
+
+#[test]
+fn claims_have_the_expected_verdicts() {
+    let claims = carvallo_report::bicycle::steady::claims();
+    let expected = expected_claims();
+    assert_eq!(
+        claims.len(),
+        expected.len(),
+        "claims: {:?}",
+        claims.iter().map(|c| &c.id).collect::<Vec<_>>()
+    );
+    for c in &claims {
+        assert_eq!(
+            expected.get(c.id.as_str()),
+            Some(&c.verdict),
+            "{}: {}",
+            c.id,
+            c.evidence_text()
+        );
+    }
+}
+
+/// n° 85: the reduction to the hoop and the unicycle is exact, and the frame's term (4) is
+/// the only steady term of n° 83 that fails.
+#[test]
+fn the_reduction_is_exact_and_term_4_is_the_frames_steady_error() {
+    let claims = carvallo_report::bicycle::steady::claims();
+    let get = |id: &str| claims.iter().find(|c| c.id == id).unwrap_or_else(|| panic!("{id}"));
+    let r = &get("steady-reduces-to-hoop-and-unicycle").evidence;
+    for v in r.values() {
+        assert!(*v <= 1e-12, "{r:?}");
+    }
+    let f = &get("steady-frame-six-terms-steady").evidence;
+    for k in [1, 2, 3, 5, 6] {
+        assert!(f[&format!("max_rel_term{k}_steady")] < 1e-12, "{f:?}");
+    }
+    assert!(f["max_rel_term4_steady"] > 0.1 && f["max_rel_term4_corrected"] < 1e-12, "{f:?}");
+    let b = &get("steady-neglected-term-bound").evidence;
+    assert!(
+        b["largest_epsilon_20kmh"] < b["bound"] && b["largest_epsilon_10kmh"] > b["bound"],
+        "{b:?}"
+    );
+}
+
+#[test]
+fn claims_text_snapshot() {
+    let text = carvallo_report::normalise_numbers(&carvallo_report::claims::render_claims_text(
+        &carvallo_report::bicycle::steady::claims(),
+    ));
+    insta::with_settings!({
+        description => "carvallo report: the memoir's claims checked in the bicycle steady report, numbers to 4 significant digits",
+        omit_expression => true,
+    }, {
+        insta::assert_snapshot!("bicycle_steady_claims_text", text);
+    });
+}

@@ -1,0 +1,575 @@
+//! The memoir's claims on the bicycle's steady states with hands and without (n° 79–100),
+//! checked now: the inertia terms term by term by point masses ([`super::inertia_terms`]), the
+//! reduction of the equilibrium equation to the hoop's and the unicycle's with the generated
+//! programs of the three models, the orders of the kinematic coefficients, the signs of the
+//! steady turn in the nonlinear model ([`carvallo::bicycle_turn`]) and the bound of n° 89 at
+//! exact steady turns. Listed in [`super::steady::INVENTORY`].
+
+use carvallo::bicycle_geometry::Geometry;
+use carvallo::bicycle_kinematics::Kinematics;
+use carvallo::bicycle_steady::{BicycleParams, BicycleSteady, SteadyState};
+use carvallo::bicycle_straight::Constants;
+use carvallo::bicycle_turn::LockedSteer;
+use carvallo::hoop::Hoop;
+use carvallo::unicycle::{Rider, Unicycle, Wheel};
+
+use super::inertia_terms::{frame_terms, wheel_terms, RING, STATES};
+use crate::claims::Claim;
+use crate::entry::Verdict;
+use crate::policy::{self, rel_diff, AGREEMENT_TOLERANCE};
+use crate::sample::Rng;
+
+/// Seed of the reduction points of n° 85.
+pub const SEED_85: u64 = 0x6e38_352d_6865_6c70;
+/// Points of the reduction of n° 85.
+pub const POINTS_85: usize = 48;
+/// The steady turns (handlebar angle in degrees, speed in km/h) of the sign and bound checks:
+/// the memoir's 20 and 10 km/h of n° 88, both signs of γ.
+pub const TURNS: [(f64, f64); 6] =
+    [(5.0, 20.0), (10.0, 20.0), (5.0, 10.0), (-5.0, 20.0), (-10.0, 20.0), (-5.0, 10.0)];
+
+/// The exact steady state of the generated `bicycle_steady` program at lean `theta`, steer
+/// `gamma` and rolling rate `s`, the geometry and kinematics of n° 43–66 solved for the old
+/// bicycle of n° 52.
+pub fn exact_state(theta: f64, gamma: f64, s: f64) -> Option<SteadyState> {
+    let geo = Geometry::old_model();
+    let kin = Kinematics::old_model();
+    let c = geo.solve(theta, gamma).ok()?;
+    let fw = geo.front_wheel(theta, gamma, c.sigma, c.mu);
+    let r = kin.relations(theta, gamma).ok()?;
+    Some(SteadyState {
+        theta,
+        theta1: -fw.beta,
+        alpha: fw.alpha,
+        eta: c.sigma,
+        omega: c.mu,
+        s,
+        s1: r.steady_sigma1_rate * s,
+        n: r.steady_n * s,
+        deta: r.d_eta_d_theta,
+        dnu: r.d_nu_d_theta,
+        deta_g: r.d_eta_d_gamma,
+        dnu_g: r.d_nu_d_gamma,
+        p: 0.0,
+        deta_t: 0.0,
+    })
+}
+
+fn worst(values: impl IntoIterator<Item = f64>) -> f64 {
+    values.into_iter().fold(0.0f64, |m, v| if v.is_nan() { f64::NAN } else { m.max(v) })
+}
+
+/// n° 81–83, 99: the inertia terms term by term.
+fn inertia_claims() -> Vec<Claim> {
+    let f = frame_terms();
+    let w = wheel_terms();
+    let tol = 1e-10;
+    let mut out = Vec::new();
+    let how_frame = format!("the loaded frame as 8 point masses symmetric about its plane (e, h, A, B, C, L computed from them), velocities M' = I R (s + eta') + |Psi (M - O) of n° 99, virtual velocity dM/dtheta = |I(M - O) - (d eta/d theta)|j(M - S) + (d nu/d theta)|K(M - O) of n° 83 differentiated exactly (I' = J n, j' = |Phi j); each of the six parallelepiped sums taken point by point against the printed term, at {STATES} seeded arbitrary states (theta, p, n, s, eta', d eta/d theta, d nu/d theta and the rates of the last two drawn freely: these are identities) and {STATES} steady ones (p = eta' = 0 and both rates zero, the underlined terms dropped); tolerance {tol:e} relative");
+    out.push(Claim::new(
+        "steady-frame-decomposition",
+        "83",
+        "The sum m M'|(dM/d theta)' of the loaded frame splits into exactly six terms: the first line's three parallelepipeds and [I O' M'] vanish.",
+        &how_frame,
+        &[("max_rel_six_terms_vs_whole_sum", f.decomposition)],
+        policy::claim(f.decomposition <= tol, Verdict::DerivationDiffers),
+        "the six computed terms sum to the whole sum m M'|(dM/d theta)' at every state, underlined terms included",
+    ));
+    let names =
+        |ks: &[usize]| ks.iter().map(|k| format!("({})", k + 1)).collect::<Vec<_>>().join(", ");
+    let failing =
+        |v: &[f64; 6]| (0..6).filter(|&k| v[k].is_nan() || v[k] > tol).collect::<Vec<usize>>();
+    let bad_steady = failing(&f.steady);
+    let bad_whole = failing(&f.whole);
+    let bad_fixed = failing(&f.corrected);
+    let mut ev: Vec<(String, f64)> = Vec::new();
+    for k in 0..6 {
+        ev.push((format!("max_rel_term{}_steady", k + 1), f.steady[k]));
+    }
+    ev.push(("max_rel_term4_corrected".into(), f.corrected[3]));
+    let ev_ref: Vec<(&str, f64)> = ev.iter().map(|(k, v)| (k.as_str(), *v)).collect();
+    out.push(Claim::new(
+        "steady-frame-six-terms-steady",
+        "83",
+        "The steady parts of the six terms (1)-(6) of the loaded frame as printed in n° 83 (the underlined terms dropped).",
+        &how_frame,
+        &ev_ref,
+        policy::claim(bad_steady.is_empty(), if bad_steady == [3] && f.corrected[3] <= tol { Verdict::MemoirError } else { Verdict::DerivationDiffers }),
+        &format!(
+            "steady parts that do not agree: {}. Term (4), read with mu R e sin(theta) where the OCR prints mu R sin(theta) (dimension), has the steady part (d eta/d theta) n^2 cos(theta)(L cos(theta) - mu R e sin(theta)) where the points give (d eta/d theta) n^2 cos^2(theta)(mu R e - L) (the corrected form agrees to {:.1e}): this one term is the whole error of the loaded frame's row in the tables of n° 85 and 94 (entries there). It is of the third order in the angles, so the reductions of n° 86 and 95 are unaffected",
+            if bad_steady.is_empty() { "none".to_string() } else { names(&bad_steady) },
+            f.corrected[3]
+        ),
+    ));
+    let mut ev: Vec<(String, f64)> = Vec::new();
+    for k in 0..6 {
+        ev.push((format!("max_rel_term{}_printed", k + 1), f.whole[k]));
+        ev.push((format!("max_rel_term{}_corrected", k + 1), f.corrected[k]));
+    }
+    ev.push(("max_rel_printed_sum".into(), f.sum_whole));
+    let ev_ref: Vec<(&str, f64)> = ev.iter().map(|(k, v)| (k.as_str(), *v)).collect();
+    out.push(Claim::new(
+        "steady-frame-six-terms-unsteady",
+        "83",
+        "The six terms (1)-(6) of the loaded frame as printed in n° 83 with their underlined (non-steady) parts, the sum m M'|(dM/d theta)' the stability of n° 100-105 starts from.",
+        &how_frame,
+        &ev_ref,
+        policy::claim(bad_whole.is_empty(), if bad_fixed.is_empty() { Verdict::MemoirError } else { Verdict::DerivationDiffers }),
+        &format!(
+            "terms that do not agree as printed: {}; with the corrections below every term agrees{}. (3), (4), (6) carry L with the sign opposite to the one of n° 99-100 (2 T0 = ... - 2 L p n cos(theta), dT0/dp = A p - L n cos(theta), both agreeing with the derivation for L = sum m z x): the moment of momentum about O has the k-component C n cos(theta) - L p, printed L p + C n cos(theta) in (3) and (6), and (4) has -L p^2 and L cos(theta) for +L p^2 and -L cos(theta); (4) also has the wrong steady term above; (5) lacks -B eta' (its bracket's eta' coefficient is mu R (2h - R) - B). Terms (1) and (2) hold whole",
+            if bad_whole.is_empty() { "none".to_string() } else { names(&bad_whole) },
+            if bad_fixed.is_empty() { String::new() } else { format!(" except {}", names(&bad_fixed)) }
+        ),
+    ));
+    let how_wheel = format!("each wheel a ring of {RING} equal masses (its moments about the contact point are then exactly 3/2, 2, 1/2 mu1 R^2, checked to {:.1e}), velocities M' = |Omega(M - O) of a rolling wheel (n° 2, 5); the sums taken point by point at {STATES} seeded arbitrary and {STATES} steady states; tolerance {tol:e} relative", w.ring_moments);
+    out.push(Claim::new(
+        "steady-rear-wheel-terms",
+        "81",
+        "The rear wheel's sum m M'|(dM/d theta)' is B1 s n cos(theta) + (B1 - C1) n^2 sin(theta) cos(theta) plus the underlined (d nu/d theta)'[B1 s sin(theta) + (C1 cos^2 + B1 sin^2) n] + mu1 R^2 p s (d nu/d theta) cos(theta), which vanishes in a steady state.",
+        &how_wheel,
+        &[("max_rel_whole", w.rear_whole), ("max_rel_term2", w.rear_term2), ("ring_moments_max_rel", w.ring_moments)],
+        policy::claim(w.rear_whole <= tol && w.rear_term2 <= tol, Verdict::DerivationDiffers),
+        "the printed formula holds at every state, non-steady part included; the parallelepiped [Theta M' M'] is zero as the memoir says",
+    ));
+    let front_ok_steady = w.front_printed_steady <= tol && w.front_route <= tol;
+    out.push(Claim::new(
+        "steady-front-wheel-terms",
+        "82",
+        "The front wheel's sum m M'|(dM/d theta)' is (2) mu1 R^2 p1 s1 [Theta1 I1 j1] + (3) Theta1'|(A1 p1 I1 + B1 q1 j1 + C1 r1 k1) with Theta1' of (1'), and in a steady state (cos(alpha) - sin(alpha) cos(theta) d eta/d theta)[B1 s1 n cos(theta1) + (B1 - C1) n^2 sin(theta1) cos(theta1)].",
+        &format!("{how_wheel}; the front wheel's axes at a free heading alpha and lean theta1 (n° 58), Theta1 = I - j d eta/d theta + K d nu/d theta + j1 d sigma1/d theta with its exact derivative (j1' = |(I1 p1 + K n1) j1) or with the printed (1')"),
+        &[
+            ("max_rel_route_exact_theta1_dot", w.front_route),
+            ("max_rel_printed_steady", w.front_printed_steady),
+            ("max_rel_printed_whole", w.front_printed_whole),
+            ("max_rel_sign_of_j1_term_flipped", w.front_sign_corrected),
+        ],
+        policy::claim(front_ok_steady && w.front_printed_whole <= tol, Verdict::MemoirError),
+        "the route (2) + (3) holds at every state with the exact Theta1' (term (2) with R^2, the OCR reads one R), and the steady result holds; but (1') writes (-p1 k1 + I1 n1 cos(theta1)) d sigma1/d theta where the derivative of + j1 d sigma1/d theta is (+p1 k1 - I1 n1 cos(theta1)) d sigma1/d theta (the sign copied from the frame's -j d eta/d theta term just before it); with that sign flipped the printed non-steady sum holds. The slip is harmless in a steady state (p1 = 0 and the I1 component meets J1 at right angles), which is all the memoir uses it for",
+    ));
+    out.push(Claim::new(
+        "steady-wheel-kinetic-energies",
+        "99",
+        "The doubled kinetic energies of the wheels are 2 T1 = A1 p^2 + B1 (s + n sin(theta))^2 + C1 n^2 cos^2(theta) and 2 T2 the same with the front wheel's p1, s1, n1, theta1.",
+        &how_wheel,
+        &[("max_rel", w.kinetic)],
+        policy::claim(w.kinetic <= tol, Verdict::DerivationDiffers),
+        "sum m M'^2 of the rings against the printed forms, both wheels, arbitrary and steady states",
+    ));
+    out
+}
+
+/// n° 85: the bicycle's equilibrium equation reduces to the hoop's and to the unicycle's.
+fn reduction_claim() -> Claim {
+    let mut rng = Rng(SEED_85);
+    let (mut hoop_d, mut uni_d, mut hoop_m, mut uni_m) = (0.0f64, 0.0f64, 0.0f64, 0.0f64);
+    for _ in 0..POINTS_85 {
+        let radius = rng.uniform(0.3, 0.7);
+        let wheel_mass = rng.uniform(1.0, 8.0);
+        let m = wheel_mass * radius * radius;
+        let c = rng.uniform(3.0, 15.0);
+        let a = rng.uniform(40.0, 120.0);
+        let p = BicycleParams {
+            radius,
+            g: rng.uniform(5.0, 15.0),
+            mass: rng.uniform(40.0, 100.0),
+            e: rng.uniform(0.0, 0.4),
+            h: rng.uniform(0.8, 1.3),
+            a,
+            b: a + rng.uniform(-c, c),
+            c,
+            l_product: rng.uniform(-10.0, 10.0),
+            wheel_mass,
+            a1: 1.5 * m,
+            b1: 2.0 * m,
+            c1: 0.5 * m,
+            wheelbase: rng.uniform(0.9, 1.3),
+            offset: rng.uniform(0.0, 0.1),
+        };
+        let Ok(bike) = BicycleSteady::new(p) else {
+            return failed_reduction();
+        };
+        let x = SteadyState {
+            theta: rng.uniform(-0.6, 0.6),
+            theta1: rng.uniform(-0.6, 0.6),
+            alpha: rng.uniform(-0.6, 0.6),
+            eta: rng.uniform(0.2, 0.6),
+            omega: rng.uniform(0.0, 0.5),
+            s: rng.uniform(2.0, 30.0),
+            s1: rng.uniform(2.0, 30.0),
+            n: rng.uniform(-2.0, 2.0),
+            // the memoir's limit: d eta/d theta = d nu/d theta = 0
+            deta: 0.0,
+            dnu: 0.0,
+            ..SteadyState::default()
+        };
+        let o = |name: &str| bike.output(&x, name).unwrap_or(f64::NAN);
+        let (Ok(hoop), Ok(uni)) = (
+            Hoop::new(p.radius, p.wheel_mass, p.g),
+            Unicycle::new(
+                p.radius,
+                p.g,
+                Rider { mass: p.mass, height: p.h, a: p.a, b: p.b, c: p.c, l: p.l_product },
+                Wheel { mass: p.wheel_mass, a1: p.a1, b1: p.b1, c1: p.c1 },
+            ),
+        ) else {
+            return failed_reduction();
+        };
+        // (E) of the hoop is p' at p = 0: times A1 it is the rear wheel's moment (N m).
+        let hoop_eq = p.a1 * hoop.equilibrium(x.theta, x.s, x.n);
+        let uni_eq = uni.equilibrium(x.theta, x.s, x.n);
+        let rear = o("fall_rear") - o("fall_grav_rear");
+        let rear_frame = rear + o("fall_frame") - o("fall_grav_frame");
+        let rear_m = o("memoir_fall_rear") - o("memoir_fall_grav_rear");
+        let rear_frame_m = rear_m + o("memoir_fall_frame") - o("memoir_fall_grav_frame");
+        hoop_d = worst([hoop_d, rel_diff(rear, hoop_eq)]);
+        uni_d = worst([uni_d, rel_diff(rear_frame, uni_eq)]);
+        hoop_m = worst([hoop_m, rel_diff(rear_m, hoop_eq)]);
+        uni_m = worst([uni_m, rel_diff(rear_frame_m, uni_eq)]);
+    }
+    let holds = [hoop_d, uni_d, hoop_m, uni_m].iter().all(|v| *v <= AGREEMENT_TOLERANCE);
+    Claim::new(
+        "steady-reduces-to-hoop-and-unicycle",
+        "85",
+        "'On retrouve l'équation d'équilibre du cerceau en négligeant les termes qui proviennent de la roue directrice et du cadre. En négligeant la roue directrice seulement, on obtient une équation qui reproduit celle du monocycle quand on fait d eta/d theta = 0, d nu/d theta = 0.'",
+        &format!("generated bicycle_steady: (fall_rear - fall_grav_rear) against A1 times the generated hoop (E) of n° 8 (p' at p = 0), and (fall_rear + fall_frame - fall_grav_rear - fall_grav_frame) against the generated unicycle (E) of n° 29 with the rider's constants mu, h, A, B, C, L set to the loaded frame's and the wheel's to the rear wheel's; the same with the memoir's printed rows (memoir_fall_*); {POINTS_85} seeded points (hoop wheels of 1-8 kg and 0.3-0.7 m, frames of 40-100 kg, |theta| <= 0.6, s 2-30/s, |n| <= 2), d eta/d theta = d nu/d theta = 0; agreement within {AGREEMENT_TOLERANCE:e} relative"),
+        &[
+            ("max_rel_rear_vs_hoop", hoop_d),
+            ("max_rel_rear_frame_vs_unicycle", uni_d),
+            ("max_rel_printed_rear_vs_hoop", hoop_m),
+            ("max_rel_printed_rear_frame_vs_unicycle", uni_m),
+        ],
+        policy::claim(holds, Verdict::DerivationDiffers),
+        "holds exactly, derived and printed rows alike (the printed frame row's error sits in d eta/d theta terms, which the limit removes); the hoop's equation is recovered with the wheel's own A1 as the factor of p'",
+    )
+}
+
+fn failed_reduction() -> Claim {
+    Claim::new(
+        "steady-reduces-to-hoop-and-unicycle",
+        "85",
+        "The bicycle's equilibrium equation reduces to the hoop's and the unicycle's.",
+        "construction of the models failed",
+        &[],
+        Verdict::DerivationDiffers,
+        "a model could not be built from the seeded constants",
+    )
+}
+
+/// n° 86 and 95: the orders of the kinematic coefficients, by halving the angles.
+fn order_claims() -> Vec<Claim> {
+    let kin = Kinematics::old_model();
+    let geo = Geometry::old_model();
+    let eps = 0.02;
+    // a steady-turn-like position: gamma opposite to theta (n° 97)
+    let at = |k: f64| kin.relations(k * eps, -k * eps).ok();
+    let y_at = |k: f64| {
+        let (t, g) = (k * eps, -k * eps);
+        geo.solve(t, g).ok().map(|c| geo.front_wheel(t, g, c.sigma, c.mu).contact[1])
+    };
+    let (Some(r1), Some(r2), Some(y1), Some(y2), Ok(r0)) =
+        (at(1.0), at(2.0), y_at(1.0), y_at(2.0), kin.relations(0.0, 0.0))
+    else {
+        return Vec::new();
+    };
+    let ratio = |a: f64, b: f64| b / a;
+    let ry = ratio(y1, y2);
+    let rdeta = ratio(r1.d_eta_d_theta, r2.d_eta_d_theta);
+    let rdnu = ratio(r1.d_nu_d_theta, r2.d_nu_d_theta);
+    let rdeta_g = ratio(r1.d_eta_d_gamma, r2.d_eta_d_gamma);
+    let rdnu_g = ratio(r1.d_nu_d_gamma, r2.d_nu_d_gamma);
+    let near = |r: f64, target: f64| (r - target).abs() <= 0.05 * target;
+    // the factor (R sin(omega) - c)/l of y at theta = 0, largest at gamma = 0 (omega = eta0)
+    let sg = (10f64).to_radians();
+    let factor = geo
+        .solve(0.0, sg)
+        .map(|c| -geo.front_wheel(0.0, sg, c.sigma, c.mu).contact[1] / (geo.wheelbase() * sg.sin()))
+        .unwrap_or(f64::NAN);
+    let bound = (geo.radius() * geo.sigma0().sin() - geo.offset()) / geo.wheelbase();
+    let how = format!("generated relations (I) of n° 66 and the exact contact (old bicycle of n° 52) at theta = {eps} rad, gamma = -{eps} rad and at twice both: a quantity of order k grows by 2^k (tolerance 5 %)");
+    let c86 = Claim::new(
+        "steady-orders-fall",
+        "86",
+        "y is of the first order with the small factor (R sin(omega) - c)/l < 0,07; d eta/d theta is of the first order and d nu/d theta of the second.",
+        &how,
+        &[
+            ("growth_y", ry),
+            ("growth_d_eta_d_theta", rdeta),
+            ("growth_d_nu_d_theta", rdnu),
+            ("y_factor_at_theta0_gamma10", factor),
+            ("y_factor_bound_R_sin_eta0_minus_c_over_l", bound),
+        ],
+        policy::claim(near(ry, 2.0) && near(rdeta, 2.0) && near(rdnu, 4.0) && factor < bound, Verdict::DerivationDiffers),
+        "holds; the factor's bound is 0.0733 (printed 0,07)",
+    );
+    let c95 = Claim::new(
+        "steady-orders-handlebar",
+        "95",
+        "d eta/d gamma is of the first order and d nu/d gamma of order zero (n° 66).",
+        &how,
+        &[
+            ("growth_d_eta_d_gamma", rdeta_g),
+            ("growth_d_nu_d_gamma", rdnu_g),
+            ("d_eta_d_gamma_upright", r0.d_eta_d_gamma),
+            ("d_nu_d_gamma_upright", r0.d_nu_d_gamma),
+        ],
+        policy::claim(near(rdeta_g, 2.0) && near(rdnu_g, 1.0) && r0.d_eta_d_gamma.abs() < 1e-12 && r0.d_nu_d_gamma.abs() > 0.01, Verdict::DerivationDiffers),
+        "holds: d eta/d gamma vanishes upright and grows linearly, d nu/d gamma is (R sin(eta0) - c)/l upright",
+    );
+    vec![c86, c95]
+}
+
+/// Steady turns of the nonlinear model at [`TURNS`]: (gamma, speed m/s, lean, yaw rate).
+fn turns() -> Option<Vec<(f64, f64, f64, f64)>> {
+    let bike = LockedSteer::new(Constants::MEMOIR).ok()?;
+    TURNS
+        .iter()
+        .map(|&(gdeg, kmh)| {
+            let t = bike.steady_turn(gdeg.to_radians(), kmh / 3.6).ok()?;
+            Some((t.gamma, t.speed, t.lean, t.yaw_rate))
+        })
+        .collect()
+}
+
+/// n° 86 bis, 87, 88, 89, 96, 97: signs and sizes of the steady turn.
+fn turn_claims() -> Vec<Claim> {
+    let mut out = Vec::new();
+    let geo = Geometry::old_model();
+    let Some(ts) = turns() else {
+        return out;
+    };
+    // n° 86 bis: alpha and n opposite to theta; lean left, handlebar left, turn left.
+    let mut all = true;
+    let mut min_margin = f64::INFINITY;
+    let mut alphas = Vec::new();
+    for &(gamma, _, lean, n) in &ts {
+        let alpha = geo
+            .solve(lean, gamma)
+            .map(|c| geo.front_wheel(lean, gamma, c.sigma, c.mu).alpha)
+            .unwrap_or(f64::NAN);
+        alphas.push(alpha);
+        all &= alpha * lean < 0.0 && n * lean < 0.0 && gamma * n > 0.0;
+        min_margin = min_margin.min((alpha * lean).abs().min((n * lean).abs()));
+    }
+    out.push(Claim::new(
+        "steady-turns-toward-the-lean",
+        "86 bis",
+        "alpha and n have the sign opposite to theta: 'si la bicyclette penche à gauche, le cavalier doit ramener à lui la main gauche et la bicyclette converge alors à gauche'.",
+        "the steady turns of the nonlinear Carvallo-Whipple model with the handlebar held (carvallo::bicycle_turn, constants of n° 117; Newton on the lean row) at gamma = ±5°, ±10° and 20, 10 km/h; alpha of n° 57 at the turn's (theta, gamma) from the exact contact; signs in Carvallo's conventions (theta > 0 leans right, gamma, alpha, n > 0 turn left)",
+        &[
+            ("turns", ts.len() as f64),
+            ("lean_at_gamma_plus5_20kmh", ts[0].2),
+            ("yaw_rate_at_gamma_plus5_20kmh", ts[0].3),
+            ("alpha_at_gamma_plus5_20kmh", alphas[0]),
+            ("smallest_product_magnitude", min_margin),
+        ],
+        policy::claim(all, Verdict::DerivationDiffers),
+        "holds exactly (not only at first order): at every turn the bicycle leans, steers and turns to the same side, alpha and n of the sign opposite to theta",
+    ));
+    // n° 89: the bound epsilon < (e/h)(c/l) at exact steady turns.
+    let (e, h) = (0.20, 1.0);
+    let bound = e / h * geo.offset() / geo.wheelbase();
+    let mut eps = Vec::new();
+    for &(gamma, _, lean, _) in &ts {
+        let v = geo
+            .solve(lean, gamma)
+            .map(|c| {
+                let [x, y] = geo.front_wheel(lean, gamma, c.sigma, c.mu).contact;
+                (e / h * y / (x * lean.sin())).abs()
+            })
+            .unwrap_or(f64::NAN);
+        eps.push(v);
+    }
+    let fast = worst([eps[0], eps[1], eps[3], eps[4]]);
+    let slow = worst([eps[2], eps[5]]);
+    out.push(Claim::new(
+        "steady-neglected-term-bound",
+        "89",
+        "The relative size of the neglected -mu g e cos(theta) d eta/d theta is below (e/h)(c/l) = 0,015, because y/sin(theta) is 'une petite fraction de c - R sin(omega), surtout aux grandes vitesses'.",
+        "epsilon = (e/h) y/(x sin(theta)) (printed (1) of n° 89, symbolic check epsilon_89) with x, y of the exact front contact (old bicycle of n° 52) at the lean and handlebar angle of the nonlinear model's steady turns of claim steady-turns-toward-the-lean; e = 0.20 m, h = 1 m as in n° 89",
+        &[
+            ("bound", bound),
+            ("largest_epsilon_20kmh", fast),
+            ("largest_epsilon_10kmh", slow),
+            ("epsilon_gamma5_20kmh", eps[0]),
+            ("epsilon_gamma5_10kmh", eps[2]),
+        ],
+        policy::claim(fast <= bound && slow <= bound, Verdict::MemoirError),
+        &format!(
+            "at 20 km/h the bound holds ({fast:.4}); at 10 km/h it does not ({slow:.4} > {bound:.4}): sin(gamma)/sin(theta) is about |tan(alpha)/tan(theta)|, which the memoir takes from n° 88 as 0,035 at 20 km/h where it is 0.35 (1.4 at 10 km/h), so y/sin(theta) is not a small fraction of c - R sin(omega) at moderate speed. The conclusion that the term is negligible still holds in these turns (epsilon of a few per cent)"
+        ),
+    ));
+    // n° 97: both wheels lean to the same side.
+    let mut same = true;
+    let mut ratios = Vec::new();
+    for &(gamma, _, lean, _) in &ts {
+        let r = geo
+            .solve(lean, gamma)
+            .map(|c| -geo.front_wheel(lean, gamma, c.sigma, c.mu).beta / lean)
+            .unwrap_or(f64::NAN);
+        same &= r > 0.0;
+        ratios.push(r);
+    }
+    let bike = BicycleSteady::new(BicycleParams::memoir());
+    let first_order = bike.map(|b| b.theta1_over_theta(25f64.to_radians())).unwrap_or(f64::NAN);
+    out.push(Claim::new(
+        "steady-wheels-lean-alike",
+        "97",
+        "'Je trouve bien, comme il était à prévoir, une valeur de theta1 de même signe que theta: les deux roues doivent pencher du même côté dans une conversion.'",
+        "theta1 = -beta of n° 57 from the exact contact at the nonlinear model's steady turns (claim steady-turns-toward-the-lean), and the generated first-order ratio theta1_over_theta of the handlebar equation (memoir's constants of n° 96)",
+        &[
+            ("smallest_theta1_over_theta_exact", ratios.iter().copied().fold(f64::INFINITY, f64::min)),
+            ("largest_theta1_over_theta_exact", ratios.iter().copied().fold(0.0, f64::max)),
+            ("theta1_over_theta_first_order", first_order),
+        ],
+        policy::claim(same && first_order > 0.0, Verdict::DerivationDiffers),
+        "holds: theta1/theta is positive, and above 1, in every turn (the front wheel leans more, n° 97's geometric statement)",
+    ));
+    // n° 96: omega <= eta in the steady turns (gamma opposite to theta).
+    let mut max_excess = f64::NEG_INFINITY;
+    let mut cases = 0usize;
+    for it in 0..=8 {
+        for ig in 0..=12 {
+            let theta = (5.0 * it as f64).to_radians();
+            let gamma = -(5.0 * ig as f64).to_radians();
+            if let Ok(c) = geo.solve(theta, gamma) {
+                max_excess = max_excess.max(c.mu - geo.sigma0());
+                cases += 1;
+            }
+        }
+    }
+    let opposite = geo.solve(0.3, 0.3).map(|c| c.mu - geo.sigma0()).unwrap_or(f64::NAN);
+    out.push(Claim::new(
+        "steady-omega-below-eta",
+        "96",
+        "mu (e/R)(R sin(omega) - c)/l has the upper limit mu (e/R)(R sin(eta) - c)/l: omega does not exceed eta = 25°.",
+        "the exact contact angle omega (mu of ch. I) of the old bicycle of n° 52 on the grid theta = 0..40°, gamma = 0..-60° by 5° (gamma opposite to theta, as in every steady turn, n° 97), against eta0 = 25°",
+        &[
+            ("cases", cases as f64),
+            ("largest_omega_minus_eta_rad", max_excess),
+            ("omega_minus_eta_at_theta_gamma_0_3_same_sign", opposite),
+        ],
+        policy::claim(cases > 0 && max_excess <= 1e-12, Verdict::DerivationDiffers),
+        "holds wherever gamma and theta have opposite signs, which the steady turns have; with both of one sign omega exceeds eta (last number), a position no steady turn with hands takes",
+    ));
+    out
+}
+
+/// n° 79, 86 bis, 87, 88: the handlebar's and the pedals' actions.
+fn action_claims() -> Vec<Claim> {
+    let mut out = Vec::new();
+    let Ok(bike) = BicycleSteady::new(BicycleParams::memoir()) else {
+        return out;
+    };
+    let r = bike.params().radius;
+    let s20 = 20.0 / 3.6 / r;
+    let gamma = 10f64.to_radians();
+    let f = |s: f64| {
+        exact_state(0.0, gamma, s)
+            .and_then(|x| bike.output(&x, "fall_equilibrium"))
+            .unwrap_or(f64::NAN)
+    };
+    let (f0, f1, f2) = (f(0.0), f(s20), f(2.0 * s20));
+    let growth = (f2 - f0) / (f1 - f0);
+    let x = exact_state(0.0, gamma, s20);
+    let a = x.and_then(|x| bike.output(&x, "dfdpp_frame")).unwrap_or(f64::NAN);
+    out.push(Claim::new(
+        "steady-handlebar-action-grows-with-speed",
+        "86 bis",
+        "An error of the handlebar angle gives the centrifugal force a preponderance the larger the greater the speed: 'aux grandes vitesses, le guidon doit être manœuvré avec précaution'.",
+        "the generated steady fall equation (fall_equilibrium, centrifugal minus gravity, memoir's constants) at the exact upright state theta = 0 with the handlebar at gamma = 10° (geometry and kinematics of n° 43-66 solved), at s = 0, s20 (20 km/h) and 2 s20: the handlebar's moment f(s) - f(0) against speed",
+        &[
+            ("moment_at_rest_N_m", f0),
+            ("moment_20kmh_N_m", f1),
+            ("growth_when_speed_doubles", growth),
+        ],
+        policy::claim((growth - 4.0).abs() <= 1e-9, Verdict::DerivationDiffers),
+        "holds: the handlebar's moment is proportional to s^2 (exactly 4 when the speed doubles); at rest only the small weight terms of the front wheel and of e d eta/d theta remain",
+    ));
+    out.push(Claim::new(
+        "steady-abrupt-handlebar-throws-outward",
+        "87",
+        "A rider who turns the handlebar to the left without leaning 'sera jeté à terre sur sa droite'.",
+        "sign of the generated fall equation f = (dT/dp)' (centrifugal minus gravity rows, the memoir's (δθ) of n° 80) at the exact upright state theta = 0 with the handlebar turned left (gamma = +10°) at 20 km/h, with the frame's coefficient of p' (dfdpp_frame) positive: then p' > 0, the lean grows to the right (theta > 0)",
+        &[("f_N_m", f1), ("coefficient_of_p_prime_kg_m2", a)],
+        policy::claim(f1 > 0.0 && a > 0.0, Verdict::DerivationDiffers),
+        "holds: the centrifugal moment of a left turn taken upright throws the bicycle to the right, at a rate growing as s^2 (claim steady-handlebar-action-grows-with-speed)",
+    ));
+    let q = bike.tan_alpha_over_tan_theta(s20 / 2.0) / bike.tan_alpha_over_tan_theta(s20);
+    out.push(Claim::new(
+        "steady-gravity-quadrupled-at-half-speed",
+        "88",
+        "'Pour une vitesse moitié moindre, 10 km à l'heure, l'influence de la pesanteur est quadruplée.'",
+        "generated ratio_88 = tan(alpha)/tan(theta) along (3)' at 10 and 20 km/h (memoir's constants)",
+        &[("ratio_10_over_20", q)],
+        policy::claim((q - 4.0).abs() <= 1e-12, Verdict::DerivationDiffers),
+        "holds (the ratio is -g l/(R s)^2); the values themselves are ten times the printed ones (entries of n° 88)",
+    ));
+    // n° 79: the pedals' torque acts on the wheel's rotation relative to the frame, sigma + eta.
+    let kin = Kinematics::old_model();
+    let turn = LockedSteer::new(Constants::MEMOIR)
+        .ok()
+        .and_then(|b| b.steady_turn(5f64.to_radians(), 20.0 / 3.6).ok());
+    let (deta_t, deta_g) = turn
+        .and_then(|t| kin.relations(t.lean, t.gamma).ok())
+        .map_or((f64::NAN, f64::NAN), |r| (r.d_eta_d_theta, r.d_eta_d_gamma));
+    let upright =
+        kin.relations(0.0, 0.0).map_or(f64::NAN, |r| r.d_eta_d_theta.abs() + r.d_eta_d_gamma.abs());
+    out.push(Claim::new(
+        "steady-pedals-enter-the-rolling-equation-only",
+        "79",
+        "'L'action sur les pédales entre seulement dans l'équation de marche; l'action sur le guidon entre dans l'équation de guidon seule.'",
+        "virtual work of the actions: the handlebar torque acts on the fork's rotation relative to the frame, delta gamma itself; the pedals' torque Q acts on the rear wheel's rotation relative to the frame, which n° 68 gives as delta sigma + delta eta, so its generalised forces are Q, Q d eta/d theta, Q d eta/d gamma on (sigma, theta, gamma); d eta/d theta and d eta/d gamma from the generated relations (I) of n° 66 at the nonlinear model's steady turn gamma = 5°, 20 km/h",
+        &[
+            ("d_eta_d_theta_in_turn", deta_t),
+            ("d_eta_d_gamma_in_turn", deta_g),
+            ("sum_of_both_upright", upright),
+        ],
+        policy::claim(deta_t.abs() < 1e-12 && deta_g.abs() < 1e-12, Verdict::MemoirError),
+        "holds for the handlebar; for the pedals only upright and straight: off it the pedal torque enters the fall equation as Q d eta/d theta and the handlebar equation as Q d eta/d gamma (first order in the angles), by the memoir's own rule of n° 68 (the bearings turn by delta sigma + delta eta). In the steady states of n° 80-98 the pedals give no torque (no resistance in the model), so the conclusions there are unaffected; in the stability of n° 100-105, where the pedals hold s, the term belongs to the fall equation",
+    ));
+    out
+}
+
+/// n° 86: the leading inertia term.
+fn leading_term_claim() -> Option<Claim> {
+    let bike = BicycleSteady::new(BicycleParams::memoir()).ok()?;
+    let p = bike.params();
+    let t = LockedSteer::new(Constants::MEMOIR)
+        .ok()?
+        .steady_turn(5f64.to_radians(), 20.0 / 3.6)
+        .ok()?;
+    let x = exact_state(t.lean, t.gamma, t.speed / p.radius)?;
+    let o = |name: &str| bike.output(&x, name).unwrap_or(f64::NAN);
+    let lead = p.mass * p.radius * p.h * x.s * x.n * x.theta.cos();
+    let centrifugal = o("fall_rear") + o("fall_front") + o("fall_frame");
+    let rest = centrifugal - lead;
+    let front = o("fall_front");
+    let share = (rest / lead).abs();
+    Some(Claim::new(
+        "steady-leading-inertia-term",
+        "86",
+        "'Le terme le plus important de l'inertie vient du cadre monté; c'est mu R h s n cos(theta)'; the front wheel's terms are small.",
+        "the generated steady centrifugal rows (fall_rear + fall_front + fall_frame, memoir's constants with the illustrative frame moments) at the exact state of the nonlinear model's steady turn gamma = 5°, 20 km/h (geometry and kinematics of n° 43-66 solved at its lean)",
+        &[
+            ("leading_term_N_m", lead),
+            ("other_centrifugal_terms_over_leading", share),
+            ("front_wheel_over_leading", (front / lead).abs()),
+        ],
+        policy::claim(share < 0.5, Verdict::DerivationDiffers),
+        "holds: the other centrifugal terms together are a fraction of the leading one, mostly the wheels' gyroscopic B1 s n (the memoir merges the rear wheel's into mu R h by 'changing slightly the constants')",
+    ))
+}
+
+/// The claims of n° 79–100.
+pub fn claims() -> Vec<Claim> {
+    let (pedals, actions): (Vec<Claim>, Vec<Claim>) =
+        action_claims().into_iter().partition(|c| c.section == "79");
+    let mut c = pedals;
+    c.extend(inertia_claims());
+    c.push(reduction_claim());
+    c.extend(leading_term_claim());
+    c.extend(order_claims());
+    c.extend(actions);
+    c.extend(turn_claims());
+    c
+}
