@@ -291,6 +291,10 @@ const FINDINGS: &[Finding] = &[
     Finding::new("steer_frame_memoir", Verdict::MemoirError, "the same two terms, copied into n° 94"),
     Finding::new("steer_95_from_before", Verdict::MemoirError, "(1) of n° 95 drops the 1/cos(alpha) of the frame's term (second order, harmless at the first order the memoir then uses)"),
     Finding::new("theta1_ratio_memoir", Verdict::MemoirError, "(1)' of n° 95 writes mu1 for mu1 sin(omega)"),
+    Finding::new("frame_83_term3", Verdict::MemoirError, "term (3) of n° 83 prints L p where the derivation (and n° 99-100 of the memoir) has -L p: the sign of L"),
+    Finding::new("frame_83_term4", Verdict::MemoirError, "term (4) of n° 83 has both L terms with the sign opposite to n° 99-100, and -mu R (e) sin(theta) for +mu R e cos(theta) in its steady part (the error of the frame's row of n° 85 and 94)"),
+    Finding::new("frame_83_term5", Verdict::MemoirError, "term (5) of n° 83 drops -B eta' (the frame's own moment of inertia about Sj): the bracket's eta' coefficient is mu R (2h - R) - B"),
+    Finding::new("frame_83_term6", Verdict::MemoirError, "term (6) of n° 83 prints L p where the derivation (and n° 99-100) has -L p: the sign of L"),
     Finding::new("dfdpp_memoir", Verdict::Rounding, "the memoir's df/dp' = A is an approximation it declares; the exact frame coefficient is A upright (d eta/d theta = d nu/d theta = 0); of the neglected terms the memoir lists -L cos(theta) dn/dp where the exact one is -2 L cos(theta) d nu/d theta"),
 ];
 
@@ -328,9 +332,6 @@ pub fn entries() -> Vec<Entry> {
 pub fn claims() -> Vec<crate::claims::Claim> {
     super::steady_claims::claims()
 }
-
-/// Why n° 98's statements on a lateral shift of the rider are left.
-const LATERAL_98: &str = "needs a symbolic derivation: no generated model has the rider's centre of gravity off the frame's plane; bicycle_steady would need the loaded frame's centre of gravity at (e, d, h) on (I, j, k) with the products of inertia sum m x y and sum m y z, and the steady rows of the fall and handlebar equations (n° 83-84, 91-93) recomputed, to show that the handlebar rows change only by terms of the first order in d times the angles while the fall equation's gravity row becomes -mu g (h sin(theta) + d cos(theta))";
 
 /// The memoir's assertions in this report's sections, n° by n°, with how each is covered.
 pub const INVENTORY: &[crate::claims::Assertion] = &[
@@ -400,8 +401,9 @@ pub const INVENTORY: &[crate::claims::Assertion] = &[
     Assertion { section: "97", says: "whereas the geometry imposes theta1 > theta (gamma negative when theta positive)", status: Status::Value("theta1/theta imposed by the geometry") },
     Assertion { section: "97", says: "so the normal position is the only equilibrium without hands: 'il serait impossible d'effectuer une conversion sans les mains'", status: Status::Value("speed of a steady turn without hands") },
     Assertion { section: "97", says: "the rider must shift his body laterally to change the steady state and to keep it", status: Status::Value("speed of a steady turn without hands") },
-    Assertion { section: "98", says: "a lateral shift of the body does not change the centrifugal moment sensibly; the gravity moment becomes mu g h sin(theta + epsilon)", status: Status::Left(LATERAL_98) },
-    Assertion { section: "98", says: "the handlebar equation is not changed by the lateral shift", status: Status::Left(LATERAL_98) },
+    Assertion { section: "98", says: "a lateral shift of the body does not change the centrifugal moment sensibly", status: Status::Checked("steady-shift-centrifugal-moment") },
+    Assertion { section: "98", says: "with the lateral shift the gravity moment becomes mu g h sin(theta + epsilon)", status: Status::Checked("steady-shift-gravity-moment") },
+    Assertion { section: "98", says: "the handlebar equation is not changed by the lateral shift", status: Status::Checked("steady-shift-handlebar-unchanged") },
     Assertion { section: "98", says: "the approximate equations (delta theta), (delta gamma) with epsilon, and theta1 proportional to theta + epsilon", status: Status::Value("lateral shift epsilon/theta at 20 km/h") },
     Assertion { section: "98", says: "epsilon makes the formula compatible with the geometry: turns without hands become possible", status: Status::Value("lateral shift epsilon/theta at 20 km/h") },
     Assertion { section: "99", says: "the kinetic energy, useless for the steady equations, is needed for the stability", status: Status::Left("structural (n° 80)") },

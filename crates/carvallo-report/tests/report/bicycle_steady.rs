@@ -34,6 +34,10 @@ fn findings() -> BTreeMap<(&'static str, &'static str), Verdict> {
             MemoirError,
         ),
         (("98", "lateral shift epsilon/theta at 20 km/h"), MemoirError),
+        (("83", "bicycle check frame_83_term3"), MemoirError),
+        (("83", "bicycle check frame_83_term4"), MemoirError),
+        (("83", "bicycle check frame_83_term5"), MemoirError),
+        (("83", "bicycle check frame_83_term6"), MemoirError),
     ])
 }
 
@@ -135,6 +139,9 @@ fn expected_claims() -> BTreeMap<&'static str, Verdict> {
         ("steady-neglected-term-bound", Verdict::MemoirError),
         ("steady-wheels-lean-alike", Verdict::Agrees),
         ("steady-omega-below-eta", Verdict::Agrees),
+        ("steady-shift-gravity-moment", Verdict::Agrees),
+        ("steady-shift-centrifugal-moment", Verdict::Agrees),
+        ("steady-shift-handlebar-unchanged", Verdict::Agrees),
     ])
 }
 
@@ -174,6 +181,10 @@ fn the_reduction_is_exact_and_term_4_is_the_frames_steady_error() {
         assert!(f[&format!("max_rel_term{k}_steady")] < 1e-12, "{f:?}");
     }
     assert!(f["max_rel_term4_steady"] > 0.1 && f["max_rel_term4_corrected"] < 1e-12, "{f:?}");
+    // The symbolic route names the same failing terms (3)-(6) as the point masses.
+    let u = &get("steady-frame-six-terms-unsteady");
+    assert_eq!(u.evidence["symbolic_terms_holding"], 2.0, "{u:?}");
+    assert_eq!(u.verdict, Verdict::MemoirError);
     let b = &get("steady-neglected-term-bound").evidence;
     assert!(
         b["largest_epsilon_20kmh"] < b["bound"] && b["largest_epsilon_10kmh"] > b["bound"],
