@@ -24,6 +24,12 @@ impl SplitMix64 {
     pub fn uniform(&mut self, lo: f64, hi: f64) -> f64 {
         lo + (hi - lo) * self.next_unit()
     }
+
+    /// `x` scaled by a uniform factor in $[1 - r, 1 + r]$, `r = spread` (one draw of
+    /// [`Self::next_unit`]).
+    pub fn scale(&mut self, x: f64, spread: f64) -> f64 {
+        x * (1.0 + spread * (2.0 * self.next_unit() - 1.0))
+    }
 }
 
 #[cfg(test)]

@@ -7,7 +7,7 @@
 //! parameters: forward-mode dual numbers ([`carvallo_ir::dual`]) through the generated program
 //! `generated/whipple.ir` give the matrices $M$, $C_1$, $K_0$, $K_2$ with their exact
 //! derivatives; the same arithmetic gives the Hurwitz functions' coefficients in $u = v^2$
-//! ([`crate::sweep::HurwitzPolys`]). A speed is $v = \sqrt u$ for a simple root $u$ of
+//! ([`crate::whipple::stability::HurwitzPolys`]). A speed is $v = \sqrt u$ for a simple root $u$ of
 //! $F(u; p) = 0$ ($F = h$, the reduced Hurwitz determinant, for the weave speed; $F = a_0$ for
 //! the capsize speed), so by the implicit function theorem
 //! $$\frac{\partial v}{\partial p_i} = -\frac{1}{2v}\,
@@ -32,7 +32,7 @@ use rayon::prelude::*;
 use carvallo_ir::dual::{self, Dual};
 use carvallo_ir::Program;
 
-use crate::parameter_text::UncertainParams;
+use crate::whipple::parameter_text::UncertainParams;
 use crate::whipple::{matrices_scene, Mat2, Matrices, StabilityWindow, WhippleParams, PARAM_NAMES};
 
 /// The generated program of the linearised bicycle (matrices and characteristic polynomial).
@@ -170,7 +170,7 @@ pub fn windows_unchecked(designs: &[[f64; 26]]) -> Vec<StabilityWindow> {
         .par_iter()
         .with_min_len(256)
         .map(|values| {
-            crate::sweep::hurwitz_window_polished(&matrices_of(values, &index), values[3])
+            crate::whipple::stability::hurwitz_window_polished(&matrices_of(values, &index), values[3])
         })
         .collect()
 }
@@ -317,8 +317,8 @@ pub fn eigenvalue_bands(
         speeds
             .iter()
             .map(|&v| {
-                let a = crate::sweep::state_matrix(&m, values[3], v);
-                crate::sweep::eigenvalues4(&a).map(|e| {
+                let a = crate::whipple::state_matrix(&m, values[3], v);
+                crate::numerics::eigen::eigenvalues4(&a).map(|e| {
                     let mut re = e.map(|x| x.re);
                     re.sort_by(f64::total_cmp);
                     re

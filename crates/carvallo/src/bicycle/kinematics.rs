@@ -11,7 +11,7 @@
 //! * the memoir's relations (I) and the steady state (2) of n° 66, and $\eta''$ of n° 69
 //!   ([`Kinematics::relations`]).
 //!
-//! Both are evaluated at the exact contact of [`crate::bicycle_geometry`] and can be checked
+//! Both are evaluated at the exact contact of [`crate::bicycle::geometry`] and can be checked
 //! against finite differences of the exact $\eta(\theta, \gamma)$. ν is not a function of
 //! (θ, γ): $d\nu/d\theta$ and $d\nu/d\gamma$ of (I) are ratios of virtual displacements at
 //! δσ = 0 whose cross derivatives differ ([`Kinematics::holonomy_defect`]).
@@ -21,7 +21,7 @@
 //! of gravity fixed in the frame is $Z = (R + x\sin\eta_1 + z\cos\eta_1)\cos\theta$ and
 //! $\frac{d^2Z}{d\theta^2} = -Z + X\eta''$ there.
 
-use crate::bicycle_geometry::{Contact, ContactError, Geometry};
+use crate::bicycle::geometry::{Contact, ContactError, Geometry};
 
 crate::scene! {
     /// The analytic displacement of M (n° 61): its components on I, J, K per unit δσ, δθ, δν,

@@ -9,21 +9,20 @@
 //! 2. **windows**: the bicycle's weave and capsize speeds by the closed-form Hurwitz route, by
 //!    an eigenvalue sweep and by the former 200 000-point scan, nanoseconds per design and the
 //!    relative error against the speeds computed at 256 bits from the 256-bit matrices;
-//! 3. **quartic**: the root solvers of [`crate::quartic`] on its hard suite, against the 256-bit
-//!    roots;
-//! 4. **certified**: the compensated classification of [`crate::certified`] near the weave
-//!    speed against the plain `f64` sign of $H_3$;
+//! 3. **quartic**: the root solvers of `carvallo::numerics::quartic` on the hard suite, against
+//!    the 256-bit roots ([`super::quartic`]);
+//! 4. **certified**: the compensated classification of `carvallo::whipple::certified` near the
+//!    weave speed against the plain `f64` sign of $H_3$ ([`super::certified`]);
 //! 5. **distributions**: relative errors of the generated characteristic polynomial over seeded
 //!    random parameter sets (benchmark values scaled by independent factors in [0.8, 1.2],
 //!    speeds in [0, 10] m/s), max and quantiles in units of $\varepsilon = 2^{-52}$;
 //! 6. **scenes**: operation count and time of scenes that ask for less (window only, one
 //!    speed's polynomial, full right-hand side), with the benchmark parameters free or fixed;
-//! 7. **sweep**: $10^6$ designs (fewer with `quick`) through [`crate::sweep::sweep`] (the trail
-//!    on a line) and [`crate::sweep::sweep_designs`] (a Monte Carlo of the 25 parameters other
+//! 7. **sweep**: $10^6$ designs (fewer with `quick`) through [`sweep::sweep`] (the trail
+//!    on a line) and [`sweep::sweep_designs`] (a Monte Carlo of the 25 parameters other
 //!    than $g$, each scaled in [0.8, 1.2]), with the designs per second.
 //!
-//! The command line appends the C peer and the batched evaluators (`carvallo-cli`'s `bench`
-//! module: it spawns the system C compiler, which a library should not do).
+//! [`super::extend`] appends the C peer and the batched evaluators.
 //!
 //! Timings are wall-clock means over repeated calls (`std::time::Instant`), so they vary from
 //! run to run and machine to machine; errors do not. [`Targets`] compares the ratios asked for in
@@ -33,20 +32,21 @@ use std::hint::black_box;
 use std::sync::atomic::AtomicUsize;
 use std::time::Instant;
 
-use astro_float::{BigFloat, RoundingMode};
-use carvallo_ir::{hp, Interpreter, Op, Program, Value};
+use carvallo::ir::{hp, Interpreter, Op, Program, Value};
 use rayon::prelude::*;
 use serde::Serialize;
 
-use crate::quartic::{self, C64};
-use crate::sweep::{self, EigenGrid, Method};
-use crate::whipple::{matrices_scene, Matrices, Whipple, WhippleParams, PARAM_NAMES};
-use crate::whipple_nonlinear::{dynamics_scene, Configuration, WhippleNonlinear};
+use carvallo::numerics::quartic;
+use carvallo::numerics::rng::SplitMix64;
+use carvallo::whipple::nonlinear::{dynamics_scene, Configuration, WhippleNonlinear};
+use carvallo::whipple::stability::{self, reference_speeds, EigenGrid};
+use carvallo::whipple::sweep::{self, Method};
+use carvallo::whipple::{matrices_scene, Matrices, Whipple, WhippleParams, PARAM_NAMES};
 use nalgebra::{Matrix3, Vector3};
 
-const HOOP_IR: &str = include_str!("../../../generated/hoop.ir");
-const UNICYCLE_IR: &str = include_str!("../../../generated/unicycle.ir");
-const WHIPPLE_IR: &str = include_str!("../../../generated/whipple.ir");
+const HOOP_IR: &str = carvallo::artifacts::HOOP.ir;
+const UNICYCLE_IR: &str = carvallo::artifacts::UNICYCLE.ir;
+const WHIPPLE_IR: &str = carvallo::artifacts::WHIPPLE.ir;
 
 /// The precision of every reference evaluation.
 pub const REFERENCE_BITS: usize = 256;
@@ -186,42 +186,10 @@ pub fn time_ns<R>(min_time: f64, mut f: impl FnMut() -> R) -> f64 {
     best
 }
 
-/// A seeded SplitMix64 generator: uniform numbers in [0, 1).
-#[derive(Clone, Debug)]
-pub struct Rng(u64);
-
-impl Rng {
-    /// The generator with `seed`.
-    pub fn new(seed: u64) -> Rng {
-        Rng(seed)
-    }
-
-    /// The next number in [0, 1).
-    pub fn next_f64(&mut self) -> f64 {
-        self.0 = self.0.wrapping_add(0x9E37_79B9_7F4A_7C15);
-        let mut z = self.0;
-        z = (z ^ (z >> 30)).wrapping_mul(0xBF58_476D_1CE4_E5B9);
-        z = (z ^ (z >> 27)).wrapping_mul(0x94D0_49BB_1331_11EB);
-        z ^= z >> 31;
-        (z >> 11) as f64 / (1u64 << 53) as f64
-    }
-
-    /// `x` scaled by a uniform factor in [1 - spread, 1 + spread].
-    pub fn scale(&mut self, x: f64, spread: f64) -> f64 {
-        x * (1.0 + spread * (2.0 * self.next_f64() - 1.0))
-    }
-}
-
 /// A valid random bicycle: the benchmark with every parameter scaled by a factor in
-/// [0.8, 1.2] (redrawn until [`WhippleParams::from_values`] accepts it).
-pub fn random_design(rng: &mut Rng) -> WhippleParams {
-    let base = *WhippleParams::benchmark().values();
-    loop {
-        let v = base.map(|x| rng.scale(x, 0.2));
-        if let Ok(p) = WhippleParams::from_values(v) {
-            return p;
-        }
-    }
+/// [0.8, 1.2] ([`WhippleParams::perturbed`]).
+pub(super) fn random_design(rng: &mut SplitMix64) -> WhippleParams {
+    WhippleParams::benchmark().perturbed(rng, 0.2)
 }
 
 /// Relative error of `x` against `reference` (absolute when the reference is zero).
@@ -261,7 +229,7 @@ fn model_value(name: &str) -> f64 {
 
 /// The value of argument `name` in a random sample: whipple parameters from `design`, the
 /// speed from `speed`, other models' arguments scaled around [`model_value`].
-fn arg_value(name: &str, design: &WhippleParams, speed: f64, rng: &mut Rng) -> f64 {
+fn arg_value(name: &str, design: &WhippleParams, speed: f64, rng: &mut SplitMix64) -> f64 {
     if name == "v" {
         speed
     } else if let Some(x) = design.get(name) {
@@ -347,12 +315,12 @@ fn evaluator_rows(cfg: &Config, sc: &Scene<'_>, rows: &mut Vec<Row>) -> f64 {
         .select_outputs(sc.outputs)
         .expect("the IR has the scene's outputs");
     let interp = Interpreter::new(&program).expect("a parsed program compiles");
-    let mut rng = Rng::new(6);
+    let mut rng = SplitMix64(6);
     // Points: argument vectors in the scene's order, and split for the interpreter.
     let points: Vec<(Vec<f64>, Vec<f64>, Vec<f64>)> = (0..cfg.points)
         .map(|_| {
             let design = random_design(&mut rng);
-            let speed = 10.0 * rng.next_f64();
+            let speed = 10.0 * rng.next_unit();
             let mut vals = std::collections::BTreeMap::new();
             for n in program
                 .params
@@ -445,92 +413,14 @@ fn evaluator_rows(cfg: &Config, sc: &Scene<'_>, rows: &mut Vec<Row>) -> f64 {
     t_int / t_gen
 }
 
-const RM: RoundingMode = RoundingMode::ToEven;
-
-/// The weave and capsize speeds computed at `bits` bits from the matrices evaluated at `bits`
-/// bits (the reference of table 2): the closed-form quadratics of [`crate::sweep`] in
-/// high precision, picking the root nearest `near` (the `f64` result). Returns `None` for a
-/// speed the `f64` route did not find.
-pub fn reference_speeds(
-    params: &WhippleParams,
-    near: (Option<f64>, Option<f64>),
-    bits: usize,
-) -> (Option<f64>, Option<f64>) {
-    let program = Program::parse(WHIPPLE_IR).expect("whipple.ir parses");
-    let names = [
-        "m11", "m12", "m21", "m22", "c1_11", "c1_12", "c1_21", "c1_22", "k0_11", "k0_12", "k0_21",
-        "k0_22", "k2_11", "k2_12", "k2_21", "k2_22",
-    ];
-    let program = program.select_outputs(&names).expect("whipple.ir has the matrices");
-    let args: Vec<f64> = program.params.iter().map(|n| params.get(n).unwrap_or(f64::NAN)).collect();
-    let Ok(o) = hp::eval(&program, &args, &[], bits) else { return (None, None) };
-    let p = bits;
-    let b = |x: f64| hp::from_f64(x, p);
-    let mul = |a: &BigFloat, c: &BigFloat| a.mul(c, p, RM);
-    let add = |a: &BigFloat, c: &BigFloat| a.add(c, p, RM);
-    let sub = |a: &BigFloat, c: &BigFloat| a.sub(c, p, RM);
-    let mat = |k: usize| [[o[k].clone(), o[k + 1].clone()], [o[k + 2].clone(), o[k + 3].clone()]];
-    let (m, c1, k0, k2) = (mat(0), mat(4), mat(8), mat(12));
-    let mix = |x: &[[BigFloat; 2]; 2], y: &[[BigFloat; 2]; 2]| {
-        sub(
-            &sub(
-                &add(&mul(&x[0][0], &y[1][1]), &mul(&y[0][0], &x[1][1])),
-                &mul(&x[0][1], &y[1][0]),
-            ),
-            &mul(&y[0][1], &x[1][0]),
-        )
-    };
-    let det = |x: &[[BigFloat; 2]; 2]| sub(&mul(&x[0][0], &x[1][1]), &mul(&x[0][1], &x[1][0]));
-    let g = b(params.get("g").unwrap_or(f64::NAN));
-    let a0 = [mul(&mul(&g, &g), &det(&k0)), mul(&g, &mix(&k0, &k2)), det(&k2)];
-    let q = [mul(&g, &mix(&c1, &k0)), mix(&c1, &k2)];
-    let r = [mul(&g, &mix(&m, &k0)), add(&mix(&m, &k2), &det(&c1))];
-    let bb = mix(&m, &c1);
-    let a4 = det(&m);
-    let b2 = mul(&bb, &bb);
-    let h = [
-        sub(&sub(&mul(&mul(&q[0], &r[0]), &bb), &mul(&mul(&q[0], &q[0]), &a4)), &mul(&a0[0], &b2)),
-        sub(
-            &sub(
-                &mul(&add(&mul(&q[0], &r[1]), &mul(&q[1], &r[0])), &bb),
-                &mul(&mul(&b(2.0), &mul(&q[0], &q[1])), &a4),
-            ),
-            &mul(&a0[1], &b2),
-        ),
-        sub(&sub(&mul(&mul(&q[1], &r[1]), &bb), &mul(&mul(&q[1], &q[1]), &a4)), &mul(&a0[2], &b2)),
-    ];
-    // Both roots u of c0 + c1 u + c2 u^2, then v = sqrt(u), nearest to `target`.
-    let speed = |c: &[BigFloat; 3], target: Option<f64>| -> Option<f64> {
-        let target = target?;
-        if c[2].is_zero() {
-            let u = c[0].neg().div(&c[1], p, RM);
-            return u.is_positive().then(|| hp::to_f64(&u.sqrt(p, RM)));
-        }
-        let disc = sub(&mul(&c[1], &c[1]), &mul(&b(4.0), &mul(&c[2], &c[0])));
-        if disc.is_negative() {
-            return None;
-        }
-        let sq = disc.sqrt(p, RM);
-        let two_c2 = mul(&b(2.0), &c[2]);
-        let roots =
-            [sub(&sq, &c[1]).div(&two_c2, p, RM), sq.neg().sub(&c[1], p, RM).div(&two_c2, p, RM)];
-        roots
-            .iter()
-            .filter(|u| u.is_positive())
-            .map(|u| hp::to_f64(&u.sqrt(p, RM)))
-            .min_by(|x, y| (x - target).abs().total_cmp(&(y - target).abs()))
-    };
-    (speed(&h, near.0), speed(&a0, near.1))
-}
-
-fn matrices_of(w: &Whipple) -> (Matrices, f64) {
+pub(super) fn matrices_of(w: &Whipple) -> (Matrices, f64) {
     (w.matrices(), w.params().get("g").unwrap_or(f64::NAN))
 }
 
 /// Table 2; returns (Hurwitz time, eigen time, Hurwitz and eigen errors on the speeds both
 /// report, benchmark error).
 fn window_rows(cfg: &Config, rows: &mut Vec<Row>) -> (f64, f64, f64, f64, f64) {
-    let mut rng = Rng::new(7);
+    let mut rng = SplitMix64(7);
     let mut designs = vec![WhippleParams::benchmark()];
     designs.extend((1..cfg.designs.max(1)).map(|_| random_design(&mut rng)));
     let whipples: Vec<Whipple> = designs.iter().cloned().map(Whipple::new).collect();
@@ -539,9 +429,9 @@ fn window_rows(cfg: &Config, rows: &mut Vec<Row>) -> (f64, f64, f64, f64, f64) {
         .par_iter()
         .map(|w| {
             let (m, g) = matrices_of(w);
-            let hw = sweep::hurwitz_window(&m, g);
-            let hpw = sweep::hurwitz_window_polished(&m, g);
-            let ew = sweep::eigen_window(&m, g, grid);
+            let hw = stability::hurwitz_window(&m, g);
+            let hpw = stability::hurwitz_window_polished(&m, g);
+            let ew = stability::eigen_window(&m, g, grid);
             let refs =
                 reference_speeds(w.params(), (hw.weave_speed, hw.capsize_speed), REFERENCE_BITS);
             (hw, ew, refs, hpw)
@@ -589,11 +479,11 @@ fn window_rows(cfg: &Config, rows: &mut Vec<Row>) -> (f64, f64, f64, f64, f64) {
         }
     }
     let (m, g) = matrices_of(&whipples[0]);
-    let t_h = time_ns(cfg.min_time, || sweep::hurwitz_window(black_box(&m), g));
-    let t_hp = time_ns(cfg.min_time, || sweep::hurwitz_window_polished(black_box(&m), g));
-    let t_e = time_ns(cfg.min_time, || sweep::eigen_window(black_box(&m), g, grid));
-    let t_scan = time_ns(cfg.min_time.min(0.05), || sweep::scan_window(black_box(&m), g));
-    let scan = sweep::scan_window(&m, g);
+    let t_h = time_ns(cfg.min_time, || stability::hurwitz_window(black_box(&m), g));
+    let t_hp = time_ns(cfg.min_time, || stability::hurwitz_window_polished(black_box(&m), g));
+    let t_e = time_ns(cfg.min_time, || stability::eigen_window(black_box(&m), g, grid));
+    let t_scan = time_ns(cfg.min_time.min(0.05), || stability::scan_window(black_box(&m), g));
+    let scan = stability::scan_window(&m, g);
     let (rw, rc) = results[0].2;
     let e_scan = err(scan.weave_speed, rw).max(err(scan.capsize_speed, rc));
     let params = whipples[0].params().values();
@@ -663,144 +553,9 @@ fn window_rows(cfg: &Config, rows: &mut Vec<Row>) -> (f64, f64, f64, f64, f64) {
     (t_h, t_e, eh_common, ee, bench_err)
 }
 
-/// Table 3.
-fn quartic_rows(cfg: &Config, rows: &mut Vec<Row>) {
-    let suite = quartic::hard_suite();
-    let refs: Vec<([C64; 4], f64)> =
-        suite.par_iter().map(|c| quartic::reference_roots(&c.coeffs, REFERENCE_BITS)).collect();
-    type Solver = fn(&[f64; 5]) -> Option<[C64; 4]>;
-    let methods: [(&str, Solver); 4] = [
-        ("ferrari + newton", |c| Some(quartic::ferrari(c))),
-        ("companion eigenvalues", quartic::companion),
-        ("aberth", |c| Some(quartic::aberth(c))),
-        ("aberth compensated", |c| Some(quartic::aberth_compensated(c))),
-    ];
-    for (name, f) in methods {
-        let mut worst = 0.0f64;
-        let mut per_case = Vec::new();
-        for (case, (r, _)) in suite.iter().zip(&refs) {
-            match f(&case.coeffs) {
-                Some(z) => {
-                    let e = quartic::max_rel_error(&z, r);
-                    worst = worst.max(e);
-                    per_case.push(format!("{}: {e:.0e}", case.name));
-                }
-                None => per_case.push(format!("{}: did not converge", case.name)),
-            }
-        }
-        let t = time_ns(cfg.min_time, || {
-            suite.iter().fold(0.0, |acc, c| acc + f(black_box(&c.coeffs)).map_or(0.0, |z| z[0].re))
-        });
-        rows.push(Row {
-            section: "quartic",
-            name: format!("{} polynomials", suite.len()),
-            method: name.into(),
-            ops: None,
-            ns: Some(t / suite.len() as f64),
-            max_rel_err: Some(worst),
-            note: per_case.join("; "),
-        });
-    }
-    let mut worst = 0.0f64;
-    let mut per_case = Vec::new();
-    for (case, (r, _)) in suite.iter().zip(&refs) {
-        let e = quartic::max_rel_error_moduli(&quartic::graeffe_moduli(&case.coeffs), r);
-        worst = worst.max(e);
-        per_case.push(format!("{}: {e:.0e}", case.name));
-    }
-    let t = time_ns(cfg.min_time, || {
-        suite.iter().map(|c| quartic::graeffe_moduli(black_box(&c.coeffs))[0]).sum::<f64>()
-    });
-    rows.push(Row {
-        section: "quartic",
-        name: format!("{} polynomials (moduli only)", suite.len()),
-        method: "graeffe root squaring (Carvallo)".into(),
-        ops: None,
-        ns: Some(t / suite.len() as f64),
-        max_rel_err: Some(worst),
-        note: per_case.join("; "),
-    });
-    let conv = refs.iter().map(|r| r.1).fold(0.0, f64::max);
-    rows.push(Row {
-        section: "quartic",
-        name: "reference".into(),
-        method: format!("aberth at {REFERENCE_BITS} bits"),
-        ops: None,
-        ns: None,
-        max_rel_err: None,
-        note: format!("largest last relative correction {conv:.1e}"),
-    });
-}
-
-/// Table 4: near the weave speed of `designs` bicycles.
-fn certified_rows(cfg: &Config, rows: &mut Vec<Row>) {
-    use crate::certified::{classify, hurwitz_f64, Certified};
-    let mut rng = Rng::new(8);
-    let mut designs = vec![WhippleParams::benchmark()];
-    designs.extend((1..cfg.designs.max(1)).map(|_| random_design(&mut rng)));
-    let offsets = [1e-4, 1e-8, 1e-12, 1e-14, 0.0, -1e-14, -1e-12, -1e-8, -1e-4];
-    let (mut stable, mut unstable, mut indet, mut f64_wrong, mut n) = (0, 0, 0, 0, 0);
-    let mut f64_flips = 0;
-    let mut example = (0.0, 0.0);
-    for d in &designs {
-        let w = Whipple::new(d.clone());
-        let (m, g) = matrices_of(&w);
-        let Some(vw) = w.stability_window().weave_speed else { continue };
-        for off in offsets {
-            let v = vw * (1.0 + off);
-            n += 1;
-            let c = classify(&m, g, v, 0.0);
-            let h = hurwitz_f64(&m, g, v);
-            let full = crate::certified::hurwitz_bounded(&m, g, v, 0.0).1;
-            if full.sign().is_some_and(|s| s != (h > 0.0)) {
-                f64_wrong += 1;
-            }
-            if off == 0.0 && example.1 == 0.0 {
-                example = (full.value.to_f64(), full.err);
-            }
-            if (off > 0.0) != (h > 0.0) && off != 0.0 {
-                f64_flips += 1;
-            }
-            match c {
-                Certified::Stable => stable += 1,
-                Certified::Unstable => unstable += 1,
-                Certified::Indeterminate => indet += 1,
-            }
-        }
-    }
-    let (m, g) = matrices_of(&Whipple::new(WhippleParams::benchmark()));
-    let t = time_ns(cfg.min_time, || classify(black_box(&m), g, 5.0, 0.0));
-    let t64 = time_ns(cfg.min_time, || hurwitz_f64(black_box(&m), g, 5.0));
-    rows.push(Row {
-        section: "certified",
-        name: format!("H3 near the weave speed, {n} speeds"),
-        method: "double-double with error bound".into(),
-        ops: None,
-        ns: Some(t),
-        max_rel_err: None,
-        note: format!(
-            "{stable} stable, {unstable} unstable, {indet} indeterminate; benchmark at its weave \
-             speed: H3 = {:.3e} +- {:.1e}",
-            example.0, example.1
-        ),
-    });
-    rows.push(Row {
-        section: "certified",
-        name: format!("H3 near the weave speed, {n} speeds"),
-        method: "plain f64".into(),
-        ops: None,
-        ns: Some(t64),
-        max_rel_err: None,
-        note: format!(
-            "f64 H3 has the wrong sign (against a certified one) {f64_wrong} times; its sign \
-             differs from the side of the computed weave speed {f64_flips} times"
-        ),
-    });
-}
-
 /// Table 5 and its distributions.
 fn distributions(cfg: &Config) -> Vec<Distribution> {
-    use crate::whipple::char_poly_scene as cp;
+    use carvallo::whipple::char_poly_scene as cp;
     let program = Program::parse(WHIPPLE_IR)
         .expect("whipple.ir parses")
         .select_outputs(cp::OUTPUTS)
@@ -809,9 +564,9 @@ fn distributions(cfg: &Config) -> Vec<Distribution> {
     let errs: Vec<[f64; 5]> = (0..samples)
         .into_par_iter()
         .map(|i| {
-            let mut rng = Rng::new(1_000_003 * i as u64 + 11);
+            let mut rng = SplitMix64(1_000_003 * i as u64 + 11);
             let d = random_design(&mut rng);
-            let v = 10.0 * rng.next_f64();
+            let v = 10.0 * rng.next_unit();
             let params: Vec<f64> =
                 program.params.iter().map(|n| d.get(n).unwrap_or(f64::NAN)).collect();
             let r = hp::eval_f64(&program, &params, &[v], REFERENCE_BITS)
@@ -845,7 +600,7 @@ fn distributions(cfg: &Config) -> Vec<Distribution> {
         .collect()
 }
 
-crate::scene! {
+carvallo::scene! {
     /// The bicycle's matrices with every benchmark parameter fixed but the trail `c`.
     pub mod window_fixed_scene {
         model: whipple,
@@ -858,7 +613,7 @@ crate::scene! {
     }
 }
 
-crate::scene! {
+carvallo::scene! {
     /// The bicycle's characteristic polynomial at speed `v`, every benchmark parameter fixed.
     pub mod char_poly_fixed_scene {
         model: whipple,
@@ -870,7 +625,7 @@ crate::scene! {
     }
 }
 
-crate::scene! {
+carvallo::scene! {
     /// The hoop's stability (S) only, R = 0.5 m, g = 9.81 m/s², mu = 1.2 kg fixed.
     pub mod hoop_window_fixed_scene {
         model: hoop,
@@ -879,7 +634,7 @@ crate::scene! {
     }
 }
 
-crate::scene! {
+carvallo::scene! {
     /// The hoop's right-hand side (2), R = 0.5 m, g = 9.81 m/s², mu = 1.2 kg fixed.
     pub mod hoop_rhs_fixed_scene {
         model: hoop,
@@ -888,7 +643,7 @@ crate::scene! {
     }
 }
 
-crate::scene! {
+carvallo::scene! {
     /// The unicycle's stability first member only, free parameters.
     pub mod unicycle_window_scene {
         model: unicycle,
@@ -896,7 +651,7 @@ crate::scene! {
     }
 }
 
-crate::scene! {
+carvallo::scene! {
     /// The unicycle's stability first member only, the tutorial rider fixed.
     pub mod unicycle_window_fixed_scene {
         model: unicycle,
@@ -906,7 +661,7 @@ crate::scene! {
     }
 }
 
-crate::scene! {
+carvallo::scene! {
     /// The unicycle's right-hand side, the tutorial rider fixed.
     pub mod unicycle_rhs_fixed_scene {
         model: unicycle,
@@ -916,7 +671,7 @@ crate::scene! {
     }
 }
 
-crate::scene! {
+carvallo::scene! {
     /// The unicycle's right-hand side, free parameters.
     pub mod unicycle_rhs_scene {
         model: unicycle,
@@ -924,7 +679,7 @@ crate::scene! {
     }
 }
 
-crate::scene! {
+carvallo::scene! {
     /// The nonlinear bicycle's mass matrix $M_3$ and forcing $f_3$, free parameters.
     pub mod nonlinear_rhs_scene {
         model: whipple_nonlinear,
@@ -933,7 +688,7 @@ crate::scene! {
     }
 }
 
-crate::scene! {
+carvallo::scene! {
     /// The nonlinear bicycle's $M_3$ and $f_3$, every benchmark parameter fixed.
     pub mod nonlinear_rhs_fixed_scene {
         model: whipple_nonlinear,
@@ -945,7 +700,7 @@ crate::scene! {
     }
 }
 
-crate::scene! {
+carvallo::scene! {
     /// The nonlinear bicycle's mass matrix $M_3$ only, free parameters.
     pub mod nonlinear_mass_scene {
         model: whipple_nonlinear,
@@ -989,7 +744,7 @@ fn scene_rows(cfg: &Config, rows: &mut Vec<Row>) {
     };
     let a = arr!(matrices_scene, 0.0);
     let t =
-        time_ns(mt, || sweep::hurwitz_window(&to_m(matrices_scene::eval_array(black_box(&a))), g));
+        time_ns(mt, || stability::hurwitz_window(&to_m(matrices_scene::eval_array(black_box(&a))), g));
     add(
         "bicycle (a) window only",
         "free",
@@ -999,7 +754,7 @@ fn scene_rows(cfg: &Config, rows: &mut Vec<Row>) {
     );
     let a = arr!(window_fixed_scene, 0.0);
     let t = time_ns(mt, || {
-        sweep::hurwitz_window(&to_m(window_fixed_scene::eval_array(black_box(&a))), g)
+        stability::hurwitz_window(&to_m(window_fixed_scene::eval_array(black_box(&a))), g)
     });
     add(
         "bicycle (a) window only",
@@ -1008,7 +763,7 @@ fn scene_rows(cfg: &Config, rows: &mut Vec<Row>) {
         t,
         "matrices + hurwitz_window",
     );
-    use crate::whipple::char_poly_scene as cp;
+    use carvallo::whipple::char_poly_scene as cp;
     let a = arr!(cp, 5.0);
     let t = time_ns(mt, || quartic::ferrari(&cp::eval_array(black_box(&a))));
     add("bicycle (b) eigenvalues at one speed", "free", cp::OP_COUNT, t, "a0..a4 + ferrari");
@@ -1030,7 +785,7 @@ fn scene_rows(cfg: &Config, rows: &mut Vec<Row>) {
         t,
         "precomputed matrices + Schur (nalgebra)",
     );
-    use crate::hoop::{pns_scene, stability_scene};
+    use carvallo::hoop::{pns_scene, stability_scene};
     let a = arr!(stability_scene, 0.0);
     let t = time_ns(mt, || stability_scene::eval_array(black_box(&a)));
     add("hoop (a) stability (S) only", "free", stability_scene::OP_COUNT, t, "");
@@ -1190,9 +945,9 @@ fn sweep_rows(cfg: &Config, rows: &mut Vec<Row>) -> (f64, f64, f64) {
 /// Runs every measurement (see the [module docs](self)).
 pub fn run(cfg: &Config) -> Report {
     let mut rows = Vec::new();
-    use crate::hoop::pns_scene;
-    use crate::unicycle::motion_scene;
-    use crate::whipple::char_poly_scene;
+    use carvallo::hoop::pns_scene;
+    use carvallo::unicycle::motion_scene;
+    use carvallo::whipple::char_poly_scene;
     let hoop_args = scene_args(pns_scene::PARAMS, pns_scene::INPUTS);
     let cp_args = scene_args(char_poly_scene::PARAMS, char_poly_scene::INPUTS);
     let mx_args = scene_args(matrices_scene::PARAMS, matrices_scene::INPUTS);
@@ -1204,7 +959,7 @@ pub fn run(cfg: &Config) -> Report {
             args: &hoop_args,
             outputs: pns_scene::OUTPUTS,
             ops: pns_scene::OP_COUNT,
-            eval: scene_fn!(crate::hoop::pns_scene),
+            eval: scene_fn!(carvallo::hoop::pns_scene),
         },
         Scene {
             name: "bicycle matrices",
@@ -1212,7 +967,7 @@ pub fn run(cfg: &Config) -> Report {
             args: &mx_args,
             outputs: matrices_scene::OUTPUTS,
             ops: matrices_scene::OP_COUNT,
-            eval: scene_fn!(crate::whipple::matrices_scene),
+            eval: scene_fn!(carvallo::whipple::matrices_scene),
         },
         Scene {
             name: "bicycle a0..a4 at v",
@@ -1220,7 +975,7 @@ pub fn run(cfg: &Config) -> Report {
             args: &cp_args,
             outputs: char_poly_scene::OUTPUTS,
             ops: char_poly_scene::OP_COUNT,
-            eval: scene_fn!(crate::whipple::char_poly_scene),
+            eval: scene_fn!(carvallo::whipple::char_poly_scene),
         },
         Scene {
             name: "unicycle motion + energy",
@@ -1228,7 +983,7 @@ pub fn run(cfg: &Config) -> Report {
             args: &uni_args,
             outputs: motion_scene::OUTPUTS,
             ops: motion_scene::OP_COUNT,
-            eval: scene_fn!(crate::unicycle::motion_scene),
+            eval: scene_fn!(carvallo::unicycle::motion_scene),
         },
     ];
     let mut ratios = Vec::new();
@@ -1236,8 +991,8 @@ pub fn run(cfg: &Config) -> Report {
         ratios.push((sc.name, evaluator_rows(cfg, sc, &mut rows)));
     }
     let (t_h, t_e, e_h, e_e, bench_err) = window_rows(cfg, &mut rows);
-    quartic_rows(cfg, &mut rows);
-    certified_rows(cfg, &mut rows);
+    super::quartic::quartic_rows(cfg, &mut rows);
+    super::certified::certified_rows(cfg, &mut rows);
     let distributions = distributions(cfg);
     scene_rows(cfg, &mut rows);
     let (per_million, grid_rate, random_rate) = sweep_rows(cfg, &mut rows);

@@ -15,15 +15,15 @@
 //!
 //! [`reference_roots`] runs Aberth's iteration in 256-bit arithmetic (astro-float) from the
 //! compensated roots: the exact roots of the `f64` coefficients, to far below `f64` resolution.
-//! [`hard_suite`] lists the test polynomials: clustered roots, spread magnitudes, near-double
-//! roots, $x^4 + 1$, and the benchmark bicycle's characteristic polynomial at its weave,
-//! capsize and weave–capsize bifurcation speeds.
+//! [`polynomial_suite`] lists the hard test polynomials: clustered roots, spread magnitudes,
+//! near-double roots and $x^4 + 1$ (`carvallo bench` adds the benchmark bicycle's
+//! characteristic polynomial at its weave, capsize and weave–capsize bifurcation speeds).
 
 use astro_float::{BigFloat, RoundingMode};
 pub use nalgebra::Complex;
 use nalgebra::Matrix4;
 
-use crate::certified::Dd;
+use crate::numerics::dd::Dd;
 
 /// A complex number in `f64`.
 pub type C64 = Complex<f64>;
@@ -135,7 +135,7 @@ pub fn ferrari(c: &[f64; 5]) -> [C64; 4] {
 }
 
 /// The four roots as eigenvalues of the companion matrix; `None` if the Schur decomposition
-/// does not converge within [`crate::sweep::MAX_SCHUR_ITERATIONS`].
+/// does not converge within [`crate::numerics::eigen::MAX_SCHUR_ITERATIONS`].
 pub fn companion(c: &[f64; 5]) -> Option<[C64; 4]> {
     let mut a = Matrix4::zeros();
     for i in 0..3 {
@@ -144,7 +144,7 @@ pub fn companion(c: &[f64; 5]) -> Option<[C64; 4]> {
     for i in 0..4 {
         a[(i, 3)] = -c[i] / c[4];
     }
-    let ev = crate::sweep::eigenvalues4(&a)?;
+    let ev = crate::numerics::eigen::eigenvalues4(&a)?;
     Some(ev.map(|e| C64::new(e.re, e.im)))
 }
 
@@ -440,14 +440,10 @@ fn mul2(a: [f64; 3], b: [f64; 3]) -> [f64; 5] {
     c
 }
 
-/// The fixed suite of [`Case`]s (see the [module docs](self)). The bicycle cases are the
-/// benchmark bicycle's $a_0, \dots, a_4$ at its weave, capsize and bifurcation speeds.
-pub fn hard_suite() -> Vec<Case> {
-    use crate::whipple::{Whipple, WhippleParams};
-    let w = Whipple::new(WhippleParams::benchmark());
-    let win = w.stability_window();
-    let at = |v: Option<f64>| w.char_poly(v.unwrap_or(f64::NAN));
-    let vd = w.bifurcation().map(|(v, _)| v);
+/// The polynomial cases of the hard suite (see the [module docs](self)): clustered roots,
+/// spread magnitudes, near-double roots and $x^4 + 1$. `carvallo bench` adds the benchmark
+/// bicycle's $a_0, \dots, a_4$ at its weave, capsize and bifurcation speeds.
+pub fn polynomial_suite() -> Vec<Case> {
     vec![
         Case { name: "well separated real", coeffs: from_roots([-3.0, -1.0, 0.5, 2.0]) },
         Case {
@@ -461,9 +457,5 @@ pub fn hard_suite() -> Vec<Case> {
         },
         Case { name: "complex pairs (x^2+1)(x^2+2x+5)", coeffs: [5.0, 2.0, 6.0, 2.0, 1.0] },
         Case { name: "x^4 + 1", coeffs: [1.0, 0.0, 0.0, 0.0, 1.0] },
-        Case { name: "bicycle at v = 5 m/s", coeffs: w.char_poly(5.0) },
-        Case { name: "bicycle at the weave speed", coeffs: at(win.weave_speed) },
-        Case { name: "bicycle at the capsize speed", coeffs: at(win.capsize_speed) },
-        Case { name: "bicycle at the bifurcation", coeffs: at(vd) },
     ]
 }

@@ -45,7 +45,7 @@
 
 use std::fmt;
 
-use crate::bicycle_geometry::{ContactError, Geometry};
+use crate::bicycle::geometry::{ContactError, Geometry};
 use crate::error::ParameterError;
 
 /// Step (rad) of the central first differences in γ.

@@ -23,7 +23,7 @@
 
 use std::collections::BTreeMap;
 
-use crate::hoop_discussion::Series;
+use crate::hoop::discussion::Series;
 use crate::unicycle::all_scene as scene;
 
 /// Coordinates of the polar series of figure 7: the lean in degrees and the rate $s$.

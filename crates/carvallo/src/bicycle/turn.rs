@@ -1,6 +1,6 @@
 //! Stability of a steady turn with the handlebar held fixed (memoir Part II, ch. IV,
 //! n° 99–105), computed exactly on Carvallo's bicycle as a parameter set of the nonlinear
-//! Carvallo–Whipple model ([`crate::whipple_nonlinear`], Kane's method, with the mapping of
+//! Carvallo–Whipple model ([`crate::whipple::nonlinear`], Kane's method, with the mapping of
 //! [`Constants::whipple_values`]: hoop wheels, massless fork and handlebar, trail
 //! $c_1/\cos\eta$, $\theta = \varphi$, $\gamma = -\delta$).
 //!
@@ -43,10 +43,10 @@ use std::fmt;
 
 use nalgebra::{Complex, Matrix2, Matrix3, Vector2};
 
-use crate::bicycle_straight::Constants;
+use crate::bicycle::straight::Constants;
 use crate::error::ParameterError;
 use crate::whipple::{WhippleParams, PARAM_NAMES};
-use crate::whipple_nonlinear::{Configuration, KaneTerms, NonlinearError, WhippleNonlinear};
+use crate::whipple::nonlinear::{Configuration, KaneTerms, NonlinearError, WhippleNonlinear};
 
 /// Central-difference step in the lean (rad); Richardson also uses half of it.
 pub const STEP_LEAN: f64 = 1e-4;

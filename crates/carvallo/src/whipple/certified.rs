@@ -145,7 +145,7 @@ pub fn classify(m: &Matrices, g: f64, v: f64, entry_rel_err: f64) -> Certified {
 
 /// $H_3$ at speed `v` in plain `f64` from the same formula, for comparison.
 pub fn hurwitz_f64(m: &Matrices, g: f64, v: f64) -> f64 {
-    let p = crate::sweep::HurwitzPolys::new(m, g);
+    let p = crate::whipple::stability::HurwitzPolys::new(m, g);
     p.at(v)[5]
 }
 

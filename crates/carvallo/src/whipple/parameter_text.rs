@@ -66,7 +66,7 @@ fn number(text: &str) -> Option<f64> {
     if t.is_empty() {
         return None;
     }
-    crate::whipple::parse_pi(t)
+    super::params::parse_pi(t)
 }
 
 /// Splits `value+/-sigma`, `(value+/-sigma)e-02` or `value` into numbers.
