@@ -13,6 +13,7 @@ pub mod quartic;
 pub mod tables;
 
 pub use tables::{render_text, run, time_ns, Config, Report, Row, Target, REFERENCE_BITS};
+use tables::rel;
 
 use std::hint::black_box;
 
@@ -38,15 +39,6 @@ fn scene_program(ir: &str, outputs: &[&str]) -> Program {
         .expect("the IR has the scene's outputs")
         .fold_constants()
         .eliminate_dead_code()
-}
-
-/// Relative difference of `x` against `y` (absolute when `y` is zero).
-fn rel(x: f64, y: f64) -> f64 {
-    if y == 0.0 {
-        x.abs()
-    } else {
-        ((x - y) / y).abs()
-    }
 }
 
 /// The nonlinear bicycle's arguments at a leaned, steered, moving benchmark configuration (the

@@ -193,7 +193,7 @@ pub(super) fn random_design(rng: &mut SplitMix64) -> WhippleParams {
 }
 
 /// Relative error of `x` against `reference` (absolute when the reference is zero).
-fn rel(x: f64, reference: f64) -> f64 {
+pub(super) fn rel(x: f64, reference: f64) -> f64 {
     if reference == 0.0 {
         x.abs()
     } else {

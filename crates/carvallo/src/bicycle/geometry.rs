@@ -18,6 +18,7 @@
 use std::fmt;
 
 use crate::error::ParameterError;
+use crate::numerics::poly::bisect_unchecked;
 
 crate::scene! {
     /// Residuals of the contact equations (1), (2) and their Jacobian in (σ, μ), and the μ that
@@ -422,20 +423,7 @@ impl Geometry {
     pub fn lowest_frame(&self) -> (f64, f64, f64) {
         let mu = (self.offset / self.radius).asin();
         let h = |s: f64| self.residuals(0.0, 0.0, s, mu)[0];
-        let (mut lo, mut hi) = (self.sigma0 - 0.5, self.sigma0);
-        let flo = h(lo);
-        for _ in 0..200 {
-            let mid = 0.5 * (lo + hi);
-            if mid <= lo || mid >= hi {
-                break;
-            }
-            if (h(mid) > 0.0) == (flo > 0.0) {
-                lo = mid;
-            } else {
-                hi = mid;
-            }
-        }
-        let sigma = 0.5 * (lo + hi);
+        let sigma = bisect_unchecked(h, self.sigma0 - 0.5, self.sigma0);
         let gamma = (mu.tan() / sigma.tan()).clamp(-1.0, 1.0).acos();
         (sigma, mu, gamma)
     }

@@ -5,6 +5,7 @@
 
 use nalgebra::Matrix4;
 
+use super::params::PARAM_NAMES;
 use crate::numerics::mat2::det;
 
 crate::scene! {
@@ -40,6 +41,26 @@ pub struct Matrices {
     pub k0: Mat2,
     /// $K_2$ (multiplied by $v^2$).
     pub k2: Mat2,
+}
+
+/// The position in [`PARAM_NAMES`] of each parameter of [`matrices_scene`], in its order.
+pub(crate) fn scene_index() -> Vec<usize> {
+    matrices_scene::PARAMS
+        .iter()
+        .map(|p| PARAM_NAMES.iter().position(|n| n == p).unwrap_or(0))
+        .collect()
+}
+
+/// The matrices of a parameter vector (in the order of [`PARAM_NAMES`]), without validation.
+/// `index[i]` is the position in [`PARAM_NAMES`] of the scene's `i`-th parameter
+/// ([`scene_index`]).
+pub(crate) fn matrices_of(values: &[f64; 26], index: &[usize]) -> Matrices {
+    let n = matrices_scene::Args::LEN;
+    let arr: [f64; matrices_scene::Args::LEN] =
+        std::array::from_fn(|i| if i < n { values[index[i]] } else { f64::NAN });
+    let o = matrices_scene::eval_array(&arr);
+    let r = |k: usize| [[o[k], o[k + 1]], [o[k + 2], o[k + 3]]];
+    Matrices { m: r(0), c1: r(4), k0: r(8), k2: r(12) }
 }
 
 /// The state matrix of $(\varphi, \delta, \varphi', \delta')$ at speed `v`.

@@ -158,10 +158,6 @@ fn positive_roots(c: [f64; 3]) -> ([f64; 2], usize) {
 fn dd_coefficients(m: &Matrices, g: f64) -> ([Dd; 3], [Dd; 3]) {
     let d = |a: &Mat2| a.map(|r| r.map(Dd::from));
     let (mm, c1, k0, k2) = (d(&m.m), d(&m.c1), d(&m.k0), d(&m.k2));
-    let mix = |a: &[[Dd; 2]; 2], b: &[[Dd; 2]; 2]| {
-        a[0][0] * b[1][1] + b[0][0] * a[1][1] - a[0][1] * b[1][0] - b[0][1] * a[1][0]
-    };
-    let det = |a: &[[Dd; 2]; 2]| a[0][0] * a[1][1] - a[0][1] * a[1][0];
     let g = Dd::from(g);
     let a0 = [g * g * det(&k0), g * mix(&k0, &k2), det(&k2)];
     let q = [g * mix(&c1, &k0), mix(&c1, &k2)];

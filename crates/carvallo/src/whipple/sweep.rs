@@ -14,21 +14,10 @@ use std::time::Instant;
 
 use rayon::prelude::*;
 
-use super::matrices::{matrices_scene, Matrices};
+use super::matrices::{matrices_of, matrices_scene, scene_index, Matrices};
 use super::params::{valid_fast, WhippleError, WhippleParams, PARAM_NAMES};
 use super::stability::{eigen_window, hurwitz_window_summary, EigenGrid, WindowSummary};
 use crate::numerics::rng::SplitMix64;
-
-/// The matrices of a parameter vector (in the order of [`PARAM_NAMES`]), without validation.
-/// `index[i]` is the position in [`PARAM_NAMES`] of the scene's `i`-th parameter.
-fn matrices_of(values: &[f64; 26], index: &[usize]) -> Matrices {
-    let n = matrices_scene::Args::LEN;
-    let arr: [f64; matrices_scene::Args::LEN] =
-        std::array::from_fn(|i| if i < n { values[index[i]] } else { f64::NAN });
-    let o = matrices_scene::eval_array(&arr);
-    let r = |k: usize| [[o[k], o[k + 1]], [o[k + 2], o[k + 3]]];
-    Matrices { m: r(0), c1: r(4), k0: r(8), k2: r(12) }
-}
 
 /// How [`sweep`] computes each design's window.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
@@ -404,10 +393,7 @@ pub fn sweep_designs(
             }
         }
     };
-    let index: Vec<usize> = matrices_scene::PARAMS
-        .iter()
-        .map(|p| PARAM_NAMES.iter().position(|n| n == p).unwrap_or(0))
-        .collect();
+    let index = scene_index();
     let g = base.get("g").unwrap_or(f64::NAN);
     let n_names = names.len();
     let start = Instant::now();

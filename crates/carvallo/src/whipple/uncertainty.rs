@@ -33,7 +33,10 @@ use carvallo_ir::dual::{self, Dual};
 use carvallo_ir::Program;
 
 use crate::whipple::parameter_text::UncertainParams;
-use crate::whipple::{matrices_scene, Mat2, Matrices, StabilityWindow, WhippleParams, PARAM_NAMES};
+use super::matrices::{matrices_of, scene_index};
+use crate::numerics::mat2::{det, mix};
+use crate::numerics::rng::SplitMix64;
+use crate::whipple::{StabilityWindow, WhippleParams, PARAM_NAMES};
 
 /// The generated program of the linearised bicycle (matrices and characteristic polynomial).
 pub const WHIPPLE_IR: &str = crate::artifacts::WHIPPLE.ir;
@@ -67,14 +70,6 @@ pub struct SpeedGradients {
     pub weave: Option<SpeedGradient>,
     /// The capsize speed's, `None` if the bicycle has none.
     pub capsize: Option<SpeedGradient>,
-}
-
-fn mix(a: &[[D; 2]; 2], b: &[[D; 2]; 2]) -> D {
-    a[0][0] * b[1][1] + b[0][0] * a[1][1] - a[0][1] * b[1][0] - b[0][1] * a[1][0]
-}
-
-fn det(a: &[[D; 2]; 2]) -> D {
-    a[0][0] * a[1][1] - a[0][1] * a[1][0]
 }
 
 /// The matrices of `params` with their derivatives, from the generated program.
@@ -141,23 +136,6 @@ pub fn speed_gradients(params: &WhippleParams) -> SpeedGradients {
     }
 }
 
-/// The matrices of a parameter vector, without validation.
-fn matrices_of(values: &[f64; 26], index: &[usize]) -> Matrices {
-    let n = matrices_scene::Args::LEN;
-    let arr: [f64; matrices_scene::Args::LEN] =
-        std::array::from_fn(|i| if i < n { values[index[i]] } else { f64::NAN });
-    let o = matrices_scene::eval_array(&arr);
-    let r = |k: usize| -> Mat2 { [[o[k], o[k + 1]], [o[k + 2], o[k + 3]]] };
-    Matrices { m: r(0), c1: r(4), k0: r(8), k2: r(12) }
-}
-
-fn scene_index() -> Vec<usize> {
-    matrices_scene::PARAMS
-        .iter()
-        .map(|p| PARAM_NAMES.iter().position(|n| n == p).unwrap_or(0))
-        .collect()
-}
-
 /// The stability windows of many designs (rows of parameter values in the order of
 /// [`PARAM_NAMES`]), in parallel, by the same route as
 /// [`Whipple::stability_window`](crate::whipple::Whipple::stability_window) (closed-form
@@ -188,32 +166,6 @@ pub fn windows(
     Ok(windows_unchecked(designs))
 }
 
-/// The SplitMix64 generator (Steele, Lea, Flood 2014): small, seeded, reproducible.
-#[derive(Clone, Debug)]
-struct SplitMix64(u64);
-
-impl SplitMix64 {
-    fn next_u64(&mut self) -> u64 {
-        self.0 = self.0.wrapping_add(0x9E37_79B9_7F4A_7C15);
-        let mut z = self.0;
-        z = (z ^ (z >> 30)).wrapping_mul(0xBF58_476D_1CE4_E5B9);
-        z = (z ^ (z >> 27)).wrapping_mul(0x94D0_49BB_1331_11EB);
-        z ^ (z >> 31)
-    }
-
-    /// Uniform in $(0, 1]$.
-    fn uniform(&mut self) -> f64 {
-        ((self.next_u64() >> 11) + 1) as f64 / (1u64 << 53) as f64
-    }
-
-    /// Two independent standard normal numbers (Box–Muller).
-    fn normal_pair(&mut self) -> (f64, f64) {
-        let (u1, u2) = (self.uniform(), self.uniform());
-        let r = (-2.0 * u1.ln()).sqrt();
-        let t = std::f64::consts::TAU * u2;
-        (r * t.cos(), r * t.sin())
-    }
-}
 
 /// `samples` parameter rows drawn independently normal about `u.params` with the standard
 /// deviations `u.sigma` (a parameter with zero uncertainty keeps its value), from `seed`.
