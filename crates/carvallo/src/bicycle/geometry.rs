@@ -137,14 +137,14 @@ pub struct FrontWheel {
 ///
 /// # Example
 /// ```
-/// use carvallo::bicycle_geometry::Geometry;
+/// use carvallo::bicycle::geometry::Geometry;
 ///
 /// let g = Geometry::old_model();                    // n° 52: R 0.38, l 1.10, c 0.08, 25°
 /// let upright = g.solve(0.0, 0.0)?;
 /// assert!((upright.sigma - 25f64.to_radians()).abs() < 1e-14);
 /// let turned = g.solve(0.0, 60f64.to_radians())?;   // the frame is lowered (n° 52)
 /// assert!(turned.sigma < upright.sigma);
-/// # Ok::<(), carvallo::bicycle_geometry::ContactError>(())
+/// # Ok::<(), carvallo::bicycle::geometry::ContactError>(())
 /// ```
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct Geometry {

@@ -114,13 +114,13 @@ pub const FD_STEP_SECOND: f64 = 1e-3;
 ///
 /// # Example
 /// ```
-/// use carvallo::bicycle_kinematics::Kinematics;
+/// use carvallo::bicycle::kinematics::Kinematics;
 ///
 /// let k = Kinematics::old_model();
 /// let r = k.relations(0.0, 0.0)?;               // upright and straight
 /// assert!(r.d_eta_d_theta.abs() < 1e-15);
 /// assert!((r.steady_sigma1_rate - 1.0).abs() < 1e-15);
-/// # Ok::<(), carvallo::bicycle_geometry::ContactError>(())
+/// # Ok::<(), carvallo::bicycle::geometry::ContactError>(())
 /// ```
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct Kinematics {

@@ -189,8 +189,8 @@ impl RestPosition {
 ///
 /// # Example
 /// ```
-/// use carvallo::bicycle_geometry::Geometry;
-/// use carvallo::bicycle_rest::{RestBicycle, RestConstants};
+/// use carvallo::bicycle::geometry::Geometry;
+/// use carvallo::bicycle::rest::{RestBicycle, RestConstants};
 ///
 /// let bike = RestBicycle::new(Geometry::old_model(), RestConstants::MEMOIR)?;
 /// let p = bike.rest_position(-20f64.to_radians())?;        // gamma > 0

@@ -143,7 +143,7 @@ pub struct SteadyState {
 ///
 /// # Example
 /// ```
-/// use carvallo::bicycle_steady::{BicycleParams, BicycleSteady};
+/// use carvallo::bicycle::steady::{BicycleParams, BicycleSteady};
 ///
 /// let b = BicycleSteady::new(BicycleParams::memoir())?;
 /// // n° 88 at 20 km/h: tan(alpha)/tan(theta) = -g l/(R s)^2.

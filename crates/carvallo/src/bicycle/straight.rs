@@ -318,7 +318,7 @@ impl Equations {
     ///
     /// These are Carvallo's equations; [`Equations::via_whipple`] is the independent
     /// evaluation of the general model they are tested against at run time
-    /// (`tests/bicycle_straight.rs`).
+    /// (`tests/it/bicycle/straight.rs`).
     ///
     /// # Errors
     /// [`ParameterError`] from [`Constants::validate`].

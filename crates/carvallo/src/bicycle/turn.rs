@@ -189,14 +189,14 @@ pub struct FreeWheel {
 ///
 /// # Example
 /// ```
-/// use carvallo::bicycle_straight::Constants;
-/// use carvallo::bicycle_turn::{Hold, LockedSteer};
+/// use carvallo::bicycle::straight::Constants;
+/// use carvallo::bicycle::turn::{Hold, LockedSteer};
 ///
 /// let bike = LockedSteer::new(Constants::MEMOIR)?;
 /// let turn = bike.steady_turn(5f64.to_radians(), 20.0 / 3.6)?;
 /// let c = bike.fall_equation(&turn, Hold::Rolling)?;
 /// assert!(c.dfdpp > 0.0 && c.dfdtheta < 0.0 && c.saddle());
-/// # Ok::<(), carvallo::bicycle_turn::TurnError>(())
+/// # Ok::<(), carvallo::bicycle::turn::TurnError>(())
 /// ```
 #[derive(Clone, Debug)]
 pub struct LockedSteer {

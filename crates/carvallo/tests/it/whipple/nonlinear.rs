@@ -16,7 +16,7 @@
 //!   0.5 rad within 3 s.
 
 use carvallo::whipple::{Whipple, WhippleParams};
-use carvallo::whipple_nonlinear::{Configuration, WhippleNonlinear};
+use carvallo::whipple::nonlinear::{Configuration, WhippleNonlinear};
 
 fn bike() -> WhippleNonlinear {
     WhippleNonlinear::new(WhippleParams::benchmark())

@@ -3,7 +3,7 @@
 //! symmetry, the first-order method of n° 51 against the exact solution, the accessory angles
 //! and front axes of n° 57–58, and the typed errors.
 
-use carvallo::bicycle_geometry::{ContactError, Geometry};
+use carvallo::bicycle::geometry::{ContactError, Geometry};
 use carvallo::numerics::rng::SplitMix64;
 use carvallo::ParameterError;
 

@@ -16,7 +16,7 @@ use carvallo::ir::{hp, Program};
 use rand::{Rng, SeedableRng};
 use rand_chacha::ChaCha8Rng;
 
-const IR: &str = include_str!("../../../generated/hoop.ir");
+const IR: &str = carvallo::artifacts::HOOP.ir;
 const POINTS: usize = 200;
 const TOL_INTERP: f64 = 1e-13;
 const TOL_HP: f64 = 1e-13;

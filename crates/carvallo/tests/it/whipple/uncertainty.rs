@@ -1,11 +1,11 @@
-//! The uncertainty propagation of `carvallo::whipple_uncertainty` on the benchmark bicycle with
+//! The uncertainty propagation of `carvallo::whipple::uncertainty` on the benchmark bicycle with
 //! the made-up 1 % uncertainties of `data/benchmark-1pct.txt`: exact first derivatives of the
 //! weave and capsize speeds against central differences, the first-order standard deviations
 //! against a seeded Monte Carlo sample, and the batched windows against the single ones.
 
-use carvallo::parameter_text::UncertainParams;
+use carvallo::whipple::parameter_text::UncertainParams;
 use carvallo::whipple::{Whipple, WhippleParams, PARAM_NAMES};
-use carvallo::whipple_uncertainty::{
+use carvallo::whipple::uncertainty::{
     eigenvalue_bands, mean_std, monte_carlo, speed_gradients, windows, windows_unchecked,
 };
 
@@ -106,7 +106,7 @@ fn first_order_agrees_with_monte_carlo() {
 #[test]
 fn batched_windows_equal_the_single_ones() {
     let u = fixture();
-    let designs = carvallo::whipple_uncertainty::sample_designs(&u, 300, 3);
+    let designs = carvallo::whipple::uncertainty::sample_designs(&u, 300, 3);
     let valid: Vec<[f64; 26]> =
         designs.into_iter().filter(|d| WhippleParams::from_values(*d).is_ok()).collect();
     // About half the samples break IFyy <= 2 IFxx (0.28 against 0.281).

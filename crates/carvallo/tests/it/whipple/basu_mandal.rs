@@ -4,14 +4,14 @@
 //! and its nine accelerations. The numbers (13 decimals) are those transcribed in
 //! `moorepants/DynamicistToolKit`, file `dtk/bicycle.py`, functions `basu_table_one_input` and
 //! `basu_table_one_output`; the coordinate map is that file's `basu_to_moore_input` composed
-//! with the benchmark convention of `carvallo::whipple_nonlinear` (see its module docs).
+//! with the benchmark convention of `carvallo::whipple::nonlinear` (see its module docs).
 //!
 //! Tolerances: each of the nine accelerations within relative 1e-11 of the table; the pitch
 //! solved from the contact constraint within 1e-12 rad of the table's, the dependent rates
 //! the equations give (pitch, yaw, front wheel) within relative 1e-11 of the table's rates.
 
 use carvallo::whipple::WhippleParams;
-use carvallo::whipple_nonlinear::{Configuration, WhippleNonlinear};
+use carvallo::whipple::nonlinear::{Configuration, WhippleNonlinear};
 
 /// Table 1 input: x, y, z, theta, psi, phi, psif, betar, betaf.
 const Q: [f64; 9] =

@@ -5,7 +5,7 @@
 
 #![allow(clippy::needless_range_loop)]
 
-use carvallo::bicycle_straight::{
+use carvallo::bicycle::straight::{
     friction_half_swing, hurwitz, memoir_quartic_120, window, Constants, Equations, Part,
 };
 use nalgebra::Matrix4;

@@ -6,10 +6,10 @@
 //!
 //! Each tolerance is stated where it is used, with the reason for its size.
 
-use carvallo::certified::{classify, Certified};
+use carvallo::whipple::certified::{classify, Certified};
 use carvallo::hoop::Hoop;
-use carvallo::quartic;
-use carvallo::sweep;
+use carvallo::numerics::quartic;
+use carvallo::numerics::eigen;
 use carvallo::whipple::{Whipple, WhippleError, WhippleParams, PARAM_NAMES};
 use carvallo::ParameterError;
 
@@ -174,5 +174,5 @@ fn nan_and_infinite_inputs_are_typed_errors() {
     let w = Whipple::new(WhippleParams::benchmark());
     let (m, g) = (w.matrices(), 9.81);
     assert_ne!(classify(&m, g, f64::NAN, 0.0), Certified::Stable);
-    assert!(sweep::eigenvalues4(&w.state_matrix(f64::NAN)).is_none());
+    assert!(eigen::eigenvalues4(&w.state_matrix(f64::NAN)).is_none());
 }

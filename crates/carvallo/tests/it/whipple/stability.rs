@@ -8,8 +8,9 @@
 
 use std::sync::atomic::AtomicUsize;
 
-use carvallo::bench::{random_design, reference_speeds, Rng};
-use carvallo::sweep::{self, EigenGrid, HurwitzPolys, Method};
+use carvallo::numerics::rng::SplitMix64;
+use carvallo::whipple::stability::{self, reference_speeds, EigenGrid, HurwitzPolys};
+use carvallo::whipple::sweep::{self, Method};
 use carvallo::whipple::{Whipple, WhippleParams};
 
 fn close(a: Option<f64>, b: Option<f64>, tol: f64) -> bool {
@@ -26,16 +27,16 @@ fn parts(w: &Whipple) -> (carvallo::whipple::Matrices, f64) {
 
 #[test]
 fn fast_window_agrees_with_scan_and_eigenvalues() {
-    let mut rng = Rng::new(42);
+    let mut rng = SplitMix64(42);
     let mut designs = vec![WhippleParams::benchmark()];
-    designs.extend((0..12).map(|_| random_design(&mut rng)));
+    designs.extend((0..12).map(|_| WhippleParams::benchmark().perturbed(&mut rng, 0.2)));
     let grid = EigenGrid { vmax: 30.0, points: 600 };
     let mut orlando = 0;
     for (i, d) in designs.into_iter().enumerate() {
         let w = Whipple::new(d);
         let (m, g) = parts(&w);
-        let fast = sweep::hurwitz_window(&m, g);
-        let scan = sweep::scan_window(&m, g);
+        let fast = stability::hurwitz_window(&m, g);
+        let scan = stability::scan_window(&m, g);
         assert!(close(fast.capsize_speed, scan.capsize_speed, 0.0), "design {i}");
         if !close(fast.weave_speed, scan.weave_speed, 1e-9) {
             // The former scan also took roots of H3 where two real eigenvalues +-r pass
@@ -53,7 +54,7 @@ fn fast_window_agrees_with_scan_and_eigenvalues() {
             assert!(close(Some(a.0), Some(b.0), 1e-9) || a.0 == b.0, "design {i}");
             assert!(a.1 == b.1 || close(Some(a.1), Some(b.1), 1e-9), "design {i}");
         }
-        let eig = sweep::eigen_window(&m, g, grid).expect("eigenvalues converge");
+        let eig = stability::eigen_window(&m, g, grid).expect("eigenvalues converge");
         // Intervals inside the grid's range agree.
         let inside: Vec<(f64, f64)> = fast
             .stable
@@ -86,19 +87,19 @@ fn benchmark_speeds_are_within_1e_13_of_the_256_bit_values() {
     }
     // Random designs: the polished closed form against the 256-bit speeds, and the eigenvalue
     // route's edges against the same reference.
-    let mut rng = Rng::new(99);
+    let mut rng = SplitMix64(99);
     let (mut worst_h, mut worst_e, mut worst_both) = (0.0f64, 0.0f64, 0.0f64);
     for _ in 0..30 {
-        let w = Whipple::new(random_design(&mut rng));
+        let w = Whipple::new(WhippleParams::benchmark().perturbed(&mut rng, 0.2));
         let (m, g) = parts(&w);
-        let win = sweep::hurwitz_window(&m, g);
+        let win = stability::hurwitz_window(&m, g);
         let (rw, rc) = reference_speeds(w.params(), (win.weave_speed, win.capsize_speed), 256);
         for (got, want) in [(win.weave_speed, rw), (win.capsize_speed, rc)] {
             if let (Some(got), Some(want)) = (got, want) {
                 worst_h = worst_h.max(((got - want) / want).abs());
             }
         }
-        let eig = sweep::eigen_window(&m, g, EigenGrid::default()).unwrap();
+        let eig = stability::eigen_window(&m, g, EigenGrid::default()).unwrap();
         let pairs =
             [(eig.weave_speed, win.weave_speed, rw), (eig.capsize_speed, win.capsize_speed, rc)];
         for (got, fast, want) in pairs {
@@ -124,7 +125,7 @@ const HURWITZ_TOL: f64 = 1e-13;
 /// $a_1/a_3 = -r^2 < 0$ and it is not a weave speed.
 #[test]
 fn a_root_of_h3_with_real_eigenvalues_is_not_a_weave_speed() {
-    let mut rng = Rng::new(2026);
+    let mut rng = SplitMix64(2026);
     let base = *WhippleParams::benchmark().values();
     let mut found = None;
     'search: for _ in 0..200_000 {
@@ -156,7 +157,7 @@ fn a_root_of_h3_with_real_eigenvalues_is_not_a_weave_speed() {
     assert!(weave.is_none_or(|x| ((x - v) / v).abs() > 1e-6), "{v} taken as weave: {weave:?}");
     // The former scan took any sign change of H3 from - to +.
     let (m, g) = parts(&w);
-    let old = sweep::scan_window(&m, g).weave_speed;
+    let old = stability::scan_window(&m, g).weave_speed;
     eprintln!("Orlando root at v = {v} (a1/a3 = {ratio}); weave {weave:?}; former {old:?}");
 }
 
@@ -201,11 +202,11 @@ fn eigenvalues_of_x4_plus_1_terminate() {
 
 /// The window of one design by the scalar route: the matrices by `Whipple::matrices` (the
 /// scalar generated evaluator), then the summary of the Hurwitz window.
-fn scalar_summary(values: [f64; 26]) -> sweep::WindowSummary {
+fn scalar_summary(values: [f64; 26]) -> stability::WindowSummary {
     let w = Whipple::new(WhippleParams::from_values(values).expect("a valid design"));
     let (m, g) = parts(&w);
-    let summary = sweep::hurwitz_window_summary(&m, g);
-    assert_eq!(summary, sweep::WindowSummary::from(&sweep::hurwitz_window(&m, g)));
+    let summary = stability::hurwitz_window_summary(&m, g);
+    assert_eq!(summary, stability::WindowSummary::from(&stability::hurwitz_window(&m, g)));
     summary
 }
 

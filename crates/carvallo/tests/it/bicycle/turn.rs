@@ -1,5 +1,5 @@
 //! Tests of the steady turn with the handlebar held and its characteristic equation (memoir
-//! n° 99–105, module `carvallo::bicycle_turn`): upright straight running against the
+//! n° 99–105, module `carvallo::bicycle::turn`): upright straight running against the
 //! locked-steer reduction of the linear model, the lean of small turns against the linear
 //! model's static balance, $df/dp'$ and the gravity part of $df/d\theta$ against the model's
 //! energy (an independent output of the generated program), the vanishing pedal torque and
@@ -9,10 +9,10 @@
 //! angle of n° 45 (an independent derivation of the
 //! contact geometry), and the rejection of bad inputs by name.
 
-use carvallo::bicycle_geometry::Geometry;
-use carvallo::bicycle_straight::{Constants, Equations};
-use carvallo::bicycle_turn::{Hold, LockedSteer, SteadyTurn, TurnError};
-use carvallo::whipple_nonlinear::Configuration;
+use carvallo::bicycle::geometry::Geometry;
+use carvallo::bicycle::straight::{Constants, Equations};
+use carvallo::bicycle::turn::{Hold, LockedSteer, SteadyTurn, TurnError};
+use carvallo::whipple::nonlinear::Configuration;
 
 fn bike() -> LockedSteer {
     LockedSteer::new(Constants::MEMOIR).expect("the memoir's constants are valid")
@@ -158,7 +158,7 @@ fn bad_inputs_are_named_errors() {
 }
 
 /// The model's pitch at lean θ and steer −γ is Carvallo's frame angle σ(θ, γ) − σ₀ from the
-/// contact equations of n° 45 (`carvallo::bicycle_geometry`, derived separately), for the
+/// contact equations of n° 45 (`carvallo::bicycle::geometry`, derived separately), for the
 /// old model of n° 52 with $c_1 = R\sin\sigma_0 - c$ (absolute 1e-12 rad).
 #[test]
 fn pitch_is_carvallos_frame_angle() {

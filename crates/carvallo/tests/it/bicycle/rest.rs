@@ -1,12 +1,12 @@
-//! Tests of the handlebar's rest equilibrium (memoir n° 67, module `carvallo::bicycle_rest`):
+//! Tests of the handlebar's rest equilibrium (memoir n° 67, module `carvallo::bicycle::rest`):
 //! the Newton/bisection results against brute-force scans of the exact functions, the massless
 //! front wheel giving back the frame's lowest position, the mirror symmetry θ → −θ, the virtual
 //! work of the hands' torque over finite displacements, the lowest position of n° 55/56 against
 //! its closed form (the point E on the ground), the front wheel's centre against the vectors of
 //! n° 46–47 written by hand, the small-lean limit and the typed errors.
 
-use carvallo::bicycle_geometry::{ContactError, Geometry};
-use carvallo::bicycle_rest::{RestBicycle, RestConstants, RestError};
+use carvallo::bicycle::geometry::{ContactError, Geometry};
+use carvallo::bicycle::rest::{RestBicycle, RestConstants, RestError};
 use carvallo::ParameterError;
 
 fn rad(x: f64) -> f64 {

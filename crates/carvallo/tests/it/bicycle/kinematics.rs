@@ -3,7 +3,7 @@
 //! of the analytic displacement of n° 61, the instantaneous centre of the steady motion, and
 //! the rank of the fixed system of n° 68. Old-model bicycle of n° 52, the memoir's angles.
 
-use carvallo::bicycle_kinematics::Kinematics;
+use carvallo::bicycle::kinematics::Kinematics;
 
 const DEG: f64 = std::f64::consts::PI / 180.0;
 
