@@ -121,9 +121,7 @@ const OLD_LIBRARY_PATHS: [&str; 16] = [
 fn library_is_layered_by_folders() {
     let mut wrong = Vec::new();
     let src = root().join("crates/carvallo/src");
-    let Ok(entries) = std::fs::read_dir(&src) else {
-        panic!("cannot list {}", src.display())
-    };
+    let Ok(entries) = std::fs::read_dir(&src) else { panic!("cannot list {}", src.display()) };
     let mut seen = 0;
     for entry in entries.flatten() {
         let path = entry.path();
@@ -131,7 +129,8 @@ fn library_is_layered_by_folders() {
         if path.is_dir() {
             let model = LIBRARY_MODELS.contains(&name.as_str());
             if !(model || name == "numerics") {
-                wrong.push(format!("{}: a folder that is neither a model nor numerics", rel(&path)));
+                wrong
+                    .push(format!("{}: a folder that is neither a model nor numerics", rel(&path)));
             }
             if model && !path.join("mod.rs").is_file() {
                 wrong.push(format!("{}: a model folder without mod.rs", rel(&path)));
@@ -139,9 +138,8 @@ fn library_is_layered_by_folders() {
             seen += usize::from(model);
         } else if name.ends_with(".rs") && !LIBRARY_ROOT_FILES.contains(&name.as_str()) {
             let stem = name.trim_end_matches(".rs");
-            let prefixed = LIBRARY_MODELS
-                .iter()
-                .find(|m| stem == **m || stem.starts_with(&format!("{m}_")));
+            let prefixed =
+                LIBRARY_MODELS.iter().find(|m| stem == **m || stem.starts_with(&format!("{m}_")));
             wrong.push(match prefixed {
                 Some(m) => format!("{}: belongs in src/{m}/", rel(&path)),
                 None => format!("{}: belongs in a model's folder or numerics/", rel(&path)),

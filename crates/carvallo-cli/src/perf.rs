@@ -179,11 +179,8 @@ fn range(r: Option<(f64, f64)>) -> Value {
 fn run(cmd: Command) -> Result<String, String> {
     match cmd {
         Command::Bench { json, quick } => {
-            let cfg = if quick {
-                crate::bench::Config::quick()
-            } else {
-                crate::bench::Config::full()
-            };
+            let cfg =
+                if quick { crate::bench::Config::quick() } else { crate::bench::Config::full() };
             let mut report = crate::bench::run(&cfg);
             crate::bench::extend(&cfg, &mut report);
             if json {

@@ -103,8 +103,8 @@ pub mod sweep {
 /// The library's part of the old `carvallo::bench` (the rest is in the `carvallo` binary).
 #[doc(hidden)]
 pub mod bench {
-    pub use crate::whipple::stability::reference_speeds;
     use crate::numerics::rng::SplitMix64;
+    pub use crate::whipple::stability::reference_speeds;
     use crate::whipple::WhippleParams;
 
     /// The old seeded generator: [`SplitMix64`] with `next_f64` for `next_unit`.

@@ -12,14 +12,14 @@ pub mod peer;
 pub mod quartic;
 pub mod tables;
 
-pub use tables::{render_text, run, time_ns, Config, Report, Row, Target, REFERENCE_BITS};
 use tables::rel;
+pub use tables::{render_text, run, time_ns, Config, Report, Row, Target, REFERENCE_BITS};
 
 use std::hint::black_box;
 
 use carvallo::ir::Program;
-use carvallo::whipple::{matrices_scene, WhippleParams};
 use carvallo::whipple::nonlinear::{Configuration, WhippleNonlinear};
+use carvallo::whipple::{matrices_scene, WhippleParams};
 use nalgebra::{Matrix3, Vector3};
 
 const WHIPPLE_IR: &str = carvallo::artifacts::WHIPPLE.ir;
@@ -99,8 +99,8 @@ struct PeerRatios {
 /// The section `peer`; returns the nonlinear bicycle's ratios, or `None` when the C peer could
 /// not run.
 fn peer_rows(cfg: &Config, rows: &mut Vec<Row>) -> Option<PeerRatios> {
-    use tables::nonlinear_rhs_scene as nl;
     use carvallo::unicycle::motion_scene as uni;
+    use tables::nonlinear_rhs_scene as nl;
     let names = |p: &[&'static str], i: &[&'static str]| -> Vec<&'static str> {
         p.iter().chain(i).copied().collect()
     };

@@ -118,7 +118,9 @@ mod tests {
     use super::*;
 
     fn hard(name: &str) -> bool {
-        name.starts_with("clustered") || name.starts_with("near-double") || name.contains("bifurcation")
+        name.starts_with("clustered")
+            || name.starts_with("near-double")
+            || name.contains("bifurcation")
     }
 
     #[test]
@@ -158,7 +160,8 @@ mod tests {
     fn root_squaring_finds_separated_moduli_and_fails_on_a_cluster() {
         for case in hard_suite() {
             let (reference, _) = quartic::reference_roots(&case.coeffs, 256);
-            let e = quartic::max_rel_error_moduli(&quartic::graeffe_moduli(&case.coeffs), &reference);
+            let e =
+                quartic::max_rel_error_moduli(&quartic::graeffe_moduli(&case.coeffs), &reference);
             match case.name {
                 "well separated real" | "spread 1e-4, -1, 1e2, 1e5" => {
                     assert!(e <= 1e-12, "{}: {e:e}", case.name)

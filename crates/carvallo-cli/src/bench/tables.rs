@@ -743,8 +743,9 @@ fn scene_rows(cfg: &Config, rows: &mut Vec<Row>) {
         Matrices { m: r(0), c1: r(4), k0: r(8), k2: r(12) }
     };
     let a = arr!(matrices_scene, 0.0);
-    let t =
-        time_ns(mt, || stability::hurwitz_window(&to_m(matrices_scene::eval_array(black_box(&a))), g));
+    let t = time_ns(mt, || {
+        stability::hurwitz_window(&to_m(matrices_scene::eval_array(black_box(&a))), g)
+    });
     add(
         "bicycle (a) window only",
         "free",

@@ -45,8 +45,8 @@ use nalgebra::{Complex, Matrix2, Matrix3, Vector2};
 
 use crate::bicycle::straight::Constants;
 use crate::error::ParameterError;
-use crate::whipple::{WhippleParams, PARAM_NAMES};
 use crate::whipple::nonlinear::{Configuration, KaneTerms, NonlinearError, WhippleNonlinear};
+use crate::whipple::{WhippleParams, PARAM_NAMES};
 
 /// Central-difference step in the lean (rad); Richardson also uses half of it.
 pub const STEP_LEAN: f64 = 1e-4;

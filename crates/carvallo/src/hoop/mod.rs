@@ -14,7 +14,6 @@
 //! [`Hoop`] holds validated physical parameters; the [`normalised`] module has the
 //! dimensionless forms of n° 12 ($g/R = 1$).
 
-/// The discussion of the hoop's steady states (n° 13–19).
 pub mod discussion;
 
 use crate::error::ParameterError;

@@ -10,7 +10,6 @@
 //! (for a thin hoop $\tfrac32\mu_1R^2, 2\mu_1R^2, \tfrac12\mu_1R^2$, n° 4). Unlike the memoir's
 //! n° 24, the rider's and the wheel's letters are never merged here.
 
-/// The unicycle's diagrams (n° 32 and n° 41, figures 7 and 9) as data series.
 pub mod discussion;
 
 use crate::error::ParameterError;

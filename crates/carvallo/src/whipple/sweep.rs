@@ -16,6 +16,8 @@ use rayon::prelude::*;
 
 use super::matrices::{matrices_of, matrices_scene, scene_index, Matrices};
 use super::params::{valid_fast, WhippleError, WhippleParams, PARAM_NAMES};
+#[cfg(doc)]
+use super::stability::hurwitz_window;
 use super::stability::{eigen_window, hurwitz_window_summary, EigenGrid, WindowSummary};
 use crate::numerics::rng::SplitMix64;
 

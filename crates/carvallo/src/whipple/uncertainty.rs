@@ -32,10 +32,10 @@ use rayon::prelude::*;
 use carvallo_ir::dual::{self, Dual};
 use carvallo_ir::Program;
 
-use crate::whipple::parameter_text::UncertainParams;
 use super::matrices::{matrices_of, scene_index};
 use crate::numerics::mat2::{det, mix};
 use crate::numerics::rng::SplitMix64;
+use crate::whipple::parameter_text::UncertainParams;
 use crate::whipple::{StabilityWindow, WhippleParams, PARAM_NAMES};
 
 /// The generated program of the linearised bicycle (matrices and characteristic polynomial).
@@ -148,7 +148,10 @@ pub fn windows_unchecked(designs: &[[f64; 26]]) -> Vec<StabilityWindow> {
         .par_iter()
         .with_min_len(256)
         .map(|values| {
-            crate::whipple::stability::hurwitz_window_polished(&matrices_of(values, &index), values[3])
+            crate::whipple::stability::hurwitz_window_polished(
+                &matrices_of(values, &index),
+                values[3],
+            )
         })
         .collect()
 }
@@ -165,7 +168,6 @@ pub fn windows(
     }
     Ok(windows_unchecked(designs))
 }
-
 
 /// `samples` parameter rows drawn independently normal about `u.params` with the standard
 /// deviations `u.sigma` (a parameter with zero uncertainty keeps its value), from `seed`.

@@ -6,10 +6,10 @@
 //!
 //! Each tolerance is stated where it is used, with the reason for its size.
 
-use carvallo::whipple::certified::{classify, Certified};
 use carvallo::hoop::Hoop;
-use carvallo::numerics::quartic;
 use carvallo::numerics::eigen;
+use carvallo::numerics::quartic;
+use carvallo::whipple::certified::{classify, Certified};
 use carvallo::whipple::{Whipple, WhippleError, WhippleParams, PARAM_NAMES};
 use carvallo::ParameterError;
 

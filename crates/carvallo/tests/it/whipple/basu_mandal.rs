@@ -10,8 +10,8 @@
 //! solved from the contact constraint within 1e-12 rad of the table's, the dependent rates
 //! the equations give (pitch, yaw, front wheel) within relative 1e-11 of the table's rates.
 
-use carvallo::whipple::WhippleParams;
 use carvallo::whipple::nonlinear::{Configuration, WhippleNonlinear};
+use carvallo::whipple::WhippleParams;
 
 /// Table 1 input: x, y, z, theta, psi, phi, psif, betar, betaf.
 const Q: [f64; 9] =

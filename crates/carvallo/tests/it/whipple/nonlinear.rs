@@ -15,8 +15,8 @@
 //!   mode, eigenvalue about -0.3 /s there, dominates); at 2 m/s (unstable) it grows beyond
 //!   0.5 rad within 3 s.
 
-use carvallo::whipple::{Whipple, WhippleParams};
 use carvallo::whipple::nonlinear::{Configuration, WhippleNonlinear};
+use carvallo::whipple::{Whipple, WhippleParams};
 
 fn bike() -> WhippleNonlinear {
     WhippleNonlinear::new(WhippleParams::benchmark())

@@ -4,10 +4,10 @@
 //! against a seeded Monte Carlo sample, and the batched windows against the single ones.
 
 use carvallo::whipple::parameter_text::UncertainParams;
-use carvallo::whipple::{Whipple, WhippleParams, PARAM_NAMES};
 use carvallo::whipple::uncertainty::{
     eigenvalue_bands, mean_std, monte_carlo, speed_gradients, windows, windows_unchecked,
 };
+use carvallo::whipple::{Whipple, WhippleParams, PARAM_NAMES};
 
 fn fixture() -> UncertainParams {
     let path = concat!(env!("CARGO_MANIFEST_DIR"), "/../../data/benchmark-1pct.txt");
