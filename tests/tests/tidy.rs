@@ -1,7 +1,7 @@
 //! Tidy checks of the workspace's source, in the style of rust-analyzer's `tidy` test: every
 //! module opens with a `//!` doc, no test is ignored or expected to panic, and the layers point
 //! one way (numerics → models → report → CLI), which the compiler alone does not enforce
-//! inside a crate.
+//! inside a crate; the library is one folder per model, without `<model>_*.rs` prefixes.
 
 use std::path::{Path, PathBuf};
 
@@ -89,17 +89,101 @@ const REPORT_LEAVES: [&str; 6] = ["entry", "policy", "sample", "checks", "outlin
 /// The per-model report modules.
 const REPORT_MODELS: [&str; 5] = ["hoop", "hoop_discussion", "unicycle", "whipple", "bicycle"];
 
+/// The files allowed directly in `crates/carvallo/src`: everything else lives in a layer's
+/// folder (`numerics/`) or in a model's (`hoop/`, `unicycle/`, `whipple/`, `bicycle/`).
+const LIBRARY_ROOT_FILES: [&str; 3] = ["artifacts.rs", "error.rs", "lib.rs"];
+/// The library's models, one folder each (mirrored by `codegen/src/derive/` and the report).
+const LIBRARY_MODELS: [&str; 4] = ["hoop", "unicycle", "whipple", "bicycle"];
+/// The flat module names of the first layout, kept in `lib.rs` only as hidden re-exports: the
+/// library itself uses the new paths.
+const OLD_LIBRARY_PATHS: [&str; 16] = [
+    "bench",
+    "bicycle_geometry",
+    "bicycle_kinematics",
+    "bicycle_rest",
+    "bicycle_steady",
+    "bicycle_straight",
+    "bicycle_turn",
+    "certified",
+    "hoop_discussion",
+    "parameter_text",
+    "quartic",
+    "sweep",
+    "unicycle_discussion",
+    "whipple_nonlinear",
+    "whipple_uncertainty",
+    "report",
+];
+
+/// The layout of the library: one folder per model, no `<model>_*.rs` prefixes, numerics as
+/// leaves, no flat old path used inside the crate.
+#[test]
+fn library_is_layered_by_folders() {
+    let mut wrong = Vec::new();
+    let src = root().join("crates/carvallo/src");
+    let Ok(entries) = std::fs::read_dir(&src) else { panic!("cannot list {}", src.display()) };
+    let mut seen = 0;
+    for entry in entries.flatten() {
+        let path = entry.path();
+        let name = entry.file_name().to_string_lossy().to_string();
+        if path.is_dir() {
+            let model = LIBRARY_MODELS.contains(&name.as_str());
+            if !(model || name == "numerics") {
+                wrong
+                    .push(format!("{}: a folder that is neither a model nor numerics", rel(&path)));
+            }
+            if model && !path.join("mod.rs").is_file() {
+                wrong.push(format!("{}: a model folder without mod.rs", rel(&path)));
+            }
+            seen += usize::from(model);
+        } else if name.ends_with(".rs") && !LIBRARY_ROOT_FILES.contains(&name.as_str()) {
+            let stem = name.trim_end_matches(".rs");
+            let prefixed =
+                LIBRARY_MODELS.iter().find(|m| stem == **m || stem.starts_with(&format!("{m}_")));
+            wrong.push(match prefixed {
+                Some(m) => format!("{}: belongs in src/{m}/", rel(&path)),
+                None => format!("{}: belongs in a model's folder or numerics/", rel(&path)),
+            });
+        }
+    }
+    assert_eq!(seen, LIBRARY_MODELS.len(), "a model folder is missing in {}", src.display());
+    for path in rust_files("crates/carvallo/src") {
+        let name = rel(&path);
+        if name == "crates/carvallo/src/lib.rs" {
+            continue;
+        }
+        for (n, line) in code_lines(&read(&path)) {
+            for old in OLD_LIBRARY_PATHS {
+                for prefix in ["crate::", "carvallo::"] {
+                    let at = format!("{prefix}{old}");
+                    let hit = line.match_indices(&at).any(|(i, _)| {
+                        let next = line[i + at.len()..].chars().next();
+                        !next.is_some_and(|c| c.is_alphanumeric() || c == '_')
+                    });
+                    if hit {
+                        wrong.push(format!("{name}:{n}: `{at}` is an old path"));
+                    }
+                }
+            }
+        }
+    }
+    assert!(wrong.is_empty(), "library layout rules broken:\n{}", wrong.join("\n"));
+}
+
 #[test]
 fn layers_point_one_way() {
     let mut wrong = Vec::new();
-    // The library never names the report (the crate graph forbids `use`; this also catches
-    // paths in macros and doc-free code).
+    // The library never names the report or the command line (the crate graph forbids `use`;
+    // this also catches paths in macros and doc-free code).
     for path in rust_files("crates/carvallo/src") {
         let name = rel(&path);
         let text = read(&path);
         for (n, line) in code_lines(&text) {
             if line.contains("carvallo_report") {
                 wrong.push(format!("{name}:{n}: the library names the report"));
+            }
+            if line.contains("carvallo_cli") {
+                wrong.push(format!("{name}:{n}: the library names the command line"));
             }
         }
         // Numerics are leaves: no path into the rest of the crate.
@@ -112,14 +196,25 @@ fn layers_point_one_way() {
                         wrong.push(format!("{name}:{n}: a numerics leaf imports a model"));
                     }
                 }
+                if line.contains("super::super") {
+                    wrong.push(format!("{name}:{n}: a numerics leaf reaches out of numerics"));
+                }
             }
         }
-        // Generated artifacts are embedded in one place (bench.rs until it moves to the CLI).
-        let embeds = text.contains("include_str!(\"../../../generated")
-            || text.contains("include_str!(concat!(\"../../../generated");
-        let allowed = ["crates/carvallo/src/artifacts.rs", "crates/carvallo/src/bench.rs"];
-        if embeds && !allowed.contains(&name.as_str()) {
-            wrong.push(format!("{name}: embeds generated/ outside artifacts.rs"));
+    }
+    // Generated artifacts are embedded in one place, `carvallo::artifacts`; the library's
+    // benches and tests, the report and the command line read them from there.
+    for dir in ["crates/carvallo", "crates/carvallo-report", "crates/carvallo-cli"] {
+        for path in rust_files(dir) {
+            let name = rel(&path);
+            if name == "crates/carvallo/src/artifacts.rs" {
+                continue;
+            }
+            for (n, line) in code_lines(&read(&path)) {
+                if line.contains("include_str!") && line.contains("generated") {
+                    wrong.push(format!("{name}:{n}: embeds generated/ outside artifacts.rs"));
+                }
+            }
         }
     }
     // In the report, leaves import no model report, and a model report no other one (except

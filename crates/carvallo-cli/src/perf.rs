@@ -1,6 +1,6 @@
 //! The measurement subcommands of the `carvallo` command line.
 //!
-//! * `carvallo bench [--json] [--quick]`: the tables of `carvallo::bench` (time per
+//! * `carvallo bench [--json] [--quick]`: the tables of [`crate::bench`] (time per
 //!   evaluation beside the error against a 256-bit reference, measured in the same run, and
 //!   the targets), as text or as one JSON object `{mode, rows, distributions,
 //!   targets}`. `--quick` runs tiny samples (seconds); the default is the full measurement
@@ -179,17 +179,14 @@ fn range(r: Option<(f64, f64)>) -> Value {
 fn run(cmd: Command) -> Result<String, String> {
     match cmd {
         Command::Bench { json, quick } => {
-            let cfg = if quick {
-                carvallo::bench::Config::quick()
-            } else {
-                carvallo::bench::Config::full()
-            };
-            let mut report = carvallo::bench::run(&cfg);
+            let cfg =
+                if quick { crate::bench::Config::quick() } else { crate::bench::Config::full() };
+            let mut report = crate::bench::run(&cfg);
             crate::bench::extend(&cfg, &mut report);
             if json {
                 serde_json::to_string_pretty(&report).map_err(|e| e.to_string())
             } else {
-                Ok(carvallo::bench::render_text(&report))
+                Ok(crate::bench::render_text(&report))
             }
         }
         Command::Sweep { model, designs, method, output } => {

@@ -11,7 +11,7 @@ use carvallo::hoop::{equilibrium_scene, pns_scene};
 use carvallo::ir::{Interpreter, Program};
 use criterion::{criterion_group, criterion_main, Criterion};
 
-const IR: &str = include_str!("../../../generated/hoop.ir");
+const IR: &str = carvallo::artifacts::HOOP.ir;
 
 /// Values of the hoop's parameters and inputs used for every evaluation.
 fn value(name: &str) -> f64 {

@@ -14,7 +14,7 @@ use carvallo::whipple::{char_poly_scene, Whipple, WhippleParams};
 use carvallo::{certified, quartic, sweep};
 use criterion::{criterion_group, criterion_main, Criterion};
 
-const IR: &str = include_str!("../../../generated/whipple.ir");
+const IR: &str = carvallo::artifacts::WHIPPLE.ir;
 
 fn bench(c: &mut Criterion) {
     let w = Whipple::new(WhippleParams::benchmark());

@@ -5,7 +5,7 @@
 //! so the generated function takes $(\theta, s, n)$ only. The example then scans the rolling
 //! rate $s$ for the smallest stable straight run (θ = 0, n = 0; memoir n° 14/18:
 //! $s^2 > g / (4R)$), and prints the special points of figure 3 (n° 14) from
-//! [`carvallo::hoop_discussion::special_points`].
+//! [`carvallo::hoop::discussion::special_points`].
 
 carvallo::scene! {
     /// (S) for a hoop of radius 0.5 m and mass 1 kg under g = 9.81 m/s².
@@ -31,7 +31,7 @@ fn main() {
     }
     let exact = (9.81f64 / (4.0 * 0.5)).sqrt();
     println!("smallest stable rolling rate: s = {hi:.9} 1/s (memoir: sqrt(g/4R) = {exact:.9})");
-    let sp = carvallo::hoop_discussion::special_points();
+    let sp = carvallo::hoop::discussion::special_points();
     println!("figure 3 (x = cos theta, y = s^2): A = {:?}, D = {:?}, F = {:?}", sp.a, sp.d, sp.f);
     println!(
         "vertical tangent of (S): theta = {:.4} deg, s = {:.4} (unit sqrt(g/R))",

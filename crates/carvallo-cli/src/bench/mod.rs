@@ -1,23 +1,30 @@
-//! The rows of `carvallo bench` that live in the command line rather than in the library:
-//! the C peer ([`peer`]), which spawns the system C compiler, and the headline ratios of
-//! issue 15 (generated Rust against the C peer, nanoseconds per operation, designs per second).
+//! `carvallo bench`: run time against error, measured in one run.
 //!
-//! They are appended to the [`Report`] of `carvallo::bench::run` as the sections `peer` and
-//! `batched` and as targets, so that `--json` carries them like every other row.
+//! [`run`] ([`tables`]) measures the library's evaluators, stability windows, quartic solvers
+//! ([`quartic`]), certified classification ([`certified`]), error distributions, scenes and
+//! sweeps. [`extend`] appends the rows that need more than the library: the C peer ([`peer`]),
+//! which spawns the system C compiler, and the headline ratios of issue 15 (generated Rust
+//! against the C peer, nanoseconds per operation, designs per second), as the sections `peer`
+//! and `batched` and as targets, so that `--json` carries them like every other row.
 
+pub mod certified;
 pub mod peer;
+pub mod quartic;
+pub mod tables;
+
+use tables::rel;
+pub use tables::{render_text, run, time_ns, Config, Report, Row, Target, REFERENCE_BITS};
 
 use std::hint::black_box;
 
-use carvallo::bench::{time_ns, Config, Report, Row, Target};
 use carvallo::ir::Program;
+use carvallo::whipple::nonlinear::{Configuration, WhippleNonlinear};
 use carvallo::whipple::{matrices_scene, WhippleParams};
-use carvallo::whipple_nonlinear::{Configuration, WhippleNonlinear};
 use nalgebra::{Matrix3, Vector3};
 
 const WHIPPLE_IR: &str = carvallo::artifacts::WHIPPLE.ir;
-const WHIPPLE_NONLINEAR_IR: &str = include_str!("../../../../generated/whipple_nonlinear.ir");
-const UNICYCLE_IR: &str = include_str!("../../../../generated/unicycle.ir");
+const WHIPPLE_NONLINEAR_IR: &str = carvallo::artifacts::WHIPPLE_NONLINEAR.ir;
+const UNICYCLE_IR: &str = carvallo::artifacts::UNICYCLE.ir;
 
 /// The largest relative difference allowed between the C peer's outputs and the generated
 /// Rust's (the issue's 1e-12; in practice they agree bit for bit).
@@ -32,15 +39,6 @@ fn scene_program(ir: &str, outputs: &[&str]) -> Program {
         .expect("the IR has the scene's outputs")
         .fold_constants()
         .eliminate_dead_code()
-}
-
-/// Relative difference of `x` against `y` (absolute when `y` is zero).
-fn rel(x: f64, y: f64) -> f64 {
-    if y == 0.0 {
-        x.abs()
-    } else {
-        ((x - y) / y).abs()
-    }
 }
 
 /// The nonlinear bicycle's arguments at a leaned, steered, moving benchmark configuration (the
@@ -101,8 +99,8 @@ struct PeerRatios {
 /// The section `peer`; returns the nonlinear bicycle's ratios, or `None` when the C peer could
 /// not run.
 fn peer_rows(cfg: &Config, rows: &mut Vec<Row>) -> Option<PeerRatios> {
-    use carvallo::bench::nonlinear_rhs_scene as nl;
     use carvallo::unicycle::motion_scene as uni;
+    use tables::nonlinear_rhs_scene as nl;
     let names = |p: &[&'static str], i: &[&'static str]| -> Vec<&'static str> {
         p.iter().chain(i).copied().collect()
     };

@@ -1,17 +1,23 @@
 //! 2 × 2 matrices as plain arrays (rows), with the determinant and the mixed determinant that
 //! the linearised bicycle's characteristic polynomials are made of.
 
+use std::ops::{Add, Mul, Sub};
+
 /// A 2 × 2 matrix, row by row.
 pub type Mat2 = [[f64; 2]; 2];
 
-/// $\det A$.
-pub fn det(a: &Mat2) -> f64 {
+/// $\det A$ (of `f64` or of any number type with the ring operations, such as double-double
+/// or dual numbers).
+pub fn det<T: Copy + Mul<Output = T> + Sub<Output = T>>(a: &[[T; 2]; 2]) -> T {
     a[0][0] * a[1][1] - a[0][1] * a[1][0]
 }
 
 /// The mixed determinant $\det(A + B) - \det A - \det B$: the coefficient of $xy$ in
 /// $\det(xA + yB)$.
-pub fn mix(a: &Mat2, b: &Mat2) -> f64 {
+pub fn mix<T>(a: &[[T; 2]; 2], b: &[[T; 2]; 2]) -> T
+where
+    T: Copy + Add<Output = T> + Mul<Output = T> + Sub<Output = T>,
+{
     a[0][0] * b[1][1] + b[0][0] * a[1][1] - a[0][1] * b[1][0] - b[0][1] * a[1][0]
 }
 

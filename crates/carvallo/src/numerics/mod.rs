@@ -2,8 +2,10 @@
 //! else in the crate (a `tidy` test checks it).
 
 pub mod dd;
+pub mod eigen;
 pub mod graeffe;
 pub mod mat2;
 pub mod ode;
 pub mod poly;
+pub mod quartic;
 pub mod rng;

@@ -24,6 +24,26 @@ impl SplitMix64 {
     pub fn uniform(&mut self, lo: f64, hi: f64) -> f64 {
         lo + (hi - lo) * self.next_unit()
     }
+
+    /// A uniform number in $(0, 1]$ (never zero: a safe argument of a logarithm).
+    pub fn next_unit_nonzero(&mut self) -> f64 {
+        ((self.next_u64() >> 11) + 1) as f64 / (1u64 << 53) as f64
+    }
+
+    /// Two independent standard normal numbers (Box–Muller from two draws of
+    /// [`Self::next_unit_nonzero`]).
+    pub fn normal_pair(&mut self) -> (f64, f64) {
+        let (u1, u2) = (self.next_unit_nonzero(), self.next_unit_nonzero());
+        let r = (-2.0 * u1.ln()).sqrt();
+        let t = std::f64::consts::TAU * u2;
+        (r * t.cos(), r * t.sin())
+    }
+
+    /// `x` scaled by a uniform factor in $[1 - r, 1 + r]$, `r = spread` (one draw of
+    /// [`Self::next_unit`]).
+    pub fn scale(&mut self, x: f64, spread: f64) -> f64 {
+        x * (1.0 + spread * (2.0 * self.next_unit() - 1.0))
+    }
 }
 
 #[cfg(test)]

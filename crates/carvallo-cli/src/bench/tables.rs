@@ -1,0 +1,1106 @@
+//! Run time against error, measured in one run: the tables printed by `carvallo bench`.
+//!
+//! [`run`] measures, with the same inputs for every method:
+//!
+//! 1. **evaluators**: the generated (`scene!`) code, the `carvallo_ir` interpreter and a naive
+//!    tree evaluation of the same formulas (each output recomputed as an expression tree, no
+//!    common subexpressions shared), nanoseconds per evaluation and the largest relative error
+//!    against the 256-bit evaluation of `carvallo_ir::hp`;
+//! 2. **windows**: the bicycle's weave and capsize speeds by the closed-form Hurwitz route, by
+//!    an eigenvalue sweep and by the former 200 000-point scan, nanoseconds per design and the
+//!    relative error against the speeds computed at 256 bits from the 256-bit matrices;
+//! 3. **quartic**: the root solvers of `carvallo::numerics::quartic` on the hard suite, against
+//!    the 256-bit roots ([`super::quartic`]);
+//! 4. **certified**: the compensated classification of `carvallo::whipple::certified` near the
+//!    weave speed against the plain `f64` sign of $H_3$ ([`super::certified`]);
+//! 5. **distributions**: relative errors of the generated characteristic polynomial over seeded
+//!    random parameter sets (benchmark values scaled by independent factors in [0.8, 1.2],
+//!    speeds in [0, 10] m/s), max and quantiles in units of $\varepsilon = 2^{-52}$;
+//! 6. **scenes**: operation count and time of scenes that ask for less (window only, one
+//!    speed's polynomial, full right-hand side), with the benchmark parameters free or fixed;
+//! 7. **sweep**: $10^6$ designs (fewer with `quick`) through [`sweep::sweep`] (the trail
+//!    on a line) and [`sweep::sweep_designs`] (a Monte Carlo of the 25 parameters other
+//!    than $g$, each scaled in [0.8, 1.2]), with the designs per second.
+//!
+//! [`super::extend`] appends the C peer and the batched evaluators.
+//!
+//! Timings are wall-clock means over repeated calls (`std::time::Instant`), so they vary from
+//! run to run and machine to machine; errors do not. [`Targets`] compares the ratios asked for in
+//! the issue with the measured ones.
+
+use std::hint::black_box;
+use std::sync::atomic::AtomicUsize;
+use std::time::Instant;
+
+use carvallo::ir::{hp, Interpreter, Op, Program, Value};
+use rayon::prelude::*;
+use serde::Serialize;
+
+use carvallo::numerics::quartic;
+use carvallo::numerics::rng::SplitMix64;
+use carvallo::whipple::nonlinear::{dynamics_scene, Configuration, WhippleNonlinear};
+use carvallo::whipple::stability::{self, reference_speeds, EigenGrid};
+use carvallo::whipple::sweep::{self, Method};
+use carvallo::whipple::{matrices_scene, Matrices, Whipple, WhippleParams, PARAM_NAMES};
+use nalgebra::{Matrix3, Vector3};
+
+const HOOP_IR: &str = carvallo::artifacts::HOOP.ir;
+const UNICYCLE_IR: &str = carvallo::artifacts::UNICYCLE.ir;
+const WHIPPLE_IR: &str = carvallo::artifacts::WHIPPLE.ir;
+
+/// The precision of every reference evaluation.
+pub const REFERENCE_BITS: usize = 256;
+
+/// How much to measure.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct Config {
+    /// Minimum wall-clock time per timed measurement, in seconds.
+    pub min_time: f64,
+    /// Random points per evaluator for the error columns.
+    pub points: usize,
+    /// Random bicycle designs for the window errors.
+    pub designs: usize,
+    /// Random parameter sets of the error distributions.
+    pub samples: usize,
+    /// Designs of the Hurwitz sweep.
+    pub sweep_count: usize,
+    /// Designs of the eigenvalue sweep.
+    pub eigen_sweep_count: usize,
+}
+
+impl Config {
+    /// The full measurement: $10^6$ samples and sweep designs (5 to 15 minutes on a busy
+    /// 2-core machine).
+    pub fn full() -> Config {
+        Config {
+            min_time: 0.2,
+            points: 200,
+            designs: 200,
+            samples: 1_000_000,
+            sweep_count: 1_000_000,
+            eigen_sweep_count: 2_000,
+        }
+    }
+
+    /// A quick run on tiny samples (seconds), for tests of the structure and the errors.
+    pub fn quick() -> Config {
+        Config {
+            min_time: 0.002,
+            points: 4,
+            designs: 4,
+            samples: 100,
+            sweep_count: 10_000,
+            eigen_sweep_count: 4,
+        }
+    }
+}
+
+/// One measured row.
+#[derive(Clone, Debug, PartialEq, Serialize)]
+pub struct Row {
+    /// The table: `evaluators`, `windows`, `quartic`, `certified`, `scenes`, `sweep`.
+    pub section: &'static str,
+    /// What was measured.
+    pub name: String,
+    /// The method.
+    pub method: String,
+    /// Operations per evaluation, where that is meaningful.
+    pub ops: Option<u64>,
+    /// Mean wall-clock nanoseconds per evaluation (per design, per polynomial).
+    pub ns: Option<f64>,
+    /// The largest relative error against the 256-bit reference.
+    pub max_rel_err: Option<f64>,
+    /// Details.
+    pub note: String,
+}
+
+/// An error distribution.
+#[derive(Clone, Debug, PartialEq, Serialize)]
+pub struct Distribution {
+    /// The output.
+    pub name: String,
+    /// How many samples.
+    pub samples: usize,
+    /// Relative errors in units of $\varepsilon = 2^{-52}$: median, 99 %, 99.99 %, maximum.
+    pub p50: f64,
+    /// 99th percentile.
+    pub p99: f64,
+    /// 99.99th percentile.
+    pub p9999: f64,
+    /// Maximum.
+    pub max: f64,
+}
+
+/// A target of the issue against the measured value.
+#[derive(Clone, Debug, PartialEq, Serialize)]
+pub struct Target {
+    /// The target, in words.
+    pub name: String,
+    /// The measured value.
+    pub measured: f64,
+    /// The required value.
+    pub required: f64,
+    /// Whether it is met.
+    pub met: bool,
+}
+
+/// Everything one run measured.
+#[derive(Clone, Debug, PartialEq, Serialize)]
+pub struct Report {
+    /// `quick` or `full`.
+    pub mode: &'static str,
+    /// The measured rows.
+    pub rows: Vec<Row>,
+    /// The error distributions.
+    pub distributions: Vec<Distribution>,
+    /// The issue's targets.
+    pub targets: Vec<Target>,
+}
+
+/// The targets as a list (see [`Report::targets`]).
+pub type Targets = Vec<Target>;
+
+/// Nanoseconds per call of `f`: the smallest of five means, each over calls lasting at least
+/// `min_time / 5` seconds (the minimum is the estimate least disturbed by other processes on a
+/// shared machine).
+pub fn time_ns<R>(min_time: f64, mut f: impl FnMut() -> R) -> f64 {
+    let slice = min_time / 5.0;
+    let mut n = 1u64;
+    let mut best = f64::INFINITY;
+    let mut rounds = 0;
+    while rounds < 5 {
+        let t = Instant::now();
+        for _ in 0..n {
+            black_box(f());
+        }
+        let dt = t.elapsed().as_secs_f64();
+        if dt >= slice || n >= 1 << 40 {
+            best = best.min(dt * 1e9 / n as f64);
+            rounds += 1;
+        } else if dt <= 0.0 {
+            n *= 16;
+        } else {
+            n = (n as f64 * (1.2 * slice / dt).min(16.0)) as u64 + 1;
+        }
+    }
+    best
+}
+
+/// A valid random bicycle: the benchmark with every parameter scaled by a factor in
+/// [0.8, 1.2] ([`WhippleParams::perturbed`]).
+pub(super) fn random_design(rng: &mut SplitMix64) -> WhippleParams {
+    WhippleParams::benchmark().perturbed(rng, 0.2)
+}
+
+/// Relative error of `x` against `reference` (absolute when the reference is zero).
+pub(super) fn rel(x: f64, reference: f64) -> f64 {
+    if reference == 0.0 {
+        x.abs()
+    } else {
+        ((x - reference) / reference).abs()
+    }
+}
+
+/// Default values of the hoop's and the unicycle's arguments.
+fn model_value(name: &str) -> f64 {
+    match name {
+        "R" => 0.5,
+        "g" => 9.81,
+        "mu" => 1.2,
+        "theta" => 0.3,
+        "p" => 0.1,
+        "q" => 2.0,
+        "r" => -0.4,
+        "n" => -0.8,
+        "s" => 3.0,
+        "z" => 1.25,
+        "A" => 100.0,
+        "B" => 99.5,
+        "C" => 1.4,
+        "L" => 0.1,
+        "mu1" => 5.0,
+        "A1" => 1.875,
+        "B1" => 2.5,
+        "C1" => 0.625,
+        "dp" | "dn" | "ds" => 0.01,
+        _ => f64::NAN,
+    }
+}
+
+/// The value of argument `name` in a random sample: whipple parameters from `design`, the
+/// speed from `speed`, other models' arguments scaled around [`model_value`].
+fn arg_value(name: &str, design: &WhippleParams, speed: f64, rng: &mut SplitMix64) -> f64 {
+    if name == "v" {
+        speed
+    } else if let Some(x) = design.get(name) {
+        x
+    } else {
+        rng.scale(model_value(name), 0.2)
+    }
+}
+
+/// Naive tree evaluation: `v` recomputed from the leaves, nothing shared.
+fn tree_eval(p: &Program, v: Value, params: &[f64], inputs: &[f64]) -> f64 {
+    let i = match v {
+        Value::Param(i) => return params[i as usize],
+        Value::Input(i) => return inputs[i as usize],
+        Value::Inst(i) => i as usize,
+    };
+    let e = |a: Value| tree_eval(p, a, params, inputs);
+    match p.insts[i].op {
+        Op::Const(c) => c,
+        Op::Neg(a) => -e(a),
+        Op::Add(a, b) => e(a) + e(b),
+        Op::Sub(a, b) => e(a) - e(b),
+        Op::Mul(a, b) => e(a) * e(b),
+        Op::Div(a, b) => e(a) / e(b),
+        Op::Powi(a, k) => e(a).powi(k),
+        Op::Sqrt(a) => e(a).sqrt(),
+        Op::Sin(a) => e(a).sin(),
+        Op::Cos(a) => e(a).cos(),
+        Op::Tan(a) => e(a).tan(),
+        Op::Atan2(a, b) => e(a).atan2(e(b)),
+    }
+}
+
+/// The number of operations of the naive tree evaluation of every output (saturating).
+fn tree_ops(p: &Program) -> u64 {
+    let mut size = vec![0u64; p.insts.len()];
+    for (i, inst) in p.insts.iter().enumerate() {
+        let own = u64::from(!matches!(inst.op, Op::Const(_)));
+        size[i] = inst.op.operands().fold(own, |acc, v| match v {
+            Value::Inst(j) => acc.saturating_add(size[j as usize]),
+            _ => acc,
+        });
+    }
+    p.outputs
+        .iter()
+        .map(|o| match o.value {
+            Value::Inst(j) => size[j as usize],
+            _ => 0,
+        })
+        .fold(0, u64::saturating_add)
+}
+
+/// A scene to measure: its generated evaluator, argument names and outputs.
+struct Scene<'a> {
+    name: &'static str,
+    ir: &'a str,
+    args: &'a [&'a str],
+    outputs: &'a [&'a str],
+    ops: usize,
+    eval: &'a (dyn Fn(&[f64], &mut [f64]) + Sync),
+}
+
+/// A generated scene's `eval_array` as a function of a slice.
+macro_rules! scene_fn {
+    ($m:path) => {{
+        use $m as s;
+        &|x: &[f64], out: &mut [f64]| {
+            let mut a = [0.0; s::Args::LEN];
+            a.copy_from_slice(&x[..s::Args::LEN]);
+            out.copy_from_slice(&s::eval_array(&a));
+        }
+    }};
+}
+
+fn scene_args(params: &[&'static str], inputs: &[&'static str]) -> Vec<&'static str> {
+    params.iter().chain(inputs).copied().collect()
+}
+
+/// Rows of table 1 for one scene; also returns generated-vs-interpreter speed ratio.
+fn evaluator_rows(cfg: &Config, sc: &Scene<'_>, rows: &mut Vec<Row>) -> f64 {
+    let program = Program::parse(sc.ir)
+        .expect("the committed IR parses")
+        .select_outputs(sc.outputs)
+        .expect("the IR has the scene's outputs");
+    let interp = Interpreter::new(&program).expect("a parsed program compiles");
+    let mut rng = SplitMix64(6);
+    // Points: argument vectors in the scene's order, and split for the interpreter.
+    let points: Vec<(Vec<f64>, Vec<f64>, Vec<f64>)> = (0..cfg.points)
+        .map(|_| {
+            let design = random_design(&mut rng);
+            let speed = 10.0 * rng.next_unit();
+            let mut vals = std::collections::BTreeMap::new();
+            for n in program
+                .params
+                .iter()
+                .chain(&program.inputs)
+                .map(String::as_str)
+                .chain(sc.args.iter().copied())
+            {
+                if !vals.contains_key(n) {
+                    vals.insert(n.to_string(), arg_value(n, &design, speed, &mut rng));
+                }
+            }
+            let args = sc.args.iter().map(|n| vals[*n]).collect();
+            let params = program.params.iter().map(|n| vals[n.as_str()]).collect();
+            let inputs = program.inputs.iter().map(|n| vals[n.as_str()]).collect();
+            (args, params, inputs)
+        })
+        .collect();
+    let reference: Vec<Vec<f64>> = points
+        .par_iter()
+        .map(|(_, p, i)| hp::eval_f64(&program, p, i, REFERENCE_BITS).expect("valid arguments"))
+        .collect();
+    let mut scratch = vec![0.0; interp.scratch_len()];
+    let mut out = vec![0.0; interp.n_outputs()];
+    let (mut err_gen, mut err_int, mut err_tree, mut identical) = (0.0f64, 0.0f64, 0.0f64, 0usize);
+    for ((args, p, i), r) in points.iter().zip(&reference) {
+        let mut g = vec![0.0; r.len()];
+        (sc.eval)(args, &mut g);
+        interp.eval(p, i, &mut scratch, &mut out).expect("lengths match");
+        let t: Vec<f64> =
+            program.outputs.iter().map(|o| tree_eval(&program, o.value, p, i)).collect();
+        identical += usize::from(g.iter().zip(&out).all(|(a, b)| a.to_bits() == b.to_bits()));
+        for k in 0..r.len() {
+            err_gen = err_gen.max(rel(g[k], r[k]));
+            err_int = err_int.max(rel(out[k], r[k]));
+            err_tree = err_tree.max(rel(t[k], r[k]));
+        }
+    }
+    let (a0, p0, i0) = &points[0];
+    let mut gen_out = vec![0.0; interp.n_outputs()];
+    let t_gen = time_ns(cfg.min_time, || {
+        (sc.eval)(black_box(a0), &mut gen_out);
+        gen_out[0]
+    });
+    let t_int = time_ns(cfg.min_time, || {
+        interp.eval(black_box(p0), black_box(i0), &mut scratch, &mut out).map(|()| out[0])
+    });
+    let tops = tree_ops(&program);
+    let t_tree = (tops <= 2_000_000).then(|| {
+        time_ns(cfg.min_time, || {
+            program
+                .outputs
+                .iter()
+                .map(|o| tree_eval(&program, o.value, black_box(p0), i0))
+                .sum::<f64>()
+        })
+    });
+    let iops = program.op_count().total as u64;
+    let n = cfg.points;
+    rows.push(Row {
+        section: "evaluators",
+        name: sc.name.to_string(),
+        method: "generated".into(),
+        ops: Some(sc.ops as u64),
+        ns: Some(t_gen),
+        max_rel_err: Some(err_gen),
+        note: format!("{identical} of {n} points bit for bit equal to the interpreter"),
+    });
+    rows.push(Row {
+        section: "evaluators",
+        name: sc.name.to_string(),
+        method: "interpreter".into(),
+        ops: Some(iops),
+        ns: Some(t_int),
+        max_rel_err: Some(err_int),
+        note: format!("generated is {:.1}x faster", t_int / t_gen),
+    });
+    rows.push(Row {
+        section: "evaluators",
+        name: sc.name.to_string(),
+        method: "naive tree".into(),
+        ops: Some(tops),
+        ns: t_tree,
+        max_rel_err: Some(err_tree),
+        note: match t_tree {
+            Some(t) => format!("generated is {:.1}x faster", t / t_gen),
+            None => "tree too large to time".into(),
+        },
+    });
+    t_int / t_gen
+}
+
+pub(super) fn matrices_of(w: &Whipple) -> (Matrices, f64) {
+    (w.matrices(), w.params().get("g").unwrap_or(f64::NAN))
+}
+
+/// Table 2; returns (Hurwitz time, eigen time, Hurwitz and eigen errors on the speeds both
+/// report, benchmark error).
+fn window_rows(cfg: &Config, rows: &mut Vec<Row>) -> (f64, f64, f64, f64, f64) {
+    let mut rng = SplitMix64(7);
+    let mut designs = vec![WhippleParams::benchmark()];
+    designs.extend((1..cfg.designs.max(1)).map(|_| random_design(&mut rng)));
+    let whipples: Vec<Whipple> = designs.iter().cloned().map(Whipple::new).collect();
+    let grid = EigenGrid::default();
+    let results: Vec<_> = whipples
+        .par_iter()
+        .map(|w| {
+            let (m, g) = matrices_of(w);
+            let hw = stability::hurwitz_window(&m, g);
+            let hpw = stability::hurwitz_window_polished(&m, g);
+            let ew = stability::eigen_window(&m, g, grid);
+            let refs =
+                reference_speeds(w.params(), (hw.weave_speed, hw.capsize_speed), REFERENCE_BITS);
+            (hw, ew, refs, hpw)
+        })
+        .collect();
+    let err = |x: Option<f64>, r: Option<f64>| match (x, r) {
+        (Some(x), Some(r)) => rel(x, r),
+        (None, None) => 0.0,
+        _ => f64::INFINITY,
+    };
+    let (mut eh, mut ee, mut missing, mut compared, mut unlabelled) = (0.0f64, 0.0f64, 0, 0, 0);
+    let mut eh_common = 0.0f64;
+    let mut bench_err = 0.0;
+    let mut ep = 0.0f64;
+    let mut bench_err_p = 0.0;
+    for (i, (hw, ew, (rw, rc), hpw)) in results.iter().enumerate() {
+        let e = err(hw.weave_speed, *rw).max(err(hw.capsize_speed, *rc));
+        let e_p = err(hpw.weave_speed, *rw).max(err(hpw.capsize_speed, *rc));
+        ep = ep.max(e_p);
+        if i == 0 {
+            bench_err_p = e_p;
+        }
+        eh = eh.max(e);
+        if i == 0 {
+            bench_err = e;
+        }
+        let Some(ew) = ew else {
+            missing += 1;
+            continue;
+        };
+        // The eigenvalue route sees only the speeds where the largest real part changes sign
+        // below grid.vmax: a root of a0 or H3 hidden by another unstable mode is no edge
+        // there. Compare the speeds both routes report.
+        let pairs =
+            [(ew.weave_speed, hw.weave_speed, rw), (ew.capsize_speed, hw.capsize_speed, rc)];
+        for (x, h, r) in pairs {
+            match (x, r) {
+                (Some(x), Some(r)) if h.is_some_and(|h| (h - x).abs() <= 1e-6 * h) => {
+                    ee = ee.max(rel(x, *r));
+                    eh_common = eh_common.max(h.map_or(f64::INFINITY, |h| rel(h, *r)));
+                    compared += 1;
+                }
+                _ => unlabelled += 1,
+            }
+        }
+    }
+    let (m, g) = matrices_of(&whipples[0]);
+    let t_h = time_ns(cfg.min_time, || stability::hurwitz_window(black_box(&m), g));
+    let t_hp = time_ns(cfg.min_time, || stability::hurwitz_window_polished(black_box(&m), g));
+    let t_e = time_ns(cfg.min_time, || stability::eigen_window(black_box(&m), g, grid));
+    let t_scan = time_ns(cfg.min_time.min(0.05), || stability::scan_window(black_box(&m), g));
+    let scan = stability::scan_window(&m, g);
+    let (rw, rc) = results[0].2;
+    let e_scan = err(scan.weave_speed, rw).max(err(scan.capsize_speed, rc));
+    let params = whipples[0].params().values();
+    let index: Vec<usize> = matrices_scene::PARAMS
+        .iter()
+        .map(|p| PARAM_NAMES.iter().position(|n| n == p).unwrap_or(0))
+        .collect();
+    let arr: [f64; matrices_scene::Args::LEN] = std::array::from_fn(|i| params[index[i]]);
+    let t_m = time_ns(cfg.min_time, || matrices_scene::eval_array(black_box(&arr)));
+    let n = designs.len();
+    let name = format!("weave and capsize speeds, {n} designs");
+    rows.push(Row {
+        section: "windows",
+        name: "matrices M, C1, K0, K2 (shared input)".into(),
+        method: "generated".into(),
+        ops: Some(matrices_scene::OP_COUNT as u64),
+        ns: Some(t_m),
+        max_rel_err: None,
+        note: "needed by every route; not in the per-route times below".into(),
+    });
+    rows.push(Row {
+        section: "windows",
+        name: name.clone(),
+        method: "hurwitz closed form".into(),
+        ops: None,
+        ns: Some(t_h),
+        max_rel_err: Some(eh),
+        note: format!(
+            "benchmark bicycle: {bench_err:.1e}; {eh_common:.1e} on the speeds the eigenvalue \
+             sweep also reports"
+        ),
+    });
+    rows.push(Row {
+        section: "windows",
+        name: name.clone(),
+        method: "hurwitz + double-double polish".into(),
+        ops: None,
+        ns: Some(t_hp),
+        max_rel_err: Some(ep),
+        note: format!("benchmark bicycle: {bench_err_p:.1e}; Whipple::stability_window"),
+    });
+    rows.push(Row {
+        section: "windows",
+        name: name.clone(),
+        method: "eigenvalue sweep".into(),
+        ops: None,
+        ns: Some(t_e),
+        max_rel_err: Some(ee),
+        note: format!(
+            "{} grid points to {} m/s + bisection; {:.0}x slower than hurwitz; error over the \
+             {compared} speeds both routes report ({unlabelled} not seen as edges by the \
+             eigenvalues); {missing} failed",
+            grid.points,
+            grid.vmax,
+            t_e / t_h
+        ),
+    });
+    rows.push(Row {
+        section: "windows",
+        name: "benchmark bicycle".into(),
+        method: "former 200 000-point scan".into(),
+        ops: None,
+        ns: Some(t_scan),
+        max_rel_err: Some(e_scan),
+        note: format!("{:.0}x slower than hurwitz", t_scan / t_h),
+    });
+    (t_h, t_e, eh_common, ee, bench_err)
+}
+
+/// Table 5 and its distributions.
+fn distributions(cfg: &Config) -> Vec<Distribution> {
+    use carvallo::whipple::char_poly_scene as cp;
+    let program = Program::parse(WHIPPLE_IR)
+        .expect("whipple.ir parses")
+        .select_outputs(cp::OUTPUTS)
+        .expect("whipple.ir has the characteristic polynomial");
+    let samples = cfg.samples;
+    let errs: Vec<[f64; 5]> = (0..samples)
+        .into_par_iter()
+        .map(|i| {
+            let mut rng = SplitMix64(1_000_003 * i as u64 + 11);
+            let d = random_design(&mut rng);
+            let v = 10.0 * rng.next_unit();
+            let params: Vec<f64> =
+                program.params.iter().map(|n| d.get(n).unwrap_or(f64::NAN)).collect();
+            let r = hp::eval_f64(&program, &params, &[v], REFERENCE_BITS)
+                .unwrap_or_else(|_| vec![f64::NAN; 5]);
+            let names = cp::PARAMS;
+            let arr: [f64; cp::Args::LEN] = std::array::from_fn(|k| {
+                if k < names.len() {
+                    d.get(names[k]).unwrap_or(f64::NAN)
+                } else {
+                    v
+                }
+            });
+            let g = cp::eval_array(&arr);
+            std::array::from_fn(|k| rel(g[k], r[k]) / f64::EPSILON)
+        })
+        .collect();
+    (0..5)
+        .map(|k| {
+            let mut e: Vec<f64> = errs.iter().map(|x| x[k]).collect();
+            e.sort_by(f64::total_cmp);
+            let q = |f: f64| e[((e.len() - 1) as f64 * f).round() as usize];
+            Distribution {
+                name: format!("whipple a{k} (generated, f64)"),
+                samples,
+                p50: q(0.5),
+                p99: q(0.99),
+                p9999: q(0.9999),
+                max: q(1.0),
+            }
+        })
+        .collect()
+}
+
+carvallo::scene! {
+    /// The bicycle's matrices with every benchmark parameter fixed but the trail `c`.
+    pub mod window_fixed_scene {
+        model: whipple,
+        fixed: { w: 1.02, lambda: 0.3141592653589793, g: 9.81, rR: 0.3, mR: 2.0,
+                 IRxx: 0.0603, IRyy: 0.12, xB: 0.3, zB: -0.9, mB: 85.0, IBxx: 9.2, IByy: 11.0,
+                 IBzz: 2.8, IBxz: 2.4, xH: 0.9, zH: -0.7, mH: 4.0, IHxx: 0.05892, IHyy: 0.06,
+                 IHzz: 0.00708, IHxz: -0.00756, rF: 0.35, mF: 3.0, IFxx: 0.1405, IFyy: 0.28 },
+        outputs: [m11, m12, m21, m22, c1_11, c1_12, c1_21, c1_22,
+                  k0_11, k0_12, k0_21, k0_22, k2_11, k2_12, k2_21, k2_22],
+    }
+}
+
+carvallo::scene! {
+    /// The bicycle's characteristic polynomial at speed `v`, every benchmark parameter fixed.
+    pub mod char_poly_fixed_scene {
+        model: whipple,
+        fixed: { w: 1.02, c: 0.08, lambda: 0.3141592653589793, g: 9.81, rR: 0.3, mR: 2.0,
+                 IRxx: 0.0603, IRyy: 0.12, xB: 0.3, zB: -0.9, mB: 85.0, IBxx: 9.2, IByy: 11.0,
+                 IBzz: 2.8, IBxz: 2.4, xH: 0.9, zH: -0.7, mH: 4.0, IHxx: 0.05892, IHyy: 0.06,
+                 IHzz: 0.00708, IHxz: -0.00756, rF: 0.35, mF: 3.0, IFxx: 0.1405, IFyy: 0.28 },
+        outputs: [a0, a1, a2, a3, a4],
+    }
+}
+
+carvallo::scene! {
+    /// The hoop's stability (S) only, R = 0.5 m, g = 9.81 m/s², mu = 1.2 kg fixed.
+    pub mod hoop_window_fixed_scene {
+        model: hoop,
+        fixed: { R: 0.5, g: 9.81, mu: 1.2 },
+        outputs: [stability],
+    }
+}
+
+carvallo::scene! {
+    /// The hoop's right-hand side (2), R = 0.5 m, g = 9.81 m/s², mu = 1.2 kg fixed.
+    pub mod hoop_rhs_fixed_scene {
+        model: hoop,
+        fixed: { R: 0.5, g: 9.81, mu: 1.2 },
+        outputs: [pns_dp, pns_dn, pns_ds],
+    }
+}
+
+carvallo::scene! {
+    /// The unicycle's stability first member only, free parameters.
+    pub mod unicycle_window_scene {
+        model: unicycle,
+        outputs: [stability],
+    }
+}
+
+carvallo::scene! {
+    /// The unicycle's stability first member only, the tutorial rider fixed.
+    pub mod unicycle_window_fixed_scene {
+        model: unicycle,
+        fixed: { R: 0.5, g: 9.81, mu: 60.0, z: 1.25, A: 100.0, B: 99.5, C: 1.4, L: 0.1,
+                 mu1: 5.0, A1: 1.875, B1: 2.5, C1: 0.625 },
+        outputs: [stability],
+    }
+}
+
+carvallo::scene! {
+    /// The unicycle's right-hand side, the tutorial rider fixed.
+    pub mod unicycle_rhs_fixed_scene {
+        model: unicycle,
+        fixed: { R: 0.5, g: 9.81, mu: 60.0, z: 1.25, A: 100.0, B: 99.5, C: 1.4, L: 0.1,
+                 mu1: 5.0, A1: 1.875, B1: 2.5, C1: 0.625 },
+        outputs: [pns_dp, pns_dn, pns_ds],
+    }
+}
+
+carvallo::scene! {
+    /// The unicycle's right-hand side, free parameters.
+    pub mod unicycle_rhs_scene {
+        model: unicycle,
+        outputs: [pns_dp, pns_dn, pns_ds],
+    }
+}
+
+carvallo::scene! {
+    /// The nonlinear bicycle's mass matrix $M_3$ and forcing $f_3$, free parameters.
+    pub mod nonlinear_rhs_scene {
+        model: whipple_nonlinear,
+        lanes: 4,
+        outputs: [m3_11, m3_12, m3_13, m3_22, m3_23, m3_33, f3_1, f3_2, f3_3],
+    }
+}
+
+carvallo::scene! {
+    /// The nonlinear bicycle's $M_3$ and $f_3$, every benchmark parameter fixed.
+    pub mod nonlinear_rhs_fixed_scene {
+        model: whipple_nonlinear,
+        fixed: { w: 1.02, c: 0.08, lambda: 0.3141592653589793, g: 9.81, rR: 0.3, mR: 2.0,
+                 IRxx: 0.0603, IRyy: 0.12, xB: 0.3, zB: -0.9, mB: 85.0, IBxx: 9.2, IByy: 11.0,
+                 IBzz: 2.8, IBxz: 2.4, xH: 0.9, zH: -0.7, mH: 4.0, IHxx: 0.05892, IHyy: 0.06,
+                 IHzz: 0.00708, IHxz: -0.00756, rF: 0.35, mF: 3.0, IFxx: 0.1405, IFyy: 0.28 },
+        outputs: [m3_11, m3_12, m3_13, m3_22, m3_23, m3_33, f3_1, f3_2, f3_3],
+    }
+}
+
+carvallo::scene! {
+    /// The nonlinear bicycle's mass matrix $M_3$ only, free parameters.
+    pub mod nonlinear_mass_scene {
+        model: whipple_nonlinear,
+        outputs: [m3_11, m3_12, m3_13, m3_22, m3_23, m3_33],
+    }
+}
+
+/// Table 6: scenes that ask for less.
+fn scene_rows(cfg: &Config, rows: &mut Vec<Row>) {
+    let mut add = |name: &str, kind: &str, ops: usize, ns: f64, note: &str| {
+        rows.push(Row {
+            section: "scenes",
+            name: name.into(),
+            method: kind.into(),
+            ops: Some(ops as u64),
+            ns: Some(ns),
+            max_rel_err: None,
+            note: note.into(),
+        })
+    };
+    let mt = cfg.min_time;
+    let args = |names: &[&str], v: f64| -> Vec<f64> {
+        let b = WhippleParams::benchmark();
+        names
+            .iter()
+            .map(|n| if *n == "v" { v } else { b.get(n).unwrap_or_else(|| model_value(n)) })
+            .collect()
+    };
+    let g = 9.81;
+    macro_rules! arr {
+        ($m:path, $v:expr) => {{
+            use $m as s;
+            let a = args(&scene_args(s::PARAMS, s::INPUTS), $v);
+            let arr: [f64; s::Args::LEN] = std::array::from_fn(|i| a[i]);
+            arr
+        }};
+    }
+    let to_m = |o: [f64; 16]| {
+        let r = |k: usize| [[o[k], o[k + 1]], [o[k + 2], o[k + 3]]];
+        Matrices { m: r(0), c1: r(4), k0: r(8), k2: r(12) }
+    };
+    let a = arr!(matrices_scene, 0.0);
+    let t = time_ns(mt, || {
+        stability::hurwitz_window(&to_m(matrices_scene::eval_array(black_box(&a))), g)
+    });
+    add(
+        "bicycle (a) window only",
+        "free",
+        matrices_scene::OP_COUNT,
+        t,
+        "matrices + hurwitz_window",
+    );
+    let a = arr!(window_fixed_scene, 0.0);
+    let t = time_ns(mt, || {
+        stability::hurwitz_window(&to_m(window_fixed_scene::eval_array(black_box(&a))), g)
+    });
+    add(
+        "bicycle (a) window only",
+        "fixed but c",
+        window_fixed_scene::OP_COUNT,
+        t,
+        "matrices + hurwitz_window",
+    );
+    use carvallo::whipple::char_poly_scene as cp;
+    let a = arr!(cp, 5.0);
+    let t = time_ns(mt, || quartic::ferrari(&cp::eval_array(black_box(&a))));
+    add("bicycle (b) eigenvalues at one speed", "free", cp::OP_COUNT, t, "a0..a4 + ferrari");
+    let a = arr!(char_poly_fixed_scene, 5.0);
+    let t = time_ns(mt, || quartic::ferrari(&char_poly_fixed_scene::eval_array(black_box(&a))));
+    add(
+        "bicycle (b) eigenvalues at one speed",
+        "fixed",
+        char_poly_fixed_scene::OP_COUNT,
+        t,
+        "a0..a4 + ferrari",
+    );
+    let w = Whipple::new(WhippleParams::benchmark());
+    let t = time_ns(mt, || w.eigenvalues(black_box(5.0)));
+    add(
+        "bicycle (b) eigenvalues at one speed",
+        "fixed, via state matrix",
+        0,
+        t,
+        "precomputed matrices + Schur (nalgebra)",
+    );
+    use carvallo::hoop::{pns_scene, stability_scene};
+    let a = arr!(stability_scene, 0.0);
+    let t = time_ns(mt, || stability_scene::eval_array(black_box(&a)));
+    add("hoop (a) stability (S) only", "free", stability_scene::OP_COUNT, t, "");
+    let a = arr!(hoop_window_fixed_scene, 0.0);
+    let t = time_ns(mt, || hoop_window_fixed_scene::eval_array(black_box(&a)));
+    add("hoop (a) stability (S) only", "fixed", hoop_window_fixed_scene::OP_COUNT, t, "");
+    let a = arr!(pns_scene, 0.0);
+    let t = time_ns(mt, || pns_scene::eval_array(black_box(&a)));
+    add("hoop (c) full right-hand side", "free", pns_scene::OP_COUNT, t, "");
+    let a = arr!(hoop_rhs_fixed_scene, 0.0);
+    let t = time_ns(mt, || hoop_rhs_fixed_scene::eval_array(black_box(&a)));
+    add("hoop (c) full right-hand side", "fixed", hoop_rhs_fixed_scene::OP_COUNT, t, "");
+    let a = arr!(unicycle_window_scene, 0.0);
+    let t = time_ns(mt, || unicycle_window_scene::eval_array(black_box(&a)));
+    add("unicycle (a) stability only", "free", unicycle_window_scene::OP_COUNT, t, "");
+    let a = arr!(unicycle_window_fixed_scene, 0.0);
+    let t = time_ns(mt, || unicycle_window_fixed_scene::eval_array(black_box(&a)));
+    add("unicycle (a) stability only", "fixed", unicycle_window_fixed_scene::OP_COUNT, t, "");
+    let a = arr!(unicycle_rhs_scene, 0.0);
+    let t = time_ns(mt, || unicycle_rhs_scene::eval_array(black_box(&a)));
+    add("unicycle (c) full right-hand side", "free", unicycle_rhs_scene::OP_COUNT, t, "");
+    let a = arr!(unicycle_rhs_fixed_scene, 0.0);
+    let t = time_ns(mt, || unicycle_rhs_fixed_scene::eval_array(black_box(&a)));
+    add("unicycle (c) full right-hand side", "fixed", unicycle_rhs_fixed_scene::OP_COUNT, t, "");
+    // The nonlinear bicycle at a leaned, steered, moving configuration of the benchmark (the
+    // pitch solved from the contact constraint), solved for the three accelerations by LU.
+    let wn = WhippleNonlinear::new(WhippleParams::benchmark());
+    let (lean, steer) = (0.1, 0.05);
+    let config = wn.pitch(lean, steer, 0.0).map(|pitch| Configuration {
+        lean,
+        pitch,
+        steer,
+        lean_rate: 0.2,
+        steer_rate: -0.1,
+        rear_wheel_rate: -5.0 / 0.3,
+    });
+    if let Ok(c) = config {
+        let nl_args = |names: &[&str]| -> Vec<f64> {
+            let b = WhippleParams::benchmark();
+            names.iter().map(|n| c.input(n).or_else(|| b.get(n)).unwrap_or(f64::NAN)).collect()
+        };
+        let solve = |o: [f64; 9]| {
+            let m = Matrix3::new(o[0], o[1], o[2], o[1], o[3], o[4], o[2], o[4], o[5]);
+            m.lu().solve(&Vector3::new(o[6], o[7], o[8]))
+        };
+        macro_rules! nl_arr {
+            ($m:path) => {{
+                use $m as s;
+                let a = nl_args(&scene_args(s::PARAMS, s::INPUTS));
+                let arr: [f64; s::Args::LEN] = std::array::from_fn(|i| a[i]);
+                arr
+            }};
+        }
+        let a = nl_arr!(nonlinear_rhs_scene);
+        let t = time_ns(mt, || solve(nonlinear_rhs_scene::eval_array(black_box(&a))));
+        add(
+            "bicycle (c) full nonlinear right-hand side",
+            "free",
+            nonlinear_rhs_scene::OP_COUNT,
+            t,
+            "M3, f3 + LU (PyDy's mass matrix + forcing: 2,367 ops)",
+        );
+        let a = nl_arr!(nonlinear_rhs_fixed_scene);
+        let t = time_ns(mt, || solve(nonlinear_rhs_fixed_scene::eval_array(black_box(&a))));
+        add(
+            "bicycle (c) full nonlinear right-hand side",
+            "fixed",
+            nonlinear_rhs_fixed_scene::OP_COUNT,
+            t,
+            "M3, f3 + LU",
+        );
+        let a = nl_arr!(nonlinear_mass_scene);
+        let t = time_ns(mt, || nonlinear_mass_scene::eval_array(black_box(&a)));
+        add(
+            "bicycle (c') nonlinear mass matrix only",
+            "free",
+            nonlinear_mass_scene::OP_COUNT,
+            t,
+            "M3",
+        );
+        let t = time_ns(mt, || wn.accelerations(black_box(&c)));
+        add(
+            "bicycle (c) full nonlinear right-hand side",
+            "free, with dependent rates",
+            dynamics_scene::OP_COUNT,
+            t,
+            "WhippleNonlinear::accelerations (M3, f3, dependent rates and accelerations, LU)",
+        );
+    }
+}
+
+/// Table 7; returns the Hurwitz sweep's seconds per $10^6$ designs and the designs per second
+/// of the Hurwitz sweep and of the Monte Carlo sweep.
+fn sweep_rows(cfg: &Config, rows: &mut Vec<Row>) -> (f64, f64, f64) {
+    let base = WhippleParams::benchmark();
+    let mut per_million = f64::INFINITY;
+    let mut rates = (0.0, 0.0);
+    for (method, count, label) in [
+        (Method::Hurwitz, cfg.sweep_count, "hurwitz"),
+        (Method::Eigen, cfg.eigen_sweep_count, "eigen"),
+    ] {
+        let progress = AtomicUsize::new(0);
+        let Ok(s) = sweep::sweep(&base, "c", 0.0, 0.2, count, method, &progress) else { continue };
+        if method == Method::Hurwitz {
+            per_million = s.elapsed * 1e6 / count as f64;
+            rates.0 = s.designs_per_second;
+        }
+        rows.push(Row {
+            section: "sweep",
+            name: format!("c = 0.0:0.2:{count}"),
+            method: label.into(),
+            ops: None,
+            ns: Some(s.elapsed * 1e9 / count as f64),
+            max_rel_err: None,
+            note: format!(
+                "{:.3} s, {:.0} designs/s on {} threads, {} stable, weave {:?}",
+                s.elapsed,
+                s.designs_per_second,
+                rayon::current_num_threads(),
+                s.stable,
+                s.weave_range
+            ),
+        });
+    }
+    // Monte Carlo: every parameter but g scaled by a factor in [0.8, 1.2].
+    let spreads = PARAM_NAMES
+        .iter()
+        .filter(|n| **n != "g")
+        .map(|n| sweep::Spread { name: n.to_string(), rel: 0.2 })
+        .collect();
+    let designs = sweep::Designs::Random { count: cfg.sweep_count, spreads, seed: 15 };
+    let progress = AtomicUsize::new(0);
+    if let Ok(out) = sweep::sweep_designs(&base, &designs, Method::Hurwitz, false, &progress) {
+        let s = &out.summary;
+        rates.1 = s.designs_per_second;
+        rows.push(Row {
+            section: "sweep",
+            name: format!("random 25 parameters +-20 %, {}", s.count),
+            method: "hurwitz".into(),
+            ops: None,
+            ns: Some(s.elapsed * 1e9 / s.count as f64),
+            max_rel_err: None,
+            note: format!(
+                "{:.3} s, {:.0} designs/s on {} threads, {} stable, {} rejected, weave {:?}",
+                s.elapsed,
+                s.designs_per_second,
+                rayon::current_num_threads(),
+                s.stable,
+                out.rejected,
+                s.weave_range
+            ),
+        });
+    }
+    (per_million, rates.0, rates.1)
+}
+
+/// Runs every measurement (see the [module docs](self)).
+pub fn run(cfg: &Config) -> Report {
+    let mut rows = Vec::new();
+    use carvallo::hoop::pns_scene;
+    use carvallo::unicycle::motion_scene;
+    use carvallo::whipple::char_poly_scene;
+    let hoop_args = scene_args(pns_scene::PARAMS, pns_scene::INPUTS);
+    let cp_args = scene_args(char_poly_scene::PARAMS, char_poly_scene::INPUTS);
+    let mx_args = scene_args(matrices_scene::PARAMS, matrices_scene::INPUTS);
+    let uni_args = scene_args(motion_scene::PARAMS, motion_scene::INPUTS);
+    let scenes = [
+        Scene {
+            name: "hoop right-hand side (2)",
+            ir: HOOP_IR,
+            args: &hoop_args,
+            outputs: pns_scene::OUTPUTS,
+            ops: pns_scene::OP_COUNT,
+            eval: scene_fn!(carvallo::hoop::pns_scene),
+        },
+        Scene {
+            name: "bicycle matrices",
+            ir: WHIPPLE_IR,
+            args: &mx_args,
+            outputs: matrices_scene::OUTPUTS,
+            ops: matrices_scene::OP_COUNT,
+            eval: scene_fn!(carvallo::whipple::matrices_scene),
+        },
+        Scene {
+            name: "bicycle a0..a4 at v",
+            ir: WHIPPLE_IR,
+            args: &cp_args,
+            outputs: char_poly_scene::OUTPUTS,
+            ops: char_poly_scene::OP_COUNT,
+            eval: scene_fn!(carvallo::whipple::char_poly_scene),
+        },
+        Scene {
+            name: "unicycle motion + energy",
+            ir: UNICYCLE_IR,
+            args: &uni_args,
+            outputs: motion_scene::OUTPUTS,
+            ops: motion_scene::OP_COUNT,
+            eval: scene_fn!(carvallo::unicycle::motion_scene),
+        },
+    ];
+    let mut ratios = Vec::new();
+    for sc in &scenes {
+        ratios.push((sc.name, evaluator_rows(cfg, sc, &mut rows)));
+    }
+    let (t_h, t_e, e_h, e_e, bench_err) = window_rows(cfg, &mut rows);
+    super::quartic::quartic_rows(cfg, &mut rows);
+    super::certified::certified_rows(cfg, &mut rows);
+    let distributions = distributions(cfg);
+    scene_rows(cfg, &mut rows);
+    let (per_million, grid_rate, random_rate) = sweep_rows(cfg, &mut rows);
+    let mut targets: Targets = ratios
+        .iter()
+        .map(|(name, r)| Target {
+            name: format!("generated vs interpreter speed-up, {name}"),
+            measured: *r,
+            required: 20.0,
+            met: *r >= 20.0,
+        })
+        .collect();
+    targets.push(Target {
+        name: "hurwitz vs eigenvalue sweep speed-up per design".into(),
+        measured: t_e / t_h,
+        required: 1000.0,
+        met: t_e / t_h >= 1000.0,
+    });
+    targets.push(Target {
+        name: "hurwitz / eigenvalue sweep speed error, same speeds (at most)".into(),
+        measured: if e_e > 0.0 {
+            e_h / e_e
+        } else if e_h == 0.0 {
+            0.0
+        } else {
+            f64::INFINITY
+        },
+        required: 1.0,
+        met: e_h <= e_e,
+    });
+    targets.push(Target {
+        name: "benchmark weave and capsize speeds, relative error (at most)".into(),
+        measured: bench_err,
+        required: 1e-13,
+        met: bench_err <= 1e-13,
+    });
+    targets.push(Target {
+        name: "seconds per 10^6 designs, hurwitz sweep with rayon (at most)".into(),
+        measured: per_million,
+        required: 1.0,
+        met: per_million < 1.0,
+    });
+    for (what, rate) in [("c sweep", grid_rate), ("Monte Carlo", random_rate)] {
+        targets.push(Target {
+            name: format!(
+                "designs per second, {what}, hurwitz, {} threads (at least)",
+                rayon::current_num_threads()
+            ),
+            measured: rate,
+            required: 1e7,
+            met: rate >= 1e7,
+        });
+    }
+    Report {
+        mode: if cfg.samples >= 1_000_000 { "full" } else { "quick" },
+        rows,
+        distributions,
+        targets,
+    }
+}
+
+fn fmt_opt(x: Option<f64>, f: impl Fn(f64) -> String) -> String {
+    x.map_or("-".into(), f)
+}
+
+/// The report as aligned text tables.
+pub fn render_text(r: &Report) -> String {
+    let mut s = String::new();
+    let mut section = "";
+    for row in &r.rows {
+        if row.section != section {
+            section = row.section;
+            s.push_str(&format!(
+                "\n== {section}\n{:<40} {:<32} {:>10} {:>12} {:>10}  note\n",
+                "what", "method", "ops", "ns", "max rel err"
+            ));
+        }
+        s.push_str(&format!(
+            "{:<40} {:<32} {:>10} {:>12} {:>10}  {}\n",
+            row.name,
+            row.method,
+            row.ops.map_or("-".into(), |o| o.to_string()),
+            fmt_opt(row.ns, |x| format!("{x:.1}")),
+            fmt_opt(row.max_rel_err, |x| format!("{x:.1e}")),
+            row.note
+        ));
+    }
+    s.push_str("\n== distributions (relative error / 2^-52)\n");
+    s.push_str(&format!(
+        "{:<32} {:>9} {:>10} {:>10} {:>10} {:>10}\n",
+        "output", "samples", "p50", "p99", "p99.99", "max"
+    ));
+    for d in &r.distributions {
+        s.push_str(&format!(
+            "{:<32} {:>9} {:>10.2} {:>10.2} {:>10.2} {:>10.3e}\n",
+            d.name, d.samples, d.p50, d.p99, d.p9999, d.max
+        ));
+    }
+    s.push_str("\n== targets\n");
+    for t in &r.targets {
+        s.push_str(&format!(
+            "{:<66} measured {:>10.3e} required {:>8.1e}  {}\n",
+            t.name,
+            t.measured,
+            t.required,
+            if t.met { "met" } else { "NOT MET" }
+        ));
+    }
+    s
+}

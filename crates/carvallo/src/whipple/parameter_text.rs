@@ -1,0 +1,275 @@
+//! Bicycle parameters with stated uncertainties, read from the benchmark parameter text files of
+//! BicycleParameters (`<bicycle>Benchmark.txt`) or from the anchors TOML format.
+//!
+//! A text file has one parameter per line, `name = value+/-uncertainty` (the repr of the
+//! `uncertainties` package's `ufloat`, spaces allowed between the parts, the uncertainty a
+//! standard deviation), for example `rR = 0.3+/-0.01`; `(1.23+/-0.04)e-02` (a shared exponent, as
+//! `ufloat` prints small numbers) and a plain `name = value` (no uncertainty) are read too. The
+//! names are those of Meijaard et al. (2007) as in [`PARAM_NAMES`], the steer axis tilt also as
+//! BicycleParameters' `lam`. Blank lines and lines starting with `#` are skipped. A TOML file
+//! (the anchors format, [`WhippleParams::from_toml_str`]) gives every uncertainty zero.
+
+use std::fmt;
+
+use crate::whipple::{WhippleError, WhippleParams, PARAM_NAMES};
+
+/// A bicycle and the standard deviations of its parameters.
+#[derive(Clone, Debug, PartialEq)]
+pub struct UncertainParams {
+    /// The nominal parameters.
+    pub params: WhippleParams,
+    /// The standard deviation of each parameter, in the order of [`PARAM_NAMES`] (zero when none
+    /// is stated).
+    pub sigma: [f64; 26],
+}
+
+/// Why a parameter text was rejected.
+#[derive(Clone, Debug, PartialEq)]
+pub enum ParameterTextError {
+    /// A line that is not `name = value[+/-uncertainty]` with finite numbers and a
+    /// non-negative uncertainty, or that names a parameter twice or an unknown one.
+    Line {
+        /// The 1-based line number.
+        line: usize,
+        /// The line as written (trimmed).
+        text: String,
+        /// What is wrong, in a few lower-case words naming the value.
+        reason: String,
+    },
+    /// The values read do not make a valid bicycle (a missing key, a non-positive mass, ...).
+    Invalid(WhippleError),
+}
+
+impl fmt::Display for ParameterTextError {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        match self {
+            ParameterTextError::Line { line, text, reason } => {
+                write!(f, "line {line}: {reason} (`{text}`)")
+            }
+            ParameterTextError::Invalid(e) => write!(f, "{e}"),
+        }
+    }
+}
+
+impl std::error::Error for ParameterTextError {}
+
+impl From<WhippleError> for ParameterTextError {
+    fn from(e: WhippleError) -> ParameterTextError {
+        ParameterTextError::Invalid(e)
+    }
+}
+
+/// Reads `1.5`, `pi/10` (the forms [`WhippleParams::from_toml_str`] reads in strings) or
+/// nothing.
+fn number(text: &str) -> Option<f64> {
+    let t = text.trim();
+    if t.is_empty() {
+        return None;
+    }
+    super::params::parse_pi(t)
+}
+
+/// Splits `value+/-sigma`, `(value+/-sigma)e-02` or `value` into numbers.
+fn value_and_sigma(text: &str) -> Result<(f64, f64), String> {
+    let t = text.trim();
+    let (body, exponent) = match t.strip_prefix('(') {
+        Some(rest) => {
+            let (inner, tail) =
+                rest.split_once(')').ok_or_else(|| format!("unclosed parenthesis in `{t}`"))?;
+            let scale = match tail.trim() {
+                "" => 1.0,
+                e => {
+                    let e = e
+                        .strip_prefix(['e', 'E'])
+                        .ok_or_else(|| format!("`{e}` after the parenthesis is not an exponent"))?;
+                    let k: i32 = e.parse().map_err(|_| format!("invalid exponent `{e}`"))?;
+                    10f64.powi(k)
+                }
+            };
+            (inner, scale)
+        }
+        None => (t, 1.0),
+    };
+    let (v, s) = match body.split_once("+/-") {
+        Some((v, s)) => (v, Some(s)),
+        None => (body, None),
+    };
+    let value = number(v).ok_or_else(|| format!("value `{}` is not a number", v.trim()))?;
+    let sigma = match s {
+        Some(s) => s
+            .trim()
+            .parse::<f64>()
+            .map_err(|_| format!("uncertainty `{}` is not a number", s.trim()))?,
+        None => 0.0,
+    };
+    let (value, sigma) = (value * exponent, sigma * exponent);
+    if !value.is_finite() {
+        return Err(format!("value `{}` is not finite", v.trim()));
+    }
+    if !sigma.is_finite() || sigma < 0.0 {
+        return Err(format!(
+            "uncertainty `{}` must be a finite standard deviation of at least zero",
+            s.unwrap_or("").trim()
+        ));
+    }
+    Ok((value, sigma))
+}
+
+impl UncertainParams {
+    /// Reads a BicycleParameters benchmark parameter text (see the [module docs](self)).
+    ///
+    /// # Errors
+    /// [`ParameterTextError::Line`] naming the line and the value at fault (an unknown or
+    /// repeated name, a value or uncertainty that is not a number, a negative uncertainty);
+    /// [`ParameterTextError::Invalid`] for a missing parameter or values that are not a valid
+    /// bicycle ([`WhippleParams::from_values`]).
+    pub fn from_text(text: &str) -> Result<UncertainParams, ParameterTextError> {
+        let mut values = [f64::NAN; 26];
+        let mut sigma = [0.0; 26];
+        let mut seen = [false; 26];
+        for (i, raw) in text.lines().enumerate() {
+            let line = raw.trim();
+            if line.is_empty() || line.starts_with('#') {
+                continue;
+            }
+            let err = |reason: String| ParameterTextError::Line {
+                line: i + 1,
+                text: line.chars().take(80).collect(),
+                reason,
+            };
+            let (name, rest) = line
+                .split_once('=')
+                .ok_or_else(|| err("expected `name = value+/-uncertainty`".to_string()))?;
+            let name = name.trim();
+            let key = if name == "lam" { "lambda" } else { name };
+            let k = PARAM_NAMES
+                .iter()
+                .position(|n| *n == key)
+                .ok_or_else(|| err(format!("unknown parameter `{name}`")))?;
+            if seen[k] {
+                return Err(err(format!("parameter `{name}` given twice")));
+            }
+            seen[k] = true;
+            let (v, s) = value_and_sigma(rest).map_err(|r| err(format!("{name}: {r}")))?;
+            values[k] = v;
+            sigma[k] = s;
+        }
+        if let Some(k) = seen.iter().position(|s| !s) {
+            return Err(WhippleError::MissingKey { key: PARAM_NAMES[k] }.into());
+        }
+        Ok(UncertainParams { params: WhippleParams::from_values(values)?, sigma })
+    }
+
+    /// Parameters without uncertainty.
+    pub fn exact(params: WhippleParams) -> UncertainParams {
+        UncertainParams { params, sigma: [0.0; 26] }
+    }
+
+    /// Reads either format: TOML (the anchors format, every uncertainty zero) when the text has
+    /// a table header (a line starting with `[`, such as `[parameters]`), the BicycleParameters
+    /// text otherwise.
+    ///
+    /// # Errors
+    /// As [`WhippleParams::from_toml_str`] or [`from_text`](Self::from_text).
+    pub fn from_any(text: &str) -> Result<UncertainParams, ParameterTextError> {
+        if text.lines().any(|l| l.trim_start().starts_with('[')) {
+            Ok(UncertainParams::exact(WhippleParams::from_toml_str(text)?))
+        } else {
+            UncertainParams::from_text(text)
+        }
+    }
+
+    /// Whether any uncertainty is stated.
+    pub fn has_uncertainty(&self) -> bool {
+        self.sigma.iter().any(|s| *s > 0.0)
+    }
+
+    /// The text form read by [`from_text`](Self::from_text): one `name = value+/-sigma` line per
+    /// parameter with BicycleParameters' names (`lam`), numbers in round-trip form.
+    pub fn to_text(&self) -> String {
+        let mut s = String::new();
+        for (k, name) in PARAM_NAMES.iter().enumerate() {
+            let name = if *name == "lambda" { "lam" } else { name };
+            s.push_str(&format!("{name} = {:?}+/-{:?}\n", self.params.values()[k], self.sigma[k]));
+        }
+        s
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    fn benchmark_text(sigma: f64) -> String {
+        UncertainParams {
+            params: WhippleParams::benchmark(),
+            sigma: WhippleParams::benchmark().values().map(|v| sigma * v.abs()),
+        }
+        .to_text()
+    }
+
+    #[test]
+    fn the_text_form_round_trips() {
+        let text = benchmark_text(0.01);
+        let u = UncertainParams::from_text(&text).expect("valid");
+        assert_eq!(u.params, WhippleParams::benchmark());
+        assert_eq!(u.sigma[0], 0.01 * 1.02);
+        assert_eq!(u.to_text(), text);
+    }
+
+    #[test]
+    fn ufloat_forms_are_read() {
+        assert_eq!(value_and_sigma("0.3+/-0.01"), Ok((0.3, 0.01)));
+        assert_eq!(value_and_sigma(" 0.3 +/- 0.01 "), Ok((0.3, 0.01)));
+        assert_eq!(value_and_sigma("(1.5+/-0.5)e-02"), Ok((1.5e-2, 0.5e-2)));
+        assert_eq!(value_and_sigma("85.0"), Ok((85.0, 0.0)));
+        let (pi, s) = value_and_sigma("pi/10+/-0.0").expect("pi form");
+        assert_eq!((pi, s), (std::f64::consts::PI / 10.0, 0.0));
+    }
+
+    #[test]
+    fn bad_lines_name_the_line_and_value() {
+        let good = benchmark_text(0.01);
+        let cases = [
+            ("mB = heavy+/-1", "line 11: mB: value `heavy` is not a number (`mB = heavy+/-1`)"),
+            ("mB = 85+/--1", "line 11: mB: uncertainty `-1` must be a finite standard deviation of at least zero (`mB = 85+/--1`)"),
+            ("mB = 85+/-x", "line 11: mB: uncertainty `x` is not a number (`mB = 85+/-x`)"),
+            ("mass = 85", "line 11: unknown parameter `mass` (`mass = 85`)"),
+            ("mB 85", "line 11: expected `name = value+/-uncertainty` (`mB 85`)"),
+            ("mB = inf", "line 11: mB: value `inf` is not finite (`mB = inf`)"),
+        ];
+        for (bad, want) in cases {
+            let text: Vec<String> = good
+                .lines()
+                .map(|l| if l.starts_with("mB ") { bad.to_string() } else { l.to_string() })
+                .collect();
+            let err = UncertainParams::from_text(&text.join("\n")).unwrap_err();
+            assert_eq!(err.to_string(), want);
+        }
+        let twice = format!("{good}c = 0.08\n");
+        assert_eq!(
+            UncertainParams::from_text(&twice).unwrap_err().to_string(),
+            "line 27: parameter `c` given twice (`c = 0.08`)"
+        );
+        let missing: String =
+            good.lines().filter(|l| !l.starts_with("w ")).map(|l| l.to_string() + "\n").collect();
+        assert_eq!(
+            UncertainParams::from_text(&missing).unwrap_err(),
+            ParameterTextError::Invalid(WhippleError::MissingKey { key: "w" })
+        );
+        let negative = good.replace("mB = 85.0", "mB = -85.0");
+        assert_eq!(
+            UncertainParams::from_text(&negative).unwrap_err().to_string(),
+            "invalid mB -85.0: must be positive"
+        );
+    }
+
+    #[test]
+    fn toml_is_read_without_uncertainty() {
+        let u = UncertainParams::from_any(crate::whipple::BENCHMARK_TOML).expect("valid");
+        assert_eq!(u, UncertainParams::exact(WhippleParams::benchmark()));
+        assert!(!u.has_uncertainty());
+        let t = UncertainParams::from_any(&benchmark_text(0.01)).expect("valid");
+        assert!(t.has_uncertainty());
+    }
+}

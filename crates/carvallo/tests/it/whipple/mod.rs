@@ -1,0 +1,10 @@
+//! Tests of the Carvallo–Whipple bicycle: the parameter reader ([`params`]), the stability
+//! windows and sweeps ([`stability`]), the uncertainty bands ([`uncertainty`]) and the
+//! nonlinear equations against the linearisation ([`nonlinear`]) and against Basu-Mandal et
+//! al.'s circular motion ([`basu_mandal`]).
+
+mod basu_mandal;
+mod nonlinear;
+mod params;
+mod stability;
+mod uncertainty;
