@@ -7,7 +7,7 @@
 use std::collections::BTreeMap;
 use std::fmt::Write;
 
-use crate::claims::{counts, Assertion, Claim};
+use crate::claims::{counts, Assertion, Claim, Status};
 use crate::entry::{Derived, Entry, Memoir, Verdict};
 pub use crate::outline::{by_division, division_of, Division, BEYOND, OUTLINE};
 use crate::render::text::format_significant;
@@ -201,6 +201,24 @@ pub fn render_markdown(
                 c.evidence_text(),
                 c.note.replace('\n', " ")
             );
+        }
+        out.push('\n');
+    }
+    let left: Vec<&Assertion> =
+        assertions.iter().filter(|a| matches!(a.status, Status::Left(_))).collect();
+    if !left.is_empty() {
+        let _ = writeln!(out, "## Assertions left unchecked\n");
+        let _ = writeln!(
+            out,
+            "The memoir's assertions found n° by n° that no claim or value entry checks ({} of \
+             {}), each with the reason.\n",
+            left.len(),
+            assertions.len()
+        );
+        for a in left {
+            if let Status::Left(why) = a.status {
+                let _ = writeln!(out, "- **n° {}**: {}. *{}*", a.section, a.says, why);
+            }
         }
         out.push('\n');
     }
