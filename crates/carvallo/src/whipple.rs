@@ -21,6 +21,9 @@ use nalgebra::Matrix4;
 
 use crate::numerics::mat2::{det, mix};
 
+/// Friction at the steering pivot (memoir n° 123): viscous steer damping and dry friction.
+pub mod friction;
+
 crate::scene! {
     /// The sixteen entries of $M$, $C_1$, $K_0$, $K_2$ (also on four designs per call, for
     /// the sweeps).
