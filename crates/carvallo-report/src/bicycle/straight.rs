@@ -1340,7 +1340,7 @@ pub const INVENTORY: &[Assertion] = &[
     a("121", "the lower limit is where the pair becomes ±μi, μ² = a3/a1, a3² - a1a2a3 + a1²a4 = 0", Checked("bicycle-straight-lower-limit-imaginary-pair")),
     a("121", "(4) a3² - a1a2a3 + a1²a4 = 0 is the condition for a root μi", Value("check pure_imaginary_condition")),
     a("121", "the lower limit is s^2 = 67.3, 10 km/h: stability without hands requires 10 to 12.5 km/h", Value("lower limit speed 10 km/h")),
-    a("122", "the upper limit comes from the constant term a b1 - a1 b = 0", Value("upper limit s^2 = 83.6")),
+    a("122", "the upper limit comes from the constant term a b1 - a1 b = 0, in which the constants differ from n° 117 by the factor s^2", Value("check constant_term_linear_in_s2")),
     a("122", "the upper limit of s^2 in closed form (with B1 = 2 μ1 R^2)", Value("check upper_limit_closed_form")),
     a("122", "with c1 = R sin η / 2 the factor R sin η cancels and the denominator reduces to μ μ1 (h - R e/l): s^2 is a product of three factors", Value("check half_trail_denominator")),
     a("122", "constructors make the handlebar line pass through the middle of the contact radius, c1 = R sin η / 2", Checked("bicycle-straight-half-trail-rule")),
