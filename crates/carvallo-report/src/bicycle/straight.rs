@@ -809,6 +809,7 @@ fn benchmark_sensitivity(names: &[&str]) -> (f64, f64) {
     ((p.0 - m.0) / (2.0 * h), (p.1 - m.1) / (2.0 * h))
 }
 
+#[allow(clippy::too_many_arguments)]
 fn claim(
     id: &str,
     section: &str,
@@ -1022,6 +1023,12 @@ fn quartic_claims() -> Vec<Claim> {
     out
 }
 
+/// A constant's name, how to set it, and its value at n° 117.
+type Setter<'a> = (&'a str, &'a dyn Fn(&Constants, f64) -> Constants, f64);
+
+/// A bicycle of the friction claims: name, matrices, g, wheelbase, trail, steer axis tilt.
+type Bike = (&'static str, Option<Matrices>, f64, f64, f64, f64);
+
 /// n° 122: the half-trail rule, the three factors and the design rule.
 fn design_claims(k: &Constants) -> Vec<Claim> {
     let mut out = Vec::new();
@@ -1045,7 +1052,7 @@ fn design_claims(k: &Constants) -> Vec<Claim> {
         let h = 1e-6;
         (f(&set(k, x * (1.0 + h))).ln() - f(&set(k, x * (1.0 - h))).ln()) / (2.0 * h)
     };
-    let setters: [(&str, &dyn Fn(&Constants, f64) -> Constants, f64); 6] = [
+    let setters: [Setter; 6] = [
         ("mu", &|c, x| Constants { mu: x, ..*c }, k.mu),
         ("mu1", &|c, x| Constants { mu1: x, ..*c }, k.mu1),
         ("e", &|c, x| Constants { e: x, ..*c }, k.e),
@@ -1165,7 +1172,7 @@ fn friction_claims(k: &Constants) -> Vec<Claim> {
     let cs = [0.03, 0.1, 0.3, 1.0];
     let grid = EigenGrid { vmax: 10.0, points: 400 };
     let bench = Whipple::new(WhippleParams::benchmark());
-    let bikes: Vec<(&str, Option<Matrices>, f64, f64, f64, f64)> = vec![
+    let bikes: Vec<Bike> = vec![
         ("Carvallo", carvallo_matrices(k), k.g, k.l, k.c1 / k.eta.cos(), k.eta),
         (
             "benchmark",
