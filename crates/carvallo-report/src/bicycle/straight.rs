@@ -710,7 +710,9 @@ use crate::claims::{Assertion, Claim, Status};
 /// eigenvalues, same steer damping matrix).
 fn carvallo_matrices(k: &Constants) -> Option<Matrices> {
     let e = Equations::via_whipple(k).ok()?;
-    let sc = |a: &Mat2, f: f64| -> Mat2 { std::array::from_fn(|r| std::array::from_fn(|c| f * a[r][c])) };
+    let sc = |a: &Mat2, f: f64| -> Mat2 {
+        std::array::from_fn(|r| std::array::from_fn(|c| f * a[r][c]))
+    };
     Some(Matrices {
         m: e.m,
         c1: sc(&e.c, 1.0 / k.r),
@@ -782,7 +784,9 @@ fn vary(k: &Constants, name: &str, x: f64) -> Constants {
 /// bicycle with respect to one constant: (d weave, d capsize) in m/s per unit.
 fn carvallo_sensitivity(k: &Constants, name: &str, x: f64) -> (f64, f64) {
     let h = 1e-4 * x.abs();
-    let at = |x: f64| carvallo_matrices(&vary(k, name, x)).map_or((f64::NAN, f64::NAN), |m| limits(&m, k.g));
+    let at = |x: f64| {
+        carvallo_matrices(&vary(k, name, x)).map_or((f64::NAN, f64::NAN), |m| limits(&m, k.g))
+    };
     let (p, m) = (at(x + h), at(x - h));
     ((p.0 - m.0) / (2.0 * h), (p.1 - m.1) / (2.0 * h))
 }
@@ -838,12 +842,15 @@ pub fn claims() -> Vec<Claim> {
 /// n° 116: the five gamma'' cells against the memoir's own conventions.
 fn gamma2_claim() -> Claim {
     let checks = crate::checks::parse_checks(CHECKS_TSV).unwrap_or_default();
-    let printed_fail = checks.iter().filter(|c| c.id.ends_with("_gamma2_as_printed") && !c.holds).count() as f64;
+    let printed_fail =
+        checks.iter().filter(|c| c.id.ends_with("_gamma2_as_printed") && !c.holds).count() as f64;
     let parts_hold = checks
         .iter()
         .filter(|c| c.section == "116" && !c.id.ends_with("_as_printed") && c.holds)
         .count() as f64;
-    let parts = checks.iter().filter(|c| c.section == "116" && !c.id.ends_with("_as_printed")).count() as f64;
+    let parts =
+        checks.iter().filter(|c| c.section == "116" && !c.id.ends_with("_as_printed")).count()
+            as f64;
     claim(
         "bicycle-straight-table-gamma2-signs",
         "116",
@@ -874,7 +881,8 @@ fn quartic_claims() -> Vec<Claim> {
                 1 => (vec![re(), re()], vec![(re(), 0.0)]),
                 _ => (vec![], vec![(re(), 0.0), (re(), 0.0)]),
             };
-            let pairs: Vec<(f64, f64)> = pairs.iter().map(|(a, _)| (*a, rng.uniform(1e-3, 3.0))).collect();
+            let pairs: Vec<(f64, f64)> =
+                pairs.iter().map(|(a, _)| (*a, rng.uniform(1e-3, 3.0))).collect();
             let p = from_roots(&reals, &pairs);
             tried += 1;
             if p.iter().all(|c| *c > 0.0) {
@@ -986,7 +994,8 @@ fn quartic_claims() -> Vec<Claim> {
             if reals.len() == 2 && reals.iter().all(|x| *x < 0.0) {
                 two_negative += 1;
             }
-            min_gap = min_gap.min(r.iter().map(|x| x.re.abs() + x.im.abs()).fold(f64::INFINITY, f64::min));
+            min_gap = min_gap
+                .min(r.iter().map(|x| x.re.abs() + x.im.abs()).fold(f64::INFINITY, f64::min));
         }
     }
     out.push(claim(
@@ -1047,7 +1056,9 @@ fn design_claims(k: &Constants) -> Vec<Claim> {
     // Elasticities of the three factors.
     let f1 = |c: &Constants| c.g * c.eta.sin() / (c.r * c.r / c.l * c.eta.cos());
     let f2 = |c: &Constants| 0.5 * c.mu / c.mu1 * c.e / c.l + 1.0;
-    let f3 = |c: &Constants| (c.h - 0.5 * c.r * c.e / c.l + c.mu1 / c.mu * c.r) / (c.h - c.r * c.e / c.l);
+    let f3 = |c: &Constants| {
+        (c.h - 0.5 * c.r * c.e / c.l + c.mu1 / c.mu * c.r) / (c.h - c.r * c.e / c.l)
+    };
     let el = |f: &dyn Fn(&Constants) -> f64, set: &dyn Fn(&Constants, f64) -> Constants, x: f64| {
         let h = 1e-6;
         (f(&set(k, x * (1.0 + h))).ln() - f(&set(k, x * (1.0 - h))).ln()) / (2.0 * h)
@@ -1193,20 +1204,34 @@ fn friction_claims(k: &Constants) -> Vec<Claim> {
     for (name, m, g, w, trail, lambda) in &bikes {
         let Some(m) = m else { continue };
         let free = damped_window(m, *g, ViscousFriction::NONE, grid);
-        let (Some(fw), Some(fc)) = (free.as_ref().and_then(|x| x.weave_speed), free.as_ref().and_then(|x| x.capsize_speed)) else {
+        let (Some(fw), Some(fc)) = (
+            free.as_ref().and_then(|x| x.weave_speed),
+            free.as_ref().and_then(|x| x.capsize_speed),
+        ) else {
             continue;
         };
         ev.push((format!("{name}: weave speed without friction (m/s)"), fw));
         ev.push((format!("{name}: capsize speed without friction (m/s)"), fc));
         let v_slow = 0.99 * fw;
-        let weave_re = |f: ViscousFriction| damped_eigenvalues(m, *g, v_slow, f).map_or(f64::NAN, |e| e[3].re);
-        growth.push((format!("{name}: weave growth rate at 0.99 weave speed, no friction (1/s)"), weave_re(ViscousFriction::NONE)));
+        let weave_re =
+            |f: ViscousFriction| damped_eigenvalues(m, *g, v_slow, f).map_or(f64::NAN, |e| e[3].re);
+        growth.push((
+            format!("{name}: weave growth rate at 0.99 weave speed, no friction (1/s)"),
+            weave_re(ViscousFriction::NONE),
+        ));
         for (reading, f) in [("bearing", 0usize), ("ground pivot", 1usize)] {
             for c in cs {
-                let fr = if f == 0 { ViscousFriction::bearing(c) } else { ViscousFriction::ground_pivot(c, *w, *trail, *lambda) };
+                let fr = if f == 0 {
+                    ViscousFriction::bearing(c)
+                } else {
+                    ViscousFriction::ground_pivot(c, *w, *trail, *lambda)
+                };
                 let win = damped_window(m, *g, fr, grid);
                 let (dw, dc) = win.as_ref().map_or((f64::NAN, f64::NAN), |x| {
-                    (x.weave_speed.map_or(f64::NAN, |v| v - fw), x.capsize_speed.map_or(f64::NAN, |v| v - fc))
+                    (
+                        x.weave_speed.map_or(f64::NAN, |v| v - fw),
+                        x.capsize_speed.map_or(f64::NAN, |v| v - fc),
+                    )
                 });
                 cases += 1;
                 if dc - dw > 0.0 {
@@ -1225,7 +1250,12 @@ fn friction_claims(k: &Constants) -> Vec<Claim> {
                 if re < 0.0 {
                     damped_weave += 1;
                 }
-                growth.push((format!("{name}, {reading} c = {c}: weave growth rate at 0.99 weave speed (1/s)"), re));
+                growth.push((
+                    format!(
+                        "{name}, {reading} c = {c}: weave growth rate at 0.99 weave speed (1/s)"
+                    ),
+                    re,
+                ));
             }
         }
     }
@@ -1249,13 +1279,20 @@ fn friction_claims(k: &Constants) -> Vec<Claim> {
     let mut dry_cases = 0usize;
     for (name, m, g, ..) in &bikes {
         let Some(m) = m else { continue };
-        let Some(fw) = damped_window(m, *g, ViscousFriction::NONE, grid).and_then(|x| x.weave_speed) else { continue };
+        let Some(fw) =
+            damped_window(m, *g, ViscousFriction::NONE, grid).and_then(|x| x.weave_speed)
+        else {
+            continue;
+        };
         let v = 0.99 * fw;
         let x0 = [0.01, 0.0, 0.0, 0.0];
         for tau in [0.0, 0.02, 0.1, 0.5] {
             let run = simulate_dry(m, *g, v, tau, x0, 1e-3, 20_000);
             let ratio = run.peak_lean(15.0, 20.0) / run.peak_lean(0.0, 5.0);
-            dry_ev.push((format!("{name}, Coulomb tau = {tau} N m: peak lean 15-20 s / 0-5 s"), ratio));
+            dry_ev.push((
+                format!("{name}, Coulomb tau = {tau} N m: peak lean 15-20 s / 0-5 s"),
+                ratio,
+            ));
             if tau > 0.0 {
                 dry_cases += 1;
                 if ratio < 1.0 {

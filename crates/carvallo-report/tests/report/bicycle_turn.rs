@@ -119,8 +119,14 @@ fn claims_hold_and_snapshot() {
     let get = |id: &str, key: &str| {
         c.iter().find(|x| x.id == id).and_then(|x| x.evidence.get(key).copied()).expect(key)
     };
-    assert_eq!(get("bicycle-turn-unstable-whatever-speed", "turns with real roots of opposite signs"), 15.0);
-    let r = get("bicycle-turn-centrifugal-second-order", "max |centrifugal / gravity| / (theta0^2 + gamma^2)");
+    assert_eq!(
+        get("bicycle-turn-unstable-whatever-speed", "turns with real roots of opposite signs"),
+        15.0
+    );
+    let r = get(
+        "bicycle-turn-centrifugal-second-order",
+        "max |centrifugal / gravity| / (theta0^2 + gamma^2)",
+    );
     assert!(r > 0.1 && r < 1.0, "{r}");
     let v0 = get("bicycle-turn-steer-into-the-fall", "B changes sign at (km/h)");
     assert!(v0 > 1.0 && v0 < 3.0, "{v0}");

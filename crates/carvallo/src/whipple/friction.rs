@@ -317,7 +317,9 @@ pub fn simulate_dry(
     run.steer.push(x[1]);
     // Whether the mode must end inside a step to `y` from `x`.
     let ends = |mode: Mode, x: &[f64; 4], y: &[f64; 4]| match mode {
-        Mode::Slide(t) => tau > 0.0 && t != 0.0 && (y[3] * x[3] < 0.0 || (x[3] == 0.0 && y[3] * t > 0.0)),
+        Mode::Slide(t) => {
+            tau > 0.0 && t != 0.0 && (y[3] * x[3] < 0.0 || (x[3] == 0.0 && y[3] * t > 0.0))
+        }
         Mode::Stick => holding(y).abs() > tau,
     };
     for n in 1..=steps {
@@ -388,7 +390,8 @@ mod tests {
                 assert!((p[i] - q[i]).abs() <= 1e-12 * q[i].abs().max(1.0), "{i}: {p:?} {q:?}");
             }
         }
-        let win = damped_window(&m, g, ViscousFriction::NONE, EigenGrid::default()).expect("converges");
+        let win =
+            damped_window(&m, g, ViscousFriction::NONE, EigenGrid::default()).expect("converges");
         let exact = w.stability_window();
         let (ws, cs) = (win.weave_speed.unwrap(), win.capsize_speed.unwrap());
         assert!((ws - exact.weave_speed.unwrap()).abs() < 1e-12, "{ws}");
