@@ -43,7 +43,7 @@ fn checks() -> Vec<Entry> {
     )
 }
 
-const SIGN_NOTE: &str = "the general model gives the sign of n° 109-111, which the printed sums of n° 117 also use; the OCR'd table has the opposite sign in all five gamma'' entries of the (dT/dq')' rows and nowhere else, read as an OCR sign loss (see the table entries of n° 116 above)";
+const SIGN_NOTE: &str = "the general model gives the sign of n° 109-111, which the printed sums of n° 117 also use; the OCR'd table has the opposite sign in all five gamma'' entries of the (dT/dq')' rows and nowhere else, read as an OCR sign loss (see the table entries of n° 116 above). Not a sign convention of the printed table: gamma'' is the derivative of gamma (n° 107), the theta'', gamma' and gamma cells of the same rows keep the signs of n° 109-111, and the memoir's rule (the tables summed and equated to zero are the equations, n° 116) with its n° 117 sums needs the n° 109-111 signs (claim bicycle-straight-table-gamma2-signs)";
 
 /// Check ids that are findings: expected not to hold, with the verdict and the reason.
 const FINDINGS: &[Finding] = &[
@@ -211,7 +211,7 @@ fn table_sign_entries() -> Vec<Entry> {
         .iter()
         .map(|(q, text, part, row, note)| {
             let value = Equations::via_whipple_part(&k, *part).map_or(f64::NAN, |e| e.m[*row][1]);
-            let note = format!("{note}; derived: the part's own γ'' term of the general model (the other parts' masses and moments zero)");
+            let note = format!("{note}; derived: the part's own γ'' term of the general model (the other parts' masses and moments zero); not a sign convention of the table (γ'' is the derivative of γ, n° 107, and the θ'', γ', γ cells keep the n° 109-111 signs): claim bicycle-straight-table-gamma2-signs");
             ocr("116", q, text, Derived::Number(value), &note)
         })
         .collect()
@@ -690,10 +690,724 @@ fn time_scale_entry(e: &Equations) -> Entry {
     }
 }
 
+// ---------------------------------------------------------------------------------------
+// The memoir's claims (n° 107–124).
+
+use carvallo::numerics::mat2::Mat2;
+use carvallo::numerics::rng::SplitMix64;
+use carvallo::sweep::{eigenvalues4, hurwitz_window_polished, EigenGrid};
+use carvallo::whipple::friction::{
+    damped_eigenvalues, damped_window, simulate_dry, ViscousFriction,
+};
+use carvallo::whipple::{Eigenvalue, Matrices, Whipple, WhippleParams, PARAM_NAMES};
+
+use crate::claims::Status::{Checked, Left, Value};
+use crate::claims::{Assertion, Claim, Status};
+
+/// Carvallo's equations through the general model ([`Equations::via_whipple`]) as the matrices
+/// of $M\ddot q + vC_1\dot q + (gK_0 + v^2K_2)q = 0$ in his variables $(\theta, \gamma)$ and the
+/// forward speed $v = Rs$ (the sign change $\gamma = -\delta$ is a similarity: same
+/// eigenvalues, same steer damping matrix).
+fn carvallo_matrices(k: &Constants) -> Option<Matrices> {
+    let e = Equations::via_whipple(k).ok()?;
+    let sc = |a: &Mat2, f: f64| -> Mat2 {
+        std::array::from_fn(|r| std::array::from_fn(|c| f * a[r][c]))
+    };
+    Some(Matrices {
+        m: e.m,
+        c1: sc(&e.c, 1.0 / k.r),
+        k0: sc(&e.k0, 1.0 / k.g),
+        k2: sc(&e.k2, 1.0 / (k.r * k.r)),
+    })
+}
+
+/// The (weave, capsize) speeds (m/s) of the closed-form Hurwitz window, NaN where absent.
+fn limits(m: &Matrices, g: f64) -> (f64, f64) {
+    let w = hurwitz_window_polished(m, g);
+    (w.weave_speed.unwrap_or(f64::NAN), w.capsize_speed.unwrap_or(f64::NAN))
+}
+
+/// The roots of the quartic $[q_0, \dots, q_4]$ (companion matrix, Schur), sorted by real part.
+fn quartic_roots(q: &[f64; 5]) -> Option<[Eigenvalue; 4]> {
+    let mut c = nalgebra::Matrix4::<f64>::zeros();
+    for i in 0..3 {
+        c[(i + 1, i)] = 1.0;
+    }
+    for i in 0..4 {
+        c[(i, 3)] = -q[i] / q[4];
+    }
+    let mut r = eigenvalues4(&c)?;
+    r.sort_by(|a, b| a.re.total_cmp(&b.re).then(a.im.total_cmp(&b.im)));
+    Some(r)
+}
+
+/// The coefficients $[q_0, \dots, q_4]$ of $\prod (\lambda - r_i)$ for real roots and conjugate
+/// pairs $(a \pm ib)$.
+fn from_roots(reals: &[f64], pairs: &[(f64, f64)]) -> Vec<f64> {
+    let mut p = vec![1.0];
+    let mul = |p: &Vec<f64>, f: &[f64]| {
+        let mut out = vec![0.0; p.len() + f.len() - 1];
+        for (i, x) in p.iter().enumerate() {
+            for (j, y) in f.iter().enumerate() {
+                out[i + j] += x * y;
+            }
+        }
+        out
+    };
+    for r in reals {
+        p = mul(&p, &[-r, 1.0]);
+    }
+    for (a, b) in pairs {
+        p = mul(&p, &[a * a + b * b, -2.0 * a, 1.0]);
+    }
+    p
+}
+
+/// The constants of n° 117 with one varied the way a designer would: `mu1` with the frame's
+/// own moment A kept (A + 2 A1 follows the wheels), `e` with the frame's central moments kept
+/// (C and L follow the rider), anything else alone.
+fn vary(k: &Constants, name: &str, x: f64) -> Constants {
+    match name {
+        "mu1" => Constants { mu1: x, a2: k.a2 + 3.0 * (x - k.mu1) * k.r * k.r, ..*k },
+        "e" => Constants {
+            e: x,
+            c: k.c + k.mu * (x * x - k.e * k.e),
+            ll: k.ll + k.mu * k.h * (x - k.e),
+            ..*k
+        },
+        "c1" => Constants { c1: x, ..*k },
+        _ => *k,
+    }
+}
+
+/// Central differences (relative step 1e-4) of the weave and capsize speeds of Carvallo's
+/// bicycle with respect to one constant: (d weave, d capsize) in m/s per unit.
+fn carvallo_sensitivity(k: &Constants, name: &str, x: f64) -> (f64, f64) {
+    let h = 1e-4 * x.abs();
+    let at = |x: f64| {
+        carvallo_matrices(&vary(k, name, x)).map_or((f64::NAN, f64::NAN), |m| limits(&m, k.g))
+    };
+    let (p, m) = (at(x + h), at(x - h));
+    ((p.0 - m.0) / (2.0 * h), (p.1 - m.1) / (2.0 * h))
+}
+
+/// The same for the benchmark, scaling the named parameters together by $1 \pm 10^{-4}$
+/// (a lighter wheel of the same shape scales its mass and moments): derivatives per unit
+/// relative change (m/s).
+fn benchmark_sensitivity(names: &[&str]) -> (f64, f64) {
+    let base = *WhippleParams::benchmark().values();
+    let at = |f: f64| {
+        let mut v = base;
+        for (i, n) in PARAM_NAMES.iter().enumerate() {
+            if names.contains(n) {
+                v[i] *= f;
+            }
+        }
+        WhippleParams::from_values(v).map_or((f64::NAN, f64::NAN), |p| {
+            let w = Whipple::new(p).stability_window();
+            (w.weave_speed.unwrap_or(f64::NAN), w.capsize_speed.unwrap_or(f64::NAN))
+        })
+    };
+    let h = 1e-4;
+    let (p, m) = (at(1.0 + h), at(1.0 - h));
+    ((p.0 - m.0) / (2.0 * h), (p.1 - m.1) / (2.0 * h))
+}
+
+#[allow(clippy::too_many_arguments)]
+fn claim(
+    id: &str,
+    section: &str,
+    says: &str,
+    how: &str,
+    evidence: &[(&str, f64)],
+    holds: bool,
+    otherwise: Verdict,
+    note: &str,
+) -> Claim {
+    Claim::new(id, section, says, how, evidence, policy::claim(holds, otherwise), note)
+}
+
 /// The memoir's claims checked in this report ([`crate::claims`]).
-pub fn claims() -> Vec<crate::claims::Claim> {
-    Vec::new()
+pub fn claims() -> Vec<Claim> {
+    let mut out = Vec::new();
+    let k = Constants::MEMOIR;
+    out.push(gamma2_claim());
+    out.extend(quartic_claims());
+    out.extend(design_claims(&k));
+    out.extend(friction_claims(&k));
+    out.push(slope_claim(&k));
+    out
+}
+
+/// n° 116: the five gamma'' cells against the memoir's own conventions.
+fn gamma2_claim() -> Claim {
+    let checks = crate::checks::parse_checks(CHECKS_TSV).unwrap_or_default();
+    let printed_fail =
+        checks.iter().filter(|c| c.id.ends_with("_gamma2_as_printed") && !c.holds).count() as f64;
+    let parts_hold = checks
+        .iter()
+        .filter(|c| c.section == "116" && !c.id.ends_with("_as_printed") && c.holds)
+        .count() as f64;
+    let parts =
+        checks.iter().filter(|c| c.section == "116" && !c.id.ends_with("_as_printed")).count()
+            as f64;
+    claim(
+        "bicycle-straight-table-gamma2-signs",
+        "116",
+        "The tables of n° 116 carry the terms found in n° 109-115, and the sum of the three first (of the three last) equated to zero is the fall (handlebar) equation; the five γ'' cells of the (dT/dq')' rows are printed (+L c1/l, +A1 sin η in the fall rows; -C c1²/l², -C1 c1²/l², -[A1 sin²η + C1 (c1/l + cos η)²] in the handlebar rows).",
+        "the symbolic checks of generated/bicycle_straight.checks.tsv: each part's column of the tables against the general model's linearisation of that part (momentum, correction, gravity and Kane terms, n° 116) and the five γ'' cells as printed (*_gamma2_as_printed); then the memoir's own definitions: γ'' is the second derivative of the handlebar angle γ (n° 107), of the same sign convention as γ' and γ, and n° 109 and n° 111 give (dT0/dp)' ∋ -L (c1/l) γ'', (dT2/dp)' = A1 (p' - γ'' sin η) - …, (dT0/dγ')' ∋ +C (c1/l)² γ'', (dT1/dγ')' ∋ +C1 (c1/l)² γ'', (dT2/dγ')' ∋ +A1 sin²η γ'' + C1 (c1/l + cos η)² γ''",
+        &[
+            ("gamma'' cells as printed that fail", printed_fail),
+            ("checks of the parts' columns", parts),
+            ("checks of the parts' columns that hold", parts_hold),
+        ],
+        printed_fail == 0.0,
+        Verdict::Ocr,
+        "the five printed γ'' cells have the sign opposite to the memoir's own n° 109-111, and only they: the θ'' cells of the same rows (-L c1/l θ'', -A1 sin η θ''), the γ' and γ cells, and n° 117's sums B'' = -(L c1/l + A1 sin η) = -1.476 and B1'' = (C + C1)(c1/l)² + … = +0.56 all have the signs of n° 109-111. No sign convention of the printed table explains it: the memoir defines γ'' as the derivative of γ (n° 107), a change of the sign of γ would flip the γ' and γ cells too, and a γ'' column carried to the other side would contradict the memoir's rule that the tables summed and equated to zero are the equations (n° 116) and its own sums of n° 117. Read as a loss of the five signs in the text as transcribed (ocr, the existing attribution); the text alone cannot tell an OCR loss from a typesetting slip of 1897, but Carvallo's n° 117 sums show his own table had the right signs",
+    )
+}
+
+/// n° 120–121: the discussion of the quartic.
+fn quartic_claims() -> Vec<Claim> {
+    let mut out = Vec::new();
+    // Permanences are necessary: stable quartics have positive coefficients.
+    let mut rng = SplitMix64(0x1897_0120);
+    let (mut tried, mut positive) = (0usize, 0usize);
+    for case in 0..3 {
+        for _ in 0..1000 {
+            let mut re = || rng.uniform(-3.0, -1e-3);
+            let (reals, pairs): (Vec<f64>, Vec<(f64, f64)>) = match case {
+                0 => ((0..4).map(|_| re()).collect(), vec![]),
+                1 => (vec![re(), re()], vec![(re(), 0.0)]),
+                _ => (vec![], vec![(re(), 0.0), (re(), 0.0)]),
+            };
+            let pairs: Vec<(f64, f64)> =
+                pairs.iter().map(|(a, _)| (*a, rng.uniform(1e-3, 3.0))).collect();
+            let p = from_roots(&reals, &pairs);
+            tried += 1;
+            if p.iter().all(|c| *c > 0.0) {
+                positive += 1;
+            }
+        }
+    }
+    out.push(claim(
+        "bicycle-straight-permanences-necessary",
+        "120",
+        "Whether the quartic has zero, one or two imaginary pairs, if the real roots and the real parts of the imaginary ones are negative the equation shows only permanences (all coefficients of one sign): a necessary character of stability.",
+        "3000 quartics built from seeded random roots (SplitMix64, seed 0x18970120), 1000 in each of the memoir's three cases (four real roots; two real and a pair; two pairs), real parts uniform in (-3, -0.001), imaginary parts in (0.001, 3); the coefficients of the product counted positive",
+        &[("quartics", tried as f64), ("with every coefficient positive", positive as f64)],
+        positive == tried,
+        Verdict::DerivationDiffers,
+        "every stable quartic tried has positive coefficients, as the relations between coefficients and roots show (the memoir's footnote): the necessary condition of Stodola",
+    ));
+    // The printed quartic of n° 120.
+    let w120 = window(&memoir_quartic_120);
+    let (lo, hi) = w120.stable_s.first().map_or((f64::NAN, f64::NAN), |x| (x.0 * x.0, x.1 * x.1));
+    let k = Constants::MEMOIR;
+    let general = Equations::via_whipple(&k).map(|g| window(&|s| g.quartic(s)));
+    let (glo, ghi) = general
+        .as_ref()
+        .ok()
+        .and_then(|w| w.stable_s.first())
+        .map_or((f64::NAN, f64::NAN), |x| (x.0 * x.0, x.1 * x.1));
+    let (gc2, gc0) = match Equations::via_whipple(&k) {
+        Ok(g) => {
+            let n = normalised_120(&g);
+            (n[2] / n[1], n[6] / n[5])
+        }
+        Err(_) => (f64::NAN, f64::NAN),
+    };
+    out.push(claim(
+        "bicycle-straight-stable-only-in-third-row",
+        "120",
+        "There can be stability proper only in the third case of the sign table, 47.0 < s^2 < 83.6.",
+        "the stable range of s by the Routh-Hurwitz functions ([`carvallo::bicycle_straight::window`]: 20 000-point scan of s in (0, 100], each sign change bisected) of the printed n° 120 quartic, and of the general model's quartic against its own third row (the s^2 annulling its λ^2 and constant terms)",
+        &[
+            ("printed quartic: stable from s^2", lo),
+            ("printed quartic: stable to s^2", hi),
+            ("general model: stable from s^2", glo),
+            ("general model: stable to s^2", ghi),
+            ("general model: s^2 annulling the λ^2 term", gc2),
+            ("general model: s^2 annulling the constant term", gc0),
+            ("stable intervals of the printed quartic", w120.stable_s.len() as f64),
+        ],
+        w120.stable_s.len() == 1
+            && lo > 20.54 / 0.437
+            && hi <= 95.6 / 1.143 * (1.0 + 1e-12)
+            && glo > gc2
+            && ghi <= gc0 * (1.0 + 1e-12),
+        Verdict::DerivationDiffers,
+        "the one stable interval lies inside the third row (for the printed quartic its ends 20.54/0.437 = 47.00 and 95.6/1.143 = 83.64 unrounded), for the printed quartic and for the exact one; its upper end is the constant term's root",
+    ));
+    // s^2 = 83.6: the cubic's roots, and just below it.
+    let at = |s2: f64| quartic_roots(&memoir_quartic_120(s2.sqrt()));
+    let on = at(83.6);
+    let below = at(83.6 * (1.0 - 1e-3));
+    let max_re = |r: &Option<[Eigenvalue; 4]>| r.map_or(f64::NAN, |r| r[3].re);
+    // At 83.6 the largest real part is the zero root; the next one is the pair's.
+    let second = on.map_or(f64::NAN, |r| r[2].re);
+    out.push(claim(
+        "bicycle-straight-upper-limit-stable",
+        "120",
+        "At s^2 = 83.6 the real root -0.6744 and the imaginary pair of sum -0.1256 have negative real parts: « le cas étudié s² = 83,6 est un cas où le mouvement rectiligne, sans les mains, est stable ».",
+        "the roots of the printed n° 120 quartic (companion matrix, Schur) at s^2 = 83.6 and at 83.6 (1 - 1e-3)",
+        &[
+            ("largest real part at 83.6 (the zero root)", max_re(&on)),
+            ("next largest real part at 83.6", second),
+            ("largest real part at 83.6 (1 - 1e-3)", max_re(&below)),
+        ],
+        second < 0.0 && max_re(&below) < 0.0,
+        Verdict::DerivationDiffers,
+        "holds in the sense the memoir uses: at s^2 = 95.6/1.143 = 83.64 the fourth root is zero (the constant term vanishes; n° 121 lists λ1 = 0), so the motion is there on the boundary (neutral); at the rounded 83.6 and just below it every root has a negative real part",
+    ));
+    let r47 = at(47.0);
+    out.push(claim(
+        "bicycle-straight-47-not-stable",
+        "120",
+        "The lower value s^2 = 47.0 certainly does not give stability: a zero coefficient of λ^2 is impossible in a case of stability (λ1λ2 + λ3λ4 + (λ1 + λ2)(λ3 + λ4) = 0), so the lower limit is above 47.0.",
+        "the roots of the printed n° 120 quartic at s^2 = 47.0, and the lower end of its stable range (previous claims)",
+        &[("largest real part at s^2 = 47.0", max_re(&r47)), ("lower end of the stable range, s^2", lo)],
+        max_re(&r47) > 0.0 && lo > 47.0,
+        Verdict::DerivationDiffers,
+        "at 47.0 an imaginary pair has a positive real part, and the stable range begins above 47.0",
+    ));
+    // n° 121: below 83.6 the zero root turns negative; over (47, 83.6) two real negative roots.
+    let near_zero = below.map_or(f64::NAN, |r| {
+        r.iter().filter(|x| x.im == 0.0).map(|x| x.re).fold(f64::NEG_INFINITY, f64::max)
+    });
+    out.push(claim(
+        "bicycle-straight-zero-root-turns-negative",
+        "121",
+        "For s^2 = 83.6 - ε the root λ1 = 0 becomes negative (Descartes' rule of signs).",
+        "the largest real root of the printed n° 120 quartic at s^2 = 83.6 (1 - 1e-3)",
+        &[("largest real root just below 83.6", near_zero)],
+        near_zero < 0.0,
+        Verdict::DerivationDiffers,
+        "the zero root moves to the left as s^2 decreases below 83.6",
+    ));
+    let (mut points, mut two_negative, mut min_gap) = (0usize, 0usize, f64::INFINITY);
+    for i in 0..=200 {
+        let s2 = 47.0 + (83.6 * (1.0 - 1e-6) - 47.0) * i as f64 / 200.0;
+        points += 1;
+        if let Some(r) = at(s2) {
+            let reals: Vec<f64> = r.iter().filter(|x| x.im == 0.0).map(|x| x.re).collect();
+            if reals.len() == 2 && reals.iter().all(|x| *x < 0.0) {
+                two_negative += 1;
+            }
+            min_gap = min_gap
+                .min(r.iter().map(|x| x.re.abs() + x.im.abs()).fold(f64::INFINITY, f64::min));
+        }
+    }
+    out.push(claim(
+        "bicycle-straight-real-roots-stay-negative",
+        "121",
+        "As s^2 decreases from 83.6 to 47.0 no root vanishes, so λ1 and λ2 stay negative: the obstacle to stability can only come from the imaginary pair.",
+        "the roots of the printed n° 120 quartic at 201 values of s^2 evenly spaced from 47.0 to 83.6 (1 - 1e-6): the number of points with exactly two real roots, both negative",
+        &[("points", points as f64), ("points with two negative real roots and a pair", two_negative as f64), ("smallest |root| (re + im)", min_gap)],
+        two_negative == points,
+        Verdict::DerivationDiffers,
+        "the two real roots stay real and negative over the whole interval (they do not merge into a pair, which the memoir's argument takes for granted), and no root reaches zero",
+    ));
+    // The lower limit is a pure imaginary pair, mu^2 = a3/a1.
+    let (ws, pair_re, mu2_rel) = match w120.weave_s {
+        Some(s) => {
+            let q = memoir_quartic_120(s);
+            let r = quartic_roots(&q);
+            let top = r.map_or((f64::NAN, f64::NAN), |r| (r[3].re, r[3].im));
+            let mu2 = q[1] / q[3];
+            (s * s, top.0, (top.1 * top.1 - mu2).abs() / mu2)
+        }
+        None => (f64::NAN, f64::NAN, f64::NAN),
+    };
+    out.push(claim(
+        "bicycle-straight-lower-limit-imaginary-pair",
+        "121",
+        "There is a value of s^2 between 83.6 and 47.0 where the real part of the imaginary pair changes sign, where the pair is ±μi with μ² = a3/a1.",
+        "the lower end of the stable range of the printed n° 120 quartic (the lowest rise of H3 with a1/a3 > 0, bisected to adjacent floats) and its roots there",
+        &[("lower limit s^2 (printed quartic)", ws), ("real part of the critical pair", pair_re), ("|Im^2 - a3/a1| / (a3/a1)", mu2_rel)],
+        ws > 47.0 && ws < 83.6 && pair_re.abs() < 1e-9 && mu2_rel < 1e-6,
+        Verdict::DerivationDiffers,
+        "the stability is lost at the lower limit through a pair crossing the imaginary axis (the weave of the modern literature), at the μ² of (3)",
+    ));
+    out
+}
+
+/// A constant's name, how to set it, and its value at n° 117.
+type Setter<'a> = (&'a str, &'a dyn Fn(&Constants, f64) -> Constants, f64);
+
+/// A bicycle of the friction claims: name, matrices, g, wheelbase, trail, steer axis tilt.
+type Bike = (&'static str, Option<Matrices>, f64, f64, f64, f64);
+
+/// n° 122: the half-trail rule, the three factors and the design rule.
+fn design_claims(k: &Constants) -> Vec<Claim> {
+    let mut out = Vec::new();
+    let half = 0.5 * k.r * k.eta.sin();
+    let dev = (k.c1 - half).abs() / half;
+    out.push(claim(
+        "bicycle-straight-half-trail-rule",
+        "122",
+        "Constructors seem to make the handlebar line pass through the middle of the contact radius, c1 = c = R sin η / 2.",
+        "R sin η / 2 against the measured c1 of n° 117 (R = 0.38, η = 25°, c1 = 0.08); holds within 1 %",
+        &[("R sin η / 2 (m)", half), ("c1 (m)", k.c1), ("relative difference", dev)],
+        dev < 0.01,
+        Verdict::MemoirError,
+        "his own bicycle satisfies the rule to 0.4 %; it is the only bicycle of the memoir with a measured c1 (the new one of n° 122 keeps it)",
+    ));
+    // Elasticities of the three factors.
+    let f1 = |c: &Constants| c.g * c.eta.sin() / (c.r * c.r / c.l * c.eta.cos());
+    let f2 = |c: &Constants| 0.5 * c.mu / c.mu1 * c.e / c.l + 1.0;
+    let f3 = |c: &Constants| {
+        (c.h - 0.5 * c.r * c.e / c.l + c.mu1 / c.mu * c.r) / (c.h - c.r * c.e / c.l)
+    };
+    let el = |f: &dyn Fn(&Constants) -> f64, set: &dyn Fn(&Constants, f64) -> Constants, x: f64| {
+        let h = 1e-6;
+        (f(&set(k, x * (1.0 + h))).ln() - f(&set(k, x * (1.0 - h))).ln()) / (2.0 * h)
+    };
+    let setters: [Setter; 6] = [
+        ("mu", &|c, x| Constants { mu: x, ..*c }, k.mu),
+        ("mu1", &|c, x| Constants { mu1: x, ..*c }, k.mu1),
+        ("e", &|c, x| Constants { e: x, ..*c }, k.e),
+        ("l", &|c, x| Constants { l: x, ..*c }, k.l),
+        ("h", &|c, x| Constants { h: x, ..*c }, k.h),
+        ("R", &|c, x| Constants { r: x, ..*c }, k.r),
+    ];
+    let mut ev: Vec<(String, f64)> = Vec::new();
+    let (mut outer_mu, mut middle_mu) = (0.0f64, 0.0f64);
+    for (name, set, x) in setters {
+        let (e1, e2, e3) = (el(&f1, set, x), el(&f2, set, x), el(&f3, set, x));
+        if ["mu", "mu1", "e"].contains(&name) {
+            outer_mu = outer_mu.max(e1.abs()).max(e3.abs());
+            middle_mu = middle_mu.max(e2.abs());
+        }
+        ev.push((format!("elasticity of the 1st factor to {name}"), e1));
+        ev.push((format!("elasticity of the 2nd factor to {name}"), e2));
+        ev.push((format!("elasticity of the 3rd factor to {name}"), e3));
+    }
+    let evr: Vec<(&str, f64)> = ev.iter().map(|(a, b)| (a.as_str(), *b)).collect();
+    out.push(claim(
+        "bicycle-straight-middle-factor-dominates",
+        "122",
+        "Errors in the constants matter little for the two outer factors of s^2 and much for the middle one (1 + (1/2)(μ/μ1)(e/l)).",
+        "the elasticities d ln(factor) / d ln(constant) of the three factors of the n° 122 formula at the constants of n° 117 (central differences, relative step 1e-6); holds when, for the mass constants μ, μ1 and e that the middle factor contains, every outer elasticity is below a fifth of the largest middle one",
+        &evr,
+        outer_mu < 0.2 * middle_mu,
+        Verdict::DerivationDiffers,
+        "for μ, μ1 and e the middle factor's elasticities (±0.56) are more than ten times the outer ones; the outer factors do depend strongly on the geometry (the first one on R, l and η, elasticities up to -2 for R), which the memoir's remark does not cover",
+    ));
+    // The design rule: lighter wheels and a larger e raise the upper limit.
+    let (dw_mu1, dc_mu1) = carvallo_sensitivity(k, "mu1", k.mu1);
+    let (dw_e, dc_e) = carvallo_sensitivity(k, "e", k.e);
+    let (dw_c1, dc_c1) = carvallo_sensitivity(k, "c1", k.c1);
+    let (bw_f, bc_f) = benchmark_sensitivity(&["mF", "IFxx", "IFyy"]);
+    let (bw_w, bc_w) = benchmark_sensitivity(&["mF", "IFxx", "IFyy", "mR", "IRxx", "IRyy"]);
+    let (bw_x, bc_x) = benchmark_sensitivity(&["xB"]);
+    let (bw_t, bc_t) = benchmark_sensitivity(&["c"]);
+    let holds = dc_mu1 < 0.0 && dc_e > 0.0 && bc_w < 0.0 && bc_f < 0.0 && bc_x > 0.0;
+    out.push(claim(
+        "bicycle-straight-design-rule",
+        "122",
+        "To raise the upper limit of the speed one should 1° decrease the mass μ1 of the wheel, 2° increase the distance e of the rider from the rear wheel's axle.",
+        "central differences of the window computed by the library (closed-form Hurwitz route, carvallo::sweep::hurwitz_window_polished): at Carvallo's bicycle of n° 117 through the general model, the derivatives of the weave (lower) and capsize (upper) speeds in m/s per unit of μ1 (kg, both wheels, the frame's A kept), e (m, the frame's central moments kept) and c1 (m), step 1e-4 relative; at the benchmark of Meijaard et al. 2007, per unit relative change of the front wheel (mF, IFxx, IFyy scaled together), of both wheels, of the rear body's xB (the rider forward) and of the trail c",
+        &[
+            ("Carvallo: d capsize / d mu1 (m/s per kg)", dc_mu1),
+            ("Carvallo: d weave / d mu1 (m/s per kg)", dw_mu1),
+            ("Carvallo: d capsize / d e (m/s per m)", dc_e),
+            ("Carvallo: d weave / d e (m/s per m)", dw_e),
+            ("Carvallo: d capsize / d c1 (m/s per m)", dc_c1),
+            ("Carvallo: d weave / d c1 (m/s per m)", dw_c1),
+            ("benchmark: d capsize / d ln(front wheel)", bc_f),
+            ("benchmark: d weave / d ln(front wheel)", bw_f),
+            ("benchmark: d capsize / d ln(both wheels)", bc_w),
+            ("benchmark: d weave / d ln(both wheels)", bw_w),
+            ("benchmark: d capsize / d ln xB", bc_x),
+            ("benchmark: d weave / d ln xB", bw_x),
+            ("benchmark: d capsize / d ln c", bc_t),
+            ("benchmark: d weave / d ln c", bw_t),
+        ],
+        holds,
+        Verdict::DerivationDiffers,
+        &format!(
+            "the signs say: lighter wheels (both, or the front one alone at the benchmark) and a rider further forward raise the upper (capsize) limit at both bicycles, as the memoir says. They raise the lower (weave) limit too, by less, so the window moves up and widens: at Carvallo's bicycle its width changes by {:.4} m/s per kg of mu1 and {:.3} m/s per m of e. The trail (c1, c) of the modern reading is not the memoir's e (the rider's distance from the rear axle); a larger trail raises both limits as well (shown apart)",
+            dc_mu1 - dw_mu1,
+            dc_e - dw_e
+        ),
+    ));
+    out
+}
+
+/// n° 123: the pendulum with dry friction, and friction at the steer of the bicycle.
+fn friction_claims(k: &Constants) -> Vec<Claim> {
+    let mut out = Vec::new();
+    // The pendulum: a slowly growing swing with constant friction is damped below the threshold.
+    let (a, kf, eps) = (1.3, 0.02, 0.01);
+    let tau = (eps * std::f64::consts::PI / a).exp() - 1.0;
+    let threshold = (2.0 + tau) * kf / tau;
+    let swing = |th0: f64| friction_half_swing(a, kf, th0, eps, 20_000).1;
+    let (below, above) = (0.8 * threshold, 1.25 * threshold);
+    let (sb, sa) = (swing(below), swing(above));
+    out.push(claim(
+        "bicycle-straight-pendulum-friction-threshold",
+        "123",
+        "With a constant friction a²k a slowly growing oscillation θ0 e^(εt) sin(at - π/2) is damped, the unstable equilibrium made stable, provided τθ0 < (2 + τ)k, with e^(εT/2) = 1 + τ.",
+        "RK4 (carvallo::bicycle_straight::friction_half_swing, 20 000 steps per 1/a) of θ'' - 2εθ' + a²(θ + k) = 0 from rest at -θ0 over one half swing, a = 1.3, k = 0.02, ε = 0.01, at θ0 = 0.8 and 1.25 times the threshold (2 + τ)k/τ",
+        &[
+            ("threshold θ0 (rad)", threshold),
+            ("θ0 below", below),
+            ("|θ1| from below", sb.abs()),
+            ("θ0 above", above),
+            ("|θ1| from above", sa.abs()),
+        ],
+        sb.abs() < below && sa.abs() > above,
+        Verdict::DerivationDiffers,
+        "below the threshold the swing shrinks, above it grows: the equilibrium is made stable for amplitudes below (2 + τ)k/τ only (a local stability, which the memoir's condition on θ0 states)",
+    ));
+    // The exponential divergence: slower with friction.
+    let (th0, kk, aa) = (0.3f64, 0.1f64, 2.0f64);
+    let with = |t: f64| kk + (th0 - kk) * (aa * t).exp();
+    let resid = {
+        let (t, h) = (0.7, 1e-4);
+        let acc = (with(t + h) - 2.0 * with(t) + with(t - h)) / (h * h);
+        (acc - aa * aa * (with(t) - kk)).abs() / acc.abs()
+    };
+    out.push(claim(
+        "bicycle-straight-friction-slows-divergence",
+        "123",
+        "For a divergence θ = θ0 e^(at) friction still increases stability: θ = k + (θ0 - k) e^(at), no start if θ0 < k, and a slower motion θ' = a(θ0 - k)e^(at) instead of θ' = θ0 e^(at).",
+        "the memoir's θ = k + (θ0 - k)e^(at) checked against θ'' = a²(θ - k) (the friction -a²k opposing θ' > 0) by a central second difference at t = 0.7 (a = 2, k = 0.1, θ0 = 0.3); the speed ratio with and without friction (θ0 - k)/θ0",
+        &[("relative residual of the equation", resid), ("speed ratio (θ0 - k)/θ0", (th0 - kk) / th0)],
+        resid < 1e-6 && (th0 - kk) / th0 < 1.0,
+        Verdict::DerivationDiffers,
+        "holds; the frictionless speed is a θ0 e^(at), the memoir writes θ0 e^(at) (a factor a dropped in the comparison, which does not change it). This exponential solution has the initial speed a(θ0 - k); from rest the motion is k + (θ0 - k) cosh(at)",
+    ));
+    // The bicycle: viscous friction at the steer.
+    let cs = [0.03, 0.1, 0.3, 1.0];
+    let grid = EigenGrid { vmax: 10.0, points: 400 };
+    let bench = Whipple::new(WhippleParams::benchmark());
+    let bikes: Vec<Bike> = vec![
+        ("Carvallo", carvallo_matrices(k), k.g, k.l, k.c1 / k.eta.cos(), k.eta),
+        (
+            "benchmark",
+            Some(bench.matrices()),
+            bench.params().get("g").unwrap_or(f64::NAN),
+            bench.params().get("w").unwrap_or(f64::NAN),
+            bench.params().get("c").unwrap_or(f64::NAN),
+            bench.params().get("lambda").unwrap_or(f64::NAN),
+        ),
+    ];
+    let mut ev: Vec<(String, f64)> = Vec::new();
+    let mut widened = 0usize;
+    let mut cases = 0usize;
+    let mut growth: Vec<(String, f64)> = Vec::new();
+    let mut damped_weave = 0usize;
+    let mut weave_cases = 0usize;
+    let (mut pivot_cases, mut pivot_lowered) = (0usize, 0usize);
+    for (name, m, g, w, trail, lambda) in &bikes {
+        let Some(m) = m else { continue };
+        let free = damped_window(m, *g, ViscousFriction::NONE, grid);
+        let (Some(fw), Some(fc)) = (
+            free.as_ref().and_then(|x| x.weave_speed),
+            free.as_ref().and_then(|x| x.capsize_speed),
+        ) else {
+            continue;
+        };
+        ev.push((format!("{name}: weave speed without friction (m/s)"), fw));
+        ev.push((format!("{name}: capsize speed without friction (m/s)"), fc));
+        let v_slow = 0.99 * fw;
+        let weave_re =
+            |f: ViscousFriction| damped_eigenvalues(m, *g, v_slow, f).map_or(f64::NAN, |e| e[3].re);
+        growth.push((
+            format!("{name}: weave growth rate at 0.99 weave speed, no friction (1/s)"),
+            weave_re(ViscousFriction::NONE),
+        ));
+        for (reading, f) in [("bearing", 0usize), ("ground pivot", 1usize)] {
+            for c in cs {
+                let fr = if f == 0 {
+                    ViscousFriction::bearing(c)
+                } else {
+                    ViscousFriction::ground_pivot(c, *w, *trail, *lambda)
+                };
+                let win = damped_window(m, *g, fr, grid);
+                let (dw, dc) = win.as_ref().map_or((f64::NAN, f64::NAN), |x| {
+                    (
+                        x.weave_speed.map_or(f64::NAN, |v| v - fw),
+                        x.capsize_speed.map_or(f64::NAN, |v| v - fc),
+                    )
+                });
+                cases += 1;
+                if dc - dw > 0.0 {
+                    widened += 1;
+                }
+                if f == 1 {
+                    pivot_cases += 1;
+                    if dw < 0.0 {
+                        pivot_lowered += 1;
+                    }
+                }
+                ev.push((format!("{name}, {reading} c = {c}: weave speed shift (m/s)"), dw));
+                ev.push((format!("{name}, {reading} c = {c}: capsize speed shift (m/s)"), dc));
+                let re = weave_re(fr);
+                weave_cases += 1;
+                if re < 0.0 {
+                    damped_weave += 1;
+                }
+                growth.push((
+                    format!(
+                        "{name}, {reading} c = {c}: weave growth rate at 0.99 weave speed (1/s)"
+                    ),
+                    re,
+                ));
+            }
+        }
+    }
+    let evr: Vec<(&str, f64)> = ev.iter().map(|(a, b)| (a.as_str(), *b)).collect();
+    let mut evw = evr.clone();
+    evw.push(("cases", cases as f64));
+    evw.push(("cases where the window widens", widened as f64));
+    out.push(claim(
+        "bicycle-straight-friction-widens-window",
+        "123",
+        "Applied to the bicycle, whose steering rate γ' is slowed by the pivoting friction of the front wheel on the ground, the method would certainly extend the range of stability found in n° 120-121 (« il est certain qu'on étendrait ainsi le champ de stabilité »).",
+        "the library's steer friction (carvallo::whipple::friction): M q'' + (v C1 + D) q' + (g K0 + v^2 K2 + v E) q = 0 with, in the bearing reading, D = diag(0, c) (a torque -c δ' in the steering bearing) and, in the ground-pivot reading (Carvallo's footnote), a torque -c ω_n about the vertical at the front contact (D = diag(0, c k²), E = diag(0, c k cos λ / w), k = cos λ (1 + t/w)); the stable range from the eigenvalues of the 4 × 4 state matrix on 400 speeds up to 10 m/s, each boundary bisected to adjacent floats, for c = 0.03, 0.1, 0.3, 1 N m s/rad at Carvallo's bicycle of n° 117 (through the general model) and at the benchmark; the claim holds if the window widens in every case",
+        &evw,
+        widened == cases,
+        Verdict::MemoirError,
+        "the window does not widen: with bearing friction the capsize speed does not move (a0 = det(g K0 + v^2 K2) does not contain c) and the weave speed rises (the benchmark at every c, Carvallo's bicycle for c of 0.3 and more; for c of 0.03 and 0.1 it falls by at most 1.5 mm/s, a widening of 0.4 %), and with ground-pivot friction both speeds fall, the capsize speed more, so the window narrows. Where the memoir goes wrong: it carries the one-coordinate pendulum of n° 123 over to the coupled weave, whose stability comes from the steer turning quickly into the fall (n° 106); friction slows exactly that. Viscous reading checked; the Coulomb reading is the next claim",
+    ));
+    // Slowly growing weave: viscous growth rates and the Coulomb simulation.
+    let mut dry_ev: Vec<(String, f64)> = growth.clone();
+    let mut dry_damped = 0usize;
+    let mut dry_cases = 0usize;
+    for (name, m, g, ..) in &bikes {
+        let Some(m) = m else { continue };
+        let Some(fw) =
+            damped_window(m, *g, ViscousFriction::NONE, grid).and_then(|x| x.weave_speed)
+        else {
+            continue;
+        };
+        let v = 0.99 * fw;
+        let x0 = [0.01, 0.0, 0.0, 0.0];
+        for tau in [0.0, 0.02, 0.1, 0.5] {
+            let run = simulate_dry(m, *g, v, tau, x0, 1e-3, 20_000);
+            let ratio = run.peak_lean(15.0, 20.0) / run.peak_lean(0.0, 5.0);
+            dry_ev.push((
+                format!("{name}, Coulomb tau = {tau} N m: peak lean 15-20 s / 0-5 s"),
+                ratio,
+            ));
+            if tau > 0.0 {
+                dry_cases += 1;
+                if ratio < 1.0 {
+                    dry_damped += 1;
+                }
+            }
+        }
+    }
+    let mut evd: Vec<(&str, f64)> = dry_ev.iter().map(|(a, b)| (a.as_str(), *b)).collect();
+    evd.push(("viscous cases with a damped weave at 0.99 weave speed", damped_weave as f64));
+    evd.push(("viscous cases", weave_cases as f64));
+    evd.push(("ground-pivot cases", pivot_cases as f64));
+    evd.push(("ground-pivot cases lowering the weave speed", pivot_lowered as f64));
+    evd.push(("Coulomb (bearing) cases with a shrinking lean", dry_damped as f64));
+    evd.push(("Coulomb (bearing) cases", dry_cases as f64));
+    out.push(claim(
+        "bicycle-straight-friction-damps-weave",
+        "123",
+        "Friction turns a slowly growing oscillation into a damped one, and the method applies to the bicycle, whose steering rate γ' is slowed by the pivoting friction of the front wheel on the ground (the pendulum result carried over to the bicycle's slowly growing oscillation below the lower limit, the weave).",
+        "the weave speed (lower limit) with viscous friction in the two readings of the previous claim, c = 0.03, 0.1, 0.3, 1 N m s/rad, at Carvallo's bicycle and at the benchmark: where it falls, a weave that grew slowly without friction is damped with it; the weave's growth rate (largest real part) at 0.99 times the frictionless weave speed; and the linear equations with a Coulomb torque of constant magnitude tau opposing δ' in the steering bearing, sticking when the holding torque is at most tau (carvallo::whipple::friction::simulate_dry: RK4, step 1 ms, switching instants bisected), from a lean of 0.01 rad at rest at 0.99 times the weave speed, tau = 0.02, 0.1, 0.5 N m over 20 s: the ratio of the peak lean over 15-20 s to that over 0-5 s. The claim is judged in the reading the memoir names, the pivoting friction on the ground",
+        &evd,
+        pivot_cases > 0 && pivot_lowered == pivot_cases,
+        Verdict::MemoirError,
+        "holds in the reading the memoir names, viscous pivoting friction of the front tyre on the ground: it lowers the weave speed at every c at both bicycles, so a slowly growing weave just below the lower limit is damped (at 0.99 times the weave speed for c = 0.1 and 0.3, not yet for c = 0.03, and for c = 1 the capsize mode has come down there). It fails in the bearing readings: a viscous steer damper raises the weave speed (only at Carvallo's bicycle do c = 0.03 and 0.1 lower it, by 1.5 mm/s at most) and mostly raises the weave's growth rate, and a dry (Coulomb) friction in the bearing makes the lean grow faster than without friction (the steer sticks at its reversals, and while it is stuck the bicycle falls as with the held handlebar of n° 105). Dry friction at the ground pivot is not checked (its stick condition couples the steer rate to the yaw rate); the damping of the weave does not widen the window (previous claim)",
+    ));
+    out
+}
+
+/// n° 124 against n° 25: the slope term of the marching equation.
+fn slope_claim(k: &Constants) -> Claim {
+    let mass = k.mu + 2.0 * k.mu1;
+    let (mut worst_sin, mut worst_tan) = (0.0f64, 0.0f64);
+    for i in [0.02, 0.05, 0.1, 0.2] {
+        // The virtual work of gravity for a rotation δσ of the rear wheel, rolling straight up
+        // the slope: the whole bicycle moves R δσ along the ground.
+        let w = incline_virtual_works(mass, k.g, k.h, k.r, i, 0.0, 0.0)[2];
+        let moment = -w;
+        let sin_form = mass * k.g * k.r * i.sin();
+        let tan_form = mass * k.g * k.r * i.tan();
+        worst_sin = worst_sin.max((moment - sin_form).abs() / moment.abs());
+        worst_tan = worst_tan.max((moment - tan_form).abs() / moment.abs());
+    }
+    claim(
+        "bicycle-straight-slope-moment-sin-i",
+        "124",
+        "On inclined ground the marching equation gains the gravity term μ g R cos δ sin i; climbing straight (δ = 0) the pedals must supply the moment μ g R sin i, where n° 25 wrote μ g R tang i.",
+        "the potential of the whole bicycle (mass μ + 2μ1 = 80 kg of n° 117) on ground inclined by i, built from the vectors (carvallo::bicycle_straight::incline_virtual_works: the vertical K' = (sin i, 0, cos i) in the ground axes, a rotation δσ of the rear wheel moving the bicycle by R δσ along its travel I), differentiated by central differences at i = 0.02, 0.05, 0.1, 0.2 rad, δ = 0, θ = 0; the moment the pedals must supply is minus that virtual work",
+        &[
+            ("max relative difference, sin i form", worst_sin),
+            ("max relative difference, tan i form (n° 25)", worst_tan),
+        ],
+        worst_sin < 1e-6,
+        Verdict::DerivationDiffers,
+        "sin i is right: the wheel rolls R δσ along the inclined ground, which rises R δσ sin i; n° 25's tang i would hold for a horizontal advance R δσ, and overstates the moment by 1/cos i - 1 (2 % at i = 0.2). For the bicycle climbing straight, M = (μ + 2μ1) g R sin i; the sign of the printed (δσ) line is another matter (the n° 124 entry)",
+    )
 }
 
 /// The memoir's assertions in this report's sections, n° by n°, with how each is covered.
-pub const INVENTORY: &[crate::claims::Assertion] = &[];
+pub const INVENTORY: &[Assertion] = &[
+    a("107", "outside straight running the rider without hands obtains a steady regime only by a lateral shift of the body, so turns are limited to a large radius", Left("refers to the steady turns of n° 90-98 (another report); 'large radius' is not quantified")),
+    a("107", "the stability of straight running gives a sufficient idea of the stability without hands", Left("a judgement on the scope of the study, not a property to check")),
+    a("108", "at first order ω = η, the variation η1 of the frame angle and its rate are of the second order, c1 can be held constant", Left("steps of the first-order reduction; their consequence, the n° 116-117 coefficients, agree with the exact linearisation (the n° 116 entry `the twelve coefficients`)")),
+    a("108", "the yaw rate at first order is n = (R/l) cos η γ s + (c1/l) γ'", Value("check yaw_rate")),
+    a("109", "only the terms of T containing p (or γ') times a first-order factor contribute first-order terms", Left("a step of the derivation; the part's terms are checked in the n° 116 tables against the general model (checks fall_frame_*, bar_frame_*)")),
+    a("110", "the rear wheel contributes A1 p' to the fall equation and B1 (c1/l) p s + C1 (c1/l)[…] to the handlebar equation", Left("a step of the derivation; checked as the rear wheel's column of the n° 116 tables (checks fall_rear_wheel_*, bar_rear_wheel_*)")),
+    a("111", "the front wheel's q1 differs from s by a second-order ε; its terms follow", Left("a step of the derivation; checked as the front wheel's column of the n° 116 tables (checks fall_front_wheel_*, bar_front_wheel_*)")),
+    a("112", "of the frame's inertia terms (1)-(6) of n° 85 only (3) and (5) are of the first order", Left("a step of the derivation; checked through the frame's correction terms of the n° 116 tables (checks *_frame_correction)")),
+    a("113", "the rear wheel's inertia terms reduce to -B1 s n and -(c1/l) μ1 R^2 p s", Left("a step of the derivation; checked through the rear wheel's correction terms (checks *_rear_wheel_correction)")),
+    a("114", "[Θ1 I1 j1] is infinitesimal, so μ1[Θ1 O1' S1'] = 0; only B1 s J of the front wheel's moment of momentum is finite", Left("a step of the derivation; checked through the front wheel's correction terms (checks *_front_wheel_correction)")),
+    a("115", "the gravity terms at first order are those listed (frame, rear wheel, front wheel)", Left("a step of the derivation; checked through the gravity terms of the tables (checks *_gravity)")),
+    a("116", "the sums of the three first (three last) tables equated to zero are the fall (handlebar) equation", Value("the twelve coefficients of n° 117 vs the general model")),
+    a("116", "the five γ'' cells of the (dT/dq')' rows, printed with the opposite signs to n° 109-111", Checked("bicycle-straight-table-gamma2-signs")),
+    a("117", "A' = 0: no lean-rate term in the fall equation", Value("A' / s")),
+    a("117", "A1' = s (B1 - μ1 R^2)(2 c1/l + cos η) = s μ1 R^2 (2 c1/l + cos η) by (7) of n° 4", Value("A1' / s")),
+    a("117", "the geometric constants were measured on the bicycle; μ1 = 5 kg is heavy for modern pneumatic wheels", Left("historical remarks on the data, nothing to compute")),
+    a("117", "A + 2A1, C, L computed by modelling the rider by simple shapes; rough but sufficient, as they vary much from rider to rider", Left("a judgement on the data; their influence is the subject of the n° 122 design claims")),
+    a("118", "with T = st the equations divided by s^2 have the coefficients listed", Value("T = s t")),
+    a("119", "the elimination of A and B gives the characteristic quartic (⊖)", Value("(⊖) coefficient of λ^3")),
+    a("119", "with θ = A e^(λT), γ = B e^(λT) the roots λ of (⊖) give the solutions", Value("check quartic_time_scale")),
+    a("119", "the quartic contains the parameter s and can only be solved in particular cases, but can be discussed", Left("a remark on method")),
+    a("120", "the signs of the quartic's terms are those of the printed table", Value("sign table of the quartic")),
+    a("120", "with negative real parts the quartic shows only permanences, a necessary character of stability", Checked("bicycle-straight-permanences-necessary")),
+    a("120", "stability proper is possible only for 47.0 < s^2 < 83.6", Checked("bicycle-straight-stable-only-in-third-row")),
+    a("120", "at s^2 = 83.6 the quartic reduces to a cubic with a negative root and a pair of negative real part: stable", Checked("bicycle-straight-upper-limit-stable")),
+    a("120", "the upper limit is V = 12.5 km/h", Value("upper limit speed 12.5 km/h")),
+    a("120", "s^2 = 47.0 does not give stability; the lower limit is above 47.0", Checked("bicycle-straight-47-not-stable")),
+    a("121", "just below 83.6 the zero root turns negative", Checked("bicycle-straight-zero-root-turns-negative")),
+    a("121", "from 83.6 down to 47.0 no root vanishes, λ1 and λ2 stay negative: only the imaginary pair can destroy stability", Checked("bicycle-straight-real-roots-stay-negative")),
+    a("121", "the lower limit is where the pair becomes ±μi, μ² = a3/a1, a3² - a1a2a3 + a1²a4 = 0", Checked("bicycle-straight-lower-limit-imaginary-pair")),
+    a("121", "(4) a3² - a1a2a3 + a1²a4 = 0 is the condition for a root μi", Value("check pure_imaginary_condition")),
+    a("121", "the lower limit is s^2 = 67.3, 10 km/h: stability without hands requires 10 to 12.5 km/h", Value("lower limit speed 10 km/h")),
+    a("122", "the upper limit comes from the constant term a b1 - a1 b = 0, in which the constants differ from n° 117 by the factor s^2", Value("check constant_term_linear_in_s2")),
+    a("122", "the upper limit of s^2 in closed form (with B1 = 2 μ1 R^2)", Value("check upper_limit_closed_form")),
+    a("122", "with c1 = R sin η / 2 the factor R sin η cancels and the denominator reduces to μ μ1 (h - R e/l): s^2 is a product of three factors", Value("check half_trail_denominator")),
+    a("122", "constructors make the handlebar line pass through the middle of the contact radius, c1 = R sin η / 2", Checked("bicycle-straight-half-trail-rule")),
+    a("122", "errors in the constants matter little for the outer factors, much for the middle one", Checked("bicycle-straight-middle-factor-dominates")),
+    a("122", "to raise the upper limit: lighter wheels, a larger e", Checked("bicycle-straight-design-rule")),
+    a("122", "for the new bicycle the upper limit rises in the ratio 1.29, to 16.2 km/h", Value("new upper limit 12.5 × 1.29 = 16.2 km/h")),
+    a("122", "the influence of the constants on the lower limit is hard to see, though only long to write", Left("a remark on the difficulty; the lower limit's derivatives are in the evidence of bicycle-straight-design-rule")),
+    a("123", "with constant friction the amplitudes decrease in arithmetic progression θ0, θ0 - 2k, …, each half swing lasting π/a", Value("half swing: elongation θ0 - 2k")),
+    a("123", "the pendulum starts only if θ0 > k and stops when the elongation is below k; friction increases stability, damped oscillations too", Left("consequences of the friction law assumed (static friction up to a²k); the arithmetic decrease is the value entry")),
+    a("123", "a slowly growing oscillation with friction reaches -k + (θ0 - k) e^(εT/2) after a half swing", Value("growing swing with friction")),
+    a("123", "friction damps a slowly growing oscillation and makes the unstable equilibrium stable if τθ0 < (2 + τ)k", Checked("bicycle-straight-pendulum-friction-threshold")),
+    a("123", "a divergence e^(at) is slowed by friction, and does not start if θ0 < k", Checked("bicycle-straight-friction-slows-divergence")),
+    a("123", "the method applies to the bicycle: friction slows the steering rate γ' and damps its growing oscillation", Checked("bicycle-straight-friction-damps-weave")),
+    a("123", "it is certain that friction would extend the range of stability of n° 120-121", Checked("bicycle-straight-friction-widens-window")),
+    a("124", "the hoop and the unicycle were studied thoroughly; the bicycle's equilibrium equations found with and without hands, its stability with hands and without hands in straight running", Left("a summary of the memoir; each part is checked in its own section")),
+    a("124", "skidding was studied on the unicycle and applies to the bicycle", Left("a summary; skidding of the bicycle is not modelled here")),
+    a("124", "the high bicycle is not essentially different; without hands the question does not arise (the feet steer the front wheel)", Left("the high bicycle is outside the models of the workspace")),
+    a("124", "on inclined ground the virtual works of gravity are μgh(cos i sin θ - sin i cos θ sin δ), -μgh sin i sin θ cos θ, +μgR cos δ sin i", Value("(δθ) virtual work on inclined ground")),
+    a("124", "the slope moment is μ g R sin i (n° 25 writes tang i)", Checked("bicycle-straight-slope-moment-sin-i")),
+    a("124", "outside straight running there are no steady regimes on a slope; the only interest is a modification of skidding", Left("qualitative; the slope is not in the dynamic models of the workspace")),
+    a("124", "the memoir's contributions: Grassmann's calculus, a numerical method for equations, the discussion of a quartic with a parameter, Lagrange's equations adapted, a method for stability and for friction, rotating apparatus, paradoxes, electrodynamics", Left("a list of the memoir's contributions, not assertions about the bicycle")),
+];
+
+const fn a(section: &'static str, says: &'static str, status: Status) -> Assertion {
+    Assertion { section, says, status }
+}

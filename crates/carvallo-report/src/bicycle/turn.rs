@@ -26,7 +26,7 @@
 
 use std::collections::BTreeMap;
 
-use carvallo::bicycle_straight::{Constants, Equations};
+use carvallo::bicycle_straight::{km_per_hour, Constants, Equations};
 use carvallo::bicycle_turn::{FallEquation, Hold, LockedSteer, SteadyTurn};
 
 use crate::entry::{Derived, Entry, Memoir, Verdict};
@@ -58,7 +58,7 @@ fn approx(
         rel_diff: Some(rel),
         verdict: policy::approx(rel, order, Verdict::DerivationDiffers),
         note: format!(
-            "{note}; relative difference {rel:.3e} against the declared second order theta0^2 + gamma^2 = {order:.3e}"
+            "memoir value reconstructed, not printed (the memoir's formula evaluated at this turn, which the memoir does not compute); {note}; relative difference {rel:.3e} against the declared second order theta0^2 + gamma^2 = {order:.3e}"
         ),
     }
 }
@@ -97,7 +97,7 @@ fn turn_entries(bike: &LockedSteer, gdeg: f64, kmh: f64, e: &mut Vec<Entry>) -> 
             th,
             order,
             format!(
-                "memoir (reconstructed, not printed: the memoir gives no number for this turn): (3)' of n° 86 bis, tan(theta) = -(R/l)(R s^2/g) tan(alpha), alpha of n° 57 at theta (eta = 25°), evaluated here at a turn of our choosing, so the verdict judges the approximation the memoir declares (policy approx), never a printed digit; derived: the lean that balances the lean row of the nonlinear model (Newton, residual {} N m, pitch {:.3e} rad, hands' torque {:.4} N m, pedal torque {} N m); (3)' keeps only the frame's centrifugal term: it drops the wheels' gyroscopic 2 B1 s n, the wheels' weight 2 mu1 R and the weight moment g Q of the front contact's trail and the frame's e (the n° 117 coefficient B)",
+                "memoir: (3)' of n° 86 bis, tan(theta) = -(R/l)(R s^2/g) tan(alpha), alpha of n° 57 at theta (eta = 25°), evaluated here at a turn of our choosing, so the verdict judges the approximation the memoir declares (policy approx), never a printed digit; derived: the lean that balances the lean row of the nonlinear model (Newton, residual {} N m, pitch {:.3e} rad, hands' torque {:.4} N m, pedal torque {} N m); (3)' keeps only the frame's centrifugal term: it drops the wheels' gyroscopic 2 B1 s n, the wheels' weight 2 mu1 R and the weight moment g Q of the front contact's trail and the frame's e (the n° 117 coefficient B)",
                 small(t.lean_residual, 1e-12),
                 t.pitch,
                 t.hands_torque,
@@ -112,7 +112,7 @@ fn turn_entries(bike: &LockedSteer, gdeg: f64, kmh: f64, e: &mut Vec<Entry>) -> 
         memoir_n,
         t.yaw_rate,
         order,
-        "memoir (reconstructed, not printed): (2) of n° 86, n = (R/l) s tan(alpha) at the exact lean, evaluated here at a turn of our choosing (policy approx); derived: the yaw rate of the nonlinear model's rolling constraints".into(),
+        "memoir: (2) of n° 86, n = (R/l) s tan(alpha) at the exact lean, evaluated here at a turn of our choosing (policy approx); derived: the yaw rate of the nonlinear model's rolling constraints".into(),
     ));
     // (C) itself.
     e.push(Entry {
@@ -196,7 +196,7 @@ fn turn_entries(bike: &LockedSteer, gdeg: f64, kmh: f64, e: &mut Vec<Entry>) -> 
         rel_diff: Some(rel_diff(ratio, tan2)),
         verdict: policy::finding(Verdict::DerivationDiffers),
         note: format!(
-            "memoir: tan^2(theta0), the ratio of the leading centrifugal term mu R h s n sin(theta) to the gravity term, by (3)'; derived: the ratio of the whole centrifugal part (the frame's, the wheels' gyroscopic terms, the dn/dtheta term and the pitch), {} and of the second order as the memoir says, but not equal to tan^2(theta0): the other centrifugal terms are of the same order. At this lean the whole makes df/dtheta {:.1} % larger than its gravity part",
+            "memoir value reconstructed, not printed (the memoir's ratio evaluated at this turn); memoir: tan^2(theta0), the ratio of the leading centrifugal term mu R h s n sin(theta) to the gravity term, by (3)'; derived: the ratio of the whole centrifugal part (the frame's, the wheels' gyroscopic terms, the dn/dtheta term and the pitch), {} and of the second order as the memoir says, but not equal to tan^2(theta0): the other centrifugal terms are of the same order. At this lean the whole makes df/dtheta {:.1} % larger than its gravity part",
             if ratio > 0.0 {
                 "of the sign of the gravity part (destabilising too)"
             } else {
@@ -463,10 +463,292 @@ fn failure(why: &str) -> Entry {
     }
 }
 
-/// The memoir's claims checked in this report ([`crate::claims`]).
-pub fn claims() -> Vec<crate::claims::Claim> {
-    Vec::new()
+/// The handlebar angles (degrees) of the grid of the claims (old bicycle of n° 117).
+pub const CLAIM_GAMMA: [f64; 3] = [2.0, 5.0, 10.0];
+
+/// The speeds (km/h) of the grid of the claims.
+pub const CLAIM_KMH: [f64; 5] = [5.0, 10.0, 15.0, 20.0, 25.0];
+
+/// One point of the claims' grid: the steady turn, (C) with s held, and (C) at rest with the
+/// same handlebar angle.
+struct GridPoint {
+    gdeg: f64,
+    turn: SteadyTurn,
+    c: FallEquation,
+    rest: FallEquation,
 }
 
+impl GridPoint {
+    /// The second order the memoir neglects, θ0² + γ².
+    fn order(&self) -> f64 {
+        self.turn.lean.powi(2) + self.gdeg.to_radians().powi(2)
+    }
+}
+
+/// (C) across [`CLAIM_GAMMA`] × [`CLAIM_KMH`] for the bicycle of n° 117, s held.
+fn claim_grid() -> Result<Vec<GridPoint>, String> {
+    let bike = LockedSteer::new(Constants::MEMOIR).map_err(|x| x.to_string())?;
+    let mut out = Vec::new();
+    for gdeg in CLAIM_GAMMA {
+        let gamma = gdeg.to_radians();
+        let rest = bike
+            .steady_turn(gamma, 0.0)
+            .and_then(|t| bike.fall_equation(&t, Hold::Rolling))
+            .map_err(|x| x.to_string())?;
+        for kmh in CLAIM_KMH {
+            let turn = bike.steady_turn(gamma, kmh / 3.6).map_err(|x| x.to_string())?;
+            let c = bike.fall_equation(&turn, Hold::Rolling).map_err(|x| x.to_string())?;
+            out.push(GridPoint { gdeg, turn, c, rest });
+        }
+    }
+    Ok(out)
+}
+
+const GRID_HOW: &str = "Carvallo's bicycle of n° 117 as the nonlinear Carvallo–Whipple model (carvallo::bicycle_turn::LockedSteer), the steady turn with the handlebar held solved by Newton, (C) of n° 101 with the rolling speed s held (df/dp' exact, df/dp and df/dtheta by Richardson-extrapolated central differences, error below 1e-5), at gamma = 2, 5, 10 degrees × 5, 10, 15, 20, 25 km/h (15 turns)";
+
+/// The memoir's claims checked in this report ([`crate::claims`]).
+pub fn claims() -> Vec<crate::claims::Claim> {
+    use crate::claims::Claim;
+    let mut out = Vec::new();
+    let grid = match claim_grid() {
+        Ok(g) => g,
+        Err(err) => {
+            out.push(Claim::new(
+                "bicycle-turn-grid",
+                "105",
+                "the claims of n° 101-105 across a grid of steady turns",
+                GRID_HOW,
+                &[],
+                policy::claim(false, Verdict::DerivationDiffers),
+                &format!("the computation failed: {err}"),
+            ));
+            return out;
+        }
+    };
+    let n = grid.len() as f64;
+    let max = |f: &dyn Fn(&GridPoint) -> f64| grid.iter().map(f).fold(f64::NEG_INFINITY, f64::max);
+    let min = |f: &dyn Fn(&GridPoint) -> f64| grid.iter().map(f).fold(f64::INFINITY, f64::min);
+    let count = |f: &dyn Fn(&GridPoint) -> bool| grid.iter().filter(|p| f(p)).count() as f64;
+
+    // n° 101: the extreme terms of (C) are of opposite signs.
+    let opposite = count(&|p| p.c.dfdpp > 0.0 && p.c.dfdtheta < 0.0);
+    out.push(Claim::new(
+        "bicycle-turn-extremes-opposite-signs",
+        "101",
+        "The extreme terms of (C), df/dp' and df/dtheta, are of opposite signs, so that (C) has real roots of opposite signs (« je vais étudier les termes extrêmes et montrer qu'ils sont de signes contraires »).",
+        GRID_HOW,
+        &[
+            ("turns", n),
+            ("turns with df/dp' > 0 > df/dtheta", opposite),
+            ("min df/dp' (kg m^2)", min(&|p| p.c.dfdpp)),
+            ("max df/dtheta (N m)", max(&|p| p.c.dfdtheta)),
+        ],
+        policy::claim(opposite == n, Verdict::DerivationDiffers),
+        "holds at every turn of the grid; the sign of df/dp' df/dtheta < 0 alone makes the roots real and of opposite signs whatever df/dp",
+    ));
+
+    // n° 102: the factor (R sin omega - c)/l < 0.073 and mu R^2 < A/2.
+    let k = Constants::MEMOIR;
+    let c1l = k.c1 / k.l;
+    out.push(Claim::new(
+        "bicycle-turn-trail-factor-small",
+        "102",
+        "The factor (R sin ω - c)/l = c1/l of the neglected term mu R^2 (y/(x cos θ))^2 p' is below 0.073.",
+        "c1/l with the constants of n° 117 (c1 = 0.08, l = 1.10), the reading c1 = R sin ω - c of n° 108",
+        &[("c1/l", c1l), ("memoir bound", 0.073)],
+        policy::claim(c1l < 0.073, Verdict::MemoirError),
+        "0.0727 < 0.073: the bound is the constants' value rounded up",
+    ));
+    let frame_a = k.a2 - 3.0 * k.mu1 * k.r * k.r;
+    let mur2 = k.mu * k.r * k.r;
+    out.push(Claim::new(
+        "bicycle-turn-mu-r2-below-half-a",
+        "102",
+        "The moment of inertia mu R^2 is already less than half of A (« le moment d'inertie μR² est déjà inférieur à la moitié de A »).",
+        "mu R^2 with the constants of n° 117 against the frame's A = (A + 2 A1) - 3 mu1 R^2 (A1 = 3/2 mu1 R^2 for a hoop, n° 4)",
+        &[("mu R^2 (kg m^2)", mur2), ("A / 2 (kg m^2)", 0.5 * frame_a)],
+        policy::claim(mur2 < 0.5 * frame_a, Verdict::MemoirError),
+        "10.1 < 48.9 kg m^2: holds by a factor of about 5",
+    ));
+
+    // n° 104: df/dtheta essentially negative; the centrifugal part of the second order.
+    let negative = count(&|p| p.c.dfdtheta < 0.0);
+    out.push(Claim::new(
+        "bicycle-turn-dfdtheta-negative",
+        "104",
+        "df/dtheta reduces to the gravity term -mu g h cos θ, which is essentially negative (« ce terme est essentiellement négatif »).",
+        GRID_HOW,
+        &[
+            ("turns", n),
+            ("turns with df/dtheta < 0", negative),
+            ("max df/dtheta (N m)", max(&|p| p.c.dfdtheta)),
+            ("min df/dtheta (N m)", min(&|p| p.c.dfdtheta)),
+        ],
+        policy::claim(negative == n, Verdict::DerivationDiffers),
+        "the whole coefficient (gravity and centrifugal parts) is negative at every turn, between the two values shown",
+    ));
+    let worst = max(&|p| (p.c.dfdtheta_centrifugal() / p.c.dfdtheta_gravity).abs() / p.order());
+    out.push(Claim::new(
+        "bicycle-turn-centrifugal-second-order",
+        "104",
+        "The centrifugal terms of df/dtheta are negligible, of the second order in θ, γ, against the gravity term (« tous les autres termes … sont au moins du second ordre »).",
+        &format!("{GRID_HOW}; the centrifugal part is df/dtheta minus its gravity part (the derivative of the forcing at zero speeds); the claim holds where |centrifugal / gravity| is at most theta0^2 + gamma^2"),
+        &[
+            ("turns", n),
+            ("max |centrifugal / gravity| / (theta0^2 + gamma^2)", worst),
+            ("max |centrifugal / gravity|", max(&|p| (p.c.dfdtheta_centrifugal() / p.c.dfdtheta_gravity).abs())),
+        ],
+        policy::claim(worst <= 1.0, Verdict::DerivationDiffers),
+        "the ratio stays below the declared second order at every turn (the largest fraction of it is shown); it is not tan^2(theta0), the memoir's leading term alone (the n° 104 ratio entries)",
+    ));
+
+    // n° 105.
+    let saddles = count(&|p| p.c.saddle() && p.c.roots[1].re > 0.0);
+    out.push(Claim::new(
+        "bicycle-turn-unstable-whatever-speed",
+        "105",
+        "With the handlebar held fixed the equilibrium of the bicycle is unstable: (C) has real roots of opposite signs (« l'équilibre de la bicyclette est instable quand le guidon est maintenu fixe »).",
+        GRID_HOW,
+        &[
+            ("turns", n),
+            ("turns with real roots of opposite signs", saddles),
+            ("min positive root (1/s)", min(&|p| p.c.roots[1].re)),
+            ("max positive root (1/s)", max(&|p| p.c.roots[1].re)),
+        ],
+        policy::claim(saddles == n, Verdict::DerivationDiffers),
+        "every turn of the grid is a saddle: the fall grows like e^(lambda t) with lambda about 2.7 1/s (a time constant of about 0.37 s); the new bicycle of n° 122 also (n° 105 entries)",
+    ));
+    // At each handlebar angle: the relative spread over the speeds, divided by the largest
+    // second order at that angle.
+    let spread = |f: &dyn Fn(&FallEquation) -> f64| {
+        CLAIM_GAMMA
+            .iter()
+            .map(|g| {
+                let at: Vec<&GridPoint> = grid.iter().filter(|p| p.gdeg == *g).collect();
+                let (lo, hi) = at
+                    .iter()
+                    .map(|p| f(&p.c))
+                    .fold((f64::INFINITY, f64::NEG_INFINITY), |(a, b), x| (a.min(x), b.max(x)));
+                let order = at.iter().map(|p| p.order()).fold(0.0, f64::max);
+                (hi - lo) / hi.abs().max(lo.abs()) / order
+            })
+            .fold(0.0, f64::max)
+    };
+    let (sp_pp, sp_th) = (spread(&|c| c.dfdpp), spread(&|c| c.dfdtheta));
+    out.push(Claim::new(
+        "bicycle-turn-extremes-independent-of-speed",
+        "105",
+        "The extreme terms of (C) are independent of the rolling speed s (« les termes extrêmes … sont indépendants de la vitesse de roulement s »).",
+        &format!("{GRID_HOW}; at each handlebar angle the relative spread (max - min) / max |x| of df/dp' and of df/dtheta over the five speeds, divided by the largest second order theta0^2 + gamma^2 at that angle"),
+        &[
+            ("max spread of df/dp' / (theta0^2 + gamma^2)", sp_pp),
+            ("max spread of df/dtheta / (theta0^2 + gamma^2)", sp_th),
+        ],
+        policy::claim(sp_pp <= 1.0 && sp_th <= 1.0, Verdict::DerivationDiffers),
+        "independent of s to the second order the memoir neglects: at each handlebar angle they vary over 5-25 km/h by less than theta0^2 + gamma^2 (the fraction shown)",
+    ));
+    let rest_dev = max(&|p| (p.c.roots[1].re / p.rest.roots[1].re - 1.0).abs() / p.order());
+    out.push(Claim::new(
+        "bicycle-turn-instability-as-at-rest",
+        "105",
+        "The term df/dp lambda is unimportant, so that the instability is about the same as if the bicycle were not moving (« l'instabilité est sensiblement la même que si la bicyclette ne marchait pas »).",
+        &format!("{GRID_HOW}; the positive root against the one of (C) at rest with the same handlebar angle, |lambda+ / lambda+(rest) - 1| against theta0^2 + gamma^2"),
+        &[
+            ("max |lambda+ / lambda+(rest) - 1| / (theta0^2 + gamma^2)", rest_dev),
+            ("max |lambda+ / lambda+(rest) - 1|", max(&|p| (p.c.roots[1].re / p.rest.roots[1].re - 1.0).abs())),
+        ],
+        policy::claim(rest_dev <= 1.0, Verdict::DerivationDiffers),
+        "the growth rate of the fall differs from the one at rest by less than the neglected second order at every turn",
+    ));
+    let same_sign = count(&|p| p.c.dfdtheta_centrifugal() * p.c.dfdtheta_gravity > 0.0);
+    out.push(Claim::new(
+        "bicycle-turn-centrifugal-moment-decreases",
+        "105",
+        "When the lean grows past the turn's lean with γ held, the moment of the centrifugal force stays about constant and even tends to decrease, so gravity wins more and more (« le moment de la force centrifuge reste à peu près constant et tend même à diminuer »).",
+        &format!("{GRID_HOW}; the centrifugal part of df/dtheta has the sign of the gravity part when the centrifugal moment (which opposes the fall) decreases as the lean grows"),
+        &[
+            ("turns", n),
+            ("turns with the centrifugal part of the gravity part's sign", same_sign),
+        ],
+        policy::claim(same_sign == n, Verdict::DerivationDiffers),
+        "at every turn the centrifugal part adds to the gravity part (destabilising), as the memoir says; it is small (claim bicycle-turn-centrifugal-second-order)",
+    ));
+
+    // n° 106: steering into the fall raises the frame.
+    match Equations::via_whipple(&k) {
+        Ok(lin) => {
+            // Fall equation: ... + (k0_01 + k2_01 s^2) gamma; in a steady turn gamma has the
+            // sign opposite to theta (n° 36 bis), so steering toward the fall (gamma = -|g| sgn
+            // theta) pushes theta'' by (k0_01 + k2_01 s^2) |g| sgn(theta) / m00: restoring iff
+            // k0_01 + k2_01 s^2 < 0.
+            let s0 = (-lin.k0[0][1] / lin.k2[0][1]).sqrt();
+            let v0 = km_per_hour(s0, k.r);
+            let b_at_10 = lin.k0[0][1] + lin.k2[0][1] * (10.0 / 3.6 / k.r).powi(2);
+            out.push(Claim::new(
+                "bicycle-turn-steer-into-the-fall",
+                "106",
+                "To correct a beginning fall to the left the rider turns the handlebar slightly to the left, and the frame rises (« pour la corriger, le cavalier tourne à peine le guidon à gauche »).",
+                "the fall equation of n° 117 through the general model (exact linearisation, constants of n° 117): its coefficient B = k0 + k2 s^2 of gamma; steering toward the lean is gamma of the sign opposite to theta (the steady turn of n° 36 bis leans into the turn), whose lean acceleration -B gamma / A'' opposes theta iff B < 0; the speed where B changes sign",
+                &[
+                    ("B changes sign at (km/h)", v0),
+                    ("B at 10 km/h (N m)", b_at_10),
+                ],
+                policy::claim(v0 < 5.0 && b_at_10 < 0.0, Verdict::DerivationDiffers),
+                "holds above the speed shown (below it the gravity part g(mu e c1/l + mu1 R sin eta) of B, the frame's weight acting through the trail, outweighs the centrifugal part): at every riding speed a steer toward the fall pushes the lean back",
+            ));
+        }
+        Err(err) => out.push(Claim::new(
+            "bicycle-turn-steer-into-the-fall",
+            "106",
+            "To correct a beginning fall the rider turns the handlebar toward it",
+            "the fall equation of n° 117 through the general model",
+            &[],
+            policy::claim(false, Verdict::DerivationDiffers),
+            &format!("the computation failed: {err}"),
+        )),
+    }
+    out
+}
+
+use crate::claims::Status::{Checked, Left, Value};
+
 /// The memoir's assertions in this report's sections, n° by n°, with how each is covered.
-pub const INVENTORY: &[crate::claims::Assertion] = &[];
+pub const INVENTORY: &[crate::claims::Assertion] = &[
+    a("101", "the characteristic equation with the handlebar held is (C): (df/dp') lambda^2 + (df/dp) lambda + df/dtheta = 0", Value("characteristic equation (C)")),
+    a("101", "the extreme terms of (C) are of opposite signs, hence real roots of opposite signs and instability", Checked("bicycle-turn-extremes-opposite-signs")),
+    a("102", "only (dT/dp)' contains accelerations, so only it gives terms of df/dp'", Left("a property of the form of the modified Lagrange equation (n° 80), true by construction; the model's df/dp' = M11 + M13 dU/dp is exact")),
+    a("102", "the term -L cos θ dn/dp is negligible before A (dn/dp of the second order)", Value("df/dp' (kg m^2)")),
+    a("102", "the factor (R sin ω - c)/l is below 0.073", Checked("bicycle-turn-trail-factor-small")),
+    a("102", "mu R^2 is already less than half of A", Checked("bicycle-turn-mu-r2-below-half-a")),
+    a("102", "the wheels' A1 p' merge into A p' (A slightly increased): df/dp' = A", Value("df/dp' upright")),
+    a("103", "in df/dtheta the quantities gamma, s, θ', θ'' are held constant", Left("the definition of the derivative in (C); nothing to check")),
+    a("103", "the d eta/d theta part of d tan(alpha)/d theta is negligible before the first, itself of the second order", Value("dn/dtheta at fixed gamma and s")),
+    a("103", "the terms of f with a zero speed or acceleration as factor do not contribute to df/dtheta: only the equilibrium part phi is differentiated", Left("an identity (a term with the factor p = 0 has a zero theta-derivative at p = 0); the model differentiates the whole lean row")),
+    a("104", "the gravity terms of the frame reduce to -mu g h cos θ, the others negligible", Value("gravity part of df/dtheta")),
+    a("104", "the rear wheel's -mu1 g R cos θ adds, the front wheel merges: mu h increased by about 2 mu1 R", Value("df/dtheta upright")),
+    a("104", "the ratio of the leading centrifugal term to gravity is tan^2 θ, negligible", Value("centrifugal part / gravity part")),
+    a("104", "all the other centrifugal terms are at least of the second order", Checked("bicycle-turn-centrifugal-second-order")),
+    a("104", "df/dtheta reduces to -mu g h cos θ", Value("df/dtheta (N m)")),
+    a("104", "this term is essentially negative", Checked("bicycle-turn-dfdtheta-negative")),
+    a("105", "df/dp' > 0, df/dtheta < 0: real roots of opposite signs, the motion is unstable with the handlebar held", Checked("bicycle-turn-unstable-whatever-speed")),
+    a("105", "the extreme terms are independent of the speed s", Checked("bicycle-turn-extremes-independent-of-speed")),
+    a("105", "df/dp lambda is unimportant: the instability is about the same as at rest", Checked("bicycle-turn-instability-as-at-rest")),
+    a("105", "the centrifugal moment stays about constant and even decreases as the lean grows: gravity wins more and more", Checked("bicycle-turn-centrifugal-moment-decreases")),
+    a("105", "a handlebar locked to the frame (a key some bicycles have) makes the fall inevitable", Value("roots of (C) with the handlebar held (1/s), gamma = 5°, 20 km/h")),
+    a("106", "one cannot ride a bicycle without learning it (the result of n° 103 [105])", Left("about learning, outside the mechanics")),
+    a("106", "a lateral shift of the body has little influence on the equilibrium", Left("refers to the steady turns of n° 90-98, outside this range")),
+    a("106", "all the rider's skill is in steering, calmly and slowly; lively, nervous people learn with some difficulty", Left("about the rider's behaviour, outside the model (no rider control law)")),
+    a("106", "the n° 86 bis experiment: riding with the left hand or the middle of the bar is harder at first", Left("an experiment on riders, not a property of the model")),
+    a("106", "to correct a fall to the left the rider turns the handlebar slightly to the left, and the frame rises", Checked("bicycle-turn-steer-into-the-fall")),
+    a("106", "the rider overcorrects and oscillates about the equilibrium as if it were stable", Left("needs a model of the rider's control, which the workspace does not have")),
+    a("106", "the tracks of the two wheels cross nearly periodically on the ground", Left("an observation of real tracks; no rider-controlled simulation to compare")),
+    a("106", "the periodic pedal strokes regularise the oscillations; beginners exaggerate them, trained riders make them barely visible", Left("about riders, outside the model")),
+];
+
+const fn a(
+    section: &'static str,
+    says: &'static str,
+    status: crate::claims::Status,
+) -> crate::claims::Assertion {
+    crate::claims::Assertion { section, says, status }
+}

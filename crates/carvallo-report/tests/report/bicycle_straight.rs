@@ -63,3 +63,74 @@ fn text_report_snapshot() {
         insta::assert_snapshot!("bicycle_straight_report_text", text);
     });
 }
+
+/// The claims of n° 107–124: the verdicts that decide the issue (the γ'' cells, friction, the
+/// design rule, the slope), the margins behind them, and a snapshot of their text.
+#[test]
+fn claims_verdicts_and_snapshot() {
+    use carvallo_report::bicycle::straight::claims;
+    let c = claims();
+    let text = carvallo_report::claims::render_claims_text(&c);
+    insta::with_settings!({
+        description => "carvallo report: the memoir's claims of n° 107-124 (the bicycle without hands), numbers to 4 significant digits",
+        omit_expression => true,
+    }, {
+        insta::assert_snapshot!("bicycle_straight_claims_text", carvallo_report::normalise_numbers(&text));
+    });
+    let verdict = |id: &str| c.iter().find(|x| x.id == id).map(|x| x.verdict).expect(id);
+    let get = |id: &str, key: &str| {
+        c.iter().find(|x| x.id == id).and_then(|x| x.evidence.get(key).copied()).expect(key)
+    };
+    let not_agreeing: BTreeMap<&str, Verdict> = c
+        .iter()
+        .filter(|x| x.verdict != Verdict::Agrees)
+        .map(|x| (x.id.as_str(), x.verdict))
+        .collect();
+    assert_eq!(
+        not_agreeing,
+        BTreeMap::from([
+            ("bicycle-straight-table-gamma2-signs", Verdict::Ocr),
+            ("bicycle-straight-friction-widens-window", Verdict::MemoirError),
+        ])
+    );
+    assert_eq!(
+        get("bicycle-straight-table-gamma2-signs", "gamma'' cells as printed that fail"),
+        5.0
+    );
+    // The design rule: the signs of the upper limit's derivatives.
+    assert!(get("bicycle-straight-design-rule", "Carvallo: d capsize / d mu1 (m/s per kg)") < 0.0);
+    assert!(get("bicycle-straight-design-rule", "Carvallo: d capsize / d e (m/s per m)") > 0.0);
+    assert!(get("bicycle-straight-design-rule", "benchmark: d capsize / d ln(front wheel)") < 0.0);
+    assert!(get("bicycle-straight-design-rule", "benchmark: d capsize / d ln xB") > 0.0);
+    // Bearing friction: the capsize speed does not move, the benchmark's weave speed rises.
+    let dc = get(
+        "bicycle-straight-friction-widens-window",
+        "benchmark, bearing c = 1: capsize speed shift (m/s)",
+    );
+    assert!(dc.abs() < 1e-9, "{dc}");
+    let dw = get(
+        "bicycle-straight-friction-widens-window",
+        "benchmark, bearing c = 1: weave speed shift (m/s)",
+    );
+    assert!(dw > 0.05, "{dw}");
+    let tan =
+        get("bicycle-straight-slope-moment-sin-i", "max relative difference, tan i form (n° 25)");
+    assert!((tan - (1.0 / 0.2f64.cos() - 1.0)).abs() < 1e-6, "{tan}");
+    assert_eq!(verdict("bicycle-straight-slope-moment-sin-i"), Verdict::Agrees);
+    // The weave damped only by the ground-pivot reading; dry friction in the bearing makes it worse.
+    assert_eq!(
+        get("bicycle-straight-friction-damps-weave", "ground-pivot cases lowering the weave speed"),
+        8.0
+    );
+    assert_eq!(
+        get(
+            "bicycle-straight-friction-damps-weave",
+            "Coulomb (bearing) cases with a shrinking lean"
+        ),
+        0.0
+    );
+    assert_eq!(
+        get("bicycle-straight-friction-widens-window", "cases where the window widens"),
+        2.0
+    );
+}

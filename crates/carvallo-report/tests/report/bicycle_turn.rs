@@ -105,3 +105,36 @@ fn new_bicycle_entries() {
     // The n° 105 turn lies on the grid: its root is inside the grid's range.
     assert!(r["lambda_plus"] >= n["lambda_plus_min"] && r["lambda_plus"] <= n["lambda_plus_max"]);
 }
+
+/// The claims of n° 101–106: every one holds (the memoir's conclusions on the held handlebar
+/// are confirmed), with the margins that make them hold, and a snapshot of their text.
+#[test]
+fn claims_hold_and_snapshot() {
+    use carvallo_report::bicycle::turn::claims;
+    let c = claims();
+    assert_eq!(c.len(), 10, "{:#?}", c.iter().map(|x| &x.id).collect::<Vec<_>>());
+    for x in &c {
+        assert_eq!(x.verdict, Verdict::Agrees, "{}: {}", x.id, x.note);
+    }
+    let get = |id: &str, key: &str| {
+        c.iter().find(|x| x.id == id).and_then(|x| x.evidence.get(key).copied()).expect(key)
+    };
+    assert_eq!(
+        get("bicycle-turn-unstable-whatever-speed", "turns with real roots of opposite signs"),
+        15.0
+    );
+    let r = get(
+        "bicycle-turn-centrifugal-second-order",
+        "max |centrifugal / gravity| / (theta0^2 + gamma^2)",
+    );
+    assert!(r > 0.1 && r < 1.0, "{r}");
+    let v0 = get("bicycle-turn-steer-into-the-fall", "B changes sign at (km/h)");
+    assert!(v0 > 1.0 && v0 < 3.0, "{v0}");
+    let text = carvallo_report::claims::render_claims_text(&c);
+    insta::with_settings!({
+        description => "carvallo report: the memoir's claims of n° 101-106 (the handlebar held)",
+        omit_expression => true,
+    }, {
+        insta::assert_snapshot!("bicycle_turn_claims_text", carvallo_report::normalise_numbers(&text));
+    });
+}

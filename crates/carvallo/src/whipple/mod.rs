@@ -21,6 +21,8 @@ mod model;
 mod params;
 
 pub mod certified;
+/// Friction at the steering pivot (memoir n° 123): viscous steer damping and dry friction.
+pub mod friction;
 pub mod nonlinear;
 pub mod parameter_text;
 pub mod stability;
