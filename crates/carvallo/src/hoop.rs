@@ -14,6 +14,9 @@
 //! [`Hoop`] holds validated physical parameters; the [`normalised`] module has the
 //! dimensionless forms of n° 12 ($g/R = 1$).
 
+/// The fall laws of n° 9 (uniform, exponential, pendular) from a state near a steady state.
+pub mod fall;
+
 use crate::error::ParameterError;
 use crate::numerics::ode::rk4_step;
 
