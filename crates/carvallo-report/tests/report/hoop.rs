@@ -92,3 +92,16 @@ fn text_report_snapshot() {
         insta::assert_snapshot!("hoop_report_text", text);
     });
 }
+
+#[test]
+fn claims_snapshot() {
+    let text = carvallo_report::normalise_numbers(&carvallo_report::claims::render_claims_text(
+        &carvallo_report::hoop::claims(),
+    ));
+    insta::with_settings!({
+        description => "carvallo report: the hoop's claims n° 1-12 and 71-78, numbers to 4 significant digits",
+        omit_expression => true,
+    }, {
+        insta::assert_snapshot!("hoop_claims_text", text);
+    });
+}
