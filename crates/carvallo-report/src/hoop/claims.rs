@@ -33,7 +33,15 @@ fn holds(id: &str) -> f64 {
 /// The claims of n° 1–12 and 71–78, computed once per process (the simulations take a while).
 pub(super) fn claims() -> Vec<Claim> {
     static CLAIMS: OnceLock<Vec<Claim>> = OnceLock::new();
-    CLAIMS.get_or_init(compute).clone()
+    CLAIMS
+        .get_or_init(|| {
+            let mut claims = compute();
+            claims.sort_by(|a, b| {
+                crate::entry::section_key(&a.section).total_cmp(&crate::entry::section_key(&b.section))
+            });
+            claims
+        })
+        .clone()
 }
 
 fn compute() -> Vec<Claim> {
