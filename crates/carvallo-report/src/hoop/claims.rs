@@ -525,7 +525,7 @@ fn stability_runs() -> StabilityRuns {
 }
 
 fn stability_condition(runs: &StabilityRuns) -> Claim {
-    let agree = runs.small.iter().filter(|p| (p.k > 0.0) == !p.diverged).count();
+    let agree = runs.small.iter().filter(|p| (p.k > 0.0) != p.diverged).count();
     let stable = runs.small.iter().filter(|p| p.k > 0.0).count();
     let bound = runs.small.iter().filter(|p| !p.diverged).map(|p| p.max_dev).fold(0.0, f64::max);
     Claim::new(

@@ -146,35 +146,35 @@ pub(crate) fn states_at_p_zeros(
 pub(crate) fn odd_fit(samples: &[(f64, f64)], m: usize) -> Vec<f64> {
     let scale = samples.iter().map(|s| s.0).fold(0.0, f64::max);
     let rows = samples.len();
-    let mut a: Vec<Vec<f64>> = samples
-        .iter()
-        .map(|(t, _)| (0..m).map(|j| (t / scale).powi(2 * j as i32 + 1)).collect())
+    // Columns (t/T)^(2j+1), reduced in place by Householder reflections.
+    let mut cols: Vec<Vec<f64>> = (0..m)
+        .map(|j| samples.iter().map(|(t, _)| (t / scale).powi(2 * j as i32 + 1)).collect())
         .collect();
     let mut b: Vec<f64> = samples.iter().map(|s| s.1).collect();
+    let reflect = |v: &[f64], vv: f64, x: &mut [f64]| {
+        let dot: f64 = v.iter().zip(x.iter()).map(|(a, b)| a * b).sum();
+        for (xi, vi) in x.iter_mut().zip(v) {
+            *xi -= 2.0 * dot / vv * vi;
+        }
+    };
     for j in 0..m {
-        let norm = (j..rows).map(|i| a[i][j] * a[i][j]).sum::<f64>().sqrt();
-        let alpha = if a[j][j] > 0.0 { -norm } else { norm };
-        let mut v: Vec<f64> = (j..rows).map(|i| a[i][j]).collect();
+        let norm = cols[j][j..].iter().map(|x| x * x).sum::<f64>().sqrt();
+        let alpha = if cols[j][j] > 0.0 { -norm } else { norm };
+        let mut v: Vec<f64> = cols[j][j..].to_vec();
         v[0] -= alpha;
         let vv: f64 = v.iter().map(|x| x * x).sum();
         if vv == 0.0 {
             continue;
         }
-        for col in j..m {
-            let dot: f64 = (j..rows).map(|i| v[i - j] * a[i][col]).sum();
-            for i in j..rows {
-                a[i][col] -= 2.0 * dot / vv * v[i - j];
-            }
+        for col in cols.iter_mut().skip(j) {
+            reflect(&v, vv, &mut col[j..rows]);
         }
-        let dot: f64 = (j..rows).map(|i| v[i - j] * b[i]).sum();
-        for i in j..rows {
-            b[i] -= 2.0 * dot / vv * v[i - j];
-        }
+        reflect(&v, vv, &mut b[j..rows]);
     }
     let mut c = vec![0.0; m];
     for j in (0..m).rev() {
-        let tail: f64 = (j + 1..m).map(|k| a[j][k] * c[k]).sum();
-        c[j] = (b[j] - tail) / a[j][j];
+        let tail: f64 = (j + 1..m).map(|k| cols[k][j] * c[k]).sum();
+        c[j] = (b[j] - tail) / cols[j][j];
     }
     c.iter().enumerate().map(|(j, cj)| cj / scale.powi(2 * j as i32 + 1)).collect()
 }

@@ -154,7 +154,7 @@ fn upright_threshold() -> Claim {
     for s in [0.4, 0.45, 0.48, 0.52, 0.55, 0.6] {
         let run = perturb(&hoop, (0.0, s, 0.0), 1e-10, 0.005, 120.0);
         let predicted = s * s > 0.25;
-        agree += usize::from(predicted == !run.diverged);
+        agree += usize::from(predicted != run.diverged);
         rows.push(run.rate);
     }
     Claim::new(
