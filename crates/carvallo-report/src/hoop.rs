@@ -13,6 +13,9 @@
 //!
 //! The verdicts follow the one policy of [`crate::policy`].
 
+mod claims;
+pub(crate) mod sim;
+
 use std::collections::BTreeMap;
 
 use carvallo::hoop_discussion::bisect;
@@ -572,10 +575,11 @@ pub fn entries() -> Vec<Entry> {
     hoop_entries()
 }
 
-/// The memoir's claims checked in this report ([`crate::claims`]).
+/// The memoir's claims checked in this report ([`crate::claims`]): n° 1–12 and the hoop's share
+/// of Chapter III (n° 71–78).
 pub fn claims() -> Vec<crate::claims::Claim> {
-    Vec::new()
+    claims::claims()
 }
 
 /// The memoir's assertions in this report's sections, n° by n°, with how each is covered.
-pub const INVENTORY: &[crate::claims::Assertion] = &[];
+pub const INVENTORY: &[crate::claims::Assertion] = claims::INVENTORY;

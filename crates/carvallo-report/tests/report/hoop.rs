@@ -92,3 +92,38 @@ fn text_report_snapshot() {
         insta::assert_snapshot!("hoop_report_text", text);
     });
 }
+
+#[test]
+fn claims_snapshot() {
+    let text = carvallo_report::normalise_numbers(&carvallo_report::claims::render_claims_text(
+        &carvallo_report::hoop::claims(),
+    ));
+    insta::with_settings!({
+        description => "carvallo report: the hoop's claims n° 1-12 and 71-78, numbers to 4 significant digits",
+        omit_expression => true,
+    }, {
+        insta::assert_snapshot!("hoop_claims_text", text);
+    });
+}
+
+/// The key verdicts of the hoop's claims, asserted directly (the snapshot fixes the rest).
+#[test]
+fn claims_verdicts() {
+    let claims = carvallo_report::hoop::claims();
+    let get = |id: &str| {
+        claims.iter().find(|c| c.id == id).unwrap_or_else(|| panic!("no claim {id}"))
+    };
+    for c in &claims {
+        assert_eq!(c.verdict, Verdict::Agrees, "{}: {}", c.id, c.evidence_text());
+    }
+    // The fall laws are first-order: their error falls with the release.
+    for id in ["hoop-fall-law-pendular", "hoop-fall-law-exponential", "hoop-fall-law-uniform"] {
+        let e = &get(id).evidence;
+        assert!(e["rel_err_delta_1e-3"] < 0.02 && e["rel_err_delta_1e-3"] < e["rel_err_delta_2e-3"]);
+    }
+    let s = &get("hoop-stability-condition").evidence;
+    assert_eq!(s["outcomes_agreeing"], s["cases"]);
+    assert!(s["stable_by_S"] < s["cases"], "the sample must hold unstable states too");
+    assert!(get("hoop-characteristic-roots").evidence["max_rel_diff_rate_vs_sqrt_abs_K"] < 1e-3);
+    assert_eq!(get("hoop-lagrange-interchange").evidence["nu_unmodified_holds"], 0.0);
+}

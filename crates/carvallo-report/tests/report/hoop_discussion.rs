@@ -54,3 +54,45 @@ fn text_report_snapshot() {
         insta::assert_snapshot!("hoop_discussion_report_text", text);
     });
 }
+
+#[test]
+fn claims_snapshot() {
+    let text = carvallo_report::normalise_numbers(&carvallo_report::claims::render_claims_text(
+        &carvallo_report::hoop_discussion::claims(),
+    ));
+    insta::with_settings!({
+        description => "carvallo report: the hoop discussion's claims n° 13-19, numbers to 4 significant digits",
+        omit_expression => true,
+    }, {
+        insta::assert_snapshot!("hoop_discussion_claims_text", text);
+    });
+}
+
+/// The key verdicts of the discussion's claims, asserted directly.
+#[test]
+fn claims_verdicts() {
+    let claims = carvallo_report::hoop_discussion::claims();
+    let get = |id: &str| {
+        claims.iter().find(|c| c.id == id).unwrap_or_else(|| panic!("no claim {id}"))
+    };
+    let findings = [
+        ("hoop-graeffe-table-cells", Verdict::MemoirError),
+        ("hoop-graeffe-separated", Verdict::MemoirError),
+        ("hoop-n1-skid-region", Verdict::Ocr),
+    ];
+    for c in &claims {
+        let expected = findings.iter().find(|(id, _)| *id == c.id).map_or(Verdict::Agrees, |f| f.1);
+        assert_eq!(c.verdict, expected, "{}: {}", c.id, c.evidence_text());
+    }
+    let w = &get("hoop-which-root-stable").evidence;
+    assert_eq!(w["sign_disagreements"], 0.0);
+    assert!(w["inside_S"] > 0.0 && w["simulated_roots"] > 0.0);
+    // Half a thousandth: true of the equation's residual, not of the root u.
+    let h = &get("hoop-root-squaring-half-thousandth").evidence;
+    assert!(h["exact_residual_over_14u"] < 5e-4 && h["rel_error_t"] < 5e-4 && h["rel_error_u"] > 1e-3);
+    // The Horner tableau is exact; the root-squaring table has two unfaithful cells (784^2).
+    assert_eq!(get("hoop-horner-tableau-cells").evidence["cells_differing"], 0.0);
+    let g = &get("hoop-graeffe-table-cells").evidence;
+    assert_eq!(g["cells"] - g["faithful_to_his_arithmetic"], 2.0);
+    assert!(get("hoop-no-skid-normal-play").evidence["max_abs_D_n2"] < 0.5);
+}

@@ -15,6 +15,8 @@
 //! dimensionless forms of n° 12 ($g/R = 1$).
 
 pub mod discussion;
+/// The fall laws of n° 9 (uniform, exponential, pendular) from a state near a steady state.
+pub mod fall;
 
 use crate::error::ParameterError;
 use crate::numerics::ode::rk4_step;

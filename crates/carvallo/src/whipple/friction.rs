@@ -12,7 +12,7 @@
 //! $a_1 = m(vC_1 + D, K)$, $a_0 = \det K$ with $K = gK_0 + v^2K_2$ and
 //! $m(A, B) = a_{11}b_{22} + b_{11}a_{22} - a_{12}b_{21} - b_{12}a_{21}$), and [`damped_window`]
 //! the stable speed range from the eigenvalues on a speed grid, every change of stability
-//! bisected to adjacent floats (as [`crate::sweep::eigen_window`] does without friction). For
+//! bisected to adjacent floats (as [`crate::whipple::stability::eigen_window`] does without friction). For
 //! the bearing friction the constant term $a_0$ does not contain $c$: it cannot move a
 //! boundary where a real eigenvalue crosses zero (the capsize speed), only those where a
 //! complex pair crosses the imaginary axis (the weave speed).
@@ -98,7 +98,7 @@ fn damping_stiffness(m: &Matrices, g: f64, v: f64, f: ViscousFriction) -> (Mat2,
 }
 
 /// The state matrix of $(\varphi, \delta, \dot\varphi, \dot\delta)$ at speed `v` with the
-/// friction `f`; [`ViscousFriction::NONE`] gives [`crate::sweep::state_matrix`].
+/// friction `f`; [`ViscousFriction::NONE`] gives [`crate::whipple::state_matrix`].
 pub fn damped_state_matrix(m: &Matrices, g: f64, v: f64, f: ViscousFriction) -> Matrix4<f64> {
     let (d, k) = damping_stiffness(m, g, v, f);
     let mm = m.m;
@@ -152,7 +152,7 @@ fn critical(m: &Matrices, g: f64, v: f64, f: ViscousFriction) -> Option<(f64, bo
 /// change of stability bisected to adjacent floats. The weave speed is the lowest boundary
 /// where the bicycle becomes stable as a complex pair's real part turns negative, the capsize
 /// speed the lowest boundary where a real eigenvalue crosses zero; a stable interval still open
-/// at `grid.vmax` ends there. Like [`crate::sweep::eigen_window`], a stable range narrower than a
+/// at `grid.vmax` ends there. Like [`crate::whipple::stability::eigen_window`], a stable range narrower than a
 /// grid step can be missed. `None` if the eigenvalues fail to converge at a grid point.
 pub fn damped_window(
     m: &Matrices,
