@@ -143,7 +143,8 @@ fn weight_work() -> Claim {
     for base in points(false).iter().take(16) {
         let rest = with(base, &[("p", 0.0), ("n", 0.0), ("s", 0.0)]);
         let work = -diff(&rest, "theta", 1e-5, |q| out(q, "energy"));
-        let printed = (base["mu"] * base["z"] + base["mu1"] * base["R"]) * base["g"] * base["theta"].sin();
+        let printed =
+            (base["mu"] * base["z"] + base["mu1"] * base["R"]) * base["g"] * base["theta"].sin();
         worst = mx(worst, rel_diff(work, printed));
     }
     Claim::new(
@@ -221,8 +222,18 @@ fn steady_needs_no_motor() -> Claim {
     }
     for base in points(false).iter().take(4) {
         // L = 0: with L > 0 the upright running is unstable (n° 78) and the run would fall.
-        let rider = Rider { mass: base["mu"], height: base["z"], a: base["A"], b: base["B"], c: base["C"], l: 0.0 };
-        let Ok(u) = Unicycle::new(base["R"], base["g"], rider, Wheel::hoop(base["mu1"], base["R"])) else { continue };
+        let rider = Rider {
+            mass: base["mu"],
+            height: base["z"],
+            a: base["A"],
+            b: base["B"],
+            c: base["C"],
+            l: 0.0,
+        };
+        let Ok(u) = Unicycle::new(base["R"], base["g"], rider, Wheel::hoop(base["mu1"], base["R"]))
+        else {
+            continue;
+        };
         let Some(threshold) = u.straight_running_threshold() else { continue };
         let x0 = [0.02, 0.0, 0.0, 3.0 * threshold];
         let x1 = u.simulate(x0, 1e-3, 2000);
@@ -258,7 +269,9 @@ fn slope_moment() -> (Claim, Claim) {
     let (mut sin_rel, mut tan_rel, mut tan_rel_10) = (0.0f64, 0.0f64, 0.0);
     let mut sign_ok = true;
     let mut count = 0;
-    for deg in [-20.0, -10.0, -5.0, -2.0, -1.0, 1.0, 2.0, 5.0, 5.710_593_137_499_643, 10.0, 15.0, 20.0] {
+    for deg in
+        [-20.0, -10.0, -5.0, -2.0, -1.0, 1.0, 2.0, 5.0, 5.710_593_137_499_643, 10.0, 15.0, 20.0]
+    {
         let i = f64::to_radians(deg);
         let h = 1e-6;
         let up = slope_height(i, r, z, mu, mu1, h);
@@ -444,13 +457,16 @@ fn equilibrium_hoop_form() -> Claim {
     let mut worst = 0.0f64;
     let mut rng = crate::sample::Rng(super::SEED ^ 29);
     for base in points(false).iter().take(16) {
-        let e = |th: f64, s: f64, n: f64| out(&with(base, &[("theta", th), ("s", s), ("n", n)]), "equilibrium");
+        let e = |th: f64, s: f64, n: f64| {
+            out(&with(base, &[("theta", th), ("s", s), ("n", n)]), "equilibrium")
+        };
         let th0: f64 = 0.5;
         let c = e(th0, 0.0, 0.0) / th0.sin();
         let a = (e(th0, 0.0, 1.0) - e(th0, 0.0, 0.0)) / (th0.sin() * th0.cos());
         let b = (e(th0, 1.0, 1.0) - e(th0, 0.0, 1.0)) / th0.cos();
         for _ in 0..8 {
-            let (th, s, n) = (rng.uniform(-1.2, 1.2), rng.uniform(-10.0, 10.0), rng.uniform(-10.0, 10.0));
+            let (th, s, n) =
+                (rng.uniform(-1.2, 1.2), rng.uniform(-10.0, 10.0), rng.uniform(-10.0, 10.0));
             let form = a * n * n * th.sin() * th.cos() + b * s * n * th.cos() + c * th.sin();
             worst = mx(worst, rel_diff(e(th, s, n), form));
         }
@@ -488,12 +504,25 @@ fn abrupt_turn() -> (Claim, Claim) {
     // At theta = 0 the neglected terms (z p^2 sin, z p' sin) vanish: the memoir's relative
     // increase is first-order exact there.
     let (r, g, zc) = (0.5, 9.81, 0.98);
-    let (mut rel_pp, mut ratio_p2, mut first_min, mut second) = (0.0f64, f64::NAN, f64::INFINITY, 0.0);
+    let (mut rel_pp, mut ratio_p2, mut first_min, mut second) =
+        (0.0f64, f64::NAN, f64::INFINITY, 0.0);
     for d_target in [0.3, 0.4, 0.5] {
         let s = 2.0;
         let n = -d_target * g / (r * s);
         let d = |p: f64, dp: f64| {
-            out(&BTreeMap::from([("R", r), ("g", g), ("z", zc), ("theta", 0.0), ("p", p), ("dp", dp), ("n", n), ("s", s)]), "skid_full")
+            out(
+                &BTreeMap::from([
+                    ("R", r),
+                    ("g", g),
+                    ("z", zc),
+                    ("theta", 0.0),
+                    ("p", p),
+                    ("dp", dp),
+                    ("n", n),
+                    ("s", s),
+                ]),
+                "skid_full",
+            )
         };
         let d0 = d(0.0, 0.0);
         let eps = 1e-4;
@@ -598,7 +627,14 @@ fn separation_curve() -> Claim {
 }
 
 fn n_touches_e() -> Claim {
-    let theta_i = bisect(|th| { let (n0, s0) = minimum_on_e(th); s0 + n0 }, 1.0, 20.0);
+    let theta_i = bisect(
+        |th| {
+            let (n0, s0) = minimum_on_e(th);
+            s0 + n0
+        },
+        1.0,
+        20.0,
+    );
     let (mut min_gap_away, mut gap_at_i) = (f64::INFINITY, f64::NAN);
     for th in grid(0.5, 23.0, 91) {
         let gap = curve_n_s(th).unwrap_or(f64::NAN) - minimum_on_e(th).1;
@@ -627,7 +663,14 @@ fn walks(n: f64, s: f64) -> bool {
 }
 
 fn regions() -> Claim {
-    let theta_i = bisect(|th| { let (n0, s0) = minimum_on_e(th); s0 + n0 }, 1.0, 20.0);
+    let theta_i = bisect(
+        |th| {
+            let (n0, s0) = minimum_on_e(th);
+            s0 + n0
+        },
+        1.0,
+        20.0,
+    );
     let (mut tested, mut wrong) = (0usize, 0usize);
     let mut none_below = true;
     for th in grid(0.5, 23.0, 46) {
@@ -643,7 +686,10 @@ fn regions() -> Claim {
                 none_below &= r.is_none();
                 continue;
             }
-            let Some([n1, n2]) = r else { wrong += 1; continue };
+            let Some([n1, n2]) = r else {
+                wrong += 1;
+                continue;
+            };
             tested += 1;
             let expect = if s > sn {
                 (false, true) // between Oz and (N): n1 pivots, n2 walks
@@ -875,7 +921,9 @@ fn straight_running_steady() -> Claim {
     let mut worst = 0.0f64;
     let mut zero = 0.0f64;
     for base in points(false).iter().take(16) {
-        let e = |th: f64, s: f64| out(&with(base, &[("theta", th), ("s", s), ("n", 0.0)]), "equilibrium");
+        let e = |th: f64, s: f64| {
+            out(&with(base, &[("theta", th), ("s", s), ("n", 0.0)]), "equilibrium")
+        };
         let th = base["theta"];
         let w = (base["mu"] * base["z"] + base["mu1"] * base["R"]) * base["g"] * th.sin();
         for s in [0.0, 1.0, 10.0] {
@@ -899,7 +947,10 @@ fn straight_running_steady() -> Claim {
 pub(super) fn light_rider_limit() -> (f64, f64, f64) {
     let base = hoop_wheel(&points(false)[0], 5.0);
     let none = stability_threshold(&no_rider(&base), "stability").powi(2);
-    let tiny = with(&base, &[("mu", 1e-6), ("A", 1e-6), ("B", 1e-6), ("C", 1e-7), ("L", 0.0), ("z", 1.25)]);
+    let tiny = with(
+        &base,
+        &[("mu", 1e-6), ("A", 1e-6), ("B", 1e-6), ("C", 1e-7), ("L", 0.0), ("z", 1.25)],
+    );
     let small = stability_threshold(&tiny, "stability").powi(2);
     let hoop = Hoop::new(base["R"], 5.0, base["g"]).ok();
     let h = hoop.map_or(f64::NAN, |h| {
@@ -928,10 +979,15 @@ fn light_rider_hoop() -> Claim {
 
 fn light_wheel() -> Claim {
     let masses = [5.0, 0.5, 0.05, 0.005];
-    let s2: Vec<f64> = masses.iter().map(|&m| threshold_units(&example(0.5, m, 1.25, 0.77, 0.0)).powi(2)).collect();
+    let s2: Vec<f64> = masses
+        .iter()
+        .map(|&m| threshold_units(&example(0.5, m, 1.25, 0.77, 0.0)).powi(2))
+        .collect();
     let scaled: Vec<f64> = s2.iter().zip(masses).map(|(s, m)| s * m).collect();
     let none = example(0.5, 0.0, 1.25, 0.77, 0.0).and_then(|u| u.straight_running_threshold());
-    let holds = none.is_none() && s2.windows(2).all(|w| w[1] > 5.0 * w[0]) && rel_diff(scaled[3], scaled[2]) < 2e-2;
+    let holds = none.is_none()
+        && s2.windows(2).all(|w| w[1] > 5.0 * w[0])
+        && rel_diff(scaled[3], scaled[2]) < 2e-2;
     Claim::new(
         "unicycle-light-wheel-unstable",
         "36",
@@ -963,7 +1019,10 @@ fn stability_decreases() -> Claim {
 fn stability_from_spin() -> Claim {
     let mut rider_term = 0.0f64;
     for base in points(false).iter().take(16) {
-        let p = with(base, &[("theta", 0.0), ("n", 0.0), ("p", 0.0), ("dp", 0.0), ("dn", 0.0), ("ds", 0.0)]);
+        let p = with(
+            base,
+            &[("theta", 0.0), ("n", 0.0), ("p", 0.0), ("dp", 0.0), ("dn", 0.0), ("ds", 0.0)],
+        );
         let scale = p["C"] * p["g"] / p["R"];
         rider_term = mx(rider_term, diff(&p, "p", 1e-3, |q| out(q, "rider_n")).abs() / scale);
     }
@@ -986,8 +1045,18 @@ fn stability_from_spin() -> Claim {
 fn fall_turns_toward_lean() -> Claim {
     let (mut turn_ok, mut right_ok, mut cases) = (true, true, 0);
     for base in points(false).iter().take(16) {
-        let rider = Rider { mass: base["mu"], height: base["z"], a: base["A"], b: base["B"], c: base["C"], l: 0.0 };
-        let Ok(u) = Unicycle::new(base["R"], base["g"], rider, Wheel::hoop(base["mu1"], base["R"])) else { continue };
+        let rider = Rider {
+            mass: base["mu"],
+            height: base["z"],
+            a: base["A"],
+            b: base["B"],
+            c: base["C"],
+            l: 0.0,
+        };
+        let Ok(u) = Unicycle::new(base["R"], base["g"], rider, Wheel::hoop(base["mu1"], base["R"]))
+        else {
+            continue;
+        };
         let s = 2.0 * u.rate_unit();
         for p in [0.05, -0.05] {
             // Upright, falling toward the side of p.
@@ -1015,7 +1084,8 @@ fn fall_turns_toward_lean() -> Claim {
 
 fn straight_oscillates() -> Claim {
     let u = example(0.5, 5.0, 1.25, 0.77, 0.0);
-    let (mut fast_max, mut fast_changes, mut slow_max, mut drift) = (f64::NAN, 0usize, f64::NAN, f64::NAN);
+    let (mut fast_max, mut fast_changes, mut slow_max, mut drift) =
+        (f64::NAN, 0usize, f64::NAN, f64::NAN);
     if let Some(u) = u {
         if let Some(th) = u.straight_running_threshold() {
             let run = |s: f64, seconds: f64| {
@@ -1148,7 +1218,14 @@ fn e_larger_than_c() -> Claim {
         let (_, b, c) = cylinder(mu, r, len, h);
         ratios.push((b - c - mu * h * h) / c);
     }
-    let zero_len = bisect(|len| { let (_, b, c) = cylinder(mu, r, len, h); b - c - mu * h * h }, 0.05, 1.0);
+    let zero_len = bisect(
+        |len| {
+            let (_, b, c) = cylinder(mu, r, len, h);
+            b - c - mu * h * h
+        },
+        0.05,
+        1.0,
+    );
     let holds = ratios.iter().all(|x| *x > 1.0) && zero_len < 2.0 * r;
     Claim::new(
         "unicycle-e-larger-than-c",
@@ -1174,9 +1251,23 @@ fn threshold_independent() -> Claim {
     }
     // L through the product of the roots of n° 78 (s held constant).
     let p0: Point = BTreeMap::from([
-        ("R", 0.5), ("g", 9.81), ("mu", 60.0), ("z", 1.25), ("A", 100.0), ("B", 100.0), ("C", 0.77),
-        ("mu1", 5.0), ("A1", 1.875), ("B1", 2.5), ("C1", 0.625), ("theta", 0.0), ("n", 0.0),
-        ("p", 0.0), ("dp", 0.0), ("dn", 0.0), ("ds", 0.0),
+        ("R", 0.5),
+        ("g", 9.81),
+        ("mu", 60.0),
+        ("z", 1.25),
+        ("A", 100.0),
+        ("B", 100.0),
+        ("C", 0.77),
+        ("mu1", 5.0),
+        ("A1", 1.875),
+        ("B1", 2.5),
+        ("C1", 0.625),
+        ("theta", 0.0),
+        ("n", 0.0),
+        ("p", 0.0),
+        ("dp", 0.0),
+        ("dn", 0.0),
+        ("ds", 0.0),
     ]);
     let unit = (9.81f64 / 0.5).sqrt();
     for l in [-2.0, 0.0, 2.0] {
@@ -1335,7 +1426,9 @@ fn stable_principle() -> Claim {
         radii.push(r);
         stable.push(w2);
     }
-    let sim = |r: f64| make(r, 1.10).map_or(f64::NAN, |p| p.simulate([0.0, 0.05, 0.0, 0.0], 1e-3, 10_000).0);
+    let sim = |r: f64| {
+        make(r, 1.10).map_or(f64::NAN, |p| p.simulate([0.0, 0.05, 0.0, 0.0], 1e-3, 10_000).0)
+    };
     let (big, small) = (sim(1.2), sim(0.5));
     let sign_ok = radii.iter().zip(&stable).all(|(r, w2)| (*r > 1.10) == (*w2 > 0.0));
     let holds = sign_ok && big < 0.05 + 1e-9 && small > 1.0;
@@ -1372,10 +1465,23 @@ fn big_wheel_lean() -> Claim {
 fn product_is_36() -> Claim {
     let mut worst = 0.0f64;
     for base in points(false).iter().take(16) {
-        let rider = Rider { mass: base["mu"], height: base["z"], a: base["A"], b: base["B"], c: base["C"], l: 0.0 };
-        let Ok(u) = Unicycle::new(base["R"], base["g"], rider, Wheel::hoop(base["mu1"], base["R"])) else { continue };
+        let rider = Rider {
+            mass: base["mu"],
+            height: base["z"],
+            a: base["A"],
+            b: base["B"],
+            c: base["C"],
+            l: 0.0,
+        };
+        let Ok(u) = Unicycle::new(base["R"], base["g"], rider, Wheel::hoop(base["mu1"], base["R"]))
+        else {
+            continue;
+        };
         let Some(th) = u.straight_running_threshold() else { continue };
-        let p = with(&hoop_wheel(base, base["mu1"]), &[("theta", 0.0), ("n", 0.0), ("p", 0.0), ("dp", 0.0), ("dn", 0.0), ("ds", 0.0)]);
+        let p = with(
+            &hoop_wheel(base, base["mu1"]),
+            &[("theta", 0.0), ("n", 0.0), ("p", 0.0), ("dp", 0.0), ("dn", 0.0), ("ds", 0.0)],
+        );
         let root = bisect(|s| out(&with(&p, &[("s", s)]), "char78_c0"), 0.0, 10.0 * th);
         worst = mx(worst, rel_diff(root, th));
     }
@@ -1409,10 +1515,25 @@ fn leading_positive() -> Claim {
             }
         }
         let p: Point = BTreeMap::from([
-            ("R", 0.5), ("g", 9.81), ("mu", mu), ("z", mz / mu), ("A", syy + szz), ("B", szz + sxx),
-            ("C", sxx + syy), ("L", sxz), ("mu1", 5.0), ("A1", 1.875), ("B1", 2.5), ("C1", 0.625),
-            ("theta", rng.uniform(-1.2, 1.2)), ("n", rng.uniform(-3.0, 3.0)), ("s", rng.uniform(0.0, 10.0)),
-            ("p", 0.0), ("dp", 0.0), ("dn", 0.0), ("ds", 0.0),
+            ("R", 0.5),
+            ("g", 9.81),
+            ("mu", mu),
+            ("z", mz / mu),
+            ("A", syy + szz),
+            ("B", szz + sxx),
+            ("C", sxx + syy),
+            ("L", sxz),
+            ("mu1", 5.0),
+            ("A1", 1.875),
+            ("B1", 2.5),
+            ("C1", 0.625),
+            ("theta", rng.uniform(-1.2, 1.2)),
+            ("n", rng.uniform(-3.0, 3.0)),
+            ("s", rng.uniform(0.0, 10.0)),
+            ("p", 0.0),
+            ("dp", 0.0),
+            ("dn", 0.0),
+            ("ds", 0.0),
         ]);
         let c2 = out(&p, "char78_c2");
         smallest = smallest.min(c2 / ((p["A"] + 1.875) * (p["C"] + 0.625)));
@@ -1433,9 +1554,25 @@ fn leading_positive() -> Claim {
 /// The n° 36 example's generated n° 78 coefficients (c2, c1, c0) at the rolling rate `s`.
 fn char78(l: f64, s: f64) -> (f64, f64, f64) {
     let p: Point = BTreeMap::from([
-        ("R", 0.5), ("g", 9.81), ("mu", 60.0), ("z", 1.25), ("A", 100.0), ("B", 100.0), ("C", 0.77), ("L", l),
-        ("mu1", 5.0), ("A1", 1.875), ("B1", 2.5), ("C1", 0.625), ("theta", 0.0), ("n", 0.0), ("s", s),
-        ("p", 0.0), ("dp", 0.0), ("dn", 0.0), ("ds", 0.0),
+        ("R", 0.5),
+        ("g", 9.81),
+        ("mu", 60.0),
+        ("z", 1.25),
+        ("A", 100.0),
+        ("B", 100.0),
+        ("C", 0.77),
+        ("L", l),
+        ("mu1", 5.0),
+        ("A1", 1.875),
+        ("B1", 2.5),
+        ("C1", 0.625),
+        ("theta", 0.0),
+        ("n", 0.0),
+        ("s", s),
+        ("p", 0.0),
+        ("dp", 0.0),
+        ("dn", 0.0),
+        ("ds", 0.0),
     ]);
     let v = eval(&p);
     (v["char78_c2"], v["char78_c1"], v["char78_c0"])
@@ -1451,7 +1588,9 @@ fn growth_per_period(l: f64, s: f64) -> f64 {
 
 fn l_sign() -> Claim {
     let mut envelopes = BTreeMap::new();
-    let threshold = example(0.5, 5.0, 1.25, 0.77, 0.0).and_then(|u| u.straight_running_threshold()).unwrap_or(f64::NAN);
+    let threshold = example(0.5, 5.0, 1.25, 0.77, 0.0)
+        .and_then(|u| u.straight_running_threshold())
+        .unwrap_or(f64::NAN);
     let s = 2.0 * threshold;
     for l in [-0.2, 0.0, 0.2] {
         let Some(u) = example(0.5, 5.0, 1.25, 0.77, l) else { continue };
@@ -1459,7 +1598,16 @@ fn l_sign() -> Claim {
         let half = leans.len() / 2;
         let first = leans[..half].iter().fold(0.0f64, |a, &b| a.max(b.abs()));
         let second = leans[half..].iter().fold(0.0f64, |a, &b| a.max(b.abs()));
-        envelopes.insert(if l < 0.0 { "neg" } else if l > 0.0 { "pos" } else { "zero" }, second / first);
+        envelopes.insert(
+            if l < 0.0 {
+                "neg"
+            } else if l > 0.0 {
+                "pos"
+            } else {
+                "zero"
+            },
+            second / first,
+        );
     }
     let mut oscillating = true;
     for l in [-0.5, 0.05, 0.5] {
@@ -1468,7 +1616,11 @@ fn l_sign() -> Claim {
     }
     let (small, large) = (growth_per_period(0.05, s), growth_per_period(0.5, s));
     let get = |k: &str| envelopes.get(k).copied().unwrap_or(f64::NAN);
-    let holds = get("pos") > 1.01 && get("neg") < 0.99 && (get("zero") - 1.0).abs() < 0.02 && oscillating && small < 1.1;
+    let holds = get("pos") > 1.01
+        && get("neg") < 0.99
+        && (get("zero") - 1.0).abs() < 0.02
+        && oscillating
+        && small < 1.1;
     Claim::new(
         "unicycle-78-l-sign",
         "78",
@@ -1487,9 +1639,25 @@ fn big_wheel_remark() -> Claim {
         let th = u.and_then(|u| u.straight_running_threshold()).unwrap_or(f64::NAN);
         let m = m1 * r * r;
         let p: Point = BTreeMap::from([
-            ("R", r), ("g", 9.81), ("mu", 60.0), ("z", h), ("A", 100.0), ("B", 100.0), ("C", 0.77), ("L", 0.5),
-            ("mu1", m1), ("A1", 1.5 * m), ("B1", 2.0 * m), ("C1", 0.5 * m), ("theta", 0.0), ("n", 0.0),
-            ("s", 2.0 * th), ("p", 0.0), ("dp", 0.0), ("dn", 0.0), ("ds", 0.0),
+            ("R", r),
+            ("g", 9.81),
+            ("mu", 60.0),
+            ("z", h),
+            ("A", 100.0),
+            ("B", 100.0),
+            ("C", 0.77),
+            ("L", 0.5),
+            ("mu1", m1),
+            ("A1", 1.5 * m),
+            ("B1", 2.0 * m),
+            ("C1", 0.5 * m),
+            ("theta", 0.0),
+            ("n", 0.0),
+            ("s", 2.0 * th),
+            ("p", 0.0),
+            ("dp", 0.0),
+            ("dn", 0.0),
+            ("ds", 0.0),
         ]);
         let v = eval(&p);
         (-v["char78_c1"] / (2.0 * v["char78_c2"]), m1 * r - 60.0 * h)

@@ -173,10 +173,7 @@ impl Unicycle {
             all_scene::OUTPUTS.iter().position(|o| *o == name).map_or(f64::NAN, |i| out[i])
         };
         let weight = (r.mass * r.height + w.mass * self.radius) * self.g * theta.sin();
-        [
-            get("rider_p") + get("wheel_p") - weight,
-            get("rider_n") + get("wheel_n"),
-        ]
+        [get("rider_p") + get("wheel_p") - weight, get("rider_n") + get("wheel_n")]
     }
 
     /// n° 78: the right-hand side $(\theta', p', n')$ of the (p) and (n) equations when the
