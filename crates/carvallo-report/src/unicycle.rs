@@ -18,6 +18,8 @@ use carvallo::unicycle_discussion::{
     bisect, eval, first_member_41, minimum_on_e, n32, out, s_on_e, trinomial, Point, H_OVER_R,
 };
 
+mod claims;
+
 use crate::checks::Finding;
 use crate::entry::{Derived, Entry, Memoir, Verdict};
 use crate::policy::{self, formula_entry, number, number_as, rel_diff};
@@ -432,13 +434,14 @@ fn numbers() -> Vec<Entry> {
         bisect(|s| out(&p(s), "stability_simplified"), 0.0, 100.0) / (9.81f64 / r).sqrt()
     };
     e.push(number("36", "straight running threshold s (units sqrt(g/R)), C = 1.40", 1.06, 2, straight(1.40, 2.0 * mu1 * r * r), "root in s of the generated stability of the simplified model (n° 33) at theta = 0, n = 0 with B1 = 2 mu1 R^2 and Carvallo's C = 1.40: s^2 = C/(mu1 R^2)"));
+    let (_, light_rider, hoop) = claims::light_rider_limit();
     e.push(number(
         "36",
         "infinitely light rider, threshold s^2",
         0.5,
         2,
-        straight(mu1 * r * r / 2.0, 2.0 * mu1 * r * r).powi(2),
-        "C = C1 = mu1 R^2/2: the hoop's s^2 > 1/2",
+        light_rider,
+        &format!("the generated full model (hoop wheel, L = 0) with a rider of 1e-6 kg: s^2 = {light_rider:.4} in units g/R, the hoop's own threshold of n° 14 ({hoop:.4}, the generated (S) of n° 9); the memoir's 1/2 is its merged formula C/(mu1 R^2) with C = C1 ({merged:.4} here), whose limit drops the wheel's B1 = 2 mu1 R^2 in the s n coefficient of (p), and it is not the hoop's result (n° 14: s^2 > 1/4; n° 18: s >= 0.5): claim unicycle-light-rider-hoop-limit", merged = straight(mu1 * r * r / 2.0, 2.0 * mu1 * r * r).powi(2)),
     ));
     let full = carvallo::unicycle::Unicycle::new(
         r,
@@ -777,10 +780,12 @@ pub fn entries() -> Vec<Entry> {
     e
 }
 
-/// The memoir's claims checked in this report ([`crate::claims`]).
+/// The memoir's claims checked in this report ([`crate::claims`]), computed once per process
+/// (they simulate and scan the diagrams) and cloned.
 pub fn claims() -> Vec<crate::claims::Claim> {
-    Vec::new()
+    static CLAIMS: std::sync::OnceLock<Vec<crate::claims::Claim>> = std::sync::OnceLock::new();
+    CLAIMS.get_or_init(claims::claims).clone()
 }
 
 /// The memoir's assertions in this report's sections, n° by n°, with how each is covered.
-pub const INVENTORY: &[crate::claims::Assertion] = &[];
+pub const INVENTORY: &[crate::claims::Assertion] = claims::INVENTORY;

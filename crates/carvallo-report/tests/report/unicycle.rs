@@ -54,6 +54,7 @@ fn findings() -> BTreeMap<(&'static str, &'static str), Verdict> {
         (("41", "junction point n"), MemoirError),
         (("41", "junction point s"), MemoirError),
         (("36", "first member (S): s^2 over constant term"), Ocr),
+        (("36", "infinitely light rider, threshold s^2"), MemoirError),
         (("40", "left side A dp'/dn"), Ocr),
         (("41", "conclusion: speed limit sqrt(C/(mu1 R^2))"), Ocr),
         (("78", "characteristic determinant, second row"), Ocr),
@@ -84,4 +85,74 @@ fn text_report_snapshot() {
     }, {
         insta::assert_snapshot!("unicycle_report_text", text);
     });
+}
+
+#[test]
+fn claims_snapshot() {
+    let text = carvallo_report::normalise_numbers(&carvallo_report::claims::render_claims_text(
+        &carvallo_report::unicycle::claims(),
+    ));
+    insta::with_settings!({
+        description => "carvallo report: the unicycle's claims n° 20-42, 74, 78, numbers to 4 significant digits",
+        omit_expression => true,
+    }, {
+        insta::assert_snapshot!("unicycle_claims_text", text);
+    });
+}
+
+fn claim(id: &str) -> carvallo_report::Claim {
+    let all = carvallo_report::unicycle::claims();
+    all.into_iter().find(|c| c.id == id).unwrap_or_else(|| panic!("no claim {id}"))
+}
+
+fn evidence(c: &carvallo_report::Claim, key: &str) -> f64 {
+    *c.evidence.get(key).unwrap_or_else(|| panic!("{}: no evidence {key}", c.id))
+}
+
+/// The claims the issue names, decided here directly by their evidence.
+#[test]
+fn the_named_claims_are_decided_by_their_numbers() {
+    // n° 36 re-judged: the full model without rider and the hoop give s^2 > 1/4, not 1/2.
+    let c = claim("unicycle-light-rider-hoop-limit");
+    assert_eq!(c.verdict, Verdict::MemoirError);
+    assert!((evidence(&c, "hoop_s2") - 0.25).abs() < 1e-9);
+    assert!((evidence(&c, "full_no_rider_s2") - 0.25).abs() < 1e-9);
+    assert!((evidence(&c, "full_light_rider_s2") - 0.25).abs() < 1e-5);
+    assert!((evidence(&c, "memoir_formula_s2") - 0.5).abs() < 1e-12);
+    // n° 25: the slope moment is sin i, not tan i.
+    let c = claim("unicycle-slope-moment");
+    assert_eq!(c.verdict, Verdict::MemoirError);
+    assert!(evidence(&c, "max_rel_diff_sin") < 1e-8);
+    let tan10 = evidence(&c, "rel_diff_tan_at_10deg");
+    assert!((tan10 - (1.0 - 10f64.to_radians().cos())).abs() < 1e-6, "{tan10}");
+    assert_eq!(claim("unicycle-slope-sign").verdict, Verdict::Agrees);
+    // n° 26, 26 bis.
+    let c = claim("unicycle-pedal-paradox");
+    assert_eq!(c.verdict, Verdict::Agrees);
+    assert!(evidence(&c, "largest_work_per_F_R") < -0.04);
+    let c = claim("unicycle-string-neutral-angle");
+    assert_eq!(c.verdict, Verdict::Agrees);
+    assert!(evidence(&c, "max_abs_diff_sin") < 1e-6);
+    // n° 32, 37: the cycle turns toward its lean, statically and dynamically.
+    assert_eq!(claim("unicycle-turns-toward-lean").verdict, Verdict::Agrees);
+    assert_eq!(claim("unicycle-fall-turns-toward-lean").verdict, Verdict::Agrees);
+    // n° 32: the regions, and the practical region's « n2 seule ».
+    let c = claim("unicycle-walking-pivoting-regions");
+    assert_eq!(c.verdict, Verdict::Agrees);
+    assert_eq!(evidence(&c, "misclassified"), 0.0);
+    let c = claim("unicycle-practical-region");
+    assert_eq!(c.verdict, Verdict::MemoirError);
+    assert!(evidence(&c, "n2_unusable_max_s") < 1.04);
+    assert!(evidence(&c, "n1_usable") > 0.0);
+    // n° 39, 41: a light unicycle is stable only while turning; every lean between the roots.
+    let c = claim("unicycle-light-stable-only-turning");
+    assert_eq!(c.verdict, Verdict::Agrees);
+    assert!(evidence(&c, "smallest_stable_abs_n") > 0.62);
+    let c = claim("unicycle-stable-between-roots");
+    assert_eq!(c.verdict, Verdict::Agrees);
+    assert!(evidence(&c, "min_S_over_1_plus_n2") > 0.0);
+    // n° 42: the centre of gravity below the axle swings, above it falls.
+    let c = claim("unicycle-stable-principle");
+    assert_eq!(c.verdict, Verdict::Agrees);
+    assert!(evidence(&c, "omega2_R1.2") > 0.0 && evidence(&c, "omega2_R0.5") < 0.0);
 }

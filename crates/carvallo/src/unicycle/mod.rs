@@ -307,3 +307,6 @@ impl Unicycle {
         state
     }
 }
+
+/// The rider's pitch about the axle (n° 42) and the rolling rate held by the pedals (n° 78).
+pub mod variants;
