@@ -605,6 +605,8 @@ pub fn emit(scene: &Scene) -> TokenStream {
             /// The inputs the outputs depend on, in the order of the fields of [`Args`] after
             /// the parameters.
             pub const INPUTS: &[&str] = &[#(#inputs),*];
+            /// The names of the fields of [`Args`] in order: [`PARAMS`] then [`INPUTS`].
+            pub const ARGS: [&str; #n_args_lit] = [#(#arg_names),*];
             /// The outputs, in the order of the fields of [`Out`].
             pub const OUTPUTS: &[&str] = &[#(#outputs),*];
             /// The fixed parameters and the values folded into the code.
@@ -646,6 +648,13 @@ pub fn emit(scene: &Scene) -> TokenStream {
                 #[must_use]
                 pub const fn to_array(&self) -> [f64; #n_args_lit] {
                     [#(self.#arg_fields),*]
+                }
+
+                /// The arguments by name: each field is `value` of its name, called once per
+                /// field in the order of [`ARGS`].
+                #[must_use]
+                pub fn from_fn(mut value: impl ::core::ops::FnMut(&str) -> f64) -> Self {
+                    Args { #(#arg_fields: value(#arg_names)),* }
                 }
             }
 

@@ -22,6 +22,7 @@ pub const RESERVED: &[&str] = &[
     "MODEL",
     "PARAMS",
     "INPUTS",
+    "ARGS",
     "OUTPUTS",
     "FIXED",
     "OP_COUNT",
