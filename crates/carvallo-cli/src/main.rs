@@ -11,16 +11,14 @@ use std::process::ExitCode;
 
 mod args;
 mod bench;
+mod commands;
 mod figures;
-mod kinematics;
-mod nonlinear;
 mod perf;
+mod report_dir;
 mod report_html;
-mod report_out;
-mod rest;
 mod straight;
-mod turn;
-mod whipple;
+
+use commands::{kinematics, rest, simulate, turn, window};
 
 const HELP: &str = "\
 carvallo: E. Carvallo's memoir (1897) on the hoop, unicycle and bicycle, re-derived and checked
@@ -141,8 +139,8 @@ fn run(command: Command) -> anyhow::Result<()> {
     match command {
         Command::Help => emit(HELP)?,
         Command::ReportOut { dir, model } => {
-            let params = whipple::load_uncertain(&model).map_err(report_out::BadInput)?;
-            let files = report_out::write_report(std::path::Path::new(&dir), &params, &model)?;
+            let params = window::load_uncertain(&model).map_err(report_dir::BadInput)?;
+            let files = report_dir::write_report(std::path::Path::new(&dir), &params, &model)?;
             let list: String = files.iter().map(|f| format!("{dir}/{f}\n")).collect();
             emit(&list)?;
         }
@@ -185,9 +183,9 @@ impl Subcommand {
 
 /// The subcommands with a module of their own (`report` is parsed here).
 const SUBCOMMANDS: [&Subcommand; 6] = [
-    &whipple::SUBCOMMAND,
+    &window::SUBCOMMAND,
     &perf::SUBCOMMAND,
-    &nonlinear::SUBCOMMAND,
+    &simulate::SUBCOMMAND,
     &turn::SUBCOMMAND,
     &rest::SUBCOMMAND,
     &kinematics::SUBCOMMAND,
@@ -237,7 +235,7 @@ fn main() -> ExitCode {
     match run(command) {
         Ok(()) => ExitCode::SUCCESS,
         // A bad output directory or model file found before anything is written: exit 2.
-        Err(err) if err.downcast_ref::<report_out::BadInput>().is_some() => {
+        Err(err) if err.downcast_ref::<report_dir::BadInput>().is_some() => {
             eprintln!("error: {err}");
             ExitCode::from(2)
         }
