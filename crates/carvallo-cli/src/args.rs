@@ -1,6 +1,9 @@
-//! Argument helpers shared by the subcommands `turn`, `rest`, `kinematics`, `accel` and
-//! `simulate`: every option at most once, an unknown argument or a missing value named in the
-//! error, and numbers that must parse and be finite.
+//! Argument helpers shared by the subcommands: every option at most once, an unknown argument
+//! or a missing value named in the error, numbers that must parse and be finite, and the
+//! bicycle that `--model benchmark|FILE` names.
+
+use carvallo::parameter_text::UncertainParams;
+use carvallo::whipple::WhippleParams;
 
 /// The finite number `v` given for the quantity `name`.
 pub fn number(name: &str, v: &str) -> Result<f64, String> {
@@ -51,6 +54,40 @@ pub fn options<'a>(
     Ok(out)
 }
 
+/// The bicycle `benchmark` or the one in the parameter file `model` (either format of
+/// [`uncertain_model`]), for `window`, `eig`, `sweep` and `report --out`.
+pub fn model(model: &str) -> Result<WhippleParams, String> {
+    uncertain_model(model).map(|u| u.params)
+}
+
+/// The bicycle `benchmark` (no uncertainty) or the one in the parameter file `model`: the
+/// anchors TOML format or BicycleParameters' text format `name = value+/-sigma`
+/// ([`UncertainParams::from_any`]).
+pub fn uncertain_model(model: &str) -> Result<UncertainParams, String> {
+    if model == "benchmark" {
+        return Ok(UncertainParams::exact(WhippleParams::benchmark()));
+    }
+    let text = read_model_file(model)?;
+    UncertainParams::from_any(&text).map_err(|e| format!("invalid model file `{model}`: {e}"))
+}
+
+/// The bicycle `benchmark` or the one in the TOML parameter file `model` (the anchors format
+/// only), for `accel` and `simulate`.
+pub fn toml_model(model: &str) -> Result<WhippleParams, String> {
+    if model == "benchmark" {
+        return Ok(WhippleParams::benchmark());
+    }
+    let text = read_model_file(model)?;
+    WhippleParams::from_toml_str(&text).map_err(|e| format!("invalid model file `{model}`: {e}"))
+}
+
+/// The text of the parameter file `model`.
+fn read_model_file(model: &str) -> Result<String, String> {
+    std::fs::read_to_string(model).map_err(|e| {
+        format!("cannot read model file `{model}`: {}", e.to_string().to_lowercase())
+    })
+}
+
 /// `list` as owned words, as the command line gives them (for the subcommands' tests).
 #[cfg(test)]
 pub fn words(list: &[&str]) -> Vec<String> {
@@ -75,5 +112,13 @@ mod tests {
         assert_eq!(number("theta", "2.5"), Ok(2.5));
         assert_eq!(number("theta", "five"), Err("invalid theta `five`".into()));
         assert_eq!(number("theta", "inf"), Err("invalid theta `inf`: must be finite".into()));
+    }
+
+    #[test]
+    fn models_are_named_in_their_errors() {
+        assert_eq!(model("benchmark"), Ok(WhippleParams::benchmark()));
+        for e in [model("/nonexistent/bike.toml").unwrap_err(), toml_model("/nonexistent/bike.toml").unwrap_err()] {
+            assert!(e.starts_with("cannot read model file `/nonexistent/bike.toml`"), "{e}");
+        }
     }
 }

@@ -190,7 +190,7 @@ fn run(cmd: Command) -> Result<String, String> {
             }
         }
         Command::Sweep { model, designs, method, output } => {
-            let base = crate::whipple::load(&model)?;
+            let base = crate::args::model(&model)?;
             let count = match &designs {
                 Designs::Grid(axes) => axes.iter().map(|a| a.count).product::<usize>(),
                 Designs::Random { count, .. } => *count,

@@ -27,34 +27,7 @@ use carvallo_ir::{Op, Program, Value};
 use proc_macro2::{Ident, Literal, Span, TokenStream};
 use quote::{format_ident, quote};
 
-use crate::validate::Scene;
-
-/// Default largest number of operations in one generated function.
-pub const DEFAULT_MAX_FN_OPS: usize = 1500;
-
-/// The values `lanes: N` accepts.
-pub const LANE_COUNTS: [usize; 4] = [2, 4, 8, 16];
-
-/// Items of a scene module that live in the value namespace: locals must not be named so.
-const RESERVED: &[&str] = &[
-    "MODEL",
-    "PARAMS",
-    "INPUTS",
-    "OUTPUTS",
-    "FIXED",
-    "OP_COUNT",
-    "OP_COUNT_BY_OP",
-    "SOURCE_OP_COUNT",
-    "eval",
-    "eval_array",
-    "eval_lanes",
-    "LANES",
-    // Locals of the generated functions.
-    "live",
-    "args",
-    "out",
-    "j",
-];
+use crate::scene::{rust_ident, Scene, RESERVED};
 
 /// Lints that flat generated arithmetic trips for no fault of the user.
 fn allow_lints() -> TokenStream {
@@ -71,22 +44,6 @@ fn allow_lints() -> TokenStream {
             clippy::let_and_return
         )]
     }
-}
-
-/// `name` as a Rust identifier: itself, or a raw identifier (`r#type`) for a keyword that
-/// allows one; `None` for names that cannot be identifiers at all (`self`, `_`, `1x`, ...).
-pub fn rust_ident(name: &str, span: Span) -> Option<Ident> {
-    if let Ok(mut ident) = syn::parse_str::<Ident>(name) {
-        ident.set_span(span);
-        return Some(ident);
-    }
-    let mut chars = name.chars();
-    let starts_well = matches!(chars.next(), Some(c) if c.is_ascii_alphabetic() || c == '_');
-    let word = starts_well && chars.all(|c| c.is_ascii_alphanumeric() || c == '_');
-    if !word || ["self", "Self", "super", "crate", "_"].contains(&name) {
-        return None;
-    }
-    Some(Ident::new_raw(name, span))
 }
 
 /// The identifier of a struct field for the IR name `name` (validation has checked that there
@@ -238,6 +195,88 @@ fn referenced(p: &Program, insts: &[usize], extra: impl Iterator<Item = Value>) 
         .collect()
 }
 
+/// `let` bindings of the instructions `insts`, in order.
+fn lets(p: &Program, l: &Locals, insts: &[usize]) -> TokenStream {
+    let lets = insts.iter().map(|&i| {
+        let (name, rhs) = (&l.insts[i], op_expr(&p.insts[i].op, l));
+        quote!(let #name = #rhs;)
+    });
+    quote!(#(#lets)*)
+}
+
+/// `let` bindings of the constants among the instructions `used`.
+fn const_lets(p: &Program, l: &Locals, used: &BTreeSet<usize>) -> TokenStream {
+    lets(p, l, &used.iter().copied().filter(|&i| is_const(p, i)).collect::<Vec<_>>())
+}
+
+/// The whole program as one function: the constants it uses, then every operation.
+fn unsplit(p: &Program, l: &Locals) -> TokenStream {
+    let work: Vec<usize> = (0..p.insts.len()).filter(|&i| !is_const(p, i)).collect();
+    let consts = const_lets(p, l, &referenced(p, &work, p.outputs.iter().map(|o| o.value)));
+    let ops = lets(p, l, &work);
+    quote!(#consts #ops)
+}
+
+/// The values that cross the chunks of a split program, shared by the scalar evaluator and
+/// `eval_lanes`: what each chunk loads (arguments, and results of other chunks) and what is
+/// stored once in the struct of crossing values (everything some chunk loads, and the non-constant
+/// results the outputs read).
+struct Split {
+    /// Per chunk, the values it reads that it does not compute itself (constants excluded).
+    live_in: Vec<BTreeSet<Value>>,
+    /// The values kept in the struct, in value order (its fields).
+    stored: BTreeSet<Value>,
+}
+
+impl Split {
+    fn new(p: &Program, chunks: &[Vec<usize>]) -> Split {
+        let mut chunk_of = vec![usize::MAX; p.insts.len()];
+        for (k, c) in chunks.iter().enumerate() {
+            for &i in c {
+                chunk_of[i] = k;
+            }
+        }
+        let crosses = |v: &Value, k: usize| match *v {
+            Value::Inst(j) => !is_const(p, j as usize) && chunk_of[j as usize] != k,
+            _ => true,
+        };
+        let live_in: Vec<BTreeSet<Value>> = chunks
+            .iter()
+            .enumerate()
+            .map(|(k, c)| {
+                c.iter().flat_map(|&i| p.insts[i].op.operands()).filter(|v| crosses(v, k)).collect()
+            })
+            .collect();
+        let mut stored: BTreeSet<Value> = live_in.iter().flatten().copied().collect();
+        stored.extend(
+            p.outputs
+                .iter()
+                .map(|o| o.value)
+                .filter(|v| matches!(*v, Value::Inst(j) if !is_const(p, j as usize))),
+        );
+        Split { live_in, stored }
+    }
+
+    /// The locals of the struct's fields.
+    fn fields<'a>(&self, l: &'a Locals) -> Vec<&'a Ident> {
+        self.stored.iter().map(|&v| l.get(v)).collect()
+    }
+
+    /// The locals chunk `k` loads from the struct.
+    fn loads<'a>(&self, k: usize, l: &'a Locals) -> Vec<&'a Ident> {
+        self.live_in[k].iter().map(|&v| l.get(v)).collect()
+    }
+
+    /// The locals of the instructions of `chunk` that it stores into the struct.
+    fn stores<'a>(&self, chunk: &[usize], l: &'a Locals) -> Vec<&'a Ident> {
+        chunk
+            .iter()
+            .filter(|&&i| self.stored.contains(&Value::Inst(i as u32)))
+            .map(|&i| &l.insts[i])
+            .collect()
+    }
+}
+
 /// The body of an evaluator after the arguments are bound (the outputs are then bound to
 /// their locals), plus any helper functions and the struct of the values that cross them.
 ///
@@ -252,49 +291,13 @@ fn body(
     chunks: &[Vec<usize>],
 ) -> (TokenStream, TokenStream) {
     let out_values = || p.outputs.iter().map(|o| o.value);
-    let const_lets = |used: &BTreeSet<usize>| {
-        let lets = used.iter().filter(|&&i| is_const(p, i)).map(|&i| {
-            let (name, rhs) = (&l.insts[i], op_expr(&p.insts[i].op, l));
-            quote!(let #name = #rhs;)
-        });
-        quote!(#(#lets)*)
-    };
-    let lets = |insts: &[usize]| {
-        let lets = insts.iter().map(|&i| {
-            let (name, rhs) = (&l.insts[i], op_expr(&p.insts[i].op, l));
-            quote!(let #name = #rhs;)
-        });
-        quote!(#(#lets)*)
-    };
     if chunks.len() <= 1 {
-        let work: Vec<usize> = (0..p.insts.len()).filter(|&i| !is_const(p, i)).collect();
-        let consts = const_lets(&referenced(p, &work, out_values()));
-        let ops = lets(&work);
-        return (quote!(#consts #ops), TokenStream::new());
+        return (unsplit(p, l), TokenStream::new());
     }
 
-    let mut chunk_of = vec![usize::MAX; p.insts.len()];
-    for (k, c) in chunks.iter().enumerate() {
-        for &i in c {
-            chunk_of[i] = k;
-        }
-    }
-    let crosses = |v: &Value, k: usize| match *v {
-        Value::Inst(j) => !is_const(p, j as usize) && chunk_of[j as usize] != k,
-        _ => true,
-    };
-    let live_in: Vec<BTreeSet<Value>> = chunks
-        .iter()
-        .enumerate()
-        .map(|(k, c)| {
-            c.iter().flat_map(|&i| p.insts[i].op.operands()).filter(|v| crosses(v, k)).collect()
-        })
-        .collect();
-    // Values stored in the struct: what any chunk reads from it and what the outputs read.
-    let mut stored: BTreeSet<Value> = live_in.iter().flatten().copied().collect();
-    stored
-        .extend(out_values().filter(|v| matches!(*v, Value::Inst(j) if !is_const(p, j as usize))));
-    let fields: Vec<&Ident> = stored.iter().map(|&v| l.get(v)).collect();
+    let split = Split::new(p, chunks);
+    let stored = &split.stored;
+    let fields = split.fields(l);
     let inits = stored.iter().map(|&v| {
         let f = l.get(v);
         match v {
@@ -308,15 +311,10 @@ fn body(
     };
     let mut glue = quote!(let mut live = Live { #(#inits),* };);
     for (k, c) in chunks.iter().enumerate() {
-        let ins: Vec<&Ident> = live_in[k].iter().map(|&v| l.get(v)).collect();
-        let outs: Vec<&Ident> = c
-            .iter()
-            .filter(|&&i| stored.contains(&Value::Inst(i as u32)))
-            .map(|&i| &l.insts[i])
-            .collect();
+        let (ins, outs) = (split.loads(k, l), split.stores(c, l));
         let (n_in, n_out) = (ins.len(), outs.len());
-        let consts = const_lets(&referenced(p, c, std::iter::empty()));
-        let ops = lets(c);
+        let consts = const_lets(p, l, &referenced(p, c, std::iter::empty()));
+        let ops = lets(p, l, c);
         let name = format_ident!("part_{}", k);
         let doc = format!(
             " Operations {}..{} of the evaluation (at most {max_fn_ops} per function): reads {n_in} \
@@ -343,7 +341,7 @@ fn body(
         .filter(|f| out_values().any(|o| l.get(o) == *f))
         .collect();
     glue.extend(quote!(#(let #outs = live.#outs;)*));
-    let consts = const_lets(&referenced(p, &[], out_values()));
+    let consts = const_lets(p, l, &referenced(p, &[], out_values()));
     (quote!(#glue #consts), helpers)
 }
 
@@ -367,53 +365,21 @@ fn lanes_body(
     let out_index: Vec<Literal> = (0..p.outputs.len()).map(Literal::usize_unsuffixed).collect();
     let out_values = || p.outputs.iter().map(|o| o.value);
     let out_locals: Vec<&Ident> = out_values().map(|v| l.get(v)).collect();
-    let lets = |insts: &[usize]| {
-        let lets = insts.iter().map(|&i| {
-            let (name, rhs) = (&l.insts[i], op_expr(&p.insts[i].op, l));
-            quote!(let #name = #rhs;)
-        });
-        quote!(#(#lets)*)
-    };
-    let const_lets = |used: &BTreeSet<usize>| {
-        lets(&used.iter().copied().filter(|&i| is_const(p, i)).collect::<Vec<_>>())
-    };
     if chunks.len() <= 1 {
-        let work: Vec<usize> = (0..p.insts.len()).filter(|&i| !is_const(p, i)).collect();
-        let consts = const_lets(&referenced(p, &work, out_values()));
-        let ops = lets(&work);
+        let lets = unsplit(p, l);
         let body = quote! {
             let mut out = [[0.0_f64; #n_lit]; #n_outs];
             for j in 0..#n_lit {
                 #(let #arg_locals = args[#arg_index][j];)*
-                #consts
-                #ops
+                #lets
                 #(out[#out_index][j] = #out_locals;)*
             }
             out
         };
         return (body, TokenStream::new());
     }
-    let mut chunk_of = vec![usize::MAX; p.insts.len()];
-    for (k, c) in chunks.iter().enumerate() {
-        for &i in c {
-            chunk_of[i] = k;
-        }
-    }
-    let crosses = |v: &Value, k: usize| match *v {
-        Value::Inst(j) => !is_const(p, j as usize) && chunk_of[j as usize] != k,
-        _ => true,
-    };
-    let live_in: Vec<BTreeSet<Value>> = chunks
-        .iter()
-        .enumerate()
-        .map(|(k, c)| {
-            c.iter().flat_map(|&i| p.insts[i].op.operands()).filter(|v| crosses(v, k)).collect()
-        })
-        .collect();
-    let is_work = |v: &Value| matches!(*v, Value::Inst(j) if !is_const(p, j as usize));
-    let mut stored: BTreeSet<Value> = live_in.iter().flatten().copied().collect();
-    stored.extend(out_values().filter(is_work));
-    let fields: Vec<&Ident> = stored.iter().map(|&v| l.get(v)).collect();
+    let split = Split::new(p, chunks);
+    let fields = split.fields(l);
     let stored_args: Vec<(&Ident, Literal)> = arg_locals
         .iter()
         .zip(&arg_index)
@@ -433,14 +399,9 @@ fn lanes_body(
         }
     };
     for (k, c) in chunks.iter().enumerate() {
-        let ins: Vec<&Ident> = live_in[k].iter().map(|&v| l.get(v)).collect();
-        let outs: Vec<&Ident> = c
-            .iter()
-            .filter(|&&i| stored.contains(&Value::Inst(i as u32)))
-            .map(|&i| &l.insts[i])
-            .collect();
-        let consts = const_lets(&referenced(p, c, std::iter::empty()));
-        let ops = lets(c);
+        let (ins, outs) = (split.loads(k, l), split.stores(c, l));
+        let consts = const_lets(p, l, &referenced(p, c, std::iter::empty()));
+        let ops = lets(p, l, c);
         let name = format_ident!("lanes_part_{}", k);
         let doc = format!(
             " Operations {}..{} of [`eval_lanes`] (at most {max_fn_ops} per function), lane by lane.",
@@ -644,6 +605,8 @@ pub fn emit(scene: &Scene) -> TokenStream {
             /// The inputs the outputs depend on, in the order of the fields of [`Args`] after
             /// the parameters.
             pub const INPUTS: &[&str] = &[#(#inputs),*];
+            /// The names of the fields of [`Args`] in order: [`PARAMS`] then [`INPUTS`].
+            pub const ARGS: [&str; #n_args_lit] = [#(#arg_names),*];
             /// The outputs, in the order of the fields of [`Out`].
             pub const OUTPUTS: &[&str] = &[#(#outputs),*];
             /// The fixed parameters and the values folded into the code.
@@ -685,6 +648,13 @@ pub fn emit(scene: &Scene) -> TokenStream {
                 #[must_use]
                 pub const fn to_array(&self) -> [f64; #n_args_lit] {
                     [#(self.#arg_fields),*]
+                }
+
+                /// The arguments by name: each field is `value` of its name, called once per
+                /// field in the order of [`ARGS`].
+                #[must_use]
+                pub fn from_fn(mut value: impl ::core::ops::FnMut(&str) -> f64) -> Self {
+                    Args { #(#arg_fields: value(#arg_names)),* }
                 }
             }
 

@@ -41,11 +41,13 @@
 //!
 //! # What a scene module contains
 //!
-//! `MODEL`, `PARAMS` (the free parameters), `INPUTS`, `OUTPUTS`, `FIXED`, `OP_COUNT` (operations
+//! `MODEL`, `PARAMS` (the free parameters), `INPUTS`, `ARGS` (`[&str; N]`: `PARAMS` then
+//! `INPUTS`, the fields of `Args` in order), `OUTPUTS`, `FIXED`, `OP_COUNT` (operations
 //! of the emitted code, constants not counted), `OP_COUNT_BY_OP` and `SOURCE_OP_COUNT` (the whole
 //! model program before fixing and pruning); the structs `Args` (one `f64` field per free
 //! parameter, then per input, named as in the IR) and `Out` (one field per output), with
-//! `from_array`/`to_array`; and the evaluators `eval(&Args) -> Out` and
+//! `from_array`/`to_array`, and `Args::from_fn(|name| value)` (the fields by name, asked in the
+//! order of `ARGS`); and the evaluators `eval(&Args) -> Out` and
 //! `eval_array(&[f64; N]) -> [f64; M]`; with `lanes: L` also `LANES` and
 //! `eval_lanes(&[[f64; L]; N]) -> [[f64; L]; M]`. The code is straight-line `f64` arithmetic and `f64`
 //! methods (`sqrt`, `sin`, `cos`, `tan`, `atan2`, `powi`): no allocation, no panics, no macros.
@@ -62,11 +64,15 @@
 //!
 //! Private modules: `parse` reads the syntax, `validate` loads the IR and checks the scene
 //! against it, `emit` writes the Rust, `expand` ties them together on `proc_macro2` token
-//! streams (so that the unit tests in `tests` can run it outside the compiler).
+//! streams (so that the unit tests in `tests` can run it outside the compiler). `scene` is the
+//! leaf they share: the validated [`Scene`](scene::Scene), the [`Context`](scene::Context) of
+//! the files, and the naming rules. The imports go one way: `parse`, `scene` ← `validate` ←
+//! `expand` → `emit` → `scene`.
 
 mod emit;
 mod expand;
 mod parse;
+mod scene;
 mod validate;
 
 #[cfg(test)]

@@ -11,7 +11,8 @@ use std::path::{Path, PathBuf};
 use proc_macro2::TokenStream;
 use quote::quote;
 
-use crate::expand::{expand_tokens, generated_dir, Context};
+use crate::expand::expand_tokens;
+use crate::scene::{generated_dir, Context};
 
 fn manifest_dir() -> PathBuf {
     let dir = Path::new(env!("CARGO_MANIFEST_DIR"));
@@ -232,7 +233,7 @@ fn keyword_and_clashing_names() {
 
 #[test]
 fn rust_identifiers() {
-    use crate::emit::rust_ident;
+    use crate::scene::rust_ident;
     use proc_macro2::Span;
     let show = |n: &str| rust_ident(n, Span::call_site()).map(|i| i.to_string());
     assert_eq!(show("x1"), Some("x1".into()));

@@ -16,37 +16,10 @@ use std::path::PathBuf;
 use carvallo_ir::Program;
 use proc_macro2::Span;
 use syn::ext::IdentExt;
-use syn::{Attribute, Expr, Ident, Lit, LitStr, UnOp, Visibility};
+use syn::{Expr, Ident, Lit, LitStr, UnOp};
 
-use crate::emit::{self, rust_ident};
-use crate::expand::Context;
 use crate::parse::{EntryValue, FixedEntry, SceneDecl};
-
-/// A scene that passed validation, with its specialised program.
-pub struct Scene {
-    /// Outer attributes of the declaration.
-    pub attrs: Vec<Attribute>,
-    /// The module's visibility.
-    pub vis: Visibility,
-    /// The module's name.
-    pub name: Ident,
-    /// The model name.
-    pub model: String,
-    /// Absolute path of the IR file that was read (for `include_str!`).
-    pub ir_path: PathBuf,
-    /// The path as shown to users (`generated/hoop.ir` or the `path:` literal).
-    pub ir_display: String,
-    /// The fixed parameters with their values, in the order written.
-    pub fixed: Vec<(String, f64)>,
-    /// Total op count of the model's whole program, before fixing and pruning.
-    pub source_op_count: usize,
-    /// The specialised program the scene evaluates.
-    pub program: Program,
-    /// Largest number of operations emitted in one function before splitting.
-    pub max_fn_ops: usize,
-    /// `lanes: N`: also emit `eval_lanes` over `N` points per call.
-    pub lanes: Option<usize>,
-}
+use crate::scene::{rust_ident, Context, Scene, DEFAULT_MAX_FN_OPS, LANE_COUNTS};
 
 /// A list of errors that are combined into one `syn::Error`.
 #[derive(Default)]
@@ -151,7 +124,7 @@ pub fn validate(decl: SceneDecl, ctx: &Context) -> syn::Result<Scene> {
         }
     }
     let max_fn_ops = match &e.max_fn_ops {
-        None => emit::DEFAULT_MAX_FN_OPS,
+        None => DEFAULT_MAX_FN_OPS,
         Some(lit) => match lit.base10_parse::<usize>() {
             Ok(n) if n >= 1 => n,
             _ => {
@@ -159,12 +132,12 @@ pub fn validate(decl: SceneDecl, ctx: &Context) -> syn::Result<Scene> {
                     lit,
                     format!("`max_fn_ops` must be a positive integer, found `{lit}`"),
                 ));
-                emit::DEFAULT_MAX_FN_OPS
+                DEFAULT_MAX_FN_OPS
             }
         },
     };
     let lanes = e.lanes.as_ref().and_then(|lit| match lit.base10_parse::<usize>() {
-        Ok(n) if emit::LANE_COUNTS.contains(&n) => Some(n),
+        Ok(n) if LANE_COUNTS.contains(&n) => Some(n),
         _ => {
             errors.push(syn::Error::new_spanned(
                 lit,

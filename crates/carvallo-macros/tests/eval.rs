@@ -169,6 +169,35 @@ fn args_and_outputs_round_trip_through_arrays() {
     assert_eq!(full::Args::default().to_array(), [0.0; 5]);
 }
 
+#[test]
+fn args_from_fn_fills_the_fields_by_name_in_args_order() {
+    // `ARGS` is `PARAMS` then `INPUTS`, and `from_fn` asks for the names in that order.
+    assert_eq!(full::ARGS, ["R", "g", "x", "y", "z"]);
+    assert_eq!(fixed::ARGS.as_slice(), [fixed::PARAMS, fixed::INPUTS].concat().as_slice());
+    let mut asked = Vec::new();
+    let a = full::Args::from_fn(|name| {
+        asked.push(name.to_string());
+        asked.len() as f64
+    });
+    assert_eq!(asked, full::ARGS);
+    assert_eq!(a.to_array(), [1.0, 2.0, 3.0, 4.0, 5.0]);
+    // Field `k` is the value of `ARGS[k]`, whatever order the values come from.
+    let value = |name: &str| match name {
+        "R" => 0.5,
+        "g" => 9.81,
+        "x" => -1.0,
+        "y" => 2.0,
+        "z" => 3.0,
+        _ => f64::NAN,
+    };
+    let by_name = full::Args::from_fn(value);
+    for (k, name) in full::ARGS.iter().enumerate() {
+        assert_eq!(by_name.to_array()[k], value(name), "{name}");
+    }
+    let f = fixed::Args::from_fn(value);
+    assert_eq!(f.to_array(), fixed::ARGS.map(value));
+}
+
 /// A seeded SplitMix64 stream of numbers in [-4, 4), with a few special values mixed in.
 fn stream(seed: u64) -> impl FnMut() -> f64 {
     let mut state = seed;

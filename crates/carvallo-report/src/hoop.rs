@@ -68,10 +68,8 @@ fn sample_points() -> Vec<BTreeMap<&'static str, f64>> {
 /// the unit of n° 12 for the normalised (`_n12`) outputs by the caller, not here.
 fn eval_all(point: &BTreeMap<&str, f64>) -> BTreeMap<&'static str, f64> {
     use concordance_scene as scene;
-    let names: Vec<&str> = scene::PARAMS.iter().chain(scene::INPUTS.iter()).copied().collect();
-    let args = std::array::from_fn(|i| point.get(names[i]).copied().unwrap_or(f64::NAN));
-    let values = scene::eval_array(&args);
-    scene::OUTPUTS.iter().copied().zip(values).collect()
+    let args = scene::Args::from_fn(|name| point.get(name).copied().unwrap_or(f64::NAN));
+    scene::OUTPUTS.iter().copied().zip(scene::eval(&args).to_array()).collect()
 }
 
 /// What the memoir prints for each derived output that has a `memoir_*` transcription:

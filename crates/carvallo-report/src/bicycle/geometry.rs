@@ -24,25 +24,28 @@ use crate::policy::{self, number, number_as};
 
 const CHECKS_TSV: &str = carvallo::artifacts::BICYCLE_GEOMETRY.checks;
 
-/// The steers of the tables of n° 52 and n° 54 (degrees).
+// The memoir's printed tables, as numbers, in one place: the entries below compare with them,
+// and the figures of `carvallo report --out` (fig. 11 and 13) plot them.
+
+/// The steers of the tables of n° 52 and n° 54 (degrees): the rows of every column below.
 pub const TABLE_STEERS: [f64; 6] = [0.0, 20.0, 40.0, 60.0, 80.0, 90.0];
 
 /// n° 52: σ1 in minutes (the column's sign is printed once, "— 0'": all are decreases).
-const SIGMA1_MIN: [f64; 6] = [0.0, -5.0, -19.0, -31.0, -19.0, -5.0];
+pub const SIGMA1_MIN: [f64; 6] = [0.0, -5.0, -19.0, -31.0, -19.0, -5.0];
 /// n° 52: μ0 in degrees.
-const MU0_DEG: [f64; 6] = [25.0, 23.7, 19.7, 13.2, 4.7, 0.0];
+pub const MU0_DEG: [f64; 6] = [25.0, 23.7, 19.7, 13.2, 4.7, 0.0];
 /// n° 52: μ1 in degrees (printed in tenths, "— 0,0, 1, 3, 3, 0, 0").
-const MU1_DEG: [f64; 6] = [0.0, -0.1, -0.3, -0.3, 0.0, 0.0];
+pub const MU1_DEG: [f64; 6] = [0.0, -0.1, -0.3, -0.3, 0.0, 0.0];
 /// n° 52: μ in degrees.
-const MU_DEG: [f64; 6] = [25.0, 23.6, 19.4, 12.9, 4.7, 0.0];
-/// n° 52: μ1 in minutes.
-const MU1_MIN: [f64; 6] = [0.0, -5.0, -16.0, -19.0, -2.0, 0.0];
-/// n° 54: x − l and y in centimetres.
-const LOCUS_CM: [(f64, f64); 6] =
+pub const MU_DEG: [f64; 6] = [25.0, 23.6, 19.4, 12.9, 4.7, 0.0];
+/// n° 52: μ1 in minutes (with the sign of the σ1 column).
+pub const MU1_MIN: [f64; 6] = [0.0, -5.0, -16.0, -19.0, -2.0, 0.0];
+/// n° 54: x − l and y in centimetres (y as printed, see the n° 54 entries).
+pub const LOCUS_CM: [(f64, f64); 6] =
     [(0.0, 0.0), (1.2, 2.5), (4.5, 3.0), (8.7, 0.4), (9.5, -4.8), (8.8, -8.0)];
 /// n° 56: μ (degrees) at σ = σ0, rows γ = 0°, 20°, 40°, 60° (printed "50°", OCR), columns
 /// θ = 0°, 10°, ..., 50°; `None` where the table is blank.
-const TABLE_56: [[Option<f64>; 6]; 4] = [
+pub const TABLE_56: [[Option<f64>; 6]; 4] = [
     [Some(25.0), Some(25.0), Some(25.0), Some(25.0), Some(25.0), Some(25.0)],
     [Some(23.7), Some(20.6), Some(17.3), Some(13.3), Some(8.3), Some(1.3)],
     [Some(19.6), Some(13.1), Some(5.6), Some(3.0), Some(-13.4), Some(-26.1)],

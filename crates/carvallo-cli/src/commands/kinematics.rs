@@ -19,7 +19,8 @@ use serde_json::json;
 
 use crate::args::{lean_deg, number, options};
 
-const HELP: &str = "\
+/// The usage `kinematics` prints for `--help` and after a usage error.
+pub const HELP: &str = "\
 Usage:
     carvallo kinematics --theta DEG --gamma DEG [--json]
                                 contact, relations (I) and steady rates (2) of the memoir's
@@ -155,12 +156,11 @@ fn sci(x: f64) -> String {
     format!("{x:+.6e}")
 }
 
-/// The subcommand `kinematics`.
-pub const SUBCOMMAND: crate::Subcommand = crate::Subcommand {
-    names: &["kinematics"],
-    run: |args| parse(args).and_then(|c| run(&c)),
-    help: HELP,
-};
+/// Runs `carvallo kinematics ARGS` (the argument list, the command's name first): the text to
+/// print, or an error naming the bad argument or value.
+pub fn main(args: &[String]) -> Result<String, String> {
+    parse(args).and_then(|c| run(&c))
+}
 
 #[cfg(test)]
 mod tests {

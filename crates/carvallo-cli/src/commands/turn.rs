@@ -15,7 +15,8 @@ use serde_json::json;
 
 use crate::args::{number, options};
 
-const HELP: &str = "\
+/// The usage `turn` prints for `--help` and after a usage error.
+pub const HELP: &str = "\
 Usage:
     carvallo turn --model carvallo --gamma DEG --speed V [--json]
                                 steady turn with the handlebar held at DEG degrees, speed V [m/s]
@@ -107,12 +108,11 @@ fn run(c: &Command) -> Result<String, String> {
     Ok(s)
 }
 
-/// The subcommand `turn`.
-pub const SUBCOMMAND: crate::Subcommand = crate::Subcommand {
-    names: &["turn"],
-    run: |args| parse(args).and_then(|c| run(&c)),
-    help: HELP,
-};
+/// Runs `carvallo turn ARGS` (the argument list, the command's name first): the text to
+/// print, or an error naming the bad argument or value.
+pub fn main(args: &[String]) -> Result<String, String> {
+    parse(args).and_then(|c| run(&c))
+}
 
 #[cfg(test)]
 mod tests {

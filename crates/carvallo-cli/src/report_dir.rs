@@ -233,14 +233,14 @@ const BANDS_CAPTION: &str = "Real parts of the four eigenvalues against speed (p
 /// to `dir` (see the module docs). Returns the files written, relative to `dir`.
 pub fn write_report(dir: &Path, params: &UncertainParams, model: &str) -> Result<Vec<String>> {
     let parent = check_out_dir(dir)?;
-    let figs = figures::all();
+    let figs = &figures::FIGURES;
     let banded = params.has_uncertainty();
     let mut progress = Progress::new(figs.len() + 2 + 2 * usize::from(banded));
     progress.start("concordance");
     let entries = carvallo_report::all_entries();
     progress.done();
     let mut files: Vec<(String, String)> = Vec::new();
-    for f in &figs {
+    for f in figs {
         progress.start(f.file);
         let svg = (f.draw)(&params.params).with_context(|| format!("cannot draw {}", f.file))?;
         files.push((f.file.to_string(), svg));
@@ -259,7 +259,7 @@ pub fn write_report(dir: &Path, params: &UncertainParams, model: &str) -> Result
         progress.done();
     }
     progress.start("writing");
-    let mut figures_md = figures_section(&figs);
+    let mut figures_md = figures_section(figs);
     if !extra_md.is_empty() {
         figures_md = format!("{extra_md}{figures_md}");
     }
@@ -326,4 +326,25 @@ fn replace_dir(tmp: &Path, dir: &Path) -> Result<()> {
             .with_context(|| format!("cannot rename `{}` to `{}`", tmp.display(), dir.display()))?;
     }
     Ok(())
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn every_figure_of_the_catalogue_is_written_and_linked() {
+        let dir = std::env::temp_dir().join(format!("carvallo-report-dir-{}", std::process::id()));
+        let _ = std::fs::remove_dir_all(&dir);
+        let params = UncertainParams::exact(carvallo::whipple::WhippleParams::benchmark());
+        let files = write_report(&dir, &params, "benchmark").expect("report written");
+        let md = std::fs::read_to_string(dir.join("report.md")).expect("report.md");
+        for fig in &figures::FIGURES {
+            assert!(files.iter().any(|f| f == fig.file), "{} not in {files:?}", fig.file);
+            let svg = std::fs::read_to_string(dir.join(fig.file)).expect(fig.file);
+            assert!(svg.starts_with("<svg") && svg.contains("<text"), "{}", fig.file);
+            assert!(md.contains(&format!("({})", fig.file)), "report.md does not link {}", fig.file);
+        }
+        std::fs::remove_dir_all(&dir).expect("scratch directory removed");
+    }
 }

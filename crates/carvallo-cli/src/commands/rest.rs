@@ -14,7 +14,8 @@ use serde_json::json;
 
 use crate::args::{lean_deg, number, options};
 
-const HELP: &str = "\
+/// The usage `rest` prints for `--help` and after a usage error.
+pub const HELP: &str = "\
 Usage:
     carvallo rest --theta DEG [--wheel-mass KG] [--json]
                                 the handlebar's rest position at a lean of DEG degrees
@@ -91,12 +92,11 @@ fn run(c: &Command) -> Result<String, String> {
     Ok(s)
 }
 
-/// The subcommand `rest`.
-pub const SUBCOMMAND: crate::Subcommand = crate::Subcommand {
-    names: &["rest"],
-    run: |args| parse(args).and_then(|c| run(&c)),
-    help: HELP,
-};
+/// Runs `carvallo rest ARGS` (the argument list, the command's name first): the text to
+/// print, or an error naming the bad argument or value.
+pub fn main(args: &[String]) -> Result<String, String> {
+    parse(args).and_then(|c| run(&c))
+}
 
 #[cfg(test)]
 mod tests {

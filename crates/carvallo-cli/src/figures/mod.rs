@@ -1,0 +1,82 @@
+//! The figures of `carvallo report --out DIR`, drawn with `plotters` (SVG backend).
+//!
+//! [`FIGURES`] is the catalogue, in the order of the report: each row names the file, the
+//! title (which cites the memoir's figure and n° where it redraws one), the caption and the
+//! function that draws it. The functions live in [`memoir`] (the memoir's figures 3, 4, 4 bis,
+//! 7, 9, 11 and 13) and [`modern`] (eigenvalues, stable windows, ground tracks), and draw with
+//! the engine in [`chart`]. Figures the workspace cannot draw honestly yet are listed in
+//! [`MISSING`] with the reason.
+
+mod chart;
+mod memoir;
+mod modern;
+
+use anyhow::Result;
+use carvallo::whipple::WhippleParams;
+
+pub use modern::{fig_eigenvalue_bands, BAND_SEED};
+
+/// One figure of the report.
+pub struct Figure {
+    /// File name inside the output directory (`*.svg`).
+    pub file: &'static str,
+    /// Title, also the chart's caption.
+    pub title: &'static str,
+    /// One or two sentences saying what the figure shows and where it comes from.
+    pub caption: &'static str,
+    /// Computes the data and draws the figure for a bicycle (used by the modern figures only).
+    pub draw: fn(&WhippleParams) -> Result<String>,
+}
+
+/// A figure of the memoir or of the issue that the workspace does not draw yet, and why.
+pub struct Missing {
+    /// Which figure.
+    pub figure: &'static str,
+    /// Why it is not drawn.
+    pub reason: &'static str,
+}
+
+/// Every figure, in the order of the report. Adding a figure: write its function in
+/// [`memoir`] or [`modern`], add a row.
+pub const FIGURES: [Figure; 12] = [
+        Figure { file: "fig03_hoop_equilibrium.svg", title: "Memoir fig. 3: hoop, reality and stability of the steady states (n° 13–14)", caption: "Plane x = cos θ, y = s² (rates in √(g/R)): the curve (ℰ) where the two roots n of (E) merge, the curve (S1) where those of S are real, and the stability limit (S) through its vertical tangent; points A, B, D, F of n° 14.", draw: memoir::fig_3 },
+        Figure { file: "fig04_hoop_skid.svg", title: "Memoir fig. 4: hoop, skid tendency (n° 15–16)", caption: "Polar diagram (angle θ from the vertical, radius s in √(g/R)): the curves n = const of (E′), the curves D = ±1/2 of (D″), (ℰ) and (S).", draw: memoir::fig_4 },
+        Figure { file: "fig04bis_hoop_walking.svg", title: "Memoir fig. 4 bis: hoop, walking and pivoting (n° 17)", caption: "Polar diagram: (ℰ), (S), the separation (N) between walking and pivoting, and the curves n2 = −0.1, −0.3, −0.5.", draw: memoir::fig_4_bis },
+        Figure { file: "fig07_unicycle_diagram.svg", title: "Memoir fig. 7: unicycle steady states, h/R = 2.5 (n° 32, 41)", caption: "Polar diagram (angle θ from the vertical, radius s in √(g/R)): (ℰ), the curves n = const of (E), the separation (N) with its asymptote, the branch θ < 16° of the stability limit (S) of n° 41, and the practical limits s = 1 and 20 km/h.", draw: memoir::fig_7 },
+        Figure { file: "fig09_unicycle_first_member.svg", title: "Memoir fig. 9: unicycle, reality condition of S(n²) (n° 41)", caption: "The first member 1/cos θ − (h/R) sin²θ cos θ − √(h/R) sin 2θ from the generated trinomial, against θ, with the memoir's table (n° 41); the derived zeros (marked) are 16.32° and 62.82°, which the memoir reads off its graph as 16°,0 and 62°,7.", draw: memoir::fig_9 },
+        Figure { file: "fig11_bicycle_sigma1_mu1.svg", title: "Memoir fig. 11: bicycle geometry, frame vertical (n° 52)", caption: "The frame's rotation σ1 = σ − σ0 and the front contact's μ1 = μ − μ0 (tan μ0 = tan σ0 cos γ) against the steer γ, in minutes of arc, for the old bicycle of n° 52 (R = 0.38 m, l = 1.10 m, c = 0.08 m, σ0 = 25°): the exact solution of the contact equations (1), (2) by Newton's method (lines) and the memoir's table (points).", draw: memoir::fig_11 },
+        Figure { file: "fig13_bicycle_contact_locus.svg", title: "Memoir fig. 13: locus of the front wheel's contact with the ground (n° 54)", caption: "The front contact M relative to its position M0 at γ = 0, frame vertical, old bicycle of n° 52, for γ from 0° to 90°: the exact solution (line, with γ marked every 20°) and the memoir's table (points); y is counted as in the memoir's table, whose sign is opposite to its printed formula y = −(R sin μ − c) sin γ (see the report, n° 54).", draw: memoir::fig_13 },
+        Figure { file: "benchmark_eigenvalues.svg", title: "Benchmark bicycle: eigenvalues against speed", caption: "Real and imaginary parts of the four eigenvalues of the linearised Carvallo–Whipple bicycle (Meijaard et al. 2007 parameters unless --model is given) against the forward speed; the stable range is shaded.", draw: modern::fig_eigenvalues },
+        Figure { file: "carvallo_eigenvalues.svg", title: "Carvallo's bicycle without hands (n° 117–122): eigenvalues against speed", caption: "Time eigenvalues sλ (λ the roots of the quartic of n° 119, T = st) of Carvallo's bicycle, exactly linearised through the general model at the constants of n° 117, against v = Rs (R = 0.38 m), the stable range shaded; marked on the axis: the memoir's limits s² = 67.3 and 83.6 (v = 0.38√s²) and the derived ones.", draw: modern::fig_carvallo_eigenvalues },
+        Figure { file: "nonlinear_ground_tracks.svg", title: "Wheel ground tracks from a nonlinear simulation", caption: "Rear and front contact tracks of the nonlinear Carvallo–Whipple bicycle (benchmark parameters unless --model is given), RK4 from upright straight running at 4.6 m/s with an initial lean of 0.05 rad for 6 s; the number of crossings of the two tracks (n° 106), counted from the simulated data, is in the figure's title.", draw: modern::fig_tracks },
+        Figure { file: "benchmark_window_trail.svg", title: "Benchmark bicycle: stable speed range against the trail", caption: "Weave and capsize speeds and the stable range (shaded) as the trail c is varied, the other parameters fixed.", draw: modern::fig_window_trail },
+        Figure { file: "benchmark_window_tilt.svg", title: "Benchmark bicycle: stable speed range against the steer axis tilt", caption: "Weave and capsize speeds and the stable range (shaded) as the steer axis tilt λ (head angle 90° − λ) is varied in steps of 0.5°, the other parameters fixed. Below about 9.5° the benchmark has no stable speed; the curves there are the lowest roots of a0 (capsize) and of the Hurwitz determinant H3 (weave), which bound no stable range (a0 has no positive root at 1.5°, hence the gap).", draw: modern::fig_window_tilt },
+];
+
+/// Figures not drawn, with the reason (listed in `report.md`); every figure the issues name is
+/// drawn now.
+pub const MISSING: [Missing; 0] = [];
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn figure_files_are_distinct_svgs_and_the_missing_ones_are_named() {
+        let figs = &FIGURES;
+        let mut files: Vec<&str> = figs.iter().map(|f| f.file).collect();
+        files.sort_unstable();
+        files.dedup();
+        assert_eq!(files.len(), figs.len(), "two figures share a file name");
+        assert!(files.iter().all(|f| f.ends_with(".svg") && !f.contains('/')));
+        assert_eq!((figs.len(), MISSING.len()), (12, 0));
+        for drawn in [
+            "carvallo_eigenvalues.svg",
+            "nonlinear_ground_tracks.svg",
+            "fig11_bicycle_sigma1_mu1.svg",
+            "fig13_bicycle_contact_locus.svg",
+        ] {
+            assert!(files.contains(&drawn), "{drawn} not drawn");
+        }
+    }
+}
