@@ -14,7 +14,6 @@
 //! The verdicts follow the one policy of [`crate::policy`].
 
 mod claims;
-pub(crate) mod sim;
 
 use std::collections::BTreeMap;
 

@@ -31,6 +31,7 @@ pub mod claims;
 pub mod entry;
 pub mod hoop;
 pub mod hoop_discussion;
+mod hoop_simulation;
 pub mod outline;
 pub mod policy;
 pub mod render;

@@ -9,11 +9,11 @@ use carvallo::hoop::fall::{FallLaw, FallRegime};
 use carvallo::hoop::pns_scene;
 use carvallo::numerics::ode::rk4_step;
 
-use super::sim::{
-    example_hoop, odd_fit, perturb, stability_sample, states_at_p_zeros, unit_hoop, Perturbed,
-};
 use crate::claims::{Assertion, Claim, Status};
 use crate::entry::Verdict;
+use crate::hoop_simulation::{
+    example_hoop, odd_fit, perturb, stability_sample, states_at_p_zeros, unit_hoop, Perturbed,
+};
 use crate::policy::{self, rel_diff};
 use crate::sample::Rng;
 
@@ -37,7 +37,8 @@ pub(super) fn claims() -> Vec<Claim> {
         .get_or_init(|| {
             let mut claims = compute();
             claims.sort_by(|a, b| {
-                crate::entry::section_key(&a.section).total_cmp(&crate::entry::section_key(&b.section))
+                crate::entry::section_key(&a.section)
+                    .total_cmp(&crate::entry::section_key(&b.section))
             });
             claims
         })
@@ -198,7 +199,8 @@ fn recursion() -> Vec<Claim> {
         rows.push((delta, f, f1, f2, a1, a3, a5));
     }
     let (_, f, f1, f2, a1, a3, a5) = rows[0];
-    let predicted: Vec<f64> = rows.iter().map(|&(_, f, f1, f2, ..)| 3.0 * f * f2 / (f1 * f1)).collect();
+    let predicted: Vec<f64> =
+        rows.iter().map(|&(_, f, f1, f2, ..)| 3.0 * f * f2 / (f1 * f1)).collect();
     let exact5 = f * f1 * f1 + 3.0 * f * f * f2;
     let d1 = rel_diff(a1, f);
     let d3 = rel_diff(a3, f * f1);
@@ -549,7 +551,8 @@ fn e_symmetry() -> Claim {
         let theta = rng.uniform(-1.3, 1.3);
         let (p, n, s) =
             (nu * rng.uniform(-3.0, 3.0), nu * rng.uniform(-3.0, 3.0), nu * rng.uniform(0.0, 3.0));
-        e_diff = e_diff.max(rel_diff(hoop.equilibrium(-theta, s, -n), -hoop.equilibrium(theta, s, n)));
+        e_diff =
+            e_diff.max(rel_diff(hoop.equilibrium(-theta, s, -n), -hoop.equilibrium(theta, s, n)));
         let a = hoop.rhs_pns([theta, p, n, s]);
         let b = hoop.rhs_pns([-theta, -p, -n, s]);
         for (x, y) in [(a[0], -b[0]), (a[1], -b[1]), (a[2], -b[2]), (a[3], b[3])] {
@@ -608,7 +611,8 @@ fn e_limits() -> Claim {
     let (mut at_half_pi, mut upright) = (0.0f64, 0.0f64);
     for _ in 0..64 {
         let (s, n) = (nu * rng.uniform(0.0, 3.0), nu * rng.uniform(-3.0, 3.0));
-        at_half_pi = at_half_pi.max(rel_diff(hoop.equilibrium(std::f64::consts::FRAC_PI_2, s, n), g_term));
+        at_half_pi =
+            at_half_pi.max(rel_diff(hoop.equilibrium(std::f64::consts::FRAC_PI_2, s, n), g_term));
         upright = upright.max(rel_diff(hoop.equilibrium(0.0, s, n), 4.0 / 3.0 * s * n));
     }
     Claim::new(
@@ -673,7 +677,13 @@ fn lagrange_interchange() -> Claim {
 }
 
 fn two_methods_conform() -> Claim {
-    let ids = ["lagrange_combinations", "lagrange_modified_agrees", "system2_memoir", "correction_nu_memoir", "correction_sigma_memoir"];
+    let ids = [
+        "lagrange_combinations",
+        "lagrange_modified_agrees",
+        "system2_memoir",
+        "correction_nu_memoir",
+        "correction_sigma_memoir",
+    ];
     let all = ids.iter().all(|id| check_holds(id) == Some(true));
     let evidence: Vec<(&str, f64)> = ids.iter().map(|id| (*id, holds(id))).collect();
     Claim::new(
@@ -703,11 +713,8 @@ fn cyclic_coordinates() -> Claim {
 }
 
 fn linear_criterion_sufficient(runs: &StabilityRuns) -> Claim {
-    let worst_ratio = runs
-        .large
-        .iter()
-        .map(|(small, large)| large.max_dev / small.max_dev)
-        .fold(0.0, f64::max);
+    let worst_ratio =
+        runs.large.iter().map(|(small, large)| large.max_dev / small.max_dev).fold(0.0, f64::max);
     let bounded = runs.large.iter().filter(|(_, l)| !l.diverged).count();
     Claim::new(
         "hoop-linear-criterion-sufficient",

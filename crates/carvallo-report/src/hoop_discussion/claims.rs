@@ -13,7 +13,7 @@ use carvallo::numerics::poly::{bisect, poly_eval};
 use super::e_roots;
 use crate::claims::{Assertion, Claim, Status};
 use crate::entry::Verdict;
-use crate::hoop::sim::{perturb, unit_hoop};
+use crate::hoop_simulation::{perturb, unit_hoop};
 use crate::policy::{self, rel_diff, unit_of};
 
 /// The claims of n° 13–19, computed once per process.
@@ -23,7 +23,8 @@ pub(super) fn claims() -> Vec<Claim> {
         .get_or_init(|| {
             let mut claims = compute();
             claims.sort_by(|a, b| {
-                crate::entry::section_key(&a.section).total_cmp(&crate::entry::section_key(&b.section))
+                crate::entry::section_key(&a.section)
+                    .total_cmp(&crate::entry::section_key(&b.section))
             });
             claims
         })
@@ -66,7 +67,11 @@ fn reality_curve_shape() -> Claim {
     let asymptote = 1e-6 * y(1e-6);
     // Conic x^2 + (2/3) x y - 1: B^2 - 4AC = 4/9 > 0 (read off the generated reality_curve).
     let curve = |x: f64, yy: f64| hd::output("reality_curve", &[("x", x), ("y", yy)]);
-    let (a, b, c) = (curve(1.0, 0.0) - curve(0.0, 0.0), curve(1.0, 1.0) - curve(1.0, 0.0) - curve(0.0, 1.0) + curve(0.0, 0.0), curve(0.0, 1.0) - curve(0.0, 0.0));
+    let (a, b, c) = (
+        curve(1.0, 0.0) - curve(0.0, 0.0),
+        curve(1.0, 1.0) - curve(1.0, 0.0) - curve(0.0, 1.0) + curve(0.0, 0.0),
+        curve(0.0, 1.0) - curve(0.0, 0.0),
+    );
     let disc = b * b - 4.0 * a * c;
     let ok = at_a.abs() < 1e-15 && (asymptote - 1.5).abs() < 1e-5 && disc > 0.0;
     Claim::new(
@@ -125,7 +130,8 @@ fn stable_along_ae() -> Claim {
 }
 
 fn roots_on_ac() -> Claim {
-    let (mut n1_dev, mut n2_max, mut s_n1_min, mut s_n2_dev) = (0.0f64, 0.0f64, f64::INFINITY, 0.0f64);
+    let (mut n1_dev, mut n2_max, mut s_n1_min, mut s_n2_dev) =
+        (0.0f64, 0.0f64, f64::INFINITY, 0.0f64);
     for s in [0.3, 0.5, 0.8, 1.2] {
         let theta = 1e-4;
         if let Some((n1, n2)) = e_roots(theta, s) {
@@ -515,7 +521,8 @@ fn half_thousandth() -> Claim {
     let t = 1.0 + root.exact_u;
     let rel_t = rel_diff(1.0 + u, t);
     let rel_x = rel_diff((1.0 + u).sqrt(), t.sqrt());
-    let holds = residual.abs() / largest_term < 5e-4 && 0.0004 / largest_term < 5e-4 && rel_t < 5e-4;
+    let holds =
+        residual.abs() / largest_term < 5e-4 && 0.0004 / largest_term < 5e-4 && rel_t < 5e-4;
     Claim::new(
         "hoop-root-squaring-half-thousandth",
         "14",
@@ -531,7 +538,8 @@ fn discussion_15() -> Vec<Claim> {
     let skid = |th: f64, n: f64| hd::output("skid_of_n", &[("theta", th), ("n", n)]);
     let s_n = |th: f64, n: f64| hd::output("s_of_n", &[("theta", th), ("n", n)]);
     // n0 between the roots; s and D monotone either side of n0; the limits of the table.
-    let (mut order_wrong, mut mono_wrong, mut limit_dev, mut cases) = (0usize, 0usize, 0.0f64, 0usize);
+    let (mut order_wrong, mut mono_wrong, mut limit_dev, mut cases) =
+        (0usize, 0usize, 0.0f64, 0usize);
     let mut minimum_dev = 0.0f64;
     for i in 1..=17 {
         let theta = (5.0 * i as f64).to_radians();
@@ -549,9 +557,11 @@ fn discussion_15() -> Vec<Claim> {
         let grid: Vec<f64> = (1..=400).map(|k| n0 * k as f64 / 200.0).collect();
         for w in grid.windows(2) {
             let (a, b) = (w[0], w[1]);
-            let s_ok = if b <= n0 { s_n(theta, b) > s_n(theta, a) } else { s_n(theta, b) < s_n(theta, a) };
+            let s_ok =
+                if b <= n0 { s_n(theta, b) > s_n(theta, a) } else { s_n(theta, b) < s_n(theta, a) };
             let d_ok = skid(theta, b) < skid(theta, a);
-            mono_wrong += usize::from(!(s_ok && d_ok) && (a - n0).abs() > 1e-12 && (b - n0).abs() > 1e-12);
+            mono_wrong +=
+                usize::from(!(s_ok && d_ok) && (a - n0).abs() > 1e-12 && (b - n0).abs() > 1e-12);
         }
         limit_dev = limit_dev
             .max(rel_diff(skid(theta, -1e-9), 0.5 * theta.tan()))
@@ -730,7 +740,10 @@ fn marche_17() -> Vec<Claim> {
     let (mut below, mut min_gap, mut sign_wrong) = (0usize, f64::INFINITY, 0usize);
     for k in 1..=170 {
         let theta = (0.5 * k as f64).to_radians();
-        let (n, e) = (hd::output("curve_n_s2", &[("theta", theta)]), hd::output("reality_s2", &[("theta", theta)]));
+        let (n, e) = (
+            hd::output("curve_n_s2", &[("theta", theta)]),
+            hd::output("reality_s2", &[("theta", theta)]),
+        );
         below += usize::from(n < e - 1e-12);
         if (theta - th_i).abs() > 0.02 {
             min_gap = min_gap.min(n - e);
@@ -741,7 +754,9 @@ fn marche_17() -> Vec<Claim> {
             sign_wrong += usize::from((v < 0.0) != (f > 1.0));
         }
     }
-    let contact = (hd::output("curve_n_s2", &[("theta", th_i)]) - hd::output("reality_s2", &[("theta", th_i)])).abs();
+    let contact = (hd::output("curve_n_s2", &[("theta", th_i)])
+        - hd::output("reality_s2", &[("theta", th_i)]))
+    .abs();
     // Normal play: θ ≤ θ_I, s ≤ 1 in the real region: n1 never walks; n2 walks exactly above (N);
     // |D(n2)| < 1/2; the curve D(n1) = +1/2 lies beyond 56,3°.
     let (mut n1_walks, mut n2_wrong, mut max_d2, mut pts) = (0usize, 0usize, 0.0f64, 0usize);
@@ -794,7 +809,8 @@ fn marche_17() -> Vec<Claim> {
             }
             region_pts += 1;
             let inside = s > boundary;
-            let acceptable = e_roots(theta, s).is_some_and(|(_, n2)| s_of(theta, s, n2) > 0.0 && n2.abs() <= s);
+            let acceptable =
+                e_roots(theta, s).is_some_and(|(_, n2)| s_of(theta, s, n2) > 0.0 && n2.abs() <= s);
             region_wrong += usize::from(inside != acceptable);
         }
     }
@@ -862,7 +878,9 @@ fn h_17_bis() -> Vec<Claim> {
     let others = [-3.24, 1.6];
     let other_roots: Vec<f64> = others
         .iter()
-        .filter_map(|&g| bisect(|w| 3.0 * w.powi(3) + 4.0 * w * w - 14.0 * w + 4.0, g - 0.3, g + 0.3))
+        .filter_map(|&g| {
+            bisect(|w| 3.0 * w.powi(3) + 4.0 * w * w - 14.0 * w + 4.0, g - 0.3, g + 0.3)
+        })
         .collect();
     vec![
         Claim::new(
@@ -907,7 +925,8 @@ fn practical_18() -> Vec<Claim> {
         let theta: f64 = f64::to_radians(deg);
         if let Some((_, n2)) = e_roots(theta, 0.5) {
             min_k = min_k.min(s_of(theta, 0.5, n2));
-            sim_unstable += usize::from(perturb(&hoop, (theta, 0.5, n2), 1e-10, 0.005, 120.0).diverged);
+            sim_unstable +=
+                usize::from(perturb(&hoop, (theta, 0.5, n2), 1e-10, 0.005, 120.0).diverged);
         }
     }
     // Threshold speed sR = 0,5 sqrt(gR): bisection on the generated physical (S) for several R.
@@ -930,7 +949,8 @@ fn practical_18() -> Vec<Claim> {
         }
         fall.push(t);
     }
-    let fall_ratio = fall.get(1).copied().unwrap_or(f64::NAN) / fall.first().copied().unwrap_or(f64::NAN);
+    let fall_ratio =
+        fall.get(1).copied().unwrap_or(f64::NAN) / fall.first().copied().unwrap_or(f64::NAN);
     vec![
         Claim::new(
             "hoop-practical-threshold",
@@ -969,7 +989,16 @@ fn neglected_term() -> Claim {
     // The generated linearised equations of n° 19 with and without the term n^2 sin θ cos θ.
     let run = |m: f64, m1: f64, with_term: bool| {
         let rhs = |x: [f64; 3]| {
-            let v = hd::eval(&[("R", r), ("g", g), ("s", s), ("M", m), ("M1", m1), ("theta", x[0]), ("p", x[1]), ("n", x[2])]);
+            let v = hd::eval(&[
+                ("R", r),
+                ("g", g),
+                ("s", s),
+                ("M", m),
+                ("M1", m1),
+                ("theta", x[0]),
+                ("p", x[1]),
+                ("n", x[2]),
+            ]);
             let extra = if with_term { x[2] * x[2] * x[0].sin() * x[0].cos() } else { 0.0 };
             [x[1], v["stick_dp"] + extra, v["stick_dn"]]
         };
@@ -1001,7 +1030,9 @@ fn neglected_term() -> Claim {
             not_larger += reduced;
         } else {
             // The front push turns θ from - to +: the delay of that reversal (units 1/h).
-            let cross = |v: &[f64]| v.iter().position(|x| *x > 0.0).map_or(f64::NAN, |i| (i + 1) as f64 * 6.0 / 600.0);
+            let cross = |v: &[f64]| {
+                v.iter().position(|x| *x > 0.0).map_or(f64::NAN, |i| (i + 1) as f64 * 6.0 / 600.0)
+            };
             front = (reduced, cross(&with) - cross(&without));
         }
     }

@@ -110,16 +110,17 @@ fn claims_snapshot() {
 #[test]
 fn claims_verdicts() {
     let claims = carvallo_report::hoop::claims();
-    let get = |id: &str| {
-        claims.iter().find(|c| c.id == id).unwrap_or_else(|| panic!("no claim {id}"))
-    };
+    let get =
+        |id: &str| claims.iter().find(|c| c.id == id).unwrap_or_else(|| panic!("no claim {id}"));
     for c in &claims {
         assert_eq!(c.verdict, Verdict::Agrees, "{}: {}", c.id, c.evidence_text());
     }
     // The fall laws are first-order: their error falls with the release.
     for id in ["hoop-fall-law-pendular", "hoop-fall-law-exponential", "hoop-fall-law-uniform"] {
         let e = &get(id).evidence;
-        assert!(e["rel_err_delta_1e-3"] < 0.02 && e["rel_err_delta_1e-3"] < e["rel_err_delta_2e-3"]);
+        assert!(
+            e["rel_err_delta_1e-3"] < 0.02 && e["rel_err_delta_1e-3"] < e["rel_err_delta_2e-3"]
+        );
     }
     let s = &get("hoop-stability-condition").evidence;
     assert_eq!(s["outcomes_agreeing"], s["cases"]);

@@ -72,9 +72,8 @@ fn claims_snapshot() {
 #[test]
 fn claims_verdicts() {
     let claims = carvallo_report::hoop_discussion::claims();
-    let get = |id: &str| {
-        claims.iter().find(|c| c.id == id).unwrap_or_else(|| panic!("no claim {id}"))
-    };
+    let get =
+        |id: &str| claims.iter().find(|c| c.id == id).unwrap_or_else(|| panic!("no claim {id}"));
     let findings = [
         ("hoop-graeffe-table-cells", Verdict::MemoirError),
         ("hoop-graeffe-separated", Verdict::MemoirError),
@@ -89,7 +88,9 @@ fn claims_verdicts() {
     assert!(w["inside_S"] > 0.0 && w["simulated_roots"] > 0.0);
     // Half a thousandth: true of the equation's residual, not of the root u.
     let h = &get("hoop-root-squaring-half-thousandth").evidence;
-    assert!(h["exact_residual_over_14u"] < 5e-4 && h["rel_error_t"] < 5e-4 && h["rel_error_u"] > 1e-3);
+    assert!(
+        h["exact_residual_over_14u"] < 5e-4 && h["rel_error_t"] < 5e-4 && h["rel_error_u"] > 1e-3
+    );
     // The Horner tableau is exact; the root-squaring table has two unfaithful cells (784^2).
     assert_eq!(get("hoop-horner-tableau-cells").evidence["cells_differing"], 0.0);
     let g = &get("hoop-graeffe-table-cells").evidence;

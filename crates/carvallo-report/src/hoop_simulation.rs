@@ -1,5 +1,6 @@
 //! Simulations of the generated hoop equations (system (2) of n° 7, [`carvallo::hoop::Hoop`])
-//! that the hoop's claims are checked on: perturbed steady states, the return of the fall angle,
+//! that the claims of the hoop and of the hoop discussion are checked on (shared here so that
+//! neither report imports the other): perturbed steady states, the return of the fall angle,
 //! and the Taylor coefficients of the fall rate at the start of a fall.
 
 use carvallo::hoop::Hoop;
