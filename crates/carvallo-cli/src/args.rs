@@ -83,9 +83,8 @@ pub fn toml_model(model: &str) -> Result<WhippleParams, String> {
 
 /// The text of the parameter file `model`.
 fn read_model_file(model: &str) -> Result<String, String> {
-    std::fs::read_to_string(model).map_err(|e| {
-        format!("cannot read model file `{model}`: {}", e.to_string().to_lowercase())
-    })
+    std::fs::read_to_string(model)
+        .map_err(|e| format!("cannot read model file `{model}`: {}", e.to_string().to_lowercase()))
 }
 
 /// `list` as owned words, as the command line gives them (for the subcommands' tests).
@@ -117,7 +116,10 @@ mod tests {
     #[test]
     fn models_are_named_in_their_errors() {
         assert_eq!(model("benchmark"), Ok(WhippleParams::benchmark()));
-        for e in [model("/nonexistent/bike.toml").unwrap_err(), toml_model("/nonexistent/bike.toml").unwrap_err()] {
+        for e in [
+            model("/nonexistent/bike.toml").unwrap_err(),
+            toml_model("/nonexistent/bike.toml").unwrap_err(),
+        ] {
             assert!(e.starts_with("cannot read model file `/nonexistent/bike.toml`"), "{e}");
         }
     }

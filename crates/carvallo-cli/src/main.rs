@@ -61,6 +61,11 @@ pub(crate) const COMMANDS: [Command; 10] = [
                 what: "print the memoir concordance (text table, or JSON with --json)",
             },
             Form {
+                usage: "carvallo report --claims [--json]",
+                what: "print the memoir's claims checked: claim, how checked,
+evidence, verdict (JSON array with --json)",
+            },
+            Form {
                 usage: "carvallo report --out DIR [--model benchmark|FILE.toml|FILE.txt]",
                 what: "write DIR/report.md and DIR/report.html (concordance, errata)
 and the SVG figures; a FILE.txt with uncertainties
@@ -189,7 +194,7 @@ Options:
 /// The words `carvallo --help` (or `carvallo report --help`) accepts beside itself: the
 /// command and the option its options section describes. Any other word is named as unknown,
 /// so that a typo is never silent.
-const HELP_WORDS: [&str; 4] = ["-h", "--help", "report", "--json"];
+const HELP_WORDS: [&str; 5] = ["-h", "--help", "report", "--json", "--claims"];
 
 /// Where the description of a form starts in the help.
 const WHAT_COLUMN: usize = 32;

@@ -343,7 +343,11 @@ mod tests {
             assert!(files.iter().any(|f| f == fig.file), "{} not in {files:?}", fig.file);
             let svg = std::fs::read_to_string(dir.join(fig.file)).expect(fig.file);
             assert!(svg.starts_with("<svg") && svg.contains("<text"), "{}", fig.file);
-            assert!(md.contains(&format!("({})", fig.file)), "report.md does not link {}", fig.file);
+            assert!(
+                md.contains(&format!("({})", fig.file)),
+                "report.md does not link {}",
+                fig.file
+            );
         }
         std::fs::remove_dir_all(&dir).expect("scratch directory removed");
     }

@@ -1,8 +1,12 @@
-//! `carvallo report [--json]` and `carvallo report --out DIR [--model benchmark|FILE]`: the
-//! memoir concordance.
+//! `carvallo report [--json]`, `carvallo report --claims [--json]` and `carvallo report --out
+//! DIR [--model benchmark|FILE]`: the memoir concordance.
 //!
 //! `report` prints it as an aligned text table, `report --json` as a JSON array of objects with
 //! the keys `section`, `quantity`, `memoir`, `derived`, `rel_diff`, `verdict` and `note`;
+//! `report --claims` prints the memoir's claims checked (claim, how checked, evidence, verdict,
+//! note; `carvallo_report::claims`) and the count of the memoir's assertions, `--claims --json`
+//! them as a JSON array with the keys `id`, `section`, `claim`, `how`, `evidence`, `verdict`,
+//! `note`;
 //! `report --out DIR` writes the report directory ([`crate::report_dir`]) and prints the paths
 //! it wrote. Its usage is the whole help of `carvallo` (the table [`crate::COMMANDS`] says so).
 //!
@@ -17,16 +21,19 @@ use crate::UsageError;
 #[derive(Debug, PartialEq, Eq)]
 enum Command {
     Print { json: bool },
+    Claims { json: bool },
     Write { dir: String, model: String },
 }
 
 fn parse(args: &[String]) -> Result<Command, UsageError> {
-    let (mut json, mut out, mut model) = (false, None, None);
+    let (mut json, mut claims, mut out, mut model) = (false, false, None, None);
     let mut it = args.iter().skip(1);
     while let Some(arg) = it.next() {
         match arg.as_str() {
             "--json" if json => return Err(UsageError::Repeated(arg.clone())),
             "--json" => json = true,
+            "--claims" if claims => return Err(UsageError::Repeated(arg.clone())),
+            "--claims" => claims = true,
             "--out" | "--model" => {
                 let slot = if arg == "--out" { &mut out } else { &mut model };
                 if slot.is_some() {
@@ -40,10 +47,13 @@ fn parse(args: &[String]) -> Result<Command, UsageError> {
     }
     match (out, model) {
         (Some(_), _) if json => Err(UsageError::Conflict("--json", "--out")),
+        (Some(_), _) if claims => Err(UsageError::Conflict("--claims", "--out")),
+        (None, Some(_)) if claims => Err(UsageError::Conflict("--model", "--claims")),
         (Some(dir), model) => {
             Ok(Command::Write { dir, model: model.unwrap_or_else(|| "benchmark".into()) })
         }
         (None, Some(_)) => Err(UsageError::Conflict("--model", "the printed report (use --out)")),
+        (None, None) if claims => Ok(Command::Claims { json }),
         (None, None) => Ok(Command::Print { json }),
     }
 }
@@ -57,6 +67,18 @@ pub fn main(args: &[String]) -> anyhow::Result<String> {
             let params = crate::args::uncertain_model(&model).map_err(report_dir::BadInput)?;
             let files = report_dir::write_report(std::path::Path::new(&dir), &params, &model)?;
             Ok(files.iter().map(|f| format!("{dir}/{f}\n")).collect())
+        }
+        Command::Claims { json } => {
+            let claims = carvallo_report::all_claims();
+            Ok(if json {
+                format!("{}\n", carvallo_report::claims::render_claims_json(&claims))
+            } else {
+                let summary = carvallo_report::render::markdown::claims_summary(
+                    &claims,
+                    &carvallo_report::all_assertions(),
+                );
+                format!("{}{summary}\n", carvallo_report::claims::render_claims_text(&claims))
+            })
         }
         Command::Print { json } => {
             let entries = carvallo_report::all_entries();
@@ -79,6 +101,15 @@ mod tests {
     fn parses_the_printed_and_the_written_report() {
         assert_eq!(parse(&args(&["report"])), Ok(Command::Print { json: false }));
         assert_eq!(parse(&args(&["report", "--json"])), Ok(Command::Print { json: true }));
+        assert_eq!(parse(&args(&["report", "--claims"])), Ok(Command::Claims { json: false }));
+        assert_eq!(
+            parse(&args(&["report", "--json", "--claims"])),
+            Ok(Command::Claims { json: true })
+        );
+        assert_eq!(
+            parse(&args(&["report", "--claims", "--out", "r"])).unwrap_err().to_string(),
+            "`--claims` cannot be combined with `--out`"
+        );
         assert_eq!(
             parse(&args(&["report", "--out", "r"])),
             Ok(Command::Write { dir: "r".into(), model: "benchmark".into() })

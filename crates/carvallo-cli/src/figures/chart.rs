@@ -99,7 +99,13 @@ pub(super) fn color(i: usize) -> RGBColor {
 }
 
 impl Chart {
-    pub(super) fn new(title: &str, x_desc: &str, y_desc: &str, x: Range<f64>, y: Range<f64>) -> Chart {
+    pub(super) fn new(
+        title: &str,
+        x_desc: &str,
+        y_desc: &str,
+        x: Range<f64>,
+        y: Range<f64>,
+    ) -> Chart {
         Chart {
             title: title.to_string(),
             x_desc: x_desc.to_string(),
@@ -299,7 +305,12 @@ impl Chart {
         Ok(())
     }
 
-    pub(super) fn draw_polar_grid(&self, chart: &mut Context<'_, '_>, r_max: f64, step: f64) -> DrawResult {
+    pub(super) fn draw_polar_grid(
+        &self,
+        chart: &mut Context<'_, '_>,
+        r_max: f64,
+        step: f64,
+    ) -> DrawResult {
         let grid = GREY.mix(0.5).stroke_width(1);
         let theta_max = (self.x.end / r_max).clamp(-1.0, 1.0).asin().to_degrees().max(step);
         let ring_step = nice_step(r_max);

@@ -161,12 +161,7 @@ pub(super) fn fig_13(_: &WhippleParams) -> Result<String> {
         -9.0..5.0,
     );
     c.add(Curve::new("exact, γ = 0° … 90°", locus, color(0), Stroke::Solid));
-    c.add(Curve::new(
-        "memoir n° 54",
-        LOCUS_CM.to_vec(),
-        color(1),
-        Stroke::Points,
-    ));
+    c.add(Curve::new("memoir n° 54", LOCUS_CM.to_vec(), color(1), Stroke::Points));
     for d in
         data.iter().filter(|d| (d[0].round() - d[0]).abs() < 1e-9 && d[0].round() as i64 % 20 == 0)
     {
