@@ -82,6 +82,17 @@ def test_the_browser_finds_every_entry_figure_and_erratum(report):
     for v in ["agrees", "rounding", "memoir-error", "ocr", "derivation-differs"]:
         assert f'id="only-{v}"' in dom and f'href="#only-{v}"' in dom
     assert "Uncertainty of the bicycle" in dom
+    # The memoir's claims: one row per claim in the chapters' tables, failed ones in the errata.
+    claims = json.loads(subprocess.run(
+        [str(carvallo_bin()), "report", "--claims", "--json"], check=True, capture_output=True, text=True,
+    ).stdout)
+    claim_rows = re.findall(r'<tr class="claim v-([a-z-]+)" id="claim-([a-z0-9-]+)">', dom)
+    assert len(claim_rows) == len(claims) > 100
+    assert sorted(i for _, i in claim_rows) == sorted(c["id"] for c in claims)
+    for c in claims:
+        if c["verdict"] != "agrees":
+            assert f'id="claim-erratum-{c["id"]}"' in dom and f'href="#claim-{c["id"]}"' in dom
+    assert f'<p id="claims-summary">{len(claims)} claims:' in dom
 
 
 def test_the_page_renders_to_a_screenshot(report, tmp_path):
