@@ -148,22 +148,7 @@ fn expected_claims() -> BTreeMap<&'static str, Verdict> {
 #[test]
 fn claims_have_the_expected_verdicts() {
     let claims = carvallo_report::bicycle::steady::claims();
-    let expected = expected_claims();
-    assert_eq!(
-        claims.len(),
-        expected.len(),
-        "claims: {:?}",
-        claims.iter().map(|c| &c.id).collect::<Vec<_>>()
-    );
-    for c in &claims {
-        assert_eq!(
-            expected.get(c.id.as_str()),
-            Some(&c.verdict),
-            "{}: {}",
-            c.id,
-            c.evidence_text()
-        );
-    }
+    common::assert_claim_verdicts(&claims, &expected_claims());
 }
 
 /// n° 85: the reduction to the hoop and the unicycle is exact, and the frame's term (4) is

@@ -55,3 +55,22 @@ pub fn assert_formulas_agree_within_tolerance(entries: &[Entry]) {
         }
     }
 }
+
+/// Every claim of a report has the verdict `expected` gives its id, and `expected` names no
+/// other claim.
+pub fn assert_claim_verdicts(
+    claims: &[carvallo_report::Claim],
+    expected: &BTreeMap<&'static str, Verdict>,
+) {
+    let ids: Vec<&str> = claims.iter().map(|c| c.id.as_str()).collect();
+    assert_eq!(claims.len(), expected.len(), "claims: {ids:?}");
+    for c in claims {
+        assert_eq!(
+            expected.get(c.id.as_str()),
+            Some(&c.verdict),
+            "{}: {}",
+            c.id,
+            c.evidence_text()
+        );
+    }
+}

@@ -54,11 +54,7 @@ impl FallLaw {
     /// The law from the state $(\theta_0, s_0, n_0)$, $p_0 = 0$: $f$ from the generated (E)
     /// ([`Hoop::equilibrium`]) and $f_1$ from the generated (S) ([`Hoop::stability`]).
     pub fn new(hoop: &Hoop, theta0: f64, s0: f64, n0: f64) -> FallLaw {
-        FallLaw {
-            theta0,
-            f: hoop.equilibrium(theta0, s0, n0),
-            f1: -hoop.stability(theta0, s0, n0),
-        }
+        FallLaw { theta0, f: hoop.equilibrium(theta0, s0, n0), f1: -hoop.stability(theta0, s0, n0) }
     }
 
     /// The regime: the sign of $f_1$ (exactly zero gives [`FallRegime::Uniform`]).

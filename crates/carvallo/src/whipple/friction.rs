@@ -39,10 +39,10 @@
 use nalgebra::Matrix4;
 
 use super::{Eigenvalue, Matrices, StabilityWindow};
+use crate::numerics::eigen::eigenvalues4;
 use crate::numerics::mat2::{det, mix, Mat2};
 use crate::numerics::ode::rk4_step;
-use crate::numerics::eigen::eigenvalues4;
-use crate::whipple::stability::EigenGrid;
+use crate::whipple::stability::{window_of_critical, EigenGrid};
 
 fn add(a: &Mat2, b: &Mat2) -> Mat2 {
     std::array::from_fn(|r| std::array::from_fn(|c| a[r][c] + b[r][c]))
@@ -160,53 +160,7 @@ pub fn damped_window(
     fr: ViscousFriction,
     grid: EigenGrid,
 ) -> Option<StabilityWindow> {
-    let f = |v: f64| critical(m, g, v, fr);
-    let mut stable: Vec<(f64, f64)> = Vec::new();
-    let (mut weave, mut capsize) = (None, None);
-    let mut prev_v = grid.vmax / grid.points as f64;
-    let mut prev = f(prev_v)?;
-    let mut open = (prev.0 < 0.0).then_some(prev_v);
-    for i in 2..=grid.points {
-        let v = grid.vmax * i as f64 / grid.points as f64;
-        let cur = f(v)?;
-        if (cur.0 < 0.0) != (prev.0 < 0.0) {
-            let (mut lo, mut hi) = (prev_v, v);
-            let mut at_hi = cur;
-            loop {
-                let mid = 0.5 * (lo + hi);
-                if mid <= lo || mid >= hi {
-                    break;
-                }
-                let fm = f(mid)?;
-                if (fm.0 < 0.0) == (prev.0 < 0.0) {
-                    lo = mid;
-                } else {
-                    hi = mid;
-                    at_hi = fm;
-                }
-            }
-            let becomes_stable = cur.0 < 0.0;
-            let complex = if becomes_stable { f(lo)?.1 } else { at_hi.1 };
-            let edge = if becomes_stable { hi } else { lo };
-            if complex && becomes_stable && weave.is_none() {
-                weave = Some(edge);
-            }
-            if !complex && capsize.is_none() {
-                capsize = Some(edge);
-            }
-            if becomes_stable {
-                open = Some(edge);
-            } else if let Some(start) = open.take() {
-                stable.push((start, edge));
-            }
-        }
-        prev_v = v;
-        prev = cur;
-    }
-    if let Some(start) = open {
-        stable.push((start, grid.vmax));
-    }
-    Some(StabilityWindow { weave_speed: weave, capsize_speed: capsize, stable })
+    window_of_critical(|v| critical(m, g, v, fr), grid)
 }
 
 /// A run of [`simulate_dry`]: the lean and steer sampled at every step, and the time the steer

@@ -354,7 +354,16 @@ fn critical(m: &Matrices, g: f64, v: f64) -> Option<(f64, bool)> {
 /// zero, the capsize speed the lowest boundary where a real eigenvalue crosses zero. `None` if
 /// the eigenvalues fail to converge at any grid point.
 pub fn eigen_window(m: &Matrices, g: f64, grid: EigenGrid) -> Option<StabilityWindow> {
-    let f = |v: f64| critical(m, g, v);
+    window_of_critical(|v| critical(m, g, v), grid)
+}
+
+/// The stable speed range on `grid` from `f(v)` = (the largest real part of the eigenvalues at
+/// speed v, whether the eigenvalue that has it is complex), as [`eigen_window`] does for the
+/// undamped bicycle (and `whipple::friction` with steer friction). `None` if `f` does.
+pub fn window_of_critical(
+    f: impl Fn(f64) -> Option<(f64, bool)>,
+    grid: EigenGrid,
+) -> Option<StabilityWindow> {
     let mut stable: Vec<(f64, f64)> = Vec::new();
     let (mut weave, mut capsize) = (None, None);
     let mut prev_v = grid.vmax / grid.points as f64;
