@@ -43,6 +43,14 @@ fn example(radius: f64, wheel_mass: f64, height: f64, c0: f64, l: f64) -> Option
     Unicycle::new(radius, 9.81, rider, Wheel::hoop(wheel_mass, radius)).ok()
 }
 
+/// The full unicycle at a seeded point `base` (its R, g, rider mu, z, A, B, C and a hoop wheel
+/// of mass mu1) with the rider's product of inertia `l`; `None` if the point is not valid.
+fn unicycle_at(base: &Point, l: f64) -> Option<Unicycle> {
+    let rider =
+        Rider { mass: base["mu"], height: base["z"], a: base["A"], b: base["B"], c: base["C"], l };
+    Unicycle::new(base["R"], base["g"], rider, Wheel::hoop(base["mu1"], base["R"])).ok()
+}
+
 /// The straight-running threshold of the full model in the unit sqrt(g/R) (`NaN` if none).
 fn threshold_units(u: &Option<Unicycle>) -> f64 {
     u.as_ref()
@@ -222,18 +230,7 @@ fn steady_needs_no_motor() -> Claim {
     }
     for base in points(false).iter().take(4) {
         // L = 0: with L > 0 the upright running is unstable (n° 78) and the run would fall.
-        let rider = Rider {
-            mass: base["mu"],
-            height: base["z"],
-            a: base["A"],
-            b: base["B"],
-            c: base["C"],
-            l: 0.0,
-        };
-        let Ok(u) = Unicycle::new(base["R"], base["g"], rider, Wheel::hoop(base["mu1"], base["R"]))
-        else {
-            continue;
-        };
+        let Some(u) = unicycle_at(base, 0.0) else { continue };
         let Some(threshold) = u.straight_running_threshold() else { continue };
         let x0 = [0.02, 0.0, 0.0, 3.0 * threshold];
         let x1 = u.simulate(x0, 1e-3, 2000);
@@ -1045,18 +1042,7 @@ fn stability_from_spin() -> Claim {
 fn fall_turns_toward_lean() -> Claim {
     let (mut turn_ok, mut right_ok, mut cases) = (true, true, 0);
     for base in points(false).iter().take(16) {
-        let rider = Rider {
-            mass: base["mu"],
-            height: base["z"],
-            a: base["A"],
-            b: base["B"],
-            c: base["C"],
-            l: 0.0,
-        };
-        let Ok(u) = Unicycle::new(base["R"], base["g"], rider, Wheel::hoop(base["mu1"], base["R"]))
-        else {
-            continue;
-        };
+        let Some(u) = unicycle_at(base, 0.0) else { continue };
         let s = 2.0 * u.rate_unit();
         for p in [0.05, -0.05] {
             // Upright, falling toward the side of p.
@@ -1465,18 +1451,7 @@ fn big_wheel_lean() -> Claim {
 fn product_is_36() -> Claim {
     let mut worst = 0.0f64;
     for base in points(false).iter().take(16) {
-        let rider = Rider {
-            mass: base["mu"],
-            height: base["z"],
-            a: base["A"],
-            b: base["B"],
-            c: base["C"],
-            l: 0.0,
-        };
-        let Ok(u) = Unicycle::new(base["R"], base["g"], rider, Wheel::hoop(base["mu1"], base["R"]))
-        else {
-            continue;
-        };
+        let Some(u) = unicycle_at(base, 0.0) else { continue };
         let Some(th) = u.straight_running_threshold() else { continue };
         let p = with(
             &hoop_wheel(base, base["mu1"]),
