@@ -25,7 +25,7 @@ use std::fmt;
 
 use nalgebra::{Matrix3, Vector3};
 
-use crate::whipple::WhippleParams;
+use crate::whipple::{BicycleDesign, WhippleError, WhippleParams};
 
 crate::scene! {
     /// The front contact constraint and its pitch derivative.
@@ -275,6 +275,14 @@ impl WhippleNonlinear {
     /// The nonlinear bicycle with the parameters `params`.
     pub fn new(params: WhippleParams) -> WhippleNonlinear {
         WhippleNonlinear { params }
+    }
+
+    /// The nonlinear bicycle of `design`, validated as [`WhippleParams::from_design`].
+    ///
+    /// # Errors
+    /// [`WhippleError`] naming the benchmark key of the field at fault.
+    pub fn from_design(design: BicycleDesign) -> Result<WhippleNonlinear, WhippleError> {
+        WhippleParams::from_design(design).map(WhippleNonlinear::new)
     }
 
     /// The parameters.
