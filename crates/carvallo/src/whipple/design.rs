@@ -236,7 +236,7 @@ impl WhippleParams {
     /// [array](BicycleDesign::to_array).
     ///
     /// # Errors
-    /// As [`from_values`](Self::from_values): a [`WhippleError::InvalidParameter`] naming the benchmark
+    /// As [`from_values`](Self::from_values): a [`WhippleError::Parameter`] naming the benchmark
     /// key of the field at fault (see [`BicycleDesign::field_path`]).
     pub fn from_design(design: BicycleDesign) -> Result<WhippleParams, WhippleError> {
         WhippleParams::from_values(design.to_array())

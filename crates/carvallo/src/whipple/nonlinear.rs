@@ -25,6 +25,8 @@ use std::fmt;
 
 use nalgebra::{Matrix3, Vector3};
 
+use crate::error::ParameterError;
+
 use crate::whipple::{BicycleDesign, WhippleError, WhippleParams};
 
 crate::scene! {
@@ -64,14 +66,7 @@ crate::scene! {
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub enum NonlinearError {
     /// An input that cannot be used.
-    InvalidParameter {
-        /// The input's name.
-        name: &'static str,
-        /// Its value.
-        value: f64,
-        /// Why, in a few lower-case words.
-        reason: &'static str,
-    },
+    Parameter(ParameterError),
     /// Newton's method found no pitch that puts the front wheel on the ground.
     NoContact {
         /// The lean (rad).
@@ -91,9 +86,7 @@ pub enum NonlinearError {
 impl fmt::Display for NonlinearError {
     fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
         match self {
-            NonlinearError::InvalidParameter { name, value, reason } => {
-                write!(f, "invalid {name} {value:?}: {reason}")
-            }
+            NonlinearError::Parameter(e) => write!(f, "{e}"),
             NonlinearError::NoContact { lean, steer } => write!(
                 f,
                 "no pitch puts the front wheel on the ground at lean {lean} rad, steer {steer} rad"
@@ -107,11 +100,21 @@ impl fmt::Display for NonlinearError {
 
 impl std::error::Error for NonlinearError {}
 
+impl From<ParameterError> for NonlinearError {
+    fn from(e: ParameterError) -> NonlinearError {
+        NonlinearError::Parameter(e)
+    }
+}
+
 fn finite(name: &'static str, value: f64) -> Result<f64, NonlinearError> {
     if value.is_finite() {
         Ok(value)
     } else {
-        Err(NonlinearError::InvalidParameter { name, value, reason: "must be finite" })
+        Err(NonlinearError::Parameter(ParameterError::InvalidParameter {
+            name,
+            value,
+            reason: "must be finite",
+        }))
     }
 }
 
@@ -329,7 +332,7 @@ impl WhippleNonlinear {
     /// (at most 50 iterations, stopping when the step is below 1e-14 rad).
     ///
     /// # Errors
-    /// [`NonlinearError::InvalidParameter`] for non-finite angles,
+    /// [`NonlinearError::Parameter`] for non-finite angles,
     /// [`NonlinearError::NoContact`] when Newton's method does not converge.
     pub fn pitch(&self, lean: f64, steer: f64, guess: f64) -> Result<f64, NonlinearError> {
         finite("lean", lean)?;
@@ -426,7 +429,7 @@ impl WhippleNonlinear {
     /// of `qd` are used; the pitch is solved from the constraint starting at `q`'s φ.
     ///
     /// # Errors
-    /// A non-finite entry is [`NonlinearError::InvalidParameter`] naming it; no contact or a
+    /// A non-finite entry is [`NonlinearError::Parameter`] naming it; no contact or a
     /// singular mass matrix as in [`pitch`](Self::pitch) and
     /// [`accelerations`](Self::accelerations).
     pub fn basu_mandal_accelerations(
@@ -548,7 +551,7 @@ impl WhippleNonlinear {
     /// and every other angle and rate zero.
     ///
     /// # Errors
-    /// [`NonlinearError::InvalidParameter`] for a non-finite speed or lean.
+    /// [`NonlinearError::Parameter`] for a non-finite speed or lean.
     pub fn initial_state(&self, speed: f64, lean0: f64) -> Result<State, NonlinearError> {
         finite("speed", speed)?;
         finite("lean0", lean0)?;
@@ -571,7 +574,7 @@ impl WhippleNonlinear {
     /// (and the first and last).
     ///
     /// # Errors
-    /// [`NonlinearError::InvalidParameter`] for a non-positive or non-finite duration or step,
+    /// [`NonlinearError::Parameter`] for a non-positive or non-finite duration or step,
     /// a step longer than the duration, more than ten million steps, or `every == 0`; no
     /// contact (the bicycle fell flat) or a singular mass matrix during the run.
     pub fn simulate(
@@ -584,34 +587,34 @@ impl WhippleNonlinear {
         for (name, v) in [("duration", duration), ("step", step)] {
             finite(name, v)?;
             if v <= 0.0 {
-                return Err(NonlinearError::InvalidParameter {
+                return Err(NonlinearError::Parameter(ParameterError::InvalidParameter {
                     name,
                     value: v,
                     reason: "must be positive",
-                });
+                }));
             }
         }
         if step > duration {
-            return Err(NonlinearError::InvalidParameter {
+            return Err(NonlinearError::Parameter(ParameterError::InvalidParameter {
                 name: "step",
                 value: step,
                 reason: "must not exceed the duration",
-            });
+            }));
         }
         let n = (duration / step).round();
         if n > 1e7 {
-            return Err(NonlinearError::InvalidParameter {
+            return Err(NonlinearError::Parameter(ParameterError::InvalidParameter {
                 name: "step",
                 value: step,
                 reason: "gives more than ten million steps",
-            });
+            }));
         }
         if every == 0 {
-            return Err(NonlinearError::InvalidParameter {
+            return Err(NonlinearError::Parameter(ParameterError::InvalidParameter {
                 name: "every",
                 value: 0.0,
                 reason: "must be positive",
-            });
+            }));
         }
         let n = n as usize;
         let h = duration / n as f64;

@@ -163,7 +163,11 @@ fn nan_and_infinite_inputs_are_typed_errors() {
             let mut v = *WhippleParams::benchmark().values();
             v[i] = bad;
             match WhippleParams::from_values(v) {
-                Err(WhippleError::InvalidParameter { key: k, reason, .. }) => {
+                Err(WhippleError::Parameter(ParameterError::InvalidParameter {
+                    name: k,
+                    reason,
+                    ..
+                })) => {
                     assert_eq!((k, reason), (*key, "must be finite"));
                 }
                 other => panic!("{key} = {bad}: {other:?}"),

@@ -7,6 +7,7 @@ use carvallo::whipple::parameter_text::UncertainParams;
 use carvallo::whipple::{
     BicycleDesign, Whipple, WhippleError, WhippleParams, BENCHMARK_TOML, FIELD_PATHS, PARAM_NAMES,
 };
+use carvallo::ParameterError;
 
 #[test]
 fn the_benchmark_reads_by_name() {
@@ -123,7 +124,11 @@ fn a_bad_field_is_named_by_its_benchmark_key() {
     assert_eq!(err.to_string(), "invalid mB -85.0: must be positive");
     assert_eq!(
         err,
-        WhippleError::InvalidParameter { key: "mB", value: -85.0, reason: "must be positive" }
+        WhippleError::from(ParameterError::InvalidParameter {
+            name: "mB",
+            value: -85.0,
+            reason: "must be positive"
+        })
     );
     assert_eq!(BicycleDesign::field_path("mB"), Some("rear_frame.mass"));
 
