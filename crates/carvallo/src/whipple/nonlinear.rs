@@ -261,18 +261,19 @@ pub struct Sample {
     pub energy: f64,
 }
 
-/// A simulated motion.
-#[derive(Clone, Debug, PartialEq)]
-pub struct Trajectory {
-    /// The integration step (s).
-    pub step: f64,
-    /// The samples, every `every` steps.
-    pub samples: Vec<Sample>,
+/// What [`WhippleNonlinear::simulate`] measures over all its steps (kept or not).
+#[derive(Clone, Copy, Debug, Default, PartialEq)]
+pub struct Diagnostics {
     /// Largest $|E(t) - E(0)|$ over all steps (J).
     pub energy_drift: f64,
     /// Largest $|h|$ of the contact constraint after Newton over all steps (m).
     pub max_contact_residual: f64,
 }
+
+/// A simulated motion: the [`Sample`]s kept, every `every` steps (`samples`, with their
+/// `times`), the integration `step` (s) and the [`Diagnostics`], whose fields are read through
+/// the trajectory (`trajectory.energy_drift`).
+pub type Trajectory = crate::numerics::ode::Trajectory<Sample, Diagnostics>;
 
 impl WhippleNonlinear {
     /// The nonlinear bicycle with the parameters `params`.
@@ -639,7 +640,8 @@ impl WhippleNonlinear {
         let mut pitch = self.pitch(s.lean, s.steer, 0.0)?;
         let first = self.sample(0.0, &s, pitch)?;
         let e0 = first.energy;
-        let mut samples = vec![first];
+        let mut trajectory = Trajectory::with_capacity(h, n / every + 2, Diagnostics::default());
+        trajectory.push(0.0, first);
         let (mut drift, mut residual) = (0.0f64, 0.0f64);
         let add = |a: &[f64; 10], k: &[f64; 10], f: f64| -> State {
             State::from_array(std::array::from_fn(|i| a[i] + f * k[i]))
@@ -659,9 +661,12 @@ impl WhippleNonlinear {
             let (e, _) = self.observe(&c);
             drift = drift.max((e - e0).abs());
             if i % every == 0 || i == n {
-                samples.push(self.sample(i as f64 * h, &s, pitch)?);
+                let t = i as f64 * h;
+                trajectory.push(t, self.sample(t, &s, pitch)?);
             }
         }
-        Ok(Trajectory { step: h, samples, energy_drift: drift, max_contact_residual: residual })
+        trajectory.diagnostics =
+            Diagnostics { energy_drift: drift, max_contact_residual: residual };
+        Ok(trajectory)
     }
 }
