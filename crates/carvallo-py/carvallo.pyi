@@ -22,6 +22,11 @@ class ParameterError(ValueError):
 def benchmark() -> dict[str, float]:
     """The benchmark bicycle of Meijaard et al. (2007), Table 1."""
 
+def design(params: Params) -> dict[str, object]:
+    """The parameters by name: wheelbase, trail, steer_axis_tilt, gravity (floats) and the dicts
+    rear_wheel, front_wheel (radius, mass, ixx, iyy) and rear_frame, front_frame (x, z, mass,
+    ixx, iyy, izz, ixz)."""
+
 def load_parameters(path: str) -> tuple[dict[str, float], dict[str, float]]:
     """(params, sigma) from a TOML file (anchors format) or a BicycleParameters text file."""
 

@@ -295,3 +295,36 @@ fn codegen_layers_point_one_way() {
     }
     assert!(wrong.is_empty(), "codegen layering rules broken:\n{}", wrong.join("\n"));
 }
+
+/// One shape per idea: an invalid input value is `carvallo::ParameterError` (other error enums
+/// carry it in a variant such as `Parameter(ParameterError)`, not a look-alike variant of their
+/// own), and a simulated motion is `carvallo::numerics::ode::Trajectory` (models name it with a
+/// type alias, not a struct of their own).
+#[test]
+fn invalid_parameters_and_trajectories_have_one_shape() {
+    let variants = ["InvalidParameter", "InvalidAngle", "InvalidValue", "InvalidInput"];
+    let mut wrong = Vec::new();
+    for path in rust_files("crates") {
+        let name = rel(&path);
+        for (n, line) in code_lines(&read(&path)) {
+            let t = line.trim_start();
+            let declares = variants.iter().find(|v| {
+                t.strip_prefix(**v).is_some_and(|rest| {
+                    let rest = rest.trim_start();
+                    rest.starts_with('{') || rest.starts_with('(') || rest.starts_with(',')
+                })
+            });
+            if let Some(v) = declares {
+                if name != "crates/carvallo/src/error.rs" {
+                    wrong.push(format!("{name}:{n}: a variant `{v}`: carry `ParameterError`"));
+                }
+            }
+            if t.contains("struct Trajectory") && name != "crates/carvallo/src/numerics/ode.rs" {
+                wrong.push(format!(
+                    "{name}:{n}: a `Trajectory` struct: alias `numerics::ode::Trajectory`"
+                ));
+            }
+        }
+    }
+    assert!(wrong.is_empty(), "one shape per idea:\n{}", wrong.join("\n"));
+}

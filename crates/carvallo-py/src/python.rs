@@ -6,7 +6,7 @@ use std::sync::atomic::AtomicUsize;
 
 use carvallo::parameter_text::UncertainParams;
 use carvallo::sweep::Method;
-use carvallo::whipple::{StabilityWindow, Whipple, WhippleParams, PARAM_NAMES};
+use carvallo::whipple::{StabilityWindow, Whipple, WhippleParams, FIELD_PATHS, PARAM_NAMES};
 use carvallo::whipple_nonlinear::WhippleNonlinear;
 use carvallo::whipple_uncertainty as unc;
 use numpy::{
@@ -82,6 +82,33 @@ fn speeds_of(speeds: &Bound<'_, PyAny>) -> PyResult<Vec<f64>> {
 #[pyfunction]
 fn benchmark(py: Python<'_>) -> PyResult<Bound<'_, PyDict>> {
     dict_of(py, WhippleParams::benchmark().values())
+}
+
+/// The parameters by name (`carvallo::whipple::BicycleDesign`): `wheelbase`, `trail`,
+/// `steer_axis_tilt`, `gravity` and the dicts `rear_wheel`, `front_wheel` (`radius`, `mass`,
+/// `ixx`, `iyy`) and `rear_frame`, `front_frame` (`x`, `z`, `mass`, `ixx`, `iyy`, `izz`,
+/// `ixz`), validated as every parameter dict.
+#[pyfunction]
+fn design<'py>(py: Python<'py>, params: &Bound<'py, PyAny>) -> PyResult<Bound<'py, PyDict>> {
+    let values = params_of(params)?.design().to_array();
+    let d = PyDict::new(py);
+    for (path, v) in FIELD_PATHS.iter().zip(values) {
+        match path.split_once('.') {
+            None => d.set_item(*path, v)?,
+            Some((part, field)) => {
+                let sub = match d.get_item(part)? {
+                    Some(sub) => sub.cast_into::<PyDict>()?,
+                    None => {
+                        let sub = PyDict::new(py);
+                        d.set_item(part, &sub)?;
+                        sub
+                    }
+                };
+                sub.set_item(field, v)?;
+            }
+        }
+    }
+    Ok(d)
 }
 
 /// Reads a parameter file: the anchors TOML format or BicycleParameters' `name = value+/-sigma`
@@ -415,6 +442,7 @@ fn carvallo_module(m: &Bound<'_, PyModule>) -> PyResult<()> {
     m.add("PARAM_NAMES", PyList::new(py, PARAM_NAMES)?)?;
     m.add("__version__", env!("CARGO_PKG_VERSION"))?;
     m.add_function(wrap_pyfunction!(benchmark, m)?)?;
+    m.add_function(wrap_pyfunction!(design, m)?)?;
     m.add_function(wrap_pyfunction!(load_parameters, m)?)?;
     m.add_function(wrap_pyfunction!(parse_parameters, m)?)?;
     m.add_function(wrap_pyfunction!(matrices, m)?)?;

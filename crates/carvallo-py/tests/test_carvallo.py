@@ -17,6 +17,17 @@ def test_benchmark_names_and_values():
     assert p["mB"] == 85.0
 
 
+
+def test_design_names_every_parameter():
+    d = carvallo.design(carvallo.benchmark())
+    assert (d["wheelbase"], d["trail"], d["steer_axis_tilt"]) == (1.02, 0.08, math.pi / 10)
+    assert d["rear_frame"]["mass"] == 85.0
+    assert d["front_wheel"] == {"radius": 0.35, "mass": 3.0, "ixx": 0.1405, "iyy": 0.28}
+    assert len(d["rear_frame"]) == len(d["front_frame"]) == 7
+    bad = dict(carvallo.benchmark(), mB=-85.0)
+    with pytest.raises(carvallo.ParameterError, match="invalid mB -85.0: must be positive"):
+        carvallo.design(bad)
+
 def test_window_equals_the_cli(cli):
     w = carvallo.window(carvallo.benchmark())
     c = cli("window", "--model", "benchmark", "--json")

@@ -3,6 +3,19 @@
 //! The evaluators themselves never fail: they are straight-line floating-point code. What can be
 //! wrong is the data a user hands to a model constructor (a negative radius, a zero mass, a
 //! non-finite gravity), and that is reported here with the offending name and value.
+//!
+//! [`ParameterError`] is the one shape of "this input value is invalid". The models' own error
+//! enums, which add the failures that are not about one value (a parse error, no contact, no
+//! convergence), carry it in a `Parameter` variant with a `From` conversion, so that `?` lifts
+//! it and the message is the same everywhere (`invalid <name> <value>: <reason>`):
+//! [`WhippleError::Parameter`](crate::whipple::WhippleError::Parameter) (its name is the
+//! benchmark key), [`NonlinearError::Parameter`](crate::whipple::nonlinear::NonlinearError::Parameter),
+//! [`TurnError::Parameter`](crate::bicycle::turn::TurnError::Parameter) and
+//! [`ContactError::Parameter`](crate::bicycle::geometry::ContactError::Parameter) (reached
+//! through [`RestError::Contact`](crate::bicycle::rest::RestError::Contact)). The sweeps'
+//! [`SweepError::InvalidCount`](crate::whipple::sweep::SweepError::InvalidCount) (an integer)
+//! and [`DesignsError::InvalidSpread`](crate::whipple::sweep::DesignsError::InvalidSpread) (a
+//! spread of a named parameter, with its own message) keep their shapes.
 
 use std::fmt;
 

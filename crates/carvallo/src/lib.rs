@@ -22,8 +22,9 @@
 //!   [`bicycle::rest`], [`bicycle::steady`], [`bicycle::straight`], [`bicycle::turn`]).
 //!
 //! [`artifacts`] embeds `generated/` (the only `include_str!` of it) and [`error`] holds the
-//! one parameter error. The measurements of `carvallo bench` live in the command line
-//! (`crates/carvallo-cli/src/bench/`).
+//! one parameter error, which every model's error carries; [`numerics::ode::Trajectory`] is
+//! the one shape of a simulated motion. The measurements of `carvallo bench` live in the
+//! command line (`crates/carvallo-cli/src/bench/`).
 //!
 //! # Where the old paths went
 //!
@@ -47,6 +48,16 @@
 //! | `carvallo::bench::{Rng, random_design}` | [`numerics::rng::SplitMix64`], [`WhippleParams::perturbed`](whipple::WhippleParams::perturbed) |
 //! | `carvallo::bench::reference_speeds` | [`carvallo::whipple::stability::reference_speeds`](whipple::stability::reference_speeds) |
 //! | `carvallo::bench::{run, Config, Report, render_text, ...}` | the `carvallo` binary (`crates/carvallo-cli/src/bench/`) |
+//!
+//! The shapes that were repeated became one (issue 12):
+//!
+//! | old shape | new shape |
+//! |---|---|
+//! | a parameter set by string key, `params.get("mB")` | still there; by name: [`whipple::BicycleDesign`] (`design.rear_frame.mass`), [`WhippleParams::design`](whipple::WhippleParams::design), [`WhippleParams::from_design`](whipple::WhippleParams::from_design), [`Whipple::from_design`](whipple::Whipple::from_design) |
+//! | `WhippleError::InvalidParameter { key, value, reason }` | [`WhippleError::Parameter`](whipple::WhippleError::Parameter)`(ParameterError::InvalidParameter { name, value, reason })`, `name` the key; same message |
+//! | `NonlinearError::InvalidParameter { .. }`, `TurnError::InvalidParameter { .. }`, `ContactError::InvalidAngle { .. }` | `NonlinearError::Parameter`, `TurnError::Parameter`, `ContactError::Parameter`, each carrying a [`ParameterError`] (`From` for `?`); same messages |
+//! | `hoop::Trajectory { states, energy0, max_energy_drift }` | [`numerics::ode::Trajectory`]`<[f64; 4], hoop::EnergyDrift>` ([`hoop::Trajectory`]): `states` is `samples` (with `times`), `energy0` and `max_energy_drift` read through it |
+//! | `whipple::nonlinear::Trajectory { step, samples, energy_drift, max_contact_residual }` | [`numerics::ode::Trajectory`]`<Sample, Diagnostics>` ([`whipple::nonlinear::Trajectory`]): the same fields read the same way, plus `times` |
 
 #![warn(missing_docs)]
 

@@ -54,15 +54,8 @@ crate::scene! {
 /// Why the contact equations have no acceptable solution at the given lean and steer.
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub enum ContactError {
-    /// An angle that is not finite or outside the range the model covers.
-    InvalidAngle {
-        /// `"theta"` or `"gamma"`.
-        name: &'static str,
-        /// The rejected value (rad).
-        value: f64,
-        /// Why, in a few lower-case words.
-        reason: &'static str,
-    },
+    /// An angle that is not finite or outside the range the model covers: `theta` or `gamma`.
+    Parameter(ParameterError),
     /// Newton's iteration (direct, then by continuation from the upright frame) found no
     /// solution with the front wheel touching the ground at its lowest point.
     NoContact {
@@ -78,9 +71,7 @@ pub enum ContactError {
 impl fmt::Display for ContactError {
     fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
         match self {
-            ContactError::InvalidAngle { name, value, reason } => {
-                write!(f, "invalid {name} {value:?}: {reason}")
-            }
+            ContactError::Parameter(e) => write!(f, "{e}"),
             ContactError::NoContact { theta, gamma, reason } => {
                 write!(f, "no front contact at theta {theta:?} rad, gamma {gamma:?} rad: {reason}")
             }
@@ -89,6 +80,12 @@ impl fmt::Display for ContactError {
 }
 
 impl std::error::Error for ContactError {}
+
+impl From<ParameterError> for ContactError {
+    fn from(e: ParameterError) -> ContactError {
+        ContactError::Parameter(e)
+    }
+}
 
 /// A solution of the contact equations.
 #[derive(Clone, Copy, Debug, PartialEq)]
@@ -323,23 +320,23 @@ impl Geometry {
     /// μ is returned in $(-\pi, \pi]$.
     ///
     /// # Errors
-    /// [`ContactError::InvalidAngle`] when θ is not finite or $|\theta| \ge \pi/2$ (the frame
+    /// [`ContactError::Parameter`] when θ is not finite or $|\theta| \ge \pi/2$ (the frame
     /// lying on the ground) or γ is not finite; [`ContactError::NoContact`] when no acceptable
     /// solution is found.
     pub fn solve(&self, theta: f64, gamma: f64) -> Result<Contact, ContactError> {
         if !theta.is_finite() || theta.abs() >= std::f64::consts::FRAC_PI_2 {
-            return Err(ContactError::InvalidAngle {
+            return Err(ContactError::Parameter(ParameterError::InvalidParameter {
                 name: "theta",
                 value: theta,
                 reason: "must be finite with |theta| < pi/2",
-            });
+            }));
         }
         if !gamma.is_finite() {
-            return Err(ContactError::InvalidAngle {
+            return Err(ContactError::Parameter(ParameterError::InvalidParameter {
                 name: "gamma",
                 value: gamma,
                 reason: "must be finite",
-            });
+            }));
         }
         let fo = self.first_order(gamma);
         let s_start = self.sigma0 + if fo.sigma1.is_finite() { fo.sigma1 } else { 0.0 };

@@ -60,14 +60,7 @@ pub const MAX_GAMMA: f64 = 1.0;
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub enum TurnError {
     /// An input that cannot be used.
-    InvalidParameter {
-        /// The input's name.
-        name: &'static str,
-        /// Its value.
-        value: f64,
-        /// Why, in a few lower-case words.
-        reason: &'static str,
-    },
+    Parameter(ParameterError),
     /// Newton's method found no lean that balances the turn.
     NoSteadyTurn {
         /// The handlebar angle γ (rad).
@@ -82,9 +75,7 @@ pub enum TurnError {
 impl fmt::Display for TurnError {
     fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
         match self {
-            TurnError::InvalidParameter { name, value, reason } => {
-                write!(f, "invalid {name} {value:?}: {reason}")
-            }
+            TurnError::Parameter(e) => write!(f, "{e}"),
             TurnError::NoSteadyTurn { gamma, speed } => write!(
                 f,
                 "no steady turn with the handlebar held at gamma {gamma} rad and speed {speed} m/s"
@@ -104,8 +95,7 @@ impl From<NonlinearError> for TurnError {
 
 impl From<ParameterError> for TurnError {
     fn from(e: ParameterError) -> TurnError {
-        let ParameterError::InvalidParameter { name, value, reason } = e;
-        TurnError::InvalidParameter { name, value, reason }
+        TurnError::Parameter(e)
     }
 }
 
@@ -321,32 +311,32 @@ impl LockedSteer {
 
     fn check_inputs(gamma: f64, speed: f64) -> Result<(), TurnError> {
         if !gamma.is_finite() {
-            return Err(TurnError::InvalidParameter {
+            return Err(TurnError::Parameter(ParameterError::InvalidParameter {
                 name: "gamma",
                 value: gamma,
                 reason: "must be finite",
-            });
+            }));
         }
         if gamma.abs() >= MAX_GAMMA {
-            return Err(TurnError::InvalidParameter {
+            return Err(TurnError::Parameter(ParameterError::InvalidParameter {
                 name: "gamma",
                 value: gamma,
                 reason: "must lie strictly between -1 and 1 rad",
-            });
+            }));
         }
         if !speed.is_finite() {
-            return Err(TurnError::InvalidParameter {
+            return Err(TurnError::Parameter(ParameterError::InvalidParameter {
                 name: "speed",
                 value: speed,
                 reason: "must be finite",
-            });
+            }));
         }
         if speed < 0.0 {
-            return Err(TurnError::InvalidParameter {
+            return Err(TurnError::Parameter(ParameterError::InvalidParameter {
                 name: "speed",
                 value: speed,
                 reason: "must not be negative",
-            });
+            }));
         }
         Ok(())
     }
@@ -357,7 +347,7 @@ impl LockedSteer {
     /// the step is below 1e-13 rad; the derivative by a central difference of [`STEP_LEAN`]).
     ///
     /// # Errors
-    /// [`TurnError::InvalidParameter`] for a non-finite or out-of-range γ ([`MAX_GAMMA`]) or a
+    /// [`TurnError::Parameter`] for a non-finite or out-of-range γ ([`MAX_GAMMA`]) or a
     /// negative or non-finite speed; [`TurnError::NoSteadyTurn`] when Newton's method does not
     /// converge to a lean below 1.4 rad or the front wheel leaves the ground on the way.
     pub fn steady_turn(&self, gamma: f64, speed: f64) -> Result<SteadyTurn, TurnError> {

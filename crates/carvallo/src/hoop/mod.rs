@@ -120,11 +120,10 @@ pub struct Hoop {
     g: f64,
 }
 
-/// A trajectory computed by [`Hoop::simulate_pns`].
-#[derive(Clone, Debug, PartialEq)]
-pub struct Trajectory {
-    /// The states $(\theta, p, n, s)$ at times $0, \Delta t, \dots, N\Delta t$ ($N + 1$ states).
-    pub states: Vec<[f64; 4]>,
+/// What [`Hoop::simulate_pns`] measures over a run: the energy, which the exact motion
+/// conserves (n° 7), and how far the integrator drifted from it.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct EnergyDrift {
     /// The energy $T + V$ of the first state (J).
     pub energy0: f64,
     /// $\max_k |E_k - E_0|$ over the trajectory (J): the integrator's energy drift, a measure of
@@ -132,12 +131,18 @@ pub struct Trajectory {
     pub max_energy_drift: f64,
 }
 
-impl Trajectory {
+impl EnergyDrift {
     /// The energy drift relative to the initial energy, $\max_k |E_k - E_0| / |E_0|$.
     pub fn relative_energy_drift(&self) -> f64 {
         self.max_energy_drift / self.energy0.abs()
     }
 }
+
+/// A trajectory computed by [`Hoop::simulate_pns`]: the states $(\theta, p, n, s)$ at times
+/// $0, \Delta t, \dots, N\Delta t$ ($N + 1$ samples) and the [`EnergyDrift`], whose fields and
+/// [`relative_energy_drift`](EnergyDrift::relative_energy_drift) are read through the
+/// trajectory.
+pub type Trajectory = crate::numerics::ode::Trajectory<[f64; 4], EnergyDrift>;
 
 impl Hoop {
     /// A hoop of radius $R$ = `radius` (m), mass $\mu$ = `mass` (kg), under the gravitational
@@ -330,10 +335,11 @@ impl Hoop {
     /// // Leaning 0.1 rad, rolling fast (s = 3 sqrt(g/R)), not turning, not falling.
     /// let s = 3.0 * hoop.rate_unit();
     /// let traj = hoop.simulate_pns([0.1, 0.0, 0.0, s], 1e-3, 2000)?;
-    /// assert_eq!(traj.states.len(), 2001);
+    /// assert_eq!(traj.len(), 2001);
+    /// assert!((traj.duration() - 2.0).abs() < 1e-12);
     /// assert!(traj.relative_energy_drift() < 1e-9);
     /// // Fast rolling is stable (n° 14): the lean stays bounded.
-    /// assert!(traj.states.iter().all(|x| x[0].abs() < 0.5));
+    /// assert!(traj.samples.iter().all(|x| x[0].abs() < 0.5));
     /// # Ok::<(), carvallo::ParameterError>(())
     /// ```
     pub fn simulate_pns(
@@ -343,17 +349,19 @@ impl Hoop {
         steps: usize,
     ) -> Result<Trajectory, ParameterError> {
         let dt = ParameterError::check_positive("dt", dt)?;
-        let mut states = Vec::with_capacity(steps.saturating_add(1));
         let energy0 = self.energy(state0);
+        let drift = EnergyDrift { energy0, max_energy_drift: 0.0 };
+        let mut trajectory = Trajectory::with_capacity(dt, steps.saturating_add(1), drift);
         let mut max_energy_drift: f64 = 0.0;
         let mut x = state0;
-        states.push(x);
-        for _ in 0..steps {
+        trajectory.push(0.0, x);
+        for k in 1..=steps {
             x = rk4_step(|y| self.rhs_pns(y), x, dt);
             max_energy_drift = max_energy_drift.max((self.energy(x) - energy0).abs());
-            states.push(x);
+            trajectory.push(k as f64 * dt, x);
         }
-        Ok(Trajectory { states, energy0, max_energy_drift })
+        trajectory.diagnostics.max_energy_drift = max_energy_drift;
+        Ok(trajectory)
     }
 }
 

@@ -1,4 +1,7 @@
-//! The classical fourth-order Runge–Kutta step, for any fixed state size.
+//! The classical fourth-order Runge–Kutta step, for any fixed state size, and the
+//! [`Trajectory`] every model's simulation returns.
+
+use std::ops::Deref;
 
 /// One classical Runge–Kutta step of $x' = f(x)$ from `x` with step `dt`.
 pub fn rk4_step<const N: usize>(
@@ -14,9 +17,107 @@ pub fn rk4_step<const N: usize>(
     std::array::from_fn(|i| x[i] + dt / 6.0 * (k1[i] + 2.0 * k2[i] + 2.0 * k3[i] + k4[i]))
 }
 
+/// A motion computed with a fixed step: the sample times, one sample per time (a state, or a
+/// state with what the model observes at it) and what the integrator measured over the whole
+/// run (`diagnostics`: an energy drift, a constraint residual).
+///
+/// Each model names its own: [`hoop::Trajectory`](crate::hoop::Trajectory) is
+/// `Trajectory<[f64; 4], hoop::EnergyDrift>`,
+/// [`whipple::nonlinear::Trajectory`](crate::whipple::nonlinear::Trajectory) is
+/// `Trajectory<nonlinear::Sample, nonlinear::Diagnostics>`. The fields of the diagnostics are
+/// read through the trajectory (`Deref`): `trajectory.max_energy_drift` is
+/// `trajectory.diagnostics.max_energy_drift`.
+#[derive(Clone, Debug, PartialEq)]
+pub struct Trajectory<S, D = ()> {
+    /// The integration step (s); samples may be kept only every few steps.
+    pub step: f64,
+    /// The time of each sample (s), increasing, as many as [`samples`](Self::samples).
+    pub times: Vec<f64>,
+    /// The samples, in the order of [`times`](Self::times).
+    pub samples: Vec<S>,
+    /// What the integrator measured over the run.
+    pub diagnostics: D,
+}
+
+impl<S, D> Trajectory<S, D> {
+    /// An empty trajectory of step `step` with room for `capacity` samples.
+    pub fn with_capacity(step: f64, capacity: usize, diagnostics: D) -> Trajectory<S, D> {
+        Trajectory {
+            step,
+            times: Vec::with_capacity(capacity),
+            samples: Vec::with_capacity(capacity),
+            diagnostics,
+        }
+    }
+
+    /// Appends the sample `sample` at time `t` (after the last one).
+    pub fn push(&mut self, t: f64, sample: S) {
+        self.times.push(t);
+        self.samples.push(sample);
+    }
+
+    /// The number of samples.
+    pub fn len(&self) -> usize {
+        self.samples.len()
+    }
+
+    /// Whether there is no sample.
+    pub fn is_empty(&self) -> bool {
+        self.samples.is_empty()
+    }
+
+    /// The first sample and its time, `None` when there is none.
+    pub fn first(&self) -> Option<(f64, &S)> {
+        Some((*self.times.first()?, self.samples.first()?))
+    }
+
+    /// The last sample and its time, `None` when there is none.
+    pub fn last(&self) -> Option<(f64, &S)> {
+        Some((*self.times.last()?, self.samples.last()?))
+    }
+
+    /// The samples with their times, in order.
+    pub fn iter(&self) -> impl ExactSizeIterator<Item = (f64, &S)> + '_ {
+        self.times.iter().copied().zip(&self.samples)
+    }
+
+    /// The time from the first sample to the last (s), zero when there are fewer than two.
+    pub fn duration(&self) -> f64 {
+        match (self.times.first(), self.times.last()) {
+            (Some(a), Some(b)) => b - a,
+            _ => 0.0,
+        }
+    }
+}
+
+impl<S, D> Deref for Trajectory<S, D> {
+    type Target = D;
+
+    fn deref(&self) -> &D {
+        &self.diagnostics
+    }
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    #[test]
+    fn a_trajectory_keeps_times_and_samples_together() {
+        let mut t: Trajectory<[f64; 1], f64> = Trajectory::with_capacity(0.5, 3, 1e-9);
+        assert!(t.is_empty() && t.first().is_none() && t.last().is_none());
+        assert_eq!(t.duration(), 0.0);
+        for k in 0..3 {
+            t.push(k as f64 * t.step, [k as f64]);
+        }
+        assert_eq!(t.len(), 3);
+        assert_eq!(t.first(), Some((0.0, &[0.0])));
+        assert_eq!(t.last(), Some((1.0, &[2.0])));
+        assert_eq!(t.duration(), 1.0);
+        assert_eq!(t.iter().len(), 3);
+        assert_eq!(t.iter().map(|(time, x)| time + x[0]).sum::<f64>(), 4.5);
+        assert_eq!(*t, 1e-9);
+    }
 
     #[test]
     fn harmonic_oscillator_over_one_period() {

@@ -8,7 +8,8 @@
 //! 2007 benchmark (Meijaard, Papadopoulos, Ruina, Schwab, Proc. R. Soc. A 463, Table 1) by
 //! `codegen/src/derive/whipple/mod.rs`.
 //!
-//! The modules build on each other in one direction: the parameters ([`WhippleParams`]), the
+//! The modules build on each other in one direction: the parameters ([`WhippleParams`], the
+//! array the evaluators read, and [`BicycleDesign`], the same values by name), the
 //! matrices ([`Matrices`], [`matrices_scene`], [`char_poly_scene`]), the stability windows
 //! ([`stability`]) and their certified classification ([`certified`]), the model
 //! ([`Whipple`]), the sweeps over designs ([`sweep`]). The parameters, matrices and model are
@@ -16,6 +17,7 @@
 //! [`nonlinear`] (the full nonlinear equations, memoir Part II), [`uncertainty`] (bands from
 //! parameter uncertainties) and [`parameter_text`] (BicycleParameters' text format).
 
+mod design;
 mod matrices;
 mod model;
 mod params;
@@ -29,6 +31,7 @@ pub mod stability;
 pub mod sweep;
 pub mod uncertainty;
 
+pub use self::design::{BicycleDesign, Body, Wheel, FIELD_PATHS};
 pub use self::matrices::{char_poly_scene, matrices_scene, state_matrix, Mat2, Matrices};
 pub use self::model::Whipple;
 pub use self::params::{

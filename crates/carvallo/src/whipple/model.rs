@@ -10,8 +10,9 @@
 
 use nalgebra::Matrix4;
 
+use super::design::BicycleDesign;
 use super::matrices::{char_poly_scene, matrices_scene, state_matrix, Matrices};
-use super::params::WhippleParams;
+use super::params::{WhippleError, WhippleParams};
 use super::stability::{hurwitz_window_polished, StabilityWindow};
 use crate::numerics::eigen::{eigenvalues4, Eigenvalue};
 use crate::numerics::mat2::{det, mix};
@@ -46,6 +47,19 @@ impl Whipple {
             k2: [[o.k2_11, o.k2_12], [o.k2_21, o.k2_22]],
         };
         Whipple { params, matrices }
+    }
+
+    /// Validates `design` ([`WhippleParams::from_design`]) and evaluates the matrices.
+    ///
+    /// # Errors
+    /// [`WhippleError`] naming the benchmark key of the field at fault.
+    pub fn from_design(design: BicycleDesign) -> Result<Whipple, WhippleError> {
+        WhippleParams::from_design(design).map(Whipple::new)
+    }
+
+    /// The parameters by name.
+    pub fn design(&self) -> BicycleDesign {
+        self.params.design()
     }
 
     /// The parameters.

@@ -25,7 +25,9 @@ use std::fmt;
 
 use nalgebra::{Matrix3, Vector3};
 
-use crate::whipple::WhippleParams;
+use crate::error::ParameterError;
+
+use crate::whipple::{BicycleDesign, WhippleError, WhippleParams};
 
 crate::scene! {
     /// The front contact constraint and its pitch derivative.
@@ -64,14 +66,7 @@ crate::scene! {
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub enum NonlinearError {
     /// An input that cannot be used.
-    InvalidParameter {
-        /// The input's name.
-        name: &'static str,
-        /// Its value.
-        value: f64,
-        /// Why, in a few lower-case words.
-        reason: &'static str,
-    },
+    Parameter(ParameterError),
     /// Newton's method found no pitch that puts the front wheel on the ground.
     NoContact {
         /// The lean (rad).
@@ -91,9 +86,7 @@ pub enum NonlinearError {
 impl fmt::Display for NonlinearError {
     fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
         match self {
-            NonlinearError::InvalidParameter { name, value, reason } => {
-                write!(f, "invalid {name} {value:?}: {reason}")
-            }
+            NonlinearError::Parameter(e) => write!(f, "{e}"),
             NonlinearError::NoContact { lean, steer } => write!(
                 f,
                 "no pitch puts the front wheel on the ground at lean {lean} rad, steer {steer} rad"
@@ -107,11 +100,21 @@ impl fmt::Display for NonlinearError {
 
 impl std::error::Error for NonlinearError {}
 
+impl From<ParameterError> for NonlinearError {
+    fn from(e: ParameterError) -> NonlinearError {
+        NonlinearError::Parameter(e)
+    }
+}
+
 fn finite(name: &'static str, value: f64) -> Result<f64, NonlinearError> {
     if value.is_finite() {
         Ok(value)
     } else {
-        Err(NonlinearError::InvalidParameter { name, value, reason: "must be finite" })
+        Err(NonlinearError::Parameter(ParameterError::InvalidParameter {
+            name,
+            value,
+            reason: "must be finite",
+        }))
     }
 }
 
@@ -258,23 +261,32 @@ pub struct Sample {
     pub energy: f64,
 }
 
-/// A simulated motion.
-#[derive(Clone, Debug, PartialEq)]
-pub struct Trajectory {
-    /// The integration step (s).
-    pub step: f64,
-    /// The samples, every `every` steps.
-    pub samples: Vec<Sample>,
+/// What [`WhippleNonlinear::simulate`] measures over all its steps (kept or not).
+#[derive(Clone, Copy, Debug, Default, PartialEq)]
+pub struct Diagnostics {
     /// Largest $|E(t) - E(0)|$ over all steps (J).
     pub energy_drift: f64,
     /// Largest $|h|$ of the contact constraint after Newton over all steps (m).
     pub max_contact_residual: f64,
 }
 
+/// A simulated motion: the [`Sample`]s kept, every `every` steps (`samples`, with their
+/// `times`), the integration `step` (s) and the [`Diagnostics`], whose fields are read through
+/// the trajectory (`trajectory.energy_drift`).
+pub type Trajectory = crate::numerics::ode::Trajectory<Sample, Diagnostics>;
+
 impl WhippleNonlinear {
     /// The nonlinear bicycle with the parameters `params`.
     pub fn new(params: WhippleParams) -> WhippleNonlinear {
         WhippleNonlinear { params }
+    }
+
+    /// The nonlinear bicycle of `design`, validated as [`WhippleParams::from_design`].
+    ///
+    /// # Errors
+    /// [`WhippleError`] naming the benchmark key of the field at fault.
+    pub fn from_design(design: BicycleDesign) -> Result<WhippleNonlinear, WhippleError> {
+        WhippleParams::from_design(design).map(WhippleNonlinear::new)
     }
 
     /// The parameters.
@@ -321,7 +333,7 @@ impl WhippleNonlinear {
     /// (at most 50 iterations, stopping when the step is below 1e-14 rad).
     ///
     /// # Errors
-    /// [`NonlinearError::InvalidParameter`] for non-finite angles,
+    /// [`NonlinearError::Parameter`] for non-finite angles,
     /// [`NonlinearError::NoContact`] when Newton's method does not converge.
     pub fn pitch(&self, lean: f64, steer: f64, guess: f64) -> Result<f64, NonlinearError> {
         finite("lean", lean)?;
@@ -418,7 +430,7 @@ impl WhippleNonlinear {
     /// of `qd` are used; the pitch is solved from the constraint starting at `q`'s φ.
     ///
     /// # Errors
-    /// A non-finite entry is [`NonlinearError::InvalidParameter`] naming it; no contact or a
+    /// A non-finite entry is [`NonlinearError::Parameter`] naming it; no contact or a
     /// singular mass matrix as in [`pitch`](Self::pitch) and
     /// [`accelerations`](Self::accelerations).
     pub fn basu_mandal_accelerations(
@@ -540,7 +552,7 @@ impl WhippleNonlinear {
     /// and every other angle and rate zero.
     ///
     /// # Errors
-    /// [`NonlinearError::InvalidParameter`] for a non-finite speed or lean.
+    /// [`NonlinearError::Parameter`] for a non-finite speed or lean.
     pub fn initial_state(&self, speed: f64, lean0: f64) -> Result<State, NonlinearError> {
         finite("speed", speed)?;
         finite("lean0", lean0)?;
@@ -563,7 +575,7 @@ impl WhippleNonlinear {
     /// (and the first and last).
     ///
     /// # Errors
-    /// [`NonlinearError::InvalidParameter`] for a non-positive or non-finite duration or step,
+    /// [`NonlinearError::Parameter`] for a non-positive or non-finite duration or step,
     /// a step longer than the duration, more than ten million steps, or `every == 0`; no
     /// contact (the bicycle fell flat) or a singular mass matrix during the run.
     pub fn simulate(
@@ -576,34 +588,34 @@ impl WhippleNonlinear {
         for (name, v) in [("duration", duration), ("step", step)] {
             finite(name, v)?;
             if v <= 0.0 {
-                return Err(NonlinearError::InvalidParameter {
+                return Err(NonlinearError::Parameter(ParameterError::InvalidParameter {
                     name,
                     value: v,
                     reason: "must be positive",
-                });
+                }));
             }
         }
         if step > duration {
-            return Err(NonlinearError::InvalidParameter {
+            return Err(NonlinearError::Parameter(ParameterError::InvalidParameter {
                 name: "step",
                 value: step,
                 reason: "must not exceed the duration",
-            });
+            }));
         }
         let n = (duration / step).round();
         if n > 1e7 {
-            return Err(NonlinearError::InvalidParameter {
+            return Err(NonlinearError::Parameter(ParameterError::InvalidParameter {
                 name: "step",
                 value: step,
                 reason: "gives more than ten million steps",
-            });
+            }));
         }
         if every == 0 {
-            return Err(NonlinearError::InvalidParameter {
+            return Err(NonlinearError::Parameter(ParameterError::InvalidParameter {
                 name: "every",
                 value: 0.0,
                 reason: "must be positive",
-            });
+            }));
         }
         let n = n as usize;
         let h = duration / n as f64;
@@ -628,7 +640,8 @@ impl WhippleNonlinear {
         let mut pitch = self.pitch(s.lean, s.steer, 0.0)?;
         let first = self.sample(0.0, &s, pitch)?;
         let e0 = first.energy;
-        let mut samples = vec![first];
+        let mut trajectory = Trajectory::with_capacity(h, n / every + 2, Diagnostics::default());
+        trajectory.push(0.0, first);
         let (mut drift, mut residual) = (0.0f64, 0.0f64);
         let add = |a: &[f64; 10], k: &[f64; 10], f: f64| -> State {
             State::from_array(std::array::from_fn(|i| a[i] + f * k[i]))
@@ -648,9 +661,12 @@ impl WhippleNonlinear {
             let (e, _) = self.observe(&c);
             drift = drift.max((e - e0).abs());
             if i % every == 0 || i == n {
-                samples.push(self.sample(i as f64 * h, &s, pitch)?);
+                let t = i as f64 * h;
+                trajectory.push(t, self.sample(t, &s, pitch)?);
             }
         }
-        Ok(Trajectory { step: h, samples, energy_drift: drift, max_contact_residual: residual })
+        trajectory.diagnostics =
+            Diagnostics { energy_drift: drift, max_contact_residual: residual };
+        Ok(trajectory)
     }
 }

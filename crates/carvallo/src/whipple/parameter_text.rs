@@ -11,7 +11,7 @@
 
 use std::fmt;
 
-use crate::whipple::{WhippleError, WhippleParams, PARAM_NAMES};
+use crate::whipple::{BicycleDesign, WhippleError, WhippleParams, PARAM_NAMES};
 
 /// A bicycle and the standard deviations of its parameters.
 #[derive(Clone, Debug, PartialEq)]
@@ -177,6 +177,17 @@ impl UncertainParams {
         } else {
             UncertainParams::from_text(text)
         }
+    }
+
+    /// The parameters by name.
+    pub fn design(&self) -> BicycleDesign {
+        self.params.design()
+    }
+
+    /// The standard deviations by name: each field of the result is the uncertainty of the
+    /// same field of [`design`](Self::design) (zero when none is stated).
+    pub fn sigma_design(&self) -> BicycleDesign {
+        BicycleDesign::from_array(&self.sigma)
     }
 
     /// Whether any uncertainty is stated.

@@ -8,6 +8,7 @@
 
 use std::fmt;
 
+use crate::error::ParameterError;
 use crate::numerics::rng::SplitMix64;
 
 /// The parameter names, in order (the benchmark's Table 1; `lambda` is the steer axis tilt).
@@ -124,15 +125,10 @@ pub enum WhippleError {
         /// The value as written.
         value: String,
     },
-    /// A number that cannot describe a bicycle.
-    InvalidParameter {
-        /// The key.
-        key: &'static str,
-        /// The value.
-        value: f64,
-        /// Why, in a few lower-case words.
-        reason: &'static str,
-    },
+    /// A number that cannot describe a bicycle: the error names its key (one of
+    /// [`PARAM_NAMES`]; [`BicycleDesign::field_path`](super::BicycleDesign::field_path) gives
+    /// the field).
+    Parameter(ParameterError),
 }
 
 impl fmt::Display for WhippleError {
@@ -144,14 +140,23 @@ impl fmt::Display for WhippleError {
             WhippleError::NotANumber { key, value } => {
                 write!(f, "parameter {key} = {value} is not a number")
             }
-            WhippleError::InvalidParameter { key, value, reason } => {
-                write!(f, "invalid {key} {value:?}: {reason}")
-            }
+            WhippleError::Parameter(e) => write!(f, "{e}"),
         }
     }
 }
 
 impl std::error::Error for WhippleError {}
+
+impl From<ParameterError> for WhippleError {
+    fn from(e: ParameterError) -> WhippleError {
+        WhippleError::Parameter(e)
+    }
+}
+
+/// The error naming the benchmark key `key`, its value and why it was rejected.
+fn invalid(key: &'static str, value: f64, reason: &'static str) -> WhippleError {
+    WhippleError::Parameter(ParameterError::InvalidParameter { name: key, value, reason })
+}
 
 /// Reads `"pi"`, `"pi/N"`, `"K*pi"`, `"K*pi/N"` or a plain number.
 pub(crate) fn parse_pi(text: &str) -> Option<f64> {
@@ -237,7 +242,7 @@ impl WhippleParams {
     /// Builds a parameter set from the values in the order of [`PARAM_NAMES`].
     ///
     /// # Errors
-    /// [`WhippleError::InvalidParameter`] for a non-finite value, a non-positive length, mass,
+    /// [`WhippleError::Parameter`] for a non-finite value, a non-positive length, mass,
     /// gravity or principal moment, a magnitude above [`MAX_MAGNITUDE`] or a positive value
     /// below [`MIN_POSITIVE`], a steer tilt outside $(-\pi/2, \pi/2)$, a frame inertia that is
     /// not positive definite in its x–z plane, or moments of inertia that break the triangle
@@ -248,56 +253,36 @@ impl WhippleParams {
         }
         for (key, &value) in PARAM_NAMES.iter().zip(&values) {
             if !value.is_finite() {
-                return Err(WhippleError::InvalidParameter {
-                    key,
-                    value,
-                    reason: "must be finite",
-                });
+                return Err(invalid(key, value, "must be finite"));
             }
             if POSITIVE.contains(key) && value <= 0.0 {
-                return Err(WhippleError::InvalidParameter {
-                    key,
-                    value,
-                    reason: "must be positive",
-                });
+                return Err(invalid(key, value, "must be positive"));
             }
             if value.abs() > MAX_MAGNITUDE {
-                return Err(WhippleError::InvalidParameter {
-                    key,
-                    value,
-                    reason: "is too large (magnitude above 1e15 in SI units)",
-                });
+                return Err(invalid(key, value, "is too large (magnitude above 1e15 in SI units)"));
             }
             if POSITIVE.contains(key) && value < MIN_POSITIVE {
-                return Err(WhippleError::InvalidParameter {
-                    key,
-                    value,
-                    reason: "is too small (below 1e-15 in SI units)",
-                });
+                return Err(invalid(key, value, "is too small (below 1e-15 in SI units)"));
             }
         }
         let p = WhippleParams { values };
         let lambda = p.get("lambda").unwrap_or(f64::NAN);
         if lambda.abs() >= std::f64::consts::FRAC_PI_2 {
-            return Err(WhippleError::InvalidParameter {
-                key: "lambda",
-                value: lambda,
-                reason: "must lie strictly between -pi/2 and pi/2",
-            });
+            return Err(invalid("lambda", lambda, "must lie strictly between -pi/2 and pi/2"));
         }
         for (xx, zz, xz) in [("IBxx", "IBzz", "IBxz"), ("IHxx", "IHzz", "IHxz")] {
             let (a, b, c) = (p.value(xx), p.value(zz), p.value(xz));
             if a * b - c * c <= 0.0 {
                 let key = if xz == "IBxz" { "IBxz" } else { "IHxz" };
-                return Err(WhippleError::InvalidParameter {
+                return Err(invalid(
                     key,
-                    value: c,
-                    reason: if key == "IBxz" {
+                    c,
+                    if key == "IBxz" {
                         "makes the inertia block [[IBxx, IBxz], [IBxz, IBzz]] not positive definite"
                     } else {
                         "makes the inertia block [[IHxx, IHxz], [IHxz, IHzz]] not positive definite"
                     },
-                });
+                ));
             }
         }
         p.check_triangle_inequalities()?;
@@ -320,7 +305,7 @@ impl WhippleParams {
                 } else {
                     ("IFyy", "exceeds 2 IFxx (triangle inequality of the wheel's moments)")
                 };
-                return Err(WhippleError::InvalidParameter { key, value: b, reason });
+                return Err(invalid(key, b, reason));
             }
         }
         for body in ["B", "H"] {
@@ -348,10 +333,10 @@ impl WhippleParams {
                 )
             };
             if yy > (l1 + l2) * (1.0 + SLACK) {
-                return Err(WhippleError::InvalidParameter { key, value: yy, reason: too_large });
+                return Err(invalid(key, yy, too_large));
             }
             if l2 > (l1 + yy) * (1.0 + SLACK) {
-                return Err(WhippleError::InvalidParameter { key, value: yy, reason: too_small });
+                return Err(invalid(key, yy, too_small));
             }
         }
         Ok(())

@@ -163,7 +163,11 @@ fn nan_and_infinite_inputs_are_typed_errors() {
             let mut v = *WhippleParams::benchmark().values();
             v[i] = bad;
             match WhippleParams::from_values(v) {
-                Err(WhippleError::InvalidParameter { key: k, reason, .. }) => {
+                Err(WhippleError::Parameter(ParameterError::InvalidParameter {
+                    name: k,
+                    reason,
+                    ..
+                })) => {
                     assert_eq!((k, reason), (*key, "must be finite"));
                 }
                 other => panic!("{key} = {bad}: {other:?}"),
@@ -175,4 +179,63 @@ fn nan_and_infinite_inputs_are_typed_errors() {
     let (m, g) = (w.matrices(), 9.81);
     assert_ne!(classify(&m, g, f64::NAN, 0.0), Certified::Stable);
     assert!(eigen::eigenvalues4(&w.state_matrix(f64::NAN)).is_none());
+}
+
+/// The message each model's error gave for an invalid value before it carried
+/// [`ParameterError`]: the same template in every `Display` that had an `InvalidParameter` (or
+/// `InvalidAngle`) variant.
+fn old_message(e: &ParameterError) -> String {
+    let ParameterError::InvalidParameter { name, value, reason } = e;
+    format!("invalid {name} {value:?}: {reason}")
+}
+
+#[test]
+fn every_invalid_value_is_one_parameter_error_with_the_old_message() {
+    use carvallo::bicycle::geometry::{ContactError, Geometry};
+    use carvallo::bicycle::straight::Constants;
+    use carvallo::bicycle::turn::{LockedSteer, TurnError};
+    use carvallo::whipple::nonlinear::{NonlinearError, WhippleNonlinear};
+
+    let mut checked = 0;
+    let mut check = |shown: String, inner: &ParameterError| {
+        assert_eq!(shown, old_message(inner));
+        checked += 1;
+    };
+    for (i, bad) in [(10, -85.0), (0, f64::NAN), (2, 2.0), (7, 1.0), (14, 6.0), (12, 13.0)] {
+        let mut v = *WhippleParams::benchmark().values();
+        v[i] = bad;
+        match WhippleParams::from_values(v) {
+            Err(e @ WhippleError::Parameter(inner)) => check(e.to_string(), &inner),
+            other => panic!("{i} = {bad}: {other:?}"),
+        }
+    }
+    let bike = WhippleNonlinear::new(WhippleParams::benchmark());
+    let start = bike.initial_state(5.0, 0.0).expect("state");
+    for e in [
+        bike.initial_state(f64::NAN, 0.0).unwrap_err(),
+        bike.simulate(start, -1.0, 1e-3, 1).unwrap_err(),
+        bike.simulate(start, 1.0, 2.0, 1).unwrap_err(),
+        bike.simulate(start, 1.0, 1e-3, 0).unwrap_err(),
+        bike.pitch(f64::INFINITY, 0.0, 0.0).unwrap_err(),
+    ] {
+        match e {
+            NonlinearError::Parameter(inner) => check(e.to_string(), &inner),
+            other => panic!("{other:?}"),
+        }
+    }
+    let turn = LockedSteer::new(Constants::MEMOIR).expect("valid");
+    for (gamma, speed) in [(f64::NAN, 5.0), (1.2, 5.0), (0.1, -2.0), (0.1, f64::NAN)] {
+        match turn.steady_turn(gamma, speed).unwrap_err() {
+            e @ TurnError::Parameter(inner) => check(e.to_string(), &inner),
+            other => panic!("{other:?}"),
+        }
+    }
+    let geometry = Geometry::old_model();
+    for (theta, gamma) in [(2.0, 0.0), (f64::NAN, 0.0), (0.1, f64::INFINITY)] {
+        match geometry.solve(theta, gamma).unwrap_err() {
+            e @ ContactError::Parameter(inner) => check(e.to_string(), &inner),
+            other => panic!("{other:?}"),
+        }
+    }
+    assert_eq!(checked, 18);
 }

@@ -159,6 +159,6 @@ fn bad_input_is_a_typed_error() {
     assert_eq!(e.to_string(), "invalid theta NaN: must be finite with |theta| < pi/2");
     assert!(matches!(
         g.solve(0.1, f64::INFINITY),
-        Err(ContactError::InvalidAngle { name: "gamma", .. })
+        Err(ContactError::Parameter(ParameterError::InvalidParameter { name: "gamma", .. }))
     ));
 }

@@ -253,7 +253,13 @@ fn typed_errors_name_the_bad_value() {
     );
     let e = bike.rest_position(2.0).unwrap_err();
     assert!(
-        matches!(e, RestError::Contact(ContactError::InvalidAngle { name: "theta", .. })),
+        matches!(
+            e,
+            RestError::Contact(ContactError::Parameter(ParameterError::InvalidParameter {
+                name: "theta",
+                ..
+            }))
+        ),
         "{e:?}"
     );
     assert_eq!(e.to_string(), "invalid theta 2.0: must be finite with |theta| < pi/2");

@@ -77,7 +77,7 @@ fn rk4_conserves_energy_and_keeps_steady_states() {
     // A perturbed, fast-rolling hoop: energy drift of RK4 with dt = 1e-3 s over 5 s should be
     // far below 1e-8 of the energy (the method's local error is O(dt^5)).
     let traj = hoop.simulate_pns([0.2, 0.5, -0.3 * nu, 2.0 * nu], 1e-3, 5000).unwrap();
-    assert_eq!(traj.states.len(), 5001);
+    assert_eq!(traj.len(), 5001);
     assert!(traj.relative_energy_drift() < 1e-8, "drift {}", traj.relative_energy_drift());
     // A steady state (n2 of (E) at θ = 0.3, s = 2 sqrt(g/R)) stays steady: θ, n, s constant
     // to 1e-9 relative over 2 s. It is stable (S > 0), so rounding does not grow.
@@ -85,7 +85,7 @@ fn rk4_conserves_energy_and_keeps_steady_states() {
     let [_, n2] = hoop.steady_turning_rates(theta, s).unwrap();
     assert!(hoop.stability(theta, s, n2) > 0.0);
     let traj = hoop.simulate_pns([theta, 0.0, n2, s], 1e-3, 2000).unwrap();
-    for x in &traj.states {
+    for x in &traj.samples {
         assert!((x[0] - theta).abs() < 1e-9, "theta drifted to {}", x[0]);
         assert!((x[2] - n2).abs() < 1e-9 * n2.abs() && (x[3] - s).abs() < 1e-9 * s);
     }

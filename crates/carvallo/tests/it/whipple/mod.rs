@@ -1,9 +1,11 @@
-//! Tests of the Carvallo–Whipple bicycle: the parameter reader ([`params`]), the stability
+//! Tests of the Carvallo–Whipple bicycle: the parameter reader ([`params`]), the parameters by
+//! name ([`design`]), the stability
 //! windows and sweeps ([`stability`]), the uncertainty bands ([`uncertainty`]) and the
 //! nonlinear equations against the linearisation ([`nonlinear`]) and against Basu-Mandal et
 //! al.'s circular motion ([`basu_mandal`]).
 
 mod basu_mandal;
+mod design;
 mod nonlinear;
 mod params;
 mod stability;

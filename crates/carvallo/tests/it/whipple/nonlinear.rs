@@ -105,6 +105,10 @@ fn energy_is_conserved_and_the_contact_holds() {
     );
     assert!(tr.energy_drift <= 1e-8, "drift {}", tr.energy_drift);
     assert!(tr.max_contact_residual <= 1e-12, "residual {}", tr.max_contact_residual);
+    // Every 100th step of 5000 and the first: the times are the samples' own.
+    assert_eq!(tr.len(), 51);
+    assert!(tr.iter().all(|(t, s)| t == s.t));
+    assert_eq!(tr.last().map(|(t, _)| t), Some(5.0));
 }
 
 #[test]

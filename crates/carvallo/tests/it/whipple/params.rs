@@ -6,9 +6,10 @@
 //! arbitrary TOML value either reads back the value or fails naming that key; removing a key
 //! or adding an unknown one fails naming it; random perturbations of every value either give
 //! a parameter set whose characteristic polynomial is finite or fail with a typed
-//! `InvalidParameter` naming a key of the model. Plus hand-written cases for every rejection.
+//! `ParameterError::InvalidParameter` naming a key of the model. Plus hand-written cases for every rejection.
 
 use carvallo::whipple::{WhippleError, WhippleParams, BENCHMARK_TOML, PARAM_NAMES};
+use carvallo::ParameterError;
 use proptest::prelude::*;
 use proptest::test_runner::{Config, RngAlgorithm, TestRng, TestRunner};
 
@@ -40,7 +41,8 @@ fn with_line(key: &str, line: &str) -> String {
 fn names_key(err: &WhippleError, key: &str) -> bool {
     let listed = err.to_string().split(|c: char| !c.is_alphanumeric()).any(|w| w == key);
     match err {
-        WhippleError::MissingKey { key: k } | WhippleError::InvalidParameter { key: k, .. } => {
+        WhippleError::MissingKey { key: k }
+        | WhippleError::Parameter(ParameterError::InvalidParameter { name: k, .. }) => {
             *k == key || listed
         }
         WhippleError::UnknownKey { key: k } | WhippleError::NotANumber { key: k, .. } => k == key,
@@ -133,7 +135,11 @@ fn perturbed_bicycles_are_usable_or_rejected_with_a_reason() {
                     let poly = carvallo::whipple::Whipple::new(p).char_poly(4.0);
                     prop_assert!(poly.iter().all(|a| a.is_finite()), "{poly:?}");
                 }
-                Err(WhippleError::InvalidParameter { key, value, reason }) => {
+                Err(WhippleError::Parameter(ParameterError::InvalidParameter {
+                    name: key,
+                    value,
+                    reason,
+                })) => {
                     prop_assert!(PARAM_NAMES.contains(&key));
                     prop_assert!(!reason.is_empty());
                     let i = PARAM_NAMES.iter().position(|k| *k == key).unwrap();
