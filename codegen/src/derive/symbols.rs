@@ -407,6 +407,6 @@ pub const SYMBOLS: &[&str] = &[
 /// Creates every symbol of [`SYMBOLS`] in order (a symbol that exists already keeps its place).
 pub fn declare_symbols() {
     for name in SYMBOLS {
-        var(name);
+        let _ = var(name);
     }
 }
