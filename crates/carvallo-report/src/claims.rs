@@ -70,6 +70,22 @@ impl Claim {
     }
 }
 
+/// The claims `compute` gives, computed once per process in `cell` (the simulations take a
+/// while) and sorted by section in memoir order (a stable sort).
+pub(crate) fn once_in_memoir_order(
+    cell: &'static std::sync::OnceLock<Vec<Claim>>,
+    compute: fn() -> Vec<Claim>,
+) -> Vec<Claim> {
+    cell.get_or_init(|| {
+        let mut claims = compute();
+        claims.sort_by(|a, b| {
+            crate::entry::section_key(&a.section).total_cmp(&crate::entry::section_key(&b.section))
+        });
+        claims
+    })
+    .clone()
+}
+
 /// How an assertion of the memoir is covered.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
 pub enum Status {

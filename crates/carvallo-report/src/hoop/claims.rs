@@ -33,16 +33,7 @@ fn holds(id: &str) -> f64 {
 /// The claims of n° 1–12 and 71–78, computed once per process (the simulations take a while).
 pub(super) fn claims() -> Vec<Claim> {
     static CLAIMS: OnceLock<Vec<Claim>> = OnceLock::new();
-    CLAIMS
-        .get_or_init(|| {
-            let mut claims = compute();
-            claims.sort_by(|a, b| {
-                crate::entry::section_key(&a.section)
-                    .total_cmp(&crate::entry::section_key(&b.section))
-            });
-            claims
-        })
-        .clone()
+    crate::claims::once_in_memoir_order(&CLAIMS, compute)
 }
 
 fn compute() -> Vec<Claim> {

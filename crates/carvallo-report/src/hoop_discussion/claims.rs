@@ -19,16 +19,7 @@ use crate::policy::{self, rel_diff, unit_of};
 /// The claims of n° 13–19, computed once per process.
 pub(super) fn claims() -> Vec<Claim> {
     static CLAIMS: OnceLock<Vec<Claim>> = OnceLock::new();
-    CLAIMS
-        .get_or_init(|| {
-            let mut claims = compute();
-            claims.sort_by(|a, b| {
-                crate::entry::section_key(&a.section)
-                    .total_cmp(&crate::entry::section_key(&b.section))
-            });
-            claims
-        })
-        .clone()
+    crate::claims::once_in_memoir_order(&CLAIMS, compute)
 }
 
 fn compute() -> Vec<Claim> {

@@ -189,31 +189,17 @@ impl Unicycle {
     /// The right-hand side of the full equations (n° 22–24, motor moment 0) for the state
     /// $(\theta, p, n, s)$: $(\theta', p', n', s')$.
     pub fn rhs(&self, state: [f64; 4]) -> [f64; 4] {
-        let [theta, p, n, s] = state;
-        let (r, w) = (&self.rider, &self.wheel);
-        let out = motion_scene::eval(&motion_scene::Args {
-            R: self.radius,
-            g: self.g,
-            mu: r.mass,
-            z: r.height,
-            A: r.a,
-            B: r.b,
-            C: r.c,
-            L: r.l,
-            mu1: w.mass,
-            A1: w.a1,
-            B1: w.b1,
-            C1: w.c1,
-            theta,
-            p,
-            n,
-            s,
-        });
-        [p, out.pns_dp, out.pns_dn, out.pns_ds]
+        let out = self.motion(state);
+        [state[1], out.pns_dp, out.pns_dn, out.pns_ds]
     }
 
     /// Total energy $T + V$ (J) in the state $(\theta, p, n, s)$.
     pub fn energy(&self, state: [f64; 4]) -> f64 {
+        self.motion(state).energy
+    }
+
+    /// The generated motion outputs (accelerations, energy) in the state $(\theta, p, n, s)$.
+    fn motion(&self, state: [f64; 4]) -> motion_scene::Out {
         let [theta, p, n, s] = state;
         let (r, w) = (&self.rider, &self.wheel);
         motion_scene::eval(&motion_scene::Args {
@@ -234,7 +220,6 @@ impl Unicycle {
             n,
             s,
         })
-        .energy
     }
 
     fn steady(&self, theta: f64, s: f64, n: f64) -> steady_scene::Out {
