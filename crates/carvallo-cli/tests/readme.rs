@@ -1,6 +1,9 @@
-//! The README cannot go stale: every `$ carvallo ...` example in its `text` code blocks is run
-//! with the built binary (in a fresh temporary directory, so `report --out report` writes
-//! there) and its output compared with the lines the README shows.
+//! The README and the guide cannot go stale: every `$ carvallo ...` example in the `text` code
+//! blocks of `README.md` and of every page of the guide (`docs/guide/src/*.md`) is run with the
+//! built binary (in a fresh temporary directory, so `report --out report` writes there) and its
+//! output compared with the lines the page shows. Every relative link of the README and of the
+//! guide's pages names a file that exists (the guide's build, `mkdocs build --strict` in
+//! `scripts/test`, checks the links between its pages too).
 //!
 //! Matching rules: an expected line `...` stands for any number of output lines (also none); an
 //! expected line ending in `...` matches an output line that starts with the text before it;
@@ -141,35 +144,83 @@ fn scratch() -> PathBuf {
     dir
 }
 
+/// The README and the guide's pages, each with its path relative to the workspace.
+fn pages() -> Vec<(String, String)> {
+    let root = Path::new(env!("CARGO_MANIFEST_DIR")).join("../..");
+    let mut names = vec!["README.md".to_string()];
+    let guide = root.join("docs/guide/src");
+    let mut in_guide: Vec<String> = std::fs::read_dir(&guide)
+        .unwrap()
+        .map(|e| e.unwrap().file_name().to_string_lossy().into_owned())
+        .filter(|n| n.ends_with(".md"))
+        .map(|n| format!("docs/guide/src/{n}"))
+        .collect();
+    in_guide.sort();
+    names.extend(in_guide);
+    names
+        .into_iter()
+        .map(|n| {
+            let text = std::fs::read_to_string(root.join(&n)).unwrap();
+            (n, text)
+        })
+        .collect()
+}
+
 #[test]
-fn every_cli_example_in_the_readme_replays() {
-    let readme_path = Path::new(env!("CARGO_MANIFEST_DIR")).join("../../README.md");
-    let readme = std::fs::read_to_string(readme_path).unwrap();
-    let list = examples(&readme);
-    assert!(
-        list.len() >= 4,
-        "expected at least 4 CLI examples in the README, found {}",
-        list.len()
-    );
+fn every_cli_example_in_the_readme_and_the_guide_replays() {
+    let pages = pages();
+    assert!(pages.len() >= 10, "expected the README and the guide's pages, found {}", pages.len());
     let dir = scratch();
     let mut failures = Vec::new();
-    for ex in &list {
-        let output = run(&ex.command, &dir);
-        let lines: Vec<&str> = output.lines().collect();
-        if !matches(&ex.expected, &lines) {
-            failures.push(format!(
-                "README line {}: `carvallo {}`\n--- README shows:\n{}\n--- the binary prints:\n{}",
-                ex.line,
-                ex.command,
-                ex.expected.join("\n"),
-                output
-            ));
+    let mut commands = Vec::new();
+    for (name, text) in &pages {
+        let list = examples(text);
+        if name == "README.md" {
+            assert!(
+                list.len() >= 2,
+                "expected at least 2 CLI examples in the README, found {}",
+                list.len()
+            );
+        }
+        for ex in &list {
+            let output = run(&ex.command, &dir);
+            let lines: Vec<&str> = output.lines().collect();
+            if !matches(&ex.expected, &lines) {
+                failures.push(format!(
+                    "{name} line {}: `carvallo {}`\n--- the page shows:\n{}\n--- the binary prints:\n{}",
+                    ex.line,
+                    ex.command,
+                    ex.expected.join("\n"),
+                    output
+                ));
+            }
+            commands.push(ex.command.clone());
         }
     }
     assert!(failures.is_empty(), "{}", failures.join("\n\n"));
-    assert!(list.iter().any(|ex| ex.command == "report --out report"), "the README's main command");
+    assert!(commands.iter().any(|c| c == "report --out report"), "the README's main command");
     check_report_dir(&dir.join("report"));
     let _ = std::fs::remove_dir_all(&dir);
+}
+
+#[test]
+fn every_relative_link_names_a_file() {
+    let root = Path::new(env!("CARGO_MANIFEST_DIR")).join("../..");
+    let mut broken = Vec::new();
+    for (name, text) in pages() {
+        let base = root.join(&name);
+        let base = base.parent().unwrap();
+        for target in text.split("](").skip(1).filter_map(|t| t.split_once(')')).map(|(l, _)| l) {
+            let file = target.split('#').next().unwrap_or("");
+            if file.is_empty() || file.contains("://") {
+                continue;
+            }
+            if !base.join(file).exists() {
+                broken.push(format!("{name}: ({target})"));
+            }
+        }
+    }
+    assert!(broken.is_empty(), "links to no file: {}", broken.join(", "));
 }
 
 /// The directory the README's `report --out report` wrote: the report with its sections, every
@@ -203,6 +254,11 @@ fn check_report_dir(out: &Path) {
             == std::fs::read(out.join("fig04bis_hoop_walking.svg")).unwrap(),
         "docs/fig04bis_hoop_walking.svg differs from what `carvallo report --out` writes now: \
          copy report/fig04bis_hoop_walking.svg over it"
+    );
+    let guide = docs.with_file_name("guide/src/img/fig04bis_hoop_walking.svg");
+    assert!(
+        std::fs::read(&guide).unwrap() == std::fs::read(&docs).unwrap(),
+        "docs/guide/src/img/fig04bis_hoop_walking.svg differs from docs/fig04bis_hoop_walking.svg"
     );
 }
 

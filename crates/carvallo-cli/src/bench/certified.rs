@@ -6,8 +6,7 @@ use std::hint::black_box;
 use carvallo::numerics::rng::SplitMix64;
 use carvallo::whipple::{Whipple, WhippleParams};
 
-use super::tables::{matrices_of, random_design};
-use super::{time_ns, Config, Row};
+use super::measure::{matrices_of, random_design, time_ns, Config, Row};
 
 /// Table 4: near the weave speed of `designs` bicycles.
 pub(super) fn certified_rows(cfg: &Config, rows: &mut Vec<Row>) {

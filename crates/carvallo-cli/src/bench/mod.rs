@@ -8,12 +8,14 @@
 //! and `batched` and as targets, so that `--json` carries them like every other row.
 
 pub mod certified;
+pub mod measure;
 pub mod peer;
 pub mod quartic;
 pub mod tables;
 
-use tables::rel;
-pub use tables::{render_text, run, time_ns, Config, Report, Row, Target, REFERENCE_BITS};
+use measure::rel;
+pub use measure::{time_ns, Config, Report, Row, Target};
+pub use tables::{render_text, run};
 
 use std::hint::black_box;
 

@@ -9,7 +9,7 @@ use carvallo::numerics::quartic::{self, Case, C64};
 use carvallo::whipple::{Whipple, WhippleParams};
 use rayon::prelude::*;
 
-use super::{time_ns, Config, Row, REFERENCE_BITS};
+use super::measure::{time_ns, Config, Row, REFERENCE_BITS};
 
 /// The hard suite of the quartic solvers: [`quartic::polynomial_suite`] and the benchmark
 /// bicycle's $a_0, \dots, a_4$ at its weave, capsize and bifurcation speeds.

@@ -25,16 +25,14 @@
 //! [`super::extend`] appends the C peer and the batched evaluators.
 //!
 //! Timings are wall-clock means over repeated calls (`std::time::Instant`), so they vary from
-//! run to run and machine to machine; errors do not. [`Targets`] compares the ratios asked for in
+//! run to run and machine to machine; errors do not. [`Targets`](super::measure::Targets) compares the ratios asked for in
 //! the issue with the measured ones.
 
 use std::hint::black_box;
 use std::sync::atomic::AtomicUsize;
-use std::time::Instant;
 
 use carvallo::ir::{hp, Interpreter, Op, Program, Value};
 use rayon::prelude::*;
-use serde::Serialize;
 
 use carvallo::numerics::quartic;
 use carvallo::numerics::rng::SplitMix64;
@@ -42,164 +40,16 @@ use carvallo::whipple::nonlinear::{dynamics_scene, Configuration, WhippleNonline
 use carvallo::whipple::stability::{self, reference_speeds, EigenGrid};
 use carvallo::whipple::sweep::{self, Method};
 use carvallo::whipple::{matrices_scene, Matrices, Whipple, WhippleParams, PARAM_NAMES};
+
+use super::measure::{
+    matrices_of, random_design, rel, time_ns, Config, Distribution, Report, Row, Target, Targets,
+    REFERENCE_BITS,
+};
 use nalgebra::{Matrix3, Vector3};
 
 const HOOP_IR: &str = carvallo::artifacts::HOOP.ir;
 const UNICYCLE_IR: &str = carvallo::artifacts::UNICYCLE.ir;
 const WHIPPLE_IR: &str = carvallo::artifacts::WHIPPLE.ir;
-
-/// The precision of every reference evaluation.
-pub const REFERENCE_BITS: usize = 256;
-
-/// How much to measure.
-#[derive(Clone, Copy, Debug, PartialEq)]
-pub struct Config {
-    /// Minimum wall-clock time per timed measurement, in seconds.
-    pub min_time: f64,
-    /// Random points per evaluator for the error columns.
-    pub points: usize,
-    /// Random bicycle designs for the window errors.
-    pub designs: usize,
-    /// Random parameter sets of the error distributions.
-    pub samples: usize,
-    /// Designs of the Hurwitz sweep.
-    pub sweep_count: usize,
-    /// Designs of the eigenvalue sweep.
-    pub eigen_sweep_count: usize,
-}
-
-impl Config {
-    /// The full measurement: $10^6$ samples and sweep designs (5 to 15 minutes on a busy
-    /// 2-core machine).
-    pub fn full() -> Config {
-        Config {
-            min_time: 0.2,
-            points: 200,
-            designs: 200,
-            samples: 1_000_000,
-            sweep_count: 1_000_000,
-            eigen_sweep_count: 2_000,
-        }
-    }
-
-    /// A quick run on tiny samples (seconds), for tests of the structure and the errors.
-    pub fn quick() -> Config {
-        Config {
-            min_time: 0.002,
-            points: 4,
-            designs: 4,
-            samples: 100,
-            sweep_count: 10_000,
-            eigen_sweep_count: 4,
-        }
-    }
-}
-
-/// One measured row.
-#[derive(Clone, Debug, PartialEq, Serialize)]
-pub struct Row {
-    /// The table: `evaluators`, `windows`, `quartic`, `certified`, `scenes`, `sweep`.
-    pub section: &'static str,
-    /// What was measured.
-    pub name: String,
-    /// The method.
-    pub method: String,
-    /// Operations per evaluation, where that is meaningful.
-    pub ops: Option<u64>,
-    /// Mean wall-clock nanoseconds per evaluation (per design, per polynomial).
-    pub ns: Option<f64>,
-    /// The largest relative error against the 256-bit reference.
-    pub max_rel_err: Option<f64>,
-    /// Details.
-    pub note: String,
-}
-
-/// An error distribution.
-#[derive(Clone, Debug, PartialEq, Serialize)]
-pub struct Distribution {
-    /// The output.
-    pub name: String,
-    /// How many samples.
-    pub samples: usize,
-    /// Relative errors in units of $\varepsilon = 2^{-52}$: median, 99 %, 99.99 %, maximum.
-    pub p50: f64,
-    /// 99th percentile.
-    pub p99: f64,
-    /// 99.99th percentile.
-    pub p9999: f64,
-    /// Maximum.
-    pub max: f64,
-}
-
-/// A target of the issue against the measured value.
-#[derive(Clone, Debug, PartialEq, Serialize)]
-pub struct Target {
-    /// The target, in words.
-    pub name: String,
-    /// The measured value.
-    pub measured: f64,
-    /// The required value.
-    pub required: f64,
-    /// Whether it is met.
-    pub met: bool,
-}
-
-/// Everything one run measured.
-#[derive(Clone, Debug, PartialEq, Serialize)]
-pub struct Report {
-    /// `quick` or `full`.
-    pub mode: &'static str,
-    /// The measured rows.
-    pub rows: Vec<Row>,
-    /// The error distributions.
-    pub distributions: Vec<Distribution>,
-    /// The issue's targets.
-    pub targets: Vec<Target>,
-}
-
-/// The targets as a list (see [`Report::targets`]).
-pub type Targets = Vec<Target>;
-
-/// Nanoseconds per call of `f`: the smallest of five means, each over calls lasting at least
-/// `min_time / 5` seconds (the minimum is the estimate least disturbed by other processes on a
-/// shared machine).
-pub fn time_ns<R>(min_time: f64, mut f: impl FnMut() -> R) -> f64 {
-    let slice = min_time / 5.0;
-    let mut n = 1u64;
-    let mut best = f64::INFINITY;
-    let mut rounds = 0;
-    while rounds < 5 {
-        let t = Instant::now();
-        for _ in 0..n {
-            black_box(f());
-        }
-        let dt = t.elapsed().as_secs_f64();
-        if dt >= slice || n >= 1 << 40 {
-            best = best.min(dt * 1e9 / n as f64);
-            rounds += 1;
-        } else if dt <= 0.0 {
-            n *= 16;
-        } else {
-            n = (n as f64 * (1.2 * slice / dt).min(16.0)) as u64 + 1;
-        }
-    }
-    best
-}
-
-/// A valid random bicycle: the benchmark with every parameter scaled by a factor in
-/// [0.8, 1.2] ([`WhippleParams::perturbed`]).
-pub(super) fn random_design(rng: &mut SplitMix64) -> WhippleParams {
-    WhippleParams::benchmark().perturbed(rng, 0.2)
-}
-
-/// Relative error of `x` against `reference` (absolute when the reference is zero).
-pub(super) fn rel(x: f64, reference: f64) -> f64 {
-    if reference == 0.0 {
-        x.abs()
-    } else {
-        ((x - reference) / reference).abs()
-    }
-}
 
 /// Default values of the hoop's and the unicycle's arguments.
 fn model_value(name: &str) -> f64 {
@@ -411,10 +261,6 @@ fn evaluator_rows(cfg: &Config, sc: &Scene<'_>, rows: &mut Vec<Row>) -> f64 {
         },
     });
     t_int / t_gen
-}
-
-pub(super) fn matrices_of(w: &Whipple) -> (Matrices, f64) {
-    (w.matrices(), w.params().get("g").unwrap_or(f64::NAN))
 }
 
 /// Table 2; returns (Hurwitz time, eigen time, Hurwitz and eigen errors on the speeds both

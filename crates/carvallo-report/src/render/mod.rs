@@ -1,9 +1,11 @@
 //! The renderers of the concordance: the aligned text table ([`text`]), its number-normalised
-//! form for snapshots ([`normalise`]), JSON ([`json`]) and the Markdown report ([`markdown`]).
+//! form for snapshots ([`normalise`]), JSON ([`json`]) and the Markdown report ([`markdown`]),
+//! over the number format they share ([`number`]).
 
 pub mod json;
 pub mod markdown;
 pub mod normalise;
+pub mod number;
 pub mod text;
 
 #[cfg(test)]

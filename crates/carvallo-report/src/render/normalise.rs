@@ -1,6 +1,6 @@
 //! The report's text with float noise removed, as the snapshot tests compare it.
 
-use crate::render::text::format_significant;
+use crate::render::number::format_significant;
 
 /// Replaces every number in `text` (also in `key=value` and before `,;):`) by its value to 4
 /// significant digits, or `~0` below 1e-12 in magnitude: the report's text with float noise
