@@ -12,7 +12,6 @@
 //! that directory is renamed to `DIR`. A progress bar is drawn on standard error only when it is
 //! a terminal.
 
-use std::io::{IsTerminal, Write};
 use std::path::{Path, PathBuf};
 
 use anyhow::{anyhow, Context, Result};
@@ -70,12 +69,11 @@ pub fn check_out_dir(dir: &Path) -> Result<PathBuf, BadInput> {
     Ok(parent)
 }
 
-/// Draws a progress bar `[####    ] k/n what` on standard error, if it is a terminal; the
-/// line is ended when the work stops, also early by an error.
+/// The progress of `report --out`: an `indicatif` bar `[####    ] k/n what` on standard error,
+/// drawn only when it is a terminal (indicatif hides it otherwise); the line is ended when the
+/// work stops, also early by an error.
 struct Progress {
-    total: usize,
-    done: usize,
-    on: bool,
+    bar: indicatif::ProgressBar,
 }
 
 impl Drop for Progress {
@@ -86,29 +84,29 @@ impl Drop for Progress {
 
 impl Progress {
     fn new(total: usize) -> Progress {
-        Progress { total, done: 0, on: std::io::stderr().is_terminal() }
+        let bar = indicatif::ProgressBar::with_draw_target(
+            Some(total as u64),
+            indicatif::ProgressDrawTarget::stderr(),
+        );
+        let style = indicatif::ProgressStyle::with_template("[{bar:30}] {pos}/{len} {msg}")
+            .map(|s| s.progress_chars("## "))
+            .unwrap_or_else(|_| indicatif::ProgressStyle::default_bar());
+        bar.set_style(style);
+        Progress { bar }
     }
 
     /// Shows `what` as the work in progress, with the steps done so far.
     fn start(&self, what: &str) {
-        if self.on {
-            let width = 30;
-            let filled = width * self.done / self.total.max(1);
-            let bar: String = "#".repeat(filled) + &" ".repeat(width - filled);
-            let mut err = std::io::stderr().lock();
-            let _ = write!(err, "\r\x1b[2K[{bar}] {}/{} {what}", self.done, self.total);
-            let _ = err.flush();
-        }
+        self.bar.set_message(what.to_string());
     }
 
     fn done(&mut self) {
-        self.done += 1;
+        self.bar.inc(1);
     }
 
     fn finish(&mut self) {
-        if self.on {
-            let _ = writeln!(std::io::stderr().lock());
-            self.on = false;
+        if !self.bar.is_finished() {
+            self.bar.abandon();
         }
     }
 }
