@@ -433,6 +433,134 @@ impl UncertainParams {
     }
 }
 
+/// The keys of a BicycleParameters rider file, in order: the rider's rigid body in the
+/// bicycle's frame (mass, mass centre, inertia about the mass centre).
+pub const RIDER_NAMES: [&str; 8] = ["mB", "xB", "yB", "zB", "IBxx", "IBxz", "IByy", "IBzz"];
+
+/// A rigid rider (BicycleParameters' `riders/<name>/Parameters/<name><bicycle>Benchmark.txt`):
+/// values and standard deviations in the order of [`RIDER_NAMES`].
+#[derive(Clone, Debug, PartialEq)]
+pub struct Rider {
+    /// The values.
+    pub values: [f64; 8],
+    /// Their standard deviations (zero when none is stated).
+    pub sigma: [f64; 8],
+}
+
+impl Rider {
+    /// Reads a rider file: the eight keys of [`RIDER_NAMES`], each once, as
+    /// `name = value+/-uncertainty` (the forms of [`UncertainParams::read`]).
+    ///
+    /// # Errors
+    /// [`ParameterTextError::Line`] naming the line at fault (an unknown or repeated key, a
+    /// value that is not a number); [`ParameterTextError::Rule`] for a missing key or a mass
+    /// or moment that is not positive.
+    pub fn from_text(text: &str) -> Result<Rider, ParameterTextError> {
+        let mut values = [f64::NAN; 8];
+        let mut sigma = [0.0; 8];
+        let mut seen = [false; 8];
+        for (i, raw) in text.lines().enumerate() {
+            let line = raw.trim();
+            if line.is_empty() || line.starts_with('#') {
+                continue;
+            }
+            let err = |reason: String| ParameterTextError::Line {
+                line: i + 1,
+                text: line.chars().take(80).collect(),
+                reason,
+            };
+            let (name, rest) = line
+                .split_once('=')
+                .ok_or_else(|| err("expected `name = value+/-uncertainty`".to_string()))?;
+            let name = name.trim();
+            let k = RIDER_NAMES
+                .iter()
+                .position(|n| *n == name)
+                .ok_or_else(|| err(format!("unknown rider parameter `{name}`")))?;
+            if seen[k] {
+                return Err(err(format!("parameter `{name}` given twice")));
+            }
+            seen[k] = true;
+            (values[k], sigma[k]) =
+                value_and_sigma(rest).map_err(|r| err(format!("{name}: {r}")))?;
+        }
+        if let Some(k) = seen.iter().position(|s| !s) {
+            return Err(ParameterTextError::Rule {
+                key: RIDER_NAMES[k].to_string(),
+                value: f64::NAN,
+                reason: "missing from the rider file".to_string(),
+            });
+        }
+        for k in [0, 4, 6, 7] {
+            if !(values[k] > 0.0) {
+                return Err(ParameterTextError::Rule {
+                    key: RIDER_NAMES[k].to_string(),
+                    value: values[k],
+                    reason: "must be positive (the rider's mass and principal moments)".to_string(),
+                });
+            }
+        }
+        Ok(Rider { values, sigma })
+    }
+}
+
+/// The bicycle with the rider's rigid body added to its rear frame `B` (BicycleParameters'
+/// `inertia.combine_bike_rider`, used by `Bicycle.add_rider`): the joint mass and mass centre,
+/// and the inertia about it by the parallel-axis theorem; the uncertainties of the eight
+/// frame values carried to first order from the frame's and the rider's (independent).
+/// The rider's `yB` must be zero to $10^{-6}$ of the wheelbase (the model is laterally
+/// symmetric). Triangle inequalities broken by the combined frame are returned as warnings.
+///
+/// # Errors
+/// [`ParameterTextError::Rule`] for a rider `yB` that is not zero;
+/// [`ParameterTextError::Invalid`] if the combination is not a valid bicycle.
+pub fn add_rider(params: &UncertainParams, rider: &Rider) -> Result<Loaded, ParameterTextError> {
+    let w = params.params.get("w").unwrap_or(f64::NAN);
+    let y = rider.values[2];
+    if !(y.abs() <= 1e-6 * w.abs()) {
+        return Err(ParameterTextError::Rule {
+            key: "yB".to_string(),
+            value: y,
+            reason: format!(
+                "the rider's lateral position must be zero to 1e-6 of the wheelbase w = {w:?} \
+                 (the model is laterally symmetric)"
+            ),
+        });
+    }
+    // The frame's and the rider's planar bodies, in PlanarBody order.
+    let frame_keys = ["mB", "xB", "zB", "IBxx", "IBxz", "IByy", "IBzz"];
+    let index = |name: &str| PARAM_NAMES.iter().position(|n| *n == name).unwrap_or(0);
+    let rider_order = [0, 1, 3, 4, 5, 6, 7];
+    let x: [f64; 14] = std::array::from_fn(|j| {
+        if j < 7 {
+            params.params.values()[index(frame_keys[j])]
+        } else {
+            rider.values[rider_order[j - 7]]
+        }
+    });
+    let xs: [f64; 14] = std::array::from_fn(|j| {
+        if j < 7 {
+            params.sigma[index(frame_keys[j])]
+        } else {
+            rider.sigma[rider_order[j - 7]]
+        }
+    });
+    let f = |x: &[f64; 14]| {
+        let (a, b): (PlanarBody, PlanarBody) =
+            (std::array::from_fn(|j| x[j]), std::array::from_fn(|j| x[j + 7]));
+        combine(&a, &b)
+    };
+    let body = f(&x);
+    let body_sigma = propagate(f, &x, &xs);
+    let mut values = *params.params.values();
+    let mut sigma = params.sigma;
+    for (j, key) in frame_keys.iter().enumerate() {
+        (values[index(key)], sigma[index(key)]) = (body[j], body_sigma[j]);
+    }
+    let (p, warnings) = WhippleParams::from_values_warning(values)?;
+    Ok(Loaded { params: UncertainParams { params: p, sigma }, warnings })
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;

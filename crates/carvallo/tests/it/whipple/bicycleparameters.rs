@@ -156,3 +156,114 @@ fn the_two_mass_skate_is_refused_for_now() {
     let err = UncertainParams::read(&bicycle_text("Tms"), false).unwrap_err();
     assert_eq!(err.to_string(), "invalid rR 0.0: must be positive");
 }
+
+fn rider_text(bicycle: &str) -> String {
+    let path = format!(
+        "{}/../../data/bicycleparameters/riders/Jason/Parameters/Jason{bicycle}Benchmark.txt",
+        env!("CARGO_MANIFEST_DIR")
+    );
+    std::fs::read_to_string(&path).unwrap_or_else(|e| panic!("{path}: {e}"))
+}
+
+/// The rear frame with the rider Jason, as BicycleParameters 1.5.2 computes it:
+/// `bp.Bicycle(name, pathToData="data")` on the sdist's `data/` folder, then
+/// `add_rider("Jason")` (no recalculation: the precalculated rider file), and
+/// `parameters['Benchmark'][key]`'s `nominal_value` and `std_dev` (the `uncertainties` package's
+/// first-order propagation), for `mB, xB, zB, IBxx, IBxz, IByy, IBzz`. Computed on 2026-12-03
+/// in a throwaway venv with `pip install bicycleparameters==1.5.2` (uncertainties 3.2.3).
+const PEER_RIDER: [(&str, [(f64, f64); 7]); 3] = [
+    (
+        "Browser",
+        [
+            (81.86, 2.000099997500125),
+            (0.28909943411648203, 0.0003757297428338847),
+            (-1.040292283210937, 0.0017155441437212893),
+            (11.35822782891604, 0.0284751583305407),
+            (-1.9694273509701732, 0.015396371193683757),
+            (12.217332897646934, 0.028663068086089823),
+            (3.1211248578428963, 0.0034001841243437),
+        ],
+    ),
+    (
+        "Rigid",
+        [
+            (106.4, 0.01),
+            (0.3486779831044643, 0.0014854658794505853),
+            (-1.026874672881483, 0.001025986272578155),
+            (14.68979624073858, 0.06453967934939966),
+            (-0.2587197991996151, 0.046128993922050755),
+            (16.471977830552007, 0.06479110702956326),
+            (4.11198028556343, 0.019900694430651907),
+        ],
+    ),
+    (
+        "Balanceassistv1",
+        [
+            (106.00000000000001, 0.01),
+            (0.3742621385685013, 0.0025472064096751083),
+            (-1.0093113209992344, 0.0031842955072935377),
+            (19.6692631863791, 0.3301098775210738),
+            (-3.5160611716846075, 0.14336520625391866),
+            (22.679229256352286, 0.3480780325252135),
+            (4.999706659147066, 0.08371849519745167),
+        ],
+    ),
+];
+
+#[test]
+fn a_rider_is_added_as_bicycleparameters_adds_it() {
+    use carvallo::whipple::parameter_text::{add_rider, Rider};
+    use carvallo::whipple::PARAM_NAMES;
+    let keys = ["mB", "xB", "zB", "IBxx", "IBxz", "IByy", "IBzz"];
+    for (bicycle, peer) in PEER_RIDER {
+        let bike = UncertainParams::read(&bicycle_text(bicycle), false).expect("bicycle");
+        let rider = Rider::from_text(&rider_text(bicycle)).expect("rider");
+        let with = add_rider(&bike.params, &rider).expect("combined");
+        // The rider makes Browser's frame keep the triangle inequality.
+        assert!(with.warnings.is_empty(), "{bicycle}: {:?}", with.warnings);
+        for (key, (value, std)) in keys.iter().zip(peer) {
+            let k = PARAM_NAMES.iter().position(|n| n == key).expect("key");
+            let (v, s) = (with.params.params.values()[k], with.params.sigma[k]);
+            assert!((v - value).abs() <= 1e-13 * value.abs(), "{bicycle} {key}: {v} vs {value}");
+            assert!((s - std).abs() <= 1e-7 * std, "{bicycle} {key} sigma: {s} vs {std}");
+        }
+        // The other parameters are the bicycle's.
+        for k in 0..26 {
+            if !keys.contains(&PARAM_NAMES[k]) {
+                assert_eq!(with.params.params.values()[k], bike.params.params.values()[k]);
+            }
+        }
+    }
+}
+
+#[test]
+fn a_bad_rider_file_is_named() {
+    use carvallo::whipple::parameter_text::{add_rider, Rider};
+    let good = rider_text("Browser");
+    let cases = [
+        (
+            "mB",
+            "mB = -72.0",
+            "invalid mB -72.0: must be positive (the rider's mass and principal moments)",
+        ),
+        ("IBxx", "mR = 2", "line 5: unknown rider parameter `mR` (`mR = 2`)"),
+        ("IBzz", "IBzz = big", "line 8: IBzz: value `big` is not a number (`IBzz = big`)"),
+    ];
+    for (key, line, want) in cases {
+        let err = Rider::from_text(&replace_line(&good, key, line)).unwrap_err();
+        assert_eq!(err.to_string(), want);
+    }
+    let missing: String =
+        good.lines().filter(|l| !l.starts_with("IByy")).map(|l| format!("{l}\n")).collect();
+    assert_eq!(
+        Rider::from_text(&missing).unwrap_err().to_string(),
+        "invalid IByy NaN: missing from the rider file"
+    );
+    let aside = Rider::from_text(&replace_line(&good, "yB", "yB = 0.1")).expect("read");
+    let bike = UncertainParams::read(&bicycle_text("Browser"), false).expect("bicycle");
+    assert_eq!(
+        add_rider(&bike.params, &aside).unwrap_err().to_string(),
+        "invalid yB 0.1: the rider's lateral position must be zero to 1e-6 of the wheelbase \
+         w = 1.121 (the model is laterally symmetric)"
+    );
+}
