@@ -364,6 +364,7 @@ mod tests {
         assert_eq!(
             parse(&args(&["sweep", "--model", "benchmark", "--vary", "c=0:0.2:10"])),
             Ok(Command::Sweep {
+                data: crate::args::DataOptions::default(),
                 model: "benchmark".into(),
                 designs: Designs::Grid(vec![vary("c", 0.0, 0.2, 10)]),
                 method: Method::Hurwitz,
@@ -382,6 +383,7 @@ mod tests {
                 "w=1:1.2:3"
             ])),
             Ok(Command::Sweep {
+                data: crate::args::DataOptions::default(),
                 model: "b".into(),
                 designs: Designs::Grid(vec![vary("c", 0.0, 0.2, 10), vary("w", 1.0, 1.2, 3)]),
                 method: Method::Hurwitz,
@@ -394,6 +396,7 @@ mod tests {
                 "mB=0.2", "--seed", "9", "--json"
             ])),
             Ok(Command::Sweep {
+                data: crate::args::DataOptions::default(),
                 model: "b".into(),
                 designs: Designs::Random {
                     count: 100,
