@@ -340,6 +340,11 @@ pub(crate) fn finish(out: Result<String, String>, help: &str) -> ExitCode {
                 ExitCode::FAILURE
             }
         },
+        // A bad file is named in one message; the usage is for a bad command line.
+        Err(err) if args::is_data_error(&err) => {
+            eprintln!("error: {err}");
+            ExitCode::from(2)
+        }
         Err(err) => {
             eprintln!("error: {err}\n\n{help}");
             ExitCode::from(2)

@@ -48,8 +48,17 @@ enum Output {
 
 #[derive(Debug, PartialEq)]
 enum Command {
-    Bench { json: bool, quick: bool },
-    Sweep { model: String, designs: Designs, method: Method, output: Output },
+    Bench {
+        json: bool,
+        quick: bool,
+    },
+    Sweep {
+        model: String,
+        data: crate::args::DataOptions,
+        designs: Designs,
+        method: Method,
+        output: Output,
+    },
 }
 
 /// Reads `NAME=FROM:TO:COUNT`.
@@ -91,8 +100,12 @@ fn parse(args: &[String]) -> Result<Command, String> {
     let (first, rest) = args.split_first().ok_or("missing command")?;
     let (mut output, mut quick, mut model, mut method) = (Output::Text, false, None, None);
     let (mut vary, mut spreads, mut random, mut seed) = (Vec::new(), Vec::new(), None, None);
+    let mut data = crate::args::DataOptions::default();
     let mut it = rest.iter();
     while let Some(arg) = it.next() {
+        if first == "sweep" && data.take(arg, &mut it)? {
+            continue;
+        }
         let mut value =
             |what: &str| it.next().cloned().ok_or_else(|| format!("missing value after `{what}`"));
         match (first.as_str(), arg.as_str()) {
@@ -157,7 +170,7 @@ fn parse(args: &[String]) -> Result<Command, String> {
         (None, true) => return Err("missing `--vary NAME=FROM:TO:COUNT` or `--random N`".into()),
         (None, false) => Designs::Grid(vary),
     };
-    Ok(Command::Sweep { model, designs, method: method.unwrap_or(Method::Hurwitz), output })
+    Ok(Command::Sweep { model, data, designs, method: method.unwrap_or(Method::Hurwitz), output })
 }
 
 /// Draws a progress bar on standard error until `done` is set.
@@ -189,8 +202,8 @@ fn run(cmd: Command) -> Result<String, String> {
                 Ok(crate::bench::render_text(&report))
             }
         }
-        Command::Sweep { model, designs, method, output } => {
-            let base = crate::args::model(&model)?;
+        Command::Sweep { model, data, designs, method, output } => {
+            let base = crate::args::bicycle(&model, &data)?;
             let count = match &designs {
                 Designs::Grid(axes) => axes.iter().map(|a| a.count).product::<usize>(),
                 Designs::Random { count, .. } => *count,
@@ -351,6 +364,7 @@ mod tests {
         assert_eq!(
             parse(&args(&["sweep", "--model", "benchmark", "--vary", "c=0:0.2:10"])),
             Ok(Command::Sweep {
+                data: crate::args::DataOptions::default(),
                 model: "benchmark".into(),
                 designs: Designs::Grid(vec![vary("c", 0.0, 0.2, 10)]),
                 method: Method::Hurwitz,
@@ -369,6 +383,7 @@ mod tests {
                 "w=1:1.2:3"
             ])),
             Ok(Command::Sweep {
+                data: crate::args::DataOptions::default(),
                 model: "b".into(),
                 designs: Designs::Grid(vec![vary("c", 0.0, 0.2, 10), vary("w", 1.0, 1.2, 3)]),
                 method: Method::Hurwitz,
@@ -381,6 +396,7 @@ mod tests {
                 "mB=0.2", "--seed", "9", "--json"
             ])),
             Ok(Command::Sweep {
+                data: crate::args::DataOptions::default(),
                 model: "b".into(),
                 designs: Designs::Random {
                     count: 100,

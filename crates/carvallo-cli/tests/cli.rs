@@ -219,3 +219,51 @@ fn parameter_text_files_with_uncertainties() {
     assert!(svg.contains("95 % band") && svg.contains("<polygon"), "the bands are drawn");
     let _ = std::fs::remove_dir_all(&dir);
 }
+
+#[test]
+fn bicycleparameters_files_with_riders_warnings_and_strict() {
+    let data = concat!(env!("CARGO_MANIFEST_DIR"), "/../../data/bicycleparameters");
+    let bike = format!("{data}/bicycles/Browser/Parameters/BrowserBenchmark.txt");
+    let rider = format!("{data}/riders/Jason/Parameters/JasonBrowserBenchmark.txt");
+    // A measured frame breaking a triangle inequality: computed, with a warning on stderr.
+    let (code, stdout, stderr) = carvallo(&["window", "--model", &bike]);
+    assert_eq!(code, 0, "{stderr}");
+    assert!(stdout.contains("weave speed: 4.19"), "{stdout}");
+    assert!(
+        stderr.starts_with("warning: ") && stderr.contains("IByy 1.3163960125 breaks a triangle"),
+        "{stderr}"
+    );
+    // --strict: today's error, one line, no usage text.
+    for args in [
+        vec!["window", "--model", &bike, "--strict"],
+        vec!["eig", "--strict", "--model", &bike, "--speed", "5"],
+        vec!["sweep", "--model", &bike, "--strict", "--vary", "c=0.05:0.1:2"],
+    ] {
+        let (code, stdout, stderr) = carvallo(&args);
+        assert_eq!((code, stdout.as_str()), (2, ""), "{args:?}: {stderr}");
+        assert_eq!(stderr.lines().count(), 1, "{args:?}: {stderr}");
+        assert!(stderr.contains("invalid IByy 1.3163960125: exceeds IBxx + IBzz"), "{stderr}");
+    }
+    // With the rider: the frame keeps the inequality, no warning.
+    let (code, stdout, stderr) = carvallo(&["window", "--model", &bike, "--rider", &rider]);
+    assert_eq!((code, stderr.as_str()), (0, ""), "{stderr}");
+    assert!(stdout.contains("weave speed: 4.99"), "{stdout}");
+    let (code, stdout, _) =
+        carvallo(&["eig", "--model", &bike, "--rider", &rider, "--speed", "5", "--json"]);
+    assert_eq!(code, 0);
+    assert!(stdout.contains("\"eigenvalues\""), "{stdout}");
+    // A bad rider file and a model that takes no rider.
+    let (code, _, stderr) = carvallo(&["window", "--model", &bike, "--rider", &bike]);
+    assert_eq!(code, 2);
+    assert_eq!(stderr.lines().count(), 1, "{stderr}");
+    assert!(
+        stderr.contains("invalid rider file")
+            && stderr.contains("line 5: unknown rider parameter `IFxx`")
+    );
+    let (code, _, stderr) = carvallo(&["window", "--model", "carvallo", "--rider", &rider]);
+    assert_eq!(code, 2);
+    assert!(stderr.contains("`--rider` and `--strict` read a bicycle file, not `carvallo`"));
+    let (code, _, stderr) = carvallo(&["window", "--model", &bike, "--rider"]);
+    assert_eq!(code, 2);
+    assert!(stderr.starts_with("error: missing value after `--rider`"), "{stderr}");
+}

@@ -2,11 +2,13 @@
 //! linearised Carvallo–Whipple bicycle at speed V, as JSON
 //! `{ "speed", "eigenvalues": [{"re", "im"}, ...] }`.
 //!
-//! The parameter file is read as for `window` ([`crate::args::model`]). Unknown or missing
+//! The parameter file is read as for `window` ([`crate::args::bicycle`], with `--rider FILE` and `--strict`). Unknown or missing
 //! arguments, a speed that is not a finite number and an unreadable or invalid parameter file
 //! are usage errors: a message naming the value, exit code 2.
 
 use carvallo::whipple::Whipple;
+
+use crate::args::DataOptions;
 use serde_json::{json, Value};
 
 /// The usage `eig` prints: the one of `window` and `eig` together.
@@ -15,14 +17,19 @@ pub const HELP: &str = super::window::HELP;
 #[derive(Debug, PartialEq)]
 struct Command {
     model: String,
+    data: DataOptions,
     speed: f64,
     json: bool,
 }
 
 fn parse(args: &[String]) -> Result<Command, String> {
     let (mut model, mut speed, mut json) = (None, None, false);
+    let mut data = DataOptions::default();
     let mut it = args.iter().skip(1);
     while let Some(arg) = it.next() {
+        if data.take(arg, &mut it)? {
+            continue;
+        }
         match arg.as_str() {
             "--json" if json => return Err("argument `--json` given more than once".into()),
             "--json" => json = true,
@@ -47,12 +54,12 @@ fn parse(args: &[String]) -> Result<Command, String> {
         }
     }
     let model = model.ok_or("missing `--model benchmark|FILE.toml`")?;
-    Ok(Command { model, speed: speed.ok_or("missing `--speed V`")?, json })
+    Ok(Command { model, data, speed: speed.ok_or("missing `--speed V`")?, json })
 }
 
 fn run(cmd: &Command) -> Result<String, String> {
-    let Command { model, speed, json } = cmd;
-    let ev = Whipple::new(crate::args::model(model)?).eigenvalues(*speed);
+    let Command { model, data, speed, json } = cmd;
+    let ev = Whipple::new(crate::args::bicycle(model, data)?).eigenvalues(*speed);
     if *json {
         let list: Vec<Value> = ev.iter().map(|e| json!({ "re": e.re, "im": e.im })).collect();
         let v = json!({ "speed": speed, "eigenvalues": list });
@@ -82,7 +89,12 @@ mod tests {
     fn parses_and_rejects_by_value() {
         assert_eq!(
             parse(&args(&["eig", "--speed", "5", "--model", "b.toml"])),
-            Ok(Command { model: "b.toml".into(), speed: 5.0, json: false })
+            Ok(Command {
+                model: "b.toml".into(),
+                data: DataOptions::default(),
+                speed: 5.0,
+                json: false
+            })
         );
         assert_eq!(
             parse(&args(&["eig", "--model", "x", "--speed", "fast"])),

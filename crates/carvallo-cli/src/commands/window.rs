@@ -25,6 +25,8 @@ use carvallo::bicycle_straight::{
     km_per_hour, memoir_quartic_120, window, Constants, Equations, Window,
 };
 use carvallo::whipple::Whipple;
+
+use crate::args::DataOptions;
 use serde_json::{json, Value};
 
 /// The usage of `window` and `eig`, which either prints for `--help` and after a usage error
@@ -43,13 +45,18 @@ pub const CARVALLO_MODELS: [&str; 4] =
 #[derive(Debug, PartialEq)]
 struct Command {
     model: String,
+    data: DataOptions,
     json: bool,
 }
 
 fn parse(args: &[String]) -> Result<Command, String> {
     let (mut model, mut json) = (None, false);
+    let mut data = DataOptions::default();
     let mut it = args.iter().skip(1);
     while let Some(arg) = it.next() {
+        if data.take(arg, &mut it)? {
+            continue;
+        }
         match arg.as_str() {
             "--json" if json => return Err("argument `--json` given more than once".into()),
             "--json" => json = true,
@@ -63,7 +70,7 @@ fn parse(args: &[String]) -> Result<Command, String> {
         }
     }
     let model = model.ok_or("missing `--model benchmark|FILE.toml`")?;
-    Ok(Command { model, json })
+    Ok(Command { model, data, json })
 }
 
 /// A JSON number, `null` for an infinite speed.
@@ -76,11 +83,14 @@ fn finite(x: f64) -> Value {
 }
 
 fn run(cmd: &Command) -> Result<String, String> {
-    let Command { model, json } = cmd;
+    let Command { model, data, json } = cmd;
     if CARVALLO_MODELS.contains(&model.as_str()) {
+        if data.any() {
+            return Err(format!("`--rider` and `--strict` read a bicycle file, not `{model}`"));
+        }
         return carvallo_window(model).and_then(|w| render_carvallo(model, &w, *json));
     }
-    let w = Whipple::new(crate::args::model(model)?).stability_window();
+    let w = Whipple::new(crate::args::bicycle(model, data)?).stability_window();
     let stable: Vec<Value> =
         w.stable.iter().map(|(a, b)| json!([finite(*a), finite(*b)])).collect();
     let opt = |x: Option<f64>| x.map_or(Value::Null, finite);
@@ -177,7 +187,7 @@ mod tests {
     fn parses_and_rejects_by_value() {
         assert_eq!(
             parse(&args(&["window", "--model", "benchmark", "--json"])),
-            Ok(Command { model: "benchmark".into(), json: true })
+            Ok(Command { model: "benchmark".into(), data: DataOptions::default(), json: true })
         );
         assert_eq!(
             parse(&args(&["window", "--speed", "3"])),

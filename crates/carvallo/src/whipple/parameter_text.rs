@@ -11,7 +11,7 @@
 
 use std::fmt;
 
-use crate::whipple::{BicycleDesign, WhippleError, WhippleParams, PARAM_NAMES};
+use crate::whipple::{BicycleDesign, TriangleWarning, WhippleError, WhippleParams, PARAM_NAMES};
 
 /// A bicycle and the standard deviations of its parameters.
 #[derive(Clone, Debug, PartialEq)]
@@ -38,6 +38,16 @@ pub enum ParameterTextError {
     },
     /// The values read do not make a valid bicycle (a missing key, a non-positive mass, ...).
     Invalid(WhippleError),
+    /// A value that the model cannot take as written: a wheel's third moment that is not its
+    /// first, a lateral position that is not zero, front-frame parts that do not make `H`.
+    Rule {
+        /// The key at fault.
+        key: String,
+        /// Its value.
+        value: f64,
+        /// Why, in lower-case words naming the values compared.
+        reason: String,
+    },
 }
 
 impl fmt::Display for ParameterTextError {
@@ -47,6 +57,9 @@ impl fmt::Display for ParameterTextError {
                 write!(f, "line {line}: {reason} (`{text}`)")
             }
             ParameterTextError::Invalid(e) => write!(f, "{e}"),
+            ParameterTextError::Rule { key, value, reason } => {
+                write!(f, "invalid {key} {value:?}: {reason}")
+            }
         }
     }
 }
@@ -115,18 +128,106 @@ fn value_and_sigma(text: &str) -> Result<(f64, f64), String> {
     Ok((value, sigma))
 }
 
+/// A parameter text read, with what it broke but was accepted.
+#[derive(Clone, Debug, PartialEq)]
+pub struct Loaded {
+    /// The parameters and their uncertainties.
+    pub params: UncertainParams,
+    /// Triangle inequalities of measured inertias that the values break (empty when strict).
+    pub warnings: Vec<TriangleWarning>,
+}
+
+/// Keys of BicycleParameters' files beside the 26 of [`PARAM_NAMES`]: the wheels' third
+/// moments, lateral positions, and the front frame's parts `G` (fork) and `S` (handlebar).
+const EXTRA_NAMES: [&str; 20] = [
+    "IRzz", "IFzz", "yB", "yH", "yG", "yS", "mG", "xG", "zG", "IGxx", "IGxz", "IGyy", "IGzz", "mS",
+    "xS", "zS", "ISxx", "ISxz", "ISyy", "ISzz",
+];
+
+/// A rigid body in the x–z plane: mass, mass centre `(x, z)` and inertia
+/// `Ixx, Ixz, Iyy, Izz` about its mass centre.
+pub(crate) type PlanarBody = [f64; 7];
+
+/// The rigid body made of `a` and `b` (parallel-axis theorem about the joint mass centre,
+/// $I = I_c + m (|d|^2 E - d d^T)$ with $d = (d_x, 0, d_z)$, as BicycleParameters'
+/// `inertia.parallel_axis`).
+pub(crate) fn combine(a: &PlanarBody, b: &PlanarBody) -> PlanarBody {
+    let m = a[0] + b[0];
+    let x = (a[0] * a[1] + b[0] * b[1]) / m;
+    let z = (a[0] * a[2] + b[0] * b[2]) / m;
+    let mut out = [m, x, z, 0.0, 0.0, 0.0, 0.0];
+    for body in [a, b] {
+        let (dx, dz) = (body[1] - x, body[2] - z);
+        out[3] += body[3] + body[0] * dz * dz;
+        out[4] += body[4] - body[0] * dx * dz;
+        out[5] += body[5] + body[0] * (dx * dx + dz * dz);
+        out[6] += body[6] + body[0] * dx * dx;
+    }
+    out
+}
+
+/// The first-order standard deviations of `f(x)` for independent inputs with standard
+/// deviations `s` (the linear propagation of the `uncertainties` package): each partial
+/// derivative by a central difference of relative step $10^{-6}$ (exact for the polynomial and
+/// rational `f` used here up to about $10^{-10}$ relative).
+pub(crate) fn propagate<const N: usize, const M: usize>(
+    f: impl Fn(&[f64; N]) -> [f64; M],
+    x: &[f64; N],
+    s: &[f64; N],
+) -> [f64; M] {
+    let mut var = [0.0; M];
+    for i in 0..N {
+        if s[i] == 0.0 {
+            continue;
+        }
+        let h = 1e-6 * x[i].abs().max(s[i]).max(1e-12);
+        let (mut up, mut down) = (*x, *x);
+        up[i] += h;
+        down[i] -= h;
+        let (fu, fd) = (f(&up), f(&down));
+        for j in 0..M {
+            let d = (fu[j] - fd[j]) / (2.0 * h) * s[i];
+            var[j] += d * d;
+        }
+    }
+    var.map(f64::sqrt)
+}
+
 impl UncertainParams {
-    /// Reads a BicycleParameters benchmark parameter text (see the [module docs](self)).
+    /// Reads a BicycleParameters benchmark parameter text (see the [module docs](self)),
+    /// refusing broken triangle inequalities: [`read`](Self::read) with `strict`.
+    ///
+    /// # Errors
+    /// As [`read`](Self::read).
+    pub fn from_text(text: &str) -> Result<UncertainParams, ParameterTextError> {
+        UncertainParams::read(text, true).map(|l| l.params)
+    }
+
+    /// Reads a BicycleParameters benchmark parameter text (see the [module docs](self)), with
+    /// the keys of BicycleParameters' files beside the model's 26:
+    /// - `IRzz`, `IFzz` (the wheels are axisymmetric): accepted when equal to `IRxx`, `IFxx`
+    ///   within the sum of their stated uncertainties;
+    /// - `yB`, `yH`, `yG`, `yS` (the model is laterally symmetric): accepted when zero to
+    ///   $10^{-6}$ of the wheelbase `w`;
+    /// - the front frame's parts, fork `G` and handlebar `S` (`mG, xG, zG, IGxx, IGxz, IGyy,
+    ///   IGzz` and the same for `S`): combined by the parallel-axis theorem into `H`; beside
+    ///   `H` each of the seven values of `H` must equal the combination within the sum of its
+    ///   stated uncertainty and the combination's (first order).
+    ///
+    /// Moments of inertia that break a triangle inequality are an error when `strict`,
+    /// otherwise accepted and returned as [`Loaded::warnings`].
     ///
     /// # Errors
     /// [`ParameterTextError::Line`] naming the line and the value at fault (an unknown or
     /// repeated name, a value or uncertainty that is not a number, a negative uncertainty);
+    /// [`ParameterTextError::Rule`] for a rule above broken, naming the key and values;
     /// [`ParameterTextError::Invalid`] for a missing parameter or values that are not a valid
     /// bicycle ([`WhippleParams::from_values`]).
-    pub fn from_text(text: &str) -> Result<UncertainParams, ParameterTextError> {
+    pub fn read(text: &str, strict: bool) -> Result<Loaded, ParameterTextError> {
         let mut values = [f64::NAN; 26];
         let mut sigma = [0.0; 26];
         let mut seen = [false; 26];
+        let mut extra: [Option<(f64, f64)>; 20] = [None; 20];
         for (i, raw) in text.lines().enumerate() {
             let line = raw.trim();
             if line.is_empty() || line.starts_with('#') {
@@ -142,22 +243,147 @@ impl UncertainParams {
                 .ok_or_else(|| err("expected `name = value+/-uncertainty`".to_string()))?;
             let name = name.trim();
             let key = if name == "lam" { "lambda" } else { name };
-            let k = PARAM_NAMES
-                .iter()
-                .position(|n| *n == key)
-                .ok_or_else(|| err(format!("unknown parameter `{name}`")))?;
-            if seen[k] {
+            let slot = match PARAM_NAMES.iter().position(|n| *n == key) {
+                Some(k) => {
+                    let first = !seen[k];
+                    seen[k] = true;
+                    first.then_some(())
+                }
+                None => {
+                    let k = EXTRA_NAMES
+                        .iter()
+                        .position(|n| *n == key)
+                        .ok_or_else(|| err(format!("unknown parameter `{name}`")))?;
+                    extra[k].is_none().then_some(())
+                }
+            };
+            if slot.is_none() {
                 return Err(err(format!("parameter `{name}` given twice")));
             }
-            seen[k] = true;
-            let (v, s) = value_and_sigma(rest).map_err(|r| err(format!("{name}: {r}")))?;
-            values[k] = v;
-            sigma[k] = s;
+            let vs = value_and_sigma(rest).map_err(|r| err(format!("{name}: {r}")))?;
+            match PARAM_NAMES.iter().position(|n| *n == key) {
+                Some(k) => (values[k], sigma[k]) = vs,
+                None => {
+                    let k = EXTRA_NAMES.iter().position(|n| *n == key).unwrap_or(0);
+                    extra[k] = Some(vs);
+                }
+            }
+        }
+        let get = |name: &str| EXTRA_NAMES.iter().position(|n| *n == name).and_then(|k| extra[k]);
+        let index = |name: &str| PARAM_NAMES.iter().position(|n| *n == name).unwrap_or(0);
+        // The front frame from its parts, when they are given.
+        let part = |body: char| -> Result<Option<([f64; 7], [f64; 7])>, ParameterTextError> {
+            let keys = ["m", "x", "z", "Ixx", "Ixz", "Iyy", "Izz"].map(|k| match k {
+                "m" | "x" | "z" => format!("{k}{body}"),
+                _ => format!("I{body}{}", &k[1..]),
+            });
+            let found: Vec<Option<(f64, f64)>> = keys.iter().map(|k| get(k)).collect();
+            if found.iter().all(Option::is_none) {
+                return Ok(None);
+            }
+            let mut v = [0.0; 7];
+            let mut s = [0.0; 7];
+            for (j, f) in found.iter().enumerate() {
+                let (a, b) = f.ok_or_else(|| ParameterTextError::Rule {
+                    key: keys[j].clone(),
+                    value: f64::NAN,
+                    reason: format!("missing: the front frame's part {body} is given in part"),
+                })?;
+                (v[j], s[j]) = (a, b);
+            }
+            Ok(Some((v, s)))
+        };
+        let h_keys = ["mH", "xH", "zH", "IHxx", "IHxz", "IHyy", "IHzz"];
+        match (part('G')?, part('S')?) {
+            (None, None) => {}
+            (Some((g, gs)), Some((sv, ss))) => {
+                let x: [f64; 14] = std::array::from_fn(|j| if j < 7 { g[j] } else { sv[j - 7] });
+                let xs: [f64; 14] = std::array::from_fn(|j| if j < 7 { gs[j] } else { ss[j - 7] });
+                let f = |x: &[f64; 14]| {
+                    let (a, b): ([f64; 7], [f64; 7]) =
+                        (std::array::from_fn(|j| x[j]), std::array::from_fn(|j| x[j + 7]));
+                    combine(&a, &b)
+                };
+                let h = f(&x);
+                let hs = propagate(f, &x, &xs);
+                let given = h_keys.map(|k| seen[index(k)]);
+                if given.iter().all(|g| !g) {
+                    for (j, k) in h_keys.iter().enumerate() {
+                        (values[index(k)], sigma[index(k)]) = (h[j], hs[j]);
+                        seen[index(k)] = true;
+                    }
+                } else {
+                    for (j, k) in h_keys.iter().enumerate() {
+                        let i = index(k);
+                        if !seen[i] {
+                            continue;
+                        }
+                        let tol = sigma[i] + hs[j] + 1e-9 * h[j].abs().max(values[i].abs());
+                        if (values[i] - h[j]).abs() > tol {
+                            return Err(ParameterTextError::Rule {
+                                key: k.to_string(),
+                                value: values[i],
+                                reason: format!(
+                                    "differs from {:?}+/-{:?}, the fork G and handlebar S combined \
+                                     by the parallel-axis theorem, by more than the stated \
+                                     uncertainties",
+                                    h[j], hs[j]
+                                ),
+                            });
+                        }
+                    }
+                }
+            }
+            (Some(_), None) | (None, Some(_)) => {
+                let (given, missing) = if part('G')?.is_some() { ('G', 'S') } else { ('S', 'G') };
+                return Err(ParameterTextError::Rule {
+                    key: format!("m{missing}"),
+                    value: f64::NAN,
+                    reason: format!(
+                        "missing: the front frame's part {given} is given without its part {missing}"
+                    ),
+                });
+            }
         }
         if let Some(k) = seen.iter().position(|s| !s) {
             return Err(WhippleError::MissingKey { key: PARAM_NAMES[k] }.into());
         }
-        Ok(UncertainParams { params: WhippleParams::from_values(values)?, sigma })
+        for (zz, xx) in [("IRzz", "IRxx"), ("IFzz", "IFxx")] {
+            if let Some((v, s)) = get(zz) {
+                let (a, sa) = (values[index(xx)], sigma[index(xx)]);
+                if (v - a).abs() > s + sa + 1e-9 * a.abs() {
+                    return Err(ParameterTextError::Rule {
+                        key: zz.to_string(),
+                        value: v,
+                        reason: format!(
+                            "must equal {xx} {a:?} within their stated uncertainties (the model's \
+                             wheels are axisymmetric)"
+                        ),
+                    });
+                }
+            }
+        }
+        let w = values[index("w")];
+        for y in ["yB", "yH", "yG", "yS"] {
+            if let Some((v, _)) = get(y) {
+                if !(v.abs() <= 1e-6 * w.abs()) {
+                    return Err(ParameterTextError::Rule {
+                        key: y.to_string(),
+                        value: v,
+                        reason: format!(
+                            "must be zero to 1e-6 of the wheelbase w = {w:?} (the model is \
+                             laterally symmetric)"
+                        ),
+                    });
+                }
+            }
+        }
+        let (params, warnings) = if strict {
+            (WhippleParams::from_values(values)?, Vec::new())
+        } else {
+            WhippleParams::from_values_warning(values)?
+        };
+        Ok(Loaded { params: UncertainParams { params, sigma }, warnings })
     }
 
     /// Parameters without uncertainty.
@@ -205,6 +431,134 @@ impl UncertainParams {
         }
         s
     }
+}
+
+/// The keys of a BicycleParameters rider file, in order: the rider's rigid body in the
+/// bicycle's frame (mass, mass centre, inertia about the mass centre).
+pub const RIDER_NAMES: [&str; 8] = ["mB", "xB", "yB", "zB", "IBxx", "IBxz", "IByy", "IBzz"];
+
+/// A rigid rider (BicycleParameters' `riders/<name>/Parameters/<name><bicycle>Benchmark.txt`):
+/// values and standard deviations in the order of [`RIDER_NAMES`].
+#[derive(Clone, Debug, PartialEq)]
+pub struct Rider {
+    /// The values.
+    pub values: [f64; 8],
+    /// Their standard deviations (zero when none is stated).
+    pub sigma: [f64; 8],
+}
+
+impl Rider {
+    /// Reads a rider file: the eight keys of [`RIDER_NAMES`], each once, as
+    /// `name = value+/-uncertainty` (the forms of [`UncertainParams::read`]).
+    ///
+    /// # Errors
+    /// [`ParameterTextError::Line`] naming the line at fault (an unknown or repeated key, a
+    /// value that is not a number); [`ParameterTextError::Rule`] for a missing key or a mass
+    /// or moment that is not positive.
+    pub fn from_text(text: &str) -> Result<Rider, ParameterTextError> {
+        let mut values = [f64::NAN; 8];
+        let mut sigma = [0.0; 8];
+        let mut seen = [false; 8];
+        for (i, raw) in text.lines().enumerate() {
+            let line = raw.trim();
+            if line.is_empty() || line.starts_with('#') {
+                continue;
+            }
+            let err = |reason: String| ParameterTextError::Line {
+                line: i + 1,
+                text: line.chars().take(80).collect(),
+                reason,
+            };
+            let (name, rest) = line
+                .split_once('=')
+                .ok_or_else(|| err("expected `name = value+/-uncertainty`".to_string()))?;
+            let name = name.trim();
+            let k = RIDER_NAMES
+                .iter()
+                .position(|n| *n == name)
+                .ok_or_else(|| err(format!("unknown rider parameter `{name}`")))?;
+            if seen[k] {
+                return Err(err(format!("parameter `{name}` given twice")));
+            }
+            seen[k] = true;
+            (values[k], sigma[k]) =
+                value_and_sigma(rest).map_err(|r| err(format!("{name}: {r}")))?;
+        }
+        if let Some(k) = seen.iter().position(|s| !s) {
+            return Err(ParameterTextError::Rule {
+                key: RIDER_NAMES[k].to_string(),
+                value: f64::NAN,
+                reason: "missing from the rider file".to_string(),
+            });
+        }
+        for k in [0, 4, 6, 7] {
+            if !(values[k] > 0.0) {
+                return Err(ParameterTextError::Rule {
+                    key: RIDER_NAMES[k].to_string(),
+                    value: values[k],
+                    reason: "must be positive (the rider's mass and principal moments)".to_string(),
+                });
+            }
+        }
+        Ok(Rider { values, sigma })
+    }
+}
+
+/// The bicycle with the rider's rigid body added to its rear frame `B` (BicycleParameters'
+/// `inertia.combine_bike_rider`, used by `Bicycle.add_rider`): the joint mass and mass centre,
+/// and the inertia about it by the parallel-axis theorem; the uncertainties of the eight
+/// frame values carried to first order from the frame's and the rider's (independent).
+/// The rider's `yB` must be zero to $10^{-6}$ of the wheelbase (the model is laterally
+/// symmetric). Triangle inequalities broken by the combined frame are returned as warnings.
+///
+/// # Errors
+/// [`ParameterTextError::Rule`] for a rider `yB` that is not zero;
+/// [`ParameterTextError::Invalid`] if the combination is not a valid bicycle.
+pub fn add_rider(params: &UncertainParams, rider: &Rider) -> Result<Loaded, ParameterTextError> {
+    let w = params.params.get("w").unwrap_or(f64::NAN);
+    let y = rider.values[2];
+    if !(y.abs() <= 1e-6 * w.abs()) {
+        return Err(ParameterTextError::Rule {
+            key: "yB".to_string(),
+            value: y,
+            reason: format!(
+                "the rider's lateral position must be zero to 1e-6 of the wheelbase w = {w:?} \
+                 (the model is laterally symmetric)"
+            ),
+        });
+    }
+    // The frame's and the rider's planar bodies, in PlanarBody order.
+    let frame_keys = ["mB", "xB", "zB", "IBxx", "IBxz", "IByy", "IBzz"];
+    let index = |name: &str| PARAM_NAMES.iter().position(|n| *n == name).unwrap_or(0);
+    let rider_order = [0, 1, 3, 4, 5, 6, 7];
+    let x: [f64; 14] = std::array::from_fn(|j| {
+        if j < 7 {
+            params.params.values()[index(frame_keys[j])]
+        } else {
+            rider.values[rider_order[j - 7]]
+        }
+    });
+    let xs: [f64; 14] = std::array::from_fn(|j| {
+        if j < 7 {
+            params.sigma[index(frame_keys[j])]
+        } else {
+            rider.sigma[rider_order[j - 7]]
+        }
+    });
+    let f = |x: &[f64; 14]| {
+        let (a, b): (PlanarBody, PlanarBody) =
+            (std::array::from_fn(|j| x[j]), std::array::from_fn(|j| x[j + 7]));
+        combine(&a, &b)
+    };
+    let body = f(&x);
+    let body_sigma = propagate(f, &x, &xs);
+    let mut values = *params.params.values();
+    let mut sigma = params.sigma;
+    for (j, key) in frame_keys.iter().enumerate() {
+        (values[index(key)], sigma[index(key)]) = (body[j], body_sigma[j]);
+    }
+    let (p, warnings) = WhippleParams::from_values_warning(values)?;
+    Ok(Loaded { params: UncertainParams { params: p, sigma }, warnings })
 }
 
 #[cfg(test)]

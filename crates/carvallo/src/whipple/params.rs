@@ -175,6 +175,34 @@ pub(crate) fn parse_pi(text: &str) -> Option<f64> {
     Some(k * std::f64::consts::PI / den)
 }
 
+/// A broken triangle inequality of a body's moments of inertia, accepted by
+/// [`WhippleParams::from_values_warning`].
+#[derive(Clone, Debug, PartialEq)]
+pub struct TriangleWarning {
+    /// The moment that breaks it (`IRyy`, `IFyy`, `IByy` or `IHyy`).
+    pub key: &'static str,
+    /// Its value.
+    pub value: f64,
+    /// The nearest value that satisfies the inequality.
+    pub bound: f64,
+    /// By how much the inequality is broken, relative to its bound (0.01 is 1 %).
+    pub relative: f64,
+}
+
+impl fmt::Display for TriangleWarning {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        write!(
+            f,
+            "{} {:?} breaks a triangle inequality of the moments of inertia by {:.3} % \
+             (bound {:?}); computed as given",
+            self.key,
+            self.value,
+            100.0 * self.relative,
+            self.bound
+        )
+    }
+}
+
 /// A validated parameter set of the Carvallo–Whipple bicycle.
 #[derive(Clone, Debug, PartialEq)]
 pub struct WhippleParams {
@@ -287,6 +315,90 @@ impl WhippleParams {
         }
         p.check_triangle_inequalities()?;
         Ok(p)
+    }
+
+    /// As [`from_values`](Self::from_values), except that moments of inertia breaking a
+    /// triangle inequality are accepted: each violation is returned, naming the parameter and
+    /// the relative violation, for the caller to report (a measured frame, such as those of
+    /// BicycleParameters' Browser and Yellow bicycles, can break them by a few per cent; the
+    /// model's equations do not need them).
+    ///
+    /// # Errors
+    /// As [`from_values`](Self::from_values) for every other check.
+    pub fn from_values_warning(
+        values: [f64; 26],
+    ) -> Result<(WhippleParams, Vec<TriangleWarning>), WhippleError> {
+        match WhippleParams::from_values(values) {
+            Ok(p) => Ok((p, Vec::new())),
+            Err(WhippleError::Parameter(ParameterError::InvalidParameter { name, .. }))
+                if ["IRyy", "IFyy", "IByy", "IHyy"].contains(&name) =>
+            {
+                let p = WhippleParams { values };
+                let warnings = p.triangle_violations();
+                // Only the triangle inequalities failed when the violations explain the error
+                // and every other check passes on a set that satisfies them.
+                let mut repaired = values;
+                for w in &warnings {
+                    let k = PARAM_NAMES.iter().position(|n| *n == w.key).unwrap_or(0);
+                    repaired[k] = w.bound;
+                }
+                match WhippleParams::from_values(repaired) {
+                    Ok(_) if !warnings.is_empty() => Ok((p, warnings)),
+                    Ok(_) => WhippleParams::from_values(values).map(|p| (p, Vec::new())),
+                    Err(e) => Err(e),
+                }
+            }
+            Err(e) => Err(e),
+        }
+    }
+
+    /// Every broken triangle inequality (see
+    /// [`check_triangle_inequalities`](Self::check_triangle_inequalities)), with the relative
+    /// slack of $10^{-9}$.
+    fn triangle_violations(&self) -> Vec<TriangleWarning> {
+        const SLACK: f64 = 1e-9;
+        let mut out = Vec::new();
+        for (xx, yy) in [("IRxx", "IRyy"), ("IFxx", "IFyy")] {
+            let (a, b) = (self.value(xx), self.value(yy));
+            if b > 2.0 * a * (1.0 + SLACK) {
+                let key = if yy == "IRyy" { "IRyy" } else { "IFyy" };
+                out.push(TriangleWarning {
+                    key,
+                    value: b,
+                    bound: 2.0 * a,
+                    relative: (b - 2.0 * a) / (2.0 * a),
+                });
+            }
+        }
+        for body in ["B", "H"] {
+            let name = |s: &str| format!("I{body}{s}");
+            let (a, c, d, yy) = (
+                self.value(&name("xx")),
+                self.value(&name("zz")),
+                self.value(&name("xz")),
+                self.value(&name("yy")),
+            );
+            let key = if body == "B" { "IByy" } else { "IHyy" };
+            let mean = 0.5 * (a + c);
+            let half = (0.25 * (a - c) * (a - c) + d * d).sqrt();
+            let (l1, l2) = (mean - half, mean + half);
+            if yy > (l1 + l2) * (1.0 + SLACK) {
+                out.push(TriangleWarning {
+                    key,
+                    value: yy,
+                    bound: l1 + l2,
+                    relative: (yy - (l1 + l2)) / (l1 + l2),
+                });
+            } else if l2 > (l1 + yy) * (1.0 + SLACK) {
+                out.push(TriangleWarning {
+                    key,
+                    value: yy,
+                    bound: l2 - l1,
+                    relative: (l2 - (l1 + yy)) / (l1 + yy),
+                });
+            }
+        }
+        out
     }
 
     /// The moments of inertia of a rigid body obey the triangle inequalities: each principal

@@ -5,6 +5,7 @@
 //! al.'s circular motion ([`basu_mandal`]).
 
 mod basu_mandal;
+mod bicycleparameters;
 mod design;
 mod nonlinear;
 mod params;
