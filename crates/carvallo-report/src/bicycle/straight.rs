@@ -1352,7 +1352,7 @@ fn slope_claim(k: &Constants) -> Claim {
 
 /// The memoir's assertions in this report's sections, n° by n°, with how each is covered.
 pub const INVENTORY: &[Assertion] = &[
-    a("107", "outside straight running the rider without hands obtains a steady regime only by a lateral shift of the body, so turns are limited to a large radius", Left("refers to the steady turns of n° 90-98 (another report); 'large radius' is not quantified")),
+    a("107", "outside straight running the rider without hands obtains a steady regime only by a lateral shift of the body, so turns are limited to a large radius", Left("contradicted at first order by this project's own n° 97 finding (bicycle steady report, entry `speed of a steady turn without hands and without lateral shift`, memoir-error): with the derived handlebar ratio a hands-free steady turn without lateral shift exists at 3.14 m/s (11.3 km/h, memoir's constants of n° 96); the memoir's 'only by a lateral shift' rests on its printed ratio of (1)', which lost a sin(omega) (n° 95); 'large radius' is not quantified, so this restatement gets no verdict of its own")),
     a("107", "the stability of straight running gives a sufficient idea of the stability without hands", Left("a judgement on the scope of the study, not a property to check")),
     a("108", "at first order ω = η, the variation η1 of the frame angle and its rate are of the second order, c1 can be held constant", Left("steps of the first-order reduction; their consequence, the n° 116-117 coefficients, agree with the exact linearisation (the n° 116 entry `the twelve coefficients`)")),
     a("108", "the yaw rate at first order is n = (R/l) cos η γ s + (c1/l) γ'", Value("check yaw_rate")),

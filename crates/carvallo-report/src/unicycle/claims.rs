@@ -1813,7 +1813,6 @@ pub const INVENTORY: &[Assertion] = &[
     a("78", "with L = 0 the same calculation as the hoop; the new method applies to every case", Value("unicycle check characteristic_78_memoir")),
     a("78", "N has theta' as a factor, so lambda factors out of the characteristic equation", Value("characteristic determinant, second row")),
     a("78", "the lambda^2 coefficient is positive because L is small", Checked("unicycle-78-leading-positive")),
-    a("78", "stability: product of the roots positive and sum <= 0", Left("the Hurwitz conditions of a quadratic: algebra, not a claim on the model")),
     a("78", "straight running: dN/dp = (B1 - mu1 R^2) s = mu1 R^2 s", Value("dN/dp at theta = 0, n = 0")),
     a("78", "the product condition -C mu g h + mu mu1 R^3 h s^2 > 0", Value("(2) product of the roots")),
     a("78", "the product condition is identical to (S) of n° 36", Checked("unicycle-78-product-is-36")),

@@ -84,6 +84,59 @@ fn every_inventory_names_what_covers_it() {
     assert_eq!(ids.len(), n, "a claim id is used twice");
 }
 
+/// The words of an assertion as compared by [`no_assertion_is_listed_twice`]: lower case, the
+/// memoir's `≤`/`≥` read as `<=`/`>=`, `> 0` read as `positive`, punctuation dropped, and the
+/// words sorted (two listings of one statement may order them differently).
+fn words(says: &str) -> Vec<String> {
+    let says = says.to_lowercase().replace('≤', "<=").replace('≥', ">=").replace("> 0", "positive");
+    let mut w: Vec<String> = says
+        .split(|c: char| !(c.is_alphanumeric() || "<=>'".contains(c)))
+        .filter(|w| !w.is_empty())
+        .map(str::to_string)
+        .collect();
+    w.sort_unstable();
+    w.dedup();
+    w
+}
+
+/// One assertion of the memoir is listed once across every inventory: two listings of the same
+/// n° whose words are the same, or where one's words all appear in the other (the shorter one
+/// restates the longer), are one assertion listed twice, however each is covered (n° 78's
+/// product/sum criterion was once left by the unicycle's inventory and checked by the hoop's).
+#[test]
+fn no_assertion_is_listed_twice() {
+    let all = carvallo_report::all_assertions();
+    for (i, a) in all.iter().enumerate() {
+        let wa = words(a.says);
+        for b in &all[i + 1..] {
+            if a.section != b.section {
+                continue;
+            }
+            let wb = words(b.says);
+            let (short, long) = if wa.len() <= wb.len() { (&wa, &wb) } else { (&wb, &wa) };
+            assert!(
+                !short.iter().all(|w| long.contains(w)),
+                "n° {}: listed twice: `{}` ({:?}) and `{}` ({:?})",
+                a.section,
+                a.says,
+                a.status,
+                b.says,
+                b.status
+            );
+        }
+    }
+}
+
+/// The duplicate test's reading of words: it sees the removed n° 78 listing as the hoop's.
+#[test]
+fn the_duplicate_test_sees_a_restated_assertion() {
+    let left = words("stability: product of the roots positive and sum <= 0");
+    let checked = words("a quadratic characteristic equation: product of the roots > 0 and sum ≤ 0 assure stability, real or complex roots");
+    assert!(left.iter().all(|w| checked.contains(w)), "{left:?} not in {checked:?}");
+    let other = words("the product condition is identical to (S) of n° 36");
+    assert!(!other.iter().all(|w| checked.contains(w)));
+}
+
 #[test]
 fn the_claims_are_the_registry() {
     let total: usize = REPORTS.iter().map(|r| (r.claims)().len()).sum();
