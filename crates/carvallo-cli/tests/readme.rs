@@ -137,10 +137,14 @@ fn run(command: &str, dir: &Path) -> String {
     }
 }
 
+/// A fresh directory to run the examples in, with the workspace's `data/` linked into it, so
+/// that the pages' examples name the parameter files as a reader at the workspace root would.
 fn scratch() -> PathBuf {
     let dir = std::env::temp_dir().join(format!("carvallo-readme-{}", std::process::id()));
     let _ = std::fs::remove_dir_all(&dir);
     std::fs::create_dir_all(&dir).unwrap();
+    let data = Path::new(env!("CARGO_MANIFEST_DIR")).join("../../data");
+    std::os::unix::fs::symlink(data.canonicalize().unwrap(), dir.join("data")).unwrap();
     dir
 }
 
