@@ -20,7 +20,12 @@
 //!   `stable`, `weave_speed`, `capsize_speed` (empty when there is none), for
 //!   `pandas.read_csv`.
 //!
-//! Bad arguments are usage errors naming the value, exit code 2.
+//!   The designs stream in blocks ([`sweep::sweep_stream`]): memory does not depend on their
+//!   number, CSV rows are written as the blocks finish, and Ctrl-C ends the sweep with the
+//!   summary of the designs done and the line `interrupted after K of N designs` (exit 0).
+//!
+//! Bad arguments are usage errors naming the value, exit code 2 (a count that does not fit a
+//! `usize` too).
 
 use std::io::{IsTerminal, Write};
 use std::sync::atomic::{AtomicBool, AtomicUsize, Ordering};
@@ -66,8 +71,13 @@ fn parse_vary(text: &str) -> Result<Vary, String> {
             Err(format!("invalid number `{s}` in --vary `{text}`: must be finite"))
         }
     };
-    let count: usize =
-        count.parse().map_err(|_| format!("invalid count `{count}` in --vary `{text}`"))?;
+    let count: usize = count.parse().map_err(|e: std::num::ParseIntError| {
+        if *e.kind() == std::num::IntErrorKind::PosOverflow {
+            format!("invalid count `{count}` in --vary `{text}`: more than {} designs", usize::MAX)
+        } else {
+            format!("invalid count `{count}` in --vary `{text}`")
+        }
+    })?;
     if count == 0 {
         return Err(format!("invalid count `0` in --vary `{text}`: must be at least 1"));
     }
@@ -116,6 +126,12 @@ fn parse(args: &[String]) -> Result<Command, String> {
                 let v = value("--random")?;
                 match v.parse::<usize>() {
                     Ok(n) if n >= 1 => random = Some(n),
+                    Err(e) if *e.kind() == std::num::IntErrorKind::PosOverflow => {
+                        return Err(format!(
+                            "invalid count `{v}` of --random: more than {} designs",
+                            usize::MAX
+                        ))
+                    }
                     _ => {
                         return Err(format!("invalid count `{v}` of --random: expected at least 1"))
                     }

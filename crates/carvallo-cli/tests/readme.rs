@@ -216,3 +216,27 @@ fn the_matcher_elides_and_rounds() {
     assert!(!matches(&exp, &["a 1.0", "b"]));
     assert_eq!(normalise("x2 = -4.2923825363411"), "x2 = -4.29238254e0");
 }
+
+#[test]
+fn every_cli_example_in_the_exit_code_guide_replays() {
+    let path = Path::new(env!("CARGO_MANIFEST_DIR")).join("../../docs/guide/src/exit-codes.md");
+    let page = std::fs::read_to_string(path).unwrap();
+    let list = examples(&page);
+    assert_eq!(list.len(), 3, "the examples of docs/guide/src/exit-codes.md");
+    // Not `scratch()`: the README's test uses that directory at the same time.
+    let dir = std::env::temp_dir().join(format!("carvallo-guide-{}", std::process::id()));
+    std::fs::create_dir_all(&dir).unwrap();
+    for ex in &list {
+        let output = run(&ex.command, &dir);
+        let lines: Vec<&str> = output.lines().collect();
+        assert!(
+            matches(&ex.expected, &lines),
+            "exit-codes.md line {}: `carvallo {}`\n--- the page shows:\n{}\n--- the binary prints:\n{}",
+            ex.line,
+            ex.command,
+            ex.expected.join("\n"),
+            output
+        );
+    }
+    let _ = std::fs::remove_dir_all(&dir);
+}
