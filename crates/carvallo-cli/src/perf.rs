@@ -20,9 +20,14 @@
 //!   `stable`, `weave_speed`, `capsize_speed` (empty when there is none), for
 //!   `pandas.read_csv`.
 //!
-//! Bad arguments are usage errors naming the value, exit code 2.
+//!   The designs stream in blocks ([`sweep::sweep_stream`]): memory does not depend on their
+//!   number, CSV rows are written as the blocks finish, and Ctrl-C ends the sweep with the
+//!   summary of the designs done and the line `interrupted after K of N designs` (exit 0).
+//!
+//! Bad arguments are usage errors naming the value, exit code 2 (a count that does not fit a
+//! `usize` too).
 
-use std::io::IsTerminal;
+use std::io::{IsTerminal, Write};
 use std::sync::atomic::{AtomicBool, AtomicUsize, Ordering};
 use std::time::Duration;
 
@@ -75,8 +80,13 @@ fn parse_vary(text: &str) -> Result<Vary, String> {
             Err(format!("invalid number `{s}` in --vary `{text}`: must be finite"))
         }
     };
-    let count: usize =
-        count.parse().map_err(|_| format!("invalid count `{count}` in --vary `{text}`"))?;
+    let count: usize = count.parse().map_err(|e: std::num::ParseIntError| {
+        if *e.kind() == std::num::IntErrorKind::PosOverflow {
+            format!("invalid count `{count}` in --vary `{text}`: more than {} designs", usize::MAX)
+        } else {
+            format!("invalid count `{count}` in --vary `{text}`")
+        }
+    })?;
     if count == 0 {
         return Err(format!("invalid count `0` in --vary `{text}`: must be at least 1"));
     }
@@ -129,6 +139,12 @@ fn parse(args: &[String]) -> Result<Command, String> {
                 let v = value("--random")?;
                 match v.parse::<usize>() {
                     Ok(n) if n >= 1 => random = Some(n),
+                    Err(e) if *e.kind() == std::num::IntErrorKind::PosOverflow => {
+                        return Err(format!(
+                            "invalid count `{v}` of --random: more than {} designs",
+                            usize::MAX
+                        ))
+                    }
                     _ => {
                         return Err(format!("invalid count `{v}` of --random: expected at least 1"))
                     }
@@ -205,30 +221,139 @@ fn run(cmd: Command) -> Result<String, String> {
         Command::Sweep { model, data, designs, method, output } => {
             let base = crate::args::bicycle(&model, &data)?;
             let count = match &designs {
-                Designs::Grid(axes) => axes.iter().map(|a| a.count).product::<usize>(),
+                Designs::Grid(axes) => axes
+                    .iter()
+                    .try_fold(1usize, |n, a| n.checked_mul(a.count))
+                    .ok_or_else(|| {
+                        let counts = axes.iter().map(|a| a.count).collect();
+                        sweep::DesignsError::TooManyDesigns { counts }.to_string()
+                    })?,
                 Designs::Random { count, .. } => *count,
             };
             let counter = AtomicUsize::new(0);
             let done = AtomicBool::new(false);
-            let record = output == Output::Csv;
+            let stop = interrupt_flag();
+            let names: Vec<&str> = match &designs {
+                Designs::Grid(axes) => axes.iter().map(|a| a.name.as_str()).collect(),
+                Designs::Random { spreads, .. } => {
+                    spreads.iter().map(|s| s.name.as_str()).collect()
+                }
+            };
+            let stdout = std::io::BufWriter::new(std::io::stdout().lock());
+            let mut rows = CsvRows::new(stdout, &names, stop);
             let out = std::thread::scope(|s| {
                 if std::io::stderr().is_terminal() {
                     s.spawn(|| progress_bar(&counter, count, &done));
                 }
-                let r = sweep::sweep_designs(&base, &designs, method, record, &counter);
+                let sink: Option<&mut dyn FnMut(&sweep::SweepChunk<'_>)> = match output {
+                    Output::Csv => Some(&mut |c: &sweep::SweepChunk<'_>| rows.chunk(c)),
+                    _ => None,
+                };
+                let r = sweep::sweep_stream(&base, &designs, method, &counter, stop, sink);
                 done.store(true, Ordering::Relaxed);
                 r
             })
             .map_err(|e| e.to_string())?;
             let method = if method == Method::Hurwitz { "hurwitz" } else { "eigen" };
+            let interrupted = (out.summary.count < out.requested).then(|| {
+                format!("interrupted after {} of {} designs", out.summary.count, out.requested)
+            });
             match output {
-                Output::Csv => Ok(csv(&out)),
-                Output::Json => {
-                    serde_json::to_string_pretty(&summary_json(&model, &designs, method, &out))
-                        .map_err(|e| e.to_string())
+                Output::Csv => {
+                    let last =
+                        rows.finish().map_err(|e| format!("cannot write the output: {e}"))?;
+                    if let Some(line) = &interrupted {
+                        eprintln!("{}\n{line}", summary_text(&designs, method, &out));
+                    }
+                    Ok(last)
                 }
-                Output::Text => Ok(summary_text(&designs, method, &out)),
+                Output::Json => {
+                    let mut v = summary_json(&model, &designs, method, &out);
+                    if let Some(line) = &interrupted {
+                        eprintln!("{line}");
+                        v["interrupted"] = json!(line);
+                    }
+                    serde_json::to_string_pretty(&v).map_err(|e| e.to_string())
+                }
+                Output::Text => {
+                    let text = summary_text(&designs, method, &out);
+                    Ok(match interrupted {
+                        Some(line) => format!("{text}\n{line}"),
+                        None => text,
+                    })
+                }
             }
+        }
+    }
+}
+
+/// The flag that Ctrl-C sets (the handler is installed on the first call). Without a handler
+/// (the platform refused it) Ctrl-C ends the process as usual.
+fn interrupt_flag() -> &'static AtomicBool {
+    static STOP: AtomicBool = AtomicBool::new(false);
+    static HANDLER: std::sync::Once = std::sync::Once::new();
+    HANDLER.call_once(|| {
+        // An error only means Ctrl-C keeps its default effect.
+        let _ = ctrlc::set_handler(|| STOP.store(true, Ordering::Relaxed));
+    });
+    &STOP
+}
+
+/// The CSV of a sweep (see the [module docs](self)) written to `out` as the blocks arrive,
+/// floats in Rust's shortest round-trip form. The last line is held back and returned by
+/// [`CsvRows::finish`], for the caller to print with its final newline like any output. A
+/// write that fails sets `stop` (the sweep ends) and is reported by `finish`, except a closed
+/// pipe (`| head`), which ends the output quietly.
+struct CsvRows<W: Write> {
+    out: W,
+    stop: &'static AtomicBool,
+    pending: String,
+    error: Option<std::io::Error>,
+}
+
+impl<W: Write> CsvRows<W> {
+    /// Starts with the header of the varied parameters `names`.
+    fn new(out: W, names: &[&str], stop: &'static AtomicBool) -> Self {
+        let pending = format!("design,{},status,stable,weave_speed,capsize_speed", names.join(","));
+        CsvRows { out, stop, pending, error: None }
+    }
+
+    fn write(&mut self, line: String) {
+        let previous = std::mem::replace(&mut self.pending, line);
+        if self.error.is_none() {
+            if let Err(e) = writeln!(self.out, "{previous}") {
+                self.stop.store(true, Ordering::Relaxed);
+                self.error = Some(e);
+            }
+        }
+    }
+
+    fn chunk(&mut self, c: &sweep::SweepChunk<'_>) {
+        let k = if c.valid.is_empty() { 0 } else { c.values.len() / c.valid.len() };
+        let opt = |x: Option<f64>| x.map_or(String::new(), |x| format!("{x:?}"));
+        for (j, (w, valid)) in c.windows.iter().zip(c.valid).enumerate() {
+            let values: Vec<String> =
+                c.values[j * k..(j + 1) * k].iter().map(|x| format!("{x:?}")).collect();
+            let status = match w {
+                Some(w) => {
+                    format!("ok,{},{},{}", w.stable, opt(w.weave_speed), opt(w.capsize_speed))
+                }
+                None if *valid => "failed,,,".to_string(),
+                None => "rejected,,,".to_string(),
+            };
+            self.write(format!("{},{},{status}", c.first + j, values.join(",")));
+        }
+    }
+
+    /// Flushes the lines but the last and returns it (empty after a closed pipe).
+    fn finish(mut self) -> std::io::Result<String> {
+        match self.error.take() {
+            Some(e) if e.kind() == std::io::ErrorKind::BrokenPipe => Ok(String::new()),
+            Some(e) => Err(e),
+            None => match self.out.flush() {
+                Err(e) if e.kind() == std::io::ErrorKind::BrokenPipe => Ok(String::new()),
+                other => other.map(|()| self.pending),
+            },
         }
     }
 }
@@ -306,29 +431,6 @@ fn summary_text(designs: &Designs, method: &str, out: &SweepOutput) -> String {
         range(s.weave_range),
         range(s.capsize_range)
     )
-}
-
-/// One CSV row per design (see the [module docs](self)); floats in Rust's shortest round-trip
-/// form.
-fn csv(out: &SweepOutput) -> String {
-    use std::fmt::Write as _;
-    let k = out.names.len();
-    let mut s = format!("design,{},status,stable,weave_speed,capsize_speed\n", out.names.join(","));
-    let opt = |x: Option<f64>| x.map_or(String::new(), |x| format!("{x:?}"));
-    for (i, (w, valid)) in out.windows.iter().zip(&out.valid).enumerate() {
-        let values: Vec<String> =
-            out.values[i * k..(i + 1) * k].iter().map(|x| format!("{x:?}")).collect();
-        let _ = write!(s, "{i},{},", values.join(","));
-        let _ = match w {
-            Some(w) => {
-                writeln!(s, "ok,{},{},{}", w.stable, opt(w.weave_speed), opt(w.capsize_speed))
-            }
-            None if *valid => writeln!(s, "failed,,,"),
-            None => writeln!(s, "rejected,,,"),
-        };
-    }
-    s.pop();
-    s
 }
 
 /// The number of worker threads the sweep uses.

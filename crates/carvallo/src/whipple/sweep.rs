@@ -8,8 +8,13 @@
 //! (`matrices_scene::eval_lanes`, bit for bit the scalar evaluator lane by lane) and keep of each
 //! window only [`hurwitz_window_summary`], the same code as [`hurwitz_window`] without the
 //! allocation of the stable intervals.
+//!
+//! The designs stream through the evaluators in blocks of [`BLOCK`] (parallel within a block)
+//! into a running summary, so memory does not depend on the number of designs;
+//! [`sweep_stream`] hands each block's designs to a callback (a CSV writer) and stops early
+//! when asked to (Ctrl-C), summarising the designs done.
 
-use std::sync::atomic::{AtomicUsize, Ordering};
+use std::sync::atomic::{AtomicBool, AtomicUsize, Ordering};
 use std::time::Instant;
 
 use rayon::prelude::*;
@@ -249,8 +254,11 @@ pub enum DesignsError {
     },
     /// A grid with no axis.
     EmptyGrid,
-    /// More designs than a `usize` holds.
-    TooManyDesigns,
+    /// A grid whose product of counts does not fit a `usize`.
+    TooManyDesigns {
+        /// The counts of the axes, in order.
+        counts: Vec<usize>,
+    },
 }
 
 impl std::fmt::Display for DesignsError {
@@ -264,7 +272,15 @@ impl std::fmt::Display for DesignsError {
                 write!(f, "invalid spread {rel} of {name}: must lie in [0, 1)")
             }
             DesignsError::EmptyGrid => write!(f, "no parameter to vary"),
-            DesignsError::TooManyDesigns => write!(f, "too many designs"),
+            DesignsError::TooManyDesigns { counts } => {
+                let counts: Vec<String> = counts.iter().map(usize::to_string).collect();
+                write!(
+                    f,
+                    "too many designs: the grid's counts {} multiply to more than {}",
+                    counts.join(" x "),
+                    usize::MAX
+                )
+            }
         }
     }
 }
@@ -289,6 +305,22 @@ pub struct SweepOutput {
     pub valid: Vec<bool>,
     /// How many random designs were rejected (always 0 for a grid).
     pub rejected: usize,
+    /// The number of designs asked for; `summary.count` is smaller when the sweep was stopped
+    /// early ([`sweep_stream`]).
+    pub requested: usize,
+}
+
+/// The designs of one block of [`sweep_stream`], in order: designs `first..first + valid.len()`.
+#[derive(Clone, Copy, Debug)]
+pub struct SweepChunk<'a> {
+    /// The index of the first design.
+    pub first: usize,
+    /// The varied parameters' values, `names.len()` per design.
+    pub values: &'a [f64],
+    /// The window of each design, as in [`SweepOutput::windows`].
+    pub windows: &'a [Option<WindowSummary>],
+    /// Whether each design is valid, as in [`SweepOutput::valid`].
+    pub valid: &'a [bool],
 }
 
 /// The index in [`PARAM_NAMES`] of each name, each at most once.
@@ -308,6 +340,9 @@ fn param_indices<'a>(names: impl Iterator<Item = &'a str>) -> Result<Vec<usize>,
 
 /// Designs processed per parallel task (a multiple of the lanes).
 const CHUNK: usize = 4096;
+/// Designs evaluated between two updates of the running summary (and two looks at the stop
+/// flag of [`sweep_stream`]); only one block's results are held at a time.
+pub const BLOCK: usize = 16 * CHUNK;
 /// Designs per call of [`matrices_scene::eval_lanes`].
 const LANES: usize = matrices_scene::LANES;
 
@@ -332,6 +367,38 @@ pub fn sweep_designs(
     record: bool,
     progress: &AtomicUsize,
 ) -> Result<SweepOutput, DesignsError> {
+    let (mut values, mut windows, mut valid) = (Vec::new(), Vec::new(), Vec::new());
+    let never = AtomicBool::new(false);
+    let sink = |c: &SweepChunk<'_>| {
+        values.extend_from_slice(c.values);
+        windows.extend_from_slice(c.windows);
+        valid.extend_from_slice(c.valid);
+    };
+    let sink: Option<&mut dyn FnMut(&SweepChunk<'_>)> =
+        if record { Some(&mut { sink }) } else { None };
+    let mut out = sweep_stream(base, designs, method, progress, &never, sink)?;
+    (out.values, out.windows, out.valid) = (values, windows, valid);
+    Ok(out)
+}
+
+/// [`sweep_designs`] in constant memory: the designs go through the evaluators in blocks of
+/// [`BLOCK`] (in parallel within a block, in order from block to block), folded into the
+/// summary, and with a `sink` each block's varied values and windows are handed to it in
+/// order (nothing is kept: [`SweepOutput::values`], `windows` and `valid` are empty). `stop` is
+/// read before every block: once it is set, the sweep ends and summarises the designs done
+/// (`summary.count` less than [`SweepOutput::requested`]).
+///
+/// # Errors
+/// As [`sweep_designs`].
+pub fn sweep_stream(
+    base: &WhippleParams,
+    designs: &Designs,
+    method: Method,
+    progress: &AtomicUsize,
+    stop: &AtomicBool,
+    mut sink: Option<&mut dyn FnMut(&SweepChunk<'_>)>,
+) -> Result<SweepOutput, DesignsError> {
+    let record = sink.is_some();
     let base_values = *base.values();
     let (names, keys, count): (Vec<String>, Vec<usize>, usize) = match designs {
         Designs::Grid(axes) => {
@@ -344,7 +411,9 @@ pub fn sweep_designs(
                 if a.count == 0 {
                     return Err(DesignsError::Sweep(SweepError::InvalidCount { count: 0 }));
                 }
-                count = count.checked_mul(a.count).ok_or(DesignsError::TooManyDesigns)?;
+                count = count.checked_mul(a.count).ok_or_else(|| DesignsError::TooManyDesigns {
+                    counts: axes.iter().map(|a| a.count).collect(),
+                })?;
             }
             // Every corner of the box (2^axes of them; the axes are few).
             for corner in 0..1usize << axes.len().min(20) {
@@ -399,62 +468,71 @@ pub fn sweep_designs(
     let g = base.get("g").unwrap_or(f64::NAN);
     let n_names = names.len();
     let start = Instant::now();
-    let parts: Vec<Part> = (0..count.div_ceil(CHUNK))
-        .into_par_iter()
-        .map(|c| {
-            let (lo, hi) = (c * CHUNK, ((c + 1) * CHUNK).min(count));
-            let mut part = Part::new(record, (hi - lo) * n_names);
-            let mut values = [base_values; LANES];
-            let mut ok = [true; LANES];
-            for group in (lo..hi).step_by(LANES) {
-                let n = LANES.min(hi - group);
-                for j in 0..n {
-                    values[j] = base_values;
-                    ok[j] = fill(group + j, &mut values[j]);
-                }
-                let windows: [Option<WindowSummary>; LANES] = match method {
-                    Method::Hurwitz => {
-                        let args: [[f64; LANES]; matrices_scene::Args::LEN] =
-                            std::array::from_fn(|a| std::array::from_fn(|j| values[j][index[a]]));
-                        let o = matrices_scene::eval_lanes(&args);
-                        std::array::from_fn(|j| {
-                            let r = |k: usize| [[o[k][j], o[k + 1][j]], [o[k + 2][j], o[k + 3][j]]];
-                            let m = Matrices { m: r(0), c1: r(4), k0: r(8), k2: r(12) };
-                            Some(hurwitz_window_summary(&m, g))
-                        })
-                    }
-                    Method::Eigen => std::array::from_fn(|j| {
-                        if j >= n {
-                            return None;
-                        }
-                        let m = matrices_of(&values[j], &index);
-                        eigen_window(&m, g, EigenGrid::default()).as_ref().map(WindowSummary::from)
-                    }),
-                };
-                for j in 0..n {
-                    part.add(ok[j], windows[j], keys.iter().map(|&k| values[j][k]));
-                }
+    let chunk = |lo: usize| -> Part {
+        let hi = lo + CHUNK.min(count - lo);
+        let mut part = Part::new(record, (hi - lo) * n_names);
+        let mut values = [base_values; LANES];
+        let mut ok = [true; LANES];
+        for group in (lo..hi).step_by(LANES) {
+            let n = LANES.min(hi - group);
+            for j in 0..n {
+                values[j] = base_values;
+                ok[j] = fill(group + j, &mut values[j]);
             }
-            progress.fetch_add(hi - lo, Ordering::Relaxed);
-            part
-        })
-        .collect();
-    let elapsed = start.elapsed().as_secs_f64();
-    let mut acc = Acc::EMPTY;
-    let (mut values, mut windows, mut valid, mut rejected) =
-        (Vec::new(), Vec::new(), Vec::new(), 0);
-    for p in parts {
-        acc = acc.merge(p.acc);
-        rejected += p.rejected;
-        values.extend(p.values);
-        windows.extend(p.windows);
-        valid.extend(p.valid);
+            let windows: [Option<WindowSummary>; LANES] = match method {
+                Method::Hurwitz => {
+                    let args: [[f64; LANES]; matrices_scene::Args::LEN] =
+                        std::array::from_fn(|a| std::array::from_fn(|j| values[j][index[a]]));
+                    let o = matrices_scene::eval_lanes(&args);
+                    std::array::from_fn(|j| {
+                        let r = |k: usize| [[o[k][j], o[k + 1][j]], [o[k + 2][j], o[k + 3][j]]];
+                        let m = Matrices { m: r(0), c1: r(4), k0: r(8), k2: r(12) };
+                        Some(hurwitz_window_summary(&m, g))
+                    })
+                }
+                Method::Eigen => std::array::from_fn(|j| {
+                    if j >= n {
+                        return None;
+                    }
+                    let m = matrices_of(&values[j], &index);
+                    eigen_window(&m, g, EigenGrid::default()).as_ref().map(WindowSummary::from)
+                }),
+            };
+            for j in 0..n {
+                part.add(ok[j], windows[j], keys.iter().map(|&k| values[j][k]));
+            }
+        }
+        progress.fetch_add(hi - lo, Ordering::Relaxed);
+        part
+    };
+    let (mut acc, mut rejected, mut done) = (Acc::EMPTY, 0, 0);
+    while done < count && !stop.load(Ordering::Relaxed) {
+        let end = done + BLOCK.min(count - done);
+        let parts: Vec<Part> = (0..(end - done).div_ceil(CHUNK))
+            .into_par_iter()
+            .map(|c| chunk(done + c * CHUNK))
+            .collect();
+        for (c, p) in parts.iter().enumerate() {
+            acc = acc.merge(p.acc);
+            rejected += p.rejected;
+            if let Some(sink) = sink.as_mut() {
+                let first = done + c * CHUNK;
+                sink(&SweepChunk {
+                    first,
+                    values: &p.values,
+                    windows: &p.windows,
+                    valid: &p.valid,
+                });
+            }
+        }
+        done = end;
     }
+    let elapsed = start.elapsed().as_secs_f64();
     let range = |n: usize, r: (f64, f64)| (n > 0).then_some(r);
     let summary = SweepSummary {
-        count,
+        count: done,
         elapsed,
-        designs_per_second: count as f64 / elapsed,
+        designs_per_second: done as f64 / elapsed,
         stable: acc.stable,
         with_weave: acc.weave,
         with_capsize: acc.capsize,
@@ -462,7 +540,8 @@ pub fn sweep_designs(
         capsize_range: range(acc.capsize, acc.capsize_range),
         failed: acc.failed,
     };
-    Ok(SweepOutput { summary, names, values, windows, valid, rejected })
+    let (values, windows, valid) = (Vec::new(), Vec::new(), Vec::new());
+    Ok(SweepOutput { summary, names, values, windows, valid, rejected, requested: count })
 }
 
 /// The results of one parallel task of [`sweep_designs`].

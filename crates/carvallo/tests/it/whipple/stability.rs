@@ -344,3 +344,54 @@ fn bad_designs_are_errors_naming_the_value() {
         "invalid count 0: must be at least 1"
     );
 }
+
+#[test]
+fn a_stopped_stream_summarises_the_blocks_done() {
+    use std::sync::atomic::{AtomicBool, Ordering};
+    use sweep::{Designs, Spread, SweepChunk, BLOCK};
+    let base = WhippleParams::benchmark();
+    let spreads =
+        vec![Spread { name: "c".into(), rel: 0.5 }, Spread { name: "mB".into(), rel: 0.2 }];
+    let random = |count| Designs::Random { count, spreads: spreads.clone(), seed: 3 };
+    // Stopped by the sink after its first block of 3 * BLOCK designs.
+    let stop = AtomicBool::new(false);
+    let (mut rows, mut firsts) = (0, Vec::new());
+    let mut sink = |c: &SweepChunk<'_>| {
+        rows += c.valid.len();
+        firsts.push(c.first);
+        stop.store(true, Ordering::Relaxed);
+    };
+    let progress = AtomicUsize::new(0);
+    let out = sweep::sweep_stream(
+        &base,
+        &random(3 * BLOCK),
+        Method::Hurwitz,
+        &progress,
+        &stop,
+        Some(&mut sink),
+    )
+    .unwrap();
+    assert_eq!((out.summary.count, out.requested, rows), (BLOCK, 3 * BLOCK, BLOCK));
+    assert_eq!(firsts[0], 0);
+    assert!(out.values.is_empty() && out.windows.is_empty());
+    // Design i depends only on the seed and i: the first BLOCK designs of the longer stream
+    // are the designs of a sweep of BLOCK, collected whole.
+    let whole =
+        sweep::sweep_designs(&base, &random(BLOCK), Method::Hurwitz, false, &progress).unwrap();
+    let (a, b) = (&out.summary, &whole.summary);
+    assert_eq!(
+        (a.stable, a.with_weave, a.with_capsize, a.weave_range, a.capsize_range, out.rejected),
+        (b.stable, b.with_weave, b.with_capsize, b.weave_range, b.capsize_range, whole.rejected)
+    );
+    // A grid whose counts overflow names them.
+    let vary = |name: &str, count| sweep::Vary { name: name.into(), from: 0.0, to: 0.1, count };
+    let err = sweep::sweep_designs(
+        &base,
+        &Designs::Grid(vec![vary("c", 1 << 40), vary("xB", 1 << 40)]),
+        Method::Hurwitz,
+        false,
+        &progress,
+    )
+    .unwrap_err();
+    assert!(err.to_string().contains("1099511627776 x 1099511627776"), "{err}");
+}
