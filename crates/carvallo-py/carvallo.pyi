@@ -27,8 +27,16 @@ def design(params: Params) -> dict[str, object]:
     rear_wheel, front_wheel (radius, mass, ixx, iyy) and rear_frame, front_frame (x, z, mass,
     ixx, iyy, izz, ixz)."""
 
-def load_parameters(path: str) -> tuple[dict[str, float], dict[str, float]]:
-    """(params, sigma) from a TOML file (anchors format) or a BicycleParameters text file."""
+class PhysicsWarning(UserWarning):
+    """Parameters accepted although they break a physical law (a triangle inequality of measured
+    moments of inertia); the message names the parameter and the relative violation."""
+
+def load_parameters(
+    path: str, rider: str | None = None, strict: bool = False
+) -> tuple[dict[str, float], dict[str, float]]:
+    """(params, sigma) from a TOML file (anchors format) or a BicycleParameters text file, with
+    the BicycleParameters rider file `rider` added to the rear frame; a broken triangle
+    inequality is a PhysicsWarning, or a ParameterError when `strict`."""
 
 def parse_parameters(text: str) -> tuple[dict[str, float], dict[str, float]]:
     """(params, sigma) from the text of a parameter file (either format)."""

@@ -80,7 +80,7 @@ propagation and the eigenvalues with uncertainty bands",
         name: "window",
         forms: &[
             Form {
-                usage: "carvallo window --model benchmark|FILE.toml [--json]",
+                usage: "carvallo window --model benchmark|FILE.toml|FILE.txt [--rider FILE.txt] [--strict] [--json]",
                 what: "stable speed range of the linearised Carvallo-Whipple bicycle",
             },
             Form {
@@ -94,7 +94,7 @@ propagation and the eigenvalues with uncertainty bands",
     Command {
         name: "eig",
         forms: &[Form {
-            usage: "carvallo eig --model benchmark|FILE.toml --speed V [--json]",
+            usage: "carvallo eig --model benchmark|FILE.toml|FILE.txt [--rider FILE.txt] [--strict] --speed V [--json]",
             what: "eigenvalues of the linearised bicycle at speed V [m/s]",
         }],
         help: Some(eig::HELP),
@@ -114,12 +114,12 @@ propagation and the eigenvalues with uncertainty bands",
         forms: &[
             Form {
                 usage: "carvallo sweep --model benchmark|FILE.toml --vary NAME=FROM:TO:COUNT [--vary ...]
-               [--method hurwitz|eigen] [--json | --csv]",
+               [--rider FILE.txt] [--strict] [--method hurwitz|eigen] [--json | --csv]",
                 what: "",
             },
             Form {
                 usage: "carvallo sweep --model benchmark|FILE.toml --random N --spread NAME=REL [--spread ...]
-               [--seed S] [--method hurwitz|eigen] [--json | --csv]",
+               [--seed S] [--rider FILE.txt] [--strict] [--method hurwitz|eigen] [--json | --csv]",
                 what: "stability windows of many designs (a grid or random
 designs around the model), in parallel",
             },

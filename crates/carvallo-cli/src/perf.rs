@@ -38,9 +38,10 @@ const HELP: &str = "\
 Usage:
     carvallo bench [--json] [--quick]
     carvallo sweep --model benchmark|FILE.toml --vary NAME=FROM:TO:COUNT [--vary ...]
-                   [--method hurwitz|eigen] [--json | --csv]
+                   [--rider FILE.txt] [--strict] [--method hurwitz|eigen] [--json | --csv]
     carvallo sweep --model benchmark|FILE.toml --random N --spread NAME=REL [--spread ...]
-                   [--seed S] [--method hurwitz|eigen] [--json | --csv]
+                   [--seed S] [--rider FILE.txt] [--strict] [--method hurwitz|eigen]
+                   [--json | --csv]
 ";
 
 /// How `sweep` prints its result.

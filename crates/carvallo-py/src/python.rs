@@ -4,7 +4,7 @@
 
 use std::sync::atomic::AtomicUsize;
 
-use carvallo::parameter_text::UncertainParams;
+use carvallo::parameter_text::{add_rider, Rider, UncertainParams};
 use carvallo::sweep::Method;
 use carvallo::whipple::{StabilityWindow, Whipple, WhippleParams, FIELD_PATHS, PARAM_NAMES};
 use carvallo::whipple_nonlinear::WhippleNonlinear;
@@ -22,6 +22,14 @@ create_exception!(
     ParameterError,
     PyValueError,
     "A bad parameter, parameter file or argument; the message names the key and the value."
+);
+
+create_exception!(
+    carvallo,
+    PhysicsWarning,
+    pyo3::exceptions::PyUserWarning,
+    "Parameters accepted although they break a physical law, such as measured moments of \
+     inertia that break a triangle inequality; the message names the parameter and by how much."
 );
 
 fn err(message: impl Into<String>) -> PyErr {
@@ -112,17 +120,53 @@ fn design<'py>(py: Python<'py>, params: &Bound<'py, PyAny>) -> PyResult<Bound<'p
 }
 
 /// Reads a parameter file: the anchors TOML format or BicycleParameters' `name = value+/-sigma`
-/// text. Returns `(params, sigma)`, two dicts.
+/// text, with the rider file `rider` (BicycleParameters' `mB, xB, yB, zB, IBxx, IBxz, IByy,
+/// IBzz`) added to the rear frame. Moments of inertia breaking a triangle inequality are a
+/// `carvallo.PhysicsWarning` (`warnings.warn`), or an error when `strict`. Returns
+/// `(params, sigma)`, two dicts.
 #[pyfunction]
+#[pyo3(signature = (path, rider=None, strict=false))]
 fn load_parameters<'py>(
     py: Python<'py>,
     path: &str,
+    rider: Option<&str>,
+    strict: bool,
 ) -> PyResult<(Bound<'py, PyDict>, Bound<'py, PyDict>)> {
-    let text = std::fs::read_to_string(path).map_err(|e| {
-        err(format!("cannot read parameter file `{path}`: {}", e.to_string().to_lowercase()))
-    })?;
-    let u = UncertainParams::from_any(&text)
-        .map_err(|e| err(format!("invalid parameter file `{path}`: {e}")))?;
+    let read = |p: &str, what: &str| {
+        std::fs::read_to_string(p).map_err(|e| {
+            err(format!("cannot read {what} file `{p}`: {}", e.to_string().to_lowercase()))
+        })
+    };
+    let text = read(path, "parameter")?;
+    let invalid = |e: carvallo::parameter_text::ParameterTextError| {
+        err(format!("invalid parameter file `{path}`: {e}"))
+    };
+    let mut loaded = if text.lines().any(|l| l.trim_start().starts_with('[')) {
+        carvallo::parameter_text::Loaded {
+            params: UncertainParams::from_any(&text).map_err(invalid)?,
+            warnings: Vec::new(),
+        }
+    } else {
+        UncertainParams::read(&text, strict).map_err(invalid)?
+    };
+    if let Some(r) = rider {
+        let rider = Rider::from_text(&read(r, "rider")?)
+            .map_err(|e| err(format!("invalid rider file `{r}`: {e}")))?;
+        loaded = add_rider(&loaded.params, &rider)
+            .map_err(|e| err(format!("invalid rider file `{r}` on `{path}`: {e}")))?;
+        if strict {
+            if let Some(w) = loaded.warnings.first() {
+                return Err(err(format!("invalid parameter file `{path}` with rider `{r}`: {w}")));
+            }
+        }
+    }
+    let category = py.get_type::<PhysicsWarning>();
+    for w in &loaded.warnings {
+        let message = std::ffi::CString::new(format!("{path}: {w}"))
+            .map_err(|_| err("a warning message holds a NUL byte"))?;
+        PyErr::warn(py, category.as_any(), &message, 1)?;
+    }
+    let u = loaded.params;
     Ok((dict_of(py, u.params.values())?, dict_of(py, &u.sigma)?))
 }
 
@@ -439,6 +483,7 @@ fn eigenvalue_bands<'py>(
 fn carvallo_module(m: &Bound<'_, PyModule>) -> PyResult<()> {
     let py = m.py();
     m.add("ParameterError", py.get_type::<ParameterError>())?;
+    m.add("PhysicsWarning", py.get_type::<PhysicsWarning>())?;
     m.add("PARAM_NAMES", PyList::new(py, PARAM_NAMES)?)?;
     m.add("__version__", env!("CARGO_PKG_VERSION"))?;
     m.add_function(wrap_pyfunction!(benchmark, m)?)?;

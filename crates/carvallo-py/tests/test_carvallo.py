@@ -2,6 +2,7 @@
 (eigenvalues of the same state matrix) and on bad input (exceptions naming key and value)."""
 
 import math
+import warnings
 
 import numpy as np
 import pytest
@@ -208,3 +209,31 @@ def test_the_extension_does_not_contain_symbolica():
     data = open(carvallo.__file__, "rb").read()
     assert b"symbolica" not in data.lower()
     assert b"carvallo" in data
+
+
+def test_bicycleparameters_files_riders_and_strict(cli, root):
+    data = root / "data" / "bicycleparameters"
+    bike = str(data / "bicycles" / "Browser" / "Parameters" / "BrowserBenchmark.txt")
+    rider = str(data / "riders" / "Jason" / "Parameters" / "JasonBrowserBenchmark.txt")
+    # A measured frame breaking a triangle inequality: a PhysicsWarning naming it.
+    with pytest.warns(carvallo.PhysicsWarning, match=r"IByy 1\.3163960125 breaks a triangle"):
+        params, sigma = carvallo.load_parameters(bike)
+    assert params["IByy"] == 1.3163960125
+    with pytest.raises(carvallo.ParameterError, match=r"invalid IByy 1\.3163960125: exceeds"):
+        carvallo.load_parameters(bike, strict=True)
+    # With the rider the frame keeps the inequality (no warning): BicycleParameters'
+    # Bicycle.add_rider (1.5.2) gives mB 81.86 +/- 2.0001, IBxx 11.35822782891604 +/-
+    # 0.0284751583305407, and the CLI the same window. `strict` reads the bicycle's file first.
+    with warnings.catch_warnings():
+        warnings.simplefilter("error")
+        params, sigma = carvallo.load_parameters(bike, rider=rider)
+    assert params["mB"] == pytest.approx(81.86, rel=1e-13)
+    assert params["IBxx"] == pytest.approx(11.35822782891604, rel=1e-13)
+    assert sigma["IBxx"] == pytest.approx(0.0284751583305407, rel=1e-7)
+    w = carvallo.window(params)
+    c = cli("window", "--model", bike, "--rider", rider, "--json")
+    assert (w["weave_speed"], w["capsize_speed"]) == (c["weave_speed"], c["capsize_speed"])
+    with pytest.raises(carvallo.ParameterError, match=r"unknown rider parameter `IFxx`"):
+        carvallo.load_parameters(bike, rider=bike)
+    with pytest.raises(carvallo.ParameterError, match=r"cannot read rider file `/nonexistent`"):
+        carvallo.load_parameters(bike, rider="/nonexistent")

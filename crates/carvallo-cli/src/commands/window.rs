@@ -33,9 +33,10 @@ use serde_json::{json, Value};
 /// (they read the same models).
 pub const HELP: &str = "\
 Usage:
-    carvallo window --model benchmark|FILE.toml [--json]
+    carvallo window --model benchmark|FILE.toml|FILE.txt [--rider FILE.txt] [--strict] [--json]
     carvallo window --model carvallo|carvallo-formulas|carvallo-memoir|carvallo-quartic [--json]
-    carvallo eig --model benchmark|FILE.toml --speed V [--json]
+    carvallo eig --model benchmark|FILE.toml|FILE.txt [--rider FILE.txt] [--strict] --speed V
+                 [--json]
 ";
 
 /// The Carvallo models (memoir n° 117–121) this command answers besides the benchmark bicycle.

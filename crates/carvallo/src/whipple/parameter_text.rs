@@ -272,7 +272,7 @@ impl UncertainParams {
         let get = |name: &str| EXTRA_NAMES.iter().position(|n| *n == name).and_then(|k| extra[k]);
         let index = |name: &str| PARAM_NAMES.iter().position(|n| *n == name).unwrap_or(0);
         // The front frame from its parts, when they are given.
-        let part = |body: char| -> Result<Option<([f64; 7], [f64; 7])>, ParameterTextError> {
+        let part = |body: char| -> Result<Option<(PlanarBody, PlanarBody)>, ParameterTextError> {
             let keys = ["m", "x", "z", "Ixx", "Ixz", "Iyy", "Izz"].map(|k| match k {
                 "m" | "x" | "z" => format!("{k}{body}"),
                 _ => format!("I{body}{}", &k[1..]),
@@ -366,7 +366,7 @@ impl UncertainParams {
         let w = values[index("w")];
         for y in ["yB", "yH", "yG", "yS"] {
             if let Some((v, _)) = get(y) {
-                if !(v.abs() <= 1e-6 * w.abs()) {
+                if v.abs() > 1e-6 * w.abs() {
                     return Err(ParameterTextError::Rule {
                         key: y.to_string(),
                         value: v,
@@ -492,7 +492,7 @@ impl Rider {
             });
         }
         for k in [0, 4, 6, 7] {
-            if !(values[k] > 0.0) {
+            if values[k] <= 0.0 {
                 return Err(ParameterTextError::Rule {
                     key: RIDER_NAMES[k].to_string(),
                     value: values[k],
@@ -517,7 +517,7 @@ impl Rider {
 pub fn add_rider(params: &UncertainParams, rider: &Rider) -> Result<Loaded, ParameterTextError> {
     let w = params.params.get("w").unwrap_or(f64::NAN);
     let y = rider.values[2];
-    if !(y.abs() <= 1e-6 * w.abs()) {
+    if y.abs() > 1e-6 * w.abs() {
         return Err(ParameterTextError::Rule {
             key: "yB".to_string(),
             value: y,

@@ -533,4 +533,42 @@ mod tests {
         }
         assert!(valid > 10_000 && invalid > 10_000, "{valid} valid, {invalid} invalid");
     }
+
+    #[test]
+    fn broken_triangle_inequalities_are_warnings_and_other_errors_stay() {
+        let mut v = *WhippleParams::benchmark().values();
+        // IByy above IBxx + IBzz = 12.0 by 5 %, and IHyy below l2 - l1 of the front assembly.
+        v[12] = 12.6;
+        assert!(WhippleParams::from_values(v).is_err());
+        let (p, warnings) = WhippleParams::from_values_warning(v).expect("computed as given");
+        assert_eq!(p.values(), &v);
+        assert_eq!(warnings.len(), 1);
+        let w = &warnings[0];
+        assert_eq!((w.key, w.value, w.bound), ("IByy", 12.6, 12.0));
+        assert!((w.relative - 0.05).abs() < 1e-12, "{w}");
+        assert_eq!(
+            w.to_string(),
+            "IByy 12.6 breaks a triangle inequality of the moments of inertia by 5.000 % \
+             (bound 12.0); computed as given"
+        );
+        let (a, c, d) = (v[18], v[20], v[21]);
+        let half = (0.25 * (a - c) * (a - c) + d * d).sqrt();
+        v[19] = 0.9 * 2.0 * half;
+        let (_, warnings) = WhippleParams::from_values_warning(v).expect("computed as given");
+        assert_eq!(warnings.iter().map(|w| w.key).collect::<Vec<_>>(), ["IByy", "IHyy"]);
+        // The largest principal moment l2 exceeds l1 + IHyy, relative to l1 + IHyy.
+        let l1 = 0.5 * (a + c) - half;
+        let want = (2.0 * half - v[19]) / (l1 + v[19]);
+        assert!((warnings[1].relative - want).abs() < 1e-12, "{}", warnings[1]);
+        assert!((warnings[1].bound - 2.0 * half).abs() < 1e-15, "{}", warnings[1]);
+        // Every other check is still an error, also beside a broken inequality.
+        v[10] = -85.0;
+        assert_eq!(
+            WhippleParams::from_values_warning(v).unwrap_err().to_string(),
+            "invalid mB -85.0: must be positive"
+        );
+        let mut nan = *WhippleParams::benchmark().values();
+        nan[12] = f64::NAN;
+        assert!(WhippleParams::from_values_warning(nan).is_err());
+    }
 }

@@ -228,8 +228,8 @@ fn a_rider_is_added_as_bicycleparameters_adds_it() {
             assert!((s - std).abs() <= 1e-7 * std, "{bicycle} {key} sigma: {s} vs {std}");
         }
         // The other parameters are the bicycle's.
-        for k in 0..26 {
-            if !keys.contains(&PARAM_NAMES[k]) {
+        for (k, name) in PARAM_NAMES.iter().enumerate() {
+            if !keys.contains(name) {
                 assert_eq!(with.params.params.values()[k], bike.params.params.values()[k]);
             }
         }
