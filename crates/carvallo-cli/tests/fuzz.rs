@@ -114,7 +114,7 @@ fn every_command_keeps_the_exit_code_contract() {
             0 => {
                 let n = rng.pick(NAMES);
                 // Half the axes valid on the benchmark, so that the sweeps run.
-                let (n, from, to) = if rng.next() % 2 == 0 {
+                let (n, from, to) = if rng.next().is_multiple_of(2) {
                     ("c", "0", "0.2")
                 } else {
                     (n, rng.pick(NUMBERS), rng.pick(NUMBERS))
@@ -123,7 +123,7 @@ fn every_command_keeps_the_exit_code_contract() {
                 args.push("sweep".into());
                 push(&mut args, "--model", model(&mut rng));
                 push(&mut args, "--vary", axis);
-                if rng.next() % 2 == 0 {
+                if rng.next().is_multiple_of(2) {
                     let axis = format!("w=1:1.2:{}", rng.pick(COUNTS));
                     push(&mut args, "--vary", axis);
                 }
@@ -133,7 +133,7 @@ fn every_command_keeps_the_exit_code_contract() {
                 push(&mut args, "--model", model(&mut rng));
                 push(&mut args, "--random", rng.pick(COUNTS).into());
                 push(&mut args, "--spread", format!("{}={}", rng.pick(NAMES), rng.pick(NUMBERS)));
-                if rng.next() % 2 == 0 {
+                if rng.next().is_multiple_of(2) {
                     push(&mut args, "--method", rng.pick(&["eigen", "hurwitz", "qr"]).into());
                 }
             }
@@ -156,10 +156,10 @@ fn every_command_keeps_the_exit_code_contract() {
                     "--duration",
                     rng.pick(&["0.1", "0", "-1", "NaN", "inf", "x"]).into(),
                 );
-                if rng.next() % 2 == 0 {
+                if rng.next().is_multiple_of(2) {
                     push(&mut args, "--step", rng.pick(NUMBERS).into());
                 }
-                if rng.next() % 2 == 0 {
+                if rng.next().is_multiple_of(2) {
                     push(&mut args, "--every", rng.pick(COUNTS).into());
                 }
             }
@@ -186,7 +186,7 @@ fn every_command_keeps_the_exit_code_contract() {
             7 => {
                 args.push("rest".into());
                 push(&mut args, "--theta", rng.pick(NUMBERS).into());
-                if rng.next() % 2 == 0 {
+                if rng.next().is_multiple_of(2) {
                     push(&mut args, "--wheel-mass", rng.pick(NUMBERS).into());
                 }
             }
@@ -209,7 +209,7 @@ fn every_command_keeps_the_exit_code_contract() {
                 out_dir = Some(out);
             }
         }
-        if rng.next() % 4 == 0 {
+        if rng.next().is_multiple_of(4) {
             args.push(rng.pick(&["--json", "--csv", "--bogus", "--json"]).into());
         }
         if let Some(fixed) = FIXED.get(k) {
