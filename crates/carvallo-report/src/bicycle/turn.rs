@@ -647,18 +647,26 @@ pub fn claims() -> Vec<crate::claims::Claim> {
         policy::claim(sp_pp <= 1.0 && sp_th <= 1.0, Verdict::DerivationDiffers),
         "independent of s to the second order the memoir neglects: at each handlebar angle they vary over 5-25 km/h by less than theta0^2 + gamma^2 (the fraction shown)",
     ));
-    let rest_dev = max(&|p| (p.c.roots[1].re / p.rest.roots[1].re - 1.0).abs() / p.order());
+    // n° 105's "sensiblement la même": a fixed tolerance of 10 % on the growth rate. Were
+    // df/dp lambda important, it would move the positive root by the order of the root itself
+    // (the root's relative shift is |df/dp| / (2 sqrt(df/dp' |df/dtheta|)) at first order, the
+    // second route below); the declared second order theta0^2 + gamma^2 reaches 0.4 at the
+    // sampled turns and would let such a claim pass, so it is not the tolerance.
+    const AS_AT_REST: f64 = 0.10;
+    let rest_gap = max(&|p| (p.c.roots[1].re / p.rest.roots[1].re - 1.0).abs());
+    let damping_shift = max(&|p| p.c.dfdp.abs() / (2.0 * (p.c.dfdpp * p.c.dfdtheta.abs()).sqrt()));
     out.push(Claim::new(
         "bicycle-turn-instability-as-at-rest",
         "105",
         "The term df/dp lambda is unimportant, so that the instability is about the same as if the bicycle were not moving (« l'instabilité est sensiblement la même que si la bicyclette ne marchait pas »).",
-        &format!("{GRID_HOW}; the positive root against the one of (C) at rest with the same handlebar angle, |lambda+ / lambda+(rest) - 1| against theta0^2 + gamma^2"),
+        &format!("{GRID_HOW}; the positive root against the one of (C) at rest with the same handlebar angle, |lambda+ / lambda+(rest) - 1| within 10 %, and by a second route the first-order relative shift of the root due to df/dp lambda, |df/dp| / (2 sqrt(df/dp' |df/dtheta|)), within 10 %"),
         &[
-            ("max |lambda+ / lambda+(rest) - 1| / (theta0^2 + gamma^2)", rest_dev),
-            ("max |lambda+ / lambda+(rest) - 1|", max(&|p| (p.c.roots[1].re / p.rest.roots[1].re - 1.0).abs())),
+            ("max |lambda+ / lambda+(rest) - 1|", rest_gap),
+            ("max |df/dp| / (2 sqrt(df/dp' |df/dtheta|))", damping_shift),
+            ("max |lambda+ / lambda+(rest) - 1| / (theta0^2 + gamma^2)", max(&|p| (p.c.roots[1].re / p.rest.roots[1].re - 1.0).abs() / p.order())),
         ],
-        policy::claim(rest_dev <= 1.0, Verdict::DerivationDiffers),
-        "the growth rate of the fall differs from the one at rest by less than the neglected second order at every turn",
+        policy::claim(rest_gap <= AS_AT_REST && damping_shift <= AS_AT_REST, Verdict::DerivationDiffers),
+        "the growth rate of the fall differs from the one at rest by the fraction shown at every turn, and df/dp lambda alone moves it by less than the second fraction: both within the 10 % that separates 'about the same' from a term that would matter (a shift of the order of the root); the gap is also below the neglected second order theta0^2 + gamma^2 (last fraction), but that bound reaches 0.4 at the sampled turns and is not the test",
     ));
     let same_sign = count(&|p| p.c.dfdtheta_centrifugal() * p.c.dfdtheta_gravity > 0.0);
     out.push(Claim::new(

@@ -430,7 +430,7 @@ fn tables() -> Vec<Claim> {
         "27 printed cells (Carvallo writes a number of k + 1 digits as k.digits, 5.565 = 565 000; double products by their leading digits; the \"5.613\" printed at the end of the first squares line is read as 784^2, printed again as the last coefficient of the 2^2 row; the truncated start of a third squaring, \"10.537\", is not read) each against Carvallo's own arithmetic on his printed inputs (a slide rule: within one unit of the last printed digit or 2e-3 relative, the policy's rule for printed numbers) and against the exact root squaring of the generated equation (carvallo::numerics::graeffe)",
         &[("cells", n as f64), ("faithful_to_his_arithmetic", faithful as f64), ("max_rel_diff_to_his_arithmetic", his_max), ("max_rel_diff_to_exact", exact_max)],
         policy::claim(faithful == n, Verdict::MemoirError),
-        "every cell is his arithmetic at slide-rule precision (the largest relative difference, 2 %, is the double product 2 x 784 = 1568 printed by its two digits 16) except 784^2 = 614 656 printed 613 (both times), 2,7e-3 relative and 1,7 units of the last digit: a slip of the slide rule that does not reach the root (only the first two coefficients of the last row give v^4); against the exact squaring the cells drift by up to 2 % (his 752 for 753 and 1770 for 1768 propagate)",
+        "every cell is his arithmetic at slide-rule precision under the one rule of printed numbers (policy::printed: within one unit of the last printed digit, or 2e-3 relative, the rule that makes u's 1,1e-3 `rounding`): the largest relative difference, 2 %, is the double product 2 x 784 = 1568 printed by its two digits 16, i.e. 1600 with a last digit worth 100, within one unit; the exception is 784^2 = 614 656 printed 613 (thousands, both times), 1,7 units of the last digit and 2,7e-3 relative, outside both halves of the rule: a slip, kept `memoir-error`, that does not reach the root (only the first two coefficients of the last row give v^4); against the exact squaring the cells drift by up to 2 % (his 752 for 753 and 1770 for 1768 propagate)",
     );
     // The verification by substitution of u = -0,10807 (synthetic division).
     let u = -0.10807;
@@ -498,8 +498,15 @@ fn graeffe_separated() -> Claim {
         "After two squarings \"la plus grande racine est visiblement séparée et la dernière transformée donne pour cette racine\" v^4 = 7332.",
         "the exact root squaring (carvallo::numerics::graeffe) of v^4 + 14v^3 + 51v^2 + 68v + 28: the double products' share of the square in the first coefficient of the last row (the usual test of separation: negligible when separated), the other roots' share of the sum of fourth powers that this coefficient is, and the relative error of the root it gives against the exact one",
         &[("double_product_share_last_row", share), ("other_roots_share_of_b1", rest4 / (v1.powi(4))), ("root_rel_error_after_2", root.method_rel_error), ("root_rel_error_after_6", root.converged_rel_error)],
-        policy::claim(share < 0.01 && root.method_rel_error < 5e-5, Verdict::MemoirError),
-        "not separated at the precision printed: the double products are still 17 % of the square in the last row, because the next root v = -2 is double (its two fourth powers are 0,44 % of b1); the fourth root of 7330 is off the exact |v| by 1,1e-3 relative, so -u = 0,10807 is wrong in its fourth digit (exact 0,10819); four more squarings separate it (error 1e-16)",
+        // Separated, or else judged by what the separation is for, the root read off, with the
+        // one rule of slide-rule numbers (policy::printed, as the value entry `u exact vs
+        // printed`): within one unit of the last printed digit or 2e-3 relative is rounding.
+        if share < 0.01 && root.method_rel_error < 5e-5 {
+            Verdict::Agrees
+        } else {
+            policy::printed(root.exact_u, -0.10807, 1e-5, Verdict::MemoirError)
+        },
+        "not fully separated: the double products are still 17 % of the square in the last row, because the next root v = -2 is double (its two fourth powers are 0,44 % of b1), and the fourth root of 7330 is off the exact |v| by 1,1e-3 relative (-u = 0,10807, exact 0,10819); four more squarings separate it (error 1e-16). Judged as every slide-rule number of the report (one unit of the last printed digit or 2e-3 relative, the rule of the value entry `u exact vs printed`), the root the claim delivers is within a slide rule's three digits: `rounding`, not `memoir-error`; his fifth printed digit is beyond his instrument",
     )
 }
 

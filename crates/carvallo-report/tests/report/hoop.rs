@@ -113,8 +113,18 @@ fn claims_verdicts() {
     let get =
         |id: &str| claims.iter().find(|c| c.id == id).unwrap_or_else(|| panic!("no claim {id}"));
     for c in &claims {
-        assert_eq!(c.verdict, Verdict::Agrees, "{}: {}", c.id, c.evidence_text());
+        let expected = if c.id == "hoop-linear-criterion-sufficient" {
+            Verdict::MemoirError
+        } else {
+            Verdict::Agrees
+        };
+        assert_eq!(c.verdict, expected, "{}: {}", c.id, c.evidence_text());
     }
+    // n° 76: the general sufficiency fails in Lyapunov's critical case, the hoop's runs stay
+    // bounded.
+    let e = &get("hoop-linear-criterion-sufficient").evidence;
+    assert_eq!(e["hoop: bounded"], e["hoop: stable_cases"]);
+    assert!(e["critical case: amplitude of x'' + x = +x^2 x'"] >= 1.0);
     // The fall laws are first-order: their error falls with the release.
     for id in ["hoop-fall-law-pendular", "hoop-fall-law-exponential", "hoop-fall-law-uniform"] {
         let e = &get(id).evidence;
