@@ -276,4 +276,3 @@ fn the_matcher_elides_and_rounds() {
     assert!(!matches(&exp, &["a 1.0", "b"]));
     assert_eq!(normalise("x2 = -4.2923825363411"), "x2 = -4.29238254e0");
 }
-

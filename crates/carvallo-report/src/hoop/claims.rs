@@ -731,9 +731,8 @@ fn linear_criterion_sufficient(runs: &StabilityRuns) -> Claim {
     // da/dt = ±a^3/8, so 1/a^2 = 1/a0^2 ∓ t/4: amplitude 1 at t = 4 (100 - 1) = 396, when the
     // other has 1/sqrt(199); the integration must agree with that second route to 2 %.
     let (t_avg, decayed_avg) = (4.0 * (100.0 - 1.0), 1.0 / 199f64.sqrt());
-    let counterexample = grown >= 1.0
-        && rel_diff(time, t_avg) < 0.02
-        && rel_diff(decayed, decayed_avg) < 0.02;
+    let counterexample =
+        grown >= 1.0 && rel_diff(time, t_avg) < 0.02 && rel_diff(decayed, decayed_avg) < 0.02;
     Claim::new(
         "hoop-linear-criterion-sufficient",
         "76",

@@ -361,9 +361,8 @@ impl WhippleParams {
         for (xx, yy) in [("IRxx", "IRyy"), ("IFxx", "IFyy")] {
             let (a, b) = (self.value(xx), self.value(yy));
             if b > 2.0 * a * (1.0 + SLACK) {
-                let key = if yy == "IRyy" { "IRyy" } else { "IFyy" };
                 out.push(TriangleWarning {
-                    key,
+                    key: yy,
                     value: b,
                     bound: 2.0 * a,
                     relative: (b - 2.0 * a) / (2.0 * a),
@@ -408,50 +407,28 @@ impl WhippleParams {
     /// $I_{yy} \le \lambda_1 + \lambda_2$ and $\lambda_2 \le \lambda_1 + I_{yy}$. A thin disc
     /// ($I_{yy} = 2 I_{xx}$) is allowed, with a relative slack of $10^{-9}$ for decimal input.
     fn check_triangle_inequalities(&self) -> Result<(), WhippleError> {
-        const SLACK: f64 = 1e-9;
-        for (xx, yy) in [("IRxx", "IRyy"), ("IFxx", "IFyy")] {
-            let (a, b) = (self.value(xx), self.value(yy));
-            if b > 2.0 * a * (1.0 + SLACK) {
-                let (key, reason) = if yy == "IRyy" {
-                    ("IRyy", "exceeds 2 IRxx (triangle inequality of the wheel's moments)")
-                } else {
-                    ("IFyy", "exceeds 2 IFxx (triangle inequality of the wheel's moments)")
-                };
-                return Err(invalid(key, b, reason));
+        let Some(w) = self.triangle_violations().into_iter().next() else {
+            return Ok(());
+        };
+        // The wheels' bound is 2 Ixx; a frame's is exceeded (value above the bound) or its
+        // I_yy is too small (below the bound l2 - l1).
+        let reason = match (w.key, w.value > w.bound) {
+            ("IRyy", _) => "exceeds 2 IRxx (triangle inequality of the wheel's moments)",
+            ("IFyy", _) => "exceeds 2 IFxx (triangle inequality of the wheel's moments)",
+            ("IByy", true) => {
+                "exceeds IBxx + IBzz, the sum of the other two principal moments (triangle inequality)"
             }
-        }
-        for body in ["B", "H"] {
-            let name = |s: &str| format!("I{body}{s}");
-            let (a, c, d, yy) = (
-                self.value(&name("xx")),
-                self.value(&name("zz")),
-                self.value(&name("xz")),
-                self.value(&name("yy")),
-            );
-            let mean = 0.5 * (a + c);
-            let half = (0.25 * (a - c) * (a - c) + d * d).sqrt();
-            let (l1, l2) = (mean - half, mean + half);
-            let (key, too_large, too_small) = if body == "B" {
-                (
-                    "IByy",
-                    "exceeds IBxx + IBzz, the sum of the other two principal moments (triangle inequality)",
-                    "is too small: the largest principal moment of IBxx, IBzz, IBxz exceeds the sum of the other two (triangle inequality)",
-                )
-            } else {
-                (
-                    "IHyy",
-                    "exceeds IHxx + IHzz, the sum of the other two principal moments (triangle inequality)",
-                    "is too small: the largest principal moment of IHxx, IHzz, IHxz exceeds the sum of the other two (triangle inequality)",
-                )
-            };
-            if yy > (l1 + l2) * (1.0 + SLACK) {
-                return Err(invalid(key, yy, too_large));
+            ("IByy", false) => {
+                "is too small: the largest principal moment of IBxx, IBzz, IBxz exceeds the sum of the other two (triangle inequality)"
             }
-            if l2 > (l1 + yy) * (1.0 + SLACK) {
-                return Err(invalid(key, yy, too_small));
+            (_, true) => {
+                "exceeds IHxx + IHzz, the sum of the other two principal moments (triangle inequality)"
             }
-        }
-        Ok(())
+            (_, false) => {
+                "is too small: the largest principal moment of IHxx, IHzz, IHxz exceeds the sum of the other two (triangle inequality)"
+            }
+        };
+        Err(invalid(w.key, w.value, reason))
     }
 
     /// The value of the parameter `name`, if it is one.
