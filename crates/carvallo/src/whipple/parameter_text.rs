@@ -228,20 +228,7 @@ impl UncertainParams {
         let mut sigma = [0.0; 26];
         let mut seen = [false; 26];
         let mut extra: [Option<(f64, f64)>; 20] = [None; 20];
-        for (i, raw) in text.lines().enumerate() {
-            let line = raw.trim();
-            if line.is_empty() || line.starts_with('#') {
-                continue;
-            }
-            let err = |reason: String| ParameterTextError::Line {
-                line: i + 1,
-                text: line.chars().take(80).collect(),
-                reason,
-            };
-            let (name, rest) = line
-                .split_once('=')
-                .ok_or_else(|| err("expected `name = value+/-uncertainty`".to_string()))?;
-            let name = name.trim();
+        for_each_line(text, |name, rest, err| {
             let key = if name == "lam" { "lambda" } else { name };
             let slot = match PARAM_NAMES.iter().position(|n| *n == key) {
                 Some(k) => {
@@ -268,7 +255,8 @@ impl UncertainParams {
                     extra[k] = Some(vs);
                 }
             }
-        }
+            Ok(())
+        })?;
         let get = |name: &str| EXTRA_NAMES.iter().position(|n| *n == name).and_then(|k| extra[k]);
         let index = |name: &str| PARAM_NAMES.iter().position(|n| *n == name).unwrap_or(0);
         // The front frame from its parts, when they are given.
@@ -447,6 +435,35 @@ pub struct Rider {
     pub sigma: [f64; 8],
 }
 
+/// Runs `f` on every `name = rest` line of a parameter file (blank lines and `#` comments
+/// skipped) with the trimmed name, the text after `=`, and a maker of the
+/// [`ParameterTextError::Line`] that names that line; a line without `=` is that error.
+fn for_each_line(
+    text: &str,
+    mut f: impl FnMut(
+        &str,
+        &str,
+        &dyn Fn(String) -> ParameterTextError,
+    ) -> Result<(), ParameterTextError>,
+) -> Result<(), ParameterTextError> {
+    for (i, raw) in text.lines().enumerate() {
+        let line = raw.trim();
+        if line.is_empty() || line.starts_with('#') {
+            continue;
+        }
+        let err = |reason: String| ParameterTextError::Line {
+            line: i + 1,
+            text: line.chars().take(80).collect(),
+            reason,
+        };
+        let (name, rest) = line
+            .split_once('=')
+            .ok_or_else(|| err("expected `name = value+/-uncertainty`".to_string()))?;
+        f(name.trim(), rest, &err)?;
+    }
+    Ok(())
+}
+
 impl Rider {
     /// Reads a rider file: the eight keys of [`RIDER_NAMES`], each once, as
     /// `name = value+/-uncertainty` (the forms of [`UncertainParams::read`]).
@@ -459,20 +476,7 @@ impl Rider {
         let mut values = [f64::NAN; 8];
         let mut sigma = [0.0; 8];
         let mut seen = [false; 8];
-        for (i, raw) in text.lines().enumerate() {
-            let line = raw.trim();
-            if line.is_empty() || line.starts_with('#') {
-                continue;
-            }
-            let err = |reason: String| ParameterTextError::Line {
-                line: i + 1,
-                text: line.chars().take(80).collect(),
-                reason,
-            };
-            let (name, rest) = line
-                .split_once('=')
-                .ok_or_else(|| err("expected `name = value+/-uncertainty`".to_string()))?;
-            let name = name.trim();
+        for_each_line(text, |name, rest, err| {
             let k = RIDER_NAMES
                 .iter()
                 .position(|n| *n == name)
@@ -483,7 +487,8 @@ impl Rider {
             seen[k] = true;
             (values[k], sigma[k]) =
                 value_and_sigma(rest).map_err(|r| err(format!("{name}: {r}")))?;
-        }
+            Ok(())
+        })?;
         if let Some(k) = seen.iter().position(|s| !s) {
             return Err(ParameterTextError::Rule {
                 key: RIDER_NAMES[k].to_string(),
