@@ -3,7 +3,8 @@
 every bicycle + rider pair) with BicycleParameters 1.5.2's own linear model and prints the table
 of docs/guide/src/bicycleparameters.md. Needs `pip install bicycleparameters==1.5.2` and a
 built `carvallo` (its path in CARVALLO, default target/debug/carvallo); run from the repository
-root. Not part of the test command (it installs a peer)."""
+root, or through scripts/bicycleparameters-table, which installs the peer into its own venv.
+Not part of the test command."""
 import json, os, subprocess
 
 import numpy as np
