@@ -1,57 +1,27 @@
-//! Argument helpers shared by the subcommands: every option at most once, an unknown argument
-//! or a missing value named in the error, numbers that must parse and be finite, and the
-//! bicycle that `--model benchmark|FILE` names, with `--rider FILE` and `--strict`.
+//! Argument helpers shared by the subcommands: the value parsers clap calls (numbers that must
+//! parse and be finite), the options `--rider FILE` and `--strict`, and the bicycle that
+//! `--model benchmark|FILE` names.
 
 use carvallo::parameter_text::{add_rider, Loaded, Rider, UncertainParams};
 use carvallo::whipple::WhippleParams;
 
-/// The finite number `v` given for the quantity `name`.
-pub fn number(name: &str, v: &str) -> Result<f64, String> {
-    let x: f64 = v.parse().map_err(|_| format!("invalid {name} `{v}`"))?;
+/// A finite number, for clap's `value_parser` (the error names the value with its option).
+pub fn finite(v: &str) -> Result<f64, String> {
+    let x: f64 = v.parse().map_err(|_| "not a number".to_string())?;
     if !x.is_finite() {
-        return Err(format!("invalid {name} `{v}`: must be finite"));
+        return Err("must be finite".into());
     }
     Ok(x)
 }
 
-/// The lean angle `v` in degrees for the quantity `name`: a finite number strictly between
-/// -90 and 90.
-pub fn lean_deg(name: &str, v: &str) -> Result<f64, String> {
-    let x = number(name, v)?;
+/// A lean angle in degrees, for clap's `value_parser`: a finite number strictly between -90
+/// and 90.
+pub fn lean_deg(v: &str) -> Result<f64, String> {
+    let x = finite(v)?;
     if x.abs() >= 90.0 {
-        return Err(format!("invalid {name} `{x}`: must lie strictly between -90 and 90 degrees"));
+        return Err("must lie strictly between -90 and 90 degrees".into());
     }
     Ok(x)
-}
-
-/// Splits `words` (what follows the subcommand) into `(option, value)` pairs in order. An option
-/// listed in `valued` takes the next word as its value; one in `flags` takes none (its value is
-/// empty). Anything else, an option given twice or a valued option at the end is an error that
-/// names it.
-pub fn options<'a>(
-    words: &'a [String],
-    valued: &[&str],
-    flags: &[&str],
-) -> Result<Vec<(&'a str, &'a str)>, String> {
-    let mut out: Vec<(&str, &str)> = Vec::new();
-    let mut it = words.iter();
-    while let Some(arg) = it.next() {
-        let a = arg.as_str();
-        let takes_value = valued.contains(&a);
-        if !takes_value && !flags.contains(&a) {
-            return Err(format!("unknown argument `{arg}`"));
-        }
-        if out.iter().any(|(seen, _)| *seen == a) {
-            return Err(format!("argument `{arg}` given more than once"));
-        }
-        let value = if takes_value {
-            it.next().ok_or(format!("missing value after `{arg}`"))?.as_str()
-        } else {
-            ""
-        };
-        out.push((a, value));
-    }
-    Ok(out)
 }
 
 /// The bicycle `benchmark` (no uncertainty) or the one in the parameter file `model`: the
@@ -68,40 +38,18 @@ pub fn uncertain_model(model: &str) -> Result<UncertainParams, String> {
 /// The options beside `--model` that say how its file is read: `--rider FILE` (a
 /// BicycleParameters rider file added to the rear frame, [`add_rider`]) and `--strict` (moments
 /// of inertia breaking a triangle inequality are an error instead of a warning).
-#[derive(Clone, Debug, Default, PartialEq)]
+#[derive(Clone, Debug, Default, PartialEq, clap::Args)]
 pub struct DataOptions {
-    /// The rider file, if any.
+    /// A BicycleParameters rider file (`name = value+/-sigma`) whose rider is added to the rear
+    /// frame
+    #[arg(long, value_name = "FILE.txt")]
     pub rider: Option<String>,
-    /// Whether a broken triangle inequality is an error.
+    /// A moment of inertia breaking a triangle inequality is an error instead of a warning
+    #[arg(long)]
     pub strict: bool,
 }
 
 impl DataOptions {
-    /// Takes `arg` if it is `--rider` (its value the next word of `rest`) or `--strict`:
-    /// `Ok(true)` when taken, `Ok(false)` for another argument, an error for a repeated option
-    /// or a missing value.
-    pub fn take<'a>(
-        &mut self,
-        arg: &str,
-        rest: &mut impl Iterator<Item = &'a String>,
-    ) -> Result<bool, String> {
-        match arg {
-            "--strict" if self.strict => Err("argument `--strict` given more than once".into()),
-            "--strict" => {
-                self.strict = true;
-                Ok(true)
-            }
-            "--rider" if self.rider.is_some() => {
-                Err("argument `--rider` given more than once".into())
-            }
-            "--rider" => {
-                self.rider = Some(rest.next().ok_or("missing value after `--rider`")?.clone());
-                Ok(true)
-            }
-            _ => Ok(false),
-        }
-    }
-
     /// Whether any is given.
     pub fn any(&self) -> bool {
         self.rider.is_some() || self.strict
@@ -179,10 +127,17 @@ fn read_model_file(model: &str) -> Result<String, String> {
         .map_err(|e| format!("cannot read model file `{model}`: {}", e.to_string().to_lowercase()))
 }
 
-/// `list` as owned words, as the command line gives them (for the subcommands' tests).
+/// Parses `words` (the command's name first) as the options `A` of one command, as the command
+/// line would (for the subcommands' tests); the error is clap's message.
 #[cfg(test)]
-pub fn words(list: &[&str]) -> Vec<String> {
-    list.iter().map(|s| s.to_string()).collect()
+pub fn parse<A: clap::Args>(words: &[&str]) -> Result<A, String> {
+    use clap::Parser as _;
+    #[derive(clap::Parser)]
+    struct One<A: clap::Args> {
+        #[command(flatten)]
+        args: A,
+    }
+    One::<A>::try_parse_from(words).map(|one| one.args).map_err(|e| e.to_string())
 }
 
 #[cfg(test)]
@@ -190,19 +145,12 @@ mod tests {
     use super::*;
 
     #[test]
-    fn options_in_order_and_errors_named() {
-        let w = words(&["--theta", "20", "--json", "--gamma", "-5"]);
-        assert_eq!(
-            options(&w, &["--theta", "--gamma"], &["--json"]),
-            Ok(vec![("--theta", "20"), ("--json", ""), ("--gamma", "-5")])
-        );
-        let err = |list: &[&str]| options(&words(list), &["--theta"], &["--json"]).unwrap_err();
-        assert_eq!(err(&["--lean", "5"]), "unknown argument `--lean`");
-        assert_eq!(err(&["--json", "--json"]), "argument `--json` given more than once");
-        assert_eq!(err(&["--theta"]), "missing value after `--theta`");
-        assert_eq!(number("theta", "2.5"), Ok(2.5));
-        assert_eq!(number("theta", "five"), Err("invalid theta `five`".into()));
-        assert_eq!(number("theta", "inf"), Err("invalid theta `inf`: must be finite".into()));
+    fn numbers_must_be_finite_and_leans_within_a_right_angle() {
+        assert_eq!(finite("2.5"), Ok(2.5));
+        assert_eq!(finite("five"), Err("not a number".into()));
+        assert_eq!(finite("inf"), Err("must be finite".into()));
+        assert_eq!(lean_deg("-89.9"), Ok(-89.9));
+        assert_eq!(lean_deg("90"), Err("must lie strictly between -90 and 90 degrees".into()));
     }
 
     #[test]

@@ -34,16 +34,6 @@ use std::time::Duration;
 use carvallo::sweep::{self, Designs, Method, Spread, SweepOutput, Vary};
 use serde_json::{json, Value};
 
-const HELP: &str = "\
-Usage:
-    carvallo bench [--json] [--quick]
-    carvallo sweep --model benchmark|FILE.toml --vary NAME=FROM:TO:COUNT [--vary ...]
-                   [--rider FILE.txt] [--strict] [--method hurwitz|eigen] [--json | --csv]
-    carvallo sweep --model benchmark|FILE.toml --random N --spread NAME=REL [--spread ...]
-                   [--seed S] [--rider FILE.txt] [--strict] [--method hurwitz|eigen]
-                   [--json | --csv]
-";
-
 /// How `sweep` prints its result.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
 enum Output {
@@ -52,19 +42,60 @@ enum Output {
     Csv,
 }
 
-#[derive(Debug, PartialEq)]
-enum Command {
-    Bench {
-        json: bool,
-        quick: bool,
-    },
-    Sweep {
-        model: String,
-        data: crate::args::DataOptions,
-        designs: Designs,
-        method: Method,
-        output: Output,
-    },
+/// `carvallo bench`: time per evaluation beside the error against 256 bits.
+#[derive(Clone, Debug, Default, PartialEq, Eq, clap::Args)]
+pub struct BenchArgs {
+    /// Print one JSON object {mode, rows, distributions, targets} instead of the tables
+    #[arg(long)]
+    pub json: bool,
+    /// Tiny samples (seconds) instead of the full measurement (minutes)
+    #[arg(long)]
+    pub quick: bool,
+}
+
+/// How the stability of each design is decided.
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq, clap::ValueEnum)]
+pub enum MethodArg {
+    /// The closed-form Hurwitz route through the characteristic polynomial
+    #[default]
+    Hurwitz,
+    /// The eigenvalues of the state matrix at every speed
+    Eigen,
+}
+
+/// `carvallo sweep`: the stability windows of many designs, a grid or random designs around
+/// the model, in parallel.
+#[derive(Clone, Debug, PartialEq, clap::Args)]
+#[command(group(clap::ArgGroup::new("designs").required(true).args(["vary", "random"])))]
+pub struct SweepArgs {
+    /// The bicycle around which designs vary: `benchmark` or a parameter file
+    #[arg(long, value_name = "MODEL")]
+    pub model: String,
+    #[command(flatten)]
+    pub data: crate::args::DataOptions,
+    /// A grid axis: COUNT values of the parameter NAME from FROM to TO (several make a grid of
+    /// every combination, the first varying slowest)
+    #[arg(long, value_name = "NAME=FROM:TO:COUNT", value_parser = parse_vary, conflicts_with = "random")]
+    pub vary: Vec<Vary>,
+    /// N random designs around the model (with --spread)
+    #[arg(long, value_name = "N", value_parser = parse_random, requires = "spread", allow_hyphen_values = true)]
+    pub random: Option<usize>,
+    /// A randomly varied parameter: NAME scaled by a uniform factor in [1 - REL, 1 + REL]
+    #[arg(long, value_name = "NAME=REL", value_parser = parse_spread, requires = "random")]
+    pub spread: Vec<Spread>,
+    /// The seed of the random designs (the same seed gives the same designs on any number of
+    /// threads) [default: 1]
+    #[arg(long, value_name = "S", requires = "random", allow_hyphen_values = true)]
+    pub seed: Option<u64>,
+    /// How stability is decided
+    #[arg(long, value_enum, default_value_t)]
+    pub method: MethodArg,
+    /// Print the summary as JSON
+    #[arg(long, conflicts_with = "csv")]
+    pub json: bool,
+    /// Print one CSV row per design (for pandas.read_csv)
+    #[arg(long)]
+    pub csv: bool,
 }
 
 /// Reads `NAME=FROM:TO:COUNT`.
@@ -107,183 +138,148 @@ fn parse_spread(text: &str) -> Result<Spread, String> {
     Ok(Spread { name: name.to_string(), rel })
 }
 
-fn parse(args: &[String]) -> Result<Command, String> {
-    let (first, rest) = args.split_first().ok_or("missing command")?;
-    let (mut output, mut quick, mut model, mut method) = (Output::Text, false, None, None);
-    let (mut vary, mut spreads, mut random, mut seed) = (Vec::new(), Vec::new(), None, None);
-    let mut data = crate::args::DataOptions::default();
-    let mut it = rest.iter();
-    while let Some(arg) = it.next() {
-        if first == "sweep" && data.take(arg, &mut it)? {
-            continue;
+/// Reads the count `N` of `--random`: at least 1.
+fn parse_random(v: &str) -> Result<usize, String> {
+    match v.parse::<usize>() {
+        Ok(n) if n >= 1 => Ok(n),
+        Err(e) if *e.kind() == std::num::IntErrorKind::PosOverflow => {
+            Err(format!("more than {} designs", usize::MAX))
         }
-        let mut value =
-            |what: &str| it.next().cloned().ok_or_else(|| format!("missing value after `{what}`"));
-        match (first.as_str(), arg.as_str()) {
-            (_, "--json" | "--csv") if output != Output::Text => {
-                let given = if output == Output::Json { "--json" } else { "--csv" };
-                if given == arg {
-                    return Err(format!("argument `{arg}` given more than once"));
-                }
-                return Err(format!("`{arg}` cannot be combined with `{given}`"));
-            }
-            (_, "--json") => output = Output::Json,
-            ("sweep", "--csv") => output = Output::Csv,
-            ("bench", "--quick") if quick => {
-                return Err("argument `--quick` given more than once".into())
-            }
-            ("bench", "--quick") => quick = true,
-            ("sweep", "--model") if model.is_none() => model = Some(value("--model")?),
-            ("sweep", "--vary") => vary.push(parse_vary(&value("--vary")?)?),
-            ("sweep", "--spread") => spreads.push(parse_spread(&value("--spread")?)?),
-            ("sweep", "--random") if random.is_none() => {
-                let v = value("--random")?;
-                match v.parse::<usize>() {
-                    Ok(n) if n >= 1 => random = Some(n),
-                    Err(e) if *e.kind() == std::num::IntErrorKind::PosOverflow => {
-                        return Err(format!(
-                            "invalid count `{v}` of --random: more than {} designs",
-                            usize::MAX
-                        ))
-                    }
-                    _ => {
-                        return Err(format!("invalid count `{v}` of --random: expected at least 1"))
-                    }
-                }
-            }
-            ("sweep", "--seed") if seed.is_none() => {
-                let v = value("--seed")?;
-                seed = Some(v.parse::<u64>().map_err(|_| format!("invalid seed `{v}`"))?);
-            }
-            ("sweep", "--method") if method.is_none() => {
-                method = Some(match value("--method")?.as_str() {
-                    "hurwitz" => Method::Hurwitz,
-                    "eigen" => Method::Eigen,
-                    other => {
-                        return Err(format!("invalid method `{other}`: expected hurwitz or eigen"))
-                    }
-                })
-            }
-            ("sweep", "--model" | "--method" | "--random" | "--seed") => {
-                return Err(format!("argument `{arg}` given more than once"))
-            }
-            _ => return Err(format!("unknown argument `{arg}`")),
-        }
+        _ => Err("expected a count of at least 1".into()),
     }
-    if first == "bench" {
-        return Ok(Command::Bench { json: output == Output::Json, quick });
-    }
-    let model = model.ok_or("missing `--model benchmark|FILE.toml`")?;
-    let designs = match (random, vary.is_empty()) {
-        (Some(_), false) => return Err("`--vary` cannot be combined with `--random`".into()),
-        (Some(count), true) => {
-            if spreads.is_empty() {
-                return Err("missing `--spread NAME=REL` for `--random`".into());
-            }
-            Designs::Random { count, spreads, seed: seed.unwrap_or(1) }
-        }
-        (None, _) if !spreads.is_empty() => return Err("`--spread` needs `--random N`".into()),
-        (None, _) if seed.is_some() => return Err("`--seed` needs `--random N`".into()),
-        (None, true) => return Err("missing `--vary NAME=FROM:TO:COUNT` or `--random N`".into()),
-        (None, false) => Designs::Grid(vary),
-    };
-    Ok(Command::Sweep { model, data, designs, method: method.unwrap_or(Method::Hurwitz), output })
 }
 
-/// Draws a progress bar on standard error until `done` is set.
+#[derive(Debug, PartialEq)]
+struct Sweep {
+    model: String,
+    data: crate::args::DataOptions,
+    designs: Designs,
+    method: Method,
+    output: Output,
+}
+
+impl SweepArgs {
+    /// The sweep these options describe (clap has checked that they fit together).
+    fn sweep(&self) -> Sweep {
+        let designs = match self.random {
+            Some(count) => Designs::Random {
+                count,
+                spreads: self.spread.clone(),
+                seed: self.seed.unwrap_or(1),
+            },
+            None => Designs::Grid(self.vary.clone()),
+        };
+        let method = match self.method {
+            MethodArg::Hurwitz => Method::Hurwitz,
+            MethodArg::Eigen => Method::Eigen,
+        };
+        let output = match (self.json, self.csv) {
+            (true, _) => Output::Json,
+            (_, true) => Output::Csv,
+            _ => Output::Text,
+        };
+        Sweep { model: self.model.clone(), data: self.data.clone(), designs, method, output }
+    }
+}
+
+/// Draws an `indicatif` progress bar of the sweep's designs on standard error (only when it
+/// is a terminal: indicatif hides it otherwise), with the rate and the time left, until `done`
+/// is set; the bar is cleared at the end.
 fn progress_bar(counter: &AtomicUsize, total: usize, done: &AtomicBool) {
-    let width = 40;
+    let bar = indicatif::ProgressBar::with_draw_target(
+        Some(total as u64),
+        indicatif::ProgressDrawTarget::stderr(),
+    );
+    let style = indicatif::ProgressStyle::with_template(
+        "[{bar:40}] {human_pos}/{human_len} designs, {per_sec}, {eta} left",
+    )
+    .map(|s| s.progress_chars("## "))
+    .unwrap_or_else(|_| indicatif::ProgressStyle::default_bar());
+    bar.set_style(style);
     while !done.load(Ordering::Relaxed) {
-        let n = counter.load(Ordering::Relaxed).min(total);
-        let filled = n * width / total.max(1);
-        eprint!("\r[{}{}] {n}/{total}", "#".repeat(filled), " ".repeat(width - filled));
+        bar.set_position(counter.load(Ordering::Relaxed).min(total) as u64);
         std::thread::sleep(Duration::from_millis(100));
     }
-    eprint!("\r{}\r", " ".repeat(width + 30));
+    bar.finish_and_clear();
 }
 
 fn range(r: Option<(f64, f64)>) -> Value {
     r.map_or(Value::Null, |(a, b)| json!([a, b]))
 }
 
-fn run(cmd: Command) -> Result<String, String> {
-    match cmd {
-        Command::Bench { json, quick } => {
-            let cfg =
-                if quick { crate::bench::Config::quick() } else { crate::bench::Config::full() };
-            let mut report = crate::bench::run(&cfg);
-            crate::bench::extend(&cfg, &mut report);
-            if json {
-                serde_json::to_string_pretty(&report).map_err(|e| e.to_string())
-            } else {
-                Ok(crate::bench::render_text(&report))
-            }
+/// Runs `carvallo bench`: the tables to print.
+pub fn bench(args: &BenchArgs) -> Result<String, String> {
+    let cfg = if args.quick { crate::bench::Config::quick() } else { crate::bench::Config::full() };
+    let mut report = crate::bench::run(&cfg);
+    crate::bench::extend(&cfg, &mut report);
+    if args.json {
+        serde_json::to_string_pretty(&report).map_err(|e| e.to_string())
+    } else {
+        Ok(crate::bench::render_text(&report))
+    }
+}
+
+/// Runs `carvallo sweep`: the summary to print (the CSV rows are written as they come), or an
+/// error naming the bad value.
+pub fn sweep(args: &SweepArgs) -> Result<String, String> {
+    let Sweep { model, data, designs, method, output } = args.sweep();
+    let base = crate::args::bicycle(&model, &data)?;
+    let count = match &designs {
+        Designs::Grid(axes) => {
+            axes.iter().try_fold(1usize, |n, a| n.checked_mul(a.count)).ok_or_else(|| {
+                let counts = axes.iter().map(|a| a.count).collect();
+                sweep::DesignsError::TooManyDesigns { counts }.to_string()
+            })?
         }
-        Command::Sweep { model, data, designs, method, output } => {
-            let base = crate::args::bicycle(&model, &data)?;
-            let count = match &designs {
-                Designs::Grid(axes) => axes
-                    .iter()
-                    .try_fold(1usize, |n, a| n.checked_mul(a.count))
-                    .ok_or_else(|| {
-                        let counts = axes.iter().map(|a| a.count).collect();
-                        sweep::DesignsError::TooManyDesigns { counts }.to_string()
-                    })?,
-                Designs::Random { count, .. } => *count,
-            };
-            let counter = AtomicUsize::new(0);
-            let done = AtomicBool::new(false);
-            let stop = interrupt_flag();
-            let names: Vec<&str> = match &designs {
-                Designs::Grid(axes) => axes.iter().map(|a| a.name.as_str()).collect(),
-                Designs::Random { spreads, .. } => {
-                    spreads.iter().map(|s| s.name.as_str()).collect()
-                }
-            };
-            let stdout = std::io::BufWriter::new(std::io::stdout().lock());
-            let mut rows = CsvRows::new(stdout, &names, stop);
-            let out = std::thread::scope(|s| {
-                if std::io::stderr().is_terminal() {
-                    s.spawn(|| progress_bar(&counter, count, &done));
-                }
-                let sink: Option<&mut dyn FnMut(&sweep::SweepChunk<'_>)> = match output {
-                    Output::Csv => Some(&mut |c: &sweep::SweepChunk<'_>| rows.chunk(c)),
-                    _ => None,
-                };
-                let r = sweep::sweep_stream(&base, &designs, method, &counter, stop, sink);
-                done.store(true, Ordering::Relaxed);
-                r
-            })
-            .map_err(|e| e.to_string())?;
-            let method = if method == Method::Hurwitz { "hurwitz" } else { "eigen" };
-            let interrupted = (out.summary.count < out.requested).then(|| {
-                format!("interrupted after {} of {} designs", out.summary.count, out.requested)
-            });
-            match output {
-                Output::Csv => {
-                    let last =
-                        rows.finish().map_err(|e| format!("cannot write the output: {e}"))?;
-                    if let Some(line) = &interrupted {
-                        eprintln!("{}\n{line}", summary_text(&designs, method, &out));
-                    }
-                    Ok(last)
-                }
-                Output::Json => {
-                    let mut v = summary_json(&model, &designs, method, &out);
-                    if let Some(line) = &interrupted {
-                        eprintln!("{line}");
-                        v["interrupted"] = json!(line);
-                    }
-                    serde_json::to_string_pretty(&v).map_err(|e| e.to_string())
-                }
-                Output::Text => {
-                    let text = summary_text(&designs, method, &out);
-                    Ok(match interrupted {
-                        Some(line) => format!("{text}\n{line}"),
-                        None => text,
-                    })
-                }
+        Designs::Random { count, .. } => *count,
+    };
+    let counter = AtomicUsize::new(0);
+    let done = AtomicBool::new(false);
+    let stop = interrupt_flag();
+    let names: Vec<&str> = match &designs {
+        Designs::Grid(axes) => axes.iter().map(|a| a.name.as_str()).collect(),
+        Designs::Random { spreads, .. } => spreads.iter().map(|s| s.name.as_str()).collect(),
+    };
+    let stdout = std::io::BufWriter::new(std::io::stdout().lock());
+    let mut rows = CsvRows::new(stdout, &names, stop);
+    let out = std::thread::scope(|s| {
+        if std::io::stderr().is_terminal() {
+            s.spawn(|| progress_bar(&counter, count, &done));
+        }
+        let sink: Option<&mut dyn FnMut(&sweep::SweepChunk<'_>)> = match output {
+            Output::Csv => Some(&mut |c: &sweep::SweepChunk<'_>| rows.chunk(c)),
+            _ => None,
+        };
+        let r = sweep::sweep_stream(&base, &designs, method, &counter, stop, sink);
+        done.store(true, Ordering::Relaxed);
+        r
+    })
+    .map_err(|e| e.to_string())?;
+    let method = if method == Method::Hurwitz { "hurwitz" } else { "eigen" };
+    let interrupted = (out.summary.count < out.requested)
+        .then(|| format!("interrupted after {} of {} designs", out.summary.count, out.requested));
+    match output {
+        Output::Csv => {
+            let last = rows.finish().map_err(|e| format!("cannot write the output: {e}"))?;
+            if let Some(line) = &interrupted {
+                eprintln!("{}\n{line}", summary_text(&designs, method, &out));
             }
+            Ok(last)
+        }
+        Output::Json => {
+            let mut v = summary_json(&model, &designs, method, &out);
+            if let Some(line) = &interrupted {
+                eprintln!("{line}");
+                v["interrupted"] = json!(line);
+            }
+            serde_json::to_string_pretty(&v).map_err(|e| e.to_string())
+        }
+        Output::Text => {
+            let text = summary_text(&designs, method, &out);
+            Ok(match interrupted {
+                Some(line) => format!("{text}\n{line}"),
+                None => text,
+            })
         }
     }
 }
@@ -439,24 +435,21 @@ fn rayon_threads() -> usize {
     std::thread::available_parallelism().map_or(1, |n| n.get())
 }
 
-/// The subcommands `bench` or `sweep`.
-pub const SUBCOMMAND: crate::Subcommand = crate::Subcommand {
-    names: &["bench", "sweep"],
-    run: |args| parse(args).and_then(run),
-    help: HELP,
-};
-
 #[cfg(test)]
 mod tests {
     use super::*;
 
-    use crate::args::words as args;
+    use crate::args::parse;
+
+    fn sweep_of(words: &[&str]) -> Result<Sweep, String> {
+        parse::<SweepArgs>(&[&["sweep", "--model"], words].concat()).map(|a| a.sweep())
+    }
 
     #[test]
     fn parses_and_rejects_by_value() {
         assert_eq!(
-            parse(&args(&["bench", "--quick", "--json"])),
-            Ok(Command::Bench { json: true, quick: true })
+            parse::<BenchArgs>(&["bench", "--quick", "--json"]),
+            Ok(BenchArgs { json: true, quick: true })
         );
         let vary = |name: &str, from: f64, to: f64, count: usize| Vary {
             name: name.into(),
@@ -465,8 +458,8 @@ mod tests {
             count,
         };
         assert_eq!(
-            parse(&args(&["sweep", "--model", "benchmark", "--vary", "c=0:0.2:10"])),
-            Ok(Command::Sweep {
+            sweep_of(&["benchmark", "--vary", "c=0:0.2:10"]),
+            Ok(Sweep {
                 data: crate::args::DataOptions::default(),
                 model: "benchmark".into(),
                 designs: Designs::Grid(vec![vary("c", 0.0, 0.2, 10)]),
@@ -475,17 +468,8 @@ mod tests {
             })
         );
         assert_eq!(
-            parse(&args(&[
-                "sweep",
-                "--model",
-                "b",
-                "--vary",
-                "c=0:0.2:10",
-                "--csv",
-                "--vary",
-                "w=1:1.2:3"
-            ])),
-            Ok(Command::Sweep {
+            sweep_of(&["b", "--vary", "c=0:0.2:10", "--csv", "--vary", "w=1:1.2:3"]),
+            Ok(Sweep {
                 data: crate::args::DataOptions::default(),
                 model: "b".into(),
                 designs: Designs::Grid(vec![vary("c", 0.0, 0.2, 10), vary("w", 1.0, 1.2, 3)]),
@@ -494,11 +478,11 @@ mod tests {
             })
         );
         assert_eq!(
-            parse(&args(&[
-                "sweep", "--model", "b", "--random", "100", "--spread", "c=0.1", "--spread",
-                "mB=0.2", "--seed", "9", "--json"
-            ])),
-            Ok(Command::Sweep {
+            sweep_of(&[
+                "b", "--random", "100", "--spread", "c=0.1", "--spread", "mB=0.2", "--seed", "9",
+                "--json", "--method", "eigen"
+            ]),
+            Ok(Sweep {
                 data: crate::args::DataOptions::default(),
                 model: "b".into(),
                 designs: Designs::Random {
@@ -509,59 +493,34 @@ mod tests {
                     ],
                     seed: 9
                 },
-                method: Method::Hurwitz,
+                method: Method::Eigen,
                 output: Output::Json,
             })
         );
-        let err = |list: &[&str]| parse(&args(list)).unwrap_err();
-        assert_eq!(
-            err(&["sweep", "--model", "benchmark", "--vary", "c=0:x:10"]),
-            "invalid number `x` in --vary `c=0:x:10`"
-        );
-        assert_eq!(
-            err(&["sweep", "--model", "b", "--vary", "c=0:1:10", "--method", "qr"]),
-            "invalid method `qr`: expected hurwitz or eigen"
-        );
-        assert_eq!(
-            err(&["sweep", "--model", "b", "--vary", "c=0:1"]),
-            "invalid --vary `c=0:1`: expected NAME=FROM:TO:COUNT"
-        );
-        assert_eq!(err(&["bench", "--fast"]), "unknown argument `--fast`");
-        assert_eq!(
-            err(&["sweep", "--model", "b", "--vary", "c=0:1:3", "--json", "--csv"]),
-            "`--csv` cannot be combined with `--json`"
-        );
-        assert_eq!(
-            err(&["sweep", "--model", "b", "--vary", "c=0:1:3", "--random", "5"]),
-            "`--vary` cannot be combined with `--random`"
-        );
-        assert_eq!(
-            err(&["sweep", "--model", "b", "--random", "5"]),
-            "missing `--spread NAME=REL` for `--random`"
-        );
-        assert_eq!(
-            err(&["sweep", "--model", "b", "--random", "0", "--spread", "c=0.1"]),
-            "invalid count `0` of --random: expected at least 1"
-        );
-        assert_eq!(
-            err(&["sweep", "--model", "b", "--random", "5", "--spread", "c=1.5"]),
-            "invalid spread `1.5` in --spread `c=1.5`: must lie in [0, 1)"
-        );
-        assert_eq!(
-            err(&["sweep", "--model", "b", "--random", "5", "--spread", "c"]),
-            "invalid --spread `c`: expected NAME=REL"
-        );
-        assert_eq!(
-            err(&["sweep", "--model", "b", "--random", "5", "--spread", "c=.1", "--seed", "-1"]),
-            "invalid seed `-1`"
-        );
-        assert_eq!(
-            err(&["sweep", "--model", "b", "--spread", "c=0.1"]),
-            "`--spread` needs `--random N`"
-        );
-        assert_eq!(
-            err(&["sweep", "--model", "b"]),
-            "missing `--vary NAME=FROM:TO:COUNT` or `--random N`"
-        );
+        for (words, msg) in [
+            (&["benchmark", "--vary", "c=0:x:10"][..], "invalid number `x` in --vary `c=0:x:10`"),
+            (&["b", "--vary", "c=0:1:10", "--method", "qr"], "invalid value 'qr' for '--method"),
+            (&["b", "--vary", "c=0:1"], "invalid --vary `c=0:1`: expected NAME=FROM:TO:COUNT"),
+            (
+                &["b", "--vary", "c=0:1:3", "--json", "--csv"],
+                "'--json' cannot be used with '--csv'",
+            ),
+            (&["b", "--vary", "c=0:1:3", "--random", "5"], "cannot be used with '--random <N>'"),
+            (&["b", "--random", "5"], "--spread <NAME=REL>"),
+            (&["b", "--random", "0", "--spread", "c=0.1"], "expected a count of at least 1"),
+            (
+                &["b", "--random", "5", "--spread", "c=1.5"],
+                "invalid spread `1.5` in --spread `c=1.5`: must lie in [0, 1)",
+            ),
+            (&["b", "--random", "5", "--spread", "c"], "invalid --spread `c`: expected NAME=REL"),
+            (&["b", "--random", "5", "--spread", "c=.1", "--seed", "-1"], "'--seed <S>'"),
+            (&["b", "--spread", "c=0.1"], "--random <N>"),
+            (&["b"], "<--vary <NAME=FROM:TO:COUNT>|--random <N>>"),
+        ] {
+            let e = sweep_of(words).unwrap_err();
+            assert!(e.contains(msg), "{words:?}: {e}");
+        }
+        let e = parse::<BenchArgs>(&["bench", "--fast"]).unwrap_err();
+        assert!(e.contains("unexpected argument '--fast'"), "{e}");
     }
 }

@@ -30,13 +30,29 @@ fn report_prints_the_table_and_the_json() {
 fn help_and_unknown_arguments() {
     let (code, text, _) = carvallo(&["--help"]);
     assert_eq!(code, 0);
-    assert!(text.contains("carvallo report [--json]"));
-    let (code, _, err) = carvallo(&["report", "--frobnicate"]);
+    assert!(text.contains("Usage: carvallo <COMMAND>") && text.contains("\n  report "), "{text}");
+    let (code, version, _) = carvallo(&["--version"]);
+    assert_eq!(
+        (code, version.as_str()),
+        (0, concat!("carvallo ", env!("CARGO_PKG_VERSION"), "\n"))
+    );
+    // A usage error: the message, a suggestion, the usage of that command only; exit 2.
+    let (code, _, err) = carvallo(&["report", "--jsn"]);
     assert_eq!(code, 2);
-    assert!(err.starts_with("error: unknown argument `--frobnicate`"), "{err}");
+    assert!(err.starts_with("error: unexpected argument '--jsn' found"), "{err}");
+    assert!(err.contains("a similar argument exists: '--json'"), "{err}");
+    assert!(err.contains("Usage: carvallo report ") && !err.contains("window"), "{err}");
     let (code, _, err) = carvallo(&[]);
     assert_eq!(code, 2);
-    assert!(err.starts_with("error: missing command"), "{err}");
+    assert!(err.contains("Usage: carvallo <COMMAND>"), "{err}");
+    // Completion scripts for the shells, made from the command table.
+    for (shell, mark) in
+        [("bash", "_carvallo()"), ("zsh", "#compdef carvallo"), ("fish", "complete -c carvallo")]
+    {
+        let (code, script, err) = carvallo(&["completions", shell]);
+        assert_eq!(code, 0, "{shell}: {err}");
+        assert!(script.contains(mark) && script.contains("kinematics"), "{shell}");
+    }
     // Every subcommand prints its own usage for -h or --help, wherever it stands, with exit 0.
     for (args, usage) in [
         (&["window", "--help"][..], "carvallo window"),
@@ -166,7 +182,10 @@ fn bad_parameter_files_are_usage_errors_and_nothing_is_written() {
     assert!(stderr.starts_with("error: cannot read model file `absent.toml`"), "{stderr}");
     let (code, _, stderr) = carvallo_in(&dir, &["report", "--json", "--out", "r"]);
     assert_eq!(code, 2);
-    assert!(stderr.starts_with("error: `--json` cannot be combined with `--out`"), "{stderr}");
+    assert!(
+        stderr.starts_with("error: the argument '--json' cannot be used with '--out <DIR>'"),
+        "{stderr}"
+    );
     assert!(!dir.join("r").exists(), "nothing may be written");
     assert!(listing(&dir).iter().all(|n| n.ends_with(".toml")), "{:?}", listing(&dir));
     let _ = std::fs::remove_dir_all(&dir);
@@ -265,5 +284,5 @@ fn bicycleparameters_files_with_riders_warnings_and_strict() {
     assert!(stderr.contains("`--rider` and `--strict` read a bicycle file, not `carvallo`"));
     let (code, _, stderr) = carvallo(&["window", "--model", &bike, "--rider"]);
     assert_eq!(code, 2);
-    assert!(stderr.starts_with("error: missing value after `--rider`"), "{stderr}");
+    assert!(stderr.starts_with("error: a value is required for '--rider <FILE.txt>'"), "{stderr}");
 }

@@ -43,11 +43,11 @@ fn json_is_the_library_turn() {
 #[test]
 fn bad_input_exits_2_naming_the_value() {
     for (args, message) in [
-        (vec!["--gamma", "60", "--speed", "5"], "invalid gamma `60`"),
-        (vec!["--gamma", "5", "--speed", "fast"], "invalid speed `fast`"),
+        (vec!["--gamma", "60", "--speed", "5"], "invalid value '60' for '--gamma <DEG>'"),
+        (vec!["--gamma", "5", "--speed", "fast"], "invalid value 'fast' for '--speed <V>'"),
         (vec!["--gamma", "5", "--speed", "-2"], "invalid speed -2.0: must not be negative"),
         (vec!["--gamma", "30", "--speed", "40"], "no steady turn"),
-        (vec!["--gamma", "5"], "missing `--speed V`"),
+        (vec!["--gamma", "5"], "the following required arguments were not provided:\n  --speed <V>"),
     ] {
         let mut all = vec!["turn", "--model", "carvallo"];
         all.extend(args);

@@ -11,29 +11,18 @@ use std::io::Read;
 use carvallo::whipple_nonlinear::WhippleNonlinear;
 use serde_json::{json, Value};
 
-use crate::args::{options, toml_model};
+use crate::args::toml_model;
 
-/// The usage `accel` prints: the one of `accel` and `simulate` together.
-pub const HELP: &str = super::simulate::HELP;
-
-#[derive(Debug, PartialEq)]
-struct Command {
-    model: String,
-}
-
-fn parse(args: &[String]) -> Result<Command, String> {
-    let (mut model, mut basu) = (None, false);
-    for (a, v) in options(args.get(1..).unwrap_or_default(), &["--model"], &["--basu-mandal"])? {
-        match a {
-            "--model" => model = Some(v.to_string()),
-            _ => basu = true,
-        }
-    }
-    let model = model.ok_or("missing `--model benchmark|FILE.toml`")?;
-    if !basu {
-        return Err("missing `--basu-mandal` (the only coordinates `accel` reads)".into());
-    }
-    Ok(Command { model })
+/// `carvallo accel`: the accelerations of the nonlinear bicycle in Basu-Mandal's coordinates.
+#[derive(Clone, Debug, PartialEq, clap::Args)]
+pub struct Args {
+    /// The bicycle: `benchmark` or a parameter file in the anchors' TOML format
+    #[arg(long, value_name = "MODEL")]
+    pub model: String,
+    /// Read and write Basu-Mandal's coordinates (the only ones `accel` reads): stdin
+    /// `{"q": [..9], "qd": [..9]}`
+    #[arg(long, required = true)]
+    pub basu_mandal: bool,
 }
 
 /// The nine numbers of `key` in the input object.
@@ -59,7 +48,8 @@ fn accel(model: &str, input: &str) -> Result<String, String> {
     serde_json::to_string_pretty(&json!({ "qdd": qdd })).map_err(|e| e.to_string())
 }
 
-fn run(cmd: &Command) -> Result<String, String> {
+/// Runs `carvallo accel` on standard input: the text to print, or an error naming the bad value.
+pub fn run(cmd: &Args) -> Result<String, String> {
     let mut input = String::new();
     std::io::stdin()
         .read_to_string(&mut input)
@@ -67,32 +57,22 @@ fn run(cmd: &Command) -> Result<String, String> {
     accel(&cmd.model, &input)
 }
 
-/// Runs `carvallo accel ARGS` (the argument list, the command's name first) on standard input:
-/// the text to print, or an error naming the bad argument or value.
-pub fn main(args: &[String]) -> Result<String, String> {
-    parse(args).and_then(|c| run(&c))
-}
-
 #[cfg(test)]
 mod tests {
     use super::*;
 
-    use crate::args::words as args;
+    use crate::args::parse;
 
     #[test]
     fn parses_and_rejects_by_value() {
         assert_eq!(
-            parse(&args(&["accel", "--model", "benchmark", "--basu-mandal"])),
-            Ok(Command { model: "benchmark".into() })
+            parse::<Args>(&["accel", "--model", "benchmark", "--basu-mandal"]),
+            Ok(Args { model: "benchmark".into(), basu_mandal: true })
         );
-        assert_eq!(
-            parse(&args(&["accel", "--model", "benchmark"])),
-            Err("missing `--basu-mandal` (the only coordinates `accel` reads)".into())
-        );
-        assert_eq!(
-            parse(&args(&["accel", "--speed", "1"])),
-            Err("unknown argument `--speed`".into())
-        );
+        let e = parse::<Args>(&["accel", "--model", "benchmark"]).unwrap_err();
+        assert!(e.contains("required arguments were not provided") && e.contains("--basu-mandal"));
+        let e = parse::<Args>(&["accel", "--speed", "1"]).unwrap_err();
+        assert!(e.starts_with("error: unexpected argument '--speed'"), "{e}");
     }
 
     #[test]

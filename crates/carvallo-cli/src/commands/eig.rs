@@ -11,54 +11,26 @@ use carvallo::whipple::Whipple;
 use crate::args::DataOptions;
 use serde_json::{json, Value};
 
-/// The usage `eig` prints: the one of `window` and `eig` together.
-pub const HELP: &str = super::window::HELP;
-
-#[derive(Debug, PartialEq)]
-struct Command {
-    model: String,
-    data: DataOptions,
-    speed: f64,
-    json: bool,
+/// `carvallo eig`: the eigenvalues of the linearised bicycle at one speed.
+#[derive(Clone, Debug, PartialEq, clap::Args)]
+pub struct Args {
+    /// The bicycle: `benchmark` or a parameter file (the anchors' TOML or BicycleParameters'
+    /// `name = value+/-sigma` text)
+    #[arg(long, value_name = "MODEL")]
+    pub model: String,
+    #[command(flatten)]
+    pub data: DataOptions,
+    /// The forward speed [m/s]
+    #[arg(long, value_name = "V", value_parser = crate::args::finite, allow_hyphen_values = true)]
+    pub speed: f64,
+    /// Print JSON `{speed, eigenvalues: [{re, im}, ...]}` instead of text
+    #[arg(long)]
+    pub json: bool,
 }
 
-fn parse(args: &[String]) -> Result<Command, String> {
-    let (mut model, mut speed, mut json) = (None, None, false);
-    let mut data = DataOptions::default();
-    let mut it = args.iter().skip(1);
-    while let Some(arg) = it.next() {
-        if data.take(arg, &mut it)? {
-            continue;
-        }
-        match arg.as_str() {
-            "--json" if json => return Err("argument `--json` given more than once".into()),
-            "--json" => json = true,
-            "--model" if model.is_some() => {
-                return Err("argument `--model` given more than once".into())
-            }
-            "--model" => {
-                model = Some(it.next().ok_or("missing value after `--model`")?.clone());
-            }
-            "--speed" if speed.is_some() => {
-                return Err("argument `--speed` given more than once".into())
-            }
-            "--speed" => {
-                let v = it.next().ok_or("missing value after `--speed`")?;
-                let x: f64 = v.parse().map_err(|_| format!("invalid speed `{v}`"))?;
-                if !x.is_finite() {
-                    return Err(format!("invalid speed `{v}`: must be finite"));
-                }
-                speed = Some(x);
-            }
-            _ => return Err(format!("unknown argument `{arg}`")),
-        }
-    }
-    let model = model.ok_or("missing `--model benchmark|FILE.toml`")?;
-    Ok(Command { model, data, speed: speed.ok_or("missing `--speed V`")?, json })
-}
-
-fn run(cmd: &Command) -> Result<String, String> {
-    let Command { model, data, speed, json } = cmd;
+/// Runs `carvallo eig`: the text to print, or an error naming the bad value.
+pub fn run(cmd: &Args) -> Result<String, String> {
+    let Args { model, data, speed, json } = cmd;
     let ev = Whipple::new(crate::args::bicycle(model, data)?).eigenvalues(*speed);
     if *json {
         let list: Vec<Value> = ev.iter().map(|e| json!({ "re": e.re, "im": e.im })).collect();
@@ -73,23 +45,17 @@ fn run(cmd: &Command) -> Result<String, String> {
     }
 }
 
-/// Runs `carvallo eig ARGS` (the argument list, the command's name first): the text to print,
-/// or an error naming the bad argument or value.
-pub fn main(args: &[String]) -> Result<String, String> {
-    parse(args).and_then(|c| run(&c))
-}
-
 #[cfg(test)]
 mod tests {
     use super::*;
 
-    use crate::args::words as args;
+    use crate::args::parse;
 
     #[test]
     fn parses_and_rejects_by_value() {
         assert_eq!(
-            parse(&args(&["eig", "--speed", "5", "--model", "b.toml"])),
-            Ok(Command {
+            parse::<Args>(&["eig", "--speed", "5", "--model", "b.toml"]),
+            Ok(Args {
                 model: "b.toml".into(),
                 data: DataOptions::default(),
                 speed: 5.0,
@@ -97,12 +63,15 @@ mod tests {
             })
         );
         assert_eq!(
-            parse(&args(&["eig", "--model", "x", "--speed", "fast"])),
-            Err("invalid speed `fast`".into())
+            parse::<Args>(&["eig", "--speed", "-1", "--model", "b"]).map(|a| a.speed),
+            Ok(-1.0)
         );
-        assert_eq!(
-            parse(&args(&["eig", "--model", "benchmark"])),
-            Err("missing `--speed V`".into())
+        let e = parse::<Args>(&["eig", "--model", "x", "--speed", "fast"]).unwrap_err();
+        assert!(
+            e.starts_with("error: invalid value 'fast' for '--speed <V>': not a number"),
+            "{e}"
         );
+        let e = parse::<Args>(&["eig", "--model", "benchmark"]).unwrap_err();
+        assert!(e.contains("--speed <V>"), "{e}");
     }
 }

@@ -17,15 +17,7 @@
 use carvallo::bicycle_kinematics::Kinematics;
 use serde_json::json;
 
-use crate::args::{lean_deg, number, options};
-
-/// The usage `kinematics` prints for `--help` and after a usage error.
-pub const HELP: &str = "\
-Usage:
-    carvallo kinematics --theta DEG --gamma DEG [--json]
-                                contact, relations (I) and steady rates (2) of the memoir's
-                                bicycle at lean and handlebar angles in degrees (n° 59-69)
-";
+use crate::args::{finite, lean_deg};
 
 /// Largest |det| / column norms of the n° 68 system still counted as zero (as the report's
 /// n° 68 entry).
@@ -33,29 +25,22 @@ const RANK_DET_ZERO: f64 = 1e-12;
 /// Smallest largest 2×2 minor / column norms counted as non-zero (as the report's entry).
 const RANK_MINOR_NONZERO: f64 = 1e-3;
 
-#[derive(Debug, PartialEq)]
-struct Command {
-    theta_deg: f64,
-    gamma_deg: f64,
-    json: bool,
+/// `carvallo kinematics`: contact, relations (I) and steady rates (2) (memoir n° 59–69).
+#[derive(Clone, Debug, PartialEq, clap::Args)]
+pub struct Args {
+    /// The frame's lean θ [degrees], strictly between -90 and 90
+    #[arg(long = "theta", value_name = "DEG", value_parser = lean_deg, allow_hyphen_values = true)]
+    pub theta_deg: f64,
+    /// The handlebar angle γ [degrees]
+    #[arg(long = "gamma", value_name = "DEG", value_parser = finite, allow_hyphen_values = true)]
+    pub gamma_deg: f64,
+    /// Print JSON instead of text
+    #[arg(long)]
+    pub json: bool,
 }
 
-fn parse(args: &[String]) -> Result<Command, String> {
-    let (mut theta, mut gamma, mut json) = (None, None, false);
-    let words = args.get(1..).unwrap_or_default();
-    for (a, v) in options(words, &["--theta", "--gamma"], &["--json"])? {
-        match a {
-            "--theta" => theta = Some(lean_deg("theta", v)?),
-            "--gamma" => gamma = Some(number("gamma", v)?),
-            _ => json = true,
-        }
-    }
-    let theta_deg: f64 = theta.ok_or("missing `--theta DEG`")?;
-    let gamma_deg: f64 = gamma.ok_or("missing `--gamma DEG`")?;
-    Ok(Command { theta_deg, gamma_deg, json })
-}
-
-fn run(c: &Command) -> Result<String, String> {
+/// Runs `carvallo kinematics`: the text to print, or an error naming the bad value.
+pub fn run(c: &Args) -> Result<String, String> {
     let k = Kinematics::old_model();
     let (theta, gamma) = (c.theta_deg.to_radians(), c.gamma_deg.to_radians());
     let at = format!("theta `{}` deg, gamma `{}` deg", c.theta_deg, c.gamma_deg);
@@ -156,41 +141,33 @@ fn sci(x: f64) -> String {
     format!("{x:+.6e}")
 }
 
-/// Runs `carvallo kinematics ARGS` (the argument list, the command's name first): the text to
-/// print, or an error naming the bad argument or value.
-pub fn main(args: &[String]) -> Result<String, String> {
-    parse(args).and_then(|c| run(&c))
-}
-
 #[cfg(test)]
 mod tests {
     use super::*;
 
-    use crate::args::words as args;
+    use crate::args::parse;
 
     #[test]
     fn parses_and_rejects_by_value() {
         assert_eq!(
-            parse(&args(&["kinematics", "--gamma", "40", "--theta", "20", "--json"])),
-            Ok(Command { theta_deg: 20.0, gamma_deg: 40.0, json: true })
+            parse::<Args>(&["kinematics", "--gamma", "40", "--theta", "20", "--json"]),
+            Ok(Args { theta_deg: 20.0, gamma_deg: 40.0, json: true })
         );
         for (a, msg) in [
-            (vec!["kinematics", "--gamma", "1"], "missing `--theta DEG`"),
-            (vec!["kinematics", "--theta", "1"], "missing `--gamma DEG`"),
+            (vec!["kinematics", "--gamma", "1"], "--theta <DEG>"),
+            (vec!["kinematics", "--theta", "1"], "--gamma <DEG>"),
             (
                 vec!["kinematics", "--theta", "-90", "--gamma", "0"],
-                "invalid theta `-90`: must lie strictly between -90 and 90 degrees",
+                "invalid value '-90' for '--theta <DEG>': must lie strictly between -90 and 90 degrees",
             ),
-            (vec!["kinematics", "--theta", "nan"], "invalid theta `nan`: must be finite"),
-            (vec!["kinematics", "--theta", "1", "--gamma", "x"], "invalid gamma `x`"),
-            (
-                vec!["kinematics", "--gamma", "1", "--gamma", "2"],
-                "argument `--gamma` given more than once",
-            ),
-            (vec!["kinematics", "--theta"], "missing value after `--theta`"),
-            (vec!["kinematics", "--steer", "5"], "unknown argument `--steer`"),
+            (vec!["kinematics", "--theta", "nan"], "invalid value 'nan' for '--theta <DEG>': must be finite"),
+            (vec!["kinematics", "--theta", "1", "--gamma", "x"], "invalid value 'x' for '--gamma <DEG>'"),
+            (vec!["kinematics", "--gamma", "1", "--gamma", "2"], "'--gamma <DEG>' cannot be used multiple times"),
+            (vec!["kinematics", "--theta"], "a value is required for '--theta <DEG>'"),
+            (vec!["kinematics", "--steer", "5"], "unexpected argument '--steer' found"),
         ] {
-            assert_eq!(parse(&args(&a)), Err(msg.to_string()), "{a:?}");
+            let e = parse::<Args>(&a).unwrap_err();
+            assert!(e.contains(msg), "{a:?}: {e}");
         }
     }
 }

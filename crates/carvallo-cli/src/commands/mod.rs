@@ -1,7 +1,7 @@
 //! The subcommands of the `carvallo` command line, one module each (`bench` and `sweep` are
-//! still in [`crate::perf`]): a module parses its own argument list, the command's name first,
-//! and returns the text to print. Which word selects which module, what the help says about it
-//! and which usage it prints is the table [`crate::COMMANDS`].
+//! still in [`crate::perf`]): a module's `Args` are its options (parsed by clap), its `run`
+//! returns the text to print. Which word selects which module and what the help says about it
+//! is the command table `Command` of `main.rs`.
 
 pub mod accel;
 pub mod eig;

@@ -8,14 +8,33 @@
 //! them as a JSON array with the keys `id`, `section`, `claim`, `how`, `evidence`, `verdict`,
 //! `note`;
 //! `report --out DIR` writes the report directory ([`crate::report_dir`]) and prints the paths
-//! it wrote. Its usage is the whole help of `carvallo` (the table [`crate::COMMANDS`] says so).
+//! it wrote.
 //!
-//! A bad command line is a [`UsageError`]; an unusable output directory or model file is a
+//! A bad command line is a usage error of clap; an unusable output directory or model file is a
 //! [`BadInput`](crate::report_dir::BadInput), found before anything is written; both exit with
 //! code 2, a failure while writing with code 1.
 
 use crate::report_dir;
-use crate::UsageError;
+
+/// `carvallo report`: the memoir concordance, its claims, or the report directory.
+#[derive(Clone, Debug, Default, PartialEq, Eq, clap::Args)]
+pub struct Args {
+    /// Print JSON: the concordance as an array of {section, quantity, memoir, derived,
+    /// rel_diff, verdict, note}, or with --claims the claims as an array
+    #[arg(long, conflicts_with = "out")]
+    pub json: bool,
+    /// Print the memoir's claims checked: claim, how checked, evidence, verdict
+    #[arg(long, conflicts_with = "out")]
+    pub claims: bool,
+    /// Write DIR/report.md, DIR/report.html (concordance, errata) and the SVG figures
+    #[arg(long, value_name = "DIR")]
+    pub out: Option<String>,
+    /// The bicycle of the report's modern sections: `benchmark`, a parameter file; a
+    /// BicycleParameters FILE.txt with uncertainties adds their propagation and the
+    /// eigenvalues with uncertainty bands
+    #[arg(long, value_name = "MODEL", requires = "out")]
+    pub model: Option<String>,
+}
 
 /// What `carvallo report ...` asks for.
 #[derive(Debug, PartialEq, Eq)]
@@ -25,44 +44,23 @@ enum Command {
     Write { dir: String, model: String },
 }
 
-fn parse(args: &[String]) -> Result<Command, UsageError> {
-    let (mut json, mut claims, mut out, mut model) = (false, false, None, None);
-    let mut it = args.iter().skip(1);
-    while let Some(arg) = it.next() {
-        match arg.as_str() {
-            "--json" if json => return Err(UsageError::Repeated(arg.clone())),
-            "--json" => json = true,
-            "--claims" if claims => return Err(UsageError::Repeated(arg.clone())),
-            "--claims" => claims = true,
-            "--out" | "--model" => {
-                let slot = if arg == "--out" { &mut out } else { &mut model };
-                if slot.is_some() {
-                    return Err(UsageError::Repeated(arg.clone()));
-                }
-                let value = it.next().ok_or_else(|| UsageError::MissingValue(arg.clone()))?;
-                *slot = Some(value.clone());
-            }
-            _ => return Err(UsageError::Unknown(arg.clone())),
+impl Args {
+    fn command(&self) -> Command {
+        match &self.out {
+            Some(dir) => Command::Write {
+                dir: dir.clone(),
+                model: self.model.clone().unwrap_or_else(|| "benchmark".into()),
+            },
+            None if self.claims => Command::Claims { json: self.json },
+            None => Command::Print { json: self.json },
         }
-    }
-    match (out, model) {
-        (Some(_), _) if json => Err(UsageError::Conflict("--json", "--out")),
-        (Some(_), _) if claims => Err(UsageError::Conflict("--claims", "--out")),
-        (None, Some(_)) if claims => Err(UsageError::Conflict("--model", "--claims")),
-        (Some(dir), model) => {
-            Ok(Command::Write { dir, model: model.unwrap_or_else(|| "benchmark".into()) })
-        }
-        (None, Some(_)) => Err(UsageError::Conflict("--model", "the printed report (use --out)")),
-        (None, None) if claims => Ok(Command::Claims { json }),
-        (None, None) => Ok(Command::Print { json }),
     }
 }
 
-/// Runs `carvallo report ARGS` (the argument list, the command's name first): the text to print
-/// as it is, or the error (a [`UsageError`], a [`BadInput`](report_dir::BadInput) or a failure
-/// to write).
-pub fn main(args: &[String]) -> anyhow::Result<String> {
-    match parse(args)? {
+/// Runs `carvallo report`: the text to print as it is, or the error (a
+/// [`BadInput`](report_dir::BadInput) or a failure to write).
+pub fn run(args: &Args) -> anyhow::Result<String> {
+    match args.command() {
         Command::Write { dir, model } => {
             let params = crate::args::uncertain_model(&model).map_err(report_dir::BadInput)?;
             let files = report_dir::write_report(std::path::Path::new(&dir), &params, &model)?;
@@ -95,50 +93,42 @@ pub fn main(args: &[String]) -> anyhow::Result<String> {
 mod tests {
     use super::*;
 
-    use crate::args::words as args;
+    use crate::args::parse;
+
+    fn command(words: &[&str]) -> Result<Command, String> {
+        parse::<Args>(&[&["report"], words].concat()).map(|a| a.command())
+    }
 
     #[test]
     fn parses_the_printed_and_the_written_report() {
-        assert_eq!(parse(&args(&["report"])), Ok(Command::Print { json: false }));
-        assert_eq!(parse(&args(&["report", "--json"])), Ok(Command::Print { json: true }));
-        assert_eq!(parse(&args(&["report", "--claims"])), Ok(Command::Claims { json: false }));
+        assert_eq!(command(&[]), Ok(Command::Print { json: false }));
+        assert_eq!(command(&["--json"]), Ok(Command::Print { json: true }));
+        assert_eq!(command(&["--claims"]), Ok(Command::Claims { json: false }));
+        assert_eq!(command(&["--json", "--claims"]), Ok(Command::Claims { json: true }));
+        let e = command(&["--claims", "--out", "r"]).unwrap_err();
+        assert!(e.contains("'--claims' cannot be used with '--out <DIR>'"), "{e}");
         assert_eq!(
-            parse(&args(&["report", "--json", "--claims"])),
-            Ok(Command::Claims { json: true })
-        );
-        assert_eq!(
-            parse(&args(&["report", "--claims", "--out", "r"])).unwrap_err().to_string(),
-            "`--claims` cannot be combined with `--out`"
-        );
-        assert_eq!(
-            parse(&args(&["report", "--out", "r"])),
+            command(&["--out", "r"]),
             Ok(Command::Write { dir: "r".into(), model: "benchmark".into() })
         );
         assert_eq!(
-            parse(&args(&["report", "--model", "b.toml", "--out", "r"])),
+            command(&["--model", "b.toml", "--out", "r"]),
             Ok(Command::Write { dir: "r".into(), model: "b.toml".into() })
         );
     }
 
     #[test]
     fn rejects_unknown_arguments_by_name() {
-        let err = parse(&args(&["report", "--jsn"])).unwrap_err();
-        assert_eq!(err.to_string(), "unknown argument `--jsn`");
-        assert_eq!(
-            parse(&args(&["report", "--json", "--json"])),
-            Err(UsageError::Repeated("--json".into()))
-        );
-        assert_eq!(
-            parse(&args(&["report", "--out"])),
-            Err(UsageError::MissingValue("--out".into()))
-        );
-        assert_eq!(
-            parse(&args(&["report", "--out", "a", "--out", "b"])),
-            Err(UsageError::Repeated("--out".into()))
-        );
-        assert_eq!(
-            parse(&args(&["report", "--json", "--out", "a"])).unwrap_err().to_string(),
-            "`--json` cannot be combined with `--out`"
-        );
+        for (words, msg) in [
+            (&["--jsn"][..], "unexpected argument '--jsn' found"),
+            (&["--json", "--json"], "'--json' cannot be used multiple times"),
+            (&["--out"], "a value is required for '--out <DIR>'"),
+            (&["--out", "a", "--out", "b"], "'--out <DIR>' cannot be used multiple times"),
+            (&["--json", "--out", "a"], "'--json' cannot be used with '--out <DIR>'"),
+            (&["--model", "b.toml"], "--out <DIR>"),
+        ] {
+            let e = command(words).unwrap_err();
+            assert!(e.contains(msg), "{words:?}: {e}");
+        }
     }
 }

@@ -12,42 +12,33 @@
 use carvallo::bicycle_rest::RestBicycle;
 use serde_json::json;
 
-use crate::args::{lean_deg, number, options};
+use crate::args::{finite, lean_deg};
 
-/// The usage `rest` prints for `--help` and after a usage error.
-pub const HELP: &str = "\
-Usage:
-    carvallo rest --theta DEG [--wheel-mass KG] [--json]
-                                the handlebar's rest position at a lean of DEG degrees
-                                (memoir n° 67; front wheel mass KG, 5 by default)
-";
-
-#[derive(Debug, PartialEq)]
-struct Command {
-    theta_deg: f64,
-    wheel_mass: f64,
-    json: bool,
+/// `carvallo rest`: the handlebar's rest position at a lean (memoir n° 67).
+#[derive(Clone, Debug, PartialEq, clap::Args)]
+pub struct Args {
+    /// The frame's lean θ [degrees], strictly between -90 and 90
+    #[arg(long = "theta", value_name = "DEG", value_parser = lean_deg, allow_hyphen_values = true)]
+    pub theta_deg: f64,
+    /// The front wheel's mass [kg]
+    #[arg(long, value_name = "KG", default_value_t = 5.0, value_parser = mass, allow_hyphen_values = true)]
+    pub wheel_mass: f64,
+    /// Print JSON instead of text
+    #[arg(long)]
+    pub json: bool,
 }
 
-fn parse(args: &[String]) -> Result<Command, String> {
-    let (mut theta, mut mass, mut json) = (None, None, false);
-    let words = args.get(1..).unwrap_or_default();
-    for (a, v) in options(words, &["--theta", "--wheel-mass"], &["--json"])? {
-        match a {
-            "--theta" => theta = Some(lean_deg("theta", v)?),
-            "--wheel-mass" => mass = Some(number("wheel mass", v)?),
-            _ => json = true,
-        }
+/// A mass in kg: finite and not negative.
+fn mass(v: &str) -> Result<f64, String> {
+    let x = finite(v)?;
+    if x < 0.0 {
+        return Err("must not be negative".into());
     }
-    let theta_deg: f64 = theta.ok_or("missing `--theta DEG`")?;
-    let wheel_mass = mass.unwrap_or(5.0);
-    if wheel_mass < 0.0 {
-        return Err(format!("invalid wheel mass `{wheel_mass}`: must not be negative"));
-    }
-    Ok(Command { theta_deg, wheel_mass, json })
+    Ok(x)
 }
 
-fn run(c: &Command) -> Result<String, String> {
+/// Runs `carvallo rest`: the text to print, or an error naming the bad value.
+pub fn run(c: &Args) -> Result<String, String> {
     let bike = RestBicycle::memoir().with_wheel_mass(c.wheel_mass).map_err(|e| e.to_string())?;
     let p = bike.rest_position(-c.theta_deg.to_radians()).map_err(|e| e.to_string())?;
     let deg = |x: f64| x.to_degrees();
@@ -92,48 +83,40 @@ fn run(c: &Command) -> Result<String, String> {
     Ok(s)
 }
 
-/// Runs `carvallo rest ARGS` (the argument list, the command's name first): the text to
-/// print, or an error naming the bad argument or value.
-pub fn main(args: &[String]) -> Result<String, String> {
-    parse(args).and_then(|c| run(&c))
-}
-
 #[cfg(test)]
 mod tests {
     use super::*;
 
-    use crate::args::words as args;
+    use crate::args::parse;
 
     #[test]
     fn parses_and_rejects_by_value() {
         assert_eq!(
-            parse(&args(&["rest", "--theta", "20", "--json"])),
-            Ok(Command { theta_deg: 20.0, wheel_mass: 5.0, json: true })
+            parse::<Args>(&["rest", "--theta", "20", "--json"]),
+            Ok(Args { theta_deg: 20.0, wheel_mass: 5.0, json: true })
         );
         assert_eq!(
-            parse(&args(&["rest", "--wheel-mass", "0", "--theta", "-5"])),
-            Ok(Command { theta_deg: -5.0, wheel_mass: 0.0, json: false })
+            parse::<Args>(&["rest", "--wheel-mass", "0", "--theta", "-5"]),
+            Ok(Args { theta_deg: -5.0, wheel_mass: 0.0, json: false })
         );
         for (a, msg) in [
-            (vec!["rest"], "missing `--theta DEG`"),
+            (vec!["rest"], "required arguments were not provided:\n  --theta <DEG>"),
             (
                 vec!["rest", "--theta", "90"],
-                "invalid theta `90`: must lie strictly between -90 and 90 degrees",
+                "invalid value '90' for '--theta <DEG>': must lie strictly between -90 and 90 degrees",
             ),
-            (vec!["rest", "--theta", "nan"], "invalid theta `nan`: must be finite"),
-            (vec!["rest", "--theta", "x"], "invalid theta `x`"),
+            (vec!["rest", "--theta", "nan"], "invalid value 'nan' for '--theta <DEG>': must be finite"),
+            (vec!["rest", "--theta", "x"], "invalid value 'x' for '--theta <DEG>': not a number"),
             (
                 vec!["rest", "--theta", "5", "--wheel-mass", "-1"],
-                "invalid wheel mass `-1`: must not be negative",
+                "invalid value '-1' for '--wheel-mass <KG>': must not be negative",
             ),
-            (
-                vec!["rest", "--theta", "5", "--theta", "6"],
-                "argument `--theta` given more than once",
-            ),
-            (vec!["rest", "--theta"], "missing value after `--theta`"),
-            (vec!["rest", "--lean", "5"], "unknown argument `--lean`"),
+            (vec!["rest", "--theta", "5", "--theta", "6"], "'--theta <DEG>' cannot be used multiple times"),
+            (vec!["rest", "--theta"], "a value is required for '--theta <DEG>' but none was supplied"),
+            (vec!["rest", "--lean", "5"], "unexpected argument '--lean' found"),
         ] {
-            assert_eq!(parse(&args(&a)), Err(msg.to_string()), "{a:?}");
+            let e = parse::<Args>(&a).unwrap_err();
+            assert!(e.contains(msg), "{a:?}: {e}");
         }
     }
 }

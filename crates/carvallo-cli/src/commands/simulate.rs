@@ -12,63 +12,42 @@
 use carvallo::whipple_nonlinear::WhippleNonlinear;
 use serde_json::json;
 
-use crate::args::{number, options, toml_model};
+use crate::args::{finite, toml_model};
 
-/// The usage of `accel` and `simulate`, which either prints for `--help` and after a usage
-/// error (the two commands of the nonlinear bicycle).
-pub const HELP: &str = "\
-Usage:
-    carvallo accel --model benchmark|FILE.toml --basu-mandal   (reads {\"q\": [..9], \"qd\": [..9]} on stdin)
-    carvallo simulate --model benchmark|FILE.toml --speed V --lean0 RAD --duration S
-                      [--step DT] [--every N] [--json]
-";
-
-#[derive(Debug, PartialEq)]
-struct Command {
-    model: String,
-    speed: f64,
-    lean0: f64,
-    duration: f64,
-    step: f64,
-    every: usize,
-    json: bool,
+/// `carvallo simulate`: the nonlinear bicycle integrated from upright straight running.
+#[derive(Clone, Debug, PartialEq, clap::Args)]
+pub struct Args {
+    /// The bicycle: `benchmark` or a parameter file in the anchors' TOML format
+    #[arg(long, value_name = "MODEL")]
+    pub model: String,
+    /// The initial forward speed [m/s]
+    #[arg(long, value_name = "V", value_parser = finite, allow_hyphen_values = true)]
+    pub speed: f64,
+    /// The initial lean [rad]
+    #[arg(long, value_name = "RAD", value_parser = finite, allow_hyphen_values = true)]
+    pub lean0: f64,
+    /// How long to simulate [s]
+    #[arg(long, value_name = "S", value_parser = finite, allow_hyphen_values = true)]
+    pub duration: f64,
+    /// The RK4 step [s]
+    #[arg(long, value_name = "DT", default_value_t = 0.001, value_parser = finite, allow_hyphen_values = true)]
+    pub step: f64,
+    /// Print every N-th step
+    #[arg(long, value_name = "N", default_value_t = 10, value_parser = positive)]
+    pub every: usize,
+    /// Print JSON (the samples, the energy drift and the largest contact residual) instead of text
+    #[arg(long)]
+    pub json: bool,
 }
 
-fn parse(args: &[String]) -> Result<Command, String> {
-    let mut model = None;
-    let (mut speed, mut lean0, mut duration, mut step, mut every, mut json) =
-        (None, None, None, 0.001, 10, false);
-    let valued = ["--model", "--speed", "--lean0", "--duration", "--step", "--every"];
-    for (a, v) in options(args.get(1..).unwrap_or_default(), &valued, &["--json"])? {
-        match a {
-            "--model" => model = Some(v.to_string()),
-            "--json" => json = true,
-            "--speed" => speed = Some(number("speed", v)?),
-            "--lean0" => lean0 = Some(number("lean0", v)?),
-            "--duration" => duration = Some(number("duration", v)?),
-            "--step" => step = number("step", v)?,
-            _ => {
-                every = v
-                    .parse()
-                    .ok()
-                    .filter(|n| *n > 0)
-                    .ok_or(format!("invalid every `{v}`: must be a positive integer"))?;
-            }
-        }
-    }
-    Ok(Command {
-        model: model.ok_or("missing `--model benchmark|FILE.toml`")?,
-        speed: speed.ok_or("missing `--speed V`")?,
-        lean0: lean0.ok_or("missing `--lean0 RAD`")?,
-        duration: duration.ok_or("missing `--duration S`")?,
-        step,
-        every,
-        json,
-    })
+/// A positive count.
+fn positive(v: &str) -> Result<usize, String> {
+    v.parse().ok().filter(|n| *n > 0).ok_or_else(|| "must be a positive integer".to_string())
 }
 
-fn run(cmd: &Command) -> Result<String, String> {
-    let Command { model, speed, lean0, duration, step, every, json } = cmd;
+/// Runs `carvallo simulate`: the text to print, or an error naming the bad value.
+pub fn run(cmd: &Args) -> Result<String, String> {
+    let Args { model, speed, lean0, duration, step, every, json } = cmd;
     let bike = WhippleNonlinear::new(toml_model(model)?);
     let start = bike.initial_state(*speed, *lean0).map_err(|e| e.to_string())?;
     let tr = bike.simulate(start, *duration, *step, *every).map_err(|e| e.to_string())?;
@@ -117,34 +96,29 @@ fn run(cmd: &Command) -> Result<String, String> {
     }
 }
 
-/// Runs `carvallo simulate ARGS` (the argument list, the command's name first): the text to
-/// print, or an error naming the bad argument or value.
-pub fn main(args: &[String]) -> Result<String, String> {
-    parse(args).and_then(|c| run(&c))
-}
-
 #[cfg(test)]
 mod tests {
     use super::*;
 
-    use crate::args::words as args;
+    use crate::args::parse;
 
     #[test]
     fn parses_and_rejects_by_value() {
+        let words = [
+            "simulate",
+            "--model",
+            "benchmark",
+            "--speed",
+            "5",
+            "--lean0",
+            "0.05",
+            "--duration",
+            "2",
+            "--json",
+        ];
         assert_eq!(
-            parse(&args(&[
-                "simulate",
-                "--model",
-                "benchmark",
-                "--speed",
-                "5",
-                "--lean0",
-                "0.05",
-                "--duration",
-                "2",
-                "--json"
-            ])),
-            Ok(Command {
+            parse::<Args>(&words),
+            Ok(Args {
                 model: "benchmark".into(),
                 speed: 5.0,
                 lean0: 0.05,
@@ -154,17 +128,18 @@ mod tests {
                 json: true
             })
         );
-        assert_eq!(
-            parse(&args(&["simulate", "--model", "benchmark", "--speed", "inf"])),
-            Err("invalid speed `inf`: must be finite".into())
+        let e = parse::<Args>(&["simulate", "--model", "benchmark", "--speed", "inf"]).unwrap_err();
+        assert!(
+            e.starts_with("error: invalid value 'inf' for '--speed <V>': must be finite"),
+            "{e}"
         );
-        assert_eq!(
-            parse(&args(&["simulate", "--model", "b", "--speed", "1", "--speed", "2"])),
-            Err("argument `--speed` given more than once".into())
-        );
-        assert_eq!(
-            parse(&args(&["simulate", "--model", "b", "--speed", "1", "--lean0", "0"])),
-            Err("missing `--duration S`".into())
-        );
+        let e = parse::<Args>(&["simulate", "--model", "b", "--speed", "1", "--speed", "2"])
+            .unwrap_err();
+        assert!(e.contains("'--speed <V>' cannot be used multiple times"), "{e}");
+        let e = parse::<Args>(&["simulate", "--model", "b", "--speed", "1", "--lean0", "0"])
+            .unwrap_err();
+        assert!(e.contains("--duration <S>"), "{e}");
+        let e = parse::<Args>(&[&words[..9], &["--every", "0"]].concat()).unwrap_err();
+        assert!(e.contains("invalid value '0' for '--every <N>'"), "{e}");
     }
 }

@@ -13,49 +13,37 @@ use carvallo::bicycle_straight::Constants;
 use carvallo::bicycle_turn::{Hold, LockedSteer, MAX_GAMMA};
 use serde_json::json;
 
-use crate::args::{number, options};
+use crate::args::finite;
 
-/// The usage `turn` prints for `--help` and after a usage error.
-pub const HELP: &str = "\
-Usage:
-    carvallo turn --model carvallo --gamma DEG --speed V [--json]
-                                steady turn with the handlebar held at DEG degrees, speed V [m/s]
-";
-
-#[derive(Debug, PartialEq)]
-struct Command {
-    gamma_deg: f64,
-    speed: f64,
-    json: bool,
+/// `carvallo turn`: a steady turn of Carvallo's bicycle with the handlebar held.
+#[derive(Clone, Debug, PartialEq, clap::Args)]
+pub struct Args {
+    /// The bicycle: Carvallo's (the constants of n° 117), the only one `turn` knows
+    #[arg(long, value_parser = ["carvallo"])]
+    pub model: String,
+    /// The handlebar angle γ [degrees] (Carvallo's sign: the bicycle leans to −γ)
+    #[arg(long = "gamma", value_name = "DEG", value_parser = gamma, allow_hyphen_values = true)]
+    pub gamma_deg: f64,
+    /// The rolling speed Rs [m/s]
+    #[arg(long, value_name = "V", value_parser = finite, allow_hyphen_values = true)]
+    pub speed: f64,
+    /// Print JSON instead of text
+    #[arg(long)]
+    pub json: bool,
 }
 
-fn parse(args: &[String]) -> Result<Command, String> {
-    let (mut model, mut gamma, mut speed, mut json) = (None, None, None, false);
-    let words = args.get(1..).unwrap_or_default();
-    for (a, v) in options(words, &["--model", "--gamma", "--speed"], &["--json"])? {
-        match a {
-            "--model" => model = Some(v.to_string()),
-            "--gamma" => gamma = Some(number("gamma", v)?),
-            "--speed" => speed = Some(number("speed", v)?),
-            _ => json = true,
-        }
-    }
-    match model.as_deref() {
-        Some("carvallo") => {}
-        Some(m) => return Err(format!("invalid model `{m}`: `turn` knows only `carvallo`")),
-        None => return Err("missing `--model carvallo`".into()),
-    }
-    let gamma_deg: f64 = gamma.ok_or("missing `--gamma DEG`")?;
+/// The handlebar angle in degrees: finite and strictly within ±[`MAX_GAMMA`].
+fn gamma(v: &str) -> Result<f64, String> {
+    let x = finite(v)?;
     let max = MAX_GAMMA.to_degrees();
-    if gamma_deg.abs() >= max {
-        return Err(format!(
-            "invalid gamma `{gamma_deg}`: must lie strictly between -{max:.1} and {max:.1} degrees"
-        ));
+    if x.abs() >= max {
+        return Err(format!("must lie strictly between -{max:.1} and {max:.1} degrees"));
     }
-    Ok(Command { gamma_deg, speed: speed.ok_or("missing `--speed V`")?, json })
+    Ok(x)
 }
 
-fn run(c: &Command) -> Result<String, String> {
+/// Runs `carvallo turn`: the text to print, or an error naming the bad value.
+pub fn run(c: &Args) -> Result<String, String> {
     let err = |e: carvallo::bicycle_turn::TurnError| e.to_string();
     let bike = LockedSteer::new(Constants::MEMOIR).map_err(|e| e.to_string())?;
     let t = bike.steady_turn(c.gamma_deg.to_radians(), c.speed).map_err(err)?;
@@ -108,39 +96,29 @@ fn run(c: &Command) -> Result<String, String> {
     Ok(s)
 }
 
-/// Runs `carvallo turn ARGS` (the argument list, the command's name first): the text to
-/// print, or an error naming the bad argument or value.
-pub fn main(args: &[String]) -> Result<String, String> {
-    parse(args).and_then(|c| run(&c))
-}
-
 #[cfg(test)]
 mod tests {
     use super::*;
 
-    use crate::args::words as args;
+    use crate::args::parse;
 
     #[test]
     fn parses_and_rejects_by_value() {
+        let turn = |words: &[&str]| parse::<Args>(&[&["turn"], words].concat());
         assert_eq!(
-            parse(&args(&["turn", "--model", "carvallo", "--gamma", "5", "--speed", "5.5"])),
-            Ok(Command { gamma_deg: 5.0, speed: 5.5, json: false })
+            turn(&["--model", "carvallo", "--gamma", "5", "--speed", "5.5"]),
+            Ok(Args { model: "carvallo".into(), gamma_deg: 5.0, speed: 5.5, json: false })
         );
-        assert_eq!(
-            parse(&args(&["turn", "--model", "benchmark", "--gamma", "5", "--speed", "5"])),
-            Err("invalid model `benchmark`: `turn` knows only `carvallo`".into())
-        );
-        assert_eq!(
-            parse(&args(&["turn", "--model", "carvallo", "--gamma", "x", "--speed", "5"])),
-            Err("invalid gamma `x`".into())
-        );
-        assert_eq!(
-            parse(&args(&["turn", "--model", "carvallo", "--speed", "5"])),
-            Err("missing `--gamma DEG`".into())
-        );
-        assert_eq!(
-            parse(&args(&["turn", "--json", "--json"])),
-            Err("argument `--json` given more than once".into())
-        );
+        let e = turn(&["--model", "benchmark", "--gamma", "5", "--speed", "5"]).unwrap_err();
+        assert!(e.contains("invalid value 'benchmark' for '--model <MODEL>'"), "{e}");
+        assert!(e.contains("[possible values: carvallo]"), "{e}");
+        let e = turn(&["--model", "carvallo", "--gamma", "x", "--speed", "5"]).unwrap_err();
+        assert!(e.contains("invalid value 'x' for '--gamma <DEG>': not a number"), "{e}");
+        let e = turn(&["--model", "carvallo", "--gamma", "-89", "--speed", "5"]).unwrap_err();
+        assert!(e.contains("invalid value '-89' for '--gamma <DEG>': must lie strictly"), "{e}");
+        let e = turn(&["--model", "carvallo", "--speed", "5"]).unwrap_err();
+        assert!(e.contains("--gamma <DEG>"), "{e}");
+        let e = turn(&["--json", "--json"]).unwrap_err();
+        assert!(e.contains("'--json' cannot be used multiple times"), "{e}");
     }
 }

@@ -29,49 +29,24 @@ use carvallo::whipple::Whipple;
 use crate::args::DataOptions;
 use serde_json::{json, Value};
 
-/// The usage of `window` and `eig`, which either prints for `--help` and after a usage error
-/// (they read the same models).
-pub const HELP: &str = "\
-Usage:
-    carvallo window --model benchmark|FILE.toml|FILE.txt [--rider FILE.txt] [--strict] [--json]
-    carvallo window --model carvallo|carvallo-formulas|carvallo-memoir|carvallo-quartic [--json]
-    carvallo eig --model benchmark|FILE.toml|FILE.txt [--rider FILE.txt] [--strict] --speed V
-                 [--json]
-";
-
 /// The Carvallo models (memoir n° 117–121) this command answers besides the benchmark bicycle.
 pub const CARVALLO_MODELS: [&str; 4] =
     ["carvallo-memoir", "carvallo-quartic", "carvallo-formulas", "carvallo"];
 
-#[derive(Debug, PartialEq)]
-struct Command {
-    model: String,
-    data: DataOptions,
-    json: bool,
-}
-
-fn parse(args: &[String]) -> Result<Command, String> {
-    let (mut model, mut json) = (None, false);
-    let mut data = DataOptions::default();
-    let mut it = args.iter().skip(1);
-    while let Some(arg) = it.next() {
-        if data.take(arg, &mut it)? {
-            continue;
-        }
-        match arg.as_str() {
-            "--json" if json => return Err("argument `--json` given more than once".into()),
-            "--json" => json = true,
-            "--model" if model.is_some() => {
-                return Err("argument `--model` given more than once".into())
-            }
-            "--model" => {
-                model = Some(it.next().ok_or("missing value after `--model`")?.clone());
-            }
-            _ => return Err(format!("unknown argument `{arg}`")),
-        }
-    }
-    let model = model.ok_or("missing `--model benchmark|FILE.toml`")?;
-    Ok(Command { model, data, json })
+/// `carvallo window`: the stable speed range of the linearised Carvallo–Whipple bicycle, or of
+/// Carvallo's bicycle without hands (memoir n° 117–121).
+#[derive(Clone, Debug, PartialEq, clap::Args)]
+pub struct Args {
+    /// The bicycle: `benchmark`, a parameter file (the anchors' TOML or BicycleParameters'
+    /// `name = value+/-sigma` text), or one of Carvallo's models `carvallo`,
+    /// `carvallo-formulas`, `carvallo-memoir`, `carvallo-quartic`
+    #[arg(long, value_name = "MODEL")]
+    pub model: String,
+    #[command(flatten)]
+    pub data: DataOptions,
+    /// Print JSON `{model, weave_speed, capsize_speed, stable}` instead of text
+    #[arg(long)]
+    pub json: bool,
 }
 
 /// A JSON number, `null` for an infinite speed.
@@ -83,8 +58,9 @@ fn finite(x: f64) -> Value {
     }
 }
 
-fn run(cmd: &Command) -> Result<String, String> {
-    let Command { model, data, json } = cmd;
+/// Runs `carvallo window`: the text to print, or an error naming the bad value.
+pub fn run(cmd: &Args) -> Result<String, String> {
+    let Args { model, data, json } = cmd;
     if CARVALLO_MODELS.contains(&model.as_str()) {
         if data.any() {
             return Err(format!("`--rider` and `--strict` read a bicycle file, not `{model}`"));
@@ -172,36 +148,33 @@ fn render_carvallo(model: &str, w: &Window, as_json: bool) -> Result<String, Str
     }
 }
 
-/// Runs `carvallo window ARGS` (the argument list, the command's name first): the text to
-/// print, or an error naming the bad argument or value.
-pub fn main(args: &[String]) -> Result<String, String> {
-    parse(args).and_then(|c| run(&c))
-}
-
 #[cfg(test)]
 mod tests {
     use super::*;
 
-    use crate::args::words as args;
+    use crate::args::parse;
+
+    fn main(words: &[&str]) -> Result<String, String> {
+        run(&parse::<Args>(words)?)
+    }
 
     #[test]
     fn parses_and_rejects_by_value() {
         assert_eq!(
-            parse(&args(&["window", "--model", "benchmark", "--json"])),
-            Ok(Command { model: "benchmark".into(), data: DataOptions::default(), json: true })
+            parse::<Args>(&["window", "--model", "benchmark", "--json"]),
+            Ok(Args { model: "benchmark".into(), data: DataOptions::default(), json: true })
         );
-        assert_eq!(
-            parse(&args(&["window", "--speed", "3"])),
-            Err("unknown argument `--speed`".into())
-        );
-        assert_eq!(parse(&args(&["window"])), Err("missing `--model benchmark|FILE.toml`".into()));
-        let e = main(&args(&["window", "--model", "/nonexistent/bike.toml"])).unwrap_err();
+        let e = parse::<Args>(&["window", "--speed", "3"]).unwrap_err();
+        assert!(e.starts_with("error: unexpected argument '--speed'"), "{e}");
+        let e = parse::<Args>(&["window"]).unwrap_err();
+        assert!(e.contains("--model <MODEL>"), "{e}");
+        let e = main(&["window", "--model", "/nonexistent/bike.toml"]).unwrap_err();
         assert!(e.starts_with("cannot read model file `/nonexistent/bike.toml`"), "{e}");
     }
 
     #[test]
     fn a_carvallo_model_has_its_window_in_speed_and_spin() {
-        let out = main(&args(&["window", "--model", "carvallo-memoir", "--json"])).expect("ok");
+        let out = main(&["window", "--model", "carvallo-memoir", "--json"]).expect("ok");
         let v: Value = serde_json::from_str(&out).expect("json");
         assert_eq!(v["model"], "carvallo-memoir");
         let (weave, capsize) =
