@@ -89,6 +89,26 @@ fn a_reader_that_stops_early_gets_no_panic() {
     assert_eq!(out.status.code(), Some(0), "stderr: {stderr}");
 }
 
+#[test]
+fn a_closed_standard_error_gets_no_panic() {
+    // The reading end of standard error is closed before the message is written (a broken
+    // pipe): the exit code is still 2 (a panic in `eprintln!` would be 101), for a data error
+    // and for a usage error.
+    use std::process::Stdio;
+    for args in
+        [&["eig", "--model", "no-such-model", "--speed", "1"][..], &["window", "--modle", "x"]]
+    {
+        let mut child = Command::new(env!("CARGO_BIN_EXE_carvallo"))
+            .args(args)
+            .stdout(Stdio::null())
+            .stderr(Stdio::piped())
+            .spawn()
+            .unwrap();
+        drop(child.stderr.take());
+        assert_eq!(child.wait().unwrap().code(), Some(2), "{args:?}");
+    }
+}
+
 fn scratch(name: &str) -> std::path::PathBuf {
     let dir = std::env::temp_dir().join(format!("carvallo-cli-{name}-{}", std::process::id()));
     let _ = std::fs::remove_dir_all(&dir);

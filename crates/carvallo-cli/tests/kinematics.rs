@@ -99,15 +99,30 @@ fn text_prints_the_same_numbers() {
 #[test]
 fn bad_input_names_the_value_with_exit_code_2() {
     for (args, msg) in [
-        (&["kinematics", "--theta", "90", "--gamma", "0"][..], "error: invalid value '90' for '--theta <DEG>'"),
-        (&["kinematics", "--theta", "-95", "--gamma", "0"][..], "error: invalid value '-95' for '--theta <DEG>'"),
+        (
+            &["kinematics", "--theta", "90", "--gamma", "0"][..],
+            "error: invalid value '90' for '--theta <DEG>'",
+        ),
+        (
+            &["kinematics", "--theta", "-95", "--gamma", "0"][..],
+            "error: invalid value '-95' for '--theta <DEG>'",
+        ),
         (
             &["kinematics", "--theta", "5", "--gamma", "inf"][..],
             "error: invalid value 'inf' for '--gamma <DEG>': must be finite",
         ),
-        (&["kinematics", "--theta", "NaN", "--gamma", "1"][..], "error: invalid value 'NaN' for '--theta <DEG>'"),
-        (&["kinematics", "--theta", "five", "--gamma", "1"][..], "error: invalid value 'five' for '--theta <DEG>'"),
-        (&["kinematics", "--theta", "5"][..], "error: the following required arguments were not provided:\n  --gamma <DEG>"),
+        (
+            &["kinematics", "--theta", "NaN", "--gamma", "1"][..],
+            "error: invalid value 'NaN' for '--theta <DEG>'",
+        ),
+        (
+            &["kinematics", "--theta", "five", "--gamma", "1"][..],
+            "error: invalid value 'five' for '--theta <DEG>'",
+        ),
+        (
+            &["kinematics", "--theta", "5"][..],
+            "error: the following required arguments were not provided:\n  --gamma <DEG>",
+        ),
         (
             &["kinematics", "--theta", "80", "--gamma", "90"][..],
             "error: at theta `80` deg, gamma `90` deg: no front contact",

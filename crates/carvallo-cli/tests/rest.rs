@@ -50,8 +50,14 @@ fn a_massless_front_wheel_rests_at_the_lowest_frame() {
 fn bad_input_names_the_value_with_exit_code_2() {
     for (args, msg) in [
         (&["rest", "--theta", "95"][..], "error: invalid value '95' for '--theta <DEG>'"),
-        (&["rest", "--theta", "inf"][..], "error: invalid value 'inf' for '--theta <DEG>': must be finite"),
-        (&["rest", "--theta", "5", "--wheel-mass", "-2"][..], "error: invalid value '-2' for '--wheel-mass <KG>': must not be negative"),
+        (
+            &["rest", "--theta", "inf"][..],
+            "error: invalid value 'inf' for '--theta <DEG>': must be finite",
+        ),
+        (
+            &["rest", "--theta", "5", "--wheel-mass", "-2"][..],
+            "error: invalid value '-2' for '--wheel-mass <KG>': must not be negative",
+        ),
         (&["rest", "--tilt", "5"][..], "error: unexpected argument '--tilt' found"),
     ] {
         let (code, out, err) = carvallo(args);

@@ -47,7 +47,10 @@ fn bad_input_exits_2_naming_the_value() {
         (vec!["--gamma", "5", "--speed", "fast"], "invalid value 'fast' for '--speed <V>'"),
         (vec!["--gamma", "5", "--speed", "-2"], "invalid speed -2.0: must not be negative"),
         (vec!["--gamma", "30", "--speed", "40"], "no steady turn"),
-        (vec!["--gamma", "5"], "the following required arguments were not provided:\n  --speed <V>"),
+        (
+            vec!["--gamma", "5"],
+            "the following required arguments were not provided:\n  --speed <V>",
+        ),
     ] {
         let mut all = vec!["turn", "--model", "carvallo"];
         all.extend(args);
