@@ -203,6 +203,18 @@ fn progress_bar(counter: &AtomicUsize, total: usize, done: &AtomicBool) {
     bar.finish_and_clear();
 }
 
+/// An `indicatif` spinner on standard error for `carvallo bench` (drawn only when standard
+/// error is a terminal), with the elapsed time and the part being measured.
+fn bench_spinner() -> indicatif::ProgressBar {
+    let spinner =
+        indicatif::ProgressBar::with_draw_target(None, indicatif::ProgressDrawTarget::stderr());
+    let style = indicatif::ProgressStyle::with_template("{spinner} bench, {elapsed}: {msg}")
+        .unwrap_or_else(|_| indicatif::ProgressStyle::default_spinner());
+    spinner.set_style(style);
+    spinner.enable_steady_tick(Duration::from_millis(120));
+    spinner
+}
+
 fn range(r: Option<(f64, f64)>) -> Value {
     r.map_or(Value::Null, |(a, b)| json!([a, b]))
 }
@@ -210,8 +222,12 @@ fn range(r: Option<(f64, f64)>) -> Value {
 /// Runs `carvallo bench`: the tables to print.
 pub fn bench(args: &BenchArgs) -> Result<String, String> {
     let cfg = if args.quick { crate::bench::Config::quick() } else { crate::bench::Config::full() };
+    let spinner = bench_spinner();
+    spinner.set_message("evaluators, windows, eigenvalues, sweeps");
     let mut report = crate::bench::run(&cfg);
+    spinner.set_message("the C peer (cc -O3)");
     crate::bench::extend(&cfg, &mut report);
+    spinner.finish_and_clear();
     if args.json {
         serde_json::to_string_pretty(&report).map_err(|e| e.to_string())
     } else {
