@@ -118,9 +118,9 @@ mod tests {
         // M B_lower = I with the published benchmark M (Meijaard et al. 2007, eq. 5.3).
         let m = [[80.81722, 2.31941332208709], [2.31941332208709, 0.29784188199686]];
         let b = |i: usize, j: usize| v["B"][i][j].as_f64().unwrap();
-        for i in 0..2 {
+        for (i, row) in m.iter().enumerate() {
             for j in 0..2 {
-                let p = m[i][0] * b(2, j) + m[i][1] * b(3, j);
+                let p = row[0] * b(2, j) + row[1] * b(3, j);
                 assert!((p - f64::from(u8::from(i == j))).abs() < 1e-12, "{i}{j}: {p}");
             }
         }
