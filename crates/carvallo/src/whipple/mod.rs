@@ -26,6 +26,7 @@ mod params;
 pub mod certified;
 /// Friction at the steering pivot (memoir n° 123): viscous steer damping and dry friction.
 pub mod friction;
+pub mod modes;
 pub mod nonlinear;
 pub mod parameter_text;
 pub mod plant;
