@@ -22,6 +22,9 @@ use crate::numerics::eigen::Eigenvalue;
 /// The largest speed step of the continuation [m/s].
 pub const STEP: f64 = 0.01;
 
+/// The farthest a requested speed may lie from the reference speed [m/s] (20 000 steps).
+pub const MAX_RANGE: f64 = 200.0;
+
 /// Which mode an eigenvalue belongs to.
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
 pub enum ModeLabel {
@@ -145,13 +148,17 @@ impl Whipple {
     }
 
     /// The four modes at each of `speeds`, labelled by continuation from the reference speed;
-    /// `None` if there is no reference speed or an eigenvalue solve fails to converge.
+    /// `None` if there is no reference speed, a speed lies more than [`MAX_RANGE`] from it (or
+    /// is not finite) or an eigenvalue solve fails to converge.
     pub fn modes(&self, speeds: &[f64]) -> Option<Vec<[Mode; 4]>> {
         let (v0, ev0) = self.reference()?;
         let (m, g) = (self.matrices(), self.params().value("g"));
         speeds
             .iter()
             .map(|&v| {
+                if (v - v0).abs().partial_cmp(&MAX_RANGE) != Some(std::cmp::Ordering::Less) {
+                    return None;
+                }
                 let n = ((v - v0).abs() / STEP).ceil().max(1.0) as usize;
                 let mut ev = ev0;
                 for k in 1..=n {
@@ -238,5 +245,7 @@ mod tests {
         let w = m5.iter().find(|m| m.label == ModeLabel::Weave).unwrap();
         assert!(w.steer_lean_ratio() > 0.0 && w.steer_lean_ratio().is_finite());
         assert!(w.phase_deg().abs() <= 180.0);
+        assert!(bike.modes(&[5.0, 1e308]).is_none());
+        assert!(bike.modes(&[f64::NAN]).is_none());
     }
 }
