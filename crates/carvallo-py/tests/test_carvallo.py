@@ -261,3 +261,22 @@ def test_state_space_matches_the_cli_and_the_published_matrices(cli):
     np.testing.assert_allclose(a[1][2:], lower, rtol=0, atol=1e-12 * np.abs(lower).max())
     with pytest.raises(carvallo.ParameterError, match="invalid speed NaN"):
         carvallo.state_space(p, [1.0, float("nan")])
+
+
+def test_modes_are_eigenvectors_with_the_labels_of_the_cli(cli):
+    p = carvallo.benchmark()
+    speeds = [0.5, 5.0]
+    labels, ev, vec = carvallo.modes(p, speeds)
+    assert labels == ["weave", "weave", "capsize", "caster"]
+    a, _ = carvallo.state_space(p, speeds)
+    for k in range(2):
+        for i in range(4):
+            r = a[k] @ vec[k, i] - ev[k, i] * vec[k, i]
+            assert np.abs(r).max() < 1e-12 * max(1.0, np.abs(a[k]).max())
+    c = cli("eig", "--model", "benchmark", "--speed", "5", "--json")
+    assert [m["label"] for m in c["modes"]] == labels
+    assert [complex(m["re"], m["im"]) for m in c["modes"]] == list(ev[1])
+    # Weave complex above 0.684 m/s, two positive real roots below (Meijaard et al. 2007).
+    assert np.all(ev[1, :2].imag != 0) and np.all(ev[0, :2].imag == 0) and np.all(ev[0, :2].real > 0)
+    with pytest.raises(carvallo.ParameterError, match="cannot be followed"):
+        carvallo.modes(p, [1e308])
