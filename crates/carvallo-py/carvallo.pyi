@@ -47,6 +47,16 @@ def matrices(params: Params) -> dict[str, npt.NDArray[np.float64]]:
 def state_matrix(params: Params, speed: Speeds) -> npt.NDArray[np.float64]:
     """The 4x4 state matrix of (lean, steer, lean rate, steer rate); shape (n, 4, 4) for n speeds."""
 
+def state_space(
+    params: Params, speeds: Speeds
+) -> tuple[npt.NDArray[np.float64], npt.NDArray[np.float64]]:
+    """(A, B) with roll and steer torque as inputs, shapes (n, 4, 4) and (n, 4, 2); C = I, D = 0."""
+
+def modes(
+    params: Params, speeds: Speeds
+) -> tuple[list[str], npt.NDArray[np.complex128], npt.NDArray[np.complex128]]:
+    """(labels, eigenvalues (n, 4), unit eigenvectors (n, 4, 4)); labels weave, weave, capsize, caster by continuation."""
+
 def eigenvalues(params: Params, speeds: Speeds) -> npt.NDArray[np.complex128]:
     """Eigenvalues at each speed, shape (n, 4), sorted by real then imaginary part."""
 

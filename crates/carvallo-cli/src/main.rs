@@ -22,7 +22,7 @@ mod perf;
 mod report_dir;
 mod report_html;
 
-use commands::{accel, eig, kinematics, report, rest, simulate, turn, window};
+use commands::{accel, eig, kinematics, report, rest, simulate, statespace, turn, window};
 
 /// carvallo: E. Carvallo's memoir (1897) on the hoop, unicycle and bicycle, re-derived and
 /// checked
@@ -44,6 +44,8 @@ enum Command {
     Window(window::Args),
     /// The eigenvalues of the linearised bicycle at speed V [m/s]
     Eig(eig::Args),
+    /// The state space (A, B) of the linearised bicycle with roll and steer torque as inputs
+    Statespace(statespace::Args),
     /// Time per evaluation beside the error against 256 bits
     Bench(perf::BenchArgs),
     /// The stability windows of many designs (a grid or random designs around the model), in
@@ -75,6 +77,7 @@ impl Command {
             Command::Report(_) => "report",
             Command::Window(_) => "window",
             Command::Eig(_) => "eig",
+            Command::Statespace(_) => "statespace",
             Command::Bench(_) => "bench",
             Command::Sweep(_) => "sweep",
             Command::Accel(_) => "accel",
@@ -93,6 +96,7 @@ impl Command {
             Command::Report(a) => return finish_report(report::run(a)),
             Command::Window(a) => text(window::run(a)),
             Command::Eig(a) => text(eig::run(a)),
+            Command::Statespace(a) => text(statespace::run(a)),
             Command::Bench(a) => text(perf::bench(a)),
             Command::Sweep(a) => text(perf::sweep(a)),
             Command::Accel(a) => text(accel::run(a)),

@@ -137,10 +137,19 @@ fn every_command_keeps_the_exit_code_contract() {
                     push(&mut args, "--method", rng.pick(&["eigen", "hurwitz", "qr"]).into());
                 }
             }
-            2 => {
+            2 if k % 20 == 2 => {
                 args.push("eig".into());
                 push(&mut args, "--model", model(&mut rng));
                 push(&mut args, "--speed", rng.pick(NUMBERS).into());
+            }
+            2 => {
+                args.push("statespace".into());
+                push(&mut args, "--model", model(&mut rng));
+                let speeds = format!("{},{}", rng.pick(NUMBERS), rng.pick(NUMBERS));
+                push(&mut args, "--speed", speeds);
+                if rng.next().is_multiple_of(2) {
+                    args.push("--json".into());
+                }
             }
             3 => {
                 args.push("window".into());

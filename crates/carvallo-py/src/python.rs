@@ -221,6 +221,59 @@ fn state_matrix<'py>(
     }
 }
 
+/// The state space with roll and steer torque as inputs at each speed: `(A, B)` of shapes
+/// (n, 4, 4) and (n, 4, 2), x = (lean, steer, lean rate, steer rate), u = (T_phi, T_delta),
+/// C = I, D = 0 (as `carvallo statespace`).
+#[pyfunction]
+fn state_space<'py>(
+    py: Python<'py>,
+    params: &Bound<'py, PyAny>,
+    speeds: &Bound<'py, PyAny>,
+) -> PyResult<(Bound<'py, PyAny>, Bound<'py, PyAny>)> {
+    let bike = Whipple::new(params_of(params)?);
+    let speeds = speeds_of(speeds)?;
+    let spaces = bike.state_spaces(&speeds);
+    let a: Vec<f64> = spaces.iter().flat_map(|s| s.a_rows().into_iter().flatten()).collect();
+    let b: Vec<f64> = spaces.iter().flat_map(|s| s.b_rows().into_iter().flatten()).collect();
+    let n = speeds.len();
+    Ok((
+        PyArray1::from_vec(py, a).reshape([n, 4, 4])?.into_any(),
+        PyArray1::from_vec(py, b).reshape([n, 4, 2])?.into_any(),
+    ))
+}
+
+/// The modes at each speed, labelled by continuation in speed (as `carvallo eig --json`):
+/// `(labels, eigenvalues, vectors)` with the four labels ("weave", "weave", "capsize",
+/// "caster"), the eigenvalues (n, 4) complex and the unit eigenvectors (n, 4, 4) complex,
+/// `vectors[k, i]` the state (lean, steer, lean rate, steer rate) of mode `i`.
+#[pyfunction]
+fn modes<'py>(
+    py: Python<'py>,
+    params: &Bound<'py, PyAny>,
+    speeds: &Bound<'py, PyAny>,
+) -> PyResult<(Vec<&'static str>, Bound<'py, PyAny>, Bound<'py, PyAny>)> {
+    let bike = Whipple::new(params_of(params)?);
+    let speeds = speeds_of(speeds)?;
+    let all = bike
+        .modes(&speeds)
+        .ok_or_else(|| err("the modes cannot be followed to these speeds (more than 200 m/s from the reference speed, or no speed with one complex pair and two real roots)"))?;
+    let labels = all.first().map_or(Vec::new(), |m| m.iter().map(|x| x.label.name()).collect());
+    let ev: Vec<Complex64> = all
+        .iter()
+        .flat_map(|m| m.iter().map(|x| Complex64::new(x.eigenvalue.re, x.eigenvalue.im)))
+        .collect();
+    let vecs: Vec<Complex64> = all
+        .iter()
+        .flat_map(|m| m.iter().flat_map(|x| x.vector.iter().map(|c| Complex64::new(c.re, c.im))))
+        .collect();
+    let n = speeds.len();
+    Ok((
+        labels,
+        PyArray1::from_vec(py, ev).reshape([n, 4])?.into_any(),
+        PyArray1::from_vec(py, vecs).reshape([n, 4, 4])?.into_any(),
+    ))
+}
+
 /// The eigenvalues at each speed, shape (n, 4) complex, sorted by real then imaginary part (as
 /// `carvallo eig`).
 #[pyfunction]
@@ -492,6 +545,8 @@ fn carvallo_module(m: &Bound<'_, PyModule>) -> PyResult<()> {
     m.add_function(wrap_pyfunction!(parse_parameters, m)?)?;
     m.add_function(wrap_pyfunction!(matrices, m)?)?;
     m.add_function(wrap_pyfunction!(state_matrix, m)?)?;
+    m.add_function(wrap_pyfunction!(state_space, m)?)?;
+    m.add_function(wrap_pyfunction!(modes, m)?)?;
     m.add_function(wrap_pyfunction!(eigenvalues, m)?)?;
     m.add_function(wrap_pyfunction!(window, m)?)?;
     m.add_function(wrap_pyfunction!(windows, m)?)?;

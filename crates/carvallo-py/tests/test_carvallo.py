@@ -237,3 +237,46 @@ def test_bicycleparameters_files_riders_and_strict(cli, root):
         carvallo.load_parameters(bike, rider=bike)
     with pytest.raises(carvallo.ParameterError, match=r"cannot read rider file `/nonexistent`"):
         carvallo.load_parameters(bike, rider="/nonexistent")
+
+
+def test_state_space_matches_the_cli_and_the_published_matrices(cli):
+    p = carvallo.benchmark()
+    a, b = carvallo.state_space(p, [0.0, 5.0, 7.5])
+    assert a.shape == (3, 4, 4) and b.shape == (3, 4, 2)
+    c = cli("statespace", "--model", "benchmark", "--speed", "0,5,7.5", "--json")
+    for k in range(3):
+        np.testing.assert_array_equal(a[k], np.array(c[k]["A"]))
+        np.testing.assert_array_equal(b[k], np.array(c[k]["B"]))
+        np.testing.assert_array_equal(a[k], carvallo.state_matrix(p, c[k]["speed"]))
+    # B = [0; M^-1] with the matrices of Meijaard et al. (2007), eq. (5.3)-(5.6), as printed.
+    m = np.array([[80.81722, 2.31941332208709], [2.31941332208709, 0.29784188199686]])
+    c1 = np.array([[0.0, 33.86641391492494], [-0.85035641456978, 1.68540397397560]])
+    k0 = np.array([[-80.95, -2.59951685249872], [-2.59951685249872, -0.80329488458618]])
+    k2 = np.array([[0.0, 76.59734589573222], [0.0, 2.65431523794604]])
+    minv = np.linalg.inv(m)
+    v = 5.0
+    np.testing.assert_allclose(b[1][2:], minv, rtol=1e-12)
+    assert np.all(b[1][:2] == 0.0)
+    lower = np.hstack([-minv @ (9.81 * k0 + v * v * k2), -v * minv @ c1])
+    np.testing.assert_allclose(a[1][2:], lower, rtol=0, atol=1e-12 * np.abs(lower).max())
+    with pytest.raises(carvallo.ParameterError, match="invalid speed NaN"):
+        carvallo.state_space(p, [1.0, float("nan")])
+
+
+def test_modes_are_eigenvectors_with_the_labels_of_the_cli(cli):
+    p = carvallo.benchmark()
+    speeds = [0.5, 5.0]
+    labels, ev, vec = carvallo.modes(p, speeds)
+    assert labels == ["weave", "weave", "capsize", "caster"]
+    a, _ = carvallo.state_space(p, speeds)
+    for k in range(2):
+        for i in range(4):
+            r = a[k] @ vec[k, i] - ev[k, i] * vec[k, i]
+            assert np.abs(r).max() < 1e-12 * max(1.0, np.abs(a[k]).max())
+    c = cli("eig", "--model", "benchmark", "--speed", "5", "--json")
+    assert [m["label"] for m in c["modes"]] == labels
+    assert [complex(m["re"], m["im"]) for m in c["modes"]] == list(ev[1])
+    # Weave complex above 0.684 m/s, two positive real roots below (Meijaard et al. 2007).
+    assert np.all(ev[1, :2].imag != 0) and np.all(ev[0, :2].imag == 0) and np.all(ev[0, :2].real > 0)
+    with pytest.raises(carvallo.ParameterError, match="cannot be followed"):
+        carvallo.modes(p, [1e308])

@@ -1,11 +1,16 @@
 //! `carvallo eig --model benchmark|FILE.toml --speed V [--json]`: the four eigenvalues of the
 //! linearised Carvallo–Whipple bicycle at speed V, as JSON
-//! `{ "speed", "eigenvalues": [{"re", "im"}, ...] }`.
+//! `{ "speed", "eigenvalues": [{"re", "im"}, ...], "modes": [...] }`; each mode is
+//! `{"label", "re", "im", "vector", "steer_lean_ratio", "phase_deg"}` with the label weave,
+//! capsize or caster found by continuation in speed ([`carvallo::whipple::modes`]), the unit
+//! eigenvector `[{"re", "im"}, ...]` of (lean, steer, lean rate, steer rate); `modes` is empty
+//! if the labels cannot be followed (no speed with one complex pair and two real roots).
 //!
 //! The parameter file is read as for `window` ([`crate::args::bicycle`], with `--rider FILE` and `--strict`). Unknown or missing
 //! arguments, a speed that is not a finite number and an unreadable or invalid parameter file
 //! are usage errors: a message naming the value, exit code 2.
 
+use carvallo::whipple::modes::Mode;
 use carvallo::whipple::Whipple;
 
 use crate::args::DataOptions;
@@ -23,18 +28,37 @@ pub struct Args {
     /// The forward speed [m/s]
     #[arg(long, value_name = "V", value_parser = crate::args::finite, allow_hyphen_values = true)]
     pub speed: f64,
-    /// Print JSON `{speed, eigenvalues: [{re, im}, ...]}` instead of text
+    /// Print JSON `{speed, eigenvalues: [{re, im}, ...], modes: [...]}` instead of text
     #[arg(long)]
     pub json: bool,
+}
+
+/// One mode: its label, eigenvalue and unit eigenvector (lean, steer, lean rate, steer rate),
+/// with the steer-to-lean amplitude ratio and phase.
+fn mode_json(m: &Mode) -> Value {
+    let c = |z: &nalgebra::Complex<f64>| json!({ "re": z.re, "im": z.im });
+    json!({
+        "label": m.label.name(),
+        "re": m.eigenvalue.re,
+        "im": m.eigenvalue.im,
+        "vector": m.vector.iter().map(c).collect::<Vec<_>>(),
+        "steer_lean_ratio": m.steer_lean_ratio(),
+        "phase_deg": m.phase_deg(),
+    })
 }
 
 /// Runs `carvallo eig`: the text to print, or an error naming the bad value.
 pub fn run(cmd: &Args) -> Result<String, String> {
     let Args { model, data, speed, json } = cmd;
-    let ev = Whipple::new(crate::args::bicycle(model, data)?).eigenvalues(*speed);
+    let bike = Whipple::new(crate::args::bicycle(model, data)?);
+    let ev = bike.eigenvalues(*speed);
     if *json {
         let list: Vec<Value> = ev.iter().map(|e| json!({ "re": e.re, "im": e.im })).collect();
-        let v = json!({ "speed": speed, "eigenvalues": list });
+        let modes: Vec<Value> = bike
+            .modes(&[*speed])
+            .and_then(|m| m.into_iter().next())
+            .map_or(Vec::new(), |m| m.iter().map(mode_json).collect());
+        let v = json!({ "speed": speed, "eigenvalues": list, "modes": modes });
         Ok(serde_json::to_string_pretty(&v).map_err(|e| e.to_string())?)
     } else {
         let mut s = format!("eigenvalues at {speed} m/s:\n");
@@ -73,5 +97,31 @@ mod tests {
         );
         let e = parse::<Args>(&["eig", "--model", "benchmark"]).unwrap_err();
         assert!(e.contains("--speed <V>"), "{e}");
+    }
+
+    #[test]
+    fn json_keeps_its_keys_and_adds_labelled_modes() {
+        let a = Args {
+            model: "benchmark".into(),
+            data: DataOptions::default(),
+            speed: 5.0,
+            json: true,
+        };
+        let v: Value = serde_json::from_str(&run(&a).unwrap()).unwrap();
+        assert_eq!(v["speed"], 5.0);
+        assert_eq!(v["eigenvalues"].as_array().map(Vec::len), Some(4));
+        let modes = v["modes"].as_array().unwrap();
+        let labels: Vec<&str> = modes.iter().filter_map(|m| m["label"].as_str()).collect();
+        assert_eq!(labels, ["weave", "weave", "capsize", "caster"]);
+        // Caster at 5 m/s: -14.0784 (Meijaard et al. 2007, Table 2); every mode's eigenvalue
+        // is one of the listed eigenvalues.
+        assert!((modes[3]["re"].as_f64().unwrap() + 14.078389692798247).abs() < 1e-11);
+        for m in modes {
+            assert!(v["eigenvalues"].as_array().unwrap().iter().any(|e| {
+                (e["re"].as_f64().unwrap() - m["re"].as_f64().unwrap()).abs() < 1e-12
+                    && (e["im"].as_f64().unwrap() - m["im"].as_f64().unwrap()).abs() < 1e-12
+            }));
+            assert_eq!(m["vector"].as_array().map(Vec::len), Some(4));
+        }
     }
 }

@@ -9,5 +9,6 @@ pub mod kinematics;
 pub mod report;
 pub mod rest;
 pub mod simulate;
+pub mod statespace;
 pub mod turn;
 pub mod window;

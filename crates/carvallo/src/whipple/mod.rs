@@ -15,7 +15,8 @@
 //! ([`Whipple`]), the sweeps over designs ([`sweep`]). The parameters, matrices and model are
 //! re-exported here, at the path they had when they were one file. Beside them:
 //! [`nonlinear`] (the full nonlinear equations, memoir Part II), [`uncertainty`] (bands from
-//! parameter uncertainties) and [`parameter_text`] (BicycleParameters' text format).
+//! parameter uncertainties), [`parameter_text`] (BicycleParameters' text format) and [`plant`]
+//! (the state space with roll and steer torques as inputs).
 
 mod design;
 mod matrices;
@@ -25,8 +26,10 @@ mod params;
 pub mod certified;
 /// Friction at the steering pivot (memoir n° 123): viscous steer damping and dry friction.
 pub mod friction;
+pub mod modes;
 pub mod nonlinear;
 pub mod parameter_text;
+pub mod plant;
 pub mod stability;
 pub mod sweep;
 pub mod uncertainty;
