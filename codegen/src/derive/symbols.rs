@@ -402,6 +402,32 @@ pub const SYMBOLS: &[&str] = &[
     // Appended: n° 83 (bicycle_steady).
     "ddeta",
     "ddnu",
+    // Appended: the transfer functions' check (whipple, generic matrix entries).
+    "gm11",
+    "gm12",
+    "gm21",
+    "gm22",
+    "gc11",
+    "gc12",
+    "gc21",
+    "gc22",
+    "gk11",
+    "gk12",
+    "gk21",
+    "gk22",
+    "gl11",
+    "gl12",
+    "gl21",
+    "gl22",
+    // Appended: the feedback gains of the closed loop (whipple).
+    "k_roll_roll",
+    "k_roll_steer",
+    "k_roll_roll_rate",
+    "k_roll_steer_rate",
+    "k_steer_roll",
+    "k_steer_steer",
+    "k_steer_roll_rate",
+    "k_steer_steer_rate",
 ];
 
 /// Creates every symbol of [`SYMBOLS`] in order (a symbol that exists already keeps its place).

@@ -3,7 +3,8 @@
 //! check of the derivation holds, and the emitted IR evaluated at the benchmark parameters
 //! reproduces the published M, C1, K0, K2 (relative 1e-13; exact zeros absolute 1e-13) and the
 //! characteristic polynomial equals det(M s^2 + v C1 s + g K0 + v^2 K2) computed from the
-//! emitted matrices (relative 1e-12 at fixed (s, v) points).
+//! emitted matrices (relative 1e-12 at fixed (s, v) points), and so do the transfer
+//! numerators (N P = det(P) I) and the closed-loop polynomial with gains.
 
 #![allow(clippy::needless_range_loop)]
 
@@ -70,7 +71,12 @@ fn whipple_linearisation_body() {
     let text = anchors();
     let params: Vec<f64> = whipple::PARAMS.iter().map(|k| scalar(&text, k)).collect();
     let names: Vec<&str> = prog.outputs.iter().map(|o| o.name.as_str()).collect();
-    let out = prog.eval_f64(&params, &[0.0]).expect("eval");
+    // The inputs: the speed, then the eight feedback gains (zero unless given).
+    let inputs = |v: f64, gains: [f64; 8]| -> Vec<f64> {
+        assert_eq!(prog.inputs.len(), 9, "v and the gains");
+        std::iter::once(v).chain(gains).collect()
+    };
+    let out = prog.eval_f64(&params, &inputs(0.0, [0.0; 8])).expect("eval");
     let get = |n: &str| out[names.iter().position(|x| *x == n).expect("output")];
     for (key, prefix) in [("M", "m"), ("C1", "c1_"), ("K0", "k0_"), ("K2", "k2_")] {
         let want = matrix(&text, key);
@@ -87,7 +93,7 @@ fn whipple_linearisation_body() {
     // Characteristic polynomial against the determinant of the emitted matrices.
     let g = scalar(&text, "g");
     for (s, v) in [(1.3, 0.0), (-0.7, 2.5), (3.1, 5.0), (0.25, 7.75)] {
-        let o = prog.eval_f64(&params, &[v]).expect("eval");
+        let o = prog.eval_f64(&params, &inputs(v, [0.0; 8])).expect("eval");
         let at = |n: &str| o[names.iter().position(|x| *x == n).expect("output")];
         let e = |r: usize, c: usize| {
             let rc = format!("{}{}", r + 1, c + 1);
@@ -100,6 +106,40 @@ fn whipple_linearisation_body() {
         let poly: f64 = (0..5).map(|k| at(&format!("a{k}")) * s.powi(k)).sum();
         let scale: f64 = (0..5).map(|k| (at(&format!("a{k}")) * s.powi(k)).abs()).sum();
         assert!((poly - det).abs() <= 1e-12 * scale, "char poly at s={s}, v={v}: {poly} vs {det}");
+        // Transfer numerators: N P = det(P) I with N the emitted adjugate (entry by entry).
+        let sig = ["roll", "steer"];
+        let n = |i: usize, j: usize| -> f64 {
+            (0..3).map(|k| at(&format!("tf_{}_{}_{k}", sig[i], sig[j])) * s.powi(k as i32)).sum()
+        };
+        for i in 0..2 {
+            for j in 0..2 {
+                let np = n(i, 0) * e(0, j) + n(i, 1) * e(1, j);
+                let want = if i == j { det } else { 0.0 };
+                assert!(
+                    (np - want).abs() <= 1e-12 * scale,
+                    "N P [{i}][{j}] at s={s}, v={v}: {np} vs {want}"
+                );
+            }
+        }
+        // Closed loop with gains: the emitted coefficients against det(P + Kd s + Kp).
+        let k = [3.0 * s, -1.5, 0.7 * v, 2.0, -0.4, 11.0, 25.0 * s, -0.9];
+        let oc = prog.eval_f64(&params, &inputs(v, k)).expect("eval");
+        let atc = |n: &str| oc[names.iter().position(|x| *x == n).expect("output")];
+        let ec = |r: usize, c: usize| e(r, c) + k[4 * r + c] + k[4 * r + 2 + c] * s;
+        let det_cl = ec(0, 0) * ec(1, 1) - ec(0, 1) * ec(1, 0);
+        let mut poly_cl = 0.0;
+        let mut scale_cl = 0.0;
+        for kk in 0..5 {
+            for j in 0..=(4 - kk) {
+                let term = atc(&format!("cl_a{kk}_{j}")) * v.powi(j as i32) * s.powi(kk as i32);
+                poly_cl += term;
+                scale_cl += term.abs();
+            }
+        }
+        assert!(
+            (poly_cl - det_cl).abs() <= 1e-12 * scale_cl,
+            "closed loop at s={s}, v={v}: {poly_cl} vs {det_cl}"
+        );
     }
     let ops = prog.op_count();
     eprintln!("whipple IR: {} ops", ops.total);

@@ -305,7 +305,9 @@ pub fn dynamics_with(prm: &dyn Fn(&str) -> Atom) -> Dynamics {
             forces[r] += mass * &dot(&a, &pv, n) + dot(&hdot, &pw, n);
         }
     }
-    let forces = forces.map(|f| subst(&trunc(&f, n), "eps", &one).expand());
+    // Every term is a scalar product truncated at order n (`dot`), so the sum is too: setting
+    // ε = 1 needs no second truncation (which would expand the whole sum once more).
+    let forces = forces.map(|f| subst(&f, "eps", &one).expand());
     let coef = |f: &Atom, x: &str, div: &Atom| {
         let s = p(x).get_symbol().expect("symbol");
         (f.derivative(s) / div).expand()

@@ -16,6 +16,12 @@
 //! $\det(M s^2 + v C_1 s + g K_0 + v^2 K_2) = a_4 s^4 + a_3 s^3 + a_2 s^2 + a_1 s + a_0$, written
 //! as polynomials in the input $v$ whose coefficients are products of the matrix entries (so
 //! that the emission's common-subexpression sharing reuses the entries). No matrix is inverted.
+//! The transfer functions from the roll and steer torques to lean and steer share that
+//! denominator; their numerators `tf_{output}_{input}_{k}` (the adjugate of the same matrix
+//! polynomial, coefficients of $s^k$, [`tf_numerators`]) are outputs too, and so are the
+//! coefficients `cl_a{k}_{j}` of $v^j s^k$ in the characteristic polynomial of the closed loop
+//! of a state feedback $u = -Kx$ ([`closed_loop_poly`]), whose eight gains ([`GAINS`]) are
+//! inputs of the model beside $v$.
 //!
 //! [`carvallo`] derives the inertial part of the same equations a second way, by Carvallo's
 //! modified Lagrange equations (memoir n° 72) with the kinematics at second order, and the two
@@ -40,8 +46,19 @@ pub const PARAMS: [&str; 26] = [
     "w", "c", "lambda", "g", "rR", "mR", "IRxx", "IRyy", "xB", "zB", "mB", "IBxx", "IByy", "IBzz",
     "IBxz", "xH", "zH", "mH", "IHxx", "IHyy", "IHzz", "IHxz", "rF", "mF", "IFxx", "IFyy",
 ];
-/// Input names, in order: the forward speed.
-pub const INPUTS: [&str; 1] = ["v"];
+/// Input names, in order: the forward speed, then the feedback gains ([`GAINS`]), which only
+/// the closed-loop coefficients `cl_a{k}_{j}` read.
+pub const INPUTS: [&str; 9] = [
+    "v",
+    "k_roll_roll",
+    "k_roll_steer",
+    "k_roll_roll_rate",
+    "k_roll_steer_rate",
+    "k_steer_roll",
+    "k_steer_steer",
+    "k_steer_roll_rate",
+    "k_steer_steer_rate",
+];
 
 /// Brings an expression in the stand-ins $\sin\lambda$, $\cos\lambda$ to the reduced normal form
 /// (one fraction, numerator reduced with $\sin^2\lambda + \cos^2\lambda = 1$).
@@ -177,16 +194,29 @@ pub fn matrices(checks: &mut Vec<Check>) -> Matrices {
         [[reduce(&m[0][0]), reduce(&m[0][1])], [reduce(&m[1][0]), reduce(&m[1][1])]]
     };
     let mats = Matrices { m: red(&dy.m), c1: red(&dy.c1), k0: red(&st.k0), k2: red(&dy.k2) };
+    // M, C1, K2 are the coefficients of the accelerations, rates and angles in the forces
+    // (divided by 1, v, v^2): the forces are exactly M q'' + v C1 q' + v^2 K2 q when rebuilding
+    // them from those coefficients leaves nothing (an exact expansion, no trigonometric
+    // reduction needed) and no coefficient contains v (else another power of v was divided).
+    let v_sym = var("v").get_symbol().expect("symbol");
+    let free_of_v = [&dy.m, &dy.c1, &dy.k2]
+        .iter()
+        .all(|m| m.iter().flatten().all(|e| !e.contains_symbol(v_sym)));
     for r in 0..2 {
-        let rebuilt = linear::apply(&mats.m, &linear::QDD, r)
-            + var("v") * linear::apply(&mats.c1, &linear::QD, r)
-            + var("v").pow(Atom::num(2)) * linear::apply(&mats.k2, &linear::Q, r);
-        let diff = &dy.inertia_forces[r] - &rebuilt;
+        let rebuilt = linear::apply(&dy.m, &linear::QDD, r)
+            + var("v") * linear::apply(&dy.c1, &linear::QD, r)
+            + var("v").pow(Atom::num(2)) * linear::apply(&dy.k2, &linear::Q, r);
+        let diff = (&dy.inertia_forces[r] - &rebuilt).expand();
+        let detail = if free_of_v {
+            format!("residual: {}", reduce(&diff))
+        } else {
+            "an entry of M, C1 or K2 depends on v".to_string()
+        };
         checks.push(check(
             &format!("structure_{}", linear::Q[r]),
             &format!("the generalised inertia force of {} is exactly M q'' + v C1 q' + v^2 K2 q (no other powers of v, no v-independent stiffness)", linear::Q[r]),
-            vanishes(&diff),
-            format!("residual: {}", reduce(&diff)),
+            free_of_v && vanishes(&diff),
+            detail,
         ));
     }
     checks.push(check(
@@ -271,6 +301,212 @@ pub fn char_poly(m: &Matrices) -> [Atom; 5] {
     ]
 }
 
+/// The names of the two inputs (generalised forces) and two outputs (coordinates) of the
+/// transfer functions, in the order of $q = (\varphi, \delta)$ and $f = (T_\varphi, T_\delta)$.
+pub const TF_SIGNALS: [&str; 2] = ["roll", "steer"];
+
+/// The numerators of the transfer functions from the torques to the coordinates.
+///
+/// With $P(s) = M s^2 + v C_1 s + g K_0 + v^2 K_2$ the Laplace transform of the equations from
+/// rest is $P(s)\,q(s) = f(s)$, so $q = \operatorname{adj}P(s)\,f / \det P(s)$: the transfer
+/// function from input $j$ to output $i$ is $N_{ij}(s)/\det P(s)$ with
+/// $N = \operatorname{adj}P = \begin{pmatrix} P_{22} & -P_{12} \\ -P_{21} & P_{11}\end{pmatrix}$
+/// and $\det P(s) = \sum_k a_k s^k$ the characteristic polynomial ([`char_poly`]). Each
+/// $N_{ij}$ is returned as its coefficients of $s^0, s^1, s^2$, polynomials in $v$ whose
+/// coefficients are the matrix entries. The rate outputs are $s\,N_{ij}$ (no new formula).
+pub fn tf_numerators(m: &Matrices) -> [[[Atom; 3]; 2]; 2] {
+    let (v, g) = (var("v"), var("g"));
+    let v2 = v.pow(Atom::num(2));
+    let entry = |r: usize, c: usize, sign: i64| -> [Atom; 3] {
+        let k = Atom::num(sign);
+        [&k * (&g * &m.k0[r][c] + &v2 * &m.k2[r][c]), &k * &v * &m.c1[r][c], &k * &m.m[r][c]]
+    };
+    [[entry(1, 1, 1), entry(0, 1, -1)], [entry(1, 0, -1), entry(0, 0, 1)]]
+}
+
+/// The check that [`tf_numerators`] and [`char_poly`] fit: with generic symbols for the sixteen
+/// matrix entries, $N(s)\,P(s) = \det P(s)\, I$ identically in $s$, $v$, $g$ and the entries.
+fn tf_check() -> Check {
+    let gm = generic_matrices();
+    let (s, v, g) = (var("s"), var("v"), var("g"));
+    let poly = |c: &[Atom]| -> Atom {
+        c.iter().enumerate().fold(Atom::num(0), |acc, (k, a)| acc + a * s.pow(Atom::num(k as i64)))
+    };
+    let p: [[Atom; 2]; 2] = std::array::from_fn(|r| {
+        std::array::from_fn(|c| {
+            &gm.m[r][c] * s.pow(Atom::num(2))
+                + &v * &gm.c1[r][c] * &s
+                + &g * &gm.k0[r][c]
+                + v.pow(Atom::num(2)) * &gm.k2[r][c]
+        })
+    });
+    let n = tf_numerators(&gm);
+    let det_p = poly(&char_poly(&gm));
+    let mut worst = Atom::num(0);
+    let mut holds = true;
+    for i in 0..2 {
+        for j in 0..2 {
+            let np = (poly(&n[i][0]) * &p[0][j] + poly(&n[i][1]) * &p[1][j]).expand();
+            let want = if i == j { det_p.expand() } else { Atom::num(0) };
+            let diff = (np - want).expand();
+            if !is_zero(&diff) {
+                holds = false;
+                worst = diff;
+            }
+        }
+    }
+    check(
+        "transfer_adjugate",
+        "the transfer-function numerators N (the adjugate of P(s) = M s^2 + v C1 s + g K0 + v^2 K2) and the characteristic polynomial sum a_k s^k satisfy N P = det(P) I identically in s, v, g and generic matrix entries",
+        holds,
+        format!("residual: {worst}"),
+    )
+}
+
+/// The gains of the state feedback $u = -K x$, inputs of the model: `k_{input}_{state}` is the
+/// entry of $K$ in the row of the input (`roll` or `steer` torque) and the column of the state
+/// (`roll`, `steer`, `roll_rate`, `steer_rate`). The balance-assist law $T_\delta = -k\dot\varphi$
+/// is `k_steer_roll_rate = k`.
+pub const GAINS: [&str; 8] = [
+    "k_roll_roll",
+    "k_roll_steer",
+    "k_roll_roll_rate",
+    "k_roll_steer_rate",
+    "k_steer_roll",
+    "k_steer_steer",
+    "k_steer_roll_rate",
+    "k_steer_steer_rate",
+];
+
+/// The sixteen generic symbols that stand for the entries of $M$, $C_1$, $K_0$, $K_2$ while the
+/// polynomial structure in $s$, $v$ and the gains is worked out.
+fn generic_matrices() -> Matrices {
+    let generic = |prefix: &str| -> [[Atom; 2]; 2] {
+        std::array::from_fn(|r| {
+            std::array::from_fn(|c| var(&format!("{prefix}{}{}", r + 1, c + 1)))
+        })
+    };
+    Matrices { m: generic("gm"), c1: generic("gc"), k0: generic("gk"), k2: generic("gl") }
+}
+
+/// $\det(A s^2 + B s + C)$ as its coefficients of $s^0 \dots s^4$:
+/// $[\det C,\ m(B, C),\ m(A, C) + \det B,\ m(A, B),\ \det A]$.
+fn quartic_of(a: &[[Atom; 2]; 2], b: &[[Atom; 2]; 2], c: &[[Atom; 2]; 2]) -> [Atom; 5] {
+    [det(c), mix(b, c), mix(a, c) + det(b), mix(a, b), det(a)]
+}
+
+/// The closed loop of the state feedback $u = -Kx$, $K = (K_p\ K_d)$ ([`GAINS`]):
+/// $M\ddot q + (vC_1 + K_d)\dot q + (gK_0 + v^2K_2 + K_p)q = 0$. Its characteristic polynomial
+/// $\sum_k a^{cl}_k s^k$ has coefficients that are polynomials in $v$; returned as
+/// `[k][j]`, the coefficient of $v^j$ in $a^{cl}_k$ ($j \le 4 - k$), polynomials in the gains
+/// and `g` with the entries of `m` as coefficients. Worked out on [`generic_matrices`] (so the
+/// expansion in $v$ never multiplies out the entries' own formulas), then the entries of `m`
+/// substituted.
+pub fn closed_loop_poly(m: &Matrices) -> Vec<Vec<Atom>> {
+    let gm = generic_matrices();
+    let (v, g) = (var("v"), var("g"));
+    let gain = |input: usize, state: usize| var(GAINS[4 * input + state]);
+    let b: [[Atom; 2]; 2] =
+        std::array::from_fn(|r| std::array::from_fn(|c| &v * &gm.c1[r][c] + gain(r, 2 + c)));
+    let c: [[Atom; 2]; 2] = std::array::from_fn(|r| {
+        std::array::from_fn(|col| {
+            &g * &gm.k0[r][col] + v.pow(Atom::num(2)) * &gm.k2[r][col] + gain(r, col)
+        })
+    });
+    let poly = quartic_of(&gm.m, &b, &c);
+    let v_sym = v.get_symbol().expect("symbol");
+    let mut fact = Atom::num(1);
+    let mut out = Vec::new();
+    for (k, a) in poly.iter().enumerate() {
+        let mut coefs = Vec::new();
+        let mut d = a.expand();
+        for j in 0..=(4 - k) {
+            if j > 0 {
+                d = d.derivative(v_sym).expand();
+                fact = &fact * Atom::num(j as i64);
+            }
+            coefs.push((subst(&d, "v", &Atom::num(0)) / &fact).expand());
+        }
+        fact = Atom::num(1);
+        out.push(coefs);
+    }
+    let names = [("gm", &m.m), ("gc", &m.c1), ("gk", &m.k0), ("gl", &m.k2)];
+    out.into_iter()
+        .map(|coefs| {
+            coefs
+                .into_iter()
+                .map(|mut e| {
+                    for (prefix, mat) in names {
+                        for r in 0..2 {
+                            for col in 0..2 {
+                                let name = format!("{prefix}{}{}", r + 1, col + 1);
+                                e = subst(&e, &name, &mat[r][col]);
+                            }
+                        }
+                    }
+                    e
+                })
+                .collect()
+        })
+        .collect()
+}
+
+/// The checks of [`closed_loop_poly`] on the generic entries: its coefficients reassembled,
+/// $\sum_{k,j} a^{cl}_{kj} v^j s^k$, equal the determinant of
+/// $M s^2 + (vC_1 + K_d)s + gK_0 + v^2K_2 + K_p$ multiplied out directly, and with every gain
+/// zero each $\sum_j a^{cl}_{kj}v^j$ is the open-loop coefficient $a_k$ of [`char_poly`].
+fn closed_loop_checks() -> Vec<Check> {
+    let gm = generic_matrices();
+    let cl = closed_loop_poly(&gm);
+    let (s, v, g) = (var("s"), var("v"), var("g"));
+    let gain = |input: usize, state: usize| var(GAINS[4 * input + state]);
+    let p: [[Atom; 2]; 2] = std::array::from_fn(|r| {
+        std::array::from_fn(|c| {
+            &gm.m[r][c] * s.pow(Atom::num(2))
+                + (&v * &gm.c1[r][c] + gain(r, 2 + c)) * &s
+                + &g * &gm.k0[r][c]
+                + v.pow(Atom::num(2)) * &gm.k2[r][c]
+                + gain(r, c)
+        })
+    });
+    let mut rebuilt = Atom::num(0);
+    for (k, coefs) in cl.iter().enumerate() {
+        for (j, a) in coefs.iter().enumerate() {
+            rebuilt += a * v.pow(Atom::num(j as i64)) * s.pow(Atom::num(k as i64));
+        }
+    }
+    let diff = (det(&p) - rebuilt).expand();
+    let open = char_poly(&gm);
+    let mut open_diff = Atom::num(0);
+    for (k, coefs) in cl.iter().enumerate() {
+        let mut a = coefs
+            .iter()
+            .enumerate()
+            .fold(Atom::num(0), |acc, (j, c)| acc + c * v.pow(Atom::num(j as i64)));
+        for name in GAINS {
+            a = subst(&a, name, &Atom::num(0));
+        }
+        let d = (a - &open[k]).expand();
+        if !is_zero(&d) {
+            open_diff = d;
+        }
+    }
+    vec![
+        check(
+            "closed_loop_poly",
+            "the closed-loop characteristic polynomial's coefficients (of v^j s^k) reassemble det(M s^2 + (v C1 + Kd) s + g K0 + v^2 K2 + Kp) for the state feedback u = -K x, K = (Kp Kd), identically in s, v, g, the eight gains and generic matrix entries",
+            is_zero(&diff),
+            format!("residual: {diff}"),
+        ),
+        check(
+            "closed_loop_open",
+            "with every gain zero the closed-loop coefficients are the open-loop characteristic polynomial a0 ... a4",
+            is_zero(&open_diff),
+            format!("residual: {open_diff}"),
+        ),
+    ]
+}
+
 /// Derives the model's formulas and checks.
 #[allow(clippy::needless_range_loop)]
 pub fn derive() -> Result<Derivation> {
@@ -308,6 +544,37 @@ pub fn derive() -> Result<Derivation> {
             ),
             expr: to_lambda(a),
         });
+    }
+    checks.push(tf_check());
+    let tf = tf_numerators(&mats);
+    for (i, out) in TF_SIGNALS.iter().enumerate() {
+        for (j, input) in TF_SIGNALS.iter().enumerate() {
+            for (k, coef) in tf[i][j].iter().enumerate() {
+                formulas.push(Formula {
+                    name: format!("tf_{out}_{input}_{k}"),
+                    section: "linear".to_string(),
+                    description: format!(
+                        "coefficient of s^{k} in the numerator of the transfer function from the {input} torque to the {out} angle (entry ({}, {}) of adj(M s^2 + v C1 s + g K0 + v^2 K2)); the denominator is the characteristic polynomial a0 ... a4",
+                        i + 1,
+                        j + 1
+                    ),
+                    expr: to_lambda(coef),
+                });
+            }
+        }
+    }
+    checks.extend(closed_loop_checks());
+    for (k, coefs) in closed_loop_poly(&mats).iter().enumerate() {
+        for (j, coef) in coefs.iter().enumerate() {
+            formulas.push(Formula {
+                name: format!("cl_a{k}_{j}"),
+                section: "linear".to_string(),
+                description: format!(
+                    "coefficient of v^{j} s^{k} in the closed-loop characteristic polynomial det(M s^2 + (v C1 + Kd) s + g K0 + v^2 K2 + Kp) of the state feedback u = -K x, K = (Kp Kd) with the gains k_<input>_<state> as inputs"
+                ),
+                expr: to_lambda(coef),
+            });
+        }
     }
     ensure!(
         checks.iter().all(|c| c.holds || c.id.starts_with("plain_lagrange")),
