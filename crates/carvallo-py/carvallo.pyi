@@ -57,6 +57,11 @@ def modes(
 ) -> tuple[list[str], npt.NDArray[np.complex128], npt.NDArray[np.complex128]]:
     """(labels, eigenvalues (n, 4), unit eigenvectors (n, 4, 4)); labels weave, weave, capsize, caster by continuation."""
 
+def frequency_response(
+    params: Params, speeds: Speeds, omegas: Speeds, input: str, output: str
+) -> dict[str, npt.NDArray[np.complex128] | npt.NDArray[np.float64]]:
+    """G(iω) from input "roll"|"steer" torque to output "roll"|"steer"|"roll-rate"|"steer-rate": {"response" complex, "magnitude_db", "phase_deg" (unwrapped)}, each (n speeds, m omegas)."""
+
 def eigenvalues(params: Params, speeds: Speeds) -> npt.NDArray[np.complex128]:
     """Eigenvalues at each speed, shape (n, 4), sorted by real then imaginary part."""
 

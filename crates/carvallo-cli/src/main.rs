@@ -22,7 +22,7 @@ mod perf;
 mod report_dir;
 mod report_html;
 
-use commands::{accel, eig, kinematics, report, rest, simulate, statespace, turn, window};
+use commands::{accel, bode, eig, kinematics, report, rest, simulate, statespace, turn, window};
 
 /// carvallo: E. Carvallo's memoir (1897) on the hoop, unicycle and bicycle, re-derived and
 /// checked
@@ -46,6 +46,9 @@ enum Command {
     Eig(eig::Args),
     /// The state space (A, B) of the linearised bicycle with roll and steer torque as inputs
     Statespace(statespace::Args),
+    /// The frequency response (Bode diagram) from the roll or steer torque to the lean, the
+    /// steer or their rates
+    Bode(bode::Args),
     /// Time per evaluation beside the error against 256 bits
     Bench(perf::BenchArgs),
     /// The stability windows of many designs (a grid or random designs around the model), in
@@ -78,6 +81,7 @@ impl Command {
             Command::Window(_) => "window",
             Command::Eig(_) => "eig",
             Command::Statespace(_) => "statespace",
+            Command::Bode(_) => "bode",
             Command::Bench(_) => "bench",
             Command::Sweep(_) => "sweep",
             Command::Accel(_) => "accel",
@@ -97,6 +101,7 @@ impl Command {
             Command::Window(a) => text(window::run(a)),
             Command::Eig(a) => text(eig::run(a)),
             Command::Statespace(a) => text(statespace::run(a)),
+            Command::Bode(a) => text(bode::run(a)),
             Command::Bench(a) => text(perf::bench(a)),
             Command::Sweep(a) => text(perf::sweep(a)),
             Command::Accel(a) => text(accel::run(a)),

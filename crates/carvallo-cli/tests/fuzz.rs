@@ -142,6 +142,28 @@ fn every_command_keeps_the_exit_code_contract() {
                 push(&mut args, "--model", model(&mut rng));
                 push(&mut args, "--speed", rng.pick(NUMBERS).into());
             }
+            2 if k % 40 == 12 || k % 40 == 32 => {
+                args.push("bode".into());
+                push(&mut args, "--model", model(&mut rng));
+                push(&mut args, "--speed", rng.pick(NUMBERS).into());
+                push(&mut args, "--input", rng.pick(&["roll", "steer", "yaw", ""]).into());
+                let outputs = ["roll", "steer", "roll-rate", "steer-rate", "pitch"];
+                push(&mut args, "--output", rng.pick(&outputs).into());
+                if rng.next().is_multiple_of(2) {
+                    push(
+                        &mut args,
+                        "--omega",
+                        format!("{},{}", rng.pick(NUMBERS), rng.pick(NUMBERS)),
+                    );
+                } else {
+                    let range =
+                        format!("{}:{}:{}", rng.pick(NUMBERS), rng.pick(NUMBERS), rng.pick(COUNTS));
+                    push(&mut args, "--omega-range", range);
+                }
+                if rng.next().is_multiple_of(2) {
+                    args.push(rng.pick(&["--json", "--csv"]).into());
+                }
+            }
             2 => {
                 args.push("statespace".into());
                 push(&mut args, "--model", model(&mut rng));

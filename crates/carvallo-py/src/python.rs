@@ -242,6 +242,49 @@ fn state_space<'py>(
     ))
 }
 
+/// The frequency response $G(i\omega)$ from `input` ("roll" or "steer" torque) to `output`
+/// ("roll", "steer", "roll-rate", "steer-rate") at every speed and angular frequency [rad/s]
+/// (as `carvallo bode --json`): `{"response": complex (n, m), "magnitude_db": (n, m),
+/// "phase_deg": (n, m)}` for `n` speeds and `m` frequencies, the phase unwrapped along the
+/// frequencies in their order.
+#[pyfunction]
+fn frequency_response<'py>(
+    py: Python<'py>,
+    params: &Bound<'py, PyAny>,
+    speeds: &Bound<'py, PyAny>,
+    omegas: &Bound<'py, PyAny>,
+    input: &str,
+    output: &str,
+) -> PyResult<Bound<'py, PyDict>> {
+    use carvallo::whipple::transfer::{Input, Output};
+    let bike = Whipple::new(params_of(params)?);
+    let speeds = speeds_of(speeds)?;
+    let omegas: Vec<f64> = if let Ok(x) = omegas.extract::<f64>() {
+        vec![x]
+    } else {
+        omegas.extract().map_err(|_| err("omegas must be a number or a 1-d sequence of numbers"))?
+    };
+    if let Some(x) = omegas.iter().find(|x| !(x.is_finite() && **x >= 0.0)) {
+        return Err(err(format!("invalid omega {x}: must be finite and not negative")));
+    }
+    let input: Input = input
+        .parse()
+        .map_err(|e: carvallo::whipple::transfer::UnknownSignal| err(e.to_string()))?;
+    let output: Output = output
+        .parse()
+        .map_err(|e: carvallo::whipple::transfer::UnknownSignal| err(e.to_string()))?;
+    let pts = bike.frequency_response(&speeds, &omegas, input, output);
+    let shape = [speeds.len(), omegas.len()];
+    let g: Vec<Complex64> = pts.iter().map(|p| Complex64::new(p.re, p.im)).collect();
+    let db: Vec<f64> = pts.iter().map(|p| p.magnitude_db).collect();
+    let ph: Vec<f64> = pts.iter().map(|p| p.phase_deg).collect();
+    let d = PyDict::new(py);
+    d.set_item("response", PyArray1::from_vec(py, g).reshape(shape)?)?;
+    d.set_item("magnitude_db", PyArray1::from_vec(py, db).reshape(shape)?)?;
+    d.set_item("phase_deg", PyArray1::from_vec(py, ph).reshape(shape)?)?;
+    Ok(d)
+}
+
 /// The modes at each speed, labelled by continuation in speed (as `carvallo eig --json`):
 /// `(labels, eigenvalues, vectors)` with the four labels ("weave", "weave", "capsize",
 /// "caster"), the eigenvalues (n, 4) complex and the unit eigenvectors (n, 4, 4) complex,
@@ -547,6 +590,7 @@ fn carvallo_module(m: &Bound<'_, PyModule>) -> PyResult<()> {
     m.add_function(wrap_pyfunction!(state_matrix, m)?)?;
     m.add_function(wrap_pyfunction!(state_space, m)?)?;
     m.add_function(wrap_pyfunction!(modes, m)?)?;
+    m.add_function(wrap_pyfunction!(frequency_response, m)?)?;
     m.add_function(wrap_pyfunction!(eigenvalues, m)?)?;
     m.add_function(wrap_pyfunction!(window, m)?)?;
     m.add_function(wrap_pyfunction!(windows, m)?)?;

@@ -263,6 +263,37 @@ def test_state_space_matches_the_cli_and_the_published_matrices(cli):
         carvallo.state_space(p, [1.0, float("nan")])
 
 
+def test_frequency_response_is_the_state_space_resolvent_and_the_cli(cli):
+    p = carvallo.benchmark()
+    speeds, omegas = [2.0, 5.0], np.logspace(-1, 2, 31)
+    a, b = carvallo.state_space(p, speeds)
+    names = ["roll", "steer", "roll-rate", "steer-rate"]
+    for j, inp in enumerate(["roll", "steer"]):
+        for i, out in enumerate(names):
+            fr = carvallo.frequency_response(p, speeds, omegas, inp, out)
+            g = fr["response"]
+            assert g.shape == (2, 31) and g.dtype == np.complex128
+            for k in range(2):
+                # C (iωI - A)^-1 B by numpy's solver: an independent route.
+                want = np.array(
+                    [np.linalg.solve(1j * w * np.eye(4) - a[k], b[k])[i, j] for w in omegas]
+                )
+                np.testing.assert_allclose(g[k], want, rtol=1e-11)
+            np.testing.assert_allclose(fr["magnitude_db"], 20 * np.log10(np.abs(g)), rtol=1e-13)
+            np.testing.assert_allclose(
+                fr["phase_deg"], np.degrees(np.unwrap(np.angle(g), axis=1)), atol=1e-9
+            )
+    c = cli("bode", "--model", "benchmark", "--speed", "2,5", "--input", "steer", "--output",
+            "roll", "--omega", ",".join(repr(float(w)) for w in omegas), "--json")
+    fr = carvallo.frequency_response(p, speeds, omegas, "steer", "roll")
+    got = [complex(q["re"], q["im"]) for q in c["points"]]
+    assert got == list(fr["response"].reshape(-1))
+    with pytest.raises(carvallo.ParameterError, match='unknown signal "yaw"'):
+        carvallo.frequency_response(p, 5.0, 1.0, "steer", "yaw")
+    with pytest.raises(carvallo.ParameterError, match="invalid omega -1.0"):
+        carvallo.frequency_response(p, 5.0, [-1.0], "steer", "roll")
+
+
 def test_modes_are_eigenvectors_with_the_labels_of_the_cli(cli):
     p = carvallo.benchmark()
     speeds = [0.5, 5.0]

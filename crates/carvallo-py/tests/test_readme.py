@@ -43,3 +43,16 @@ def test_the_guide_python_example_runs(root, tmp_path):
     assert len(run_example(root, tmp_path, blocks[0])) == 3
     png = (tmp_path / "eigenvalues.png").read_bytes()
     assert png[:8] == b"\x89PNG\r\n\x1a\n" and len(png) > 10_000
+
+
+def test_the_plant_chapter_python_examples_print_what_they_say(root, tmp_path):
+    """Each `print(...)  # X` line of the ```python blocks of the plant chapter prints X."""
+    blocks = python_blocks((root / "docs" / "guide" / "src" / "plant.md").read_text())
+    assert len(blocks) == 2, "the state-space and the frequency-response examples"
+    for code in blocks:
+        expected = [line.split("  # ", 1)[1]
+                    for line in code.splitlines() if line.startswith("print(") and "  # " in line]
+        (tmp_path / "example.py").write_text(code)
+        out = subprocess.run([sys.executable, "example.py"], cwd=tmp_path,
+                             capture_output=True, text=True, check=True)
+        assert out.stdout.splitlines() == expected

@@ -799,6 +799,8 @@ pub fn run(cfg: &Config) -> Report {
     let cp_args = scene_args(char_poly_scene::PARAMS, char_poly_scene::INPUTS);
     let mx_args = scene_args(matrices_scene::PARAMS, matrices_scene::INPUTS);
     let uni_args = scene_args(motion_scene::PARAMS, motion_scene::INPUTS);
+    use carvallo::whipple::transfer::tf_roll_steer_scene as tf;
+    let tf_args = scene_args(tf::PARAMS, tf::INPUTS);
     let scenes = [
         Scene {
             name: "hoop right-hand side (2)",
@@ -823,6 +825,14 @@ pub fn run(cfg: &Config) -> Report {
             outputs: char_poly_scene::OUTPUTS,
             ops: char_poly_scene::OP_COUNT,
             eval: scene_fn!(carvallo::whipple::char_poly_scene),
+        },
+        Scene {
+            name: "bicycle steer torque -> roll transfer function at v",
+            ir: WHIPPLE_IR,
+            args: &tf_args,
+            outputs: tf::OUTPUTS,
+            ops: tf::OP_COUNT,
+            eval: scene_fn!(carvallo::whipple::transfer::tf_roll_steer_scene),
         },
         Scene {
             name: "unicycle motion + energy",

@@ -4,6 +4,7 @@
 //! is the command table `Command` of `main.rs`.
 
 pub mod accel;
+pub mod bode;
 pub mod eig;
 pub mod kinematics;
 pub mod report;

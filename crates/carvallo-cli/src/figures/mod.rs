@@ -3,7 +3,7 @@
 //! [`FIGURES`] is the catalogue, in the order of the report: each row names the file, the
 //! title (which cites the memoir's figure and n° where it redraws one), the caption and the
 //! function that draws it. The functions live in [`memoir`] (the memoir's figures 3, 4, 4 bis,
-//! 7, 9, 11 and 13) and [`modern`] (eigenvalues, stable windows, ground tracks), and draw with
+//! 7, 9, 11 and 13) and [`modern`] (eigenvalues, Bode diagrams, stable windows, ground tracks), and draw with
 //! the engine in [`chart`]. Figures the workspace cannot draw honestly yet are listed in
 //! [`MISSING`] with the reason.
 
@@ -38,7 +38,7 @@ pub struct Missing {
 
 /// Every figure, in the order of the report. Adding a figure: write its function in
 /// [`memoir`] or [`modern`], add a row.
-pub const FIGURES: [Figure; 12] = [
+pub const FIGURES: [Figure; 14] = [
         Figure { file: "fig03_hoop_equilibrium.svg", title: "Memoir fig. 3: hoop, reality and stability of the steady states (n° 13–14)", caption: "Plane x = cos θ, y = s² (rates in √(g/R)): the curve (ℰ) where the two roots n of (E) merge, the curve (S1) where those of S are real, and the stability limit (S) through its vertical tangent; points A, B, D, F of n° 14.", draw: memoir::fig_3 },
         Figure { file: "fig04_hoop_skid.svg", title: "Memoir fig. 4: hoop, skid tendency (n° 15–16)", caption: "Polar diagram (angle θ from the vertical, radius s in √(g/R)): the curves n = const of (E′), the curves D = ±1/2 of (D″), (ℰ) and (S).", draw: memoir::fig_4 },
         Figure { file: "fig04bis_hoop_walking.svg", title: "Memoir fig. 4 bis: hoop, walking and pivoting (n° 17)", caption: "Polar diagram: (ℰ), (S), the separation (N) between walking and pivoting, and the curves n2 = −0.1, −0.3, −0.5.", draw: memoir::fig_4_bis },
@@ -48,6 +48,8 @@ pub const FIGURES: [Figure; 12] = [
         Figure { file: "fig13_bicycle_contact_locus.svg", title: "Memoir fig. 13: locus of the front wheel's contact with the ground (n° 54)", caption: "The front contact M relative to its position M0 at γ = 0, frame vertical, old bicycle of n° 52, for γ from 0° to 90°: the exact solution (line, with γ marked every 20°) and the memoir's table (points); y is counted as in the memoir's table, whose sign is opposite to its printed formula y = −(R sin μ − c) sin γ (see the report, n° 54).", draw: memoir::fig_13 },
         Figure { file: "benchmark_eigenvalues.svg", title: "Benchmark bicycle: eigenvalues against speed", caption: "Real and imaginary parts of the four eigenvalues of the linearised Carvallo–Whipple bicycle (Meijaard et al. 2007 parameters unless --model is given) against the forward speed; the stable range is shaded.", draw: modern::fig_eigenvalues },
         Figure { file: "carvallo_eigenvalues.svg", title: "Carvallo's bicycle without hands (n° 117–122): eigenvalues against speed", caption: "Time eigenvalues sλ (λ the roots of the quartic of n° 119, T = st) of Carvallo's bicycle, exactly linearised through the general model at the constants of n° 117, against v = Rs (R = 0.38 m), the stable range shaded; marked on the axis: the memoir's limits s² = 67.3 and 83.6 (v = 0.38√s²) and the derived ones.", draw: modern::fig_carvallo_eigenvalues },
+        Figure { file: "benchmark_bode_magnitude.svg", title: "Benchmark bicycle: steer torque to lean, magnitude", caption: "Magnitude of the transfer function from the steer torque Tδ to the lean φ of the linearised bicycle (benchmark parameters unless --model is given) at 2, 4, 5 and 8 m/s, against the angular frequency: numerator (the adjugate of M s² + v C1 s + g K0 + v² K2) and characteristic polynomial both derived symbolically (`carvallo bode`). At 4 m/s, below the weave speed (4.29 m/s), the weave pair 0.41 ± 3.08i lies just right of the imaginary axis: the sharp peak near 3 rad/s; at 5 m/s (stable, −0.78 ± 4.46i) the peak is low and broad.", draw: modern::fig_bode_magnitude },
+        Figure { file: "benchmark_bode_phase.svg", title: "Benchmark bicycle: steer torque to lean, phase", caption: "Phase of the same transfer function, unwrapped along the frequency from its value in (−180°, 180°] at 0.1 rad/s: through the unstable weave at 4 m/s it rises by about 180° (a right-half-plane pole), through the stable weave at 5 and 8 m/s it falls.", draw: modern::fig_bode_phase },
         Figure { file: "nonlinear_ground_tracks.svg", title: "Wheel ground tracks from a nonlinear simulation", caption: "Rear and front contact tracks of the nonlinear Carvallo–Whipple bicycle (benchmark parameters unless --model is given), RK4 from upright straight running at 4.6 m/s with an initial lean of 0.05 rad for 6 s; the number of crossings of the two tracks (n° 106), counted from the simulated data, is in the figure's title.", draw: modern::fig_tracks },
         Figure { file: "benchmark_window_trail.svg", title: "Benchmark bicycle: stable speed range against the trail", caption: "Weave and capsize speeds and the stable range (shaded) as the trail c is varied, the other parameters fixed.", draw: modern::fig_window_trail },
         Figure { file: "benchmark_window_tilt.svg", title: "Benchmark bicycle: stable speed range against the steer axis tilt", caption: "Weave and capsize speeds and the stable range (shaded) as the steer axis tilt λ (head angle 90° − λ) is varied in steps of 0.5°, the other parameters fixed. Below about 9.5° the benchmark has no stable speed; the curves there are the lowest roots of a0 (capsize) and of the Hurwitz determinant H3 (weave), which bound no stable range (a0 has no positive root at 1.5°, hence the gap).", draw: modern::fig_window_tilt },
@@ -69,7 +71,7 @@ mod tests {
         files.dedup();
         assert_eq!(files.len(), figs.len(), "two figures share a file name");
         assert!(files.iter().all(|f| f.ends_with(".svg") && !f.contains('/')));
-        assert_eq!((figs.len(), MISSING.len()), (12, 0));
+        assert_eq!((figs.len(), MISSING.len()), (14, 0));
         for drawn in [
             "carvallo_eigenvalues.svg",
             "nonlinear_ground_tracks.svg",

@@ -3,12 +3,15 @@
 //! trail and against the steer axis tilt; Carvallo's bicycle without hands (n° 117–122,
 //! [`carvallo::bicycle_straight`]): its eigenvalues against speed with the memoir's and the
 //! derived limits; the rear and front ground tracks of a nonlinear simulation
-//! ([`carvallo::whipple_nonlinear`]) with their crossings (n° 106) counted from the data.
+//! ([`carvallo::whipple_nonlinear`]) with their crossings (n° 106) counted from the data; the
+//! Bode diagram (magnitude and phase) from the steer torque to the lean at a few speeds
+//! ([`carvallo::whipple::transfer`]).
 
 use anyhow::{anyhow, Result};
 use carvallo::bicycle_straight::{window, Constants, Equations};
 use carvallo::parameter_text::UncertainParams;
 use carvallo::quartic::aberth_compensated;
+use carvallo::whipple::transfer::{log_space, FrequencyPoint, Input, Output};
 use carvallo::whipple::{Whipple, WhippleParams, PARAM_NAMES};
 use carvallo::whipple_nonlinear::WhippleNonlinear;
 use carvallo::whipple_uncertainty::eigenvalue_bands;
@@ -308,6 +311,62 @@ fn window_sweep(
     ));
     c.legend = SeriesLabelPosition::UpperRight;
     c.render()
+}
+
+/// The speeds of the Bode figures [m/s]: below, inside and above the benchmark's stable range.
+const BODE_SPEEDS: [f64; 4] = [2.0, 4.0, 5.0, 8.0];
+
+/// The frequency response from the steer torque to the lean at [`BODE_SPEEDS`], 301
+/// frequencies from 0.1 to 100 rad/s: (speed, points).
+fn bode_data(p: &WhippleParams) -> Vec<(f64, Vec<FrequencyPoint>)> {
+    let bike = Whipple::new(p.clone());
+    let omegas = log_space(0.1, 100.0, 301).unwrap_or_default();
+    BODE_SPEEDS
+        .iter()
+        .map(|&v| (v, bike.frequency_response(&[v], &omegas, Input::Steer, Output::Roll)))
+        .collect()
+}
+
+/// A Bode panel: `value` of each point against $\log_{10}\omega$, one curve per speed.
+fn bode_chart(
+    p: &WhippleParams,
+    title: &str,
+    y_desc: &str,
+    value: fn(&FrequencyPoint) -> f64,
+) -> Result<String> {
+    let data = bode_data(p);
+    let all: Vec<f64> = data.iter().flat_map(|(_, pts)| pts.iter().map(value)).collect();
+    let (lo, hi) =
+        all.iter().fold((f64::INFINITY, f64::NEG_INFINITY), |(a, b), &y| (a.min(y), b.max(y)));
+    if !(lo.is_finite() && hi.is_finite()) {
+        return Err(anyhow!("the frequency response is not finite"));
+    }
+    let pad = 0.05 * (hi - lo).max(1.0);
+    let mut c = Chart::new(title, "log10 ω (ω in rad/s)", y_desc, -1.0..2.0, lo - pad..hi + pad);
+    for (k, (v, pts)) in data.iter().enumerate() {
+        let xy = pts.iter().map(|q| (q.omega.log10(), value(q))).collect();
+        c.add(Curve::new(format!("v = {} m/s", trim(*v)), xy, color(k), Stroke::Solid));
+    }
+    c.legend = SeriesLabelPosition::LowerLeft;
+    c.render()
+}
+
+pub(super) fn fig_bode_magnitude(p: &WhippleParams) -> Result<String> {
+    bode_chart(
+        p,
+        "Steer torque to lean: magnitude (Bode diagram)",
+        "|φ/Tδ| (dB, rad per N m)",
+        |q| q.magnitude_db,
+    )
+}
+
+pub(super) fn fig_bode_phase(p: &WhippleParams) -> Result<String> {
+    bode_chart(
+        p,
+        "Steer torque to lean: phase (Bode diagram)",
+        "arg φ/Tδ (degrees, unwrapped)",
+        |q| q.phase_deg,
+    )
 }
 
 pub(super) fn fig_window_trail(p: &WhippleParams) -> Result<String> {

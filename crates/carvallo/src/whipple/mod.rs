@@ -15,8 +15,9 @@
 //! ([`Whipple`]), the sweeps over designs ([`sweep`]). The parameters, matrices and model are
 //! re-exported here, at the path they had when they were one file. Beside them:
 //! [`nonlinear`] (the full nonlinear equations, memoir Part II), [`uncertainty`] (bands from
-//! parameter uncertainties), [`parameter_text`] (BicycleParameters' text format) and [`plant`]
-//! (the state space with roll and steer torques as inputs).
+//! parameter uncertainties), [`parameter_text`] (BicycleParameters' text format), [`plant`]
+//! (the state space with roll and steer torques as inputs) and [`transfer`] (its transfer
+//! functions and frequency responses).
 
 mod design;
 mod matrices;
@@ -32,6 +33,7 @@ pub mod parameter_text;
 pub mod plant;
 pub mod stability;
 pub mod sweep;
+pub mod transfer;
 pub mod uncertainty;
 
 pub use self::design::{BicycleDesign, Body, Wheel, FIELD_PATHS};

@@ -74,7 +74,15 @@ pub struct SpeedGradients {
 
 /// The matrices of `params` with their derivatives, from the generated program.
 fn dual_matrices(params: &WhippleParams) -> [[[D; 2]; 2]; 4] {
-    let program = Program::parse(WHIPPLE_IR).expect("generated/whipple.ir parses");
+    let names: Vec<String> = ["m", "c1_", "k0_", "k2_"]
+        .iter()
+        .flat_map(|p| ["11", "12", "21", "22"].map(|rc| format!("{p}{rc}")))
+        .collect();
+    let names: Vec<&str> = names.iter().map(String::as_str).collect();
+    let program = Program::parse(WHIPPLE_IR)
+        .expect("generated/whipple.ir parses")
+        .select_outputs(&names)
+        .expect("generated/whipple.ir has the matrices");
     let args: Vec<D> = program
         .params
         .iter()
@@ -83,7 +91,7 @@ fn dual_matrices(params: &WhippleParams) -> [[[D; 2]; 2]; 4] {
             Dual::variable(params.values()[k], k)
         })
         .collect();
-    // The only input is the speed, which the matrices do not depend on.
+    // The matrices depend on no input (the selection pruned them).
     let speed = vec![Dual::constant(0.0); program.inputs.len()];
     let out = dual::eval(&program, &args, &speed).expect("the program evaluates");
     let get = |name: &str| {
