@@ -963,6 +963,33 @@ fn quartic_claims() -> Vec<Claim> {
         Verdict::DerivationDiffers,
         "holds in the sense the memoir uses: at s^2 = 95.6/1.143 = 83.64 the fourth root is zero (the constant term vanishes; n° 121 lists λ1 = 0), so the motion is there on the boundary (neutral); at the rounded 83.6 and just below it every root has a negative real part",
     ));
+    // The footnote: the division by λ - 0,6744.
+    let cubic = [0.0717, 0.191, 0.80, 1.0];
+    let divide = |root: f64| {
+        // Synthetic division of λ³ + 0.80λ² + 0.191λ + 0.0717 by λ - root: quotient, remainder.
+        let q1 = cubic[2] + root;
+        let q0 = cubic[1] + root * q1;
+        (q1, q0, cubic[0] + root * q0)
+    };
+    let (p1, p0, rem_plus) = divide(-0.6744);
+    let (m1, m0, rem_minus) = divide(0.6744);
+    out.push(claim(
+        "bicycle-straight-footnote-divisor",
+        "120",
+        "Footnote: « Le lecteur vérifiera facilement ce résultat en effectuant la division du premier membre de l'équation à résoudre par λ - 0,6744 »: the cubic λ³ + 0,80λ² + 0,191λ + 0,0717 = 0 has the real root λ = -0,6744 and the pair λ² + 0,1256λ + 0,1062 = 0.",
+        "synthetic division of the printed cubic by λ - 0,6744 (the printed divisor) and by λ + 0,6744 (the divisor of the root -0,6744): the quotients λ² + q1 λ + q0 and the remainders, against the printed pair (0,1256; 0,1062); holds if the printed divisor leaves the printed pair within one unit of its last digit and a remainder below 1e-3",
+        &[
+            ("by λ - 0,6744: q1", m1),
+            ("by λ - 0,6744: q0", m0),
+            ("by λ - 0,6744: remainder", rem_minus),
+            ("by λ + 0,6744: q1", p1),
+            ("by λ + 0,6744: q0", p0),
+            ("by λ + 0,6744: remainder", rem_plus),
+        ],
+        (m1 - 0.1256).abs() <= 1e-4 && (m0 - 0.1062).abs() <= 1e-4 && rem_minus.abs() < 1e-3,
+        Verdict::MemoirError,
+        "the printed divisor λ - 0,6744 leaves λ² + 1,4744λ + 1,185 and the remainder 0,871; the division that verifies the result is by λ + 0,6744 (the root is -0,6744, as printed two lines above), which leaves λ² + 0,1256λ + 0,1063 and the remainder 1e-5. A sign slip in the footnote (an explicit minus, by the rule of n° 116's cells not an OCR loss); the root and the pair are right",
+    ));
     let r47 = at(47.0);
     out.push(claim(
         "bicycle-straight-47-not-stable",
@@ -1712,6 +1739,7 @@ pub const INVENTORY: &[Assertion] = &[
     a("120", "with negative real parts the quartic shows only permanences, a necessary character of stability", Checked("bicycle-straight-permanences-necessary")),
     a("120", "stability proper is possible only for 47.0 < s^2 < 83.6", Checked("bicycle-straight-stable-only-in-third-row")),
     a("120", "at s^2 = 83.6 the quartic reduces to a cubic with a negative root and a pair of negative real part: stable", Checked("bicycle-straight-upper-limit-stable")),
+    a("120", "footnote: the reader will verify the root and the pair by dividing the cubic by λ - 0,6744", Checked("bicycle-straight-footnote-divisor")),
     a("120", "the upper limit is V = 12.5 km/h", Value("upper limit speed 12.5 km/h")),
     a("120", "s^2 = 47.0 does not give stability; the lower limit is above 47.0", Checked("bicycle-straight-47-not-stable")),
     a("121", "just below 83.6 the zero root turns negative", Checked("bicycle-straight-zero-root-turns-negative")),
