@@ -1919,6 +1919,7 @@ pub const INVENTORY: &[Assertion] = &[
     a("37", "the fall acceleration is due to gravity alone, the second acceleration is proportional to s, the righting one to s²", Checked("unicycle-three-accelerations")),
     a("37", "when s is large enough the righting wins; the rotations alternate and are periodic", Checked("unicycle-straight-running-oscillates")),
     a("37", "the explanation applies to every fast-spinning solid of revolution; the gyroscopic compass principle", Left("gyroscopes in general: outside the unicycle model")),
+    a("37", "compound centrifugal forces are paradoxical by their direction, normal to the effort one expects to supply", Left("a judgement on intuition; the direction it names, normal to the wheel for a rotation about OI, is computed in unicycle-accelerating-couple")),
     a("38", "the compound centrifugal force and Laplace's force; the current a velocity, the field a vortex; the usual induction method hides a sign error", Left("electrodynamics: outside the models of this workspace")),
     a("39", "with E = 0 the condition is (S1) s n sin + (h/R) n^2 - cos > 0", Value("stability_n39")),
     a("39", "the limit is n^2 > 1/((h/R) cos^3 theta)", Value("table n° 39, theta = 10°, |n| limit")),
