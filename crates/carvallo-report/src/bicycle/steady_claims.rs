@@ -551,7 +551,8 @@ fn action_claims() -> Vec<Claim> {
     let holding_angle = |s: f64| {
         let (mut lo, mut hi) = (-0.8, -1e-9);
         let (flo, fhi) = (fall(lo, s), fall(hi, s));
-        if !(flo * fhi < 0.0) {
+        let product = flo * fhi;
+        if product.is_nan() || product >= 0.0 {
             return f64::NAN;
         }
         for _ in 0..100 {
