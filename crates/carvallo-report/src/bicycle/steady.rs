@@ -362,6 +362,7 @@ pub const INVENTORY: &[crate::claims::Assertion] = &[
     Assertion { section: "85", says: "the geometric method, simpler, would more easily miss an error and fails for the complete equations", status: Status::Left("an opinion on methods") },
     Assertion { section: "86", says: "the most important inertia term is the loaded frame's mu R h s n cos(theta), the moment of its centrifugal force; the front wheel's terms are small", status: Status::Checked("steady-leading-inertia-term") },
     Assertion { section: "86", says: "y is first order with the factor (R sin(omega) - c)/l < 0,07; d eta/d theta first order, d nu/d theta second", status: Status::Checked("steady-orders-fall") },
+    Assertion { section: "86", says: "y/l, -((R sin(omega) - c)/l) sin(gamma) upright, is diminished when the frame leans by theta", status: Status::Checked("steady-y-smaller-when-leaning") },
     Assertion { section: "86", says: "with n = (R/l) s tan(alpha) and the third order dropped, the equation reduces to (1); the rear wheel merges into the frame's constants", status: Status::Value("bicycle check fall_86_first_order") },
     Assertion { section: "86", says: "(3) is the equation of the moments of the loaded frame's weight and centrifugal force", status: Status::Left("an interpretation of (3)") },
     Assertion { section: "86", says: "(3) solved for tan(theta) and tan(alpha): (3)'", status: Status::Value("(3)' of n° 86 bis") },

@@ -551,7 +551,8 @@ fn action_claims() -> Vec<Claim> {
     let holding_angle = |s: f64| {
         let (mut lo, mut hi) = (-0.8, -1e-9);
         let (flo, fhi) = (fall(lo, s), fall(hi, s));
-        if !(flo * fhi < 0.0) {
+        let product = flo * fhi;
+        if product.is_nan() || product >= 0.0 {
             return f64::NAN;
         }
         for _ in 0..100 {
@@ -671,6 +672,50 @@ fn leading_term_claim() -> Option<Claim> {
     ))
 }
 
+/// n° 86: « cette quantité [y/l] est diminuée quand le cadre prend une inclinaison θ ».
+fn y_with_lean_claim() -> Claim {
+    let geo = Geometry::old_model();
+    let l = geo.wheelbase();
+    let y = |theta: f64, gamma: f64| {
+        geo.solve(theta, gamma)
+            .map(|c| geo.front_wheel(theta, gamma, c.sigma, c.mu).contact[1] / l)
+            .unwrap_or(f64::NAN)
+    };
+    let mut ev: Vec<(String, f64)> = Vec::new();
+    // The steady turn leans the frame to the side opposite to γ in these variables (the
+    // turn toward the lean, n° 86 bis, 97: the position of steady-orders-fall); the other side
+    // is shown beside.
+    let (mut turn_cases, mut turn_smaller, mut other_larger) = (0usize, 0usize, 0usize);
+    for gdeg in [5.0f64, 10.0] {
+        let g = gdeg.to_radians();
+        let upright = y(0.0, g);
+        ev.push((format!("y/l at θ = 0, γ = {gdeg}°"), upright));
+        for tdeg in [-20.0f64, -10.0, -5.0, 5.0, 10.0, 20.0] {
+            let v = y(tdeg.to_radians(), g);
+            if tdeg < 0.0 {
+                turn_cases += 1;
+                turn_smaller += usize::from(v.abs() < upright.abs());
+            } else {
+                other_larger += usize::from(v.abs() > upright.abs());
+            }
+            ev.push((format!("y/l at θ = {tdeg}°, γ = {gdeg}°"), v));
+        }
+    }
+    ev.push(("leans of the steady turn (θ opposite to γ)".to_string(), turn_cases as f64));
+    ev.push(("of these with |y/l| below upright".to_string(), turn_smaller as f64));
+    ev.push(("leans to the other side with |y/l| above upright".to_string(), other_larger as f64));
+    let evr: Vec<(&str, f64)> = ev.iter().map(|(a, b)| (a.as_str(), *b)).collect();
+    Claim::new(
+        "steady-y-smaller-when-leaning",
+        "86",
+        "y/l = -((R sin ω - c)/l) sin γ with the frame vertical (n° 34), and « cette quantité est diminuée quand le cadre prend une inclinaison θ ».",
+        "the exact front contact y = J|OM of the generated geometry (the old bicycle of n° 52, contact equations of n° 54 solved by Newton) at γ = 5° and 10°, θ = 0 and ±5°, ±10°, ±20°: |y/l| against its upright value. Judged in the position n° 86 studies, the steady turn, which leans the frame to the side opposite to γ in these variables (the position of steady-orders-fall); holds if |y/l| is below its upright value at every such lean",
+        &evr,
+        policy::claim(turn_cases > 0 && turn_smaller == turn_cases, Verdict::DerivationDiffers),
+        "holds in the steady turn: leaning into the turn diminishes |y/l| (by 3 to 24 % at 5° to 20°). Leaning to the other side increases it, so the statement is about the turn's side, not any lean",
+    )
+}
+
 /// The claims of n° 79–100.
 pub fn claims() -> Vec<Claim> {
     let (pedals, actions): (Vec<Claim>, Vec<Claim>) =
@@ -680,6 +725,7 @@ pub fn claims() -> Vec<Claim> {
     c.push(reduction_claim());
     c.extend(leading_term_claim());
     c.extend(order_claims());
+    c.push(y_with_lean_claim());
     c.extend(actions);
     c.extend(turn_claims());
     c.extend(lateral_shift_claims());

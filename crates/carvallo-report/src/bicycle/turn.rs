@@ -28,6 +28,7 @@ use std::collections::BTreeMap;
 
 use carvallo::bicycle_straight::{km_per_hour, Constants, Equations};
 use carvallo::bicycle_turn::{FallEquation, Hold, LockedSteer, SteadyTurn};
+use carvallo::numerics::rng::SplitMix64;
 
 use crate::entry::{Derived, Entry, Memoir, Verdict};
 use crate::policy::rel_diff;
@@ -571,6 +572,70 @@ pub fn claims() -> Vec<crate::claims::Claim> {
         "10.1 < 48.9 kg m^2: holds by a factor of about 5",
     ));
 
+    // n° 102: L notably smaller than A.
+    out.push(Claim::new(
+        "bicycle-turn-l-below-a",
+        "102",
+        "« L est notablement plus petit que A »: the product of inertia L of the mounted frame beside its moment A about the ground line OI.",
+        "L and the frame's A = (A + 2 A1) - 3 mu1 R^2 with the constants of n° 117 (L = 14, A + 2A1 = 100, mu1 = 5, R = 0.38); holds if L is at most a quarter of A (notably smaller)",
+        &[("L (kg m^2)", k.ll), ("A (kg m^2)", frame_a), ("L / A", k.ll / frame_a)],
+        policy::claim(k.ll <= 0.25 * frame_a, Verdict::DerivationDiffers),
+        "L / A = 0.143; with dn/dp of the second order (n° 86) the term -L cos θ dn/dp is negligible before A, as the value entries of df/dp' show",
+    ));
+
+    // n° 104: the first and third terms of y's bracket cancel; (1/x) dx/dθ is small.
+    let mut rng = SplitMix64(0x0104_0104);
+    let mut worst_cancel = 0.0f64;
+    for _ in 0..200 {
+        // |γ| at least 0.1: 1 - cos γ loses about eps / γ² of relative precision in f64.
+        let (c, mag, eta) = (rng.uniform(0.0, 0.2), rng.uniform(0.1, 0.6), rng.uniform(0.1, 0.8));
+        let g = if rng.uniform(-1.0, 1.0) < 0.0 { -mag } else { mag };
+        let first = -2.0 * c * (0.5 * g).sin().powi(2) * eta.sin();
+        let third = c * eta.sin() * (1.0 - g.cos());
+        worst_cancel =
+            worst_cancel.max((first + third).abs() / first.abs().max(third.abs()).max(1e-300));
+    }
+    out.push(Claim::new(
+        "bicycle-turn-y-terms-cancel",
+        "104",
+        "In y = sin θ {-2c sin²(γ/2) sin η + (c - R sin ω) tan θ sin γ + c sin η (1 - cos γ) + (c - R sin ω) cos θ sin γ / sin θ} (n° 89) « le premier et le troisième termes du crochet se détruisent ».",
+        "the first and third terms evaluated at 200 seeded points (SplitMix64, seed 0x01040104; c in (0, 0.2) m, |γ| in (0.1, 0.6) of either sign, η in (0.1, 0.8) rad): the largest |first + third| / max(|first|, |third|); holds within 1e-12 (the identity 2 sin²(γ/2) = 1 - cos γ, exact up to rounding; below |γ| = 0.1 the f64 evaluation of 1 - cos γ alone loses eps/γ²)",
+        &[("largest relative remainder", worst_cancel)],
+        policy::formula(worst_cancel, Verdict::DerivationDiffers),
+        "",
+    ));
+    let geo = carvallo::bicycle_geometry::Geometry::old_model();
+    let x_of = |theta: f64, gamma: f64| {
+        geo.solve(theta, gamma)
+            .map(|c| geo.front_wheel(theta, gamma, c.sigma, c.mu).contact[0])
+            .unwrap_or(f64::NAN)
+    };
+    let mut ev: Vec<(String, f64)> = Vec::new();
+    let mut worst_ratio = 0.0f64;
+    let mut logd = Vec::new();
+    for (tdeg, gdeg) in [(5.0f64, -5.0f64), (10.0, -5.0), (10.0, -10.0), (20.0, -10.0)] {
+        let (t, g) = (tdeg.to_radians(), gdeg.to_radians());
+        let h = 1e-4;
+        let dlog = (x_of(t + h, g) - x_of(t - h, g)) / (2.0 * h) / x_of(t, g);
+        worst_ratio = worst_ratio.max(dlog.abs() / t.tan().abs());
+        logd.push(dlog);
+        ev.push((format!("(1/x) dx/dθ at θ = {tdeg}°, γ = {gdeg}° (1/rad)"), dlog));
+    }
+    // 5°/-5° against 10°/-10°: a first-order quantity doubles.
+    let doubling = logd[2] / logd[0];
+    ev.push(("largest |(1/x) dx/dθ| / tan θ".to_string(), worst_ratio));
+    ev.push(("(1/x) dx/dθ at 10°/-10° over 5°/-5°".to_string(), doubling));
+    let evr: Vec<(&str, f64)> = ev.iter().map(|(a, b)| (a.as_str(), *b)).collect();
+    out.push(Claim::new(
+        "bicycle-turn-x-log-derivative-small",
+        "104",
+        "In -μ g e cos θ d²η/dθ² the bracket {-(1/x) dx/dθ + tan θ} multiplies the small μ g e y/x; « sans faire le calcul, on reconnaît que (1/x) dx/dθ est petit ».",
+        "x = I|OM, the distance of the contacts along OI, from the generated geometry (the old bicycle of n° 52, contact equations solved by Newton), its logarithmic derivative by central differences (step 1e-4 rad) at steady-turn positions (θ with γ of the opposite sign: 5°/-5°, 10°/-5°, 10°/-10°, 20°/-10°). Small read as the memoir's first-order theory needs it: of the first order like tan θ, the bracket's other term which the memoir calls small, so that the bracket times the small μge y/x is of the second order. Holds if |(1/x) dx/dθ| is at most tan θ at every position and doubles within 10 % when both angles double (a finite quantity would not scale)",
+        &evr,
+        policy::claim(worst_ratio <= 1.0 && (doubling - 2.0).abs() <= 0.2, Verdict::DerivationDiffers),
+        "(1/x) dx/dθ is 0.028 to 0.063 per rad, a third of tan θ or less, and proportional to the angles: first order, so its product with y/x is of the second order and negligible in the theory of n° 104. It is not small beside tan θ (up to a third of it), which the memoir does not claim",
+    ));
+
     // n° 104: df/dtheta essentially negative; the centrifugal part of the second order.
     let negative = count(&|p| p.c.dfdtheta < 0.0);
     out.push(Claim::new(
@@ -728,6 +793,7 @@ pub const INVENTORY: &[crate::claims::Assertion] = &[
     a("102", "the term -L cos θ dn/dp is negligible before A (dn/dp of the second order)", Value("df/dp' (kg m^2)")),
     a("102", "the factor (R sin ω - c)/l is below 0.073", Checked("bicycle-turn-trail-factor-small")),
     a("102", "mu R^2 is already less than half of A", Checked("bicycle-turn-mu-r2-below-half-a")),
+    a("102", "L is notably smaller than A", Checked("bicycle-turn-l-below-a")),
     a("102", "the wheels' A1 p' merge into A p' (A slightly increased): df/dp' = A", Value("df/dp' upright")),
     a("103", "in df/dtheta the quantities gamma, s, θ', θ'' are held constant", Left("the definition of the derivative in (C); nothing to check")),
     a("103", "the d eta/d theta part of d tan(alpha)/d theta is negligible before the first, itself of the second order", Value("dn/dtheta at fixed gamma and s")),
@@ -738,6 +804,8 @@ pub const INVENTORY: &[crate::claims::Assertion] = &[
     a("104", "all the other centrifugal terms are at least of the second order", Checked("bicycle-turn-centrifugal-second-order")),
     a("104", "df/dtheta reduces to -mu g h cos θ", Value("df/dtheta (N m)")),
     a("104", "this term is essentially negative", Checked("bicycle-turn-dfdtheta-negative")),
+    a("104", "the first and third terms of the bracket of y cancel; the second and fourth give negligible dy/dθ", Checked("bicycle-turn-y-terms-cancel")),
+    a("104", "(1/x) dx/dθ is small, so the bracket's first term of -μge cos θ d²η/dθ² is negligible", Checked("bicycle-turn-x-log-derivative-small")),
     a("105", "df/dp' > 0, df/dtheta < 0: real roots of opposite signs, the motion is unstable with the handlebar held", Checked("bicycle-turn-unstable-whatever-speed")),
     a("105", "the extreme terms are independent of the speed s", Checked("bicycle-turn-extremes-independent-of-speed")),
     a("105", "df/dp lambda is unimportant: the instability is about the same as at rest", Checked("bicycle-turn-instability-as-at-rest")),

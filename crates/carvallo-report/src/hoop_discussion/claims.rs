@@ -41,9 +41,11 @@ fn compute() -> Vec<Claim> {
     out.extend(discussion_15());
     out.extend(skid_16());
     out.extend(marche_17());
+    out.push(cyclist_footnote_17());
     out.extend(h_17_bis());
     out.extend(practical_18());
     out.push(neglected_term());
+    out.push(heavier_hoop_18());
     out
 }
 
@@ -861,6 +863,69 @@ fn marche_17() -> Vec<Claim> {
     ]
 }
 
+/// n° 17's footnote: for the cyclist the frame's and rider's centrifugal force adds to the
+/// wheel's and is much larger, which is why skidding is feared by cyclists and not in hoop play.
+fn cyclist_footnote_17() -> Claim {
+    use carvallo::unicycle::{Rider, Unicycle, Wheel};
+    let (r, g, mu1) = (0.5f64, 9.81f64, 5.0f64);
+    // The n° 36 rider (60 kg, centre of gravity at 2.5 R) on a hoop wheel of 5 kg, R = 0.5 m.
+    let rider = Rider { mass: 60.0, height: 1.25, a: 100.0, b: 100.0, c: 0.77, l: 0.0 };
+    let unicycle = Unicycle::new(r, g, rider, Wheel::hoop(mu1, r)).ok();
+    let hoop = carvallo::hoop::Hoop::new(r, mu1, g).ok();
+    let unit = (g / r).sqrt();
+    // The steady root of smaller |n| of a quadratic (E) read off its evaluator at 0, ±1.
+    let slow_root = |e: &dyn Fn(f64) -> f64| {
+        let (c, a, b) = (e(0.0), 0.5 * (e(1.0) + e(-1.0)) - e(0.0), 0.5 * (e(1.0) - e(-1.0)));
+        let disc = b * b - 4.0 * a * c;
+        if !(disc >= 0.0 && a != 0.0) {
+            return f64::NAN;
+        }
+        let q = -0.5 * (b + b.signum() * disc.sqrt());
+        let (x, y) = (q / a, c / q);
+        if x.abs() < y.abs() {
+            x
+        } else {
+            y
+        }
+    };
+    let (mut min_ratio, mut min_skid_ratio, mut worst_residual) =
+        (f64::INFINITY, f64::INFINITY, 0.0f64);
+    let mut ev: Vec<(String, f64)> = Vec::new();
+    for deg in [5.0f64, 10.0, 20.0] {
+        let theta = deg.to_radians();
+        let s = 1.5 * unit;
+        let (Some(u), Some(h)) = (unicycle.as_ref(), hoop.as_ref()) else { continue };
+        let nu = slow_root(&|n| u.equilibrium(theta, s, n));
+        let nh = slow_root(&|n| h.equilibrium(theta, s, n));
+        worst_residual = worst_residual
+            .max(u.equilibrium(theta, s, nu).abs() / (rider.mass * g * rider.height))
+            .max(h.equilibrium(theta, s, nh).abs() / (mu1 * g * r));
+        // The centrifugal forces at the cyclist's turn: the wheel's (n° 10, its centre at
+        // height R) and the rider's (n° 30, his centre at height h).
+        let wheel = mu1 * (r * s * nu + r * nu * nu * theta.sin()).abs();
+        let man = rider.mass * (r * s * nu + rider.height * nu * nu * theta.sin()).abs();
+        let (du, dh) = (u.skid(theta, s, nu), h.skid(theta, s, nh));
+        min_ratio = min_ratio.min(man / wheel);
+        min_skid_ratio = min_skid_ratio.min(du.abs() / dh.abs());
+        ev.push((format!("θ = {deg}°: rider's / wheel's centrifugal force"), man / wheel));
+        ev.push((format!("θ = {deg}°: skid tendency D, cyclist (n° 30)"), du));
+        ev.push((format!("θ = {deg}°: skid tendency D, hoop alone (n° 10, root n2)"), dh));
+        ev.push((format!("θ = {deg}°: turning rate n, cyclist (1/s)"), nu));
+        ev.push((format!("θ = {deg}°: turning rate n, hoop alone (1/s)"), nh));
+    }
+    ev.push(("largest |(E)| at the roots over the weight moment".to_string(), worst_residual));
+    let evr: Vec<(&str, f64)> = ev.iter().map(|(a, b)| (a.as_str(), *b)).collect();
+    Claim::new(
+        "hoop-cyclist-centrifugal-adds",
+        "17",
+        "Footnote: « pour le cycliste, effectuant une conversion, à la force centrifuge des roues (due à la vitesse n) s'ajoute celle du cadre et du cavalier qui est beaucoup plus grande »: the reason skidding, feared by cyclists, is not to be feared in hoop play.",
+        "the mounted unicycle of n° 20-30 (carvallo::unicycle, the n° 36 rider: 60 kg, centre of gravity at h = 2.5 R = 1.25 m, A = B = 100, C = 0.77 kg m², on a hoop wheel of 5 kg, R = 0.5 m, g = 9.81) against the same wheel alone (carvallo::hoop), both in the steady turn of smaller |n| (the root used in play, n2 for the hoop) of their generated (E) at the same lean θ = 5°, 10°, 20° and the same rolling rate s = 1.5 sqrt(g/R): the rider's centrifugal force μ|Rsn + h n² sin θ| over the wheel's μ1|Rsn + R n² sin θ| (n° 10, 30), and the skid tendencies D of n° 30 and n° 10 (generated). Holds if the rider's force is at least 5 times the wheel's and the cyclist's |D| exceeds the hoop's at every θ",
+        &evr,
+        policy::claim(min_ratio >= 5.0 && min_skid_ratio > 1.0 && worst_residual < 1e-9, Verdict::DerivationDiffers),
+        "the rider's centrifugal force is 11 to 12 times the wheel's, and the cyclist's skid tendency is about twice the hoop's at the same lean and speed (0.085, 0.171, 0.353 against 0.044, 0.088, 0.181 at 5°, 10°, 20°). The cause is not the added force as such: D is a ratio to the weight, which the rider adds too; it is that the rider's weight moment about the contact is held in a steady turn by a faster turn (centrifugal force), where the hoop's lean is held mostly by its own spin (the gyroscopic term 4sn/3 of (E)) with a slow n2",
+    )
+}
+
 fn h_17_bis() -> Vec<Claim> {
     let sp = special_points();
     let (w, th) = (sp.h.0, sp.h.1.to_radians());
@@ -1045,6 +1110,55 @@ fn neglected_term() -> Claim {
     )
 }
 
+/// n° 18: « la masse du cerceau étant plus grande, les causes perturbatrices ont moins
+/// d'influence sur lui », with n° 19's disturbing moments.
+fn heavier_hoop_18() -> Claim {
+    let (r, g) = (0.5_f64, 9.81_f64);
+    let s = 2.0 * (g / r).sqrt();
+    let h = (2.0 / 3.0 * (4.0 * s * s - g / r)).sqrt();
+    let time = 1.0 / h;
+    // A push of 1 N at the back of the rim, on the right cheek: moments -F R about OI and OK,
+    // divided by the hoop's moments of inertia A and C at the contact, as n° 19's (2) are the
+    // equations (1) of n° 7 divided by the moments of inertia.
+    let response = |mass: f64, linear: bool| {
+        let Ok(hoop) = carvallo::hoop::Hoop::new(r, mass, g) else { return (f64::NAN, f64::NAN) };
+        let [a, _, c] = hoop.inertia();
+        let (m, m1) = (-r / a, -r / c);
+        if linear {
+            hd::stick_theta_n(r, g, s, m, m1, time)
+        } else {
+            hd::stick_linearised_rk4(r, g, s, (m, m1), time, 2000, false)
+        }
+    };
+    let (th1, n1) = response(1.0, true);
+    let (th2, n2) = response(2.0, true);
+    let (f1, fn1) = response(1.0, false);
+    let (f2, fn2) = response(2.0, false);
+    let lin = (th2 / th1, n2 / n1);
+    let full = (f2 / f1, fn2 / fn1);
+    Claim::new(
+        "hoop-heavier-less-disturbed",
+        "18",
+        "« Ajoutons que la masse du cerceau étant plus grande, les causes perturbatrices ont moins d'influence sur lui. »",
+        "n° 19's disturbing moments: a push of 1 N at the back of the rim (right cheek) gives the moments -F R about OI and OK, which enter n° 19's (2) divided by the hoop's moments of inertia A = 3/2 μ R² and C = 1/2 μ R² (carvallo::hoop::Hoop::inertia); R = 0.5 m, g = 9.81, s = 2 sqrt(g/R), from rest upright, at t = 1/h: the lean θ and turning rate n for μ = 1 and 2 kg, by n° 19's closed forms (6)-(7) (generated stick_theta, stick_n) and by the full equations (2) with s held (generated stick_full_dp, stick_full_dn, RK4, 2000 steps). Holds if doubling the mass halves the response: the ratio 1/2 within 1e-12 for the linear forms, within 1e-3 for the full equations (a response of a few thousandths of a radian: the nonlinear terms are of the relative order θ², about 1e-5)",
+        &[
+            ("θ(2 kg) / θ(1 kg), closed forms", lin.0),
+            ("n(2 kg) / n(1 kg), closed forms", lin.1),
+            ("θ(2 kg) / θ(1 kg), full equations", full.0),
+            ("n(2 kg) / n(1 kg), full equations", full.1),
+            ("θ(1 kg) at t = 1/h, full equations (rad)", f1),
+        ],
+        policy::claim(
+            (lin.0 - 0.5).abs() < 1e-12
+                && (lin.1 - 0.5).abs() < 1e-12
+                && (full.0 - 0.5).abs() < 1e-3
+                && (full.1 - 0.5).abs() < 1e-3,
+            Verdict::DerivationDiffers,
+        ),
+        "for a disturbing force (a push, a shock on the rim) the response is inversely proportional to the mass: the force's moment is divided by moments of inertia proportional to μ, while the hoop's own equations do not contain μ. Disturbances that scale with the mass (a slope, a bump acting through the weight) are not reduced; a claim that the mass does not matter would give the ratio 1",
+    )
+}
+
 /// The assertions of n° 13–19.
 pub(super) const INVENTORY: &[Assertion] = &[
     Assertion { section: "13", says: "the curve AE is a branch of hyperbola from A with the asymptote Oy", status: Status::Checked("hoop-reality-curve-shape") },
@@ -1087,7 +1201,7 @@ pub(super) const INVENTORY: &[Assertion] = &[
     Assertion { section: "17", says: "between (N) and (ℰ) beyond I: -n2 < -n1 < s", status: Status::Value("marche/pivot: (N)-(ℰ), beyond I") },
     Assertion { section: "17", says: "n2 is the root used in normal play", status: Status::Checked("hoop-n2-walking-root") },
     Assertion { section: "17", says: "D(n1) = ±1/2 useless or outside the useful limits: skidding is not to be feared in normal hoop play", status: Status::Checked("hoop-no-skid-normal-play") },
-    Assertion { section: "17", says: "footnote: for the cyclist the centrifugal force of frame and rider adds to the wheels'", status: Status::Left("about the bicycle, outside the hoop model") },
+    Assertion { section: "17", says: "footnote: for the cyclist the centrifugal force of frame and rider adds to the wheels'", status: Status::Checked("hoop-cyclist-centrifugal-adds") },
     Assertion { section: "17", says: "n2 is stable only outside (S)", status: Status::Left("restates n° 14 (hoop-which-root-stable)") },
     Assertion { section: "17", says: "n2 is acceptable whenever (s, θ) is in CDHIE", status: Status::Checked("hoop-n2-acceptable-region") },
     Assertion { section: "17 bis", says: "(N) enters (S) at H; -s is the root n2 there, so E(-s) = S(-s) = 0", status: Status::Checked("hoop-h-is-n2") },
@@ -1101,8 +1215,9 @@ pub(super) const INVENTORY: &[Assertion] = &[
     Assertion { section: "18", says: "that law hardly agrees with practice: theoretical and practical stability differ", status: Status::Left("an observation of play, not checkable in the model") },
     Assertion { section: "18", says: "the needle and the cane: a long pendulum falls slowly", status: Status::Left("an analogy outside the hoop model") },
     Assertion { section: "18", says: "the fall equation reduced to its first terms is a pendulum's; for large R the fall is slow", status: Status::Checked("hoop-fall-slower-for-large-r") },
-    Assertion { section: "18", says: "a heavier hoop is less influenced by disturbances", status: Status::Left("disturbances are not modelled (the mass cancels from the equations)") },
+    Assertion { section: "18", says: "a heavier hoop is less influenced by disturbances", status: Status::Checked("hoop-heavier-less-disturbed") },
     Assertion { section: "19", says: "observed: a push at the back or at the top leans and turns the hoop left, a push at the front right", status: Status::Left("an observation of play; its explanation is checked by the sign entries of n° 19") },
+    Assertion { section: "19", says: "the rotation about the horizontal OI seems natural for the push at the back or the top, paradoxical for the front push; the rotation about the vertical OK is paradoxical in every case", status: Status::Left("a judgement on the player's intuition, not a property of the motion; the motion it qualifies is checked: the lean's sign in the three cases and n of the sign opposite to θ in all three (value entries `sign of th and n` and `n opposite to th`), i.e. the hoop always turns toward its lean, whatever side the stick pushes") },
     Assertion { section: "19", says: "footnote: s varies only by a small fraction (experience)", status: Status::Left("an observation; the model of n° 19 holds s constant") },
     Assertion { section: "19", says: "the coefficient of θ in (4) is negative by the stability condition", status: Status::Left("algebra: -(2/3)(4s² - g/R) < 0 is s² > g/(4R), the upright threshold of n° 14 (hoop-upright-threshold)") },
     Assertion { section: "19", says: "back push (M < 0, M1 < 0): θ < 0, the hoop leans left", status: Status::Value("sign of th and n: back push") },

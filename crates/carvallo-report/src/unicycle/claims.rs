@@ -1068,6 +1068,104 @@ fn fall_turns_toward_lean() -> Claim {
     )
 }
 
+/// n° 37: the « couple accélérateur » 2psR² of a rim's elements at the ends of the horizontal
+/// diameter, from the acceleration W = Rsp of the rotated velocity vector.
+fn accelerating_couple() -> Claim {
+    let (r, s, p) = (0.5f64, 10.0f64, 0.3f64);
+    // A rim point spinning at s about the axle J, the wheel leaning at p about OI, from the end A
+    // of the horizontal diameter (r0 = -R I) at t = 0: its position, then the acceleration
+    // normal to the wheel (along J) by a central second difference.
+    let pos = |phase: f64, t: f64| {
+        let a = phase + s * t;
+        let (x, z) = (-r * a.cos(), r * a.sin());
+        let lean = p * t;
+        [x, -z * lean.sin(), z * lean.cos()]
+    };
+    let h = 1e-4;
+    let acc = |phase: f64| -> [f64; 3] {
+        let (a, b, c) = (pos(phase, h), pos(phase, 0.0), pos(phase, -h));
+        std::array::from_fn(|i| (a[i] - 2.0 * b[i] + c[i]) / (h * h))
+    };
+    let normal_a = acc(0.0)[1].abs();
+    let normal_b = acc(PI)[1].abs();
+    // The couple of the pair of unit masses at A and B about the vertical OK.
+    let pair = normal_a * r + normal_b * r;
+    // The ring of unit mass: the moment about OK of its elements' accelerations, against the
+    // rate of change of its spin momentum, (μR²) s p.
+    let n = 720;
+    let mut ring = 0.0;
+    for k in 0..n {
+        let phase = 2.0 * PI * k as f64 / n as f64;
+        let (x, a) = (pos(phase, 0.0), acc(phase));
+        ring += (x[0] * a[1] - x[1] * a[0]) / n as f64;
+    }
+    let memoir_w = r * s * p;
+    let memoir_couple = 2.0 * p * s * r * r;
+    Claim::new(
+        "unicycle-accelerating-couple",
+        "37",
+        "The rotation p of the wheel turns the velocity V = sR of the rear end A of the horizontal diameter, giving A the acceleration W = VV'/dt = Rsp normal to the wheel, and the front end B the opposite one: an « accelerating couple » about the vertical OK of moment psR × 2R = 2psR² (per unit mass at A and B), whose inertia couple turns the hoop toward its lean.",
+        "a rim point of a wheel of radius R = 0.5 m spinning at s = 10 rad/s about its axle and leaning at p = 0.3 rad/s about OI: its position in closed form, its acceleration by a central second difference (step 1e-4 s, error about 1e-8 relative); the normal (J) accelerations at A and B, the couple of the pair about OK, and the moment of a ring of unit mass (720 elements) against the rate of change of its spin momentum R² s p (the second route). Holds if the couple is 2psR² within 1e-6",
+        &[
+            ("normal acceleration at A (m/s²)", normal_a),
+            ("the memoir's W = Rsp (m/s²)", memoir_w),
+            ("couple of the pair A, B per unit mass (m²/s²)", pair),
+            ("the memoir's 2psR² (m²/s²)", memoir_couple),
+            ("ring of unit mass: moment about OK (m²/s²)", ring),
+            ("ring: R² s p (m²/s²)", r * r * s * p),
+        ],
+        policy::claim((pair / memoir_couple - 1.0).abs() < 1e-6, Verdict::MemoirError),
+        "the normal acceleration at A is 2Rsp, twice the memoir's W, and the couple 4psR², twice 2psR²: turning the velocity vector accounts for half of the compound centrifugal (Coriolis) acceleration 2 p × V; the other half is the change of the transport velocity p × (A - O) as the spin carries the point (the ring's moment R² s p = B s p confirms 4psR² per pair: a ring's elements weigh cos² of their angle, mean 1/2). The sense, the proportionality to s p and the conclusion drawn (the hoop turns toward its lean, unicycle-fall-turns-toward-lean) are right",
+    )
+}
+
+/// n° 37: the fall acceleration depends on gravity alone, the turning one is proportional to
+/// s, the righting one to s².
+fn three_accelerations() -> Claim {
+    use carvallo::hoop_discussion as hd;
+    let (r, g) = (0.5f64, 9.81f64);
+    let rhs = |s: f64, theta: f64, p: f64, n: f64| {
+        let v = hd::eval(&[
+            ("R", r),
+            ("g", g),
+            ("s", s),
+            ("M", 0.0),
+            ("M1", 0.0),
+            ("theta", theta),
+            ("p", p),
+            ("n", n),
+        ]);
+        (v["stick_dp"], v["stick_dn"])
+    };
+    let s = 2.0 * (g / r).sqrt();
+    let theta = 0.01;
+    // The fall acceleration at rest (p = n = 0): gravity only.
+    let fall = |s: f64| rhs(s, theta, 0.0, 0.0).0;
+    // The turning acceleration n' caused by a fall rate p.
+    let turn = |s: f64| rhs(s, 0.0, 0.1, 0.0).1;
+    // The righting acceleration caused by the turn n = -2sθ that the fall produces (n° 19 (3)).
+    let right = |s: f64| rhs(s, theta, 0.0, -2.0 * s * theta).0 - fall(s);
+    let ratios = [fall(2.0 * s) / fall(s), turn(2.0 * s) / turn(s), right(2.0 * s) / right(s)];
+    Claim::new(
+        "unicycle-three-accelerations",
+        "37",
+        "The first acceleration, of the fall p', is proportional to gravity alone; the second, W, to s; the third, the righting one, to s²: when s is large enough the righting couple wins over the fall, which is due to gravity alone.",
+        "the generated linearised equations of n° 19's (2) without stick moments (stick_dp, stick_dn; R = 0.5 m, g = 9.81, s = 2 sqrt(g/R)) at s and 2s: the fall acceleration at θ = 0.01 rad at rest, the turning acceleration n' for a fall rate p = 0.1 rad/s upright, and the righting part of p' for the turn n = -2sθ that the fall produces (n° 19 (3)). Holds if doubling s multiplies them by 1, 2 and 4 within 1e-12",
+        &[
+            ("fall acceleration ratio (2s / s)", ratios[0]),
+            ("turning acceleration ratio (2s / s)", ratios[1]),
+            ("righting acceleration ratio (2s / s)", ratios[2]),
+        ],
+        policy::claim(
+            (ratios[0] - 1.0).abs() < 1e-12
+                && (ratios[1] - 2.0).abs() < 1e-12
+                && (ratios[2] - 4.0).abs() < 1e-12,
+            Verdict::DerivationDiffers,
+        ),
+        "1, 2, 4: the fall acceleration 2gθ/(3R) has no s, the turning one -2ps is proportional to s, the righting one (4/3) s n with n = -2sθ is -(8/3) s² θ, which beats gravity when 4s² > g/R (n° 19's h², n° 14's upright threshold)",
+    )
+}
+
 fn straight_oscillates() -> Claim {
     let u = example(0.5, 5.0, 1.25, 0.77, 0.0);
     let (mut fast_max, mut fast_changes, mut slow_max, mut drift) =
@@ -1221,6 +1319,39 @@ fn e_larger_than_c() -> Claim {
         &[("min_E_over_C", ratios.iter().fold(f64::INFINITY, |a, &b| a.min(b))), ("max_E_over_C", ratios.iter().fold(0.0f64, |a, &b| a.max(b))), ("length_for_E0_m", zero_len), ("diameter_m", 2.0 * r)],
         policy::claim(holds, Verdict::DerivationDiffers),
         "E/C is 6–21 for riders of 1.0–1.8 m; E = 0 needs a cylinder only 0.28 m long for a diameter of 0.32 m, short and fat indeed (E = mu(l^2/12 - r^2/4), C = mu r^2/2).",
+    )
+}
+
+/// n° 39: E = 0 is acceptable in (E) (beside μh²) but not in (S) (beside C).
+fn e_zero_not_in_s() -> Claim {
+    let (mu, r, h) = (60.0, 1.0 / (2.0 * PI), 1.25);
+    let (mut max_e_share, mut min_e_share, mut min_factor) = (0.0f64, f64::INFINITY, f64::INFINITY);
+    for len in grid(1.0, 1.8, 9) {
+        let (_, b, c) = cylinder(mu, r, len, h);
+        let e = b - c - mu * h * h;
+        // (E) of n° 32 uses B - C = μh² + E: the relative change when E is dropped.
+        max_e_share = max_e_share.max(e / (mu * h * h + e));
+        min_e_share = min_e_share.min(e / (mu * h * h + e));
+        // (S) of n° 39: the coefficient of μRhsn sin θ is (C + E(1 + cos²θ)) / (C + E sin²θ),
+        // 1 with E = 0.
+        for deg in [10.0f64, 20.0, 30.0] {
+            let (sn, cs) = (deg.to_radians().sin(), deg.to_radians().cos());
+            min_factor = min_factor.min((c + e * (1.0 + cs * cs)) / (c + e * sn * sn));
+        }
+    }
+    Claim::new(
+        "unicycle-e-zero-not-in-s",
+        "39",
+        "The hypothesis E = 0 (B - C = μh²), « très acceptable au n° 32 » where only an approximate value of the coefficient B - C of (E) is needed, « ne l'est plus au même titre dans l'inégalité (S) »: there E stands beside C, much smaller, in the fraction (C + E(1 + cos²θ)) / (C + E sin²θ).",
+        "the cylinder riders of unicycle-e-larger-than-c (60 kg, circumference 1 m, centre at h = 1.25 m, lengths 1.0-1.8 m, B and C by the midpoint rule): the share of E in B - C = μh² + E (the error of E = 0 in (E)), and the fraction of (S) at θ = 10°, 20°, 30° (1 with E = 0). Holds if the relative error of E = 0 in (S)'s fraction, (fraction - 1), is at least ten times its largest relative error in (E)'s coefficient (a comparison: « pas au même titre »)",
+        &[
+            ("smallest share of E in B - C", min_e_share),
+            ("largest share of E in B - C", max_e_share),
+            ("smallest fraction of (S) with the real E", min_factor),
+            ("error in (S) over error in (E)", (min_factor - 1.0) / max_e_share),
+        ],
+        policy::claim((min_factor - 1.0) >= 10.0 * max_e_share, Verdict::DerivationDiffers),
+        "E = 0 changes the coefficient B - C of (E) by 5 to 14 % for riders of 1.0 to 1.8 m, a rough value as n° 32 needs; in (S) it replaces a fraction of 4.6 or more by 1, an error 25 times larger: (S) with E = 0 is not the realistic rider's condition, as the memoir warns",
     )
 }
 
@@ -1687,11 +1818,14 @@ pub fn claims() -> Vec<Claim> {
         stability_decreases(),
         stability_from_spin(),
         fall_turns_toward_lean(),
+        accelerating_couple(),
+        three_accelerations(),
         straight_oscillates(),
         light_only_turning(),
         light_root_n1(),
         light_turning_radius(),
         e_larger_than_c(),
+        e_zero_not_in_s(),
         threshold_independent(),
         bracket_positive(),
         stable_between_roots(),
@@ -1781,8 +1915,11 @@ pub const INVENTORY: &[Assertion] = &[
     a("37", "stability decreases indefinitely with the relative importance of the wheel's moment", Checked("unicycle-stability-decreases-with-wheel")),
     a("37", "only compound centrifugal forces stabilise; the rider's are weak in straight running: stability comes from the wheel", Checked("unicycle-stability-from-wheel-spin")),
     a("37", "a fall makes the wheel turn toward its lean (fig. 8), and that turning rights it", Checked("unicycle-fall-turns-toward-lean")),
+    a("37", "the rotated velocity of the rim's rear end gives it the acceleration W = Rsp, and with the front end an accelerating couple 2psR² about the vertical", Checked("unicycle-accelerating-couple")),
+    a("37", "the fall acceleration is due to gravity alone, the second acceleration is proportional to s, the righting one to s²", Checked("unicycle-three-accelerations")),
     a("37", "when s is large enough the righting wins; the rotations alternate and are periodic", Checked("unicycle-straight-running-oscillates")),
     a("37", "the explanation applies to every fast-spinning solid of revolution; the gyroscopic compass principle", Left("gyroscopes in general: outside the unicycle model")),
+    a("37", "compound centrifugal forces are paradoxical by their direction, normal to the effort one expects to supply", Left("a judgement on intuition; the direction it names, normal to the wheel for a rotation about OI, is computed in unicycle-accelerating-couple")),
     a("38", "the compound centrifugal force and Laplace's force; the current a velocity, the field a vortex; the usual induction method hides a sign error", Left("electrodynamics: outside the models of this workspace")),
     a("39", "with E = 0 the condition is (S1) s n sin + (h/R) n^2 - cos > 0", Value("stability_n39")),
     a("39", "the limit is n^2 > 1/((h/R) cos^3 theta)", Value("table n° 39, theta = 10°, |n| limit")),
@@ -1790,6 +1927,7 @@ pub const INVENTORY: &[Assertion] = &[
     a("39", "a light cycle's rider can be stable only while turning", Checked("unicycle-light-stable-only-turning")),
     a("39", "the Nouveau Cirque unicyclist on a light wheel evolved on a small platform, for that reason", Checked("unicycle-light-turning-radius")),
     a("39", "E is usually larger than C; E = 0 is an absurdly fat and short rider", Checked("unicycle-e-larger-than-c")),
+    a("39", "E = 0 is acceptable in the coefficient B - C of (E) but not in the same way in the inequality (S), where E stands beside C", Checked("unicycle-e-zero-not-in-s")),
     a("40", "the straight-running result of n° 36 is independent of the simplifying hypotheses", Checked("unicycle-straight-threshold-independent")),
     a("40", "these hypotheses hardly change the practical results", Left("the n° 40 model is generated only for E = 0; the effect of E != 0 on the curve of n° 41 is not computed")),
     a("40", "the condition (S) with B = C + mu h^2, h/R = 2.5, mu1 R^2 = C, B1 = 2 mu1 R^2", Value("stability_n40")),

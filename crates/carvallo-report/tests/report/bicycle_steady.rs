@@ -131,6 +131,7 @@ fn expected_claims() -> BTreeMap<&'static str, Verdict> {
         ("steady-reduces-to-hoop-and-unicycle", Verdict::Agrees),
         ("steady-leading-inertia-term", Verdict::Agrees),
         ("steady-orders-fall", Verdict::Agrees),
+        ("steady-y-smaller-when-leaning", Verdict::Agrees),
         ("steady-orders-handlebar", Verdict::Agrees),
         ("steady-handlebar-action-grows-with-speed", Verdict::Agrees),
         ("steady-abrupt-handlebar-throws-outward", Verdict::Agrees),

@@ -90,7 +90,7 @@ fn claims_verdicts_and_snapshot() {
         not_agreeing,
         BTreeMap::from([
             ("bicycle-straight-table-gamma2-signs", Verdict::MemoirError),
-            ("bicycle-straight-friction-widens-window", Verdict::MemoirError),
+            ("bicycle-straight-footnote-divisor", Verdict::MemoirError),
         ])
     );
     assert_eq!(
@@ -133,4 +133,27 @@ fn claims_verdicts_and_snapshot() {
         get("bicycle-straight-friction-widens-window", "cases where the window widens"),
         2.0
     );
+    // n° 123 in the memoir's own terms (Coulomb pivoting friction): the lower limit moves down,
+    // the upper one does not, and the three routes agree.
+    let w = "bicycle-straight-friction-widens-window";
+    for bike in ["Carvallo", "benchmark"] {
+        let lowest = get(
+            w,
+            &format!("{bike}: lowest sampled speed / weave speed with a bounded small disturbance"),
+        );
+        assert!((0.9..0.98 + 1e-12).contains(&lowest), "{bike}: {lowest}");
+        assert_eq!(get(w, &format!("{bike}: speeds above the capsize speed bounded")), 0.0);
+        assert_eq!(get(w, &format!("{bike}: speeds inside the window unbounded")), 0.0);
+        assert_eq!(get(w, &format!("{bike}: steps with unresolved switches")), 0.0);
+        let key =
+            format!("{bike}: smoothed route and steady turn and first stuck phase agree (1 = yes)");
+        assert_eq!(get(w, &key), 1.0);
+        let gap = get(
+            w,
+            &format!("{bike}, 0.98 × weave speed: |simulated - closed form| first stuck phase (s)"),
+        );
+        assert!(gap <= 1e-6, "{bike}: {gap}");
+    }
+    assert_eq!(verdict(w), Verdict::Agrees);
+    assert_eq!(verdict("bicycle-straight-friction-damps-weave"), Verdict::Agrees);
 }

@@ -112,7 +112,7 @@ fn new_bicycle_entries() {
 fn claims_hold_and_snapshot() {
     use carvallo_report::bicycle::turn::claims;
     let c = claims();
-    assert_eq!(c.len(), 10, "{:#?}", c.iter().map(|x| &x.id).collect::<Vec<_>>());
+    assert_eq!(c.len(), 13, "{:#?}", c.iter().map(|x| &x.id).collect::<Vec<_>>());
     for x in &c {
         assert_eq!(x.verdict, Verdict::Agrees, "{}: {}", x.id, x.note);
     }
