@@ -398,7 +398,10 @@ pub fn write_bicycle_report(
             (n.to_string(), format!("{:?}", params.params.values()[k]), sigma)
         })
         .collect();
-    let heading = format!("Bicycle report: `{model}`{}", rider.map_or(String::new(), |r| format!(" with the rider `{r}`")));
+    let heading = format!(
+        "Bicycle report: `{model}`{}",
+        rider.map_or(String::new(), |r| format!(" with the rider `{r}`"))
+    );
     let mut md = format!("# {heading}\n\n{}\n\n## Stable speed range\n\n", notes.join(" "));
     md.push_str(&window_lines.join(" "));
     md.push_str(&format!(

@@ -360,6 +360,9 @@ fn a_report_for_one_bicycle_names_its_file_and_rider() {
     assert!(out.contains("\"energy_drift\""));
     let (code, _, stderr) = carvallo(&[&["simulate", "--model", &tms][..], &sim].concat());
     assert_eq!(code, 2);
-    assert!(stderr.contains("invalid rR 0.0: must be positive for the nonlinear model"), "{stderr}");
+    assert!(
+        stderr.contains("invalid rR 0.0: must be positive for the nonlinear model"),
+        "{stderr}"
+    );
     let _ = std::fs::remove_dir_all(&dir);
 }

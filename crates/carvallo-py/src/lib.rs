@@ -71,7 +71,9 @@ pub fn params_from_pairs_warning(
 ) -> Result<(WhippleParams, Vec<TriangleWarning>), String> {
     let values = values_from_pairs(pairs)?;
     if strict {
-        return WhippleParams::from_values(values).map(|p| (p, Vec::new())).map_err(|e| e.to_string());
+        return WhippleParams::from_values(values)
+            .map(|p| (p, Vec::new()))
+            .map_err(|e| e.to_string());
     }
     WhippleParams::from_values_warning(values).map_err(|e| e.to_string())
 }
@@ -178,7 +180,10 @@ mod tests {
             params_from_pairs(&p).unwrap_err(),
             "invalid IByy 12.6: exceeds IBxx + IBzz, the sum of the other two principal moments (triangle inequality)"
         );
-        assert_eq!(params_from_pairs_warning(&p, true).unwrap_err(), params_from_pairs(&p).unwrap_err());
+        assert_eq!(
+            params_from_pairs_warning(&p, true).unwrap_err(),
+            params_from_pairs(&p).unwrap_err()
+        );
         let (params, warnings) = params_from_pairs_warning(&p, false).expect("computed as given");
         assert_eq!(params.get("IByy"), Some(12.6));
         assert_eq!(warnings.iter().map(|w| w.key).collect::<Vec<_>>(), ["IByy"]);
@@ -186,6 +191,9 @@ mod tests {
             uncertain_from_pairs_warning(&p, &[("IByy".into(), 0.1)], false).expect("computed");
         assert_eq!((u.sigma[12], warnings.len()), (0.1, 1));
         p[10].1 = -85.0;
-        assert_eq!(params_from_pairs_warning(&p, false).unwrap_err(), "invalid mB -85.0: must be positive");
+        assert_eq!(
+            params_from_pairs_warning(&p, false).unwrap_err(),
+            "invalid mB -85.0: must be positive"
+        );
     }
 }

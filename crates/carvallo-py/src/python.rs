@@ -367,11 +367,15 @@ fn window<'py>(
 /// (`numpy.asarray(designs, dtype=float64)`); otherwise a `ParameterError` naming what it got.
 fn designs_of(designs: &Bound<'_, PyAny>) -> PyResult<Vec<[f64; 26]>> {
     let what = || {
-        let shape = designs.getattr("shape").ok().and_then(|s| s.repr().ok()).map(|r| r.to_string());
+        let shape =
+            designs.getattr("shape").ok().and_then(|s| s.repr().ok()).map(|r| r.to_string());
         let dtype = designs.getattr("dtype").ok().and_then(|s| s.str().ok()).map(|r| r.to_string());
         match (shape, dtype) {
             (Some(shape), Some(dtype)) => format!("an array of shape {shape} and dtype {dtype}"),
-            _ => format!("a {}", designs.get_type().name().map(|n| n.to_string()).unwrap_or_default()),
+            _ => format!(
+                "a {}",
+                designs.get_type().name().map(|n| n.to_string()).unwrap_or_default()
+            ),
         }
     };
     let bad = || {
@@ -444,6 +448,8 @@ fn windows<'py>(
 /// `carvallo sweep --json` (method "hurwitz" or "eigen").
 #[pyfunction]
 #[pyo3(signature = (params, name, start, stop, count, method = "hurwitz", strict = false))]
+// The arguments are the Python function's keywords.
+#[allow(clippy::too_many_arguments)]
 fn sweep<'py>(
     py: Python<'py>,
     params: &Bound<'py, PyAny>,
@@ -492,6 +498,8 @@ fn sweep<'py>(
 /// `step`, `energy_drift`, `max_contact_residual`.
 #[pyfunction]
 #[pyo3(signature = (params, speed, lean0, duration, step = 0.001, every = 10, strict = false))]
+// The arguments are the Python function's keywords.
+#[allow(clippy::too_many_arguments)]
 fn simulate<'py>(
     py: Python<'py>,
     params: &Bound<'py, PyAny>,
@@ -609,6 +617,8 @@ fn rows4<'py>(py: Python<'py>, rows: &[[f64; 4]]) -> PyResult<Bound<'py, PyArray
 /// rank of the sorted real parts.
 #[pyfunction]
 #[pyo3(signature = (params, sigma, speeds, samples = 2000, seed = 1897, quantiles = (0.025, 0.975), strict = false))]
+// The arguments are the Python function's keywords.
+#[allow(clippy::too_many_arguments)]
 fn eigenvalue_bands<'py>(
     py: Python<'py>,
     params: &Bound<'py, PyAny>,

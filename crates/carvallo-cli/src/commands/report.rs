@@ -88,7 +88,13 @@ pub fn run(args: &Args) -> anyhow::Result<String> {
             let files = if memoir || (model == "benchmark" && rider.is_none()) {
                 report_dir::write_report(path, &params, &model)?
             } else {
-                report_dir::write_bicycle_report(path, &params, &model, rider.as_deref(), &warnings)?
+                report_dir::write_bicycle_report(
+                    path,
+                    &params,
+                    &model,
+                    rider.as_deref(),
+                    &warnings,
+                )?
             };
             Ok(files.iter().map(|f| format!("{dir}/{f}\n")).collect())
         }
@@ -133,14 +139,12 @@ mod tests {
         assert_eq!(command(&["--json", "--claims"]), Ok(Command::Claims { json: true }));
         let e = command(&["--claims", "--out", "r"]).unwrap_err();
         assert!(e.contains("'--claims' cannot be used with '--out <DIR>'"), "{e}");
-        let write = |model: &str, rider: Option<&str>, strict: bool, memoir: bool| {
-            Command::Write {
-                dir: "r".into(),
-                model: model.into(),
-                rider: rider.map(String::from),
-                strict,
-                memoir,
-            }
+        let write = |model: &str, rider: Option<&str>, strict: bool, memoir: bool| Command::Write {
+            dir: "r".into(),
+            model: model.into(),
+            rider: rider.map(String::from),
+            strict,
+            memoir,
         };
         assert_eq!(command(&["--out", "r"]), Ok(write("benchmark", None, false, false)));
         assert_eq!(
@@ -148,7 +152,9 @@ mod tests {
             Ok(write("b.toml", None, false, false))
         );
         assert_eq!(
-            command(&["--out", "r", "--model", "b.txt", "--rider", "j.txt", "--strict", "--memoir"]),
+            command(&[
+                "--out", "r", "--model", "b.txt", "--rider", "j.txt", "--strict", "--memoir"
+            ]),
             Ok(write("b.txt", Some("j.txt"), true, true))
         );
     }

@@ -5,9 +5,9 @@
 
 use nalgebra::Matrix4;
 
-use super::params::{skate_limit, PARAM_NAMES};
 #[cfg(doc)]
 use super::params::WhippleParams;
+use super::params::{skate_limit, PARAM_NAMES};
 use crate::numerics::mat2::det;
 
 crate::scene! {

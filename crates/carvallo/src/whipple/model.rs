@@ -39,7 +39,9 @@ impl Whipple {
         let values = params.evaluated();
         let n = matrices_scene::Args::LEN;
         let names = matrices_scene::PARAMS;
-        let at = |name: &str| PARAM_NAMES.iter().position(|k| *k == name).map_or(f64::NAN, |i| values[i]);
+        let at = |name: &str| {
+            PARAM_NAMES.iter().position(|k| *k == name).map_or(f64::NAN, |i| values[i])
+        };
         let arr: [f64; matrices_scene::Args::LEN] =
             std::array::from_fn(|i| if i < n { at(names[i]) } else { f64::NAN });
         let o = matrices_scene::eval(&matrices_scene::Args::from_array(arr));
@@ -81,7 +83,9 @@ impl Whipple {
         let names = char_poly_scene::PARAMS;
         let np = names.len();
         let values = self.params.evaluated();
-        let at = |name: &str| PARAM_NAMES.iter().position(|k| *k == name).map_or(f64::NAN, |i| values[i]);
+        let at = |name: &str| {
+            PARAM_NAMES.iter().position(|k| *k == name).map_or(f64::NAN, |i| values[i])
+        };
         let arr: [f64; char_poly_scene::Args::LEN] =
             std::array::from_fn(|i| if i < np { at(names[i]) } else { v });
         let o = char_poly_scene::eval(&char_poly_scene::Args::from_array(arr));

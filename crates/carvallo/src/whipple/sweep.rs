@@ -496,7 +496,8 @@ pub fn sweep_stream(
             let windows: [Option<WindowSummary>; LANES] = match method {
                 Method::Hurwitz => {
                     // A zero wheel radius taken to its limit, as `matrices_of` does.
-                    let limit: [[f64; 26]; LANES] = std::array::from_fn(|j| skate_limit(&values[j]));
+                    let limit: [[f64; 26]; LANES] =
+                        std::array::from_fn(|j| skate_limit(&values[j]));
                     let args: [[f64; LANES]; matrices_scene::Args::LEN] =
                         std::array::from_fn(|a| std::array::from_fn(|j| limit[j][index[a]]));
                     let o = matrices_scene::eval_lanes(&args);

@@ -171,7 +171,10 @@ fn the_two_mass_skate_takes_the_limit_of_zero_radius() {
     let loaded = UncertainParams::read(&bicycle_text("Tms"), true).expect("Tms");
     assert!(loaded.warnings.is_empty());
     let tms = loaded.params.params;
-    assert_eq!((tms.get("rR"), tms.get("IRyy"), tms.get("IBxx")), (Some(0.0), Some(0.0), Some(0.0)));
+    assert_eq!(
+        (tms.get("rR"), tms.get("IRyy"), tms.get("IBxx")),
+        (Some(0.0), Some(0.0), Some(0.0))
+    );
     let bike = Whipple::new(tms.clone());
     let m = bike.matrices();
     // Each entry to 1e-14 of the largest of its matrix (an entry is a sum of terms of that size).
@@ -242,7 +245,10 @@ fn the_two_mass_skate_takes_the_limit_of_zero_radius() {
         .starts_with("invalid IBxx 0.0: leaves the mass matrix M singular"));
     // The nonlinear model, whose speeds are the wheels' rotation rates, refuses it by name.
     let err = carvallo::whipple_nonlinear::WhippleNonlinear::new(tms).initial_state(3.0, 0.01);
-    assert!(err.unwrap_err().to_string().starts_with("invalid rR 0.0: must be positive for the nonlinear model"));
+    assert!(err
+        .unwrap_err()
+        .to_string()
+        .starts_with("invalid rR 0.0: must be positive for the nonlinear model"));
 }
 
 #[test]
