@@ -352,6 +352,12 @@ fn a_report_for_one_bicycle_names_its_file_and_rider() {
     assert_eq!((code, stdout.as_str()), (0, files));
     let md = std::fs::read_to_string(dir.join("t/report.md")).unwrap();
     assert!(md.contains("Capsize speed: none. Stable above 2.841008323370"), "{md}");
+    // The whole report simulates the nonlinear bicycle: refused for it, nothing written.
+    let (code, _, stderr) =
+        carvallo_in(&dir, &["report", "--out", "u", "--model", &tms, "--memoir"]);
+    assert_eq!(code, 2, "{stderr}");
+    assert!(stderr.contains("for --memoir: the whole report simulates"), "{stderr}");
+    assert!(!dir.join("u").exists(), "nothing may be written");
     // simulate takes --rider; the nonlinear model refuses the two-mass-skate by name.
     let sim = ["--speed", "5", "--lean0", "0.01", "--duration", "0.05", "--json"];
     let (code, out, stderr) =

@@ -85,6 +85,16 @@ pub fn run(args: &Args) -> anyhow::Result<String> {
             let (params, warnings) =
                 crate::args::uncertain_bicycle(&model, &data).map_err(report_dir::BadInput)?;
             let path = std::path::Path::new(&dir);
+            let skate = ["rR", "rF"].iter().find(|r| params.params.get(r) == Some(0.0));
+            if let (true, Some(r)) = (memoir, skate) {
+                return Err(report_dir::BadInput(format!(
+                    "invalid model file `{model}` for --memoir: the whole report simulates the \
+                     nonlinear bicycle, which needs wheels of positive radius ({r} = 0, the \
+                     two-mass-skate); the report of this bicycle alone (without --memoir) takes \
+                     the limit"
+                ))
+                .into());
+            }
             let files = if memoir || (model == "benchmark" && rider.is_none()) {
                 report_dir::write_report(path, &params, &model)?
             } else {
