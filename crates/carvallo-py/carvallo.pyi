@@ -68,7 +68,9 @@ def window(params: Params, strict: bool = False) -> dict[str, object]:
 def windows(
     designs: npt.NDArray[np.float64], validate: bool = True, strict: bool = False
 ) -> npt.NDArray[np.float64]:
-    """Weave and capsize speeds of the rows of an (n, 26) array (columns as PARAM_NAMES): (n, 2), NaN if none."""
+    """Weave and capsize speeds of the rows of anything numpy reads as an (n, 26) array of floats
+    (columns as PARAM_NAMES): (n, 2), NaN if none; rows breaking a triangle inequality give one
+    PhysicsWarning counting them (an error when `strict`)."""
 
 def sweep(
     params: Params, name: str, start: float, stop: float, count: int, method: str = "hurwitz",
