@@ -40,6 +40,15 @@ def load_parameters(
     the BicycleParameters rider file `rider` added to the rear frame; a broken triangle
     inequality is a PhysicsWarning, or a ParameterError when `strict`."""
 
+def add_rider(
+    params: Params,
+    rider: Union[str, Mapping[str, float]],
+    sigma: Optional[Params] = None,
+    strict: bool = False,
+) -> tuple[dict[str, float], dict[str, float]]:
+    """(params, sigma) with a rider (a BicycleParameters rider file, or a dict of mB, xB, yB, zB,
+    IBxx, IBxz, IByy, IBzz) added to the rear frame, as Bicycle.add_rider."""
+
 def parse_parameters(text: str) -> tuple[dict[str, float], dict[str, float]]:
     """(params, sigma) from the text of a parameter file (either format)."""
 

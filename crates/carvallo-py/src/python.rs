@@ -9,7 +9,7 @@
 
 use std::sync::atomic::AtomicUsize;
 
-use carvallo::parameter_text::{add_rider, Rider, UncertainParams};
+use carvallo::parameter_text::{Rider, UncertainParams, RIDER_NAMES};
 use carvallo::sweep::Method;
 use carvallo::whipple::{
     StabilityWindow, TriangleWarning, Whipple, WhippleParams, FIELD_PATHS, PARAM_NAMES,
@@ -192,7 +192,7 @@ fn load_parameters<'py>(
     if let Some(r) = rider {
         let rider = Rider::from_text(&read(r, "rider")?)
             .map_err(|e| err(format!("invalid rider file `{r}`: {e}")))?;
-        loaded = add_rider(&loaded.params, &rider)
+        loaded = carvallo::parameter_text::add_rider(&loaded.params, &rider)
             .map_err(|e| err(format!("invalid rider file `{r}` on `{path}`: {e}")))?;
         if strict {
             if let Some(w) = loaded.warnings.first() {
@@ -201,6 +201,73 @@ fn load_parameters<'py>(
         }
     }
     warn_all(py, path, &loaded.warnings)?;
+    let u = loaded.params;
+    Ok((dict_of(py, u.params.values())?, dict_of(py, &u.sigma)?))
+}
+
+/// The bicycle `params` (with the standard deviations `sigma`, none if omitted) with a rider
+/// added to its rear frame, as `load_parameters(path, rider=...)` and BicycleParameters'
+/// `Bicycle.add_rider` do: `rider` is the path of a BicycleParameters rider file or a dict of
+/// `mB, xB, yB, zB, IBxx, IBxz, IByy, IBzz` (the rider's body in the bicycle's frame, inertia
+/// about its mass centre; no uncertainty). A broken triangle inequality of the combined frame is
+/// a `PhysicsWarning`, or an error when `strict`. Returns `(params, sigma)`.
+#[pyfunction]
+#[pyo3(signature = (params, rider, sigma = None, strict = false))]
+fn add_rider<'py>(
+    py: Python<'py>,
+    params: &Bound<'py, PyAny>,
+    rider: &Bound<'py, PyAny>,
+    sigma: Option<&Bound<'py, PyAny>>,
+    strict: bool,
+) -> PyResult<(Bound<'py, PyDict>, Bound<'py, PyDict>)> {
+    let u = match sigma {
+        Some(s) => uncertain_of(params, s, strict)?,
+        None => UncertainParams::exact(params_of(params, strict)?),
+    };
+    let (rider, what) = if let Ok(path) = rider.extract::<std::path::PathBuf>() {
+        let path = path.display().to_string();
+        let text = std::fs::read_to_string(&path).map_err(|e| {
+            err(format!("cannot read rider file `{path}`: {}", e.to_string().to_lowercase()))
+        })?;
+        let r = Rider::from_text(&text)
+            .map_err(|e| err(format!("invalid rider file `{path}`: {e}")))?;
+        (r, format!("rider file `{path}`"))
+    } else {
+        let mut values = [f64::NAN; 8];
+        let mut seen = [false; 8];
+        for (name, v) in pairs(rider, "rider")? {
+            let k = RIDER_NAMES.iter().position(|n| *n == name).ok_or_else(|| {
+                err(format!(
+                    "unknown rider parameter {name} = {v:?} (the names are {})",
+                    RIDER_NAMES.join(", ")
+                ))
+            })?;
+            if !v.is_finite() {
+                return Err(err(format!("invalid rider {name} {v:?}: must be finite")));
+            }
+            (values[k], seen[k]) = (v, true);
+        }
+        if let Some(k) = seen.iter().position(|s| !s) {
+            return Err(err(format!("missing rider parameter {}", RIDER_NAMES[k])));
+        }
+        for k in [0, 4, 6, 7] {
+            if values[k] <= 0.0 {
+                return Err(err(format!(
+                    "invalid rider {} {:?}: must be positive (the rider's mass and principal moments)",
+                    RIDER_NAMES[k], values[k]
+                )));
+            }
+        }
+        (Rider { values, sigma: [0.0; 8] }, "rider".to_string())
+    };
+    let loaded = carvallo::parameter_text::add_rider(&u, &rider)
+        .map_err(|e| err(format!("invalid {what}: {e}")))?;
+    if strict {
+        if let Some(w) = loaded.warnings.first() {
+            return Err(err(format!("invalid params with the {what}: {w}")));
+        }
+    }
+    warn_all(py, &format!("params with the {what}"), &loaded.warnings)?;
     let u = loaded.params;
     Ok((dict_of(py, u.params.values())?, dict_of(py, &u.sigma)?))
 }
@@ -657,6 +724,7 @@ fn carvallo_module(m: &Bound<'_, PyModule>) -> PyResult<()> {
     m.add_function(wrap_pyfunction!(design, m)?)?;
     m.add_function(wrap_pyfunction!(load_parameters, m)?)?;
     m.add_function(wrap_pyfunction!(parse_parameters, m)?)?;
+    m.add_function(wrap_pyfunction!(add_rider, m)?)?;
     m.add_function(wrap_pyfunction!(matrices, m)?)?;
     m.add_function(wrap_pyfunction!(state_matrix, m)?)?;
     m.add_function(wrap_pyfunction!(state_space, m)?)?;

@@ -340,3 +340,33 @@ def test_random_sweeps_around_a_broken_inequality_keep_draws(root):
         mc = carvallo.monte_carlo(params, sigma, samples=2000)
     assert 0.3 * 2000 < mc["invalid"] < 0.7 * 2000, mc["invalid"]
     assert np.isfinite(mc["weave"]).sum() > 1900
+
+
+def test_add_rider_equals_the_file_route(root):
+    """`add_rider(params, rider, sigma)` gives what `load_parameters(path, rider=...)` gives, from
+    a rider file or from a dict of its values (then without the rider's uncertainties)."""
+    data = root / "data" / "bicycleparameters"
+    bike = str(data / "bicycles" / "Rigid" / "Parameters" / "RigidBenchmark.txt")
+    rider = data / "riders" / "Jason" / "Parameters" / "JasonRigidBenchmark.txt"
+    params, sigma = carvallo.load_parameters(bike)
+    want = carvallo.load_parameters(bike, rider=str(rider))
+    assert carvallo.add_rider(params, str(rider), sigma) == want
+    assert carvallo.add_rider(params, rider, sigma) == want  # a pathlib.Path
+    values = {}
+    for line in rider.read_text().splitlines():
+        if "=" in line:
+            k, v = line.split("=")
+            values[k.strip()] = float(v.split("+/-")[0])
+    p, s = carvallo.add_rider(params, values)
+    assert p == want[0]
+    assert s["IBxx"] == 0.0 and s["c"] == 0.0
+    with pytest.raises(carvallo.ParameterError, match=r"^missing rider parameter IBzz"):
+        carvallo.add_rider(params, {k: v for k, v in values.items() if k != "IBzz"})
+    with pytest.raises(carvallo.ParameterError, match=r"^invalid rider mB -1\.0: must be positive"):
+        carvallo.add_rider(params, {**values, "mB": -1.0})
+    with pytest.raises(carvallo.ParameterError, match=r"^unknown rider parameter mR = 2\.0"):
+        carvallo.add_rider(params, {**values, "mR": 2.0})
+    with pytest.raises(carvallo.ParameterError, match=r"^invalid rider: invalid yB 0\.5"):
+        carvallo.add_rider(params, {**values, "yB": 0.5})
+    with pytest.raises(carvallo.ParameterError, match=r"^cannot read rider file `/nonexistent`"):
+        carvallo.add_rider(params, "/nonexistent")

@@ -128,6 +128,14 @@ designs = st.one_of(
 
 
 @SETTINGS
+@given(p=params_dicts(), rider=st.one_of(st.dictionaries(st.sampled_from(["mB", "xB", "yB", "zB", "IBxx", "IBxz", "IByy", "IBzz", "x"]), values, max_size=9),
+                                        st.text(max_size=5), st.none(), st.integers()), strict=st.booleans())
+def test_add_rider(p, rider, strict):
+    check(lambda: carvallo.add_rider(p, rider, strict=strict))
+    check(lambda: carvallo.add_rider(p, rider, p, strict=strict))
+
+
+@SETTINGS
 @given(d=designs, validate=st.booleans(), strict=st.booleans())
 def test_windows(d, validate, strict):
     check(lambda: carvallo.windows(d, validate=validate, strict=strict))
