@@ -178,8 +178,10 @@ fn mass_matrix_regular(v: &[f64; 26]) -> bool {
 /// from grams to tonnes (inertias $m l^2$ from $10^{-12}$ to $10^{9}$) are all accepted.
 pub const MAX_MAGNITUDE: f64 = 1e15;
 
-/// Smallest value accepted for a strictly positive parameter (SI units): below it the products
-/// in the Hurwitz determinant could underflow (see [`MAX_MAGNITUDE`]).
+/// Smallest value accepted for a strictly positive parameter, and smallest non-zero value for
+/// one that may be zero (a wheel's radius, mass or moment, a frame's moment) (SI units): below
+/// it the products in the Hurwitz determinant could underflow (see [`MAX_MAGNITUDE`]); zero
+/// itself is exact.
 pub const MIN_POSITIVE: f64 = 1e-15;
 
 /// Why a parameter set was rejected.
