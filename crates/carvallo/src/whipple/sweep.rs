@@ -414,6 +414,13 @@ pub fn sweep_stream(
     // With a frame of zero or singular inertia the mass matrix is regular only where the masses
     // sit right, which the corners do not decide: every design of the grid is checked.
     let check_each = point_like(&base_values);
+    // Whether a design can have a zero wheel radius: the base has one, or a radius is varied.
+    let skates = base_values[4] == 0.0
+        || base_values[22] == 0.0
+        || match designs {
+            Designs::Grid(axes) => axes.iter().any(|a| a.name == "rR" || a.name == "rF"),
+            Designs::Random { .. } => false,
+        };
     let (names, keys, count): (Vec<String>, Vec<usize>, usize) = match designs {
         Designs::Grid(axes) => {
             if axes.is_empty() {
@@ -495,11 +502,15 @@ pub fn sweep_stream(
             }
             let windows: [Option<WindowSummary>; LANES] = match method {
                 Method::Hurwitz => {
-                    // A zero wheel radius taken to its limit, as `matrices_of` does.
-                    let limit: [[f64; 26]; LANES] =
-                        std::array::from_fn(|j| skate_limit(&values[j]));
-                    let args: [[f64; LANES]; matrices_scene::Args::LEN] =
-                        std::array::from_fn(|a| std::array::from_fn(|j| limit[j][index[a]]));
+                    // A zero wheel radius taken to its limit, as `matrices_of` does (only
+                    // when a radius can be zero: the copy costs a few per cent of a sweep).
+                    let args: [[f64; LANES]; matrices_scene::Args::LEN] = if skates {
+                        let limit: [[f64; 26]; LANES] =
+                            std::array::from_fn(|j| skate_limit(&values[j]));
+                        std::array::from_fn(|a| std::array::from_fn(|j| limit[j][index[a]]))
+                    } else {
+                        std::array::from_fn(|a| std::array::from_fn(|j| values[j][index[a]]))
+                    };
                     let o = matrices_scene::eval_lanes(&args);
                     std::array::from_fn(|j| {
                         let r = |k: usize| [[o[k][j], o[k + 1][j]], [o[k + 2][j], o[k + 3][j]]];
