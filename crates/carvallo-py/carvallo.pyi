@@ -2,7 +2,9 @@
 
 Parameters are dicts in the benchmark names of Meijaard et al. (2007) (`PARAM_NAMES`; the steer
 axis tilt also as BicycleParameters' `lam`), SI units. Every error is a `ParameterError` (a
-`ValueError`) whose message names the key and the value.
+`ValueError`) whose message names the key and the value. Every function taking `params`
+reads it as the parameter files are read: moments of inertia that break a triangle inequality
+are computed as given with a `PhysicsWarning`, or a `ParameterError` with `strict=True`.
 """
 
 from typing import Mapping, Optional, Sequence, Union
@@ -22,7 +24,7 @@ class ParameterError(ValueError):
 def benchmark() -> dict[str, float]:
     """The benchmark bicycle of Meijaard et al. (2007), Table 1."""
 
-def design(params: Params) -> dict[str, object]:
+def design(params: Params, strict: bool = False) -> dict[str, object]:
     """The parameters by name: wheelbase, trail, steer_axis_tilt, gravity (floats) and the dicts
     rear_wheel, front_wheel (radius, mass, ixx, iyy) and rear_frame, front_frame (x, z, mass,
     ixx, iyy, izz, ixz)."""
@@ -38,41 +40,55 @@ def load_parameters(
     the BicycleParameters rider file `rider` added to the rear frame; a broken triangle
     inequality is a PhysicsWarning, or a ParameterError when `strict`."""
 
+def add_rider(
+    params: Params,
+    rider: Union[str, Mapping[str, float]],
+    sigma: Optional[Params] = None,
+    strict: bool = False,
+) -> tuple[dict[str, float], dict[str, float]]:
+    """(params, sigma) with a rider (a BicycleParameters rider file, or a dict of mB, xB, yB, zB,
+    IBxx, IBxz, IByy, IBzz) added to the rear frame, as Bicycle.add_rider."""
+
 def parse_parameters(text: str) -> tuple[dict[str, float], dict[str, float]]:
     """(params, sigma) from the text of a parameter file (either format)."""
 
-def matrices(params: Params) -> dict[str, npt.NDArray[np.float64]]:
+def matrices(params: Params, strict: bool = False) -> dict[str, npt.NDArray[np.float64]]:
     """{"M", "C1", "K0", "K2"}: the 2x2 matrices of M q'' + v C1 q' + (g K0 + v^2 K2) q = f."""
 
-def state_matrix(params: Params, speed: Speeds) -> npt.NDArray[np.float64]:
+def state_matrix(params: Params, speed: Speeds, strict: bool = False) -> npt.NDArray[np.float64]:
     """The 4x4 state matrix of (lean, steer, lean rate, steer rate); shape (n, 4, 4) for n speeds."""
 
 def state_space(
-    params: Params, speeds: Speeds
+    params: Params, speeds: Speeds, strict: bool = False
 ) -> tuple[npt.NDArray[np.float64], npt.NDArray[np.float64]]:
     """(A, B) with roll and steer torque as inputs, shapes (n, 4, 4) and (n, 4, 2); C = I, D = 0."""
 
 def modes(
-    params: Params, speeds: Speeds
+    params: Params, speeds: Speeds, strict: bool = False
 ) -> tuple[list[str], npt.NDArray[np.complex128], npt.NDArray[np.complex128]]:
     """(labels, eigenvalues (n, 4), unit eigenvectors (n, 4, 4)); labels weave, weave, capsize, caster by continuation."""
 
 def frequency_response(
-    params: Params, speeds: Speeds, omegas: Speeds, input: str, output: str
+    params: Params, speeds: Speeds, omegas: Speeds, input: str, output: str, strict: bool = False
 ) -> dict[str, npt.NDArray[np.complex128] | npt.NDArray[np.float64]]:
     """G(iω) from input "roll"|"steer" torque to output "roll"|"steer"|"roll-rate"|"steer-rate": {"response" complex, "magnitude_db", "phase_deg" (unwrapped)}, each (n speeds, m omegas)."""
 
-def eigenvalues(params: Params, speeds: Speeds) -> npt.NDArray[np.complex128]:
+def eigenvalues(params: Params, speeds: Speeds, strict: bool = False) -> npt.NDArray[np.complex128]:
     """Eigenvalues at each speed, shape (n, 4), sorted by real then imaginary part."""
 
-def window(params: Params) -> dict[str, object]:
+def window(params: Params, strict: bool = False) -> dict[str, object]:
     """{"weave_speed", "capsize_speed", "stable": [(from, to), ...]} in m/s (None if none)."""
 
-def windows(designs: npt.NDArray[np.float64], validate: bool = True) -> npt.NDArray[np.float64]:
-    """Weave and capsize speeds of the rows of an (n, 26) array (columns as PARAM_NAMES): (n, 2), NaN if none."""
+def windows(
+    designs: npt.NDArray[np.float64], validate: bool = True, strict: bool = False
+) -> npt.NDArray[np.float64]:
+    """Weave and capsize speeds of the rows of anything numpy reads as an (n, 26) array of floats
+    (columns as PARAM_NAMES): (n, 2), NaN if none; rows breaking a triangle inequality give one
+    PhysicsWarning counting them (an error when `strict`)."""
 
 def sweep(
-    params: Params, name: str, start: float, stop: float, count: int, method: str = "hurwitz"
+    params: Params, name: str, start: float, stop: float, count: int, method: str = "hurwitz",
+    strict: bool = False,
 ) -> dict[str, object]:
     """Summary of the windows as `name` runs linearly from start to stop (as `carvallo sweep --json`)."""
 
@@ -83,6 +99,7 @@ def simulate(
     duration: float,
     step: float = 0.001,
     every: int = 10,
+    strict: bool = False,
 ) -> dict[str, Union[float, npt.NDArray[np.float64]]]:
     """Nonlinear simulation (RK4) from upright straight running; arrays t, lean, steer, pitch,
     speed_rear, rear_x, rear_y, front_x, front_y, energy and floats step, energy_drift,
@@ -91,14 +108,14 @@ def simulate(
 def report() -> list[dict[str, object]]:
     """The memoir concordance, the entries of `carvallo report --json`."""
 
-def speed_gradients(params: Params) -> dict[str, object]:
+def speed_gradients(params: Params, strict: bool = False) -> dict[str, object]:
     """Weave and capsize speeds with their exact derivatives: d_weave, d_capsize dicts."""
 
-def first_order(params: Params, sigma: Params) -> dict[str, Optional[float]]:
+def first_order(params: Params, sigma: Params, strict: bool = False) -> dict[str, Optional[float]]:
     """First-order standard deviations weave_std, capsize_std for independent parameters."""
 
 def monte_carlo(
-    params: Params, sigma: Params, samples: int = 10000, seed: int = 1897
+    params: Params, sigma: Params, samples: int = 10000, seed: int = 1897, strict: bool = False
 ) -> dict[str, object]:
     """Seeded Monte Carlo: arrays weave and capsize (NaN if none) and the count invalid."""
 
@@ -109,5 +126,6 @@ def eigenvalue_bands(
     samples: int = 2000,
     seed: int = 1897,
     quantiles: tuple[float, float] = (0.025, 0.975),
+    strict: bool = False,
 ) -> dict[str, npt.NDArray[np.float64]]:
     """Quantile bands of the sorted real parts of the eigenvalues: speeds, nominal, lower, upper."""

@@ -48,7 +48,7 @@ def browse(browser: str, url: str, *args: str) -> str:
 def report(tmp_path_factory):
     out = tmp_path_factory.mktemp("html") / "report"
     subprocess.run(
-        [str(carvallo_bin()), "report", "--out", str(out), "--model", str(ROOT / "data" / "benchmark-1pct.txt")],
+        [str(carvallo_bin()), "report", "--out", str(out), "--model", str(ROOT / "data" / "benchmark-1pct.txt"), "--memoir"],
         check=True, capture_output=True,
     )
     return out

@@ -24,17 +24,6 @@ pub fn lean_deg(v: &str) -> Result<f64, String> {
     Ok(x)
 }
 
-/// The bicycle `benchmark` (no uncertainty) or the one in the parameter file `model`: the
-/// anchors TOML format or BicycleParameters' text format `name = value+/-sigma`
-/// ([`UncertainParams::from_any`]).
-pub fn uncertain_model(model: &str) -> Result<UncertainParams, String> {
-    if model == "benchmark" {
-        return Ok(UncertainParams::exact(WhippleParams::benchmark()));
-    }
-    let text = read_model_file(model)?;
-    UncertainParams::from_any(&text).map_err(|e| format!("invalid model file `{model}`: {e}"))
-}
-
 /// The options beside `--model` that say how its file is read: `--rider FILE` (a
 /// BicycleParameters rider file added to the rear frame, [`add_rider`]) and `--strict` (moments
 /// of inertia breaking a triangle inequality are an error instead of a warning).
@@ -60,6 +49,15 @@ impl DataOptions {
 /// its rider added, and broken triangle inequalities printed as warnings on standard error
 /// (errors with `--strict`).
 pub fn bicycle(model: &str, data: &DataOptions) -> Result<WhippleParams, String> {
+    uncertain_bicycle(model, data).map(|(u, _)| u.params)
+}
+
+/// As [`bicycle`], with the standard deviations the file states (carried through the rider)
+/// and the warnings printed.
+pub fn uncertain_bicycle(
+    model: &str,
+    data: &DataOptions,
+) -> Result<(UncertainParams, Vec<String>), String> {
     let loaded = if model == "benchmark" {
         Loaded { params: UncertainParams::exact(WhippleParams::benchmark()), warnings: Vec::new() }
     } else {
@@ -91,15 +89,16 @@ pub fn bicycle(model: &str, data: &DataOptions) -> Result<WhippleParams, String>
             ));
         }
     }
-    for w in &loaded.warnings {
-        eprintln!("warning: {model}: {w}");
+    let warnings: Vec<String> = loaded.warnings.iter().map(|w| format!("{model}: {w}")).collect();
+    for w in &warnings {
+        eprintln!("warning: {w}");
     }
-    Ok(loaded.params.params)
+    Ok((loaded.params, warnings))
 }
 
 /// Whether `message` (an error of a command) is about the data of a file rather than the
 /// command line: it is printed without the usage text. The messages of [`bicycle`] and
-/// [`uncertain_model`] start so.
+/// [`uncertain_bicycle`] start so.
 pub fn is_data_error(message: &str) -> bool {
     [
         "invalid model file `",
@@ -112,7 +111,7 @@ pub fn is_data_error(message: &str) -> bool {
 }
 
 /// The bicycle `benchmark` or the one in the TOML parameter file `model` (the anchors format
-/// only), for `accel` and `simulate`.
+/// only), for `accel`.
 pub fn toml_model(model: &str) -> Result<WhippleParams, String> {
     if model == "benchmark" {
         return Ok(WhippleParams::benchmark());

@@ -5,6 +5,11 @@
 //! format) adds a section on their propagation to the weave and capsize speeds (first order
 //! and Monte Carlo) and the eigenvalue figure with uncertainty bands.
 //!
+//! [`write_bicycle_report`] writes the report of one bicycle alone (`report --out DIR --model
+//! FILE [--rider FILE]`): the file and rider read, the parameters, the stable speed range, the
+//! eigenvalues against speed and, with stated uncertainties, their propagation and the bands
+//! figure; none of the memoir's chapters is computed.
+//!
 //! Nothing is written unless everything succeeds: the directory is checked first (its parent
 //! must exist; an existing `DIR` must be empty or a report directory written before, marked by
 //! the file [`MARKER`], so that a mistyped `--out .` can never replace unrelated files), the
@@ -16,7 +21,7 @@ use std::path::{Path, PathBuf};
 
 use anyhow::{anyhow, Context, Result};
 use carvallo::parameter_text::UncertainParams;
-use carvallo::whipple::PARAM_NAMES;
+use carvallo::whipple::{Whipple, PARAM_NAMES};
 use carvallo::whipple_uncertainty::{mean_std, monte_carlo, speed_gradients};
 
 use crate::figures;
@@ -282,17 +287,159 @@ pub fn write_report(dir: &Path, params: &UncertainParams, model: &str) -> Result
     }
     files.insert(0, ("report.md".to_string(), md));
     files.insert(1, ("report.html".to_string(), html));
-    files.push((MARKER.to_string(), "written by `carvallo report --out`\n".to_string()));
-    let name = dir.file_name().map(|n| n.to_string_lossy().into_owned()).unwrap_or_default();
-    let tmp = parent.join(format!(".{name}.tmp-{}", std::process::id()));
-    let result = write_all(&tmp, &files).and_then(|()| replace_dir(&tmp, dir));
-    if result.is_err() {
-        let _ = std::fs::remove_dir_all(&tmp);
-    }
+    let result = commit(dir, &parent, &mut files);
     progress.done();
     progress.start(if result.is_ok() { "written" } else { "failed" });
     progress.finish();
     result?;
+    Ok(files.into_iter().map(|(n, _)| n).collect())
+}
+
+/// Writes `files` and the [`MARKER`] into a temporary sibling of `dir` in `parent`, then
+/// renames it to `dir` (see the module docs); on failure nothing is left.
+fn commit(dir: &Path, parent: &Path, files: &mut Vec<(String, String)>) -> Result<()> {
+    files.push((MARKER.to_string(), "written by `carvallo report --out`\n".to_string()));
+    let name = dir.file_name().map(|n| n.to_string_lossy().into_owned()).unwrap_or_default();
+    let tmp = parent.join(format!(".{name}.tmp-{}", std::process::id()));
+    let result = write_all(&tmp, files).and_then(|()| replace_dir(&tmp, dir));
+    if result.is_err() {
+        let _ = std::fs::remove_dir_all(&tmp);
+    }
+    result
+}
+
+/// The file name of the eigenvalue figure of [`write_bicycle_report`].
+pub const BICYCLE_EIGENVALUES_FILE: &str = "eigenvalues.svg";
+
+/// A speed for the report's text: round-trip digits, `none` when absent.
+fn speed_text(v: Option<f64>) -> String {
+    v.map_or("none".to_string(), |x| format!("{x:?} m/s"))
+}
+
+/// The report of the bicycle `params` read from `model` (with the rider file `rider` added to
+/// its rear frame, and the reader's `warnings`), written to `dir` as `report.md`, `report.html`
+/// (self-contained), the eigenvalue figure [`BICYCLE_EIGENVALUES_FILE`] and, with stated
+/// uncertainties, [`BANDS_FILE`]: the file and rider read, the parameters and their standard
+/// deviations, the stable speed range (closed-form Hurwitz route, as `carvallo window`), the
+/// eigenvalues against speed and the uncertainty section of [`uncertainty_section`]. The
+/// memoir's chapters are not computed. Nothing is written unless everything succeeds, as for
+/// [`write_report`]. Returns the files written, relative to `dir`.
+pub fn write_bicycle_report(
+    dir: &Path,
+    params: &UncertainParams,
+    model: &str,
+    rider: Option<&str>,
+    warnings: &[String],
+) -> Result<Vec<String>> {
+    let parent = check_out_dir(dir)?;
+    let window = Whipple::new(params.params.clone()).stability_window();
+    let source = match rider {
+        Some(r) => format!(
+            "Parameters read from `{model}`, with the rider of `{r}` added to the rear frame \
+             (joint mass and mass centre, inertia by the parallel-axis theorem)."
+        ),
+        None => format!("Parameters read from `{model}`."),
+    };
+    let mut notes = vec![source];
+    for w in warnings {
+        notes.push(format!("Warning: {w}."));
+    }
+    notes.push(
+        "Written by `carvallo report --out DIR --model FILE`; the memoir's chapters are in \
+         `carvallo report --out DIR` (or with `--memoir`)."
+            .to_string(),
+    );
+    let stable: Vec<String> = window
+        .stable
+        .iter()
+        .map(|(a, b)| {
+            if b.is_finite() {
+                format!("from {a:?} to {b:?} m/s")
+            } else {
+                format!("above {a:?} m/s")
+            }
+        })
+        .collect();
+    let window_lines = [
+        format!("Weave speed: {}.", speed_text(window.weave_speed)),
+        format!("Capsize speed: {}.", speed_text(window.capsize_speed)),
+        if stable.is_empty() {
+            "No stable speed.".to_string()
+        } else {
+            format!("Stable {}.", stable.join(", "))
+        },
+    ];
+    let mut files: Vec<(String, String)> = Vec::new();
+    let v_max = window.capsize_speed.map_or(10.0, |c| (1.25 * c).clamp(10.0, 30.0).ceil());
+    let title = format!("{model}: eigenvalues against speed");
+    let svg = figures::fig_bicycle_eigenvalues(&params.params, &title, v_max)
+        .with_context(|| format!("cannot draw {BICYCLE_EIGENVALUES_FILE}"))?;
+    files.push((BICYCLE_EIGENVALUES_FILE.to_string(), svg));
+    let caption = "Real and imaginary parts of the four eigenvalues of the linearised \
+                   Carvallo–Whipple bicycle against the forward speed; the stable range is shaded.";
+    let (mut unc_md, mut unc_html) = (String::new(), String::new());
+    if params.has_uncertainty() {
+        (unc_md, unc_html) = uncertainty_section(params, model);
+        let svg = figures::fig_eigenvalue_bands(params, BAND_SAMPLES)
+            .with_context(|| format!("cannot draw {BANDS_FILE}"))?;
+        unc_md.push_str(&format!("![{BANDS_TITLE}]({BANDS_FILE})\n\n*{BANDS_CAPTION}*\n\n"));
+        unc_html.push_str(&format!(
+            "<figure id=\"{BANDS_FILE}\">\n{svg}\n<figcaption>{}</figcaption>\n</figure>\n",
+            escape(BANDS_CAPTION)
+        ));
+        files.push((BANDS_FILE.to_string(), svg));
+    }
+    let rows: Vec<(String, String, String)> = PARAM_NAMES
+        .iter()
+        .enumerate()
+        .map(|(k, n)| {
+            let s = params.sigma[k];
+            let sigma = if s > 0.0 { format!("{s:?}") } else { "–".to_string() };
+            (n.to_string(), format!("{:?}", params.params.values()[k]), sigma)
+        })
+        .collect();
+    let heading = format!(
+        "Bicycle report: `{model}`{}",
+        rider.map_or(String::new(), |r| format!(" with the rider `{r}`"))
+    );
+    let mut md = format!("# {heading}\n\n{}\n\n## Stable speed range\n\n", notes.join(" "));
+    md.push_str(&window_lines.join(" "));
+    md.push_str(&format!(
+        "\n\n## Eigenvalues against speed\n\n![{title}]({BICYCLE_EIGENVALUES_FILE})\n\n*{caption}*\n\n"
+    ));
+    md.push_str(&unc_md);
+    md.push_str("## Parameters\n\n| parameter | value | standard deviation |\n|---|---|---|\n");
+    for (n, v, s) in &rows {
+        md.push_str(&format!("| {n} | {v} | {s} |\n"));
+    }
+    let eig_svg = &files[0].1;
+    let mut html = format!(
+        "<!DOCTYPE html>\n<html lang=\"en\">\n<head>\n<meta charset=\"utf-8\">\n\
+         <meta name=\"viewport\" content=\"width=device-width, initial-scale=1\">\n\
+         <title>{}</title>\n<style>{}</style>\n</head>\n<body>\n<h1>{}</h1>\n<p id=\"source\">{}</p>\n\
+         <h2 id=\"window\">Stable speed range</h2>\n<p>{}</p>\n\
+         <h2 id=\"eigenvalues\">Eigenvalues against speed</h2>\n\
+         <figure id=\"{BICYCLE_EIGENVALUES_FILE}\">\n{eig_svg}\n<figcaption>{}</figcaption>\n</figure>\n{unc_html}",
+        escape(&heading.replace('`', "")),
+        crate::report_html::STYLE,
+        escape_with_code(&heading),
+        escape_with_code(&notes.join(" ")),
+        escape(&window_lines.join(" ")),
+        escape(caption),
+    );
+    html.push_str("<h2 id=\"parameters\">Parameters</h2>\n<table>\n<thead><tr><th>parameter</th><th>value</th><th>standard deviation</th></tr></thead>\n<tbody>\n");
+    for (n, v, s) in &rows {
+        html.push_str(&format!(
+            "<tr><td>{}</td><td>{}</td><td>{}</td></tr>\n",
+            escape(n),
+            escape(v),
+            escape(s)
+        ));
+    }
+    html.push_str("</tbody>\n</table>\n</body>\n</html>\n");
+    files.insert(0, ("report.md".to_string(), md));
+    files.insert(1, ("report.html".to_string(), html));
+    commit(dir, &parent, &mut files)?;
     Ok(files.into_iter().map(|(n, _)| n).collect())
 }
 

@@ -211,7 +211,7 @@ const VERDICTS: [Verdict; 5] = [
     Verdict::DerivationDiffers,
 ];
 
-const STYLE: &str = r##"
+pub(crate) const STYLE: &str = r##"
 body { font-family: Georgia, "Times New Roman", serif; margin: 0 auto; max-width: 1200px; padding: 0 1.5em 4em; color: #222; line-height: 1.45; }
 h1 { font-size: 1.7em; margin-top: 1.2em; }
 h2 { border-bottom: 1px solid #bbb; margin-top: 2em; }

@@ -306,3 +306,69 @@ fn bicycleparameters_files_with_riders_warnings_and_strict() {
     assert_eq!(code, 2);
     assert!(stderr.starts_with("error: a value is required for '--rider <FILE.txt>'"), "{stderr}");
 }
+
+#[test]
+fn a_report_for_one_bicycle_names_its_file_and_rider() {
+    let dir = scratch("bicycle-report");
+    let data = concat!(env!("CARGO_MANIFEST_DIR"), "/../../data/bicycleparameters");
+    let bike = format!("{data}/bicycles/Browser/Parameters/BrowserBenchmark.txt");
+    let rider = format!("{data}/riders/Jason/Parameters/JasonBrowserBenchmark.txt");
+    let tms = format!("{data}/bicycles/Tms/Parameters/TmsBenchmark.txt");
+    // With the rider: the bicycle's window (as `window --rider` prints it), its eigenvalues,
+    // the uncertainty the files state, and no chapter of the memoir.
+    let args = ["report", "--out", "r", "--model", &bike, "--rider", &rider];
+    let (code, stdout, stderr) = carvallo_in(&dir, &args);
+    assert_eq!((code, stderr.as_str()), (0, ""), "{stderr}");
+    assert_eq!(
+        stdout,
+        "r/report.md\nr/report.html\nr/eigenvalues.svg\nr/eigenvalue_bands.svg\nr/.carvallo-report\n"
+    );
+    let md = std::fs::read_to_string(dir.join("r/report.md")).unwrap();
+    let html = std::fs::read_to_string(dir.join("r/report.html")).unwrap();
+    let (_, window, _) = carvallo(&["window", "--model", &bike, "--rider", &rider, "--json"]);
+    let w: serde_json::Value = serde_json::from_str(&window).unwrap();
+    let weave = format!("Weave speed: {:?} m/s.", w["weave_speed"].as_f64().unwrap());
+    for page in [&md, &html] {
+        assert!(page.contains(&bike) && page.contains(&rider), "names the files");
+        assert!(page.contains(&weave), "{weave}");
+        assert!(page.contains("Uncertainty of the bicycle") && page.contains("eigenvalues.svg"));
+        assert!(!page.contains("concordance"), "no memoir chapter");
+    }
+    // Browser alone: the broken triangle inequality is a warning, in the report too; --strict
+    // refuses it and writes nothing.
+    let (code, _, stderr) = carvallo_in(&dir, &["report", "--out", "r", "--model", &bike]);
+    assert_eq!(code, 0);
+    assert!(stderr.contains("IByy 1.3163960125 breaks a triangle inequality"), "{stderr}");
+    let md = std::fs::read_to_string(dir.join("r/report.md")).unwrap();
+    assert!(md.contains("Warning: ") && md.contains("by 2.331 %"), "{md}");
+    let args = ["report", "--out", "s", "--model", &bike, "--strict"];
+    let (code, stdout, stderr) = carvallo_in(&dir, &args);
+    assert_eq!((code, stdout.as_str()), (2, ""));
+    assert!(stderr.contains("invalid IByy 1.3163960125: exceeds IBxx + IBzz"), "{stderr}");
+    assert!(!dir.join("s").exists(), "nothing may be written");
+    // The two-mass-skate: stable above its weave speed, no capsize, no uncertainty stated.
+    let (code, stdout, _) = carvallo_in(&dir, &["report", "--out", "t", "--model", &tms]);
+    let files = "t/report.md\nt/report.html\nt/eigenvalues.svg\nt/.carvallo-report\n";
+    assert_eq!((code, stdout.as_str()), (0, files));
+    let md = std::fs::read_to_string(dir.join("t/report.md")).unwrap();
+    assert!(md.contains("Capsize speed: none. Stable above 2.841008323370"), "{md}");
+    // The whole report simulates the nonlinear bicycle: refused for it, nothing written.
+    let (code, _, stderr) =
+        carvallo_in(&dir, &["report", "--out", "u", "--model", &tms, "--memoir"]);
+    assert_eq!(code, 2, "{stderr}");
+    assert!(stderr.contains("for --memoir: the whole report simulates"), "{stderr}");
+    assert!(!dir.join("u").exists(), "nothing may be written");
+    // simulate takes --rider; the nonlinear model refuses the two-mass-skate by name.
+    let sim = ["--speed", "5", "--lean0", "0.01", "--duration", "0.05", "--json"];
+    let (code, out, stderr) =
+        carvallo(&[&["simulate", "--model", &bike, "--rider", &rider][..], &sim].concat());
+    assert_eq!((code, stderr.as_str()), (0, ""), "{stderr}");
+    assert!(out.contains("\"energy_drift\""));
+    let (code, _, stderr) = carvallo(&[&["simulate", "--model", &tms][..], &sim].concat());
+    assert_eq!(code, 2);
+    assert!(
+        stderr.contains("invalid rR 0.0: must be positive for the nonlinear model"),
+        "{stderr}"
+    );
+    let _ = std::fs::remove_dir_all(&dir);
+}

@@ -10,7 +10,7 @@
 //! tests with the rest of the workspace and needs no Python.
 
 use carvallo::parameter_text::UncertainParams;
-use carvallo::whipple::{WhippleParams, PARAM_NAMES};
+use carvallo::whipple::{TriangleWarning, WhippleParams, PARAM_NAMES};
 
 #[cfg(feature = "python")]
 mod python;
@@ -58,6 +58,26 @@ pub fn params_from_pairs(pairs: &[(String, f64)]) -> Result<WhippleParams, Strin
     WhippleParams::from_values(values_from_pairs(pairs)?).map_err(|e| e.to_string())
 }
 
+/// A bicycle from a mapping `name -> value` as the readers of parameter files take it
+/// ([`WhippleParams::from_values_warning`]): moments of inertia breaking a triangle inequality
+/// are accepted and returned as warnings, or, when `strict`, an error as in
+/// [`params_from_pairs`].
+///
+/// # Errors
+/// As [`params_from_pairs`] (with `strict`) or [`WhippleParams::from_values_warning`].
+pub fn params_from_pairs_warning(
+    pairs: &[(String, f64)],
+    strict: bool,
+) -> Result<(WhippleParams, Vec<TriangleWarning>), String> {
+    let values = values_from_pairs(pairs)?;
+    if strict {
+        return WhippleParams::from_values(values)
+            .map(|p| (p, Vec::new()))
+            .map_err(|e| e.to_string());
+    }
+    WhippleParams::from_values_warning(values).map_err(|e| e.to_string())
+}
+
 /// Standard deviations from a mapping `name -> sigma` (missing names have none).
 ///
 /// # Errors
@@ -91,6 +111,20 @@ pub fn uncertain_from_pairs(
     sigma: &[(String, f64)],
 ) -> Result<UncertainParams, String> {
     Ok(UncertainParams { params: params_from_pairs(params)?, sigma: sigma_from_pairs(sigma)? })
+}
+
+/// A bicycle with uncertainties from two mappings, broken triangle inequalities returned as
+/// warnings unless `strict` (see [`params_from_pairs_warning`]).
+///
+/// # Errors
+/// As [`params_from_pairs_warning`] and [`sigma_from_pairs`].
+pub fn uncertain_from_pairs_warning(
+    params: &[(String, f64)],
+    sigma: &[(String, f64)],
+    strict: bool,
+) -> Result<(UncertainParams, Vec<TriangleWarning>), String> {
+    let (params, warnings) = params_from_pairs_warning(params, strict)?;
+    Ok((UncertainParams { params, sigma: sigma_from_pairs(sigma)? }, warnings))
 }
 
 /// `(name, value)` pairs of a bicycle in the order of [`PARAM_NAMES`].
@@ -134,6 +168,32 @@ mod tests {
         assert_eq!(
             sigma_from_pairs(&[("q".into(), 0.1)]).unwrap_err(),
             "unknown parameter q in the uncertainties"
+        );
+    }
+
+    #[test]
+    fn broken_triangle_inequalities_are_warnings_unless_strict() {
+        let mut p = benchmark_pairs();
+        // IByy above IBxx + IBzz = 12.0 by 5 %.
+        p[12].1 = 12.6;
+        assert_eq!(
+            params_from_pairs(&p).unwrap_err(),
+            "invalid IByy 12.6: exceeds IBxx + IBzz, the sum of the other two principal moments (triangle inequality)"
+        );
+        assert_eq!(
+            params_from_pairs_warning(&p, true).unwrap_err(),
+            params_from_pairs(&p).unwrap_err()
+        );
+        let (params, warnings) = params_from_pairs_warning(&p, false).expect("computed as given");
+        assert_eq!(params.get("IByy"), Some(12.6));
+        assert_eq!(warnings.iter().map(|w| w.key).collect::<Vec<_>>(), ["IByy"]);
+        let (u, warnings) =
+            uncertain_from_pairs_warning(&p, &[("IByy".into(), 0.1)], false).expect("computed");
+        assert_eq!((u.sigma[12], warnings.len()), (0.1, 1));
+        p[10].1 = -85.0;
+        assert_eq!(
+            params_from_pairs_warning(&p, false).unwrap_err(),
+            "invalid mB -85.0: must be positive"
         );
     }
 }

@@ -1,12 +1,19 @@
 //! The Python module `carvallo` (PyO3): thin wrappers over the runtime crate, numpy arrays in
 //! and out, every error a `carvallo.ParameterError` (a `ValueError`) whose message names the key
 //! and the value. `carvallo.pyi` beside `Cargo.toml` gives the types.
+//!
+//! Every function that takes a parameter dict reads it as the parameter files are read
+//! (`load_parameters`, the command line's `--model`): moments of inertia that break a triangle
+//! inequality are computed as given with a `carvallo.PhysicsWarning` naming the parameter and
+//! the relative violation, or refused with `strict=True` (the command line's `--strict`).
 
 use std::sync::atomic::AtomicUsize;
 
-use carvallo::parameter_text::{add_rider, Rider, UncertainParams};
+use carvallo::parameter_text::{Rider, UncertainParams, RIDER_NAMES};
 use carvallo::sweep::Method;
-use carvallo::whipple::{StabilityWindow, Whipple, WhippleParams, FIELD_PATHS, PARAM_NAMES};
+use carvallo::whipple::{
+    StabilityWindow, TriangleWarning, Whipple, WhippleParams, FIELD_PATHS, PARAM_NAMES,
+};
 use carvallo::whipple_nonlinear::WhippleNonlinear;
 use carvallo::whipple_uncertainty as unc;
 use numpy::{
@@ -15,7 +22,7 @@ use numpy::{
 use pyo3::create_exception;
 use pyo3::exceptions::PyValueError;
 use pyo3::prelude::*;
-use pyo3::types::{PyDict, PyList};
+use pyo3::types::{IntoPyDict, PyDict, PyList};
 
 create_exception!(
     carvallo,
@@ -58,12 +65,40 @@ fn pairs(mapping: &Bound<'_, PyAny>, what: &str) -> PyResult<Vec<(String, f64)>>
     Ok(out)
 }
 
-fn params_of(mapping: &Bound<'_, PyAny>) -> PyResult<WhippleParams> {
-    crate::params_from_pairs(&pairs(mapping, "params")?).map_err(err)
+/// Each warning as a `carvallo.PhysicsWarning` (`warnings.warn`), prefixed by `source`.
+fn warn_all(py: Python<'_>, source: &str, warnings: &[TriangleWarning]) -> PyResult<()> {
+    let category = py.get_type::<PhysicsWarning>();
+    for w in warnings {
+        let message = std::ffi::CString::new(format!("{source}: {w}"))
+            .map_err(|_| err("a warning message holds a NUL byte"))?;
+        PyErr::warn(py, category.as_any(), &message, 1)?;
+    }
+    Ok(())
 }
 
-fn uncertain_of(params: &Bound<'_, PyAny>, sigma: &Bound<'_, PyAny>) -> PyResult<UncertainParams> {
-    crate::uncertain_from_pairs(&pairs(params, "params")?, &pairs(sigma, "sigma")?).map_err(err)
+/// The bicycle of a parameter dict, as the readers of parameter files take it: moments of
+/// inertia breaking a triangle inequality are a `PhysicsWarning`, or an error when `strict`.
+fn params_of(mapping: &Bound<'_, PyAny>, strict: bool) -> PyResult<WhippleParams> {
+    let (p, warnings) =
+        crate::params_from_pairs_warning(&pairs(mapping, "params")?, strict).map_err(err)?;
+    warn_all(mapping.py(), "params", &warnings)?;
+    Ok(p)
+}
+
+/// As [`params_of`], with the standard deviations `sigma`.
+fn uncertain_of(
+    params: &Bound<'_, PyAny>,
+    sigma: &Bound<'_, PyAny>,
+    strict: bool,
+) -> PyResult<UncertainParams> {
+    let (u, warnings) = crate::uncertain_from_pairs_warning(
+        &pairs(params, "params")?,
+        &pairs(sigma, "sigma")?,
+        strict,
+    )
+    .map_err(err)?;
+    warn_all(params.py(), "params", &warnings)?;
+    Ok(u)
 }
 
 fn dict_of<'py>(py: Python<'py>, values: &[f64; 26]) -> PyResult<Bound<'py, PyDict>> {
@@ -97,8 +132,13 @@ fn benchmark(py: Python<'_>) -> PyResult<Bound<'_, PyDict>> {
 /// `ixx`, `iyy`) and `rear_frame`, `front_frame` (`x`, `z`, `mass`, `ixx`, `iyy`, `izz`,
 /// `ixz`), validated as every parameter dict.
 #[pyfunction]
-fn design<'py>(py: Python<'py>, params: &Bound<'py, PyAny>) -> PyResult<Bound<'py, PyDict>> {
-    let values = params_of(params)?.design().to_array();
+#[pyo3(signature = (params, strict = false))]
+fn design<'py>(
+    py: Python<'py>,
+    params: &Bound<'py, PyAny>,
+    strict: bool,
+) -> PyResult<Bound<'py, PyDict>> {
+    let values = params_of(params, strict)?.design().to_array();
     let d = PyDict::new(py);
     for (path, v) in FIELD_PATHS.iter().zip(values) {
         match path.split_once('.') {
@@ -152,7 +192,7 @@ fn load_parameters<'py>(
     if let Some(r) = rider {
         let rider = Rider::from_text(&read(r, "rider")?)
             .map_err(|e| err(format!("invalid rider file `{r}`: {e}")))?;
-        loaded = add_rider(&loaded.params, &rider)
+        loaded = carvallo::parameter_text::add_rider(&loaded.params, &rider)
             .map_err(|e| err(format!("invalid rider file `{r}` on `{path}`: {e}")))?;
         if strict {
             if let Some(w) = loaded.warnings.first() {
@@ -160,12 +200,74 @@ fn load_parameters<'py>(
             }
         }
     }
-    let category = py.get_type::<PhysicsWarning>();
-    for w in &loaded.warnings {
-        let message = std::ffi::CString::new(format!("{path}: {w}"))
-            .map_err(|_| err("a warning message holds a NUL byte"))?;
-        PyErr::warn(py, category.as_any(), &message, 1)?;
+    warn_all(py, path, &loaded.warnings)?;
+    let u = loaded.params;
+    Ok((dict_of(py, u.params.values())?, dict_of(py, &u.sigma)?))
+}
+
+/// The bicycle `params` (with the standard deviations `sigma`, none if omitted) with a rider
+/// added to its rear frame, as `load_parameters(path, rider=...)` and BicycleParameters'
+/// `Bicycle.add_rider` do: `rider` is the path of a BicycleParameters rider file or a dict of
+/// `mB, xB, yB, zB, IBxx, IBxz, IByy, IBzz` (the rider's body in the bicycle's frame, inertia
+/// about its mass centre; no uncertainty). A broken triangle inequality of the combined frame is
+/// a `PhysicsWarning`, or an error when `strict`. Returns `(params, sigma)`.
+#[pyfunction]
+#[pyo3(signature = (params, rider, sigma = None, strict = false))]
+fn add_rider<'py>(
+    py: Python<'py>,
+    params: &Bound<'py, PyAny>,
+    rider: &Bound<'py, PyAny>,
+    sigma: Option<&Bound<'py, PyAny>>,
+    strict: bool,
+) -> PyResult<(Bound<'py, PyDict>, Bound<'py, PyDict>)> {
+    let u = match sigma {
+        Some(s) => uncertain_of(params, s, strict)?,
+        None => UncertainParams::exact(params_of(params, strict)?),
+    };
+    let (rider, what) = if let Ok(path) = rider.extract::<std::path::PathBuf>() {
+        let path = path.display().to_string();
+        let text = std::fs::read_to_string(&path).map_err(|e| {
+            err(format!("cannot read rider file `{path}`: {}", e.to_string().to_lowercase()))
+        })?;
+        let r = Rider::from_text(&text)
+            .map_err(|e| err(format!("invalid rider file `{path}`: {e}")))?;
+        (r, format!("rider file `{path}`"))
+    } else {
+        let mut values = [f64::NAN; 8];
+        let mut seen = [false; 8];
+        for (name, v) in pairs(rider, "rider")? {
+            let k = RIDER_NAMES.iter().position(|n| *n == name).ok_or_else(|| {
+                err(format!(
+                    "unknown rider parameter {name} = {v:?} (the names are {})",
+                    RIDER_NAMES.join(", ")
+                ))
+            })?;
+            if !v.is_finite() {
+                return Err(err(format!("invalid rider {name} {v:?}: must be finite")));
+            }
+            (values[k], seen[k]) = (v, true);
+        }
+        if let Some(k) = seen.iter().position(|s| !s) {
+            return Err(err(format!("missing rider parameter {}", RIDER_NAMES[k])));
+        }
+        for k in [0, 4, 6, 7] {
+            if values[k] <= 0.0 {
+                return Err(err(format!(
+                    "invalid rider {} {:?}: must be positive (the rider's mass and principal moments)",
+                    RIDER_NAMES[k], values[k]
+                )));
+            }
+        }
+        (Rider { values, sigma: [0.0; 8] }, "rider".to_string())
+    };
+    let loaded = carvallo::parameter_text::add_rider(&u, &rider)
+        .map_err(|e| err(format!("invalid {what}: {e}")))?;
+    if strict {
+        if let Some(w) = loaded.warnings.first() {
+            return Err(err(format!("invalid params with the {what}: {w}")));
+        }
     }
+    warn_all(py, &format!("params with the {what}"), &loaded.warnings)?;
     let u = loaded.params;
     Ok((dict_of(py, u.params.values())?, dict_of(py, &u.sigma)?))
 }
@@ -183,8 +285,13 @@ fn parse_parameters<'py>(
 
 /// `{"M", "C1", "K0", "K2"}`: the 2x2 matrices of the linearised equations.
 #[pyfunction]
-fn matrices<'py>(py: Python<'py>, params: &Bound<'py, PyAny>) -> PyResult<Bound<'py, PyDict>> {
-    let m = Whipple::new(params_of(params)?).matrices();
+#[pyo3(signature = (params, strict = false))]
+fn matrices<'py>(
+    py: Python<'py>,
+    params: &Bound<'py, PyAny>,
+    strict: bool,
+) -> PyResult<Bound<'py, PyDict>> {
+    let m = Whipple::new(params_of(params, strict)?).matrices();
     let d = PyDict::new(py);
     for (name, a) in [("M", m.m), ("C1", m.c1), ("K0", m.k0), ("K2", m.k2)] {
         let rows: Vec<Vec<f64>> = a.iter().map(|r| r.to_vec()).collect();
@@ -196,12 +303,14 @@ fn matrices<'py>(py: Python<'py>, params: &Bound<'py, PyAny>) -> PyResult<Bound<
 /// The 4x4 state matrix of (lean, steer, lean rate, steer rate) at `speed`; an array of speeds
 /// gives shape (n, 4, 4).
 #[pyfunction]
+#[pyo3(signature = (params, speed, strict = false))]
 fn state_matrix<'py>(
     py: Python<'py>,
     params: &Bound<'py, PyAny>,
     speed: &Bound<'py, PyAny>,
+    strict: bool,
 ) -> PyResult<Bound<'py, PyAny>> {
-    let bike = Whipple::new(params_of(params)?);
+    let bike = Whipple::new(params_of(params, strict)?);
     let scalar = speed.extract::<f64>().is_ok();
     let speeds = speeds_of(speed)?;
     let mut flat = Vec::with_capacity(16 * speeds.len());
@@ -225,12 +334,14 @@ fn state_matrix<'py>(
 /// (n, 4, 4) and (n, 4, 2), x = (lean, steer, lean rate, steer rate), u = (T_phi, T_delta),
 /// C = I, D = 0 (as `carvallo statespace`).
 #[pyfunction]
+#[pyo3(signature = (params, speeds, strict = false))]
 fn state_space<'py>(
     py: Python<'py>,
     params: &Bound<'py, PyAny>,
     speeds: &Bound<'py, PyAny>,
+    strict: bool,
 ) -> PyResult<(Bound<'py, PyAny>, Bound<'py, PyAny>)> {
-    let bike = Whipple::new(params_of(params)?);
+    let bike = Whipple::new(params_of(params, strict)?);
     let speeds = speeds_of(speeds)?;
     let spaces = bike.state_spaces(&speeds);
     let a: Vec<f64> = spaces.iter().flat_map(|s| s.a_rows().into_iter().flatten()).collect();
@@ -248,6 +359,7 @@ fn state_space<'py>(
 /// "phase_deg": (n, m)}` for `n` speeds and `m` frequencies, the phase unwrapped along the
 /// frequencies in their order.
 #[pyfunction]
+#[pyo3(signature = (params, speeds, omegas, input, output, strict = false))]
 fn frequency_response<'py>(
     py: Python<'py>,
     params: &Bound<'py, PyAny>,
@@ -255,9 +367,10 @@ fn frequency_response<'py>(
     omegas: &Bound<'py, PyAny>,
     input: &str,
     output: &str,
+    strict: bool,
 ) -> PyResult<Bound<'py, PyDict>> {
     use carvallo::whipple::transfer::{Input, Output};
-    let bike = Whipple::new(params_of(params)?);
+    let bike = Whipple::new(params_of(params, strict)?);
     let speeds = speeds_of(speeds)?;
     let omegas: Vec<f64> = if let Ok(x) = omegas.extract::<f64>() {
         vec![x]
@@ -290,12 +403,14 @@ fn frequency_response<'py>(
 /// "caster"), the eigenvalues (n, 4) complex and the unit eigenvectors (n, 4, 4) complex,
 /// `vectors[k, i]` the state (lean, steer, lean rate, steer rate) of mode `i`.
 #[pyfunction]
+#[pyo3(signature = (params, speeds, strict = false))]
 fn modes<'py>(
     py: Python<'py>,
     params: &Bound<'py, PyAny>,
     speeds: &Bound<'py, PyAny>,
+    strict: bool,
 ) -> PyResult<(Vec<&'static str>, Bound<'py, PyAny>, Bound<'py, PyAny>)> {
-    let bike = Whipple::new(params_of(params)?);
+    let bike = Whipple::new(params_of(params, strict)?);
     let speeds = speeds_of(speeds)?;
     let all = bike
         .modes(&speeds)
@@ -320,12 +435,14 @@ fn modes<'py>(
 /// The eigenvalues at each speed, shape (n, 4) complex, sorted by real then imaginary part (as
 /// `carvallo eig`).
 #[pyfunction]
+#[pyo3(signature = (params, speeds, strict = false))]
 fn eigenvalues<'py>(
     py: Python<'py>,
     params: &Bound<'py, PyAny>,
     speeds: &Bound<'py, PyAny>,
+    strict: bool,
 ) -> PyResult<Bound<'py, PyArray2<Complex64>>> {
-    let bike = Whipple::new(params_of(params)?);
+    let bike = Whipple::new(params_of(params, strict)?);
     let speeds = speeds_of(speeds)?;
     let mut flat = Vec::with_capacity(4 * speeds.len());
     for v in &speeds {
@@ -349,37 +466,89 @@ fn window_dict<'py>(py: Python<'py>, w: &StabilityWindow) -> PyResult<Bound<'py,
 /// `{"weave_speed", "capsize_speed", "stable": [(from, to), ...]}` (m/s; None where a speed
 /// does not exist, inf for an interval stable at every larger speed), as `carvallo window`.
 #[pyfunction]
-fn window<'py>(py: Python<'py>, params: &Bound<'py, PyAny>) -> PyResult<Bound<'py, PyDict>> {
-    window_dict(py, &Whipple::new(params_of(params)?).stability_window())
+#[pyo3(signature = (params, strict = false))]
+fn window<'py>(
+    py: Python<'py>,
+    params: &Bound<'py, PyAny>,
+    strict: bool,
+) -> PyResult<Bound<'py, PyDict>> {
+    window_dict(py, &Whipple::new(params_of(params, strict)?).stability_window())
 }
 
-fn designs_of(designs: PyReadonlyArray2<'_, f64>) -> PyResult<Vec<[f64; 26]>> {
-    let shape = designs.shape();
+/// The rows of `designs`, anything numpy reads as a 2-d array of floats of shape (n, 26)
+/// (`numpy.asarray(designs, dtype=float64)`); otherwise a `ParameterError` naming what it got.
+fn designs_of(designs: &Bound<'_, PyAny>) -> PyResult<Vec<[f64; 26]>> {
+    let what = || {
+        let shape =
+            designs.getattr("shape").ok().and_then(|s| s.repr().ok()).map(|r| r.to_string());
+        let dtype = designs.getattr("dtype").ok().and_then(|s| s.str().ok()).map(|r| r.to_string());
+        match (shape, dtype) {
+            (Some(shape), Some(dtype)) => format!("an array of shape {shape} and dtype {dtype}"),
+            _ => format!(
+                "a {}",
+                designs.get_type().name().map(|n| n.to_string()).unwrap_or_default()
+            ),
+        }
+    };
+    let bad = || {
+        err(format!(
+            "designs must be an array of floats of shape (n, 26), columns in the order of PARAM_NAMES; got {}",
+            what()
+        ))
+    };
+    let np = designs.py().import("numpy")?;
+    let array = np
+        .getattr("asarray")?
+        .call((designs,), Some(&[("dtype", "float64")].into_py_dict(designs.py())?))
+        .map_err(|_| bad())?;
+    let array: PyReadonlyArray2<'_, f64> = array.extract().map_err(|_| bad())?;
+    let shape = array.shape();
     if shape[1] != 26 {
-        return Err(err(format!(
-            "designs must have shape (n, 26), columns in the order of PARAM_NAMES; got {shape:?}"
-        )));
+        return Err(bad());
     }
-    let a = designs.as_array();
+    let a = array.as_array();
     Ok(a.rows().into_iter().map(|r| std::array::from_fn(|k| r[k])).collect())
 }
 
 /// The weave and capsize speeds of many designs (rows in the order of `PARAM_NAMES`), shape
-/// (n, 2), NaN where a design has none; each row is validated (`validate=False` skips it, as
-/// for Monte Carlo samples). Parallel; the same numbers as `window` row by row.
+/// (n, 2), NaN where a design has none; each row is validated as a parameter dict
+/// (`validate=False` skips it, as for Monte Carlo samples): rows breaking a triangle inequality
+/// of the moments of inertia give one `PhysicsWarning` naming how many and the first, or an
+/// error when `strict`. Parallel; the same numbers as `window` row by row.
 #[pyfunction]
-#[pyo3(signature = (designs, validate = true))]
+#[pyo3(signature = (designs, validate = true, strict = false))]
 fn windows<'py>(
     py: Python<'py>,
-    designs: PyReadonlyArray2<'py, f64>,
+    designs: &Bound<'py, PyAny>,
     validate: bool,
+    strict: bool,
 ) -> PyResult<Bound<'py, PyArray2<f64>>> {
     let rows = designs_of(designs)?;
-    let ws = if validate {
-        unc::windows(&rows).map_err(|(i, e)| err(format!("design {i}: {e}")))?
-    } else {
-        py.detach(|| unc::windows_unchecked(&rows))
-    };
+    if validate {
+        let (mut first, mut broken) = (None, 0usize);
+        for (i, row) in rows.iter().enumerate() {
+            let warnings = if strict {
+                WhippleParams::from_values(*row).map(|_| Vec::new())
+            } else {
+                WhippleParams::from_values_warning(*row).map(|(_, w)| w)
+            }
+            .map_err(|e| err(format!("design {i}: {e}")))?;
+            if let Some(w) = warnings.first() {
+                broken += 1;
+                first.get_or_insert_with(|| format!("design {i}: {w}"));
+            }
+        }
+        if let Some(first) = first {
+            let message = std::ffi::CString::new(format!(
+                "{broken} of {} designs break a triangle inequality of the moments of inertia, \
+                 computed as given; the first, {first}",
+                rows.len()
+            ))
+            .map_err(|_| err("a warning message holds a NUL byte"))?;
+            PyErr::warn(py, py.get_type::<PhysicsWarning>().as_any(), &message, 1)?;
+        }
+    }
+    let ws = py.detach(|| unc::windows_unchecked(&rows));
     let flat: Vec<f64> = ws
         .iter()
         .flat_map(|w| [w.weave_speed.unwrap_or(f64::NAN), w.capsize_speed.unwrap_or(f64::NAN)])
@@ -390,7 +559,9 @@ fn windows<'py>(
 /// Varies one parameter linearly over `count` designs and summarises their windows, as
 /// `carvallo sweep --json` (method "hurwitz" or "eigen").
 #[pyfunction]
-#[pyo3(signature = (params, name, start, stop, count, method = "hurwitz"))]
+#[pyo3(signature = (params, name, start, stop, count, method = "hurwitz", strict = false))]
+// The arguments are the Python function's keywords.
+#[allow(clippy::too_many_arguments)]
 fn sweep<'py>(
     py: Python<'py>,
     params: &Bound<'py, PyAny>,
@@ -399,8 +570,9 @@ fn sweep<'py>(
     stop: f64,
     count: usize,
     method: &str,
+    strict: bool,
 ) -> PyResult<Bound<'py, PyDict>> {
-    let base = params_of(params)?;
+    let base = params_of(params, strict)?;
     let m = match method {
         "hurwitz" => Method::Hurwitz,
         "eigen" => Method::Eigen,
@@ -437,7 +609,9 @@ fn sweep<'py>(
 /// `pitch`, `speed_rear`, `rear_x`, `rear_y`, `front_x`, `front_y`, `energy`) and the floats
 /// `step`, `energy_drift`, `max_contact_residual`.
 #[pyfunction]
-#[pyo3(signature = (params, speed, lean0, duration, step = 0.001, every = 10))]
+#[pyo3(signature = (params, speed, lean0, duration, step = 0.001, every = 10, strict = false))]
+// The arguments are the Python function's keywords.
+#[allow(clippy::too_many_arguments)]
 fn simulate<'py>(
     py: Python<'py>,
     params: &Bound<'py, PyAny>,
@@ -446,8 +620,9 @@ fn simulate<'py>(
     duration: f64,
     step: f64,
     every: usize,
+    strict: bool,
 ) -> PyResult<Bound<'py, PyDict>> {
-    let bike = WhippleNonlinear::new(params_of(params)?);
+    let bike = WhippleNonlinear::new(params_of(params, strict)?);
     let start = bike.initial_state(speed, lean0).map_err(|e| err(e.to_string()))?;
     let tr = py
         .detach(|| bike.simulate(start, duration, step, every))
@@ -487,11 +662,13 @@ fn report(py: Python<'_>) -> PyResult<Bound<'_, PyAny>> {
 /// `{"weave_speed", "capsize_speed", "d_weave": {name: dv/dp}, "d_capsize": {...}}` (None
 /// where a speed does not exist).
 #[pyfunction]
+#[pyo3(signature = (params, strict = false))]
 fn speed_gradients<'py>(
     py: Python<'py>,
     params: &Bound<'py, PyAny>,
+    strict: bool,
 ) -> PyResult<Bound<'py, PyDict>> {
-    let g = unc::speed_gradients(&params_of(params)?);
+    let g = unc::speed_gradients(&params_of(params, strict)?);
     let d = PyDict::new(py);
     d.set_item("weave_speed", g.weave.as_ref().map(|w| w.speed))?;
     d.set_item("capsize_speed", g.capsize.as_ref().map(|c| c.speed))?;
@@ -504,12 +681,14 @@ fn speed_gradients<'py>(
 /// with the standard deviations `sigma` (a dict; missing names have none):
 /// `{"weave_speed", "weave_std", "capsize_speed", "capsize_std"}`.
 #[pyfunction]
+#[pyo3(signature = (params, sigma, strict = false))]
 fn first_order<'py>(
     py: Python<'py>,
     params: &Bound<'py, PyAny>,
     sigma: &Bound<'py, PyAny>,
+    strict: bool,
 ) -> PyResult<Bound<'py, PyDict>> {
-    let u = uncertain_of(params, sigma)?;
+    let u = uncertain_of(params, sigma, strict)?;
     let g = unc::speed_gradients(&u.params);
     let d = PyDict::new(py);
     d.set_item("weave_speed", g.weave.as_ref().map(|w| w.speed))?;
@@ -522,15 +701,16 @@ fn first_order<'py>(
 /// Monte Carlo: `samples` designs drawn normal about `params` with `sigma` (seeded);
 /// `{"weave": array, "capsize": array, "invalid": int}` (NaN where a sample has no such speed).
 #[pyfunction]
-#[pyo3(signature = (params, sigma, samples = 10000, seed = 1897))]
+#[pyo3(signature = (params, sigma, samples = 10000, seed = 1897, strict = false))]
 fn monte_carlo<'py>(
     py: Python<'py>,
     params: &Bound<'py, PyAny>,
     sigma: &Bound<'py, PyAny>,
     samples: usize,
     seed: u64,
+    strict: bool,
 ) -> PyResult<Bound<'py, PyDict>> {
-    let u = uncertain_of(params, sigma)?;
+    let u = uncertain_of(params, sigma, strict)?;
     let mc = py.detach(|| unc::monte_carlo(&u, samples, seed));
     let d = PyDict::new(py);
     d.set_item("weave", PyArray1::from_vec(py, mc.weave))?;
@@ -548,7 +728,9 @@ fn rows4<'py>(py: Python<'py>, rows: &[[f64; 4]]) -> PyResult<Bound<'py, PyArray
 /// designs: `{"speeds", "nominal", "lower", "upper"}`, the last three of shape (n, 4), rank by
 /// rank of the sorted real parts.
 #[pyfunction]
-#[pyo3(signature = (params, sigma, speeds, samples = 2000, seed = 1897, quantiles = (0.025, 0.975)))]
+#[pyo3(signature = (params, sigma, speeds, samples = 2000, seed = 1897, quantiles = (0.025, 0.975), strict = false))]
+// The arguments are the Python function's keywords.
+#[allow(clippy::too_many_arguments)]
 fn eigenvalue_bands<'py>(
     py: Python<'py>,
     params: &Bound<'py, PyAny>,
@@ -557,8 +739,9 @@ fn eigenvalue_bands<'py>(
     samples: usize,
     seed: u64,
     quantiles: (f64, f64),
+    strict: bool,
 ) -> PyResult<Bound<'py, PyDict>> {
-    let u = uncertain_of(params, sigma)?;
+    let u = uncertain_of(params, sigma, strict)?;
     let speeds = speeds_of(speeds)?;
     let (lo, hi) = quantiles;
     if !(0.0..=1.0).contains(&lo) || !(0.0..=1.0).contains(&hi) || lo > hi {
@@ -586,6 +769,7 @@ fn carvallo_module(m: &Bound<'_, PyModule>) -> PyResult<()> {
     m.add_function(wrap_pyfunction!(design, m)?)?;
     m.add_function(wrap_pyfunction!(load_parameters, m)?)?;
     m.add_function(wrap_pyfunction!(parse_parameters, m)?)?;
+    m.add_function(wrap_pyfunction!(add_rider, m)?)?;
     m.add_function(wrap_pyfunction!(matrices, m)?)?;
     m.add_function(wrap_pyfunction!(state_matrix, m)?)?;
     m.add_function(wrap_pyfunction!(state_space, m)?)?;

@@ -8,7 +8,10 @@
 //! them as a JSON array with the keys `id`, `section`, `claim`, `how`, `evidence`, `verdict`,
 //! `note`;
 //! `report --out DIR` writes the report directory ([`crate::report_dir`]) and prints the paths
-//! it wrote.
+//! it wrote; `report --out DIR --model FILE [--rider FILE] [--strict]` writes the report of that
+//! bicycle alone (its window, eigenvalues against speed and uncertainty, naming the file and
+//! rider read; [`report_dir::write_bicycle_report`]) without the memoir's chapters, which
+//! `--memoir` adds back (the whole report, its bicycle figures drawn for FILE).
 //!
 //! A bad command line is a usage error of clap; an unusable output directory or model file is a
 //! [`BadInput`](crate::report_dir::BadInput), found before anything is written; both exit with
@@ -26,14 +29,27 @@ pub struct Args {
     /// Print the memoir's claims checked: claim, how checked, evidence, verdict
     #[arg(long, conflicts_with = "out")]
     pub claims: bool,
-    /// Write DIR/report.md, DIR/report.html (concordance, errata) and the SVG figures
+    /// Write DIR/report.md, DIR/report.html (concordance, errata; or the report of the bicycle
+    /// of --model) and the SVG figures
     #[arg(long, value_name = "DIR")]
     pub out: Option<String>,
-    /// The bicycle of the report's modern sections: `benchmark`, a parameter file; a
-    /// BicycleParameters FILE.txt with uncertainties adds their propagation and the
-    /// eigenvalues with uncertainty bands
+    /// The bicycle: `benchmark` (the whole report) or a parameter file, whose report alone is
+    /// written (window, eigenvalues against speed; stated uncertainties add their propagation
+    /// and the eigenvalues with uncertainty bands)
     #[arg(long, value_name = "MODEL", requires = "out")]
     pub model: Option<String>,
+    /// A BicycleParameters rider file (`name = value+/-sigma`) whose rider is added to the rear
+    /// frame of the bicycle of --model
+    #[arg(long, value_name = "FILE.txt", requires = "model")]
+    pub rider: Option<String>,
+    /// A moment of inertia of --model breaking a triangle inequality is an error instead of a
+    /// warning
+    #[arg(long, requires = "model")]
+    pub strict: bool,
+    /// With --model: write the whole report, the memoir's chapters with the bicycle figures of
+    /// --model, instead of the report of that bicycle alone
+    #[arg(long, requires = "model")]
+    pub memoir: bool,
 }
 
 /// What `carvallo report ...` asks for.
@@ -41,7 +57,7 @@ pub struct Args {
 enum Command {
     Print { json: bool },
     Claims { json: bool },
-    Write { dir: String, model: String },
+    Write { dir: String, model: String, rider: Option<String>, strict: bool, memoir: bool },
 }
 
 impl Args {
@@ -50,6 +66,9 @@ impl Args {
             Some(dir) => Command::Write {
                 dir: dir.clone(),
                 model: self.model.clone().unwrap_or_else(|| "benchmark".into()),
+                rider: self.rider.clone(),
+                strict: self.strict,
+                memoir: self.memoir,
             },
             None if self.claims => Command::Claims { json: self.json },
             None => Command::Print { json: self.json },
@@ -61,9 +80,32 @@ impl Args {
 /// [`BadInput`](report_dir::BadInput) or a failure to write).
 pub fn run(args: &Args) -> anyhow::Result<String> {
     match args.command() {
-        Command::Write { dir, model } => {
-            let params = crate::args::uncertain_model(&model).map_err(report_dir::BadInput)?;
-            let files = report_dir::write_report(std::path::Path::new(&dir), &params, &model)?;
+        Command::Write { dir, model, rider, strict, memoir } => {
+            let data = crate::args::DataOptions { rider: rider.clone(), strict };
+            let (params, warnings) =
+                crate::args::uncertain_bicycle(&model, &data).map_err(report_dir::BadInput)?;
+            let path = std::path::Path::new(&dir);
+            let skate = ["rR", "rF"].iter().find(|r| params.params.get(r) == Some(0.0));
+            if let (true, Some(r)) = (memoir, skate) {
+                return Err(report_dir::BadInput(format!(
+                    "invalid model file `{model}` for --memoir: the whole report simulates the \
+                     nonlinear bicycle, which needs wheels of positive radius ({r} = 0, the \
+                     two-mass-skate); the report of this bicycle alone (without --memoir) takes \
+                     the limit"
+                ))
+                .into());
+            }
+            let files = if memoir || (model == "benchmark" && rider.is_none()) {
+                report_dir::write_report(path, &params, &model)?
+            } else {
+                report_dir::write_bicycle_report(
+                    path,
+                    &params,
+                    &model,
+                    rider.as_deref(),
+                    &warnings,
+                )?
+            };
             Ok(files.iter().map(|f| format!("{dir}/{f}\n")).collect())
         }
         Command::Claims { json } => {
@@ -107,13 +149,23 @@ mod tests {
         assert_eq!(command(&["--json", "--claims"]), Ok(Command::Claims { json: true }));
         let e = command(&["--claims", "--out", "r"]).unwrap_err();
         assert!(e.contains("'--claims' cannot be used with '--out <DIR>'"), "{e}");
-        assert_eq!(
-            command(&["--out", "r"]),
-            Ok(Command::Write { dir: "r".into(), model: "benchmark".into() })
-        );
+        let write = |model: &str, rider: Option<&str>, strict: bool, memoir: bool| Command::Write {
+            dir: "r".into(),
+            model: model.into(),
+            rider: rider.map(String::from),
+            strict,
+            memoir,
+        };
+        assert_eq!(command(&["--out", "r"]), Ok(write("benchmark", None, false, false)));
         assert_eq!(
             command(&["--model", "b.toml", "--out", "r"]),
-            Ok(Command::Write { dir: "r".into(), model: "b.toml".into() })
+            Ok(write("b.toml", None, false, false))
+        );
+        assert_eq!(
+            command(&[
+                "--out", "r", "--model", "b.txt", "--rider", "j.txt", "--strict", "--memoir"
+            ]),
+            Ok(write("b.txt", Some("j.txt"), true, true))
         );
     }
 
@@ -126,6 +178,8 @@ mod tests {
             (&["--out", "a", "--out", "b"], "'--out <DIR>' cannot be used multiple times"),
             (&["--json", "--out", "a"], "'--json' cannot be used with '--out <DIR>'"),
             (&["--model", "b.toml"], "--out <DIR>"),
+            (&["--out", "r", "--rider", "j.txt"], "--model <MODEL>"),
+            (&["--out", "r", "--memoir"], "--model <MODEL>"),
         ] {
             let e = command(words).unwrap_err();
             assert!(e.contains(msg), "{words:?}: {e}");

@@ -5,21 +5,25 @@
 //! default): time, lean, steer, pitch, rear contact speed, both ground tracks, energy, and the
 //! energy drift and largest contact residual of the run.
 //!
-//! The parameter file is the anchors TOML format ([`crate::args::toml_model`]). Unknown,
+//! The parameter file is the anchors TOML format or BicycleParameters' text, with `--rider` and
+//! `--strict` as on `window` ([`crate::args::bicycle`]). Unknown,
 //! repeated or missing arguments, non-finite numbers and a failed simulation (the bicycle fell
 //! flat) are errors naming the value, exit code 2.
 
 use carvallo::whipple_nonlinear::WhippleNonlinear;
 use serde_json::json;
 
-use crate::args::{finite, toml_model};
+use crate::args::{finite, DataOptions};
 
 /// `carvallo simulate`: the nonlinear bicycle integrated from upright straight running.
 #[derive(Clone, Debug, PartialEq, clap::Args)]
 pub struct Args {
-    /// The bicycle: `benchmark` or a parameter file in the anchors' TOML format
+    /// The bicycle: `benchmark` or a parameter file (the anchors' TOML or BicycleParameters'
+    /// `name = value+/-sigma` text)
     #[arg(long, value_name = "MODEL")]
     pub model: String,
+    #[command(flatten)]
+    pub data: DataOptions,
     /// The initial forward speed [m/s]
     #[arg(long, value_name = "V", value_parser = finite, allow_hyphen_values = true)]
     pub speed: f64,
@@ -47,8 +51,8 @@ fn positive(v: &str) -> Result<usize, String> {
 
 /// Runs `carvallo simulate`: the text to print, or an error naming the bad value.
 pub fn run(cmd: &Args) -> Result<String, String> {
-    let Args { model, speed, lean0, duration, step, every, json } = cmd;
-    let bike = WhippleNonlinear::new(toml_model(model)?);
+    let Args { model, data, speed, lean0, duration, step, every, json } = cmd;
+    let bike = WhippleNonlinear::new(crate::args::bicycle(model, data)?);
     let start = bike.initial_state(*speed, *lean0).map_err(|e| e.to_string())?;
     let tr = bike.simulate(start, *duration, *step, *every).map_err(|e| e.to_string())?;
     if *json {
@@ -120,6 +124,7 @@ mod tests {
             parse::<Args>(&words),
             Ok(Args {
                 model: "benchmark".into(),
+                data: DataOptions::default(),
                 speed: 5.0,
                 lean0: 0.05,
                 duration: 2.0,

@@ -14,7 +14,7 @@ mod modern;
 use anyhow::Result;
 use carvallo::whipple::WhippleParams;
 
-pub use modern::{fig_eigenvalue_bands, BAND_SEED};
+pub use modern::{fig_bicycle_eigenvalues, fig_eigenvalue_bands, BAND_SEED};
 
 /// One figure of the report.
 pub struct Figure {

@@ -20,20 +20,19 @@ use plotters::prelude::*;
 use super::chart::{color, trim, Chart, Curve, Stroke, GREY};
 
 pub(super) fn fig_eigenvalues(p: &WhippleParams) -> Result<String> {
+    fig_bicycle_eigenvalues(p, "Benchmark bicycle: eigenvalues of the linearised equations", 10.0)
+}
+
+/// The eigenvalues of the bicycle `p` against speed up to `v_max` (401 speeds), titled
+/// `title`, the stable range shaded.
+pub fn fig_bicycle_eigenvalues(p: &WhippleParams, title: &str, v_max: f64) -> Result<String> {
     let bike = Whipple::new(p.clone());
-    let v_max = 10.0;
     let mut points = Vec::new();
     for k in 0..=400 {
         let v = v_max * k as f64 / 400.0;
         points.extend(bike.eigenvalues(v).iter().map(|e| (v, e.re, e.im)));
     }
-    let mut c = eigenvalue_chart(
-        "Benchmark bicycle: eigenvalues of the linearised equations",
-        v_max,
-        10.0,
-        points,
-        &bike.stability_window().stable,
-    );
+    let mut c = eigenvalue_chart(title, v_max, 10.0, points, &bike.stability_window().stable);
     c.legend = SeriesLabelPosition::LowerRight;
     c.render()
 }

@@ -22,7 +22,7 @@
 //!
 //! design.front_wheel.radius = -0.35;
 //! let err = Whipple::from_design(design).unwrap_err();
-//! assert_eq!(err.to_string(), "invalid rF -0.35: must be positive");
+//! assert_eq!(err.to_string(), "invalid rF -0.35: must not be negative");
 //! assert_eq!(BicycleDesign::field_path("rF"), Some("front_wheel.radius"));
 //! # Ok::<(), carvallo::whipple::WhippleError>(())
 //! ```

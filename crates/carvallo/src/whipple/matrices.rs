@@ -5,7 +5,9 @@
 
 use nalgebra::Matrix4;
 
-use super::params::PARAM_NAMES;
+#[cfg(doc)]
+use super::params::WhippleParams;
+use super::params::{skate_limit, PARAM_NAMES};
 use crate::numerics::mat2::det;
 
 crate::scene! {
@@ -51,10 +53,12 @@ pub(crate) fn scene_index() -> Vec<usize> {
         .collect()
 }
 
-/// The matrices of a parameter vector (in the order of [`PARAM_NAMES`]), without validation.
+/// The matrices of a parameter vector (in the order of [`PARAM_NAMES`]), without validation,
+/// a zero wheel radius taken to its limit ([`WhippleParams::evaluated`]).
 /// `index[i]` is the position in [`PARAM_NAMES`] of the scene's `i`-th parameter
 /// ([`scene_index`]).
 pub(crate) fn matrices_of(values: &[f64; 26], index: &[usize]) -> Matrices {
+    let values = &skate_limit(values);
     let n = matrices_scene::Args::LEN;
     let arr: [f64; matrices_scene::Args::LEN] =
         std::array::from_fn(|i| if i < n { values[index[i]] } else { f64::NAN });

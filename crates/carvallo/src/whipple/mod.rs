@@ -40,8 +40,8 @@ pub use self::design::{BicycleDesign, Body, Wheel, FIELD_PATHS};
 pub use self::matrices::{char_poly_scene, matrices_scene, state_matrix, Mat2, Matrices};
 pub use self::model::Whipple;
 pub use self::params::{
-    TriangleWarning, WhippleError, WhippleParams, BENCHMARK_TOML, MAX_MAGNITUDE, MIN_POSITIVE,
-    PARAM_NAMES,
+    TriangleSlack, TriangleWarning, WhippleError, WhippleParams, BENCHMARK_TOML, MAX_MAGNITUDE,
+    MIN_POSITIVE, PARAM_NAMES, SKATE_RADIUS,
 };
 pub use self::stability::StabilityWindow;
 pub use crate::numerics::eigen::Eigenvalue;

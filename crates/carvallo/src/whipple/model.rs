@@ -12,7 +12,7 @@ use nalgebra::Matrix4;
 
 use super::design::BicycleDesign;
 use super::matrices::{char_poly_scene, matrices_scene, state_matrix, Matrices};
-use super::params::{WhippleError, WhippleParams};
+use super::params::{WhippleError, WhippleParams, PARAM_NAMES};
 use super::stability::{hurwitz_window_polished, StabilityWindow};
 use crate::numerics::eigen::{eigenvalues4, Eigenvalue};
 use crate::numerics::mat2::{det, mix};
@@ -35,10 +35,15 @@ pub struct Whipple {
 impl Whipple {
     /// Evaluates the matrices for `params`.
     pub fn new(params: WhippleParams) -> Whipple {
+        // The values with a zero wheel radius taken to its limit (the two-mass-skate).
+        let values = params.evaluated();
         let n = matrices_scene::Args::LEN;
         let names = matrices_scene::PARAMS;
+        let at = |name: &str| {
+            PARAM_NAMES.iter().position(|k| *k == name).map_or(f64::NAN, |i| values[i])
+        };
         let arr: [f64; matrices_scene::Args::LEN] =
-            std::array::from_fn(|i| if i < n { params.value(names[i]) } else { f64::NAN });
+            std::array::from_fn(|i| if i < n { at(names[i]) } else { f64::NAN });
         let o = matrices_scene::eval(&matrices_scene::Args::from_array(arr));
         let matrices = Matrices {
             m: [[o.m11, o.m12], [o.m21, o.m22]],
@@ -77,8 +82,12 @@ impl Whipple {
     pub fn char_poly(&self, v: f64) -> [f64; 5] {
         let names = char_poly_scene::PARAMS;
         let np = names.len();
+        let values = self.params.evaluated();
+        let at = |name: &str| {
+            PARAM_NAMES.iter().position(|k| *k == name).map_or(f64::NAN, |i| values[i])
+        };
         let arr: [f64; char_poly_scene::Args::LEN] =
-            std::array::from_fn(|i| if i < np { self.params.value(names[i]) } else { v });
+            std::array::from_fn(|i| if i < np { at(names[i]) } else { v });
         let o = char_poly_scene::eval(&char_poly_scene::Args::from_array(arr));
         [o.a0, o.a1, o.a2, o.a3, o.a4]
     }

@@ -552,10 +552,23 @@ impl WhippleNonlinear {
     /// and every other angle and rate zero.
     ///
     /// # Errors
-    /// [`NonlinearError::Parameter`] for a non-finite speed or lean.
+    /// [`NonlinearError::Parameter`] for a non-finite speed or lean, or a wheel of zero
+    /// radius (the two-mass-skate, whose limit only the linearised model takes: here the
+    /// wheels' rotation rates are coordinates).
     pub fn initial_state(&self, speed: f64, lean0: f64) -> Result<State, NonlinearError> {
         finite("speed", speed)?;
         finite("lean0", lean0)?;
+        for name in ["rR", "rF"] {
+            if self.param(name) == 0.0 {
+                return Err(NonlinearError::Parameter(ParameterError::InvalidParameter {
+                    name: if name == "rR" { "rR" } else { "rF" },
+                    value: 0.0,
+                    reason: "must be positive for the nonlinear model, whose speeds are the \
+                             wheels' rotation rates (the linearised model takes the \
+                             two-mass-skate's limit of zero radius)",
+                }));
+            }
+        }
         Ok(State {
             x: 0.0,
             y: 0.0,

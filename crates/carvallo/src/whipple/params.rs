@@ -48,46 +48,128 @@ IFyy = 0.28
 "#;
 
 /// Keys that must be strictly positive.
-const POSITIVE: [&str; 17] = [
-    "w", "g", "rR", "mR", "IRxx", "IRyy", "mB", "IBxx", "IByy", "IBzz", "mH", "IHxx", "IHyy",
-    "IHzz", "rF", "mF", "IFxx",
-];
+const POSITIVE: [&str; 4] = ["w", "g", "mB", "mH"];
 
 /// The positions of [`POSITIVE`] in [`PARAM_NAMES`] (a test checks them).
-const POSITIVE_INDEX: [usize; 17] = [0, 3, 4, 5, 6, 7, 10, 11, 12, 13, 17, 18, 19, 20, 22, 23, 24];
+const POSITIVE_INDEX: [usize; 4] = [0, 3, 10, 17];
 
-/// Whether [`WhippleParams::from_values`] accepts `v`: the same conditions, by index and without
-/// building an error (a sweep of random designs checks every design; the detailed checks that
-/// name the offending key take microseconds). A test checks the two against each other.
-pub(crate) fn valid_fast(v: &[f64; 26]) -> bool {
-    const SLACK: f64 = 1e-9;
+/// Keys that may be zero but not negative: the wheels' radii, masses and moments (zero for the
+/// two-mass-skate's skates) and the frames' principal moments (zero for a point mass).
+const NONNEGATIVE: [&str; 14] = [
+    "rR", "mR", "IRxx", "IRyy", "IBxx", "IByy", "IBzz", "IHxx", "IHyy", "IHzz", "rF", "mF", "IFxx",
+    "IFyy",
+];
+
+/// The positions of [`NONNEGATIVE`] in [`PARAM_NAMES`] (a test checks them).
+const NONNEGATIVE_INDEX: [usize; 14] = [4, 5, 6, 7, 11, 12, 13, 18, 19, 20, 22, 23, 24, 25];
+
+/// The radius that stands for a zero wheel radius in the evaluators (see
+/// [`WhippleParams::evaluated`]): small enough that every term it enters is below the last
+/// bit of the terms beside it, large enough that its square and fourth power are normal
+/// numbers (a quotient by them stays exact zero over a zero spin inertia).
+pub const SKATE_RADIUS: f64 = 1e-60;
+
+/// `v` with a zero wheel radius replaced by [`SKATE_RADIUS`] (see
+/// [`WhippleParams::evaluated`]).
+pub(crate) fn skate_limit(v: &[f64; 26]) -> [f64; 26] {
+    let mut out = *v;
+    for k in [4, 22] {
+        if out[k] == 0.0 {
+            out[k] = SKATE_RADIUS;
+        }
+    }
+    out
+}
+
+/// The relative slack of each triangle inequality of the moments of inertia, by body: the
+/// rear wheel's (`IRyy`), the front wheel's (`IFyy`), the rear frame's (`IByy`) and the front
+/// assembly's (`IHyy`). An inequality $a \le b$ holds within slack $s$ when
+/// $a \le b\,(1 + s)$.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct TriangleSlack(pub [f64; 4]);
+
+impl TriangleSlack {
+    /// The slack of [`WhippleParams::from_values`]: $10^{-9}$ (a thin disc written in decimal).
+    pub const STRICT: TriangleSlack = TriangleSlack([1e-9; 4]);
+
+    /// The slack that admits `params` itself: each body's relative violation by `params`
+    /// ([`TriangleWarning::relative`]), or [`STRICT`](Self::STRICT)'s where it breaks none. The
+    /// rule of the random and Monte Carlo sweeps around a nominal that breaks an inequality:
+    /// a draw is kept when it breaks no inequality by more than the nominal does.
+    pub fn admitting(params: &WhippleParams) -> TriangleSlack {
+        let mut slack = TriangleSlack::STRICT.0;
+        for w in params.triangle_violations() {
+            let k = ["IRyy", "IFyy", "IByy", "IHyy"].iter().position(|n| *n == w.key).unwrap_or(0);
+            slack[k] = slack[k].max(w.relative);
+        }
+        TriangleSlack(slack)
+    }
+
+    /// Whether every body's slack is the strict one.
+    pub fn is_strict(&self) -> bool {
+        *self == TriangleSlack::STRICT
+    }
+}
+
+/// Whether [`WhippleParams::from_values_within`] accepts `v` with `slack`: the same
+/// conditions, by index and without building an error (a sweep of random designs checks every
+/// design; the detailed checks that name the offending key take microseconds). A test checks
+/// the two against each other.
+pub(crate) fn valid_within(v: &[f64; 26], slack: &TriangleSlack) -> bool {
+    let slack = slack.0;
     if !v.iter().all(|x| x.is_finite() && x.abs() <= MAX_MAGNITUDE) {
         return false;
     }
     if !POSITIVE_INDEX.iter().all(|&k| v[k] >= MIN_POSITIVE) {
         return false;
     }
+    if !NONNEGATIVE_INDEX.iter().all(|&k| v[k] == 0.0 || v[k] >= MIN_POSITIVE) {
+        return false;
+    }
     if v[2].abs() >= std::f64::consts::FRAC_PI_2 {
         return false;
     }
-    for (xx, yy) in [(6, 7), (24, 25)] {
-        if v[yy] > 2.0 * v[xx] * (1.0 + SLACK) {
+    // A wheel of zero radius has zero spin inertia (the two-mass-skate's skates).
+    if (v[4] == 0.0 && v[7] != 0.0) || (v[22] == 0.0 && v[25] != 0.0) {
+        return false;
+    }
+    for (j, (xx, yy)) in [(6, 7), (24, 25)].into_iter().enumerate() {
+        if v[yy] > 2.0 * v[xx] * (1.0 + slack[j]) {
             return false;
         }
     }
-    for (xx, yy, zz, xz) in [(11, 12, 13, 14), (18, 19, 20, 21)] {
+    for (j, (xx, yy, zz, xz)) in [(11, 12, 13, 14), (18, 19, 20, 21)].into_iter().enumerate() {
         let (a, c, d, yy) = (v[xx], v[zz], v[xz], v[yy]);
-        if a * c - d * d <= 0.0 {
+        if a * c - d * d < 0.0 {
             return false;
         }
         let mean = 0.5 * (a + c);
         let half = (0.25 * (a - c) * (a - c) + d * d).sqrt();
         let (l1, l2) = (mean - half, mean + half);
-        if yy > (l1 + l2) * (1.0 + SLACK) || l2 > (l1 + yy) * (1.0 + SLACK) {
+        let s = 1.0 + slack[2 + j];
+        if yy > (l1 + l2) * s || l2 > (l1 + yy) * s {
             return false;
         }
     }
-    true
+    !point_like(v) || mass_matrix_regular(v)
+}
+
+/// Whether a frame of `v` has a zero or singular inertia tensor (a point mass): then the mass
+/// matrix is not positive definite by the inertias alone ([`valid_within`] computes it).
+pub(crate) fn point_like(v: &[f64; 26]) -> bool {
+    [(11, 12, 13, 14), (18, 19, 20, 21)]
+        .iter()
+        .any(|&(a, yy, c, d)| v[a] * v[c] - v[d] * v[d] <= 0.0 || v[yy] == 0.0)
+}
+
+/// Whether the mass matrix $M$ of `v` is positive definite ($M_{11} > 0$, $\det M > 0$). It
+/// is when both frames have positive definite inertias (every lean and steer rate turns a frame
+/// with inertia); a frame of zero or singular inertia (a point mass, as the two-mass-skate's)
+/// leaves it to where the masses sit, so it is computed.
+fn mass_matrix_regular(v: &[f64; 26]) -> bool {
+    let m = super::matrices::matrices_of(v, &super::matrices::scene_index()).m;
+    let det = m[0][0] * m[1][1] - m[0][1] * m[1][0];
+    m[0][0] > 0.0 && det > 1e-12 * m[0][0] * m[1][1].abs()
 }
 
 /// Largest magnitude accepted for any parameter (SI units). The Hurwitz determinant is a
@@ -96,8 +178,10 @@ pub(crate) fn valid_fast(v: &[f64; 26]) -> bool {
 /// from grams to tonnes (inertias $m l^2$ from $10^{-12}$ to $10^{9}$) are all accepted.
 pub const MAX_MAGNITUDE: f64 = 1e15;
 
-/// Smallest value accepted for a strictly positive parameter (SI units): below it the products
-/// in the Hurwitz determinant could underflow (see [`MAX_MAGNITUDE`]).
+/// Smallest value accepted for a strictly positive parameter, and smallest non-zero value for
+/// one that may be zero (a wheel's radius, mass or moment, a frame's moment) (SI units): below
+/// it the products in the Hurwitz determinant could underflow (see [`MAX_MAGNITUDE`]); zero
+/// itself is exact.
 pub const MIN_POSITIVE: f64 = 1e-15;
 
 /// Why a parameter set was rejected.
@@ -222,7 +306,15 @@ impl WhippleParams {
     /// [`WhippleError`] naming the key and value at fault.
     pub fn from_toml_str(text: &str) -> Result<WhippleParams, WhippleError> {
         let doc: toml::Table = text.parse().map_err(|e: toml::de::Error| {
-            let mut message = e.message().to_lowercase();
+            // One line: the TOML reader's message may span several.
+            let mut message = e
+                .message()
+                .to_lowercase()
+                .lines()
+                .map(str::trim)
+                .filter(|l| !l.is_empty())
+                .collect::<Vec<_>>()
+                .join("; ");
             if let Some(before) = e.span().and_then(|span| text.get(..span.start)) {
                 // Name the line, so that the key at fault is in the message.
                 let number = before.matches('\n').count() + 1;
@@ -270,26 +362,49 @@ impl WhippleParams {
     /// Builds a parameter set from the values in the order of [`PARAM_NAMES`].
     ///
     /// # Errors
-    /// [`WhippleError::Parameter`] for a non-finite value, a non-positive length, mass,
-    /// gravity or principal moment, a magnitude above [`MAX_MAGNITUDE`] or a positive value
-    /// below [`MIN_POSITIVE`], a steer tilt outside $(-\pi/2, \pi/2)$, a frame inertia that is
-    /// not positive definite in its x–z plane, or moments of inertia that break the triangle
-    /// inequalities.
+    /// [`WhippleError::Parameter`] for a non-finite value; a non-positive wheelbase, gravity or
+    /// frame mass; a negative wheel radius, wheel mass or moment of inertia; a magnitude above
+    /// [`MAX_MAGNITUDE`] or a non-zero magnitude below [`MIN_POSITIVE`] of a positive
+    /// quantity; a steer tilt outside $(-\pi/2, \pi/2)$; a wheel of zero radius with non-zero
+    /// spin inertia (its gyroscopic coupling $I_{yy}/r$ would be infinite); a frame inertia
+    /// that is not positive semidefinite in its x–z plane; moments of inertia that break the
+    /// triangle inequalities; frames of zero inertia (point masses) placed so that the mass
+    /// matrix $M$ is singular.
+    ///
+    /// Zero radii with zero spin inertias are the two-mass-skate of Kooijman et al. (Science
+    /// 332, 2011): the model takes the limit $r \to 0$ ([`evaluated`](Self::evaluated)).
     pub fn from_values(values: [f64; 26]) -> Result<WhippleParams, WhippleError> {
-        if valid_fast(&values) {
+        WhippleParams::from_values_within(values, &TriangleSlack::STRICT)
+    }
+
+    /// As [`from_values`](Self::from_values), with the triangle inequalities relaxed by
+    /// `slack` (see [`TriangleSlack::admitting`]).
+    ///
+    /// # Errors
+    /// As [`from_values`](Self::from_values).
+    pub fn from_values_within(
+        values: [f64; 26],
+        slack: &TriangleSlack,
+    ) -> Result<WhippleParams, WhippleError> {
+        if valid_within(&values, slack) {
             return Ok(WhippleParams { values });
         }
         for (key, &value) in PARAM_NAMES.iter().zip(&values) {
+            let positive = POSITIVE.contains(key);
+            let nonnegative = NONNEGATIVE.contains(key);
             if !value.is_finite() {
                 return Err(invalid(key, value, "must be finite"));
             }
-            if POSITIVE.contains(key) && value <= 0.0 {
+            if positive && value <= 0.0 {
                 return Err(invalid(key, value, "must be positive"));
+            }
+            if nonnegative && value < 0.0 {
+                return Err(invalid(key, value, "must not be negative"));
             }
             if value.abs() > MAX_MAGNITUDE {
                 return Err(invalid(key, value, "is too large (magnitude above 1e15 in SI units)"));
             }
-            if POSITIVE.contains(key) && value < MIN_POSITIVE {
+            if (positive || nonnegative) && value != 0.0 && value < MIN_POSITIVE {
                 return Err(invalid(key, value, "is too small (below 1e-15 in SI units)"));
             }
         }
@@ -298,22 +413,46 @@ impl WhippleParams {
         if lambda.abs() >= std::f64::consts::FRAC_PI_2 {
             return Err(invalid("lambda", lambda, "must lie strictly between -pi/2 and pi/2"));
         }
+        if p.value("rR") == 0.0 && p.value("IRyy") != 0.0 {
+            return Err(invalid(
+                "IRyy",
+                p.value("IRyy"),
+                "must be zero for a rear wheel of zero radius rR = 0: its gyroscopic coupling \
+                 IRyy/rR would be infinite (the two-mass-skate's skates have neither)",
+            ));
+        }
+        if p.value("rF") == 0.0 && p.value("IFyy") != 0.0 {
+            return Err(invalid(
+                "IFyy",
+                p.value("IFyy"),
+                "must be zero for a front wheel of zero radius rF = 0: its gyroscopic coupling \
+                 IFyy/rF would be infinite (the two-mass-skate's skates have neither)",
+            ));
+        }
         for (xx, zz, xz) in [("IBxx", "IBzz", "IBxz"), ("IHxx", "IHzz", "IHxz")] {
             let (a, b, c) = (p.value(xx), p.value(zz), p.value(xz));
-            if a * b - c * c <= 0.0 {
+            if a * b - c * c < 0.0 {
                 let key = if xz == "IBxz" { "IBxz" } else { "IHxz" };
                 return Err(invalid(
                     key,
                     c,
                     if key == "IBxz" {
-                        "makes the inertia block [[IBxx, IBxz], [IBxz, IBzz]] not positive definite"
+                        "makes the inertia block [[IBxx, IBxz], [IBxz, IBzz]] not positive semidefinite"
                     } else {
-                        "makes the inertia block [[IHxx, IHxz], [IHxz, IHzz]] not positive definite"
+                        "makes the inertia block [[IHxx, IHxz], [IHxz, IHzz]] not positive semidefinite"
                     },
                 ));
             }
         }
-        p.check_triangle_inequalities()?;
+        p.check_triangle_inequalities(slack)?;
+        if !mass_matrix_regular(&values) {
+            return Err(invalid(
+                "IBxx",
+                p.value("IBxx"),
+                "leaves the mass matrix M singular: the frames' inertias are zero or singular \
+                 and their masses sit where some lean and steer rates do not move them",
+            ));
+        }
         Ok(p)
     }
 
@@ -328,39 +467,34 @@ impl WhippleParams {
     pub fn from_values_warning(
         values: [f64; 26],
     ) -> Result<(WhippleParams, Vec<TriangleWarning>), WhippleError> {
-        match WhippleParams::from_values(values) {
-            Ok(p) => Ok((p, Vec::new())),
-            Err(WhippleError::Parameter(ParameterError::InvalidParameter { name, .. }))
-                if ["IRyy", "IFyy", "IByy", "IHyy"].contains(&name) =>
-            {
-                let p = WhippleParams { values };
-                let warnings = p.triangle_violations();
-                // Only the triangle inequalities failed when the violations explain the error
-                // and every other check passes on a set that satisfies them.
-                let mut repaired = values;
-                for w in &warnings {
-                    let k = PARAM_NAMES.iter().position(|n| *n == w.key).unwrap_or(0);
-                    repaired[k] = w.bound;
-                }
-                match WhippleParams::from_values(repaired) {
-                    Ok(_) if !warnings.is_empty() => Ok((p, warnings)),
-                    Ok(_) => WhippleParams::from_values(values).map(|p| (p, Vec::new())),
-                    Err(e) => Err(e),
-                }
-            }
-            Err(e) => Err(e),
-        }
+        let p = WhippleParams::from_values_within(values, &TriangleSlack([f64::INFINITY; 4]))?;
+        let warnings = p.triangle_violations();
+        Ok((p, warnings))
+    }
+
+    /// The values the evaluators read: [`values`](Self::values) with a zero wheel radius
+    /// replaced by [`SKATE_RADIUS`]. Validation admits a zero radius only with zero spin
+    /// inertia, and the radius enters the linearised equations only as a polynomial factor or
+    /// in the gyroscopic coupling $I_{yy}/r$, which is then exactly zero; so the matrices are
+    /// those of the limit $r \to 0$ (the two-mass-skate) to within the last bit.
+    pub fn evaluated(&self) -> [f64; 26] {
+        skate_limit(&self.values)
     }
 
     /// Every broken triangle inequality (see
     /// [`check_triangle_inequalities`](Self::check_triangle_inequalities)), with the relative
     /// slack of $10^{-9}$.
-    fn triangle_violations(&self) -> Vec<TriangleWarning> {
-        const SLACK: f64 = 1e-9;
+    pub(crate) fn triangle_violations(&self) -> Vec<TriangleWarning> {
+        self.triangle_violations_within(&TriangleSlack::STRICT)
+    }
+
+    /// Every triangle inequality broken by more than `slack`.
+    fn triangle_violations_within(&self, slack: &TriangleSlack) -> Vec<TriangleWarning> {
+        let slack = slack.0;
         let mut out = Vec::new();
-        for (xx, yy) in [("IRxx", "IRyy"), ("IFxx", "IFyy")] {
+        for (j, (xx, yy)) in [("IRxx", "IRyy"), ("IFxx", "IFyy")].into_iter().enumerate() {
             let (a, b) = (self.value(xx), self.value(yy));
-            if b > 2.0 * a * (1.0 + SLACK) {
+            if b > 2.0 * a * (1.0 + slack[j]) {
                 out.push(TriangleWarning {
                     key: yy,
                     value: b,
@@ -369,7 +503,7 @@ impl WhippleParams {
                 });
             }
         }
-        for body in ["B", "H"] {
+        for (j, body) in ["B", "H"].into_iter().enumerate() {
             let name = |s: &str| format!("I{body}{s}");
             let (a, c, d, yy) = (
                 self.value(&name("xx")),
@@ -381,14 +515,15 @@ impl WhippleParams {
             let mean = 0.5 * (a + c);
             let half = (0.25 * (a - c) * (a - c) + d * d).sqrt();
             let (l1, l2) = (mean - half, mean + half);
-            if yy > (l1 + l2) * (1.0 + SLACK) {
+            let s = 1.0 + slack[2 + j];
+            if yy > (l1 + l2) * s {
                 out.push(TriangleWarning {
                     key,
                     value: yy,
                     bound: l1 + l2,
                     relative: (yy - (l1 + l2)) / (l1 + l2),
                 });
-            } else if l2 > (l1 + yy) * (1.0 + SLACK) {
+            } else if l2 > (l1 + yy) * s {
                 out.push(TriangleWarning {
                     key,
                     value: yy,
@@ -405,9 +540,10 @@ impl WhippleParams {
     /// $I_{xx} = I_{zz}$ and $I_{yy}$) this is $I_{yy} \le 2 I_{xx}$; for the frame and the
     /// front assembly, with $\lambda_1 \le \lambda_2$ the principal moments of the x–z block,
     /// $I_{yy} \le \lambda_1 + \lambda_2$ and $\lambda_2 \le \lambda_1 + I_{yy}$. A thin disc
-    /// ($I_{yy} = 2 I_{xx}$) is allowed, with a relative slack of $10^{-9}$ for decimal input.
-    fn check_triangle_inequalities(&self) -> Result<(), WhippleError> {
-        let Some(w) = self.triangle_violations().into_iter().next() else {
+    /// ($I_{yy} = 2 I_{xx}$) is allowed, with a relative slack of $10^{-9}$ for decimal input
+    /// ([`TriangleSlack::STRICT`]), or `slack`.
+    fn check_triangle_inequalities(&self, slack: &TriangleSlack) -> Result<(), WhippleError> {
+        let Some(w) = self.triangle_violations_within(slack).into_iter().next() else {
             return Ok(());
         };
         // The wheels' bound is 2 Ixx; a frame's is exceeded (value above the bound) or its
@@ -447,13 +583,16 @@ impl WhippleParams {
 
     /// A valid random design around this one: every parameter scaled by an independent
     /// uniform factor in $[1 - r, 1 + r]$, `r = spread`, drawn from `rng` (SplitMix64) and
-    /// redrawn until [`WhippleParams::from_values`] accepts it. With `spread` small enough for
-    /// the checks to accept some draws (0.2 around the benchmark accepts most), it ends.
+    /// redrawn until [`WhippleParams::from_values_within`] accepts it with the slack that
+    /// admits this design ([`TriangleSlack::admitting`]: no triangle inequality broken by more
+    /// than here). With `spread` small enough for the checks to accept some draws (0.2 around
+    /// the benchmark accepts most), it ends.
     pub fn perturbed(&self, rng: &mut SplitMix64, spread: f64) -> WhippleParams {
+        let slack = TriangleSlack::admitting(self);
         loop {
             let v = self.values.map(|x| rng.scale(x, spread));
-            if let Ok(p) = WhippleParams::from_values(v) {
-                return p;
+            if valid_within(&v, &slack) {
+                return WhippleParams { values: v };
             }
         }
     }
@@ -463,10 +602,16 @@ impl WhippleParams {
 mod tests {
     use super::*;
 
+    fn valid_fast(v: &[f64; 26]) -> bool {
+        valid_within(v, &TriangleSlack::STRICT)
+    }
+
     #[test]
     fn fast_validity_is_the_detailed_one() {
         let names: Vec<&str> = POSITIVE_INDEX.iter().map(|&k| PARAM_NAMES[k]).collect();
         assert_eq!(names, POSITIVE);
+        let names: Vec<&str> = NONNEGATIVE_INDEX.iter().map(|&k| PARAM_NAMES[k]).collect();
+        assert_eq!(names, NONNEGATIVE);
         let base = *WhippleParams::benchmark().values();
         let mut rng = crate::numerics::rng::SplitMix64(99);
         let mut next = || rng.next_u64() >> 11;
@@ -485,20 +630,27 @@ mod tests {
                     _ => v[k] * (4.0 * u - 1.0),
                 };
             }
-            // The detailed checks alone (what from_values did before the fast path).
+            // The detailed checks alone, written out again from the rules.
             let detailed = {
                 let p = WhippleParams { values: v };
                 let finite_and_sized = PARAM_NAMES.iter().zip(&v).all(|(key, &x)| {
                     x.is_finite()
                         && x.abs() <= MAX_MAGNITUDE
                         && (!POSITIVE.contains(key) || x >= MIN_POSITIVE)
+                        && (!NONNEGATIVE.contains(key) || x == 0.0 || x >= MIN_POSITIVE)
                 });
+                let point_like = [(11, 12, 13, 14), (18, 19, 20, 21)]
+                    .iter()
+                    .any(|&(a, yy, c, d)| v[a] * v[c] - v[d] * v[d] == 0.0 || v[yy] == 0.0);
                 finite_and_sized
                     && v[2].abs() < std::f64::consts::FRAC_PI_2
+                    && (v[4] != 0.0 || v[7] == 0.0)
+                    && (v[22] != 0.0 || v[25] == 0.0)
                     && [(11, 13, 14), (18, 20, 21)]
                         .iter()
-                        .all(|&(a, c, d)| v[a] * v[c] - v[d] * v[d] > 0.0)
-                    && p.check_triangle_inequalities().is_ok()
+                        .all(|&(a, c, d)| v[a] * v[c] - v[d] * v[d] >= 0.0)
+                    && p.check_triangle_inequalities(&TriangleSlack::STRICT).is_ok()
+                    && (!point_like || mass_matrix_regular(&v))
             };
             assert_eq!(valid_fast(&v), detailed, "{v:?}");
             assert_eq!(WhippleParams::from_values(v).is_ok(), detailed, "{v:?}");

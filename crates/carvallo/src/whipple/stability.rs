@@ -92,7 +92,7 @@ impl HurwitzPolys {
     /// The coefficients from the matrices and gravity.
     pub fn new(m: &Matrices, g: f64) -> HurwitzPolys {
         let Matrices { m, c1, k0, k2 } = *m;
-        let a0 = [g * g * det(&k0), g * mix(&k0, &k2), det(&k2)];
+        let a0 = [g * g * det(&k0), capsize_coefficient(&k0, &k2, g), det(&k2)];
         let q = [g * mix(&c1, &k0), mix(&c1, &k2)];
         let r = [g * mix(&m, &k0), mix(&m, &k2) + det(&c1)];
         let b = mix(&m, &c1);
@@ -118,6 +118,26 @@ impl HurwitzPolys {
             self.a4,
             u * q(&self.h),
         ]
+    }
+}
+
+/// $p_1 = g\,m(K_0, K_2)$, the coefficient of $u$ in $a_0$, or zero where it is below the
+/// rounding of its own terms (within $10^{-13}$ of their size). With $K_2$'s first column zero,
+/// $m(K_0, K_2) = \frac{\cos\lambda}{w}(m_T z_T S_F \sin\lambda + S_T S_A)$ vanishes for a
+/// bicycle without gyroscopic coupling ($S_R = S_F = 0$: the two-mass-skate), and its `f64`
+/// value is then the difference of two rounded products, $10^{-15}$ of them, which would put a
+/// capsize speed near $10^7$ m/s. A coefficient that small beside its terms describes a root at
+/// such speeds in any case.
+fn capsize_coefficient(k0: &Mat2, k2: &Mat2, g: f64) -> f64 {
+    let p1 = g * mix(k0, k2);
+    let terms = (k0[0][0] * k2[1][1]).abs()
+        + (k2[0][0] * k0[1][1]).abs()
+        + (k0[0][1] * k2[1][0]).abs()
+        + (k2[0][1] * k0[1][0]).abs();
+    if p1.abs() <= 1e-13 * g.abs() * terms {
+        0.0
+    } else {
+        p1
     }
 }
 

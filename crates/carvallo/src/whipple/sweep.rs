@@ -20,7 +20,9 @@ use std::time::Instant;
 use rayon::prelude::*;
 
 use super::matrices::{matrices_of, matrices_scene, scene_index, Matrices};
-use super::params::{valid_fast, WhippleError, WhippleParams, PARAM_NAMES};
+use super::params::{
+    point_like, skate_limit, valid_within, TriangleSlack, WhippleError, WhippleParams, PARAM_NAMES,
+};
 #[cfg(doc)]
 use super::stability::hurwitz_window;
 use super::stability::{eigen_window, hurwitz_window_summary, EigenGrid, WindowSummary};
@@ -220,7 +222,9 @@ pub enum Designs {
     /// `count` designs around the base, each parameter of `spreads` scaled independently, drawn
     /// from the seeded stream [`SplitMix64`] of design $i$ (seed
     /// `seed + i`), so that the designs do not depend on the number of threads. A draw that
-    /// [`WhippleParams::from_values`] rejects is redrawn from the same stream, at most
+    /// [`WhippleParams::from_values_within`] rejects, with the slack that admits the base
+    /// ([`TriangleSlack::admitting`]: a draw may break a triangle inequality of the moments of
+    /// inertia by as much as the base does, not more), is redrawn from the same stream, at most
     /// [`MAX_DRAWS`] times; a design still invalid then is counted as rejected.
     Random {
         /// The number of designs.
@@ -303,7 +307,8 @@ pub struct SweepOutput {
     /// With `record`: whether design `i` is valid (`false` for a rejected random design);
     /// empty otherwise.
     pub valid: Vec<bool>,
-    /// How many random designs were rejected (always 0 for a grid).
+    /// How many random designs were rejected (for a grid, how many designs around a base with
+    /// a point-mass frame have a singular mass matrix; otherwise 0).
     pub rejected: usize,
     /// The number of designs asked for; `summary.count` is smaller when the sweep was stopped
     /// early ([`sweep_stream`]).
@@ -353,9 +358,13 @@ const LANES: usize = matrices_scene::LANES;
 /// and the window of every design are kept in [`SweepOutput`]. `progress` is increased by the
 /// number of designs done as chunks finish.
 ///
-/// The corners of a grid are validated with [`WhippleParams::from_values`]: its checks are
-/// linear inequalities (intervals, positive values, triangle inequalities of the moments of
-/// inertia), whose valid set is convex, so every design of the grid is valid too.
+/// The corners of a grid are validated with [`WhippleParams::from_values_within`] and the
+/// slack that admits the base ([`TriangleSlack::admitting`]): along one parameter its checks
+/// are intervals or convex inequalities (positive values, triangle inequalities of the moments
+/// of inertia), so every design of the grid is valid too. The exception is a base with a frame
+/// of zero or singular inertia (a point mass, as the two-mass-skate's), whose mass matrix is
+/// regular only where the masses sit right: there every design is checked, and those with a
+/// singular mass matrix are counted in [`SweepOutput::rejected`].
 ///
 /// # Errors
 /// [`DesignsError`] for an unknown or repeated name, a zero count, an empty grid, an invalid
@@ -400,6 +409,18 @@ pub fn sweep_stream(
 ) -> Result<SweepOutput, DesignsError> {
     let record = sink.is_some();
     let base_values = *base.values();
+    // A base that breaks a triangle inequality admits designs that break it no more.
+    let slack = TriangleSlack::admitting(base);
+    // With a frame of zero or singular inertia the mass matrix is regular only where the masses
+    // sit right, which the corners do not decide: every design of the grid is checked.
+    let check_each = point_like(&base_values);
+    // Whether a design can have a zero wheel radius: the base has one, or a radius is varied.
+    let skates = base_values[4] == 0.0
+        || base_values[22] == 0.0
+        || match designs {
+            Designs::Grid(axes) => axes.iter().any(|a| a.name == "rR" || a.name == "rF"),
+            Designs::Random { .. } => false,
+        };
     let (names, keys, count): (Vec<String>, Vec<usize>, usize) = match designs {
         Designs::Grid(axes) => {
             if axes.is_empty() {
@@ -421,7 +442,7 @@ pub fn sweep_stream(
                 for (j, (a, &k)) in axes.iter().zip(&keys).enumerate() {
                     v[k] = if corner >> j & 1 == 0 { a.from } else { a.to };
                 }
-                WhippleParams::from_values(v)
+                WhippleParams::from_values_within(v, &slack)
                     .map_err(|e| DesignsError::Sweep(SweepError::InvalidDesign(e)))?;
             }
             (axes.iter().map(|a| a.name.clone()).collect(), keys, count)
@@ -448,7 +469,7 @@ pub fn sweep_stream(
                     v[k] = a.at(rest % a.count);
                     rest /= a.count;
                 }
-                true
+                !check_each || valid_within(v, &slack)
             }
             Designs::Random { spreads, seed, .. } => {
                 let mut rng = SplitMix64(seed.wrapping_add(i as u64));
@@ -456,7 +477,7 @@ pub fn sweep_stream(
                     for (s, &k) in spreads.iter().zip(&keys) {
                         v[k] = rng.scale(base_values[k], s.rel);
                     }
-                    if valid_fast(v) {
+                    if valid_within(v, &slack) {
                         return true;
                     }
                 }
@@ -481,8 +502,15 @@ pub fn sweep_stream(
             }
             let windows: [Option<WindowSummary>; LANES] = match method {
                 Method::Hurwitz => {
-                    let args: [[f64; LANES]; matrices_scene::Args::LEN] =
-                        std::array::from_fn(|a| std::array::from_fn(|j| values[j][index[a]]));
+                    // A zero wheel radius taken to its limit, as `matrices_of` does (only
+                    // when a radius can be zero: the copy costs a few per cent of a sweep).
+                    let args: [[f64; LANES]; matrices_scene::Args::LEN] = if skates {
+                        let limit: [[f64; 26]; LANES] =
+                            std::array::from_fn(|j| skate_limit(&values[j]));
+                        std::array::from_fn(|a| std::array::from_fn(|j| limit[j][index[a]]))
+                    } else {
+                        std::array::from_fn(|a| std::array::from_fn(|j| values[j][index[a]]))
+                    };
                     let o = matrices_scene::eval_lanes(&args);
                     std::array::from_fn(|j| {
                         let r = |k: usize| [[o[k][j], o[k + 1][j]], [o[k + 2][j], o[k + 3][j]]];

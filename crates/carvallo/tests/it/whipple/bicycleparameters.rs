@@ -151,10 +151,172 @@ fn the_front_frame_parts_make_h() {
     );
 }
 
+/// The two-mass-skate's matrices as BicycleParameters 1.5.2 computes them
+/// (`benchmark_par_to_canonical` on `TmsBenchmark.txt`, computed 2026-12-04): at rR = rF = 0 its
+/// formulas give NaN (`SR = IRyy / rR` is 0/0), so they were evaluated at rR = rF = 1e-60, where
+/// `SR = SF = 0` exactly and every other term holding a radius has the wheel's mass, zero, as a
+/// factor: the limit, by BicycleParameters' own formulas (scripts/bicycleparameters_peer.py).
+const PEER_TMS: [[[f64; 2]; 2]; 4] = [
+    [[1.6400000000000003, 0.007471008502284511], [0.007471008502284511, 0.0013953992010301863]],
+    [[0.0, 4.9849582692509715], [-0.0, 0.03795715320280739]],
+    [[-4.2, -0.037355042511422555], [-0.037355042511422555, -0.0032557064754639292]],
+    [[0.0, 4.184017731985228], [0.0, 0.03721289529686999]],
+];
+
 #[test]
-fn the_two_mass_skate_is_refused_for_now() {
-    let err = UncertainParams::read(&bicycle_text("Tms"), false).unwrap_err();
-    assert_eq!(err.to_string(), "invalid rR 0.0: must be positive");
+fn the_two_mass_skate_takes_the_limit_of_zero_radius() {
+    use carvallo::sweep::{eigen_window, sweep_designs, Designs, EigenGrid, Method, Spread};
+    use carvallo::whipple::{Whipple, WhippleParams};
+    use carvallo::whipple_uncertainty::speed_gradients;
+    let loaded = UncertainParams::read(&bicycle_text("Tms"), true).expect("Tms");
+    assert!(loaded.warnings.is_empty());
+    let tms = loaded.params.params;
+    assert_eq!(
+        (tms.get("rR"), tms.get("IRyy"), tms.get("IBxx")),
+        (Some(0.0), Some(0.0), Some(0.0))
+    );
+    let bike = Whipple::new(tms.clone());
+    let m = bike.matrices();
+    // Each entry to 1e-14 of the largest of its matrix (an entry is a sum of terms of that size).
+    for (ours, theirs) in [m.m, m.c1, m.k0, m.k2].iter().zip(PEER_TMS) {
+        let scale = theirs.iter().flatten().fold(0.0f64, |a, x| a.max(x.abs()));
+        for i in 0..2 {
+            for j in 0..2 {
+                let (a, b) = (ours[i][j], theirs[i][j]);
+                assert!((a - b).abs() <= 1e-14 * scale, "{a} vs {b}");
+            }
+        }
+    }
+    // A second route: the model at small positive radii converges to the limit (here the
+    // wheels are massless, so the radius enters nothing but IRyy/rR = 0).
+    let mut v = *tms.values();
+    (v[4], v[22]) = (1e-4, 1e-4);
+    let near = Whipple::new(WhippleParams::from_values(v).expect("r = 1e-4")).matrices();
+    assert_eq!(near, m);
+    // The window by the closed-form Hurwitz route and by the eigenvalues on a grid agree; the
+    // weave speed is where BicycleParameters' eigenvalues cross (2.8410083233704153 m/s by a
+    // bisection of its largest real part, scripts/bicycleparameters_peer.py).
+    let w = bike.stability_window();
+    let weave = w.weave_speed.expect("a weave speed");
+    assert!((weave - 2.8410083233704153).abs() < 1e-8, "{weave}");
+    let grid = eigen_window(&m, 9.81, EigenGrid { vmax: 20.0, points: 4000 }).expect("eig");
+    assert!((grid.weave_speed.expect("weave") - weave).abs() < 1e-6);
+    // No capsize: a0's coefficient of v^2 is proportional to the gyroscopic terms, zero here.
+    assert_eq!((w.capsize_speed, grid.capsize_speed), (None, None), "{w:?} {grid:?}");
+    assert_eq!(w.stable, [(weave, f64::INFINITY)]);
+    // Sweeps and uncertainty take the limit too.
+    let progress = std::sync::atomic::AtomicUsize::new(0);
+    let spreads = ["xB", "zB", "xH", "zH", "mH"]
+        .map(|name| Spread { name: name.to_string(), rel: 0.05 })
+        .to_vec();
+    let out = sweep_designs(
+        &tms,
+        &Designs::Random { count: 1000, spreads, seed: 7 },
+        Method::Hurwitz,
+        false,
+        &progress,
+    )
+    .expect("sweep");
+    assert_eq!((out.rejected, out.summary.count), (0, 1000));
+    assert!(out.summary.with_weave > 500, "{:?}", out.summary);
+    let (lo, hi) = out.summary.weave_range.expect("range");
+    assert!(lo < weave && weave < hi, "{lo} {weave} {hi}");
+    let g = speed_gradients(&tms).weave.expect("weave");
+    assert_eq!(g.speed, weave);
+    // The spin inertias' derivatives are unbounded at zero radius; the others are finite.
+    for (k, d) in g.grad.iter().enumerate() {
+        let name = carvallo::whipple::PARAM_NAMES[k];
+        assert_eq!(d.is_finite(), !["IRyy", "IFyy"].contains(&name), "{name} {d}");
+    }
+    // Zero radius with a spin inertia is an error saying why.
+    let mut spin = *tms.values();
+    (spin[6], spin[7]) = (0.1, 0.1);
+    assert_eq!(
+        WhippleParams::from_values(spin).unwrap_err().to_string(),
+        "invalid IRyy 0.1: must be zero for a rear wheel of zero radius rR = 0: its gyroscopic \
+         coupling IRyy/rR would be infinite (the two-mass-skate's skates have neither)"
+    );
+    // Point masses placed so that no mass moves under a lean rate: M is singular.
+    let mut flat = *tms.values();
+    (flat[9], flat[16]) = (0.0, 0.0);
+    assert!(WhippleParams::from_values(flat)
+        .unwrap_err()
+        .to_string()
+        .starts_with("invalid IBxx 0.0: leaves the mass matrix M singular"));
+    // The nonlinear model, whose speeds are the wheels' rotation rates, refuses it by name.
+    let err = carvallo::whipple_nonlinear::WhippleNonlinear::new(tms).initial_state(3.0, 0.01);
+    assert!(err
+        .unwrap_err()
+        .to_string()
+        .starts_with("invalid rR 0.0: must be positive for the nonlinear model"));
+}
+
+#[test]
+fn random_designs_around_a_broken_inequality_break_it_no_more() {
+    use carvallo::numerics::rng::SplitMix64;
+    use carvallo::sweep::{sweep_designs, Designs, Method, Spread};
+    use carvallo::whipple::{TriangleSlack, WhippleParams};
+    let browser = UncertainParams::read(&bicycle_text("Browser"), false).expect("Browser");
+    let base = browser.params.params;
+    let nominal = browser.warnings[0].relative;
+    let slack = TriangleSlack::admitting(&base);
+    assert_eq!(slack.0[2], nominal);
+    assert!(slack.0[0] == 1e-9 && slack.0[1] == 1e-9 && slack.0[3] == 1e-9);
+    // The share of single draws kept, each frame moment scaled by a factor in [0.9, 1.1]: by
+    // the rule (no inequality broken by more than Browser's 2.331 %) and by the strict checks.
+    let keys = [11, 12, 13, 14];
+    let (mut kept, mut strict) = (0, 0);
+    let n = 20_000;
+    for i in 0..n {
+        let mut rng = SplitMix64(1000 + i);
+        let mut v = *base.values();
+        for k in keys {
+            v[k] = rng.scale(v[k], 0.1);
+        }
+        if let Ok(p) = WhippleParams::from_values_within(v, &slack) {
+            kept += 1;
+            let (_, warnings) = WhippleParams::from_values_warning(v).expect("valid otherwise");
+            assert!(warnings.iter().all(|w| w.relative <= nominal), "{warnings:?}");
+            assert_eq!(p.values(), &v);
+        }
+        strict += usize::from(WhippleParams::from_values(v).is_ok());
+    }
+    let share = kept as f64 / n as f64;
+    // Measured: 10082 of 20000 (50.4 %) kept by the rule, 7801 (39.0 %) by the strict checks
+    // (whose draws the rule keeps too, its slack being larger).
+    assert_eq!((kept, strict), (10082, 7801));
+    assert!((0.45..0.55).contains(&share), "{share}");
+    assert!(strict < kept && strict > 0, "{strict} {kept}");
+    // The random sweep keeps every design after its redraws; before the rule it kept none.
+    let progress = std::sync::atomic::AtomicUsize::new(0);
+    let spreads = ["IBxx", "IByy", "IBzz", "IBxz"]
+        .map(|name| Spread { name: name.to_string(), rel: 0.1 })
+        .to_vec();
+    let out = sweep_designs(
+        &base,
+        &Designs::Random { count: 2000, spreads, seed: 3 },
+        Method::Hurwitz,
+        true,
+        &progress,
+    )
+    .expect("sweep");
+    assert_eq!((out.rejected, out.summary.count), (0, 2000));
+    // A grid around it is checked at its corners with the same slack.
+    let grid = Designs::Grid(vec![carvallo::sweep::Vary {
+        name: "IByy".into(),
+        from: base.get("IByy").expect("IByy") * 0.99,
+        to: base.get("IByy").expect("IByy"),
+        count: 5,
+    }]);
+    assert!(sweep_designs(&base, &grid, Method::Hurwitz, false, &progress).is_ok());
+    let beyond = Designs::Grid(vec![carvallo::sweep::Vary {
+        name: "IByy".into(),
+        from: base.get("IByy").expect("IByy"),
+        to: base.get("IByy").expect("IByy") * 1.01,
+        count: 5,
+    }]);
+    let err = sweep_designs(&base, &beyond, Method::Hurwitz, false, &progress).unwrap_err();
+    assert!(err.to_string().contains("invalid IByy 1.329"), "{err}");
 }
 
 fn rider_text(bicycle: &str) -> String {

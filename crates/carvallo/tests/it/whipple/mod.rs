@@ -9,5 +9,6 @@ mod bicycleparameters;
 mod design;
 mod nonlinear;
 mod params;
+mod reader_fuzz;
 mod stability;
 mod uncertainty;

@@ -161,7 +161,13 @@ fn reject(key: &str, value: &str) -> String {
 #[test]
 fn every_rejection_names_the_key_and_the_value() {
     assert_eq!(reject("mB", "-85.0"), "invalid mB -85.0: must be positive");
-    assert_eq!(reject("rR", "0"), "invalid rR 0.0: must be positive");
+    assert_eq!(reject("rR", "-0.3"), "invalid rR -0.3: must not be negative");
+    // A zero radius is the two-mass-skate's only without spin inertia.
+    assert_eq!(
+        reject("rR", "0"),
+        "invalid IRyy 0.12: must be zero for a rear wheel of zero radius rR = 0: its gyroscopic \
+         coupling IRyy/rR would be infinite (the two-mass-skate's skates have neither)"
+    );
     assert_eq!(reject("w", "nan"), "invalid w NaN: must be finite");
     assert_eq!(reject("g", "inf"), "invalid g inf: must be finite");
     assert_eq!(
@@ -179,7 +185,7 @@ fn every_rejection_names_the_key_and_the_value() {
     );
     assert_eq!(
         reject("IBxz", "6.0"),
-        "invalid IBxz 6.0: makes the inertia block [[IBxx, IBxz], [IBxz, IBzz]] not positive definite"
+        "invalid IBxz 6.0: makes the inertia block [[IBxx, IBxz], [IBxz, IBzz]] not positive semidefinite"
     );
     assert_eq!(
         reject("IRyy", "0.2"),
