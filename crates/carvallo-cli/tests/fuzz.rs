@@ -110,7 +110,7 @@ fn every_command_keeps_the_exit_code_contract() {
     let model = |rng: &mut Rng| file(rng.pick(MODELS));
     let mut rng = Rng(25);
     let start = Instant::now();
-    let (mut runs, mut ok, mut stopped) = (0, 0, 0);
+    let (mut runs, mut ok, mut stopped, mut endless_seen) = (0, 0, 0, 0);
     for k in 0..300 {
         let mut args: Vec<String> = Vec::new();
         let mut out_dir = None;
@@ -312,6 +312,13 @@ fn every_command_keeps_the_exit_code_contract() {
         runs += 1;
         ok += usize::from(code == Some(0));
         stopped += usize::from(interrupted);
+        // A sweep of more designs than any machine evaluates in a few seconds never ends by
+        // itself: it must be among the interrupted (others may be too on a loaded machine).
+        let endless = args.iter().any(|a| a.contains("18446744073709551615"))
+            && args.first().is_some_and(|c| c == "sweep")
+            && code == Some(0);
+        endless_seen += usize::from(endless);
+        assert!(!endless || interrupted, "{args:?} ended by itself");
     }
     std::fs::remove_dir_all(&dir).unwrap();
     eprintln!(
@@ -321,5 +328,10 @@ fn every_command_keeps_the_exit_code_contract() {
     // Both outcomes occur: the generator reaches past the argument checks.
     assert_eq!(runs, 300);
     assert!(ok >= 20 && runs - ok >= 20, "{ok} of {runs} succeeded");
-    assert_eq!(stopped, 3, "the three endless sweeps were not all interrupted");
+    // The generator reaches the endless sweeps (and Ctrl-C stops each with exit 0, above);
+    // which other runs also outlive 3 s depends on the machine's load, so it is not counted.
+    assert!(
+        endless_seen >= 3 && stopped >= endless_seen,
+        "{endless_seen} endless, {stopped} stopped"
+    );
 }
