@@ -227,6 +227,12 @@ pub fn bench(args: &BenchArgs) -> Result<String, String> {
     let mut report = crate::bench::run(&cfg);
     spinner.set_message("the C peer (cc -O3)");
     crate::bench::extend(&cfg, &mut report);
+    spinner.set_message("simulations: work against precision");
+    crate::bench::simulation::simulation_rows(
+        &cfg,
+        &mut report.simulation,
+        &mut report.simulation_references,
+    );
     spinner.finish_and_clear();
     if args.json {
         serde_json::to_string_pretty(&report).map_err(|e| e.to_string())
