@@ -544,7 +544,8 @@ fn simulate_many<'py>(
         s.steer_rate = rates[k];
         starts.push(s);
     }
-    let grid = Grid::new(duration, step, 1).map_err(|(name, value, reason)| {
+    // Only the end is kept: no sample inside the run (the integration does not depend on them).
+    let grid = Grid::new(duration, step, usize::MAX).map_err(|(name, value, reason)| {
         err(carvallo::ParameterError::InvalidParameter { name, value, reason }.to_string())
     })?;
     let ends = py.detach(|| bike.simulate_many(&starts, &grid, &how, &stops));

@@ -358,8 +358,9 @@ pub fn integrate<const N: usize, E: Clone>(
     match how.method {
         Method::Rk4 => rk4(grid, x0, rhs, events, observe, &mut watch),
         Method::Dopri5 => adaptive(
-            Dopri5::<N>::dopri5().rtol(how.rtol).atol(how.atol).max_steps(MAX_STEPS),
-            false,
+            |h0| Dopri5::<N>::dopri5().rtol(how.rtol).atol(how.atol).max_steps(MAX_STEPS).h0(h0),
+            how,
+            5,
             grid,
             x0,
             rhs,
@@ -368,8 +369,9 @@ pub fn integrate<const N: usize, E: Clone>(
             &mut watch,
         ),
         Method::Dop853 => adaptive(
-            Dop853::<N>::dop853().rtol(how.rtol).atol(how.atol).max_steps(MAX_STEPS),
-            true,
+            |h0| Dop853::<N>::dop853().rtol(how.rtol).atol(how.atol).max_steps(MAX_STEPS).h0(h0),
+            how,
+            8,
             grid,
             x0,
             rhs,
@@ -766,8 +768,9 @@ impl<const N: usize, E> Solout<f64, [f64; N]> for Sampler<'_, '_, N, E> {
 /// An adaptive method of the crate, set to the tolerances, over the grid's span.
 #[allow(clippy::too_many_arguments)]
 fn adaptive<const N: usize, E: Clone, S>(
-    mut method: S,
-    dop853: bool,
+    make: impl FnOnce(f64) -> S,
+    how: &Integration,
+    order: i32,
     grid: &Grid,
     x0: [f64; N],
     rhs: &mut dyn FnMut(f64, &[f64; N]) -> Result<[f64; N], E>,
@@ -787,9 +790,31 @@ where
     if !slope.iter().all(|v| v.is_finite()) {
         return Err(IntegrateError::NotFinite { t: 0.0 });
     }
+    // Hairer's initial step (`hinit` of DOP853 and DOPRI5), here so that it allocates nothing
+    // (the crate's keeps a vector of scales): one more evaluation, after that of the slope.
+    let sk: [f64; N] = std::array::from_fn(|i| how.atol + how.rtol * x0[i].abs());
+    let norm = |v: &[f64; N]| v.iter().zip(&sk).map(|(a, s)| (a / s) * (a / s)).sum::<f64>();
+    let (dnf, dny) = (norm(&slope), norm(&x0));
+    let end = grid.end();
+    let mut h = if dnf <= 1e-10 || dny <= 1e-10 { 1e-6 } else { (dny / dnf).sqrt() * 0.01 };
+    h = h.min(end);
+    let x1: [f64; N] = std::array::from_fn(|i| x0[i] + h * slope[i]);
+    let mut slope1 = [0.0; N];
+    system.diff(h, &x1, &mut slope1);
+    let change: [f64; N] = std::array::from_fn(|i| slope1[i] - slope[i]);
+    let der2 = norm(&change).sqrt() / h;
+    let der12 = der2.abs().max(dnf.sqrt());
+    let h1 = if der12 <= 1e-15 {
+        (h * 1e-3).max(1e-6)
+    } else {
+        (0.01 / der12).powf(1.0 / f64::from(order))
+    };
+    let h0 = (100.0 * h).min(h1).min(end);
+    let h0 = if h0.is_finite() && h0 > 0.0 { h0 } else { 1e-6f64.min(end) };
+    let mut method = make(h0);
     let mut sampler = Sampler {
         system: &system,
-        dop853,
+        dop853: order == 8,
         slope: [f64::NAN; N],
         grid: *grid,
         next: grid.every.min(grid.n),
