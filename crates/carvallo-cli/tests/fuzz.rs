@@ -182,7 +182,17 @@ fn every_command_keeps_the_exit_code_contract() {
                     push(&mut args, "--atol", rng.pick(NUMBERS).into());
                 }
                 if rng.next().is_multiple_of(3) {
-                    let stops = ["lean=±0.5", "lean=+-0.1", "steer=0", "pitch=NaN", "lean=±-1", "speed=1", "lean", "=", "x=1e308"];
+                    let stops = [
+                        "lean=±0.5",
+                        "lean=+-0.1",
+                        "steer=0",
+                        "pitch=NaN",
+                        "lean=±-1",
+                        "speed=1",
+                        "lean",
+                        "=",
+                        "x=1e308",
+                    ];
                     push(&mut args, "--stop-when", rng.pick(&stops).into());
                 }
             }

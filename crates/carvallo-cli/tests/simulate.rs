@@ -43,7 +43,9 @@ fn an_adaptive_run_reports_its_counts_and_its_event() {
     let steps = v["steps"].as_u64().unwrap();
     let evals = v["rhs_evaluations"].as_u64().unwrap();
     // DOP853: 12 evaluations a step, 3 more for the dense output of an accepted step.
-    assert!(evals >= 12 * steps && evals <= 16 * (steps + v["rejected_steps"].as_u64().unwrap()) + 16);
+    assert!(
+        evals >= 12 * steps && evals <= 16 * (steps + v["rejected_steps"].as_u64().unwrap()) + 16
+    );
     let events = v["events"].as_array().unwrap();
     assert_eq!(events.len(), 1, "{events:?}");
     assert_eq!(events[0]["when"], "lean=±0.5");
@@ -77,7 +79,9 @@ fn batch_rows_equal_single_runs_bit_for_bit() {
         let col = |row: &[&str], name: &str| -> f64 {
             row[header.iter().position(|h| *h == name).unwrap()].parse().unwrap()
         };
-        for (line, (speed, lean0)) in lines[1..].iter().zip([("4.6", "0.05"), ("2", "0.05"), ("3", "0.1")]) {
+        for (line, (speed, lean0)) in
+            lines[1..].iter().zip([("4.6", "0.05"), ("2", "0.05"), ("3", "0.1")])
+        {
             let row: Vec<&str> = line.split(',').collect();
             if row[4] == "failed" {
                 // The same failure as the single run's (2 m/s without a stop falls flat).
@@ -91,8 +95,18 @@ fn batch_rows_equal_single_runs_bit_for_bit() {
             let text = single_text(speed, lean0, opts);
             let v: Value = serde_json::from_str(&text).unwrap();
             let last = |key: &str| last_number(&text, key);
-            for (csv_name, json_name) in [("t_end", "t"), ("lean", "lean"), ("steer", "steer"), ("x", "rear_x"), ("y", "rear_y")] {
-                assert_eq!(col(&row, csv_name).to_bits(), last(json_name).to_bits(), "{csv_name}: {line}");
+            for (csv_name, json_name) in [
+                ("t_end", "t"),
+                ("lean", "lean"),
+                ("steer", "steer"),
+                ("x", "rear_x"),
+                ("y", "rear_y"),
+            ] {
+                assert_eq!(
+                    col(&row, csv_name).to_bits(),
+                    last(json_name).to_bits(),
+                    "{csv_name}: {line}"
+                );
             }
             assert_eq!(col(&row, "rhs_evaluations") as u64, v["rhs_evaluations"].as_u64().unwrap());
             let fell = !v["events"].as_array().unwrap().is_empty();
@@ -100,13 +114,22 @@ fn batch_rows_equal_single_runs_bit_for_bit() {
         }
     }
     // A run that loses the contact (no stop condition, 2 m/s for 5 s) is a failed row that fell.
-    let args = [&["simulate", "--model", "benchmark", "--duration", "5"][..], &["--batch", path, "--csv"]].concat();
+    let args =
+        [&["simulate", "--model", "benchmark", "--duration", "5"][..], &["--batch", path, "--csv"]]
+            .concat();
     let (code, csv, _) = carvallo(&args);
     assert_eq!(code, 0);
     let failed = csv.lines().find(|l| l.contains(",failed,")).expect("a failed row");
-    assert!(failed.contains(",failed,true,") && failed.contains("no pitch puts the front wheel"), "{failed}");
+    assert!(
+        failed.contains(",failed,true,") && failed.contains("no pitch puts the front wheel"),
+        "{failed}"
+    );
     // The quoted message has one comma ("at lean ... rad, steer ... rad").
-    assert_eq!(failed.split(',').count(), csv.lines().next().unwrap().split(',').count() + 1, "{failed}");
+    assert_eq!(
+        failed.split(',').count(),
+        csv.lines().next().unwrap().split(',').count() + 1,
+        "{failed}"
+    );
     // Bad files: named, exit 2, nothing on standard output.
     for (text, needle) in [
         ("speed\n1\n", "must name the columns speed and lean0"),
@@ -132,7 +155,10 @@ fn bad_integration_options_are_named() {
     };
     for (extra, needle) in [
         (&["--rtol", "1e-8"][..], "invalid --rtol 1e-8: rk4 has a fixed step"),
-        (&["--method", "dop853", "--rtol", "1e-20"][..], "invalid --rtol 1e-20: must be at least 1e-15"),
+        (
+            &["--method", "dop853", "--rtol", "1e-20"][..],
+            "invalid --rtol 1e-20: must be at least 1e-15",
+        ),
         (&["--method", "dopri5", "--atol", "-1"][..], "invalid --atol -1.0: must not be negative"),
         (&["--method", "euler"][..], "invalid value 'euler' for '--method"),
         (&["--stop-when", "speed=1"][..], "invalid value 'speed=1' for '--stop-when"),

@@ -4,10 +4,10 @@
 
 use std::sync::atomic::AtomicUsize;
 
+use carvallo::numerics::integrate::{Grid, Integration, Method as IntegrationMethod};
 use carvallo::parameter_text::{add_rider, Rider, UncertainParams};
 use carvallo::sweep::Method;
 use carvallo::whipple::{StabilityWindow, Whipple, WhippleParams, FIELD_PATHS, PARAM_NAMES};
-use carvallo::numerics::integrate::{Grid, Integration, Method as IntegrationMethod};
 use carvallo::whipple_nonlinear::{Stop, WhippleNonlinear};
 use carvallo::whipple_uncertainty as unc;
 use numpy::{
@@ -399,9 +399,8 @@ fn integration_of(
     atol: Option<f64>,
     stop_when: &[String],
 ) -> PyResult<(Integration, Vec<Stop>)> {
-    let m = IntegrationMethod::from_name(method).ok_or_else(|| {
-        err(format!("invalid method `{method}`: expected rk4, dopri5 or dop853"))
-    })?;
+    let m = IntegrationMethod::from_name(method)
+        .ok_or_else(|| err(format!("invalid method `{method}`: expected rk4, dopri5 or dop853")))?;
     if m == IntegrationMethod::Rk4 && (rtol.is_some() || atol.is_some()) {
         return Err(err("rtol and atol need an adaptive method (dopri5 or dop853)"));
     }
@@ -528,18 +527,23 @@ fn simulate_many<'py>(
     }
     let rates: Vec<f64> = match &steer_rates {
         Some(r) if r.as_slice()?.len() != n => {
-            return Err(err(format!("steer_rates has {} values for {n} speeds", r.as_slice()?.len())));
+            return Err(err(format!(
+                "steer_rates has {} values for {n} speeds",
+                r.as_slice()?.len()
+            )));
         }
         Some(r) => r.as_slice()?.to_vec(),
         None => vec![0.0; n],
     };
     let mut starts = Vec::with_capacity(n);
     for k in 0..n {
-        let mut s = bike
-            .initial_state(speeds[k], lean0s[k])
-            .map_err(|e| err(format!("start {k}: {e}")))?;
+        let mut s =
+            bike.initial_state(speeds[k], lean0s[k]).map_err(|e| err(format!("start {k}: {e}")))?;
         if !rates[k].is_finite() {
-            return Err(err(format!("start {k}: invalid steer rate {:?}: must be finite", rates[k])));
+            return Err(err(format!(
+                "start {k}: invalid steer rate {:?}: must be finite",
+                rates[k]
+            )));
         }
         s.steer_rate = rates[k];
         starts.push(s);
@@ -579,11 +583,12 @@ fn simulate_many<'py>(
         })
         .collect();
     d.set_item("fell", PyArray1::from_vec(py, fell))?;
-    d.set_item("ok", PyArray1::from_vec(py, ends.iter().map(|e| e.is_ok()).collect::<Vec<bool>>()))?;
-    let evals: Vec<u64> = ends
-        .iter()
-        .map(|e| e.as_ref().map_or(0, |f| f.stats.rhs_evaluations as u64))
-        .collect();
+    d.set_item(
+        "ok",
+        PyArray1::from_vec(py, ends.iter().map(|e| e.is_ok()).collect::<Vec<bool>>()),
+    )?;
+    let evals: Vec<u64> =
+        ends.iter().map(|e| e.as_ref().map_or(0, |f| f.stats.rhs_evaluations as u64)).collect();
     d.set_item("rhs_evaluations", PyArray1::from_vec(py, evals))?;
     let errors: Vec<Option<String>> =
         ends.iter().map(|e| e.as_ref().err().map(|e| e.to_string())).collect();

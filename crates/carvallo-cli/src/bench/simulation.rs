@@ -84,16 +84,19 @@ struct Run {
     event: Option<f64>,
 }
 
+/// A run of a problem by a method on a grid (`None` when it fails).
+type Runner<T> = Box<dyn Fn(&Integration, &Grid) -> Option<T>>;
+
 /// A simulated motion: its name, duration and how to run it.
 struct Problem {
     name: String,
     duration: f64,
     /// The step of the RK4 run that checks the reference.
     check_step: f64,
-    run: Box<dyn Fn(&Integration, &Grid) -> Option<Run>>,
+    run: Runner<Run>,
     /// The same run as the timings see it: without the samples where they cost more than
     /// the integration (the bicycle's, each a Newton solve and an energy evaluation).
-    timed: Box<dyn Fn(&Integration, &Grid) -> Option<Stats>>,
+    timed: Runner<Stats>,
 }
 
 fn bicycle(speed: f64, duration: f64, stop: Option<Stop>) -> Problem {
@@ -179,11 +182,9 @@ fn problems(quick: bool) -> Vec<Problem> {
     let mut list = vec![
         bicycle(4.6, 5.0, None),
         bicycle(2.0, 5.0, Stop::parse("lean=±0.5")),
-        conservative(
-            "hoop R 0.5 m, theta0 0.2, s0 3 sqrt(g/R), 10 s",
-            10.0,
-            move |how, grid| hoop.simulate_with([0.2, 0.0, 0.0, s0], grid, how, &[]).ok(),
-        ),
+        conservative("hoop R 0.5 m, theta0 0.2, s0 3 sqrt(g/R), 10 s", 10.0, move |how, grid| {
+            hoop.simulate_with([0.2, 0.0, 0.0, s0], grid, how, &[]).ok()
+        }),
         conservative(
             "unicycle R 0.5 m, theta0 0.05, s0 3 sqrt(g/R), 10 s",
             10.0,
@@ -228,11 +229,8 @@ pub fn simulation_rows(
     references: &mut Vec<SimulationReference>,
 ) {
     let quick = cfg.samples < 1_000_000;
-    let tolerances: Vec<f64> = if quick {
-        vec![1e-3, 1e-6, 1e-9]
-    } else {
-        (3..=13).map(|k| 10f64.powi(-k)).collect()
-    };
+    let tolerances: Vec<f64> =
+        if quick { vec![1e-3, 1e-6, 1e-9] } else { (3..=13).map(|k| 10f64.powi(-k)).collect() };
     let steps: Vec<u32> = if quick { vec![0, 2] } else { (0..=6).collect() };
     let reference_how = Integration::adaptive(Method::Dop853, 1e-14, 1e-17);
     for p in problems(quick) {
@@ -243,13 +241,13 @@ pub fn simulation_rows(
         let every = (SAMPLE / p.check_step).round() as usize;
         let check_grid = Grid::new(p.duration, p.check_step, every).expect("grid");
         let check = (p.run)(&Integration::RK4, &check_grid);
-        let agreement = check.as_ref().map_or(f64::NAN, |c| {
-            dense_error(c, &reference).max(final_error(c, &reference))
-        });
+        let agreement = check
+            .as_ref()
+            .map_or(f64::NAN, |c| dense_error(c, &reference).max(final_error(c, &reference)));
         let dopri5 = (p.run)(&Integration::adaptive(Method::Dopri5, 1e-14, 1e-17), &sample_grid);
-        let agreement_dopri5 = dopri5.as_ref().map_or(f64::NAN, |c| {
-            dense_error(c, &reference).max(final_error(c, &reference))
-        });
+        let agreement_dopri5 = dopri5
+            .as_ref()
+            .map_or(f64::NAN, |c| dense_error(c, &reference).max(final_error(c, &reference)));
         references.push(SimulationReference {
             problem: p.name.clone(),
             reference: "dop853 rtol 1e-14 atol 1e-17".into(),
@@ -284,7 +282,12 @@ pub fn simulation_rows(
         };
         for method in [Method::Dopri5, Method::Dop853] {
             for &rtol in &tolerances {
-                push(Integration::adaptive(method, rtol, 1e-3 * rtol), sample_grid, Some(rtol), None);
+                push(
+                    Integration::adaptive(method, rtol, 1e-3 * rtol),
+                    sample_grid,
+                    Some(rtol),
+                    None,
+                );
             }
         }
         for &k in &steps {
@@ -317,8 +320,16 @@ pub fn render(rows: &[SimulationRow], references: &[SimulationReference]) -> Str
             problem = &r.problem;
             s.push_str(&format!(
                 "\n{problem}\n{:<8} {:>9} {:>9} {:>8} {:>7} {:>12} {:>10} {:>10} {:>10} {:>10}\n",
-                "method", "rtol/step", "rhs evals", "steps", "reject", "ns", "err final", "err dense",
-                "E drift", "residual"
+                "method",
+                "rtol/step",
+                "rhs evals",
+                "steps",
+                "reject",
+                "ns",
+                "err final",
+                "err dense",
+                "E drift",
+                "residual"
             ));
         }
         let tol = r.rtol.or(r.step).map_or("-".into(), |x| format!("{x:.1e}"));

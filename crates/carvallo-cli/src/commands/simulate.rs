@@ -103,8 +103,7 @@ fn read_batch(file: &std::path::Path) -> Result<Vec<BatchRow>, String> {
         format!("cannot read batch file `{name}`: {}", e.to_string().to_lowercase())
     })?;
     let mut lines = text.lines().enumerate().filter(|(_, l)| !l.trim().is_empty());
-    let (_, header) =
-        lines.next().ok_or_else(|| format!("invalid batch file `{name}`: empty"))?;
+    let (_, header) = lines.next().ok_or_else(|| format!("invalid batch file `{name}`: empty"))?;
     let columns: Vec<&str> = header.split(',').map(str::trim).collect();
     let find = |c: &str| columns.iter().position(|h| *h == c);
     let (Some(speed), Some(lean0)) = (find("speed"), find("lean0")) else {
@@ -112,9 +111,7 @@ fn read_batch(file: &std::path::Path) -> Result<Vec<BatchRow>, String> {
             "invalid batch file `{name}`: the header `{header}` must name the columns speed and lean0 (and optionally steer_rate0)"
         ));
     };
-    if let Some(other) =
-        columns.iter().find(|c| !["speed", "lean0", "steer_rate0"].contains(c))
-    {
+    if let Some(other) = columns.iter().find(|c| !["speed", "lean0", "steer_rate0"].contains(c)) {
         return Err(format!("invalid batch file `{name}`: unknown column `{other}`"));
     }
     let steer = find("steer_rate0");
@@ -161,9 +158,9 @@ fn batch(
     let rows = read_batch(file)?;
     let mut starts = Vec::with_capacity(rows.len());
     for r in &rows {
-        let mut s = bike.initial_state(r.speed, r.lean0).map_err(|e| {
-            format!("invalid batch file `{}` line {}: {e}", file.display(), r.line)
-        })?;
+        let mut s = bike
+            .initial_state(r.speed, r.lean0)
+            .map_err(|e| format!("invalid batch file `{}` line {}: {e}", file.display(), r.line))?;
         s.steer_rate = r.steer_rate0;
         starts.push(s);
     }
@@ -189,18 +186,10 @@ fn batch(
                         Some((j, t)) => (stops[j].text(), format!("{t:?}")),
                         None => (String::new(), String::new()),
                     };
-                    let values = [
-                        f.t,
-                        st.lean,
-                        st.steer,
-                        st.yaw,
-                        st.x,
-                        st.y,
-                        st.lean_rate,
-                        st.steer_rate,
-                    ]
-                    .map(|x| format!("{x:?}"))
-                    .join(",");
+                    let values =
+                        [f.t, st.lean, st.steer, st.yaw, st.x, st.y, st.lean_rate, st.steer_rate]
+                            .map(|x| format!("{x:?}"))
+                            .join(",");
                     s.push_str(&format!(
                         "{head},ok,{},{by},{te},{values},{},{},{},{:?},{:?},\n",
                         fell(e),
@@ -213,10 +202,7 @@ fn batch(
                 }
                 Err(err) => {
                     let msg = err.to_string().replace('"', "'");
-                    s.push_str(&format!(
-                        "{head},failed,{},,,,,,,,,,,,,,,,\"{msg}\"\n",
-                        fell(e)
-                    ));
+                    s.push_str(&format!("{head},failed,{},,,,,,,,,,,,,,,,\"{msg}\"\n", fell(e)));
                 }
             }
         }
@@ -306,8 +292,7 @@ pub fn run(cmd: &Args) -> Result<String, String> {
     let (speed, lean0) = (&speed, &lean0);
     let start = bike.initial_state(*speed, *lean0).map_err(|e| e.to_string())?;
     let tr = bike.simulate_with(start, &grid, &how, stops).map_err(|e| e.to_string())?;
-    let events: Vec<(String, f64)> =
-        tr.event.iter().map(|&(k, t)| (stops[k].text(), t)).collect();
+    let events: Vec<(String, f64)> = tr.event.iter().map(|&(k, t)| (stops[k].text(), t)).collect();
     if *json {
         let col = |f: &dyn Fn(&carvallo::whipple_nonlinear::Sample) -> f64| -> Vec<f64> {
             tr.samples.iter().map(f).collect()
@@ -364,7 +349,9 @@ pub fn run(cmd: &Args) -> Result<String, String> {
         if !stops.is_empty() && events.is_empty() {
             s.push_str("no stop condition met\n");
         }
-        s.push_str(" t        lean       steer      speed      rear (x, y)            front (x, y)\n");
+        s.push_str(
+            " t        lean       steer      speed      rear (x, y)            front (x, y)\n",
+        );
         for p in &tr.samples {
             s.push_str(&format!(
                 "{:8.3} {:+.6} {:+.6} {:.6} ({:.4}, {:+.4}) ({:.4}, {:+.4})\n",

@@ -33,8 +33,7 @@ use crate::numerics::ode::{EnergyDrift, Trajectory};
 /// The crate's DOPRI5: order 5, 7 stages.
 type Dopri5<const N: usize> = ExplicitRungeKutta<Ordinary, DormandPrince, f64, [f64; N], 5, 7, 7>;
 /// The crate's DOP853: order 8, 12 stages, 16 with the dense output's.
-type Dop853<const N: usize> =
-    ExplicitRungeKutta<Ordinary, DormandPrince, f64, [f64; N], 8, 12, 16>;
+type Dop853<const N: usize> = ExplicitRungeKutta<Ordinary, DormandPrince, f64, [f64; N], 8, 12, 16>;
 
 /// The integration method.
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
@@ -197,12 +196,12 @@ impl Grid {
 
     /// Whether grid point `i` is sampled.
     pub fn sampled(&self, i: usize) -> bool {
-        i % self.every == 0 || i == self.n
+        i.is_multiple_of(self.every) || i == self.n
     }
 
     /// The number of samples, the first included.
     pub fn samples(&self) -> usize {
-        self.n / self.every + 1 + usize::from(self.n % self.every != 0)
+        self.n / self.every + 1 + usize::from(!self.n.is_multiple_of(self.every))
     }
 }
 
@@ -319,6 +318,18 @@ pub struct Outcome<const N: usize> {
     pub end: (f64, [f64; N]),
 }
 
+/// A right-hand side $f(t, x)$ that may fail with `E`.
+pub type Rhs<'a, const N: usize, E> = dyn FnMut(f64, &[f64; N]) -> Result<[f64; N], E> + 'a;
+
+/// An event function $g(x)$ whose sign changes end a run.
+pub type EventFn<'a, const N: usize, E> = dyn FnMut(&[f64; N]) -> Result<f64, E> + 'a;
+
+/// What sees the points of a run ([`Point`]).
+pub type Observer<'a, const N: usize, E> = dyn FnMut(Point, f64, &[f64; N]) -> Result<(), E> + 'a;
+
+/// The last evaluations (t, x, f(x)) a [`System`] keeps.
+type Evaluations<const N: usize> = [(f64, [f64; N], [f64; N]); RECENT];
+
 /// The most steps (accepted or rejected) an adaptive run may attempt.
 const MAX_STEPS: usize = 1_000_000;
 
@@ -341,13 +352,13 @@ const MAX_FAILURES: usize = 1000;
 /// failure of a right-hand side evaluation in a step the adaptive methods then reject is
 /// kept only when the run fails), and the adaptive methods' failures. Settings are not checked
 /// here ([`Integration::unusable`]).
-pub fn integrate<const N: usize, E: Clone>(
+pub fn integrate<'e, const N: usize, E: Clone>(
     how: &Integration,
     grid: &Grid,
     x0: [f64; N],
-    rhs: &mut dyn FnMut(f64, &[f64; N]) -> Result<[f64; N], E>,
-    events: &mut [&mut dyn FnMut(&[f64; N]) -> Result<f64, E>],
-    observe: &mut dyn FnMut(Point, f64, &[f64; N]) -> Result<(), E>,
+    rhs: &mut Rhs<'_, N, E>,
+    events: &mut [&'e mut EventFn<'e, N, E>],
+    observe: &mut Observer<'_, N, E>,
 ) -> Result<Outcome<N>, IntegrateError<E>> {
     if events.len() > MAX_EVENTS {
         return Err(IntegrateError::TooManyEvents { count: events.len() });
@@ -397,7 +408,7 @@ impl Watch {
 
     fn start<const N: usize, E>(
         &mut self,
-        events: &mut [&mut dyn FnMut(&[f64; N]) -> Result<f64, E>],
+        events: &mut [&mut EventFn<'_, N, E>],
         x: &[f64; N],
     ) -> Result<(), E> {
         for (j, g) in events.iter_mut().enumerate() {
@@ -410,7 +421,7 @@ impl Watch {
     /// on `interp`; updates the signs when there is none.
     fn check<const N: usize, E>(
         &mut self,
-        events: &mut [&mut dyn FnMut(&[f64; N]) -> Result<f64, E>],
+        events: &mut [&mut EventFn<'_, N, E>],
         ta: f64,
         tb: f64,
         xb: &[f64; N],
@@ -508,12 +519,12 @@ fn illinois(g: &mut dyn FnMut(f64) -> f64, a: f64, b: f64, ga: f64, gb: f64) -> 
 }
 
 /// The classical Runge–Kutta method on the grid.
-fn rk4<const N: usize, E: Clone>(
+fn rk4<'e, const N: usize, E: Clone>(
     grid: &Grid,
     x0: [f64; N],
-    rhs: &mut dyn FnMut(f64, &[f64; N]) -> Result<[f64; N], E>,
-    events: &mut [&mut dyn FnMut(&[f64; N]) -> Result<f64, E>],
-    observe: &mut dyn FnMut(Point, f64, &[f64; N]) -> Result<(), E>,
+    rhs: &mut Rhs<'_, N, E>,
+    events: &mut [&'e mut EventFn<'e, N, E>],
+    observe: &mut Observer<'_, N, E>,
     watch: &mut Watch,
 ) -> Result<Outcome<N>, IntegrateError<E>> {
     let h = grid.h;
@@ -530,9 +541,8 @@ fn rk4<const N: usize, E: Clone>(
         let k2 = rhs(t0 + h / 2.0, &axpy(&x, h / 2.0, &k1)).map_err(m)?;
         let k3 = rhs(t0 + h / 2.0, &axpy(&x, h / 2.0, &k2)).map_err(m)?;
         let k4 = rhs(t0 + h, &axpy(&x, h, &k3)).map_err(m)?;
-        let x1: [f64; N] = std::array::from_fn(|j| {
-            x[j] + h / 6.0 * (k1[j] + 2.0 * k2[j] + 2.0 * k3[j] + k4[j])
-        });
+        let x1: [f64; N] =
+            std::array::from_fn(|j| x[j] + h / 6.0 * (k1[j] + 2.0 * k2[j] + 2.0 * k3[j] + k4[j]));
         let t1 = grid.time(i);
         stats.steps += 1;
         stats.rhs_evaluations += 3;
@@ -588,13 +598,13 @@ fn hermite<const N: usize>(
 /// The right-hand side as the crate's `ODE`: a failure is kept (the first one) and shows as
 /// NaN slopes, which the step control rejects.
 struct System<'a, const N: usize, E> {
-    rhs: RefCell<&'a mut dyn FnMut(f64, &[f64; N]) -> Result<[f64; N], E>>,
+    rhs: RefCell<&'a mut Rhs<'a, N, E>>,
     failure: RefCell<Option<E>>,
     evaluations: Cell<usize>,
     failures_in_a_row: Cell<usize>,
     /// The last evaluations (t, x, f(x)), newest at `newest`: the slopes at the ends of a
     /// step are found here (DOP853 evaluates three dense-output stages after the end's).
-    recent: RefCell<[(f64, [f64; N], [f64; N]); RECENT]>,
+    recent: RefCell<Evaluations<N>>,
     newest: Cell<usize>,
 }
 
@@ -602,7 +612,7 @@ struct System<'a, const N: usize, E> {
 const RECENT: usize = 6;
 
 impl<'a, const N: usize, E> System<'a, N, E> {
-    fn new(rhs: &'a mut dyn FnMut(f64, &[f64; N]) -> Result<[f64; N], E>) -> Self {
+    fn new(rhs: &'a mut Rhs<'a, N, E>) -> Self {
         System {
             rhs: RefCell::new(rhs),
             failure: RefCell::new(None),
@@ -661,8 +671,8 @@ struct Sampler<'a, 'b, const N: usize, E> {
     slope: [f64; N],
     grid: Grid,
     next: usize,
-    events: &'a mut [&'b mut dyn FnMut(&[f64; N]) -> Result<f64, E>],
-    observe: &'a mut dyn FnMut(Point, f64, &[f64; N]) -> Result<(), E>,
+    events: &'a mut [&'b mut EventFn<'b, N, E>],
+    observe: &'a mut Observer<'a, N, E>,
     watch: &'a mut Watch,
     event: Option<Crossing<N>>,
     failure: Option<E>,
@@ -767,15 +777,15 @@ impl<const N: usize, E> Solout<f64, [f64; N]> for Sampler<'_, '_, N, E> {
 
 /// An adaptive method of the crate, set to the tolerances, over the grid's span.
 #[allow(clippy::too_many_arguments)]
-fn adaptive<const N: usize, E: Clone, S>(
+fn adaptive<'e, const N: usize, E: Clone, S>(
     make: impl FnOnce(f64) -> S,
     how: &Integration,
     order: i32,
     grid: &Grid,
     x0: [f64; N],
-    rhs: &mut dyn FnMut(f64, &[f64; N]) -> Result<[f64; N], E>,
-    events: &mut [&mut dyn FnMut(&[f64; N]) -> Result<f64, E>],
-    observe: &mut dyn FnMut(Point, f64, &[f64; N]) -> Result<(), E>,
+    rhs: &mut Rhs<'_, N, E>,
+    events: &mut [&'e mut EventFn<'e, N, E>],
+    observe: &mut Observer<'_, N, E>,
     watch: &mut Watch,
 ) -> Result<Outcome<N>, IntegrateError<E>>
 where
@@ -905,8 +915,8 @@ pub fn conservative<const N: usize>(
             })
         }
     });
-    let mut events: [&mut dyn FnMut(&[f64; N]) -> Result<f64, Infallible>; MAX_EVENTS] =
-        watchers.each_mut().map(|w| w as &mut dyn FnMut(&[f64; N]) -> Result<f64, Infallible>);
+    let mut events: [&mut EventFn<'_, N, Infallible>; MAX_EVENTS] =
+        watchers.each_mut().map(|w| w as &mut EventFn<'_, N, Infallible>);
     let count = stops.len();
     if count > MAX_EVENTS {
         return Err(IntegrateError::TooManyEvents { count });
@@ -942,8 +952,8 @@ mod tests {
             }
             Ok(())
         };
-        let out = integrate(how, grid, [1.0, 0.0], &mut oscillator, &mut [], &mut observe)
-            .expect("run");
+        let out =
+            integrate(how, grid, [1.0, 0.0], &mut oscillator, &mut [], &mut observe).expect("run");
         (out, samples)
     }
 
@@ -1008,8 +1018,8 @@ mod tests {
             }
             let mut mid = Mid(0.0, 0);
             let tau = std::f64::consts::TAU;
-            let sol = solve_ode(&mut method, &system, 0.0, tau, &[1.0, 0.0], &mut mid)
-                .expect("run");
+            let sol =
+                solve_ode(&mut method, &system, 0.0, tau, &[1.0, 0.0], &mut mid).expect("run");
             assert_eq!((sol.steps.accepted, sol.steps.rejected, mid.1), (n, 0, n));
             let x = system.evaluations.get();
             assert!(x > 0);
@@ -1034,8 +1044,7 @@ mod tests {
         let fixed5 = |h: f64| Dopri5::<2>::dopri5().h0(h).h_max(h).rtol(1.0).atol(1.0);
         let fixed8 = |h: f64| Dop853::<2>::dop853().h0(h).h_max(h).rtol(1.0).atol(1.0);
         for (name, p, q, n) in [("dopri5", 5.0, 4.0, 40), ("dop853", 8.0, 7.0, 20)] {
-            let (e1, d1) =
-                if name == "dopri5" { errors(fixed5, n) } else { errors(fixed8, n) };
+            let (e1, d1) = if name == "dopri5" { errors(fixed5, n) } else { errors(fixed8, n) };
             let (e2, d2) =
                 if name == "dopri5" { errors(fixed5, 2 * n) } else { errors(fixed8, 2 * n) };
             let (order, dense) = ((e1 / e2).log2(), (d1 / d2).log2());
@@ -1058,7 +1067,10 @@ mod tests {
                 let (out, samples) = run(&how, &grid);
                 let err = largest_error(&samples);
                 let end = largest_error(&samples[samples.len() - 1..]);
-                eprintln!("{method} rtol {rtol:e}: error {err:.2e}, at the end {end:.2e}, {:?}", out.stats);
+                eprintln!(
+                    "{method} rtol {rtol:e}: error {err:.2e}, at the end {end:.2e}, {:?}",
+                    out.stats
+                );
                 // DOPRI5's dense output is of order 4: between its steps it errs more.
                 let dense = if method == Method::Dopri5 { 100.0 } else { 10.0 };
                 assert!(end <= 10.0 * rtol, "{method} rtol {rtol}: error at the end {end}");
@@ -1101,10 +1113,11 @@ mod tests {
                     }
                     Ok(())
                 };
-                let mut events: Vec<&mut dyn FnMut(&[f64; 2]) -> Result<f64, Infallible>> =
+                let mut events: Vec<&mut EventFn<'_, 2, Infallible>> =
                     if both { vec![&mut h, &mut g] } else { vec![&mut h] };
-                let out = integrate(&how, &grid, [1.0, 0.0], &mut oscillator, &mut events, &mut observe)
-                    .expect("run");
+                let out =
+                    integrate(&how, &grid, [1.0, 0.0], &mut oscillator, &mut events, &mut observe)
+                        .expect("run");
                 let c = out.event.expect("an event");
                 let (index, exact) =
                     if both { (1, std::f64::consts::FRAC_PI_3) } else { (0, 0.99f64.asin()) };

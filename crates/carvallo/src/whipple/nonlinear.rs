@@ -410,9 +410,7 @@ impl Stop {
         let (name, value) = text.split_once('=')?;
         let quantity = Watched::ALL.into_iter().find(|w| w.name() == name.trim())?;
         let value = value.trim();
-        let (magnitude, number) = match value
-            .strip_prefix('±')
-            .or_else(|| value.strip_prefix("+-"))
+        let (magnitude, number) = match value.strip_prefix('±').or_else(|| value.strip_prefix("+-"))
         {
             Some(rest) => (true, rest),
             None => (false, value),
@@ -875,10 +873,8 @@ impl WhippleNonlinear {
                 Ok(if stop.magnitude { v.abs() - stop.value } else { v - stop.value })
             }
         });
-        let mut events: [&mut dyn FnMut(&[f64; 10]) -> Result<f64, NonlinearError>;
-            integrate::MAX_EVENTS] = watchers
-            .each_mut()
-            .map(|w| w as &mut dyn FnMut(&[f64; 10]) -> Result<f64, NonlinearError>);
+        let mut events: [&mut integrate::EventFn<'_, 10, NonlinearError>; integrate::MAX_EVENTS] =
+            watchers.each_mut().map(|w| w as &mut integrate::EventFn<'_, 10, NonlinearError>);
         let mut observe = |kind: Point, t: f64, y: &[f64; 10]| -> Result<(), NonlinearError> {
             let s = State::from_array(*y);
             match kind {

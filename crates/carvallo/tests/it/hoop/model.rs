@@ -148,7 +148,11 @@ fn adaptive_pairs_reach_a_reference_checked_by_rk4() {
             let how = Integration::adaptive(method, rtol, 1e-3 * rtol);
             let tr = hoop.simulate_with(x0, &grid, &how, &[]).expect("run");
             let e = error(&tr, &reference);
-            eprintln!("{method} rtol {rtol:e}: {e:.2e}, drift {:.1e}, {:?}", tr.relative_energy_drift(), tr.stats);
+            eprintln!(
+                "{method} rtol {rtol:e}: {e:.2e}, drift {:.1e}, {:?}",
+                tr.relative_energy_drift(),
+                tr.stats
+            );
             let allowed = if method == Method::Dopri5 { 100.0 } else { 10.0 };
             assert!(e <= allowed * rtol, "{method} rtol {rtol}: {e}");
             assert!(tr.relative_energy_drift() <= 10.0 * rtol);

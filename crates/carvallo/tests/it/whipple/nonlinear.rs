@@ -292,7 +292,13 @@ fn events_stop_the_fall_at_the_bisected_times() {
             let tr = b.simulate_with(start, &grid, &how, &[stop]).expect("run");
             let (index, t) = tr.event.expect("an event");
             let last = tr.last().expect("samples");
-            eprintln!("{} {}: t = {t} (bisection {exact}, {:.1e}), {:?}", how.method, stop.text(), t - exact, tr.stats);
+            eprintln!(
+                "{} {}: t = {t} (bisection {exact}, {:.1e}), {:?}",
+                how.method,
+                stop.text(),
+                t - exact,
+                tr.stats
+            );
             assert_eq!(index, 0);
             assert_eq!(last.0, t);
             assert!(g(&last.1.state).abs() <= 1e-6, "{}", g(&last.1.state));
