@@ -109,7 +109,7 @@ impl Integration {
             return Integration::RK4;
         }
         let rtol = rtol.unwrap_or(Integration::DEFAULT_RTOL);
-        Integration { method, rtol, atol: atol.unwrap_or(1e-3 * rtol) }
+        Integration { method, rtol, atol: atol.unwrap_or_else(|| thousandth(rtol)) }
     }
 
     /// The first setting that cannot be used, as (name, value, reason): for an adaptive
@@ -135,6 +135,16 @@ impl Integration {
         }
         None
     }
+}
+
+/// $10^{-3} x$ as the decimal reading does it: the double nearest to `x`'s shortest decimal
+/// with its exponent lowered by 3 (`1e-8` gives the double nearest $10^{-11}$, which `1e-3 *
+/// 1e-8` misses by an ulp).
+fn thousandth(x: f64) -> f64 {
+    let text = format!("{x:e}");
+    text.split_once('e')
+        .and_then(|(m, e)| format!("{m}e{}", e.parse::<i32>().ok()? - 3).parse().ok())
+        .unwrap_or(x / 1000.0)
 }
 
 /// The fixed grid of a run: `n` steps of `h` from time 0, a sample every `every` steps and at
@@ -1166,10 +1176,12 @@ mod tests {
         assert_eq!(bad, Some(("atol", 0.0, "must be positive when rtol is zero")));
         let bad = Integration::adaptive(Method::Dopri5, f64::NAN, 0.0).unusable();
         assert!(matches!(bad, Some(("rtol", _, "must be finite"))));
-        assert_eq!(
-            Integration::with_defaults(Method::Dop853, Some(1e-10), None),
-            Integration::adaptive(Method::Dop853, 1e-10, 1e-13)
-        );
+        for (rtol, atol) in [(1e-10, 1e-13), (1e-8, 1e-11), (2.5e-6, 2.5e-9), (1.0, 1e-3)] {
+            assert_eq!(
+                Integration::with_defaults(Method::Dop853, Some(rtol), None),
+                Integration::adaptive(Method::Dop853, rtol, atol)
+            );
+        }
         assert_eq!(Grid::new(1.0, 2.0, 1), Err(("step", 2.0, "must not exceed the duration")));
         assert_eq!(Grid::new(1.0, 0.1, 0), Err(("every", 0.0, "must be positive")));
         let g = Grid::new(1.0, 0.1, 3).expect("grid");
