@@ -198,13 +198,18 @@ impl SweepArgs {
 /// is a terminal: indicatif hides it otherwise), with the rate and the time left, until `done`
 /// is set; the bar is cleared at the end.
 fn progress_bar(counter: &AtomicUsize, total: usize, done: &AtomicBool) {
+    progress_bar_of(counter, total, done, "designs")
+}
+
+/// The same progress bar counting `what` (`designs`, `simulations`).
+pub(crate) fn progress_bar_of(counter: &AtomicUsize, total: usize, done: &AtomicBool, what: &str) {
     let bar = indicatif::ProgressBar::with_draw_target(
         Some(total as u64),
         indicatif::ProgressDrawTarget::stderr(),
     );
-    let style = indicatif::ProgressStyle::with_template(
-        "[{bar:40}] {human_pos}/{human_len} designs, {per_sec}, {eta} left",
-    )
+    let style = indicatif::ProgressStyle::with_template(&format!(
+        "[{{bar:40}}] {{human_pos}}/{{human_len}} {what}, {{per_sec}}, {{eta}} left"
+    ))
     .map(|s| s.progress_chars("## "))
     .unwrap_or_else(|_| indicatif::ProgressStyle::default_bar());
     bar.set_style(style);

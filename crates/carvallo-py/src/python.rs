@@ -552,7 +552,8 @@ fn simulate_many<'py>(
     let grid = Grid::new(duration, step, usize::MAX).map_err(|(name, value, reason)| {
         err(carvallo::ParameterError::InvalidParameter { name, value, reason }.to_string())
     })?;
-    let ends = py.detach(|| bike.simulate_many(&starts, &grid, &how, &stops));
+    let done = AtomicUsize::new(0);
+    let ends = py.detach(|| bike.simulate_many(&starts, &grid, &how, &stops, &done));
     let d = PyDict::new(py);
     type Column = fn(&carvallo::whipple_nonlinear::Final) -> f64;
     let columns: [(&str, Column); 9] = [

@@ -19,11 +19,14 @@
 //! per row in parallel and keeps only their ends
 //! ([`WhippleNonlinear::simulate_many`]): a summary, or with `--csv` one row per simulation
 //! (the start, `status`, `fell`, the event, the final state, the counts, the diagnostics, the
-//! error of a failed run), each equal bit for bit to the single run.
+//! error of a failed run), each equal bit for bit to the single run; a progress bar is drawn on
+//! standard error when it is a terminal.
 //!
 //! The parameter file is the anchors TOML format ([`crate::args::toml_model`]). Unknown,
 //! repeated or missing arguments, non-finite numbers and a failed simulation (the bicycle fell
 //! flat) are errors naming the value, exit code 2.
+
+use std::sync::atomic::{AtomicBool, AtomicUsize, Ordering};
 
 use carvallo::numerics::integrate::{Grid, Integration, Method};
 use carvallo::whipple_nonlinear::{NonlinearError, Stop, WhippleNonlinear};
@@ -167,7 +170,15 @@ fn batch(
     // Only the end is kept: no sample inside the run (the integration does not depend on them).
     let grid = Grid { every: grid.n.max(1), ..*grid };
     let clock = std::time::Instant::now();
-    let ends = bike.simulate_many(&starts, &grid, how, stops);
+    let (counter, finished) = (AtomicUsize::new(0), AtomicBool::new(false));
+    let ends = std::thread::scope(|scope| {
+        scope.spawn(|| {
+            crate::perf::progress_bar_of(&counter, starts.len(), &finished, "simulations")
+        });
+        let ends = bike.simulate_many(&starts, &grid, how, stops, &counter);
+        finished.store(true, Ordering::Relaxed);
+        ends
+    });
     let elapsed = clock.elapsed().as_secs_f64();
     // Fell: a stop condition met, or the contact lost (the bicycle lay flat).
     let fell = |e: &Result<carvallo::whipple_nonlinear::Final, NonlinearError>| match e {

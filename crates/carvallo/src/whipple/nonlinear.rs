@@ -793,16 +793,25 @@ impl WhippleNonlinear {
 
     /// [`simulate_final`](Self::simulate_final) from every start of `starts`, in parallel
     /// (rayon), in their order; each result equals the single run's bit for bit (the runs
-    /// share nothing).
+    /// share nothing). `done` counts the finished runs (for a progress bar).
     pub fn simulate_many(
         &self,
         starts: &[State],
         grid: &Grid,
         how: &Integration,
         stops: &[Stop],
+        done: &std::sync::atomic::AtomicUsize,
     ) -> Vec<Result<Final, NonlinearError>> {
         use rayon::prelude::*;
-        starts.par_iter().map(|s| self.simulate_final(*s, grid, how, stops)).collect()
+        use std::sync::atomic::Ordering;
+        starts
+            .par_iter()
+            .map(|s| {
+                let end = self.simulate_final(*s, grid, how, stops);
+                done.fetch_add(1, Ordering::Relaxed);
+                end
+            })
+            .collect()
     }
 
     /// The integration behind [`simulate_with`](Self::simulate_with): `keep(t, state, guess)`
