@@ -100,10 +100,35 @@ def simulate(
     step: float = 0.001,
     every: int = 10,
     strict: bool = False,
-) -> dict[str, Union[float, npt.NDArray[np.float64]]]:
-    """Nonlinear simulation (RK4) from upright straight running; arrays t, lean, steer, pitch,
-    speed_rear, rear_x, rear_y, front_x, front_y, energy and floats step, energy_drift,
-    max_contact_residual."""
+    *,
+    method: str = "rk4",
+    rtol: Optional[float] = None,
+    atol: Optional[float] = None,
+    stop_when: Sequence[str] = (),
+) -> dict[str, object]:
+    """Nonlinear simulation from upright straight running (rk4, or dopri5 / dop853 with rtol,
+    default 1e-8, and atol, default 1e-3 rtol; stop_when conditions such as "lean=±0.5"), as
+    `carvallo simulate --json`: arrays t, lean, steer, pitch, speed_rear, rear_x, rear_y,
+    front_x, front_y, energy; floats step, energy_drift, max_contact_residual; method, rtol,
+    atol, rhs_evaluations, steps, rejected_steps, events (list of {"when", "t"})."""
+
+def simulate_many(
+    params: Params,
+    speeds: npt.NDArray[np.float64],
+    lean0s: npt.NDArray[np.float64],
+    duration: float,
+    steer_rates: Optional[npt.NDArray[np.float64]] = None,
+    step: float = 0.001,
+    *,
+    method: str = "rk4",
+    rtol: Optional[float] = None,
+    atol: Optional[float] = None,
+    stop_when: Sequence[str] = (),
+    strict: bool = False,
+) -> dict[str, object]:
+    """Many simulations in parallel (GIL released), keeping the ends: arrays t_end, lean, steer,
+    yaw, x, y, lean_rate, steer_rate, event_t, stopped_by, fell, ok, rhs_evaluations and the
+    list errors; each equals `simulate`'s end bit for bit."""
 
 def report() -> list[dict[str, object]]:
     """The memoir concordance, the entries of `carvallo report --json`."""

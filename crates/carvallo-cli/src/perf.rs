@@ -1,10 +1,12 @@
 //! The measurement subcommands of the `carvallo` command line.
 //!
-//! * `carvallo bench [--json] [--quick]`: the tables of [`crate::bench`] (time per
-//!   evaluation beside the error against a 256-bit reference, measured in the same run, and
-//!   the targets), as text or as one JSON object `{mode, rows, distributions,
-//!   targets}`. `--quick` runs tiny samples (seconds); the default is the full measurement
-//!   ($10^6$ samples and sweep designs, 5 to 15 minutes on a busy 2-core machine).
+//! * `carvallo bench [--json] [--quick] [--only simulation]`: the tables of [`crate::bench`]
+//!   (time per evaluation beside the error against a 256-bit reference, measured in the same
+//!   run, the targets, and the simulations' work against precision), as text or as
+//!   one JSON object `{mode, rows, distributions, targets, simulation,
+//!   simulation_references}`. `--quick` runs tiny samples (seconds); the default is the full
+//!   measurement ($10^6$ samples and sweep designs, 5 to 15 minutes on a busy 2-core
+//!   machine). `--only simulation` runs the simulation section alone.
 //! * `carvallo sweep --model benchmark|FILE.toml (--vary NAME=FROM:TO:COUNT ... |
 //!   --random N --spread NAME=REL ... [--seed S]) [--method hurwitz|eigen] [--json | --csv]`:
 //!   the stability window of many designs, in parallel, with a progress bar when standard error
@@ -51,6 +53,16 @@ pub struct BenchArgs {
     /// Tiny samples (seconds) instead of the full measurement (minutes)
     #[arg(long)]
     pub quick: bool,
+    /// Only the section SECTION (`simulation`: the work-precision rows of the simulations)
+    #[arg(long, value_enum, value_name = "SECTION")]
+    pub only: Option<Section>,
+}
+
+/// A section `carvallo bench --only` runs alone.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, clap::ValueEnum)]
+pub enum Section {
+    /// Error against work of the simulations (every method and tolerance)
+    Simulation,
 }
 
 /// How the stability of each design is decided.
@@ -186,13 +198,18 @@ impl SweepArgs {
 /// is a terminal: indicatif hides it otherwise), with the rate and the time left, until `done`
 /// is set; the bar is cleared at the end.
 fn progress_bar(counter: &AtomicUsize, total: usize, done: &AtomicBool) {
+    progress_bar_of(counter, total, done, "designs")
+}
+
+/// The same progress bar counting `what` (`designs`, `simulations`).
+pub(crate) fn progress_bar_of(counter: &AtomicUsize, total: usize, done: &AtomicBool, what: &str) {
     let bar = indicatif::ProgressBar::with_draw_target(
         Some(total as u64),
         indicatif::ProgressDrawTarget::stderr(),
     );
-    let style = indicatif::ProgressStyle::with_template(
-        "[{bar:40}] {human_pos}/{human_len} designs, {per_sec}, {eta} left",
-    )
+    let style = indicatif::ProgressStyle::with_template(&format!(
+        "[{{bar:40}}] {{human_pos}}/{{human_len}} {what}, {{per_sec}}, {{eta}} left"
+    ))
     .map(|s| s.progress_chars("## "))
     .unwrap_or_else(|_| indicatif::ProgressStyle::default_bar());
     bar.set_style(style);
@@ -223,10 +240,28 @@ fn range(r: Option<(f64, f64)>) -> Value {
 pub fn bench(args: &BenchArgs) -> Result<String, String> {
     let cfg = if args.quick { crate::bench::Config::quick() } else { crate::bench::Config::full() };
     let spinner = bench_spinner();
-    spinner.set_message("evaluators, windows, eigenvalues, sweeps");
-    let mut report = crate::bench::run(&cfg);
-    spinner.set_message("the C peer (cc -O3)");
-    crate::bench::extend(&cfg, &mut report);
+    let mut report = if args.only == Some(Section::Simulation) {
+        crate::bench::Report {
+            mode: if args.quick { "quick" } else { "full" },
+            rows: Vec::new(),
+            distributions: Vec::new(),
+            targets: Vec::new(),
+            simulation: Vec::new(),
+            simulation_references: Vec::new(),
+        }
+    } else {
+        spinner.set_message("evaluators, windows, eigenvalues, sweeps");
+        let mut report = crate::bench::run(&cfg);
+        spinner.set_message("the C peer (cc -O3)");
+        crate::bench::extend(&cfg, &mut report);
+        report
+    };
+    spinner.set_message("simulations: work against precision");
+    crate::bench::simulation::simulation_rows(
+        &cfg,
+        &mut report.simulation,
+        &mut report.simulation_references,
+    );
     spinner.finish_and_clear();
     if args.json {
         serde_json::to_string_pretty(&report).map_err(|e| e.to_string())
@@ -465,7 +500,7 @@ mod tests {
     fn parses_and_rejects_by_value() {
         assert_eq!(
             parse::<BenchArgs>(&["bench", "--quick", "--json"]),
-            Ok(BenchArgs { json: true, quick: true })
+            Ok(BenchArgs { json: true, quick: true, only: None })
         );
         let vary = |name: &str, from: f64, to: f64, count: usize| Vary {
             name: name.into(),

@@ -202,6 +202,30 @@ fn every_command_keeps_the_exit_code_contract() {
                 if rng.next().is_multiple_of(2) {
                     push(&mut args, "--every", rng.pick(COUNTS).into());
                 }
+                if rng.next().is_multiple_of(2) {
+                    let methods = ["rk4", "dopri5", "dop853", "euler", ""];
+                    push(&mut args, "--method", rng.pick(&methods).into());
+                }
+                if rng.next().is_multiple_of(3) {
+                    push(&mut args, "--rtol", rng.pick(NUMBERS).into());
+                }
+                if rng.next().is_multiple_of(3) {
+                    push(&mut args, "--atol", rng.pick(NUMBERS).into());
+                }
+                if rng.next().is_multiple_of(3) {
+                    let stops = [
+                        "lean=±0.5",
+                        "lean=+-0.1",
+                        "steer=0",
+                        "pitch=NaN",
+                        "lean=±-1",
+                        "speed=1",
+                        "lean",
+                        "=",
+                        "x=1e308",
+                    ];
+                    push(&mut args, "--stop-when", rng.pick(&stops).into());
+                }
             }
             5 => {
                 args.push("accel".into());

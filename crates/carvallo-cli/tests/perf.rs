@@ -79,6 +79,55 @@ fn quick_bench_reports_times_beside_correct_errors() {
     }
 }
 
+/// The simulation section alone: every problem's reference agrees with RK4 at a small step (an
+/// independent code) to 1e-12, every row's error and counts are consistent (RK4: four
+/// evaluations a step, no rejection; the bicycle's contact residual at rounding), the adaptive
+/// rows' errors fall as the tolerance tightens, and DOP853 at rtol 1e-9 beats RK4 at its
+/// largest step in both error and evaluations on the bicycle.
+#[test]
+fn the_simulation_section_reports_work_against_precision() {
+    let (code, json, err) = carvallo(&["bench", "--quick", "--only", "simulation", "--json"]);
+    assert_eq!(code, 0, "{err}");
+    let v: Value = serde_json::from_str(&json).unwrap();
+    assert!(v["rows"].as_array().unwrap().is_empty());
+    let refs = v["simulation_references"].as_array().unwrap();
+    assert_eq!(refs.len(), 4, "{refs:?}");
+    for r in refs {
+        let a = r["agreement"].as_f64().unwrap();
+        assert!(a <= 1e-12, "{r}");
+    }
+    let rows = v["simulation"].as_array().unwrap();
+    for r in rows {
+        let (evals, steps) = (r["rhs_evaluations"].as_u64().unwrap(), r["steps"].as_u64().unwrap());
+        if r["method"] == "rk4" {
+            assert!(evals >= 4 * steps && evals <= 4 * steps + 4, "{r}");
+            assert_eq!(r["rejected_steps"], 0);
+        }
+        if let Some(res) = r["constraint_residual"].as_f64() {
+            assert!(res <= 1e-15, "{r}");
+        }
+        assert!(r["error_final"].as_f64().unwrap() <= r["error_dense"].as_f64().unwrap() * 10.0);
+    }
+    let find = |problem: &str, method: &str, tol: f64| {
+        rows.iter()
+            .find(|r| {
+                r["problem"].as_str().unwrap().starts_with(problem)
+                    && r["method"] == method
+                    && (r["rtol"].as_f64() == Some(tol) || r["step"].as_f64() == Some(tol))
+            })
+            .unwrap_or_else(|| panic!("{problem} {method} {tol}"))
+    };
+    for method in ["dopri5", "dop853"] {
+        let (a, b) = (find("bicycle 4.6", method, 1e-6), find("bicycle 4.6", method, 1e-9));
+        assert!(b["error_final"].as_f64() < a["error_final"].as_f64(), "{a} {b}");
+    }
+    let (dop, rk4) = (find("bicycle 4.6", "dop853", 1e-9), find("bicycle 4.6", "rk4", 0.01));
+    assert!(dop["error_final"].as_f64() < rk4["error_final"].as_f64(), "{dop} {rk4}");
+    assert!(dop["rhs_evaluations"].as_u64() < rk4["rhs_evaluations"].as_u64(), "{dop} {rk4}");
+    let fall = find("bicycle 2", "dop853", 1e-9);
+    assert!(fall["event_time_error"].as_f64().unwrap() < 1e-9, "{fall}");
+}
+
 #[test]
 fn sweep_prints_a_summary_and_rejects_bad_ranges() {
     let (code, json, err) =

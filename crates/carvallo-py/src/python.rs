@@ -9,15 +9,17 @@
 
 use std::sync::atomic::AtomicUsize;
 
+use carvallo::numerics::integrate::{Grid, Integration, Method as IntegrationMethod};
 use carvallo::parameter_text::{Rider, UncertainParams, RIDER_NAMES};
 use carvallo::sweep::Method;
 use carvallo::whipple::{
     StabilityWindow, TriangleWarning, Whipple, WhippleParams, FIELD_PATHS, PARAM_NAMES,
 };
-use carvallo::whipple_nonlinear::WhippleNonlinear;
+use carvallo::whipple_nonlinear::{Stop, WhippleNonlinear};
 use carvallo::whipple_uncertainty as unc;
 use numpy::{
-    Complex64, PyArray1, PyArray2, PyArrayMethods, PyReadonlyArray2, PyUntypedArrayMethods,
+    Complex64, PyArray1, PyArray2, PyArrayMethods, PyReadonlyArray1, PyReadonlyArray2,
+    PyUntypedArrayMethods,
 };
 use pyo3::create_exception;
 use pyo3::exceptions::PyValueError;
@@ -604,13 +606,47 @@ fn sweep<'py>(
     Ok(d)
 }
 
+/// The integration of `method` (`rk4`, `dopri5`, `dop853`) with the tolerances given or the
+/// command line's defaults, and the parsed stop conditions.
+fn integration_of(
+    method: &str,
+    rtol: Option<f64>,
+    atol: Option<f64>,
+    stop_when: &[String],
+) -> PyResult<(Integration, Vec<Stop>)> {
+    let m = IntegrationMethod::from_name(method)
+        .ok_or_else(|| err(format!("invalid method `{method}`: expected rk4, dopri5 or dop853")))?;
+    if m == IntegrationMethod::Rk4 && (rtol.is_some() || atol.is_some()) {
+        return Err(err("rtol and atol need an adaptive method (dopri5 or dop853)"));
+    }
+    let how = Integration::with_defaults(m, rtol, atol);
+    if let Some((name, value, reason)) = how.unusable() {
+        return Err(err(format!("invalid {name} {value:?}: {reason}")));
+    }
+    let stops = stop_when
+        .iter()
+        .map(|t| {
+            Stop::parse(t).ok_or_else(|| {
+                err(format!(
+                    "invalid stop condition `{t}`: expected NAME=VALUE or NAME=±VALUE with NAME \
+                     one of lean, steer, yaw, pitch, lean_rate, steer_rate, x, y"
+                ))
+            })
+        })
+        .collect::<PyResult<Vec<Stop>>>()?;
+    Ok((how, stops))
+}
+
 /// Integrates the nonlinear bicycle from upright straight running at `speed` with the lean
-/// `lean0` (RK4), as `carvallo simulate --json`: a dict of numpy arrays (`t`, `lean`, `steer`,
-/// `pitch`, `speed_rear`, `rear_x`, `rear_y`, `front_x`, `front_y`, `energy`) and the floats
-/// `step`, `energy_drift`, `max_contact_residual`.
+/// `lean0`, as `carvallo simulate --json` with the same options: `method` (`rk4` at the step
+/// `step`, or `dopri5`, `dop853` with `rtol`, default 1e-8, and `atol`, default 1e-3 rtol,
+/// sampled every `every` × `step` seconds) and `stop_when` (conditions such as `"lean=±0.5"`).
+/// A dict of numpy arrays (`t`, `lean`, `steer`, `pitch`, `speed_rear`, `rear_x`, `rear_y`,
+/// `front_x`, `front_y`, `energy`), the floats `step`, `energy_drift`,
+/// `max_contact_residual`, the `method`, `rtol` and `atol` (None for rk4), the counts
+/// `rhs_evaluations`, `steps`, `rejected_steps` and `events` (a list of dicts `when`, `t`).
 #[pyfunction]
-#[pyo3(signature = (params, speed, lean0, duration, step = 0.001, every = 10, strict = false))]
-// The arguments are the Python function's keywords.
+#[pyo3(signature = (params, speed, lean0, duration, step = 0.001, every = 10, strict = false, *, method = "rk4", rtol = None, atol = None, stop_when = Vec::new()))]
 #[allow(clippy::too_many_arguments)]
 fn simulate<'py>(
     py: Python<'py>,
@@ -621,11 +657,19 @@ fn simulate<'py>(
     step: f64,
     every: usize,
     strict: bool,
+    method: &str,
+    rtol: Option<f64>,
+    atol: Option<f64>,
+    stop_when: Vec<String>,
 ) -> PyResult<Bound<'py, PyDict>> {
+    let (how, stops) = integration_of(method, rtol, atol, &stop_when)?;
     let bike = WhippleNonlinear::new(params_of(params, strict)?);
     let start = bike.initial_state(speed, lean0).map_err(|e| err(e.to_string()))?;
+    let grid = Grid::new(duration, step, every).map_err(|(name, value, reason)| {
+        err(carvallo::ParameterError::InvalidParameter { name, value, reason }.to_string())
+    })?;
     let tr = py
-        .detach(|| bike.simulate(start, duration, step, every))
+        .detach(|| bike.simulate_with(start, &grid, &how, &stops))
         .map_err(|e| err(e.to_string()))?;
     let d = PyDict::new(py);
     type Column = fn(&carvallo::whipple_nonlinear::Sample) -> f64;
@@ -647,6 +691,126 @@ fn simulate<'py>(
     d.set_item("step", tr.step)?;
     d.set_item("energy_drift", tr.energy_drift)?;
     d.set_item("max_contact_residual", tr.max_contact_residual)?;
+    let adaptive = how.method.is_adaptive();
+    d.set_item("method", how.method.name())?;
+    d.set_item("rtol", adaptive.then_some(how.rtol))?;
+    d.set_item("atol", adaptive.then_some(how.atol))?;
+    d.set_item("rhs_evaluations", tr.stats.rhs_evaluations)?;
+    d.set_item("steps", tr.stats.steps)?;
+    d.set_item("rejected_steps", tr.stats.rejected_steps)?;
+    let events = PyList::empty(py);
+    for &(k, t) in &tr.event {
+        let e = PyDict::new(py);
+        e.set_item("when", stops[k].text())?;
+        e.set_item("t", t)?;
+        events.append(e)?;
+    }
+    d.set_item("events", events)?;
+    Ok(d)
+}
+
+/// Many simulations of the nonlinear bicycle in parallel, the GIL released: one from each
+/// (`speeds[k]`, `lean0s[k]`, `steer_rates[k]`, zero when None) with the options of
+/// `simulate`, keeping only the end (as `carvallo simulate --batch FILE --csv`). A dict of
+/// numpy arrays, one entry per start: `t_end`, `lean`, `steer`, `yaw`, `x`, `y`, `lean_rate`,
+/// `steer_rate` (NaN for a failed run), `event_t` (NaN when no stop condition was met),
+/// `stopped_by` (the index of the condition met, -1 for none), `fell` (a condition met or the
+/// contact lost), `ok`, `rhs_evaluations`, and `errors` (a list, None for a run that did not
+/// fail). Each run equals `simulate`'s bit for bit.
+#[pyfunction]
+#[pyo3(signature = (params, speeds, lean0s, duration, steer_rates = None, step = 0.001, *, method = "rk4", rtol = None, atol = None, stop_when = Vec::new(), strict = false))]
+#[allow(clippy::too_many_arguments)]
+fn simulate_many<'py>(
+    py: Python<'py>,
+    params: &Bound<'py, PyAny>,
+    speeds: PyReadonlyArray1<'py, f64>,
+    lean0s: PyReadonlyArray1<'py, f64>,
+    duration: f64,
+    steer_rates: Option<PyReadonlyArray1<'py, f64>>,
+    step: f64,
+    method: &str,
+    rtol: Option<f64>,
+    atol: Option<f64>,
+    stop_when: Vec<String>,
+    strict: bool,
+) -> PyResult<Bound<'py, PyDict>> {
+    let (how, stops) = integration_of(method, rtol, atol, &stop_when)?;
+    let bike = WhippleNonlinear::new(params_of(params, strict)?);
+    let speeds = speeds.as_slice()?;
+    let lean0s = lean0s.as_slice()?;
+    let n = speeds.len();
+    if lean0s.len() != n {
+        return Err(err(format!("lean0s has {} values for {n} speeds", lean0s.len())));
+    }
+    let rates: Vec<f64> = match &steer_rates {
+        Some(r) if r.as_slice()?.len() != n => {
+            return Err(err(format!(
+                "steer_rates has {} values for {n} speeds",
+                r.as_slice()?.len()
+            )));
+        }
+        Some(r) => r.as_slice()?.to_vec(),
+        None => vec![0.0; n],
+    };
+    let mut starts = Vec::with_capacity(n);
+    for k in 0..n {
+        let mut s =
+            bike.initial_state(speeds[k], lean0s[k]).map_err(|e| err(format!("start {k}: {e}")))?;
+        if !rates[k].is_finite() {
+            return Err(err(format!(
+                "start {k}: invalid steer rate {:?}: must be finite",
+                rates[k]
+            )));
+        }
+        s.steer_rate = rates[k];
+        starts.push(s);
+    }
+    // Only the end is kept: no sample inside the run (the integration does not depend on them).
+    let grid = Grid::new(duration, step, usize::MAX).map_err(|(name, value, reason)| {
+        err(carvallo::ParameterError::InvalidParameter { name, value, reason }.to_string())
+    })?;
+    let done = AtomicUsize::new(0);
+    let ends = py.detach(|| bike.simulate_many(&starts, &grid, &how, &stops, &done));
+    let d = PyDict::new(py);
+    type Column = fn(&carvallo::whipple_nonlinear::Final) -> f64;
+    let columns: [(&str, Column); 9] = [
+        ("t_end", |f| f.t),
+        ("lean", |f| f.state.lean),
+        ("steer", |f| f.state.steer),
+        ("yaw", |f| f.state.yaw),
+        ("x", |f| f.state.x),
+        ("y", |f| f.state.y),
+        ("lean_rate", |f| f.state.lean_rate),
+        ("steer_rate", |f| f.state.steer_rate),
+        ("event_t", |f| f.event.map_or(f64::NAN, |e| e.1)),
+    ];
+    for (name, f) in columns {
+        let v: Vec<f64> = ends.iter().map(|e| e.as_ref().map_or(f64::NAN, f)).collect();
+        d.set_item(name, PyArray1::from_vec(py, v))?;
+    }
+    let stopped: Vec<i64> = ends
+        .iter()
+        .map(|e| e.as_ref().ok().and_then(|f| f.event).map_or(-1, |e| e.0 as i64))
+        .collect();
+    d.set_item("stopped_by", PyArray1::from_vec(py, stopped))?;
+    let fell: Vec<bool> = ends
+        .iter()
+        .map(|e| match e {
+            Ok(f) => f.event.is_some(),
+            Err(e) => matches!(e, carvallo::whipple_nonlinear::NonlinearError::NoContact { .. }),
+        })
+        .collect();
+    d.set_item("fell", PyArray1::from_vec(py, fell))?;
+    d.set_item(
+        "ok",
+        PyArray1::from_vec(py, ends.iter().map(|e| e.is_ok()).collect::<Vec<bool>>()),
+    )?;
+    let evals: Vec<u64> =
+        ends.iter().map(|e| e.as_ref().map_or(0, |f| f.stats.rhs_evaluations as u64)).collect();
+    d.set_item("rhs_evaluations", PyArray1::from_vec(py, evals))?;
+    let errors: Vec<Option<String>> =
+        ends.iter().map(|e| e.as_ref().err().map(|e| e.to_string())).collect();
+    d.set_item("errors", errors)?;
     Ok(d)
 }
 
@@ -780,6 +944,7 @@ fn carvallo_module(m: &Bound<'_, PyModule>) -> PyResult<()> {
     m.add_function(wrap_pyfunction!(windows, m)?)?;
     m.add_function(wrap_pyfunction!(sweep, m)?)?;
     m.add_function(wrap_pyfunction!(simulate, m)?)?;
+    m.add_function(wrap_pyfunction!(simulate_many, m)?)?;
     m.add_function(wrap_pyfunction!(report, m)?)?;
     m.add_function(wrap_pyfunction!(speed_gradients, m)?)?;
     m.add_function(wrap_pyfunction!(first_order, m)?)?;

@@ -112,6 +112,54 @@ def test_simulate_equals_the_cli(cli):
     assert s["energy_drift"] < 1e-9
 
 
+def test_adaptive_simulate_equals_the_cli(cli):
+    kw = dict(method="dop853", rtol=1e-10, stop_when=["lean=±0.5"])
+    s = carvallo.simulate(carvallo.benchmark(), 2.0, 0.05, 3.0, **kw)
+    c = cli("simulate", "--model", "benchmark", "--speed", "2", "--lean0", "0.05", "--duration", "3",
+            "--method", "dop853", "--rtol", "1e-10", "--stop-when", "lean=±0.5", "--json")
+    for key in ["t", "lean", "steer", "pitch", "energy"]:
+        assert s[key].tolist() == c[key], key
+    for key in ["method", "rtol", "atol", "rhs_evaluations", "steps", "rejected_steps", "events", "energy_drift"]:
+        assert s[key] == c[key], key
+    assert s["events"][0]["when"] == "lean=±0.5" and s["t"][-1] == s["events"][0]["t"]
+    assert abs(abs(s["lean"][-1]) - 0.5) < 1e-9
+    r = carvallo.simulate(carvallo.benchmark(), 4.6, 0.05, 1.0)
+    assert (r["method"], r["rtol"], r["steps"], r["events"]) == ("rk4", None, 1000, [])
+
+
+def test_simulate_many_equals_single_runs():
+    p = carvallo.benchmark()
+    speeds, leans = np.array([4.6, 2.0, 3.0, 1.0]), np.array([0.05, 0.05, 0.1, 0.2])
+    rates = np.array([0.0, 0.0, 0.3, 0.0])
+    kw = dict(method="dop853", rtol=1e-9, stop_when=["lean=±0.5"])
+    m = carvallo.simulate_many(p, speeds, leans, 3.0, steer_rates=rates, **kw)
+    assert m["ok"].all() and m["errors"] == [None] * 4
+    for k, (v, lean0) in enumerate(zip(speeds, leans)):
+        if rates[k] != 0.0:
+            continue  # simulate starts with a zero steer rate
+        s = carvallo.simulate(p, v, lean0, 3.0, every=1, **kw)
+        assert m["t_end"][k] == s["t"][-1] and m["lean"][k] == s["lean"][-1], k
+        assert m["steer"][k] == s["steer"][-1] and m["x"][k] == s["rear_x"][-1], k
+        assert m["rhs_evaluations"][k] == s["rhs_evaluations"], k
+        assert bool(m["fell"][k]) == bool(s["events"]), k
+        if s["events"]:
+            assert m["event_t"][k] == s["events"][0]["t"] and m["stopped_by"][k] == 0
+        else:
+            assert math.isnan(m["event_t"][k]) and m["stopped_by"][k] == -1
+    assert not m["fell"][0] and m["fell"][1]
+    # Without a stop condition the slow bicycle falls flat: a failed run that fell.
+    m = carvallo.simulate_many(p, np.array([2.0]), np.array([0.05]), 5.0)
+    assert not m["ok"][0] and m["fell"][0] and "no pitch puts the front wheel" in m["errors"][0]
+    with pytest.raises(carvallo.ParameterError, match="lean0s has 1 values for 2 speeds"):
+        carvallo.simulate_many(p, np.array([1.0, 2.0]), np.array([0.0]), 1.0)
+    with pytest.raises(carvallo.ParameterError, match="invalid method `euler`"):
+        carvallo.simulate(p, 4.0, 0.0, 1.0, method="euler")
+    with pytest.raises(carvallo.ParameterError, match="invalid stop condition `speed=1`"):
+        carvallo.simulate(p, 4.0, 0.0, 1.0, stop_when=["speed=1"])
+    with pytest.raises(carvallo.ParameterError, match="rtol and atol need an adaptive method"):
+        carvallo.simulate(p, 4.0, 0.0, 1.0, rtol=1e-8)
+
+
 def test_report_equals_the_cli(cli):
     assert carvallo.report() == cli("report", "--json")
 

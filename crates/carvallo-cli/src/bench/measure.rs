@@ -117,6 +117,10 @@ pub struct Report {
     pub distributions: Vec<Distribution>,
     /// The targets.
     pub targets: Vec<Target>,
+    /// The work-precision rows of the simulations ([`super::simulation`]).
+    pub simulation: Vec<super::simulation::SimulationRow>,
+    /// The simulations' reference solutions and their independent checks.
+    pub simulation_references: Vec<super::simulation::SimulationReference>,
 }
 
 /// The targets as a list (see [`Report::targets`]).

@@ -11,6 +11,7 @@ pub mod certified;
 pub mod measure;
 pub mod peer;
 pub mod quartic;
+pub mod simulation;
 pub mod tables;
 
 use measure::rel;

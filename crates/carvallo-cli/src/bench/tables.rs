@@ -908,6 +908,8 @@ pub fn run(cfg: &Config) -> Report {
         rows,
         distributions,
         targets,
+        simulation: Vec::new(),
+        simulation_references: Vec::new(),
     }
 }
 
@@ -936,6 +938,9 @@ pub fn render_text(r: &Report) -> String {
             fmt_opt(row.max_rel_err, |x| format!("{x:.1e}")),
             row.note
         ));
+    }
+    if !r.simulation.is_empty() {
+        s.push_str(&super::simulation::render(&r.simulation, &r.simulation_references));
     }
     s.push_str("\n== distributions (relative error / 2^-52)\n");
     s.push_str(&format!(

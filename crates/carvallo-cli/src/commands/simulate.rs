@@ -1,19 +1,246 @@
 //! `carvallo simulate --model benchmark|FILE.toml --speed V --lean0 RAD --duration S
-//! [--step DT] [--every N] [--json]`: integrates the nonlinear Carvallo–Whipple equations from
-//! upright straight running at speed V with the initial lean RAD (RK4, step DT = 0.001 s by
-//! default, the pitch re-solved at every stage) and prints the time series every N steps (10 by
-//! default): time, lean, steer, pitch, rear contact speed, both ground tracks, energy, and the
-//! energy drift and largest contact residual of the run.
+//! [--step DT] [--every N] [--method rk4|dopri5|dop853 [--rtol R] [--atol A]]
+//! [--stop-when NAME=VALUE|NAME=±VALUE ...] [--json]`: integrates the nonlinear
+//! Carvallo–Whipple equations from upright straight running at speed V with the initial lean
+//! RAD (RK4 at the step DT = 0.001 s by default, the pitch re-solved at every stage) and prints
+//! the time series every N steps (10 by default): time, lean, steer, pitch, rear contact speed,
+//! both ground tracks, energy, and the energy drift and largest contact residual of the run.
+//!
+//! With an adaptive `--method` (Dormand–Prince 5(4) or DOP853, tolerances `--rtol`, default
+//! 1e-8, and `--atol`, default 1e-3 × rtol) the step follows the error estimate and the
+//! printed times are the same grid, `k N DT`, sampled from the dense output. `--stop-when`
+//! ends the run when a quantity (`lean`, `steer`, `yaw`, `pitch`, `lean_rate`, `steer_rate`,
+//! `x`, `y`) crosses VALUE, or its magnitude reaches VALUE (`lean=±0.5`); the time is located
+//! on the interpolant and the state there is the last row. The text then names the condition
+//! met and, for an adaptive method, the steps; `--json` always adds `method`, `rtol`, `atol`,
+//! `rhs_evaluations`, `steps`, `rejected_steps` and `events` (`[{"when", "t"}]`).
+//!
+//! `--batch FILE.csv` (columns `speed`, `lean0`, optionally `steer_rate0`) runs one simulation
+//! per row in parallel and keeps only their ends
+//! ([`WhippleNonlinear::simulate_many`]): a summary, or with `--csv` one row per simulation
+//! (the start, `status`, `fell`, the event, the final state, the counts, the diagnostics, the
+//! error of a failed run), each equal bit for bit to the single run; a progress bar is drawn on
+//! standard error when it is a terminal.
 //!
 //! The parameter file is the anchors TOML format or BicycleParameters' text, with `--rider` and
 //! `--strict` as on `window` ([`crate::args::bicycle`]). Unknown,
 //! repeated or missing arguments, non-finite numbers and a failed simulation (the bicycle fell
 //! flat) are errors naming the value, exit code 2.
 
-use carvallo::whipple_nonlinear::WhippleNonlinear;
+use std::sync::atomic::{AtomicBool, AtomicUsize, Ordering};
+
+use carvallo::numerics::integrate::{Grid, Integration, Method};
+use carvallo::whipple_nonlinear::{NonlinearError, Stop, WhippleNonlinear};
 use serde_json::json;
 
 use crate::args::{finite, DataOptions};
+
+/// How `simulate` integrates: the method, its tolerances and the stop conditions.
+#[derive(Clone, Debug, Default, PartialEq, clap::Args)]
+pub struct IntegrationArgs {
+    /// The integrator: fixed-step RK4, or Dormand–Prince 5(4) or DOP853 with error control
+    /// and dense output
+    #[arg(long, value_enum, default_value_t)]
+    pub method: MethodArg,
+    /// The relative tolerance of an adaptive method [default: 1e-8]
+    #[arg(long, value_name = "R", value_parser = finite, allow_hyphen_values = true)]
+    pub rtol: Option<f64>,
+    /// The absolute tolerance of an adaptive method [default: 1e-3 × rtol]
+    #[arg(long, value_name = "A", value_parser = finite, allow_hyphen_values = true)]
+    pub atol: Option<f64>,
+    /// Stop when NAME (lean, steer, yaw, pitch, lean_rate, steer_rate, x, y) crosses VALUE,
+    /// or when its magnitude reaches VALUE (NAME=±VALUE or NAME=+-VALUE); may be repeated
+    #[arg(long = "stop-when", value_name = "NAME=VALUE", value_parser = parse_stop, allow_hyphen_values = true)]
+    pub stop_when: Vec<Stop>,
+}
+
+/// The integrator of `--method`.
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq, clap::ValueEnum)]
+pub enum MethodArg {
+    /// Classical Runge–Kutta at the fixed step --step
+    #[default]
+    Rk4,
+    /// Dormand–Prince 5(4), error-controlled, dense output of order 4
+    Dopri5,
+    /// Hairer's DOP853 8(5,3), error-controlled, dense output of order 7
+    Dop853,
+}
+
+impl IntegrationArgs {
+    /// The integration these options describe, or an error naming the bad value.
+    pub fn integration(&self) -> Result<Integration, String> {
+        let method = match self.method {
+            MethodArg::Rk4 => Method::Rk4,
+            MethodArg::Dopri5 => Method::Dopri5,
+            MethodArg::Dop853 => Method::Dop853,
+        };
+        if method == Method::Rk4 {
+            if let Some(r) = self.rtol {
+                return Err(format!("invalid --rtol {r:?}: rk4 has a fixed step (--step); choose --method dopri5 or dop853"));
+            }
+            if let Some(a) = self.atol {
+                return Err(format!("invalid --atol {a:?}: rk4 has a fixed step (--step); choose --method dopri5 or dop853"));
+            }
+            return Ok(Integration::RK4);
+        }
+        let how = Integration::with_defaults(method, self.rtol, self.atol);
+        match how.unusable() {
+            Some((name, value, reason)) => Err(format!("invalid --{name} {value:?}: {reason}")),
+            None => Ok(how),
+        }
+    }
+}
+
+/// One row of a `--batch` file: the line number and the start.
+struct BatchRow {
+    line: usize,
+    speed: f64,
+    lean0: f64,
+    steer_rate0: f64,
+}
+
+/// Reads a `--batch` file: a header naming `speed`, `lean0` and optionally `steer_rate0` (in
+/// any order), then one row of finite numbers per simulation (blank lines skipped).
+fn read_batch(file: &std::path::Path) -> Result<Vec<BatchRow>, String> {
+    let name = file.display();
+    let text = std::fs::read_to_string(file).map_err(|e| {
+        format!("cannot read batch file `{name}`: {}", e.to_string().to_lowercase())
+    })?;
+    let mut lines = text.lines().enumerate().filter(|(_, l)| !l.trim().is_empty());
+    let (_, header) = lines.next().ok_or_else(|| format!("invalid batch file `{name}`: empty"))?;
+    let columns: Vec<&str> = header.split(',').map(str::trim).collect();
+    let find = |c: &str| columns.iter().position(|h| *h == c);
+    let (Some(speed), Some(lean0)) = (find("speed"), find("lean0")) else {
+        return Err(format!(
+            "invalid batch file `{name}`: the header `{header}` must name the columns speed and lean0 (and optionally steer_rate0)"
+        ));
+    };
+    if let Some(other) = columns.iter().find(|c| !["speed", "lean0", "steer_rate0"].contains(c)) {
+        return Err(format!("invalid batch file `{name}`: unknown column `{other}`"));
+    }
+    let steer = find("steer_rate0");
+    let mut rows = Vec::new();
+    for (i, line) in lines {
+        let cells: Vec<&str> = line.split(',').map(str::trim).collect();
+        if cells.len() != columns.len() {
+            return Err(format!(
+                "invalid batch file `{name}` line {}: {} values for {} columns",
+                i + 1,
+                cells.len(),
+                columns.len()
+            ));
+        }
+        let num = |k: usize| -> Result<f64, String> {
+            cells[k].parse::<f64>().ok().filter(|x| x.is_finite()).ok_or_else(|| {
+                format!(
+                    "invalid batch file `{name}` line {}: {} `{}` is not a finite number",
+                    i + 1,
+                    columns[k],
+                    cells[k]
+                )
+            })
+        };
+        rows.push(BatchRow {
+            line: i + 1,
+            speed: num(speed)?,
+            lean0: num(lean0)?,
+            steer_rate0: steer.map_or(Ok(0.0), num)?,
+        });
+    }
+    Ok(rows)
+}
+
+/// `simulate --batch`: every row of the file simulated in parallel, as a summary or CSV rows.
+fn batch(
+    bike: &WhippleNonlinear,
+    file: &std::path::Path,
+    grid: &Grid,
+    how: &Integration,
+    stops: &[Stop],
+    csv: bool,
+) -> Result<String, String> {
+    let rows = read_batch(file)?;
+    let mut starts = Vec::with_capacity(rows.len());
+    for r in &rows {
+        let mut s = bike
+            .initial_state(r.speed, r.lean0)
+            .map_err(|e| format!("invalid batch file `{}` line {}: {e}", file.display(), r.line))?;
+        s.steer_rate = r.steer_rate0;
+        starts.push(s);
+    }
+    // Only the end is kept: no sample inside the run (the integration does not depend on them).
+    let grid = Grid { every: grid.n.max(1), ..*grid };
+    let clock = std::time::Instant::now();
+    let (counter, finished) = (AtomicUsize::new(0), AtomicBool::new(false));
+    let ends = std::thread::scope(|scope| {
+        scope.spawn(|| {
+            crate::perf::progress_bar_of(&counter, starts.len(), &finished, "simulations")
+        });
+        let ends = bike.simulate_many(&starts, &grid, how, stops, &counter);
+        finished.store(true, Ordering::Relaxed);
+        ends
+    });
+    let elapsed = clock.elapsed().as_secs_f64();
+    // Fell: a stop condition met, or the contact lost (the bicycle lay flat).
+    let fell = |e: &Result<carvallo::whipple_nonlinear::Final, NonlinearError>| match e {
+        Ok(f) => f.event.is_some(),
+        Err(NonlinearError::NoContact { .. }) => true,
+        Err(_) => false,
+    };
+    if csv {
+        let mut s = String::from("row,speed,lean0,steer_rate0,status,fell,stopped_by,event_t,t_end,lean,steer,yaw,x,y,lean_rate,steer_rate,rhs_evaluations,steps,rejected_steps,energy_drift,max_contact_residual,error\n");
+        for (k, (r, e)) in rows.iter().zip(&ends).enumerate() {
+            let head = format!("{k},{:?},{:?},{:?}", r.speed, r.lean0, r.steer_rate0);
+            match e {
+                Ok(f) => {
+                    let st = f.state;
+                    let (by, te) = match f.event {
+                        Some((j, t)) => (stops[j].text(), format!("{t:?}")),
+                        None => (String::new(), String::new()),
+                    };
+                    let values =
+                        [f.t, st.lean, st.steer, st.yaw, st.x, st.y, st.lean_rate, st.steer_rate]
+                            .map(|x| format!("{x:?}"))
+                            .join(",");
+                    s.push_str(&format!(
+                        "{head},ok,{},{by},{te},{values},{},{},{},{:?},{:?},\n",
+                        fell(e),
+                        f.stats.rhs_evaluations,
+                        f.stats.steps,
+                        f.stats.rejected_steps,
+                        f.diagnostics.energy_drift,
+                        f.diagnostics.max_contact_residual
+                    ));
+                }
+                Err(err) => {
+                    let msg = err.to_string().replace('"', "'");
+                    s.push_str(&format!("{head},failed,{},,,,,,,,,,,,,,,,\"{msg}\"\n", fell(e)));
+                }
+            }
+        }
+        return Ok(s);
+    }
+    let failed = ends.iter().filter(|e| e.is_err()).count();
+    let fallen = ends.iter().filter(|e| fell(e)).count();
+    let evaluations: usize = ends.iter().flatten().map(|f| f.stats.rhs_evaluations).sum();
+    Ok(format!(
+        "{} simulations of {} s ({}{}) on {} threads in {elapsed:.3} s\n{fallen} fell (a stop condition met or the contact lost), {failed} failed, {evaluations} right-hand side evaluations\n",
+        rows.len(),
+        grid.end(),
+        how.method.name(),
+        if how.method.is_adaptive() { format!(" rtol {:e} atol {:e}", how.rtol, how.atol) } else { format!(" step {} s", grid.h) },
+        rayon::current_num_threads()
+    ))
+}
+
+/// Reads a `--stop-when` condition.
+fn parse_stop(text: &str) -> Result<Stop, String> {
+    Stop::parse(text).ok_or_else(|| {
+        "expected NAME=VALUE or NAME=±VALUE with NAME one of lean, steer, yaw, pitch, \
+         lean_rate, steer_rate, x, y and a finite VALUE (non-negative after ±)"
+            .to_string()
+    })
+}
 
 /// `carvallo simulate`: the nonlinear bicycle integrated from upright straight running.
 #[derive(Clone, Debug, PartialEq, clap::Args)]
@@ -25,20 +252,30 @@ pub struct Args {
     #[command(flatten)]
     pub data: DataOptions,
     /// The initial forward speed [m/s]
-    #[arg(long, value_name = "V", value_parser = finite, allow_hyphen_values = true)]
-    pub speed: f64,
+    #[arg(long, value_name = "V", value_parser = finite, allow_hyphen_values = true, required_unless_present = "batch")]
+    pub speed: Option<f64>,
     /// The initial lean [rad]
-    #[arg(long, value_name = "RAD", value_parser = finite, allow_hyphen_values = true)]
-    pub lean0: f64,
+    #[arg(long, value_name = "RAD", value_parser = finite, allow_hyphen_values = true, required_unless_present = "batch")]
+    pub lean0: Option<f64>,
     /// How long to simulate [s]
     #[arg(long, value_name = "S", value_parser = finite, allow_hyphen_values = true)]
     pub duration: f64,
-    /// The RK4 step [s]
+    /// The RK4 step [s] (for an adaptive method, the grid of the printed times)
     #[arg(long, value_name = "DT", default_value_t = 0.001, value_parser = finite, allow_hyphen_values = true)]
     pub step: f64,
-    /// Print every N-th step
+    /// Print every N-th step (for an adaptive method, the dense output every N × DT seconds)
     #[arg(long, value_name = "N", default_value_t = 10, value_parser = positive)]
     pub every: usize,
+    #[command(flatten)]
+    pub integration: IntegrationArgs,
+    /// Many simulations in parallel: a CSV file with the columns speed, lean0 and optionally
+    /// steer_rate0 (one simulation a row, instead of --speed and --lean0)
+    #[arg(long, value_name = "FILE.csv", conflicts_with_all = ["speed", "lean0", "json"])]
+    pub batch: Option<std::path::PathBuf>,
+    /// With --batch: print one CSV row per simulation (final state, event, whether it fell)
+    /// instead of the summary
+    #[arg(long, requires = "batch")]
+    pub csv: bool,
     /// Print JSON (the samples, the energy drift and the largest contact residual) instead of text
     #[arg(long)]
     pub json: bool,
@@ -51,19 +288,43 @@ fn positive(v: &str) -> Result<usize, String> {
 
 /// Runs `carvallo simulate`: the text to print, or an error naming the bad value.
 pub fn run(cmd: &Args) -> Result<String, String> {
-    let Args { model, data, speed, lean0, duration, step, every, json } = cmd;
+    let Args { model, data, duration, step, every, integration, json, .. } = cmd;
+    let how = integration.integration()?;
+    let stops = &integration.stop_when;
+    if cmd.csv && cmd.batch.is_none() {
+        return Err("invalid --csv: it prints the rows of --batch FILE.csv".into());
+    }
     let bike = WhippleNonlinear::new(crate::args::bicycle(model, data)?);
+    let grid = Grid::new(*duration, *step, *every).map_err(|(name, value, reason)| {
+        carvallo::ParameterError::InvalidParameter { name, value, reason }.to_string()
+    })?;
+    if let Some(file) = &cmd.batch {
+        return batch(&bike, file, &grid, &how, stops, cmd.csv);
+    }
+    let (Some(speed), Some(lean0)) = (cmd.speed, cmd.lean0) else {
+        return Err("--speed and --lean0 are required without --batch".into());
+    };
+    let (speed, lean0) = (&speed, &lean0);
     let start = bike.initial_state(*speed, *lean0).map_err(|e| e.to_string())?;
-    let tr = bike.simulate(start, *duration, *step, *every).map_err(|e| e.to_string())?;
+    let tr = bike.simulate_with(start, &grid, &how, stops).map_err(|e| e.to_string())?;
+    let events: Vec<(String, f64)> = tr.event.iter().map(|&(k, t)| (stops[k].text(), t)).collect();
     if *json {
         let col = |f: &dyn Fn(&carvallo::whipple_nonlinear::Sample) -> f64| -> Vec<f64> {
             tr.samples.iter().map(f).collect()
         };
+        let adaptive = how.method.is_adaptive();
         let v = json!({
             "model": model,
             "speed": speed,
             "lean0": lean0,
             "step": tr.step,
+            "method": how.method.name(),
+            "rtol": if adaptive { Some(how.rtol) } else { None },
+            "atol": if adaptive { Some(how.atol) } else { None },
+            "rhs_evaluations": tr.stats.rhs_evaluations,
+            "steps": tr.stats.steps,
+            "rejected_steps": tr.stats.rejected_steps,
+            "events": events.iter().map(|(when, t)| json!({"when": when, "t": t})).collect::<Vec<_>>(),
             "energy_drift": tr.energy_drift,
             "max_contact_residual": tr.max_contact_residual,
             "t": col(&|s| s.t),
@@ -79,9 +340,32 @@ pub fn run(cmd: &Args) -> Result<String, String> {
         });
         serde_json::to_string(&v).map_err(|e| e.to_string())
     } else {
+        let integrator = if how.method.is_adaptive() {
+            format!(
+                "{} rtol {:e} atol {:e}, samples every {} s\n{} steps ({} rejected), {} right-hand side evaluations",
+                how.method.name(),
+                how.rtol,
+                how.atol,
+                tr.step * *every as f64,
+                tr.stats.steps,
+                tr.stats.rejected_steps,
+                tr.stats.rhs_evaluations
+            )
+        } else {
+            format!("RK4 step {} s", tr.step)
+        };
         let mut s = format!(
-            "nonlinear {model} bicycle from {speed} m/s, lean {lean0} rad, RK4 step {} s\nenergy drift {:e} J, largest contact residual {:e} m\n t        lean       steer      speed      rear (x, y)            front (x, y)\n",
-            tr.step, tr.energy_drift, tr.max_contact_residual
+            "nonlinear {model} bicycle from {speed} m/s, lean {lean0} rad, {integrator}\nenergy drift {:e} J, largest contact residual {:e} m\n",
+            tr.energy_drift, tr.max_contact_residual
+        );
+        for (when, t) in &events {
+            s.push_str(&format!("stopped at t = {t} s: {when}\n"));
+        }
+        if !stops.is_empty() && events.is_empty() {
+            s.push_str("no stop condition met\n");
+        }
+        s.push_str(
+            " t        lean       steer      speed      rear (x, y)            front (x, y)\n",
         );
         for p in &tr.samples {
             s.push_str(&format!(
@@ -125,11 +409,14 @@ mod tests {
             Ok(Args {
                 model: "benchmark".into(),
                 data: DataOptions::default(),
-                speed: 5.0,
-                lean0: 0.05,
+                speed: Some(5.0),
+                lean0: Some(0.05),
                 duration: 2.0,
                 step: 0.001,
                 every: 10,
+                integration: IntegrationArgs::default(),
+                batch: None,
+                csv: false,
                 json: true
             })
         );

@@ -3,7 +3,8 @@
 //! trail and against the steer axis tilt; Carvallo's bicycle without hands (n° 117–122,
 //! [`carvallo::bicycle_straight`]): its eigenvalues against speed with the memoir's and the
 //! derived limits; the rear and front ground tracks of a nonlinear simulation
-//! ([`carvallo::whipple_nonlinear`]) with their crossings (n° 106) counted from the data; the
+//! ([`carvallo::whipple_nonlinear`]) with their crossings (n° 106) counted from the data, and
+//! the error of that simulation against the work, for RK4 and the error-controlled pairs; the
 //! Bode diagram (magnitude and phase) from the steer torque to the lean at a few speeds
 //! ([`carvallo::whipple::transfer`]).
 
@@ -142,6 +143,91 @@ fn decimate(points: &[(f64, f64)], n: usize) -> Vec<(f64, f64)> {
         }
     }
     out
+}
+
+/// The error of the nonlinear simulation (4.6 m/s, lean 0.05 rad, 5 s) against the right-hand
+/// side evaluations, log-log: RK4 at steps 0.02 s / 2^k, DOPRI5 and DOP853 at rtol 1e-3 …
+/// 1e-12 (atol 1e-3 rtol), the error the largest over the state (|x − ref| / max(1, |ref|)) and
+/// over the samples every 0.01 s, against DOP853 at rtol 1e-14.
+pub(super) fn fig_work_precision(p: &WhippleParams) -> Result<String> {
+    use carvallo::numerics::integrate::{Grid, Integration, Method};
+    let bike = WhippleNonlinear::new(p.clone());
+    let start = bike.initial_state(4.6, 0.05).map_err(|e| anyhow!("{e}"))?;
+    let states = |how: &Integration, grid: &Grid| -> Result<(Vec<[f64; 10]>, usize)> {
+        let tr = bike.simulate_with(start, grid, how, &[]).map_err(|e| anyhow!("{e}"))?;
+        let rows = tr
+            .samples
+            .iter()
+            .map(|s| {
+                let x = s.state;
+                [
+                    x.x,
+                    x.y,
+                    x.yaw,
+                    x.lean,
+                    x.steer,
+                    x.rear_wheel,
+                    x.front_wheel,
+                    x.lean_rate,
+                    x.steer_rate,
+                    x.rear_wheel_rate,
+                ]
+            })
+            .collect();
+        Ok((rows, tr.stats.rhs_evaluations))
+    };
+    let sample = Grid::new(5.0, 0.01, 1).map_err(|e| anyhow!("{e:?}"))?;
+    let (reference, _) = states(&Integration::adaptive(Method::Dop853, 1e-14, 1e-17), &sample)?;
+    let error = |rows: &[[f64; 10]]| -> f64 {
+        let stride = (reference.len() - 1) / (rows.len() - 1).max(1);
+        let mut worst = 1e-16f64;
+        for (k, x) in rows.iter().enumerate() {
+            for (a, b) in x.iter().zip(&reference[(k * stride).min(reference.len() - 1)]) {
+                worst = worst.max((a - b).abs() / b.abs().max(1.0));
+            }
+        }
+        worst
+    };
+    let mut curves = Vec::new();
+    for (i, method) in [Method::Dopri5, Method::Dop853].into_iter().enumerate() {
+        let mut pts = Vec::new();
+        for k in 3..=12 {
+            let rtol = 10f64.powi(-k);
+            let (rows, n) = states(&Integration::adaptive(method, rtol, 1e-3 * rtol), &sample)?;
+            pts.push(((n as f64).log10(), error(&rows).log10()));
+        }
+        curves.push(Curve::new(method.name(), pts, color(i), Stroke::Solid));
+    }
+    let mut pts = Vec::new();
+    for k in 0..=6u32 {
+        let every = 1usize << k;
+        let grid =
+            Grid::new(5.0, 0.02 / every as f64, every.max(2) / 2).map_err(|e| anyhow!("{e:?}"))?;
+        let (rows, n) = states(&Integration::RK4, &grid)?;
+        // RK4 at 0.02 s samples every 0.02 s: compare with every other reference sample.
+        pts.push(((n as f64).log10(), error(&rows).log10()));
+    }
+    curves.push(Curve::new("rk4", pts, color(2), Stroke::Dashed));
+    let (mut x0, mut x1, mut y0, mut y1) = (f64::MAX, f64::MIN, f64::MAX, f64::MIN);
+    for c in &curves {
+        for &(x, y) in &c.points {
+            (x0, x1, y0, y1) = (x0.min(x), x1.max(x), y0.min(y), y1.max(y));
+        }
+    }
+    let mut c = Chart::new(
+        "Nonlinear bicycle, 4.6 m/s for 5 s: error against work",
+        "log10 right-hand side evaluations",
+        "log10 largest error over the samples",
+        x0 - 0.1..x1 + 0.1,
+        y0 - 0.5..y1 + 0.5,
+    );
+    for curve in curves {
+        let marks = Curve::new("", curve.points.clone(), curve.color, Stroke::Points);
+        c.add(curve);
+        c.add(marks);
+    }
+    c.legend = SeriesLabelPosition::UpperRight;
+    c.render()
 }
 
 /// Speed (m/s), initial lean (rad), duration (s) and step (s) of the ground-track run.

@@ -19,6 +19,7 @@ pub mod discussion;
 pub mod fall;
 
 use crate::error::ParameterError;
+use crate::numerics::integrate::{conservative, Grid, IntegrateError, Integration, Threshold};
 use crate::numerics::ode::rk4_step;
 
 crate::scene! {
@@ -120,23 +121,7 @@ pub struct Hoop {
     g: f64,
 }
 
-/// What [`Hoop::simulate_pns`] measures over a run: the energy, which the exact motion
-/// conserves (n° 7), and how far the integrator drifted from it.
-#[derive(Clone, Copy, Debug, PartialEq)]
-pub struct EnergyDrift {
-    /// The energy $T + V$ of the first state (J).
-    pub energy0: f64,
-    /// $\max_k |E_k - E_0|$ over the trajectory (J): the integrator's energy drift, a measure of
-    /// its error since the exact motion conserves energy (n° 7).
-    pub max_energy_drift: f64,
-}
-
-impl EnergyDrift {
-    /// The energy drift relative to the initial energy, $\max_k |E_k - E_0| / |E_0|$.
-    pub fn relative_energy_drift(&self) -> f64 {
-        self.max_energy_drift / self.energy0.abs()
-    }
-}
+pub use crate::numerics::ode::EnergyDrift;
 
 /// A trajectory computed by [`Hoop::simulate_pns`]: the states $(\theta, p, n, s)$ at times
 /// $0, \Delta t, \dots, N\Delta t$ ($N + 1$ samples) and the [`EnergyDrift`], whose fields and
@@ -363,6 +348,46 @@ impl Hoop {
         trajectory.diagnostics.max_energy_drift = max_energy_drift;
         Ok(trajectory)
     }
+
+    /// Integrates system (2) from `state0` $= (\theta, p, n, s)$ over `grid` by `how` (RK4 at
+    /// the grid's step, or an error-controlled pair sampled on the grid), until the grid's end
+    /// or the first of `stops` met (on components of the state: index 0 is the lean θ); the
+    /// energy drift is measured at every accepted step. [`simulate_pns`](Self::simulate_pns)
+    /// is RK4 on the grid of `steps` steps of `dt`, sampled at every step.
+    ///
+    /// # Errors
+    /// [`IntegrateError::Model`] with [`ParameterError::InvalidParameter`] for an unusable
+    /// tolerance or a non-finite state; the adaptive methods' failures.
+    pub fn simulate_with(
+        &self,
+        state0: [f64; 4],
+        grid: &Grid,
+        how: &Integration,
+        stops: &[Threshold],
+    ) -> Result<Trajectory, IntegrateError<ParameterError>> {
+        check_run(state0, how)?;
+        conservative(how, grid, state0, |y| self.rhs_pns(y), |y| self.energy(y), stops)
+            .map_err(IntegrateError::widen)
+    }
+}
+
+/// Checks the settings and the start of a simulation of the hoop or the unicycle.
+pub(crate) fn check_run(
+    state0: [f64; 4],
+    how: &Integration,
+) -> Result<(), IntegrateError<ParameterError>> {
+    let bad = |(name, value, reason)| {
+        IntegrateError::Model(ParameterError::InvalidParameter { name, value, reason })
+    };
+    if let Some(u) = how.unusable() {
+        return Err(bad(u));
+    }
+    for (name, v) in ["theta", "p", "n", "s"].into_iter().zip(state0) {
+        if !v.is_finite() {
+            return Err(bad((name, v, "must be finite")));
+        }
+    }
+    Ok(())
 }
 
 /// The real roots $r_1 \le r_2$ of $a x^2 + b x + c$, or `None` when $a = 0$, the discriminant

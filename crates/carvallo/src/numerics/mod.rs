@@ -4,6 +4,7 @@
 pub mod dd;
 pub mod eigen;
 pub mod graeffe;
+pub mod integrate;
 pub mod mat2;
 pub mod ode;
 pub mod poly;

@@ -3,6 +3,8 @@
 
 use std::ops::Deref;
 
+use crate::numerics::integrate::Stats;
+
 /// One classical Runge–Kutta step of $x' = f(x)$ from `x` with step `dt`.
 pub fn rk4_step<const N: usize>(
     f: impl Fn([f64; N]) -> [f64; N],
@@ -17,9 +19,9 @@ pub fn rk4_step<const N: usize>(
     std::array::from_fn(|i| x[i] + dt / 6.0 * (k1[i] + 2.0 * k2[i] + 2.0 * k3[i] + k4[i]))
 }
 
-/// A motion computed with a fixed step: the sample times, one sample per time (a state, or a
-/// state with what the model observes at it) and what the integrator measured over the whole
-/// run (`diagnostics`: an energy drift, a constraint residual).
+/// A computed motion: the sample times, one sample per time (a state, or a state with what the
+/// model observes at it), what the integrator measured over the whole run (`diagnostics`: an
+/// energy drift, a constraint residual), its counts (`stats`) and the event that ended it.
 ///
 /// Each model names its own: [`hoop::Trajectory`](crate::hoop::Trajectory) is
 /// `Trajectory<[f64; 4], hoop::EnergyDrift>`,
@@ -29,7 +31,8 @@ pub fn rk4_step<const N: usize>(
 /// `trajectory.diagnostics.max_energy_drift`.
 #[derive(Clone, Debug, PartialEq)]
 pub struct Trajectory<S, D = ()> {
-    /// The integration step (s); samples may be kept only every few steps.
+    /// The integration step (s) of RK4, the grid step of the samples for the adaptive
+    /// methods; samples may be kept only every few steps.
     pub step: f64,
     /// The time of each sample (s), increasing, as many as [`samples`](Self::samples).
     pub times: Vec<f64>,
@@ -37,6 +40,11 @@ pub struct Trajectory<S, D = ()> {
     pub samples: Vec<S>,
     /// What the integrator measured over the run.
     pub diagnostics: D,
+    /// Right-hand side evaluations, accepted and rejected steps.
+    pub stats: Stats,
+    /// The event that ended the run (its index among the stop conditions and its time, the
+    /// time of the last sample), `None` when the run reached its end.
+    pub event: Option<(usize, f64)>,
 }
 
 impl<S, D> Trajectory<S, D> {
@@ -47,6 +55,8 @@ impl<S, D> Trajectory<S, D> {
             times: Vec::with_capacity(capacity),
             samples: Vec::with_capacity(capacity),
             diagnostics,
+            stats: Stats::default(),
+            event: None,
         }
     }
 
@@ -95,6 +105,25 @@ impl<S, D> Deref for Trajectory<S, D> {
 
     fn deref(&self) -> &D {
         &self.diagnostics
+    }
+}
+
+/// What a simulation of a conservative system measures over a run (the hoop's
+/// `simulate_pns`, the unicycle's `simulate_with`): the energy, which the exact motion
+/// conserves (memoir n° 7), and how far the integrator drifted from it.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct EnergyDrift {
+    /// The energy $T + V$ of the first state (J).
+    pub energy0: f64,
+    /// $\max_k |E_k - E_0|$ over the trajectory (J): the integrator's energy drift, a measure of
+    /// its error since the exact motion conserves energy (n° 7).
+    pub max_energy_drift: f64,
+}
+
+impl EnergyDrift {
+    /// The energy drift relative to the initial energy, $\max_k |E_k - E_0| / |E_0|$.
+    pub fn relative_energy_drift(&self) -> f64 {
+        self.max_energy_drift / self.energy0.abs()
     }
 }
 

@@ -15,6 +15,12 @@ pub mod discussion;
 pub mod variants;
 
 use crate::error::ParameterError;
+use crate::numerics::integrate::{conservative, Grid, IntegrateError, Integration, Threshold};
+use crate::numerics::ode::EnergyDrift;
+
+/// A motion computed by [`Unicycle::simulate_with`]: the states $(\theta, p, n, s)$ at the
+/// grid's sample times and the [`EnergyDrift`].
+pub type Trajectory = crate::numerics::ode::Trajectory<[f64; 4], EnergyDrift>;
 
 crate::scene! {
     /// The full model's $p'$, $n'$, $s'$ and its energy (motor moment 0).
@@ -283,6 +289,26 @@ impl Unicycle {
             }
         }
         Some(hi)
+    }
+
+    /// Integrates the full equations from `state0` $= (\theta, p, n, s)$ over `grid` by `how`
+    /// (RK4 at the grid's step, or an error-controlled pair sampled on the grid), until the
+    /// grid's end or the first of `stops` met (index 0 of the state is the lean θ); the energy
+    /// drift is measured at every accepted step.
+    ///
+    /// # Errors
+    /// [`IntegrateError::Model`] with [`ParameterError::InvalidParameter`] for an unusable
+    /// tolerance or a non-finite state; the adaptive methods' failures.
+    pub fn simulate_with(
+        &self,
+        state0: [f64; 4],
+        grid: &Grid,
+        how: &Integration,
+        stops: &[Threshold],
+    ) -> Result<Trajectory, IntegrateError<ParameterError>> {
+        crate::hoop::check_run(state0, how)?;
+        conservative(how, grid, state0, |y| self.rhs(y), |y| self.energy(y), stops)
+            .map_err(IntegrateError::widen)
     }
 
     /// Integrates the full equations with the classical Runge–Kutta method: `steps` steps of

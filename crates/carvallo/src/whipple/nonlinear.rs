@@ -13,6 +13,13 @@
 //! rate, front wheel rate) are generated linear forms in $u$, and $\dot u$ solves the
 //! generated $M_3 \dot u = f_3$ by LU decomposition.
 //!
+//! [`simulate_with`](WhippleNonlinear::simulate_with) integrates by RK4 at a fixed step or by
+//! an error-controlled pair ([`crate::numerics::integrate`]), samples on a fixed grid and stops
+//! at [`Stop`] conditions (the lean reaching a bound, a sign change). The pitch is solved, not
+//! integrated and projected: every right-hand side evaluation, sample and event evaluation
+//! solves $h(\varphi, \theta, \delta) = 0$ by Newton (from the last pitch found), so the
+//! constraint holds to rounding whatever the method and tolerance.
+//!
 //! [`basu_mandal_accelerations`](WhippleNonlinear::basu_mandal_accelerations) evaluates the
 //! nine accelerations in the coordinates of Basu-Mandal, Chatterjee and Papadopoulos (Proc. R.
 //! Soc. A 463, 2007), whose Table 1 is the external check of these equations
@@ -26,6 +33,7 @@ use std::fmt;
 use nalgebra::{Matrix3, Vector3};
 
 use crate::error::ParameterError;
+use crate::numerics::integrate::{self, Grid, IntegrateError, Integration, Point};
 
 use crate::whipple::{BicycleDesign, WhippleError, WhippleParams};
 
@@ -81,6 +89,13 @@ pub enum NonlinearError {
         /// The steer (rad).
         steer: f64,
     },
+    /// The adaptive integrator gave up at time `t`.
+    Integration {
+        /// The time reached (s).
+        t: f64,
+        /// Why, in a few lower-case words.
+        reason: &'static str,
+    },
 }
 
 impl fmt::Display for NonlinearError {
@@ -94,6 +109,9 @@ impl fmt::Display for NonlinearError {
             NonlinearError::SingularMassMatrix { lean, steer } => {
                 write!(f, "singular mass matrix at lean {lean} rad, steer {steer} rad")
             }
+            NonlinearError::Integration { t, reason } => {
+                write!(f, "the integration failed at t = {t} s: {reason}")
+            }
         }
     }
 }
@@ -104,6 +122,37 @@ impl From<ParameterError> for NonlinearError {
     fn from(e: ParameterError) -> NonlinearError {
         NonlinearError::Parameter(e)
     }
+}
+
+impl From<IntegrateError<NonlinearError>> for NonlinearError {
+    fn from(e: IntegrateError<NonlinearError>) -> NonlinearError {
+        match e {
+            IntegrateError::Model(e) => e,
+            IntegrateError::StepTooSmall { t } => {
+                NonlinearError::Integration { t, reason: "step size below double precision" }
+            }
+            IntegrateError::TooManySteps { t } => {
+                NonlinearError::Integration { t, reason: "more than a million steps" }
+            }
+            IntegrateError::NotFinite { t } => {
+                NonlinearError::Integration { t, reason: "the right-hand side is not finite" }
+            }
+            IntegrateError::Stiff { t } => {
+                NonlinearError::Integration { t, reason: "the problem became stiff" }
+            }
+            IntegrateError::TooManyEvents { count } => {
+                NonlinearError::Parameter(ParameterError::InvalidParameter {
+                    name: "stop conditions",
+                    value: count as f64,
+                    reason: "at most 8",
+                })
+            }
+        }
+    }
+}
+
+fn invalid((name, value, reason): (&'static str, f64, &'static str)) -> NonlinearError {
+    NonlinearError::Parameter(ParameterError::InvalidParameter { name, value, reason })
 }
 
 fn finite(name: &'static str, value: f64) -> Result<f64, NonlinearError> {
@@ -274,6 +323,110 @@ pub struct Diagnostics {
 /// `times`), the integration `step` (s) and the [`Diagnostics`], whose fields are read through
 /// the trajectory (`trajectory.energy_drift`).
 pub type Trajectory = crate::numerics::ode::Trajectory<Sample, Diagnostics>;
+
+/// The end of a simulation without its samples ([`WhippleNonlinear::simulate_final`]).
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct Final {
+    /// The final time (s): the grid's end or the event's.
+    pub t: f64,
+    /// The final state.
+    pub state: State,
+    /// The stop condition met (its index) and when, `None` when the run reached the end.
+    pub event: Option<(usize, f64)>,
+    /// Right-hand side evaluations and steps.
+    pub stats: integrate::Stats,
+    /// The energy drift and contact residual over the accepted steps.
+    pub diagnostics: Diagnostics,
+}
+
+/// A quantity a [`Stop`] condition watches.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
+pub enum Watched {
+    /// Lean φ (rad).
+    Lean,
+    /// Steer δ (rad).
+    Steer,
+    /// Yaw ψ (rad).
+    Yaw,
+    /// Pitch θ (rad), solved from the contact constraint.
+    Pitch,
+    /// Lean rate (rad/s).
+    LeanRate,
+    /// Steer rate (rad/s).
+    SteerRate,
+    /// Rear contact x (m).
+    X,
+    /// Rear contact y (m).
+    Y,
+}
+
+impl Watched {
+    /// Every quantity, in the order of [`name`](Self::name)'s list.
+    pub const ALL: [Watched; 8] = [
+        Watched::Lean,
+        Watched::Steer,
+        Watched::Yaw,
+        Watched::Pitch,
+        Watched::LeanRate,
+        Watched::SteerRate,
+        Watched::X,
+        Watched::Y,
+    ];
+
+    /// The name on the command line: `lean`, `steer`, `yaw`, `pitch`, `lean_rate`,
+    /// `steer_rate`, `x`, `y`.
+    pub fn name(self) -> &'static str {
+        match self {
+            Watched::Lean => "lean",
+            Watched::Steer => "steer",
+            Watched::Yaw => "yaw",
+            Watched::Pitch => "pitch",
+            Watched::LeanRate => "lean_rate",
+            Watched::SteerRate => "steer_rate",
+            Watched::X => "x",
+            Watched::Y => "y",
+        }
+    }
+}
+
+/// Ends a simulation when `quantity - value` changes sign, or, with `magnitude`, when
+/// $|$`quantity`$| - $`value` does (the lean reaching ±`value`). Written `NAME=VALUE` or
+/// `NAME=±VALUE` (also `NAME=+-VALUE`) by [`Stop::parse`].
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct Stop {
+    /// What is watched.
+    pub quantity: Watched,
+    /// The threshold.
+    pub value: f64,
+    /// Whether the magnitude is watched (`±`).
+    pub magnitude: bool,
+}
+
+impl Stop {
+    /// The condition `text` (`lean=±0.5`, `lean=+-0.5`, `steer=0`); `None` when the name is
+    /// not one of [`Watched::name`]'s, the value is not a finite number, or a magnitude bound
+    /// is negative.
+    pub fn parse(text: &str) -> Option<Stop> {
+        let (name, value) = text.split_once('=')?;
+        let quantity = Watched::ALL.into_iter().find(|w| w.name() == name.trim())?;
+        let value = value.trim();
+        let (magnitude, number) = match value.strip_prefix('±').or_else(|| value.strip_prefix("+-"))
+        {
+            Some(rest) => (true, rest),
+            None => (false, value),
+        };
+        let value: f64 = number.parse().ok().filter(|v: &f64| v.is_finite())?;
+        if magnitude && value < 0.0 {
+            return None;
+        }
+        Some(Stop { quantity, value, magnitude })
+    }
+
+    /// The condition as [`parse`](Self::parse) reads it (`lean=±0.5`).
+    pub fn text(&self) -> String {
+        format!("{}={}{}", self.quantity.name(), if self.magnitude { "±" } else { "" }, self.value)
+    }
+}
 
 impl WhippleNonlinear {
     /// The nonlinear bicycle with the parameters `params`.
@@ -585,7 +738,8 @@ impl WhippleNonlinear {
 
     /// Integrates from `start` for `duration` seconds with the classical Runge–Kutta method of
     /// step `step`, solving the pitch by Newton at every stage; keeps every `every`-th step
-    /// (and the first and last).
+    /// (and the first and last). The same as [`simulate_with`](Self::simulate_with) with RK4
+    /// and no stop condition.
     ///
     /// # Errors
     /// [`NonlinearError::Parameter`] for a non-positive or non-finite duration or step,
@@ -598,88 +752,181 @@ impl WhippleNonlinear {
         step: f64,
         every: usize,
     ) -> Result<Trajectory, NonlinearError> {
-        for (name, v) in [("duration", duration), ("step", step)] {
-            finite(name, v)?;
-            if v <= 0.0 {
-                return Err(NonlinearError::Parameter(ParameterError::InvalidParameter {
-                    name,
-                    value: v,
-                    reason: "must be positive",
-                }));
-            }
-        }
-        if step > duration {
-            return Err(NonlinearError::Parameter(ParameterError::InvalidParameter {
-                name: "step",
-                value: step,
-                reason: "must not exceed the duration",
-            }));
-        }
-        let n = (duration / step).round();
-        if n > 1e7 {
-            return Err(NonlinearError::Parameter(ParameterError::InvalidParameter {
-                name: "step",
-                value: step,
-                reason: "gives more than ten million steps",
-            }));
-        }
-        if every == 0 {
-            return Err(NonlinearError::Parameter(ParameterError::InvalidParameter {
-                name: "every",
-                value: 0.0,
-                reason: "must be positive",
-            }));
-        }
-        let n = n as usize;
-        let h = duration / n as f64;
-        for (k, v) in start.to_array().iter().enumerate() {
-            finite(
-                [
-                    "x",
-                    "y",
-                    "yaw",
-                    "lean",
-                    "steer",
-                    "rear wheel",
-                    "front wheel",
-                    "lean rate",
-                    "steer rate",
-                    "rear wheel rate",
-                ][k],
-                *v,
-            )?;
-        }
-        let mut s = start;
-        let mut pitch = self.pitch(s.lean, s.steer, 0.0)?;
-        let first = self.sample(0.0, &s, pitch)?;
-        let e0 = first.energy;
-        let mut trajectory = Trajectory::with_capacity(h, n / every + 2, Diagnostics::default());
-        trajectory.push(0.0, first);
-        let (mut drift, mut residual) = (0.0f64, 0.0f64);
-        let add = |a: &[f64; 10], k: &[f64; 10], f: f64| -> State {
-            State::from_array(std::array::from_fn(|i| a[i] + f * k[i]))
+        let grid = Grid::new(duration, step, every).map_err(invalid)?;
+        self.simulate_with(start, &grid, &Integration::RK4, &[])
+    }
+
+    /// Integrates from `start` over `grid` by `how` and keeps the samples of the grid (for
+    /// RK4 the states of its steps, for the adaptive methods their dense output at the same
+    /// times), until the end of the grid or the first of `stops` met (its time located on the
+    /// interpolant; the last sample is then the state at that time). The diagnostics are taken
+    /// at every accepted step (the integrator's own states, not the interpolated samples); [`Trajectory::stats`](crate::numerics::ode::Trajectory::stats)
+    /// counts the right-hand side evaluations and the steps. The pitch is solved by Newton at
+    /// every evaluation (from the last pitch found), never integrated.
+    ///
+    /// # Errors
+    /// [`NonlinearError::Parameter`] for an unusable tolerance, a non-finite start, more than
+    /// eight stop conditions or a NaN threshold; no contact (the bicycle fell flat) or a
+    /// singular mass matrix during the run; [`NonlinearError::Integration`] when the adaptive
+    /// method gives up.
+    pub fn simulate_with(
+        &self,
+        start: State,
+        grid: &Grid,
+        how: &Integration,
+        stops: &[Stop],
+    ) -> Result<Trajectory, NonlinearError> {
+        let mut trajectory =
+            Trajectory::with_capacity(grid.h, grid.samples(), Diagnostics::default());
+        let mut keep = |t: f64, s: &State, guess: f64| -> Result<(), NonlinearError> {
+            trajectory.push(t, self.sample(t, s, guess)?);
+            Ok(())
         };
-        for i in 1..=n {
-            let y = s.to_array();
-            let (k1, p1) = self.rhs(&s, pitch)?;
-            let (k2, p2) = self.rhs(&add(&y, &k1, h / 2.0), p1)?;
-            let (k3, p3) = self.rhs(&add(&y, &k2, h / 2.0), p2)?;
-            let (k4, _) = self.rhs(&add(&y, &k3, h), p3)?;
-            s = State::from_array(std::array::from_fn(|j| {
-                y[j] + h / 6.0 * (k1[j] + 2.0 * k2[j] + 2.0 * k3[j] + k4[j])
-            }));
-            let c = self.configuration(&s, p1)?;
-            pitch = c.pitch;
-            residual = residual.max(self.contact(c.lean, c.pitch, c.steer).0.abs());
-            let (e, _) = self.observe(&c);
-            drift = drift.max((e - e0).abs());
-            if i % every == 0 || i == n {
-                let t = i as f64 * h;
-                trajectory.push(t, self.sample(t, &s, pitch)?);
-            }
-        }
-        trajectory.diagnostics =
-            Diagnostics { energy_drift: drift, max_contact_residual: residual };
+        let end = self.run(start, grid, how, stops, &mut keep)?;
+        trajectory.diagnostics = end.diagnostics;
+        trajectory.stats = end.stats;
+        trajectory.event = end.event;
         Ok(trajectory)
+    }
+
+    /// [`simulate_with`](Self::simulate_with) without the samples: the final time and state,
+    /// the event, the counts and the diagnostics, allocating nothing (for batches).
+    ///
+    /// # Errors
+    /// As [`simulate_with`](Self::simulate_with).
+    pub fn simulate_final(
+        &self,
+        start: State,
+        grid: &Grid,
+        how: &Integration,
+        stops: &[Stop],
+    ) -> Result<Final, NonlinearError> {
+        self.run(start, grid, how, stops, &mut |_, _, _| Ok(()))
+    }
+
+    /// [`simulate_final`](Self::simulate_final) from every start of `starts`, in parallel
+    /// (rayon), in their order; each result equals the single run's bit for bit (the runs
+    /// share nothing). `done` counts the finished runs (for a progress bar).
+    pub fn simulate_many(
+        &self,
+        starts: &[State],
+        grid: &Grid,
+        how: &Integration,
+        stops: &[Stop],
+        done: &std::sync::atomic::AtomicUsize,
+    ) -> Vec<Result<Final, NonlinearError>> {
+        use rayon::prelude::*;
+        use std::sync::atomic::Ordering;
+        starts
+            .par_iter()
+            .map(|s| {
+                let end = self.simulate_final(*s, grid, how, stops);
+                done.fetch_add(1, Ordering::Relaxed);
+                end
+            })
+            .collect()
+    }
+
+    /// The integration behind [`simulate_with`](Self::simulate_with): `keep(t, state, guess)`
+    /// receives every sample (and the event's state) with the Newton guess for its pitch.
+    fn run(
+        &self,
+        start: State,
+        grid: &Grid,
+        how: &Integration,
+        stops: &[Stop],
+        keep: &mut dyn FnMut(f64, &State, f64) -> Result<(), NonlinearError>,
+    ) -> Result<Final, NonlinearError> {
+        if let Some(bad) = how.unusable() {
+            return Err(invalid(bad));
+        }
+        const NAMES: [&str; 10] = [
+            "x",
+            "y",
+            "yaw",
+            "lean",
+            "steer",
+            "rear wheel",
+            "front wheel",
+            "lean rate",
+            "steer rate",
+            "rear wheel rate",
+        ];
+        for (k, v) in start.to_array().iter().enumerate() {
+            finite(NAMES[k], *v)?;
+        }
+        for stop in stops {
+            finite("stop value", stop.value)?;
+        }
+        if stops.len() > integrate::MAX_EVENTS {
+            return Err(invalid(("stop conditions", stops.len() as f64, "at most 8")));
+        }
+        let pitch0 = self.pitch(start.lean, start.steer, 0.0)?;
+        let (e0, _) = self.observe(&self.configuration(&start, pitch0)?);
+        // The Newton guess: the last pitch solved by a right-hand side evaluation or a step,
+        // and the first one solved since the last accepted step (the guess for its pitch).
+        let guess = std::cell::Cell::new(pitch0);
+        let first = std::cell::Cell::new(f64::NAN);
+        let (mut drift, mut residual) = (0.0f64, 0.0f64);
+        let mut rhs = |_t: f64, y: &[f64; 10]| -> Result<[f64; 10], NonlinearError> {
+            let (d, p) = self.rhs(&State::from_array(*y), guess.get())?;
+            guess.set(p);
+            if first.get().is_nan() {
+                first.set(p);
+            }
+            Ok(d)
+        };
+        let mut watchers: [_; integrate::MAX_EVENTS] = std::array::from_fn(|j| {
+            let stop = stops.get(j).copied();
+            let guess = &guess;
+            move |y: &[f64; 10]| -> Result<f64, NonlinearError> {
+                let Some(stop) = stop else { return Ok(f64::NAN) };
+                let s = State::from_array(*y);
+                let v = match stop.quantity {
+                    Watched::Lean => s.lean,
+                    Watched::Steer => s.steer,
+                    Watched::Yaw => s.yaw,
+                    Watched::Pitch => self.pitch(s.lean, s.steer, guess.get())?,
+                    Watched::LeanRate => s.lean_rate,
+                    Watched::SteerRate => s.steer_rate,
+                    Watched::X => s.x,
+                    Watched::Y => s.y,
+                };
+                Ok(if stop.magnitude { v.abs() - stop.value } else { v - stop.value })
+            }
+        });
+        let mut events: [&mut integrate::EventFn<'_, 10, NonlinearError>; integrate::MAX_EVENTS] =
+            watchers.each_mut().map(|w| w as &mut integrate::EventFn<'_, 10, NonlinearError>);
+        let mut observe = |kind: Point, t: f64, y: &[f64; 10]| -> Result<(), NonlinearError> {
+            let s = State::from_array(*y);
+            match kind {
+                Point::Step => {
+                    let g = if first.get().is_nan() { guess.get() } else { first.get() };
+                    let c = self.configuration(&s, g)?;
+                    guess.set(c.pitch);
+                    first.set(f64::NAN);
+                    residual = residual.max(self.contact(c.lean, c.pitch, c.steer).0.abs());
+                    let (e, _) = self.observe(&c);
+                    drift = drift.max((e - e0).abs());
+                }
+                Point::Sample(_) | Point::Event => keep(t, &s, guess.get())?,
+            }
+            Ok(())
+        };
+        let outcome = integrate::integrate(
+            how,
+            grid,
+            start.to_array(),
+            &mut rhs,
+            &mut events[..stops.len()],
+            &mut observe,
+        )?;
+        Ok(Final {
+            t: outcome.end.0,
+            state: State::from_array(outcome.end.1),
+            event: outcome.event.map(|c| (c.index, c.t)),
+            stats: outcome.stats,
+            diagnostics: Diagnostics { energy_drift: drift, max_contact_residual: residual },
+        })
     }
 }

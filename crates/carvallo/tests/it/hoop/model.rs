@@ -1,6 +1,8 @@
 //! Tests of the hoop model's public API: parameter validation (asserting on the `Err` values),
 //! the steady turning rates of (E) against the memoir's closed form of n° 14, energy
-//! conservation by the RK4 integrator, and steady states staying steady.
+//! conservation by the RK4 integrator, and steady states staying steady; the error-controlled
+//! pairs reaching a reference cross-checked by the hand-written RK4 (`simulate_pns`), and a
+//! fall stopped at θ = ±0.5 at the time bisection on single RK4 steps finds.
 
 use carvallo::hoop::{normalised, Hoop};
 use carvallo::ParameterError;
@@ -105,5 +107,90 @@ fn physical_and_normalised_forms_agree() {
         assert!((st - normalised::stability(theta, s, n)).abs() < 1e-12);
         let d = hoop.skid(theta, s * nu, n * nu);
         assert!((d - normalised::skid(theta, s, n)).abs() < 1e-12);
+    }
+}
+
+/// The largest |x - r| / max(1, |r|) over two equal-length runs.
+fn error(a: &carvallo::hoop::Trajectory, r: &carvallo::hoop::Trajectory) -> f64 {
+    assert_eq!(a.len(), r.len());
+    let mut worst = 0.0f64;
+    for ((ta, xa), (tr, xr)) in a.iter().zip(r.iter()) {
+        assert!((ta - tr).abs() <= 1e-12);
+        for (x, y) in xa.iter().zip(xr) {
+            worst = worst.max((x - y).abs() / y.abs().max(1.0));
+        }
+    }
+    worst
+}
+
+#[test]
+fn adaptive_pairs_reach_a_reference_checked_by_rk4() {
+    use carvallo::numerics::integrate::{Grid, Integration, Method};
+    let hoop = Hoop::new(0.5, 1.0, 9.81).expect("hoop");
+    let x0 = [0.2, 0.0, 0.0, 3.0 * hoop.rate_unit()];
+    let grid = Grid::new(5.0, 0.01, 1).expect("grid");
+    let reference = hoop
+        .simulate_with(x0, &grid, &Integration::adaptive(Method::Dop853, 1e-14, 1e-17), &[])
+        .expect("reference");
+    let fine = hoop.simulate_pns(x0, 2.5e-5, 200_000).expect("rk4");
+    let mut worst = 0.0f64;
+    for (k, (t, x)) in reference.iter().enumerate() {
+        let (tf, xf) = (fine.times[400 * k], fine.samples[400 * k]);
+        assert!((t - tf).abs() <= 1e-12, "{t} {tf}");
+        for (a, b) in x.iter().zip(xf) {
+            worst = worst.max((a - b).abs() / b.abs().max(1.0));
+        }
+    }
+    eprintln!("hoop reference against rk4 2.5e-5: {worst:.2e}, {:?}", reference.stats);
+    assert!(worst <= 1e-12, "{worst}");
+    for method in [Method::Dopri5, Method::Dop853] {
+        for rtol in [1e-6, 1e-9] {
+            let how = Integration::adaptive(method, rtol, 1e-3 * rtol);
+            let tr = hoop.simulate_with(x0, &grid, &how, &[]).expect("run");
+            let e = error(&tr, &reference);
+            eprintln!(
+                "{method} rtol {rtol:e}: {e:.2e}, drift {:.1e}, {:?}",
+                tr.relative_energy_drift(),
+                tr.stats
+            );
+            let allowed = if method == Method::Dopri5 { 100.0 } else { 10.0 };
+            assert!(e <= allowed * rtol, "{method} rtol {rtol}: {e}");
+            assert!(tr.relative_energy_drift() <= 10.0 * rtol);
+        }
+    }
+}
+
+#[test]
+fn a_slow_hoop_falls_to_the_event_at_the_bisected_time() {
+    use carvallo::numerics::integrate::{Grid, Integration, Method, Threshold};
+    use carvallo::numerics::ode::rk4_step;
+    let hoop = Hoop::new(0.5, 1.0, 9.81).expect("hoop");
+    let x0 = [0.1, 0.0, 0.0, 0.5 * hoop.rate_unit()];
+    let h = 1e-4;
+    let fine = hoop.simulate_pns(x0, h, 50_000).expect("rk4");
+    let k = fine.samples.iter().position(|x| x[0].abs() >= 0.5).expect("a fall") - 1;
+    let (mut lo, mut hi) = (0.0, h);
+    for _ in 0..60 {
+        let mid = 0.5 * (lo + hi);
+        if rk4_step(|y| hoop.rhs_pns(y), fine.samples[k], mid)[0].abs() < 0.5 {
+            lo = mid;
+        } else {
+            hi = mid;
+        }
+    }
+    let exact = fine.times[k] + 0.5 * (lo + hi);
+    let stop = [Threshold { index: 0, value: 0.5, magnitude: true }];
+    let grid = Grid::new(5.0, 1e-3, 10).expect("grid");
+    for (how, tol) in [
+        (Integration::RK4, 1e-9),
+        (Integration::adaptive(Method::Dopri5, 1e-10, 1e-13), 1e-8),
+        (Integration::adaptive(Method::Dop853, 1e-12, 1e-15), 1e-10),
+    ] {
+        let tr = hoop.simulate_with(x0, &grid, &how, &stop).expect("run");
+        let (index, t) = tr.event.expect("an event");
+        eprintln!("{}: fall at {t} (bisection {exact}, {:.1e})", how.method, t - exact);
+        assert_eq!((index, tr.last().map(|l| l.0)), (0, Some(t)));
+        assert!((t - exact).abs() <= tol, "{}: {t} against {exact}", how.method);
+        assert!((tr.samples[tr.len() - 1][0].abs() - 0.5).abs() <= 1e-9);
     }
 }
