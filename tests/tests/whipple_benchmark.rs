@@ -175,7 +175,7 @@ fn report_published_values_equal_the_anchors() {
         }
     }
     let all = entries();
-    assert_eq!(all.len(), 16 + 4 + 17, "16 matrix entries, 4 speeds, 17 symbolic checks");
+    assert_eq!(all.len(), 16 + 4 + 20, "16 matrix entries, 4 speeds, 20 symbolic checks");
     for e in &all {
         assert_eq!(
             e.verdict,

@@ -380,7 +380,7 @@ fn frequency_response<'py>(
         omegas.extract().map_err(|_| err("omegas must be a number or a 1-d sequence of numbers"))?
     };
     if let Some(x) = omegas.iter().find(|x| !(x.is_finite() && **x >= 0.0)) {
-        return Err(err(format!("invalid omega {x}: must be finite and not negative")));
+        return Err(err(format!("invalid omega {x:?}: must be finite and not negative")));
     }
     let input: Input = input
         .parse()

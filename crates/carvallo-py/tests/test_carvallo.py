@@ -337,7 +337,7 @@ def test_frequency_response_is_the_state_space_resolvent_and_the_cli(cli):
     assert got == list(fr["response"].reshape(-1))
     with pytest.raises(carvallo.ParameterError, match='unknown signal "yaw"'):
         carvallo.frequency_response(p, 5.0, 1.0, "steer", "yaw")
-    with pytest.raises(carvallo.ParameterError, match="invalid omega -1.0"):
+    with pytest.raises(carvallo.ParameterError, match="invalid omega -1.0: must be finite and not negative"):
         carvallo.frequency_response(p, 5.0, [-1.0], "steer", "roll")
 
 
