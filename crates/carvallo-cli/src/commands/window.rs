@@ -18,6 +18,15 @@
 //!   Speeds are forward speeds $v = Rs$ in m/s ($R = 0.38$ m, n° 117); the JSON adds the spin
 //!   squared `s2` (the memoir's variable) and `km_h` of both limits.
 //!
+//! * `--gain NAME=VALUE ...` or `--gain-table FILE.csv` (with `--model benchmark|FILE`): the
+//!   closed-loop stable speed range of the state feedback $u = -Kx$
+//!   ([`carvallo::whipple::feedback`]), by the Hurwitz route on the generated closed-loop
+//!   polynomial, in the speeds `--vmin` (default 0) to `--vmax` (default: every speed for
+//!   constant gains, the table's speeds for a table); JSON
+//!   `{ "model", "gains" | "gain_table", "from", "to", "stable": [[from, to], ...],
+//!   "lowest_stable_speed" }` (`to` and an interval's end are `null` for every speed above).
+//!   The gains and the table are described in [`crate::gains`].
+//!
 //! Unknown or missing arguments and an unreadable or invalid parameter file are usage errors:
 //! a message naming the value, exit code 2.
 
@@ -27,6 +36,7 @@ use carvallo::bicycle_straight::{
 use carvallo::whipple::Whipple;
 
 use crate::args::DataOptions;
+use crate::gains::GainValue;
 use serde_json::{json, Value};
 
 /// The Carvallo models (memoir n° 117–121) this command answers besides the benchmark bicycle.
@@ -47,6 +57,39 @@ pub struct Args {
     /// Print JSON `{model, weave_speed, capsize_speed, stable}` instead of text
     #[arg(long)]
     pub json: bool,
+    #[command(flatten)]
+    pub feedback: FeedbackOptions,
+}
+
+/// The state feedback of a closed-loop window.
+#[derive(Clone, Debug, Default, PartialEq, clap::Args)]
+pub struct FeedbackOptions {
+    /// A gain of the state feedback u = -K x, NAME = k_{roll|steer}_{roll|steer|roll_rate|steer_rate}
+    /// (roll or steer torque from roll, steer or their rates; the others are zero): the
+    /// closed-loop stable speed range
+    #[arg(long, value_name = "NAME=VALUE", value_parser = crate::gains::parse_gain, allow_hyphen_values = true)]
+    pub gain: Vec<GainValue>,
+    /// Gains as functions of speed: a CSV file with the header `speed,k_...` and one row per
+    /// speed, linearly interpolated
+    #[arg(long, value_name = "FILE.csv", conflicts_with = "gain")]
+    pub gain_table: Option<String>,
+    /// The lowest speed of a closed-loop window [m/s] [default: 0, or the table's first speed]
+    #[arg(long, value_name = "V", value_parser = crate::gains::speed)]
+    pub vmin: Option<f64>,
+    /// The highest speed of a closed-loop window [m/s] [default: every speed, or the table's
+    /// last speed]
+    #[arg(long, value_name = "V", value_parser = crate::gains::speed)]
+    pub vmax: Option<f64>,
+}
+
+impl FeedbackOptions {
+    /// Whether any is given.
+    pub fn any(&self) -> bool {
+        !self.gain.is_empty()
+            || self.gain_table.is_some()
+            || self.vmin.is_some()
+            || self.vmax.is_some()
+    }
 }
 
 /// A JSON number, `null` for an infinite speed.
@@ -60,12 +103,21 @@ fn finite(x: f64) -> Value {
 
 /// Runs `carvallo window`: the text to print, or an error naming the bad value.
 pub fn run(cmd: &Args) -> Result<String, String> {
-    let Args { model, data, json } = cmd;
+    let Args { model, data, json, feedback } = cmd;
     if CARVALLO_MODELS.contains(&model.as_str()) {
         if data.any() {
             return Err(format!("`--rider` and `--strict` read a bicycle file, not `{model}`"));
         }
+        if feedback.any() {
+            return Err(format!(
+                "the closed loop (--gain, --gain-table, --vmin, --vmax) is for the benchmark \
+                 bicycle or a bicycle file, not `{model}`"
+            ));
+        }
         return carvallo_window(model).and_then(|w| render_carvallo(model, &w, *json));
+    }
+    if feedback.any() {
+        return closed_loop(model, data, feedback, *json);
     }
     let w = Whipple::new(crate::args::bicycle(model, data)?).stability_window();
     let stable: Vec<Value> =
@@ -90,6 +142,59 @@ pub fn run(cmd: &Args) -> Result<String, String> {
             s.push_str(&format!("stable from {a} to {b} m/s\n"));
         }
         Ok(s)
+    }
+}
+
+/// The closed-loop window of `window --gain` or `--gain-table`.
+fn closed_loop(
+    model: &str,
+    data: &DataOptions,
+    fb: &FeedbackOptions,
+    as_json: bool,
+) -> Result<String, String> {
+    if fb.gain.is_empty() && fb.gain_table.is_none() {
+        return Err(
+            "--vmin and --vmax bound a closed-loop window: give --gain or --gain-table".into()
+        );
+    }
+    let table = fb.gain_table.as_deref().map(crate::gains::read_gain_table).transpose()?;
+    let bike = Whipple::new(crate::args::bicycle(model, data)?);
+    let gains = crate::gains::gains_of(&fb.gain);
+    let w = match &table {
+        Some(t) => {
+            let span = t.span();
+            bike.closed_loop_window_table(t, fb.vmin.unwrap_or(span.0), fb.vmax.unwrap_or(span.1))
+        }
+        None => bike.closed_loop_window(
+            &gains,
+            fb.vmin.unwrap_or(0.0),
+            fb.vmax.unwrap_or(f64::INFINITY),
+        ),
+    }
+    .map_err(|e| match &fb.gain_table {
+        Some(path) => {
+            e.to_string().replacen("the gain table", &format!("the gain table `{path}`"), 1)
+        }
+        None => e.to_string(),
+    })?;
+    let speed = |x: f64| if x.is_finite() { json!(x) } else { Value::Null };
+    if as_json {
+        let mut v = json!({ "model": model });
+        match &fb.gain_table {
+            Some(path) => v["gain_table"] = json!(path),
+            None => v["gains"] = crate::gains::gains_json(&gains),
+        }
+        v["from"] = json!(w.from);
+        v["to"] = speed(w.to);
+        v["stable"] = crate::gains::stable_json(&w);
+        v["lowest_stable_speed"] = w.lowest_stable_speed().map_or(Value::Null, speed);
+        serde_json::to_string_pretty(&v).map_err(|e| e.to_string())
+    } else {
+        let what = match &fb.gain_table {
+            Some(path) => format!("gain table {path}"),
+            None => format!("gains {}", crate::gains::gains_text(&gains)),
+        };
+        Ok(format!("model {model}\n{what}\n{}", crate::gains::window_text(&w)))
     }
 }
 
@@ -162,7 +267,12 @@ mod tests {
     fn parses_and_rejects_by_value() {
         assert_eq!(
             parse::<Args>(&["window", "--model", "benchmark", "--json"]),
-            Ok(Args { model: "benchmark".into(), data: DataOptions::default(), json: true })
+            Ok(Args {
+                model: "benchmark".into(),
+                data: DataOptions::default(),
+                json: true,
+                feedback: FeedbackOptions::default()
+            })
         );
         let e = parse::<Args>(&["window", "--speed", "3"]).unwrap_err();
         assert!(e.starts_with("error: unexpected argument '--speed'"), "{e}");
@@ -170,6 +280,48 @@ mod tests {
         assert!(e.contains("--model <MODEL>"), "{e}");
         let e = main(&["window", "--model", "/nonexistent/bike.toml"]).unwrap_err();
         assert!(e.starts_with("cannot read model file `/nonexistent/bike.toml`"), "{e}");
+    }
+
+    #[test]
+    fn a_gain_gives_the_closed_loop_window_checked_by_eigenvalues() {
+        let out =
+            main(&["window", "--model", "benchmark", "--gain", "k_steer_roll_rate=-10", "--json"])
+                .expect("ok");
+        let v: Value = serde_json::from_str(&out).expect("json");
+        assert_eq!(v["gains"]["k_steer_roll_rate"], -10.0);
+        assert_eq!(v["to"], Value::Null);
+        let lo = v["lowest_stable_speed"].as_f64().expect("stable somewhere");
+        let hi = v["stable"][0][1].as_f64().expect("bounded");
+        // The open-loop capsize speed stays (the roll-rate feedback does not touch a0); the
+        // lower edge moves down from the weave speed 4.29 m/s; the eigenvalues cross there.
+        assert!((hi - 6.024262015388).abs() < 1e-9 && lo < 4.0, "{out}");
+        let bike = Whipple::new(carvallo::whipple::WhippleParams::benchmark());
+        let k = carvallo::whipple::feedback::Gains::balance_assist(10.0);
+        assert!(bike.closed_loop_eigenvalues(lo + 1e-6, &k).iter().all(|e| e.re < 0.0));
+        assert!(bike.closed_loop_eigenvalues(lo - 1e-6, &k).iter().any(|e| e.re > 0.0));
+        let text = main(&["window", "--model", "benchmark", "--gain", "k_steer_roll_rate=-10"])
+            .expect("ok");
+        assert!(text.starts_with("model benchmark\ngains k_steer_roll_rate = -10\nspeeds from 0 m/s to any speed\nclosed-loop stable from "), "{text}");
+        let e =
+            parse::<Args>(&["window", "--model", "benchmark", "--gain", "k_yaw=1"]).unwrap_err();
+        assert!(e.contains("unknown gain `k_yaw`: expected one of k_roll_roll, "), "{e}");
+        let e = main(&["window", "--model", "carvallo", "--gain", "k_roll_roll=1"]).unwrap_err();
+        assert!(e.contains("not `carvallo`"), "{e}");
+        let e = main(&["window", "--model", "benchmark", "--vmax", "3"]).unwrap_err();
+        assert!(e.contains("give --gain or --gain-table"), "{e}");
+        let e = main(&[
+            "window",
+            "--model",
+            "benchmark",
+            "--gain",
+            "k_roll_roll=1",
+            "--vmin",
+            "4",
+            "--vmax",
+            "3",
+        ])
+        .unwrap_err();
+        assert_eq!(e, "invalid speed range 4 to 3: expected 0 <= from <= to");
     }
 
     #[test]

@@ -90,7 +90,7 @@ pub fn real_roots_in(coeffs: &[f64], lo: f64, hi: f64) -> Vec<f64> {
     points.push(hi);
     let f = |x: f64| poly_eval_low(c, x);
     let mut roots: Vec<f64> = Vec::new();
-    let mut push = |x: f64, roots: &mut Vec<f64>| {
+    let push = |x: f64, roots: &mut Vec<f64>| {
         if roots.last() != Some(&x) {
             roots.push(x);
         }

@@ -560,6 +560,41 @@ impl Whipple {
     }
 }
 
+impl Whipple {
+    /// The smallest balance-assist gain $c \in [0, c_{\max}]$ ([`Gains::balance_assist`],
+    /// $T_\delta = c\,\dot\varphi$) at which the speed `target` is stable, by bisection on
+    /// $c$ to a relative width of `1e-12` (each step one closed-loop window, Hurwitz route);
+    /// assumes, as the benchmark shows, that the stable range grows downwards with $c$. `None`
+    /// if `target` is not stable at $c_{\max}$; `Some(0.0)` if it is stable without
+    /// assistance.
+    pub fn balance_assist_gain(&self, target: f64, c_max: f64) -> Option<f64> {
+        let stable = |c: f64| {
+            let k = Gains::balance_assist(c);
+            let p = self.closed_loop_poly(&k);
+            closed_loop_window_of(&p, 0.0, f64::INFINITY)
+                .stable
+                .iter()
+                .any(|&(lo, hi)| lo <= target && target < hi)
+        };
+        if !(target >= 0.0 && c_max >= 0.0 && c_max.is_finite()) || !stable(c_max) {
+            return None;
+        }
+        if stable(0.0) {
+            return Some(0.0);
+        }
+        let (mut lo, mut hi) = (0.0, c_max);
+        while hi - lo > 1e-12 * hi {
+            let mid = 0.5 * (lo + hi);
+            if stable(mid) {
+                hi = mid;
+            } else {
+                lo = mid;
+            }
+        }
+        Some(hi)
+    }
+}
+
 /// The stable range of a closed-loop polynomial in $[from, to]$ ($0 \le from \le to$).
 pub fn closed_loop_window_of(p: &ClosedLoopPoly, from: f64, to: f64) -> ClosedLoopWindow {
     let a: [Vec<f64>; 5] = p.coeffs.map(|c| c.to_vec());

@@ -163,6 +163,22 @@ fn balance_assist_widens_the_benchmark_window_downwards() {
 }
 
 #[test]
+fn the_assist_gain_for_a_target_speed_is_the_edge_of_its_window() {
+    let bike = Whipple::new(WhippleParams::benchmark());
+    let c = bike.balance_assist_gain(2.0, 100.0).expect("reachable");
+    // At that gain the lower edge of the window is the target speed; the eigenvalues of
+    // A - BK cross there.
+    let w = bike.closed_loop_window(&Gains::balance_assist(c), 0.0, f64::INFINITY).expect("ok");
+    let lo = w.lowest_stable_speed().expect("stable");
+    assert!((lo - 2.0).abs() < 1e-9, "{c} {w:?}");
+    let k = Gains::balance_assist(c);
+    assert!(bike.closed_loop_eigenvalues(2.0 + 1e-6, &k).iter().all(|e| e.re < 0.0));
+    assert!(bike.closed_loop_eigenvalues(2.0 - 1e-6, &k).iter().any(|e| e.re > 0.0));
+    assert_eq!(bike.balance_assist_gain(5.0, 100.0), Some(0.0));
+    assert_eq!(bike.balance_assist_gain(2.0, 1.0), None);
+}
+
+#[test]
 fn gain_names_and_errors() {
     let g = Gains::from_named([("k_steer_roll_rate", 3.0), ("k_roll_steer", -1.0)]).expect("ok");
     assert_eq!(g, {
