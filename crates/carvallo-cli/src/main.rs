@@ -18,6 +18,7 @@ mod args;
 mod bench;
 mod commands;
 mod figures;
+mod gain_sweep;
 mod gains;
 mod perf;
 mod report_dir;

@@ -1,0 +1,154 @@
+//! `carvallo sweep --model M --gain NAME=FROM:TO:COUNT ... [--vmin V] [--vmax V]
+//! [--method hurwitz|eigen] [--json | --csv]`: the closed-loop stable speed range of the state
+//! feedback $u = -Kx$ over a grid of gains (every combination of the `--gain` axes, the first
+//! varying slowest; the gains not named are zero), on one bicycle, in parallel (rayon).
+//!
+//! `--method hurwitz` (default) is [`Whipple::closed_loop_window`] on the generated closed-loop
+//! polynomial, over `--vmin` (default 0) to `--vmax` (default: every speed); `--method eigen`
+//! is the eigenvalue reference [`Whipple::closed_loop_eigen_window`] on 200 grid steps and needs
+//! `--vmax`.
+//!
+//! The output keeps the shape of the design sweep ([`crate::perf`]): a one-line text summary;
+//! JSON with `model`, `gains` (the varied names), `designs` (`gain-grid`), `count`, `method`,
+//! `threads`, `elapsed`, `designs_per_second`, `stable`, `lowest_stable_speed_range`,
+//! `failed`, `speed_from`, `speed_to` (`null`: every speed), `vary` (and for one axis
+//! `parameter`, `from`, `to`), and `points`: `[{"gains": {NAME: VALUE, ...}, "stable":
+//! [[from, to], ...]}, ...]`; or with `--csv` one row per gain set: `design`, the varied gains,
+//! `status` (`ok`, or `failed` when the eigenvalues did not converge), `stable`, `stable_from`
+//! and `stable_to` (the lowest stable interval, empty without one; `stable_to` empty for every
+//! speed above) and `intervals` (their number).
+
+use std::time::Instant;
+
+use carvallo::whipple::feedback::{ClosedLoopWindow, Gains};
+use carvallo::whipple::Whipple;
+use rayon::prelude::*;
+use serde_json::{json, Value};
+
+use crate::gains::GainAxis;
+use crate::perf::{MethodArg, SweepArgs};
+
+/// The grid points of the eigenvalue method.
+const EIGEN_POINTS: usize = 200;
+
+/// Runs `carvallo sweep --gain ...` (see the [module docs](self)).
+pub fn run(args: &SweepArgs) -> Result<String, String> {
+    let axes = &args.gain;
+    let count = axes
+        .iter()
+        .try_fold(1usize, |n, a| n.checked_mul(a.count))
+        .ok_or_else(|| "too many gain sets: the product of the counts overflows".to_string())?;
+    let (from, to) = (args.vmin.unwrap_or(0.0), args.vmax.unwrap_or(f64::INFINITY));
+    if !(to >= from) {
+        return Err(format!("invalid speed range {from} to {to}: expected --vmin <= --vmax"));
+    }
+    if args.method == MethodArg::Eigen && !to.is_finite() {
+        return Err("--method eigen needs --vmax (a finite speed grid)".into());
+    }
+    let bike = Whipple::new(crate::args::bicycle(&args.model, &args.data)?);
+    let gains_at = |i: usize| -> (Vec<f64>, Gains) {
+        let mut rest = i;
+        let mut values = vec![0.0; axes.len()];
+        for (j, a) in axes.iter().enumerate().rev() {
+            values[j] = a.value(rest % a.count);
+            rest /= a.count;
+        }
+        let mut g = Gains::ZERO;
+        for (a, x) in axes.iter().zip(&values) {
+            let _ = g.set(&a.name, *x);
+        }
+        (values, g)
+    };
+    let start = Instant::now();
+    let results: Vec<(Vec<f64>, Gains, Option<ClosedLoopWindow>)> = (0..count)
+        .into_par_iter()
+        .map(|i| {
+            let (values, g) = gains_at(i);
+            let w = match args.method {
+                MethodArg::Hurwitz => bike.closed_loop_window(&g, from, to).ok(),
+                MethodArg::Eigen => bike.closed_loop_eigen_window(&g, from, to, EIGEN_POINTS).ok(),
+            };
+            (values, g, w)
+        })
+        .collect();
+    let elapsed = start.elapsed().as_secs_f64();
+    let method = if args.method == MethodArg::Hurwitz { "hurwitz" } else { "eigen" };
+    let stable =
+        results.iter().filter(|r| r.2.as_ref().is_some_and(|w| !w.stable.is_empty())).count();
+    let failed = results.iter().filter(|r| r.2.is_none()).count();
+    let lowest: Vec<f64> =
+        results.iter().filter_map(|r| r.2.as_ref().and_then(|w| w.lowest_stable_speed())).collect();
+    let range = (!lowest.is_empty()).then(|| {
+        (
+            lowest.iter().copied().fold(f64::INFINITY, f64::min),
+            lowest.iter().copied().fold(f64::NEG_INFINITY, f64::max),
+        )
+    });
+    let rate = count as f64 / elapsed.max(1e-9);
+    let speed = |x: f64| if x.is_finite() { json!(x) } else { Value::Null };
+    if args.csv {
+        let names: Vec<&str> = axes.iter().map(|a| a.name.as_str()).collect();
+        let mut out =
+            format!("design,{},status,stable,stable_from,stable_to,intervals\n", names.join(","));
+        for (i, (values, _, w)) in results.iter().enumerate() {
+            let values: Vec<String> = values.iter().map(|x| format!("{x:?}")).collect();
+            let status = match w {
+                Some(w) => {
+                    let (lo, hi) = w.stable.first().map_or((String::new(), String::new()), |s| {
+                        let hi = if s.1.is_finite() { format!("{:?}", s.1) } else { String::new() };
+                        (format!("{:?}", s.0), hi)
+                    });
+                    format!("ok,{},{lo},{hi},{}", !w.stable.is_empty(), w.stable.len())
+                }
+                None => "failed,,,,".to_string(),
+            };
+            out.push_str(&format!("{i},{},{status}\n", values.join(",")));
+        }
+        return Ok(out);
+    }
+    if args.json {
+        let points: Vec<Value> = results
+            .iter()
+            .map(|(_, g, w)| {
+                json!({
+                    "gains": crate::gains::gains_json(g),
+                    "stable": w.as_ref().map_or(Value::Null, crate::gains::stable_json),
+                })
+            })
+            .collect();
+        let mut v = json!({
+            "model": args.model,
+            "gains": axes.iter().map(|a| a.name.clone()).collect::<Vec<_>>(),
+            "designs": "gain-grid",
+            "count": count,
+            "method": method,
+            "threads": rayon::current_num_threads(),
+            "elapsed": elapsed,
+            "designs_per_second": rate,
+            "stable": stable,
+            "lowest_stable_speed_range": range.map_or(Value::Null, |(a, b)| json!([a, b])),
+            "failed": failed,
+            "speed_from": from,
+            "speed_to": speed(to),
+            "vary": axes.iter().map(|a| json!({"gain": a.name, "from": a.from, "to": a.to, "count": a.count})).collect::<Vec<_>>(),
+            "points": points,
+        });
+        if let [a] = &axes[..] {
+            v["parameter"] = json!(a.name);
+            v["from"] = json!(a.from);
+            v["to"] = json!(a.to);
+        }
+        return serde_json::to_string_pretty(&v).map_err(|e| e.to_string());
+    }
+    let what: Vec<String> = axes
+        .iter()
+        .map(|a: &GainAxis| format!("{} from {} to {} ({})", a.name, a.from, a.to, a.count))
+        .collect();
+    let upper = if to.is_finite() { format!("{to} m/s") } else { "any speed".into() };
+    Ok(format!(
+        "{count} gain sets, {}, speeds {from} m/s to {upper}, method {method}: {elapsed:.3} s \
+         ({rate:.0} gain sets/s), {stable} with a stable speed range, lowest stable speeds {}",
+        what.join(" x "),
+        range.map_or("null".to_string(), |(a, b)| format!("[{a},{b}]")),
+    ))
+}
