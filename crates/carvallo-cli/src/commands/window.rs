@@ -80,7 +80,14 @@ pub struct FeedbackOptions {
     /// last speed]
     #[arg(long, value_name = "V", value_parser = crate::gains::speed)]
     pub vmax: Option<f64>,
+    /// The smallest balance-assist gain c (steer torque c times the roll rate into the fall,
+    /// k_steer_roll_rate = -c) at which the speed V is stable, and the closed-loop window there
+    #[arg(long, value_name = "V", value_parser = crate::gains::speed, conflicts_with_all = ["gain", "gain_table"])]
+    pub assist_down_to: Option<f64>,
 }
+
+/// The largest balance-assist gain `--assist-down-to` looks at [N m s/rad].
+pub const ASSIST_MAX: f64 = 1000.0;
 
 impl FeedbackOptions {
     /// Whether any is given.
@@ -89,6 +96,7 @@ impl FeedbackOptions {
             || self.gain_table.is_some()
             || self.vmin.is_some()
             || self.vmax.is_some()
+            || self.assist_down_to.is_some()
     }
 }
 
@@ -152,14 +160,26 @@ fn closed_loop(
     fb: &FeedbackOptions,
     as_json: bool,
 ) -> Result<String, String> {
-    if fb.gain.is_empty() && fb.gain_table.is_none() {
+    if fb.gain.is_empty() && fb.gain_table.is_none() && fb.assist_down_to.is_none() {
         return Err(
             "--vmin and --vmax bound a closed-loop window: give --gain or --gain-table".into()
         );
     }
     let table = fb.gain_table.as_deref().map(crate::gains::read_gain_table).transpose()?;
     let bike = Whipple::new(crate::args::bicycle(model, data)?);
-    let gains = crate::gains::gains_of(&fb.gain);
+    let mut gains = crate::gains::gains_of(&fb.gain);
+    let assist = match fb.assist_down_to {
+        Some(target) => {
+            let c = bike.balance_assist_gain(target, ASSIST_MAX).ok_or_else(|| {
+                format!(
+                    "no balance-assist gain up to {ASSIST_MAX} N m s/rad makes {target} m/s stable"
+                )
+            })?;
+            gains = carvallo::whipple::feedback::Gains::balance_assist(c);
+            Some((target, c))
+        }
+        None => None,
+    };
     let w = match &table {
         Some(t) => {
             let span = t.span();
@@ -184,16 +204,25 @@ fn closed_loop(
             Some(path) => v["gain_table"] = json!(path),
             None => v["gains"] = crate::gains::gains_json(&gains),
         }
+        if let Some((target, c)) = assist {
+            v["assist_down_to"] = json!(target);
+            v["assist_gain"] = json!(c);
+        }
         v["from"] = json!(w.from);
         v["to"] = speed(w.to);
         v["stable"] = crate::gains::stable_json(&w);
         v["lowest_stable_speed"] = w.lowest_stable_speed().map_or(Value::Null, speed);
         serde_json::to_string_pretty(&v).map_err(|e| e.to_string())
     } else {
-        let what = match &fb.gain_table {
+        let mut what = match &fb.gain_table {
             Some(path) => format!("gain table {path}"),
             None => format!("gains {}", crate::gains::gains_text(&gains)),
         };
+        if let Some((target, c)) = assist {
+            what = format!(
+                "balance assist: the smallest gain c making {target} m/s stable is {c} N m s/rad\n{what}"
+            );
+        }
         Ok(format!("model {model}\n{what}\n{}", crate::gains::window_text(&w)))
     }
 }
@@ -307,6 +336,15 @@ mod tests {
         assert!(e.contains("unknown gain `k_yaw`: expected one of k_roll_roll, "), "{e}");
         let e = main(&["window", "--model", "carvallo", "--gain", "k_roll_roll=1"]).unwrap_err();
         assert!(e.contains("not `carvallo`"), "{e}");
+        // The assist for 2 m/s: the lower edge of its window is 2 m/s.
+        let out = main(&["window", "--model", "benchmark", "--assist-down-to", "2", "--json"])
+            .expect("ok");
+        let v: Value = serde_json::from_str(&out).expect("json");
+        let c = v["assist_gain"].as_f64().expect("a gain");
+        assert_eq!(v["gains"]["k_steer_roll_rate"].as_f64(), Some(-c));
+        assert!((v["lowest_stable_speed"].as_f64().unwrap() - 2.0).abs() < 1e-9, "{out}");
+        let e = main(&["window", "--model", "benchmark", "--assist-down-to", "0.1"]).unwrap_err();
+        assert!(e.starts_with("no balance-assist gain up to 1000 N m s/rad makes 0.1 m/s"), "{e}");
         let e = main(&["window", "--model", "benchmark", "--vmax", "3"]).unwrap_err();
         assert!(e.contains("give --gain or --gain-table"), "{e}");
         let e = main(&[
