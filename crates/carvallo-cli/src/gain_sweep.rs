@@ -16,8 +16,12 @@
 //! [[from, to], ...]}, ...]`; or with `--csv` one row per gain set: `design`, the varied gains,
 //! `status` (`ok`, or `failed` when the eigenvalues did not converge), `stable`, `stable_from`
 //! and `stable_to` (the lowest stable interval, empty without one; `stable_to` empty for every
-//! speed above) and `intervals` (their number).
+//! speed above) and `intervals` (their number), written as the blocks of gain sets finish.
+//! Ctrl-C ends the sweep with the summary of the gain sets done and the line
+//! `interrupted after K of N gain sets`.
 
+use std::io::Write;
+use std::sync::atomic::Ordering;
 use std::time::Instant;
 
 use carvallo::whipple::feedback::{ClosedLoopWindow, Gains};
@@ -30,6 +34,13 @@ use crate::perf::{MethodArg, SweepArgs};
 
 /// The grid points of the eigenvalue method.
 const EIGEN_POINTS: usize = 200;
+
+/// The gain sets computed at a time (in parallel), then written and summarised: memory does
+/// not grow with the count.
+const BLOCK: usize = 1 << 14;
+
+/// The largest count whose JSON lists every gain set (`points`); above it only the summary.
+pub const MAX_JSON_POINTS: usize = 100_000;
 
 /// Runs `carvallo sweep --gain ...` (see the [module docs](self)).
 pub fn run(args: &SweepArgs) -> Result<String, String> {
@@ -59,68 +70,94 @@ pub fn run(args: &SweepArgs) -> Result<String, String> {
         }
         (values, g)
     };
+    let stop = crate::perf::interrupt_flag();
     let start = Instant::now();
-    let results: Vec<(Vec<f64>, Gains, Option<ClosedLoopWindow>)> = (0..count)
-        .into_par_iter()
-        .map(|i| {
-            let (values, g) = gains_at(i);
-            let w = match args.method {
-                MethodArg::Hurwitz => bike.closed_loop_window(&g, from, to).ok(),
-                MethodArg::Eigen => bike.closed_loop_eigen_window(&g, from, to, EIGEN_POINTS).ok(),
-            };
-            (values, g, w)
-        })
-        .collect();
-    let elapsed = start.elapsed().as_secs_f64();
-    let method = if args.method == MethodArg::Hurwitz { "hurwitz" } else { "eigen" };
-    let stable =
-        results.iter().filter(|r| r.2.as_ref().is_some_and(|w| !w.stable.is_empty())).count();
-    let failed = results.iter().filter(|r| r.2.is_none()).count();
-    let lowest: Vec<f64> =
-        results.iter().filter_map(|r| r.2.as_ref().and_then(|w| w.lowest_stable_speed())).collect();
-    let range = (!lowest.is_empty()).then(|| {
-        (
-            lowest.iter().copied().fold(f64::INFINITY, f64::min),
-            lowest.iter().copied().fold(f64::NEG_INFINITY, f64::max),
+    let (mut done, mut stable, mut failed) = (0usize, 0usize, 0usize);
+    let mut range: Option<(f64, f64)> = None;
+    let mut points: Vec<Value> = Vec::new();
+    let keep_points = args.json && count <= MAX_JSON_POINTS;
+    let names: Vec<&str> = axes.iter().map(|a| a.name.as_str()).collect();
+    let mut csv = args.csv.then(|| {
+        let out = std::io::BufWriter::new(std::io::stdout().lock());
+        CsvLines::new(
+            out,
+            format!("design,{},status,stable,stable_from,stable_to,intervals", names.join(",")),
         )
     });
-    let rate = count as f64 / elapsed.max(1e-9);
-    let speed = |x: f64| if x.is_finite() { json!(x) } else { Value::Null };
-    if args.csv {
-        let names: Vec<&str> = axes.iter().map(|a| a.name.as_str()).collect();
-        let mut out =
-            format!("design,{},status,stable,stable_from,stable_to,intervals\n", names.join(","));
-        for (i, (values, _, w)) in results.iter().enumerate() {
-            let values: Vec<String> = values.iter().map(|x| format!("{x:?}")).collect();
-            let status = match w {
-                Some(w) => {
-                    let (lo, hi) = w.stable.first().map_or((String::new(), String::new()), |s| {
-                        let hi = if s.1.is_finite() { format!("{:?}", s.1) } else { String::new() };
-                        (format!("{:?}", s.0), hi)
-                    });
-                    format!("ok,{},{lo},{hi},{}", !w.stable.is_empty(), w.stable.len())
-                }
-                None => "failed,,,,".to_string(),
-            };
-            out.push_str(&format!("{i},{},{status}\n", values.join(",")));
-        }
-        return Ok(out);
-    }
-    if args.json {
-        let points: Vec<Value> = results
-            .iter()
-            .map(|(_, g, w)| {
-                json!({
-                    "gains": crate::gains::gains_json(g),
-                    "stable": w.as_ref().map_or(Value::Null, crate::gains::stable_json),
-                })
+    while done < count && !stop.load(Ordering::Relaxed) {
+        let block = BLOCK.min(count - done);
+        let results: Vec<(Vec<f64>, Gains, Option<ClosedLoopWindow>)> = (done..done + block)
+            .into_par_iter()
+            .map(|i| {
+                let (values, g) = gains_at(i);
+                let w = match args.method {
+                    MethodArg::Hurwitz => bike.closed_loop_window(&g, from, to).ok(),
+                    MethodArg::Eigen => {
+                        bike.closed_loop_eigen_window(&g, from, to, EIGEN_POINTS).ok()
+                    }
+                };
+                (values, g, w)
             })
             .collect();
+        for (j, (values, g, w)) in results.iter().enumerate() {
+            match w {
+                Some(w) if !w.stable.is_empty() => {
+                    stable += 1;
+                    let lo = w.stable[0].0;
+                    range = Some(range.map_or((lo, lo), |(a, b)| (a.min(lo), b.max(lo))));
+                }
+                Some(_) => {}
+                None => failed += 1,
+            }
+            if keep_points {
+                points.push(json!({
+                    "gains": crate::gains::gains_json(g),
+                    "stable": w.as_ref().map_or(Value::Null, crate::gains::stable_json),
+                }));
+            }
+            if let Some(csv) = &mut csv {
+                let values: Vec<String> = values.iter().map(|x| format!("{x:?}")).collect();
+                let status = match w {
+                    Some(w) => {
+                        let (lo, hi) =
+                            w.stable.first().map_or((String::new(), String::new()), |s| {
+                                let hi = if s.1.is_finite() {
+                                    format!("{:?}", s.1)
+                                } else {
+                                    String::new()
+                                };
+                                (format!("{:?}", s.0), hi)
+                            });
+                        format!("ok,{},{lo},{hi},{}", !w.stable.is_empty(), w.stable.len())
+                    }
+                    None => "failed,,,,".to_string(),
+                };
+                if !csv.write(format!("{},{},{status}", done + j, values.join(","))) {
+                    stop.store(true, Ordering::Relaxed);
+                }
+            }
+        }
+        done += block;
+    }
+    let elapsed = start.elapsed().as_secs_f64();
+    let method = if args.method == MethodArg::Hurwitz { "hurwitz" } else { "eigen" };
+    let rate = done as f64 / elapsed.max(1e-9);
+    let speed = |x: f64| if x.is_finite() { json!(x) } else { Value::Null };
+    let interrupted =
+        (done < count).then(|| format!("interrupted after {done} of {count} gain sets"));
+    if let Some(csv) = csv {
+        let last = csv.finish().map_err(|e| format!("cannot write the output: {e}"))?;
+        if let Some(line) = &interrupted {
+            eprintln!("{line}");
+        }
+        return Ok(last);
+    }
+    if args.json {
         let mut v = json!({
             "model": args.model,
             "gains": axes.iter().map(|a| a.name.clone()).collect::<Vec<_>>(),
             "designs": "gain-grid",
-            "count": count,
+            "count": done,
             "method": method,
             "threads": rayon::current_num_threads(),
             "elapsed": elapsed,
@@ -131,8 +168,14 @@ pub fn run(args: &SweepArgs) -> Result<String, String> {
             "speed_from": from,
             "speed_to": speed(to),
             "vary": axes.iter().map(|a| json!({"gain": a.name, "from": a.from, "to": a.to, "count": a.count})).collect::<Vec<_>>(),
-            "points": points,
         });
+        if keep_points {
+            v["points"] = json!(points);
+        }
+        if let Some(line) = &interrupted {
+            eprintln!("{line}");
+            v["interrupted"] = json!(line);
+        }
         if let [a] = &axes[..] {
             v["parameter"] = json!(a.name);
             v["from"] = json!(a.from);
@@ -145,10 +188,51 @@ pub fn run(args: &SweepArgs) -> Result<String, String> {
         .map(|a: &GainAxis| format!("{} from {} to {} ({})", a.name, a.from, a.to, a.count))
         .collect();
     let upper = if to.is_finite() { format!("{to} m/s") } else { "any speed".into() };
-    Ok(format!(
-        "{count} gain sets, {}, speeds {from} m/s to {upper}, method {method}: {elapsed:.3} s \
+    let text = format!(
+        "{done} gain sets, {}, speeds {from} m/s to {upper}, method {method}: {elapsed:.3} s \
          ({rate:.0} gain sets/s), {stable} with a stable speed range, lowest stable speeds {}",
         what.join(" x "),
         range.map_or("null".to_string(), |(a, b)| format!("[{a},{b}]")),
-    ))
+    );
+    Ok(match interrupted {
+        Some(line) => format!("{text}\n{line}"),
+        None => text,
+    })
+}
+
+/// CSV lines written to `out` as they come, the last held back for the caller to print with
+/// its final newline like any output (as the design sweep's CSV does). A write that fails is
+/// reported by [`CsvLines::finish`], except a closed pipe (`| head`), which ends quietly.
+struct CsvLines<W: Write> {
+    out: W,
+    pending: String,
+    error: Option<std::io::Error>,
+}
+
+impl<W: Write> CsvLines<W> {
+    fn new(out: W, header: String) -> Self {
+        CsvLines { out, pending: header, error: None }
+    }
+
+    /// Queues `line`; `false` once a write has failed.
+    fn write(&mut self, line: String) -> bool {
+        let previous = std::mem::replace(&mut self.pending, line);
+        if self.error.is_none() {
+            if let Err(e) = writeln!(self.out, "{previous}") {
+                self.error = Some(e);
+            }
+        }
+        self.error.is_none()
+    }
+
+    fn finish(mut self) -> std::io::Result<String> {
+        match self.error.take() {
+            Some(e) if e.kind() == std::io::ErrorKind::BrokenPipe => Ok(String::new()),
+            Some(e) => Err(e),
+            None => match self.out.flush() {
+                Err(e) if e.kind() == std::io::ErrorKind::BrokenPipe => Ok(String::new()),
+                other => other.map(|()| self.pending),
+            },
+        }
+    }
 }

@@ -323,7 +323,7 @@ pub fn sweep(args: &SweepArgs) -> Result<String, String> {
 
 /// The flag that Ctrl-C sets (the handler is installed on the first call). Without a handler
 /// (the platform refused it) Ctrl-C ends the process as usual.
-fn interrupt_flag() -> &'static AtomicBool {
+pub(crate) fn interrupt_flag() -> &'static AtomicBool {
     static STOP: AtomicBool = AtomicBool::new(false);
     static HANDLER: std::sync::Once = std::sync::Once::new();
     HANDLER.call_once(|| {
