@@ -42,8 +42,14 @@ const BLOCK: usize = 1 << 14;
 /// The largest count whose JSON lists every gain set (`points`); above it only the summary.
 pub const MAX_JSON_POINTS: usize = 100_000;
 
-/// Runs `carvallo sweep --gain ...` (see the [module docs](self)).
+/// Runs `carvallo sweep --gain ...` (see the [module docs](self)), the CSV rows written to
+/// standard output as they come.
 pub fn run(args: &SweepArgs) -> Result<String, String> {
+    run_to(args, std::io::BufWriter::new(std::io::stdout().lock()))
+}
+
+/// [`run`] with the CSV rows (all but the last, which is returned) written to `out`.
+pub fn run_to<W: Write>(args: &SweepArgs, out: W) -> Result<String, String> {
     let axes = &args.gain;
     let count = axes
         .iter()
@@ -78,7 +84,6 @@ pub fn run(args: &SweepArgs) -> Result<String, String> {
     let keep_points = args.json && count <= MAX_JSON_POINTS;
     let names: Vec<&str> = axes.iter().map(|a| a.name.as_str()).collect();
     let mut csv = args.csv.then(|| {
-        let out = std::io::BufWriter::new(std::io::stdout().lock());
         CsvLines::new(
             out,
             format!("design,{},status,stable,stable_from,stable_to,intervals", names.join(",")),

@@ -596,7 +596,9 @@ mod tests {
             "10",
         ])
         .expect("parses");
-        let csv = sweep(&a).expect("runs");
+        let mut written = Vec::new();
+        let last = crate::gain_sweep::run_to(&a, &mut written).expect("runs");
+        let csv = format!("{}{last}", String::from_utf8_lossy(&written));
         let lines: Vec<&str> = csv.lines().collect();
         assert_eq!(
             lines[0],
