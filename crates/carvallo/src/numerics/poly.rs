@@ -63,12 +63,20 @@ pub fn poly_eval_low(coeffs: &[f64], x: f64) -> f64 {
 ///
 /// The roots are isolated by the derivative: the real roots of $p'$ in the interval
 /// (recursively) cut it into pieces on which $p$ is monotone, so each piece holds at most one
-/// root, found by bisection where $p$ changes sign; an end where $p$ is exactly zero is a root.
+/// root, found where $p$ changes sign by Newton's method kept inside the bracket (a step that
+/// leaves it, or does not halve it, is replaced by bisection) until the bracket or the step
+/// reaches the adjacent floats; an end where $p$ is exactly zero is a root.
 /// Two roots closer than the rounding error of $p$ near them (a near-multiple root) are seen
 /// as one root (odd multiplicity) or none (even): $p$ does not change sign there within the
 /// precision of its evaluation, and the interval between them is below that resolution. A
 /// polynomial that vanishes identically has no roots reported.
 pub fn real_roots_in(coeffs: &[f64], lo: f64, hi: f64) -> Vec<f64> {
+    roots_in(coeffs, lo, hi, true)
+}
+
+/// [`real_roots_in`]; below the top level (`top` false: the critical points that only cut the
+/// interval) a quadratic is solved in closed form.
+fn roots_in(coeffs: &[f64], lo: f64, hi: f64, top: bool) -> Vec<f64> {
     let n = coeffs.iter().rposition(|&c| c != 0.0).map_or(0, |i| i + 1);
     let c = &coeffs[..n];
     if n < 2 || lo.is_nan() || hi.is_nan() || !(lo <= hi) {
@@ -84,9 +92,24 @@ pub fn real_roots_in(coeffs: &[f64], lo: f64, hi: f64) -> Vec<f64> {
     if !hi.is_finite() {
         return Vec::new();
     }
+    if n == 3 && !top {
+        // Cancellation-free quadratic formula; a double or complex pair cuts nothing.
+        let (c0, c1, c2) = (c[0], c[1], c[2]);
+        let disc = c1 * c1 - 4.0 * c2 * c0;
+        if !(disc > 0.0) {
+            return Vec::new();
+        }
+        let q = -0.5 * (c1 + c1.signum() * disc.sqrt());
+        let mut r: Vec<f64> = [q / c2, if q != 0.0 { c0 / q } else { 0.0 }]
+            .into_iter()
+            .filter(|x| *x >= lo && *x <= hi)
+            .collect();
+        r.sort_by(f64::total_cmp);
+        return r;
+    }
     let derivative: Vec<f64> = c.iter().enumerate().skip(1).map(|(k, x)| k as f64 * x).collect();
     let mut points = vec![lo];
-    points.extend(real_roots_in(&derivative, lo, hi).into_iter().filter(|&x| x > lo && x < hi));
+    points.extend(roots_in(&derivative, lo, hi, false).into_iter().filter(|&x| x > lo && x < hi));
     points.push(hi);
     let f = |x: f64| poly_eval_low(c, x);
     let mut roots: Vec<f64> = Vec::new();
@@ -102,13 +125,44 @@ pub fn real_roots_in(coeffs: &[f64], lo: f64, hi: f64) -> Vec<f64> {
             push(a, &mut roots);
         }
         if fa != 0.0 && fb != 0.0 && (fa > 0.0) != (fb > 0.0) {
-            push(bisect_unchecked(f, a, b), &mut roots);
+            push(monotone_root(c, &derivative, a, b, fa > 0.0), &mut roots);
         }
     }
     if f(hi) == 0.0 {
         push(hi, &mut roots);
     }
     roots
+}
+
+/// The root of the polynomial `c` (derivative `d`) on $[a, b]$ where it changes sign
+/// (`positive_at_a` its sign at `a`): safeguarded Newton (see [`real_roots_in`]).
+fn monotone_root(c: &[f64], d: &[f64], mut a: f64, mut b: f64, positive_at_a: bool) -> f64 {
+    let mut x = 0.5 * (a + b);
+    let mut width = b - a;
+    for _ in 0..200 {
+        let fx = poly_eval_low(c, x);
+        if fx == 0.0 {
+            return x;
+        }
+        if (fx > 0.0) == positive_at_a {
+            a = x;
+        } else {
+            b = x;
+        }
+        let mid = 0.5 * (a + b);
+        if mid <= a || mid >= b {
+            return x;
+        }
+        let step = fx / poly_eval_low(d, x);
+        let newton = x - step;
+        let next = if newton > a && newton < b && b - a <= 0.5 * width { newton } else { mid };
+        width = b - a;
+        if (next - x).abs() <= f64::EPSILON * x.abs() {
+            return next;
+        }
+        x = next;
+    }
+    x
 }
 
 /// Golden-section minimisation of a unimodal `f` on `[lo, hi]` (200 steps); the midpoint of

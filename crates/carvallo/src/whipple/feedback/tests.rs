@@ -253,3 +253,4 @@ fn quartic_interpolation_is_exact_on_quartics() {
         assert!((x - want).abs() < 1e-13, "{c:?}");
     }
 }
+
