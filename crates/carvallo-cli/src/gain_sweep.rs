@@ -56,7 +56,7 @@ pub fn run_to<W: Write>(args: &SweepArgs, out: W) -> Result<String, String> {
         .try_fold(1usize, |n, a| n.checked_mul(a.count))
         .ok_or_else(|| "too many gain sets: the product of the counts overflows".to_string())?;
     let (from, to) = (args.vmin.unwrap_or(0.0), args.vmax.unwrap_or(f64::INFINITY));
-    if !(to >= from) {
+    if to < from {
         return Err(format!("invalid speed range {from} to {to}: expected --vmin <= --vmax"));
     }
     if args.method == MethodArg::Eigen && !to.is_finite() {

@@ -79,7 +79,7 @@ pub fn real_roots_in(coeffs: &[f64], lo: f64, hi: f64) -> Vec<f64> {
 fn roots_in(coeffs: &[f64], lo: f64, hi: f64, top: bool) -> Vec<f64> {
     let n = coeffs.iter().rposition(|&c| c != 0.0).map_or(0, |i| i + 1);
     let c = &coeffs[..n];
-    if n < 2 || lo.is_nan() || hi.is_nan() || !(lo <= hi) {
+    if n < 2 || lo.is_nan() || hi.is_nan() || lo > hi {
         return Vec::new();
     }
     let hi = if hi.is_finite() {
@@ -96,7 +96,7 @@ fn roots_in(coeffs: &[f64], lo: f64, hi: f64, top: bool) -> Vec<f64> {
         // Cancellation-free quadratic formula; a double or complex pair cuts nothing.
         let (c0, c1, c2) = (c[0], c[1], c[2]);
         let disc = c1 * c1 - 4.0 * c2 * c0;
-        if !(disc > 0.0) {
+        if disc.is_nan() || disc <= 0.0 {
             return Vec::new();
         }
         let q = -0.5 * (c1 + c1.signum() * disc.sqrt());

@@ -246,7 +246,7 @@ fn hurwitz_intervals(
     };
     for pair in cuts.windows(2) {
         let (lo, hi) = (pair[0], pair[1]);
-        if !(hi > lo) {
+        if hi <= lo {
             continue;
         }
         let mid = if hi.is_finite() { 0.5 * (lo + hi) } else { 2.0 * lo + 1.0 };
@@ -368,7 +368,7 @@ impl GainTable {
                     i + 1
                 ));
             }
-            if i > 0 && !(*v > rows[i - 1].0) {
+            if i > 0 && *v <= rows[i - 1].0 {
                 return bad(format!("speed {v} in row {} does not increase", i + 1));
             }
         }
@@ -468,7 +468,7 @@ impl Whipple {
         for pair in table.rows().windows(2) {
             let ((v0, g0), (v1, g1)) = (pair[0], pair[1]);
             let (lo, hi) = (v0.max(from), v1.min(to));
-            if !(hi > lo) {
+            if hi <= lo {
                 continue;
             }
             // Each a_k is a polynomial of degree <= 4 in v on [v0, v1]: interpolate it through
@@ -576,7 +576,7 @@ impl Whipple {
                 .iter()
                 .any(|&(lo, hi)| lo <= target && target < hi)
         };
-        if !(target >= 0.0 && c_max >= 0.0 && c_max.is_finite()) || !stable(c_max) {
+        if !(target >= 0.0 && c_max >= 0.0 && c_max.is_finite() && stable(c_max)) {
             return None;
         }
         if stable(0.0) {

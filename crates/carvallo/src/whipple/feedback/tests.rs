@@ -99,7 +99,7 @@ fn hurwitz_window_agrees_with_the_eigenvalue_sweep_on_ten_thousand_random_gains(
     // of every Hurwitz interval must be stable and at the middle of every gap unstable.
     let (to, points) = (10.0, 100);
     let step = to / points as f64;
-    let mut rng = SplitMix64(20_4);
+    let mut rng = SplitMix64(204);
     let (mut with_window, mut missed, mut worst) = (0, 0, 0.0f64);
     for case in 0..10_000 {
         let bike = random_bike(&mut rng);
@@ -253,4 +253,3 @@ fn quartic_interpolation_is_exact_on_quartics() {
         assert!((x - want).abs() < 1e-13, "{c:?}");
     }
 }
-
