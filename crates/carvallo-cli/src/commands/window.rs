@@ -363,6 +363,32 @@ mod tests {
     }
 
     #[test]
+    fn a_gain_table_gives_the_window_of_speed_dependent_gains() {
+        let dir = std::env::temp_dir().join(format!("carvallo-window-{}", std::process::id()));
+        std::fs::create_dir_all(&dir).expect("temp dir");
+        let path = dir.join("gains.csv");
+        // A constant balance assist as a table: the window of the constant gain.
+        std::fs::write(&path, "speed,k_steer_roll_rate\n0,-10\n5,-10\n10,-10\n").expect("write");
+        let file = path.to_string_lossy().into_owned();
+        let out =
+            main(&["window", "--model", "benchmark", "--gain-table", &file, "--json"]).expect("ok");
+        let v: Value = serde_json::from_str(&out).expect("json");
+        assert_eq!((v["from"].as_f64(), v["to"].as_f64()), (Some(0.0), Some(10.0)));
+        let lo = v["lowest_stable_speed"].as_f64().expect("stable");
+        assert!((lo - 2.811741379713137).abs() < 1e-9, "{out}");
+        let e = main(&["window", "--model", "benchmark", "--gain-table", &file, "--vmax", "12"])
+            .unwrap_err();
+        assert_eq!(
+            e,
+            format!(
+                "the gain table `{file}` covers the speeds 0 to 10 m/s, not the range asked 0 to \
+                 12 m/s"
+            )
+        );
+        let _ = std::fs::remove_dir_all(&dir);
+    }
+
+    #[test]
     fn a_carvallo_model_has_its_window_in_speed_and_spin() {
         let out = main(&["window", "--model", "carvallo-memoir", "--json"]).expect("ok");
         let v: Value = serde_json::from_str(&out).expect("json");
