@@ -37,6 +37,9 @@
 //! window costs about 7 µs on the benchmark (release build; the open-loop window, in closed form
 //! in $u = v^2$, about 0.15 µs from the matrices: `carvallo bench`).
 //!
+//! Near an edge [`ClosedLoopPoly::classify`] gives a certified verdict (double-double
+//! arithmetic with a running error bound, as [`super::certified`] does for the open loop).
+//!
 //! # Gains as functions of speed
 //!
 //! A [`GainTable`] gives the eight gains at increasing speeds, linearly interpolated. On each
@@ -51,6 +54,7 @@ use std::fmt;
 
 use nalgebra::{Matrix2x4, Matrix4};
 
+use super::certified::{Bounded, Certified};
 use super::model::Whipple;
 use crate::numerics::dd::Dd;
 use crate::numerics::eigen::{eigenvalues4, Eigenvalue};
@@ -180,6 +184,29 @@ impl ClosedLoopPoly {
     /// $[a_0, \dots, a_4]$ at speed `v`.
     pub fn at(&self, v: f64) -> [f64; 5] {
         self.coeffs.map(|c| poly_eval_low(&c, v))
+    }
+
+    /// A certified classification at speed `v` ([`super::certified`]): each coefficient taken
+    /// as known to within the relative error `coeff_rel_err` (zero: exact), $a_k(v)$ and $H_3$
+    /// evaluated in double-double arithmetic with a running error bound; stable or unstable
+    /// only when no bound reaches zero. Meant for speeds near a window's edges, where $H_3$ is
+    /// a small difference of large products.
+    pub fn classify(&self, v: f64, coeff_rel_err: f64) -> Certified {
+        let b = |x: f64| Bounded::new(x, coeff_rel_err * x.abs() * (1.0 + 8.0 * f64::EPSILON));
+        let vb = Bounded::new(v, 0.0);
+        let a: [Bounded; 5] = self
+            .coeffs
+            .map(|c| c.iter().rev().fold(Bounded::new(0.0, 0.0), |acc, &x| acc * vb + b(x)));
+        let h3 = a[1] * (a[2] * a[3] - a[1] * a[4]) - a[0] * a[3] * a[3];
+        let Some(lead) = a[4].sign() else { return Certified::Indeterminate };
+        let signs = [a[0], a[1], a[2], a[3], h3].map(|x| x.sign().map(|s| s == lead));
+        if signs.contains(&Some(false)) {
+            Certified::Unstable
+        } else if signs.iter().all(|s| *s == Some(true)) {
+            Certified::Stable
+        } else {
+            Certified::Indeterminate
+        }
     }
 
     /// $H_3 = a_1(a_2a_3 - a_1a_4) - a_0a_3^2$ as a polynomial in $v$ (lowest first, degree

@@ -6,6 +6,7 @@ use nalgebra::Matrix4;
 use super::*;
 use crate::numerics::quartic::{aberth_compensated, C64};
 use crate::numerics::rng::SplitMix64;
+use crate::whipple::certified::Certified;
 use crate::whipple::WhippleParams;
 
 /// Random gains: each of the eight zero or, with probability 1/2, uniform within a scale of
@@ -142,6 +143,46 @@ fn hurwitz_window_agrees_with_the_eigenvalue_sweep_on_ten_thousand_random_gains(
     eprintln!(
         "{with_window} windows, {missed} narrow ones missed by the grid, worst edge {worst:e}"
     );
+}
+
+#[test]
+fn certified_classification_near_the_edges_is_never_wrong() {
+    // At 200 seeded random gains with a window, just inside and just outside every edge
+    // (1e-9 relative) and at the middle: the certified verdict is stable, unstable or
+    // indeterminate, never contradicting the eigenvalues of A - BK; at the middles it is
+    // decided.
+    let mut rng = SplitMix64(2020);
+    let (mut checked, mut decided) = (0, 0);
+    while checked < 200 {
+        let bike = random_bike(&mut rng);
+        let k = random_gains(&mut rng);
+        let p = bike.closed_loop_poly(&k);
+        let w = closed_loop_window_of(&p, 0.0, 10.0);
+        if w.stable.is_empty() {
+            continue;
+        }
+        checked += 1;
+        let eig_stable = |v: f64| bike.closed_loop_eigenvalues(v, &k).iter().all(|e| e.re < 0.0);
+        for &(lo, hi) in &w.stable {
+            let mid = 0.5 * (lo + hi);
+            assert_eq!(p.classify(mid, 0.0), Certified::Stable, "{k:?} {w:?}");
+            for (edge, inside) in [(lo, 1.0), (hi, -1.0)] {
+                if edge == 0.0 || edge == 10.0 {
+                    continue;
+                }
+                for side in [1.0, -1.0] {
+                    let v = edge * (1.0 + side * inside * 1e-9);
+                    match p.classify(v, 0.0) {
+                        Certified::Stable => assert!(eig_stable(v), "{k:?} at {v}"),
+                        Certified::Unstable => assert!(!eig_stable(v), "{k:?} at {v}"),
+                        Certified::Indeterminate => continue,
+                    }
+                    decided += 1;
+                }
+            }
+        }
+    }
+    assert!(decided > 200, "only {decided} decided next to the edges");
 }
 
 #[test]
