@@ -73,6 +73,20 @@ def frequency_response(
 ) -> dict[str, npt.NDArray[np.complex128] | npt.NDArray[np.float64]]:
     """G(iω) from input "roll"|"steer" torque to output "roll"|"steer"|"roll-rate"|"steer-rate": {"response" complex, "magnitude_db", "phase_deg" (unwrapped)}, each (n speeds, m omegas)."""
 
+def closed_loop_window(
+    params: Params,
+    K: npt.ArrayLike | dict[str, float],
+    vmin: float = 0.0,
+    vmax: float | None = None,
+    strict: bool = False,
+) -> dict[str, object]:
+    """Closed-loop stable speed range of u = -K x, K (2, 4) (rows roll, steer torque; columns roll, steer, roll rate, steer rate) or gains by name: {"from", "to", "stable": [(from, to), ...], "lowest_stable_speed"} (None: unbounded)."""
+
+def closed_loop_eigenvalues(
+    params: Params, K: npt.ArrayLike | dict[str, float], speeds: Speeds, strict: bool = False
+) -> npt.NDArray[np.complex128]:
+    """Eigenvalues of A - B K at each speed, shape (n, 4), sorted by real then imaginary part."""
+
 def eigenvalues(params: Params, speeds: Speeds, strict: bool = False) -> npt.NDArray[np.complex128]:
     """Eigenvalues at each speed, shape (n, 4), sorted by real then imaginary part."""
 

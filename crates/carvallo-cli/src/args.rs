@@ -105,6 +105,8 @@ pub fn is_data_error(message: &str) -> bool {
         "cannot read model file `",
         "invalid rider file `",
         "cannot read rider file `",
+        "invalid gain table `",
+        "cannot read gain table `",
     ]
     .iter()
     .any(|p| message.starts_with(p))

@@ -18,6 +18,8 @@ mod args;
 mod bench;
 mod commands;
 mod figures;
+mod gain_sweep;
+mod gains;
 mod perf;
 mod report_dir;
 mod report_html;
@@ -39,8 +41,8 @@ enum Command {
     /// Print the memoir concordance (text table, or JSON with --json), its claims checked
     /// (--claims), or write the report directory (--out DIR)
     Report(report::Args),
-    /// The stable speed range of the linearised Carvallo-Whipple bicycle, or of Carvallo's
-    /// bicycle without hands (memoir n° 117-121)
+    /// The stable speed range of the linearised Carvallo-Whipple bicycle (open, or closed by a
+    /// state feedback with --gain), or of Carvallo's bicycle without hands (memoir n° 117-121)
     Window(window::Args),
     /// The eigenvalues of the linearised bicycle at speed V [m/s]
     Eig(eig::Args),
@@ -51,8 +53,8 @@ enum Command {
     Bode(bode::Args),
     /// Time per evaluation beside the error against 256 bits
     Bench(perf::BenchArgs),
-    /// The stability windows of many designs (a grid or random designs around the model), in
-    /// parallel
+    /// The stability windows of many designs (a grid or random designs around the model), or
+    /// the closed-loop windows of a grid of feedback gains (--gain), in parallel
     Sweep(perf::SweepArgs),
     /// Accelerations of the nonlinear bicycle in Basu-Mandal's coordinates (the state as JSON
     /// on stdin)

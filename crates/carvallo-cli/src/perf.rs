@@ -22,6 +22,10 @@
 //!   `stable`, `weave_speed`, `capsize_speed` (empty when there is none), for
 //!   `pandas.read_csv`.
 //!
+//!   With `--gain NAME=FROM:TO:COUNT ...` instead of `--vary`/`--random` it sweeps the gains of
+//!   a state feedback on the model: the closed-loop stable speed range of every gain set
+//!   ([`crate::gain_sweep`]).
+//!
 //!   The designs stream in blocks ([`sweep::sweep_stream`]): memory does not depend on their
 //!   number, CSV rows are written as the blocks finish, and Ctrl-C ends the sweep with the
 //!   summary of the designs done and the line `interrupted after K of N designs` (exit 0).
@@ -78,7 +82,7 @@ pub enum MethodArg {
 /// `carvallo sweep`: the stability windows of many designs, a grid or random designs around
 /// the model, in parallel.
 #[derive(Clone, Debug, PartialEq, clap::Args)]
-#[command(group(clap::ArgGroup::new("designs").required(true).args(["vary", "random"])))]
+#[command(group(clap::ArgGroup::new("designs").required(true).args(["vary", "random", "gain"])))]
 pub struct SweepArgs {
     /// The bicycle around which designs vary: `benchmark` or a parameter file
     #[arg(long, value_name = "MODEL")]
@@ -108,6 +112,17 @@ pub struct SweepArgs {
     /// Print one CSV row per design (for pandas.read_csv)
     #[arg(long)]
     pub csv: bool,
+    /// A gain axis of the state feedback u = -K x: COUNT values of the gain NAME (as for
+    /// `window --gain`) from FROM to TO; sweeps the closed-loop stable speed range over the gains
+    /// on the model (several make a grid)
+    #[arg(long, value_name = "NAME=FROM:TO:COUNT", value_parser = crate::gains::parse_gain_axis, conflicts_with_all = ["vary", "random"], allow_hyphen_values = true)]
+    pub gain: Vec<crate::gains::GainAxis>,
+    /// The lowest speed of the closed-loop windows of --gain [m/s] [default: 0]
+    #[arg(long, value_name = "V", value_parser = crate::gains::speed)]
+    pub vmin: Option<f64>,
+    /// The highest speed of the closed-loop windows of --gain [m/s] [default: every speed]
+    #[arg(long, value_name = "V", value_parser = crate::gains::speed)]
+    pub vmax: Option<f64>,
 }
 
 /// Reads `NAME=FROM:TO:COUNT`.
@@ -273,6 +288,12 @@ pub fn bench(args: &BenchArgs) -> Result<String, String> {
 /// Runs `carvallo sweep`: the summary to print (the CSV rows are written as they come), or an
 /// error naming the bad value.
 pub fn sweep(args: &SweepArgs) -> Result<String, String> {
+    if !args.gain.is_empty() {
+        return crate::gain_sweep::run(args);
+    }
+    if args.vmin.is_some() || args.vmax.is_some() {
+        return Err("--vmin and --vmax bound the closed-loop windows of --gain".into());
+    }
     let Sweep { model, data, designs, method, output } = args.sweep();
     let base = crate::args::bicycle(&model, &data)?;
     let count = match &designs {
@@ -337,7 +358,7 @@ pub fn sweep(args: &SweepArgs) -> Result<String, String> {
 
 /// The flag that Ctrl-C sets (the handler is installed on the first call). Without a handler
 /// (the platform refused it) Ctrl-C ends the process as usual.
-fn interrupt_flag() -> &'static AtomicBool {
+pub(crate) fn interrupt_flag() -> &'static AtomicBool {
     static STOP: AtomicBool = AtomicBool::new(false);
     static HANDLER: std::sync::Once = std::sync::Once::new();
     HANDLER.call_once(|| {
@@ -566,12 +587,87 @@ mod tests {
             (&["b", "--random", "5", "--spread", "c"], "invalid --spread `c`: expected NAME=REL"),
             (&["b", "--random", "5", "--spread", "c=.1", "--seed", "-1"], "'--seed <S>'"),
             (&["b", "--spread", "c=0.1"], "--random <N>"),
-            (&["b"], "<--vary <NAME=FROM:TO:COUNT>|--random <N>>"),
+            (&["b"], "<--vary <NAME=FROM:TO:COUNT>|--random <N>|--gain <NAME=FROM:TO:COUNT>>"),
+            (&["b", "--gain", "k_yaw=0:1:2"], "unknown gain `k_yaw`: expected one of k_roll_roll"),
+            (&["b", "--gain", "k_roll_roll=0:1:2", "--vary", "c=0:1:2"], "cannot be used with"),
         ] {
             let e = sweep_of(words).unwrap_err();
             assert!(e.contains(msg), "{words:?}: {e}");
         }
         let e = parse::<BenchArgs>(&["bench", "--fast"]).unwrap_err();
+        assert!(e.contains("unexpected argument '--fast'"), "{e}");
+        // A gain sweep: the closed-loop windows of the balance-assist gain on the benchmark,
+        // each the window of `window --gain` (the same library call) and the lower edge
+        // falling as the assist grows.
+        let a = parse::<SweepArgs>(&[
+            "sweep",
+            "--model",
+            "benchmark",
+            "--gain",
+            "k_steer_roll_rate=0:-20:5",
+            "--json",
+        ])
+        .expect("parses");
+        let v: Value = serde_json::from_str(&sweep(&a).expect("runs")).expect("json");
+        assert_eq!((v["count"].as_u64(), v["designs"].as_str()), (Some(5), Some("gain-grid")));
+        let lows: Vec<f64> = v["points"]
+            .as_array()
+            .expect("points")
+            .iter()
+            .map(|p| p["stable"][0][0].as_f64().expect("stable"))
+            .collect();
+        assert!(lows.windows(2).all(|w| w[1] < w[0]), "{lows:?}");
+        assert!((lows[0] - 4.292382536341).abs() < 1e-9, "{lows:?}");
+        let a = parse::<SweepArgs>(&[
+            "sweep",
+            "--model",
+            "benchmark",
+            "--gain",
+            "k_steer_roll_rate=0:-20:5",
+            "--csv",
+            "--method",
+            "eigen",
+            "--vmax",
+            "10",
+        ])
+        .expect("parses");
+        let mut written = Vec::new();
+        let last = crate::gain_sweep::run_to(&a, &mut written).expect("runs");
+        let csv = format!("{}{last}", String::from_utf8_lossy(&written));
+        let lines: Vec<&str> = csv.lines().collect();
+        assert_eq!(
+            lines[0],
+            "design,k_steer_roll_rate,status,stable,stable_from,stable_to,intervals"
+        );
+        assert_eq!(lines.len(), 6);
+        let first: Vec<&str> = lines[1].split(',').collect();
+        let lo: f64 = first[4].parse().expect("a number");
+        assert!((lo - 4.292382536341).abs() < 1e-9, "{csv}");
+        let a = parse::<SweepArgs>(&[
+            "sweep",
+            "--model",
+            "benchmark",
+            "--gain",
+            "k_roll_roll=0:1:2",
+            "--method",
+            "eigen",
+        ])
+        .expect("parses");
+        assert_eq!(sweep(&a).unwrap_err(), "--method eigen needs --vmax (a finite speed grid)");
+        let a = parse::<SweepArgs>(&[
+            "sweep",
+            "--model",
+            "benchmark",
+            "--vary",
+            "c=0:1:2",
+            "--vmax",
+            "3",
+        ])
+        .expect("parses");
+        assert_eq!(
+            sweep(&a).unwrap_err(),
+            "--vmin and --vmax bound the closed-loop windows of --gain"
+        );
         assert!(e.contains("unexpected argument '--fast'"), "{e}");
     }
 }

@@ -400,6 +400,95 @@ fn frequency_response<'py>(
     Ok(d)
 }
 
+/// The gains of a state feedback: a (2, 4) array (rows roll, steer torque; columns roll,
+/// steer, roll rate, steer rate) or a dict of gains by name (`k_steer_roll_rate`, ...; the
+/// others zero).
+fn gains_of(k: &Bound<'_, PyAny>) -> PyResult<carvallo::whipple::feedback::Gains> {
+    use carvallo::whipple::feedback::Gains;
+    let gains = if k.cast::<PyDict>().is_ok() {
+        let pairs = pairs(k, "K")?;
+        Gains::from_named(pairs.iter().map(|(n, v)| (n.as_str(), *v)))
+            .map_err(|e| err(e.to_string()))?
+    } else {
+        let bad =
+            || err("K must be a (2, 4) array (rows roll, steer torque) or a dict of gains by name");
+        let arr =
+            k.py().import("numpy")?.call_method1("asarray", (k, "float64")).map_err(|_| bad())?;
+        let arr: PyReadonlyArray2<f64> = arr.extract().map_err(|_| bad())?;
+        let shape = arr.shape();
+        if shape != [2, 4] {
+            return Err(err(format!("K must have the shape (2, 4), not {shape:?}")));
+        }
+        let view = arr.as_array();
+        let rows: Vec<Vec<f64>> = (0..2).map(|r| (0..4).map(|c| view[[r, c]]).collect()).collect();
+        Gains([0, 1].map(|r| [0, 1, 2, 3].map(|c| rows[r][c])))
+    };
+    if let Some(x) = gains
+        .values()
+        .iter()
+        .zip(carvallo::whipple::feedback::GAIN_NAMES)
+        .find(|(x, _)| !x.is_finite())
+    {
+        return Err(err(format!("gain {} = {} is not finite", x.1, x.0)));
+    }
+    Ok(gains)
+}
+
+/// The closed-loop stable speed range of the state feedback u = -K x (as `carvallo window
+/// --gain ... --json`): `{"from", "to", "stable": [(from, to), ...], "lowest_stable_speed"}`
+/// between `vmin` and `vmax` (default: every speed; `None` for an unbounded end).
+#[pyfunction]
+#[pyo3(signature = (params, k, vmin = 0.0, vmax = None, strict = false))]
+fn closed_loop_window<'py>(
+    py: Python<'py>,
+    params: &Bound<'py, PyAny>,
+    k: &Bound<'py, PyAny>,
+    vmin: f64,
+    vmax: Option<f64>,
+    strict: bool,
+) -> PyResult<Bound<'py, PyDict>> {
+    let bike = Whipple::new(params_of(params, strict)?);
+    let gains = gains_of(k)?;
+    let to = vmax.unwrap_or(f64::INFINITY);
+    if vmax.is_some_and(|x| !x.is_finite()) {
+        return Err(err(format!("invalid vmax {to}: must be finite (None for every speed)")));
+    }
+    let w = bike.closed_loop_window(&gains, vmin, to).map_err(|e| err(e.to_string()))?;
+    let end = |x: f64| x.is_finite().then_some(x);
+    let d = PyDict::new(py);
+    d.set_item("from", w.from)?;
+    d.set_item("to", end(w.to))?;
+    let stable: Vec<(f64, Option<f64>)> = w.stable.iter().map(|&(a, b)| (a, end(b))).collect();
+    d.set_item("stable", stable)?;
+    d.set_item("lowest_stable_speed", w.lowest_stable_speed())?;
+    Ok(d)
+}
+
+/// The eigenvalues of the closed loop A - B K at each speed, shape (n, 4) complex, sorted by
+/// real then imaginary part.
+#[pyfunction]
+#[pyo3(signature = (params, k, speeds, strict = false))]
+fn closed_loop_eigenvalues<'py>(
+    py: Python<'py>,
+    params: &Bound<'py, PyAny>,
+    k: &Bound<'py, PyAny>,
+    speeds: &Bound<'py, PyAny>,
+    strict: bool,
+) -> PyResult<Bound<'py, PyAny>> {
+    let bike = Whipple::new(params_of(params, strict)?);
+    let gains = gains_of(k)?;
+    let speeds = speeds_of(speeds)?;
+    let mut flat = Vec::with_capacity(4 * speeds.len());
+    for &v in &speeds {
+        let ev = bike.closed_loop_eigenvalues(v, &gains);
+        if ev.len() != 4 {
+            return Err(err(format!("the eigenvalues did not converge at speed {v}")));
+        }
+        flat.extend(ev.iter().map(|e| Complex64::new(e.re, e.im)));
+    }
+    Ok(PyArray1::from_vec(py, flat).reshape([speeds.len(), 4])?.into_any())
+}
+
 /// The modes at each speed, labelled by continuation in speed (as `carvallo eig --json`):
 /// `(labels, eigenvalues, vectors)` with the four labels ("weave", "weave", "capsize",
 /// "caster"), the eigenvalues (n, 4) complex and the unit eigenvectors (n, 4, 4) complex,
@@ -939,6 +1028,8 @@ fn carvallo_module(m: &Bound<'_, PyModule>) -> PyResult<()> {
     m.add_function(wrap_pyfunction!(state_space, m)?)?;
     m.add_function(wrap_pyfunction!(modes, m)?)?;
     m.add_function(wrap_pyfunction!(frequency_response, m)?)?;
+    m.add_function(wrap_pyfunction!(closed_loop_window, m)?)?;
+    m.add_function(wrap_pyfunction!(closed_loop_eigenvalues, m)?)?;
     m.add_function(wrap_pyfunction!(eigenvalues, m)?)?;
     m.add_function(wrap_pyfunction!(window, m)?)?;
     m.add_function(wrap_pyfunction!(windows, m)?)?;

@@ -381,6 +381,8 @@ def test_every_function_taking_params_accepts_a_broken_triangle_inequality(cli, 
         "state_space": lambda **k: carvallo.state_space(params, speeds, **k),
         "modes": lambda **k: carvallo.modes(params, speeds, **k),
         "frequency_response": lambda **k: carvallo.frequency_response(params, speeds, [1.0, 10.0], "steer", "roll", **k),
+        "closed_loop_window": lambda **k: carvallo.closed_loop_window(params, {"k_steer_roll_rate": -10.0}, **k),
+        "closed_loop_eigenvalues": lambda **k: carvallo.closed_loop_eigenvalues(params, np.zeros((2, 4)), speeds, **k),
         "eigenvalues": lambda **k: carvallo.eigenvalues(params, speeds, **k),
         "window": lambda **k: carvallo.window(params, **k),
         "windows": lambda **k: carvallo.windows(row, **k),
@@ -450,3 +452,49 @@ def test_add_rider_equals_the_file_route(root):
         carvallo.add_rider(params, {**values, "yB": 0.5})
     with pytest.raises(carvallo.ParameterError, match=r"^cannot read rider file `/nonexistent`"):
         carvallo.add_rider(params, "/nonexistent")
+
+
+def test_closed_loop_window_and_eigenvalues_agree_with_numpy_and_the_cli(cli):
+    p = carvallo.benchmark()
+    # The balance-assist law T_delta = c * roll rate (c = 10 N m s/rad): k_steer_roll_rate = -c.
+    k = np.zeros((2, 4))
+    k[1, 2] = -10.0
+    w = carvallo.closed_loop_window(p, k)
+    assert w == carvallo.closed_loop_window(p, {"k_steer_roll_rate": -10.0})
+    c = cli("window", "--model", "benchmark", "--gain", "k_steer_roll_rate=-10", "--json")
+    assert [tuple(s) for s in c["stable"]] == w["stable"]
+    assert c["lowest_stable_speed"] == w["lowest_stable_speed"] and w["to"] is None
+    lo, hi = w["stable"][0]
+    # numpy's eigenvalues of A - B K: an independent route through the state space.
+    a, b = carvallo.state_space(p, [lo - 1e-6, lo + 1e-6, hi - 1e-6, hi + 1e-6])
+    ev = np.linalg.eigvals(a - b @ k)
+    assert [bool(np.all(e.real < 0)) for e in ev] == [False, True, True, False]
+    speeds = np.linspace(0.5, 8.0, 16)
+    got = carvallo.closed_loop_eigenvalues(p, k, speeds)
+    a, b = carvallo.state_space(p, speeds)
+    for n in range(len(speeds)):
+        want = np.linalg.eigvals(a[n] - b[n] @ k)
+        for z in got[n]:
+            assert np.abs(want - z).min() < 1e-9 * max(1.0, np.abs(want).max())
+    ce = cli("eig", "--model", "benchmark", "--speed", "3", "--gain", "k_steer_roll_rate=-10", "--json")
+    assert [complex(e["re"], e["im"]) for e in ce["eigenvalues"]] == list(
+        carvallo.closed_loop_eigenvalues(p, k, [3.0])[0]
+    )
+    # Random gains: the window's stable intervals are where numpy finds every real part < 0.
+    rng = np.random.default_rng(20)
+    for _ in range(20):
+        k = rng.uniform(-1, 1, (2, 4)) * np.array([[200, 20, 50, 5], [20, 5, 20, 2]])
+        w = carvallo.closed_loop_window(p, k, 0.0, 10.0)
+        edges = [0.0] + [x for s in w["stable"] for x in s] + [10.0]
+        for i, (x, y) in enumerate(zip(edges[:-1], edges[1:])):
+            if y - x < 1e-6:
+                continue
+            a, b = carvallo.state_space(p, [0.5 * (x + y)])
+            stable = bool(np.all(np.linalg.eigvals(a[0] - b[0] @ k).real < 0))
+            assert stable == (i % 2 == 1), (k, w)
+    with pytest.raises(carvallo.ParameterError, match="unknown gain `k_yaw`: expected one of"):
+        carvallo.closed_loop_window(p, {"k_yaw": 1.0})
+    with pytest.raises(carvallo.ParameterError, match=r"shape \(2, 4\), not \[4, 2\]"):
+        carvallo.closed_loop_window(p, np.zeros((4, 2)))
+    with pytest.raises(carvallo.ParameterError, match="invalid speed range 3 to 1"):
+        carvallo.closed_loop_window(p, k, 3.0, 1.0)

@@ -73,6 +73,16 @@ fn model_value(name: &str) -> f64 {
         "B1" => 2.5,
         "C1" => 0.625,
         "dp" | "dn" | "ds" => 0.01,
+        // Feedback gains of the closed loop (N m/rad, N m s/rad), nonzero so that every term
+        // of the closed-loop polynomial is exercised.
+        "k_roll_roll" => 100.0,
+        "k_roll_steer" => 10.0,
+        "k_roll_roll_rate" => 20.0,
+        "k_roll_steer_rate" => 2.0,
+        "k_steer_roll" => 10.0,
+        "k_steer_steer" => 2.0,
+        "k_steer_roll_rate" => -10.0,
+        "k_steer_steer_rate" => 1.0,
         _ => f64::NAN,
     }
 }
@@ -397,6 +407,93 @@ fn window_rows(cfg: &Config, rows: &mut Vec<Row>) -> (f64, f64, f64, f64, f64) {
         note: format!("{:.0}x slower than hurwitz", t_scan / t_h),
     });
     (t_h, t_e, eh_common, ee, bench_err)
+}
+
+/// The closed-loop windows of table 2: random gains (as in the tests of
+/// `carvallo::whipple::feedback`) on the benchmark and random designs, the Hurwitz route on the
+/// generated closed-loop polynomial against the eigenvalue sweep of $A - BK$ (200 grid steps to
+/// 10 m/s, each edge bisected to adjacent floats: the reference of the edges, which it locates
+/// to the precision of the eigenvalues' sign).
+fn closed_loop_rows(cfg: &Config, rows: &mut Vec<Row>) {
+    use carvallo::whipple::feedback::{closed_loop_scene as cl, Gains};
+    const SCALE: [f64; 8] = [200.0, 20.0, 50.0, 5.0, 20.0, 5.0, 20.0, 2.0];
+    let (to, points) = (10.0, 200);
+    let mut rng = SplitMix64(40);
+    let n = (5 * cfg.designs).max(2);
+    let cases: Vec<(Whipple, Gains)> = (0..n)
+        .map(|i| {
+            let design = if i == 0 { WhippleParams::benchmark() } else { random_design(&mut rng) };
+            let gains = if i == 0 {
+                Gains::balance_assist(10.0)
+            } else {
+                let mut g = Gains::ZERO;
+                for (k, s) in SCALE.iter().enumerate() {
+                    g.0[k / 4][k % 4] = rng.uniform(-s, *s);
+                }
+                g
+            };
+            (Whipple::new(design), gains)
+        })
+        .collect();
+    let results: Vec<_> = cases
+        .par_iter()
+        .map(|(w, g)| {
+            let h = w.closed_loop_window(g, 0.0, to).ok();
+            let e = w.closed_loop_eigen_window(g, 0.0, to, points).ok();
+            (h, e)
+        })
+        .collect();
+    let (mut worst_lo, mut worst_hi, mut compared, mut differ, mut stable) =
+        (0.0f64, 0.0f64, 0usize, 0usize, 0usize);
+    for (h, e) in &results {
+        let (Some(h), Some(e)) = (h, e) else { continue };
+        stable += usize::from(!h.stable.is_empty());
+        if h.stable.len() != e.stable.len() {
+            differ += 1;
+            continue;
+        }
+        for (x, y) in h.stable.iter().zip(&e.stable) {
+            if x.0 > 0.0 {
+                worst_lo = worst_lo.max(rel(x.0, y.0));
+            }
+            if x.1 < to {
+                worst_hi = worst_hi.max(rel(x.1, y.1));
+            }
+            compared += 1;
+        }
+    }
+    let (w0, g0) = &cases[0];
+    let t_h = time_ns(cfg.min_time, || w0.closed_loop_window(black_box(g0), 0.0, to));
+    let t_inf = time_ns(cfg.min_time, || w0.closed_loop_window(black_box(g0), 0.0, f64::INFINITY));
+    let t_e = time_ns(cfg.min_time, || w0.closed_loop_eigen_window(black_box(g0), 0.0, to, points));
+    let name = format!("closed-loop window, {n} random gains and designs");
+    rows.push(Row {
+        section: "windows",
+        name: name.clone(),
+        method: "hurwitz on the closed-loop polynomial".into(),
+        ops: Some(cl::OP_COUNT as u64),
+        ns: Some(t_h),
+        max_rel_err: Some(worst_lo.max(worst_hi)),
+        note: format!(
+            "speeds 0 to {to} m/s, the scene included (its ops); lower edges {worst_lo:.1e}, upper \
+             edges {worst_hi:.1e} against the eigenvalue sweep over {compared} intervals; {stable} \
+             gain sets stable somewhere, {differ} where the sweep's grid misses a narrow window; \
+             every speed: {t_inf:.0} ns"
+        ),
+    });
+    rows.push(Row {
+        section: "windows",
+        name,
+        method: "eigenvalue sweep of A - BK".into(),
+        ops: None,
+        ns: Some(t_e),
+        max_rel_err: None,
+        note: format!(
+            "{points} grid points to {to} m/s + bisection (the reference); {:.0}x slower than \
+             hurwitz",
+            t_e / t_h
+        ),
+    });
 }
 
 /// Table 5 and its distributions.
@@ -801,6 +898,8 @@ pub fn run(cfg: &Config) -> Report {
     let uni_args = scene_args(motion_scene::PARAMS, motion_scene::INPUTS);
     use carvallo::whipple::transfer::tf_roll_steer_scene as tf;
     let tf_args = scene_args(tf::PARAMS, tf::INPUTS);
+    use carvallo::whipple::feedback::closed_loop_scene as cl;
+    let cl_args = scene_args(cl::PARAMS, cl::INPUTS);
     let scenes = [
         Scene {
             name: "hoop right-hand side (2)",
@@ -835,6 +934,14 @@ pub fn run(cfg: &Config) -> Report {
             eval: scene_fn!(carvallo::whipple::transfer::tf_roll_steer_scene),
         },
         Scene {
+            name: "bicycle closed-loop polynomial (coefficients of v^j s^k, 8 gains)",
+            ir: WHIPPLE_IR,
+            args: &cl_args,
+            outputs: cl::OUTPUTS,
+            ops: cl::OP_COUNT,
+            eval: scene_fn!(carvallo::whipple::feedback::closed_loop_scene),
+        },
+        Scene {
             name: "unicycle motion + energy",
             ir: UNICYCLE_IR,
             args: &uni_args,
@@ -848,6 +955,7 @@ pub fn run(cfg: &Config) -> Report {
         ratios.push((sc.name, evaluator_rows(cfg, sc, &mut rows)));
     }
     let (t_h, t_e, e_h, e_e, bench_err) = window_rows(cfg, &mut rows);
+    closed_loop_rows(cfg, &mut rows);
     super::quartic::quartic_rows(cfg, &mut rows);
     super::certified::certified_rows(cfg, &mut rows);
     let distributions = distributions(cfg);

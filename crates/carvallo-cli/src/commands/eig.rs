@@ -6,6 +6,10 @@
 //! eigenvector `[{"re", "im"}, ...]` of (lean, steer, lean rate, steer rate); `modes` is empty
 //! if the labels cannot be followed (no speed with one complex pair and two real roots).
 //!
+//! With `--gain NAME=VALUE ...` the eigenvalues are those of the closed loop $A - BK$ of the
+//! state feedback $u = -Kx$ (gains as in [`crate::gains`]); the JSON adds `"gains"` and its
+//! `modes` is empty (the labels follow the open loop).
+//!
 //! The parameter file is read as for `window` ([`crate::args::bicycle`], with `--rider FILE` and `--strict`). Unknown or missing
 //! arguments, a speed that is not a finite number and an unreadable or invalid parameter file
 //! are usage errors: a message naming the value, exit code 2.
@@ -31,6 +35,10 @@ pub struct Args {
     /// Print JSON `{speed, eigenvalues: [{re, im}, ...], modes: [...]}` instead of text
     #[arg(long)]
     pub json: bool,
+    /// A gain of the state feedback u = -K x (as for `window --gain`): the eigenvalues of the
+    /// closed loop A - B K
+    #[arg(long, value_name = "NAME=VALUE", value_parser = crate::gains::parse_gain, allow_hyphen_values = true)]
+    pub gain: Vec<crate::gains::GainValue>,
 }
 
 /// One mode: its label, eigenvalue and unit eigenvector (lean, steer, lean rate, steer rate),
@@ -49,8 +57,30 @@ fn mode_json(m: &Mode) -> Value {
 
 /// Runs `carvallo eig`: the text to print, or an error naming the bad value.
 pub fn run(cmd: &Args) -> Result<String, String> {
-    let Args { model, data, speed, json } = cmd;
+    let Args { model, data, speed, json, gain } = cmd;
     let bike = Whipple::new(crate::args::bicycle(model, data)?);
+    if !gain.is_empty() {
+        let k = crate::gains::gains_of(gain);
+        let ev = bike.closed_loop_eigenvalues(*speed, &k);
+        if *json {
+            let list: Vec<Value> = ev.iter().map(|e| json!({ "re": e.re, "im": e.im })).collect();
+            let v = json!({
+                "speed": speed,
+                "gains": crate::gains::gains_json(&k),
+                "eigenvalues": list,
+                "modes": [],
+            });
+            return serde_json::to_string_pretty(&v).map_err(|e| e.to_string());
+        }
+        let mut s = format!(
+            "closed-loop eigenvalues at {speed} m/s, gains {}:\n",
+            crate::gains::gains_text(&k)
+        );
+        for e in &ev {
+            s.push_str(&format!("{} {:+}i\n", e.re, e.im));
+        }
+        return Ok(s);
+    }
     let ev = bike.eigenvalues(*speed);
     if *json {
         let list: Vec<Value> = ev.iter().map(|e| json!({ "re": e.re, "im": e.im })).collect();
@@ -83,7 +113,8 @@ mod tests {
                 model: "b.toml".into(),
                 data: DataOptions::default(),
                 speed: 5.0,
-                json: false
+                json: false,
+                gain: Vec::new(),
             })
         );
         assert_eq!(
@@ -100,12 +131,40 @@ mod tests {
     }
 
     #[test]
+    fn a_gain_gives_the_roots_of_the_closed_loop_polynomial() {
+        let a = parse::<Args>(&[
+            "eig",
+            "--model",
+            "benchmark",
+            "--speed",
+            "3",
+            "--gain",
+            "k_steer_roll_rate=-10",
+            "--json",
+        ])
+        .expect("parses");
+        let v: Value = serde_json::from_str(&run(&a).unwrap()).unwrap();
+        assert_eq!(v["gains"]["k_steer_roll_rate"], -10.0);
+        // The independent route: Aberth's roots of the generated closed-loop polynomial.
+        let bike = Whipple::new(carvallo::whipple::WhippleParams::benchmark());
+        let k = carvallo::whipple::feedback::Gains::balance_assist(10.0);
+        let roots = carvallo::quartic::aberth_compensated(&bike.closed_loop_poly(&k).at(3.0));
+        for e in v["eigenvalues"].as_array().unwrap() {
+            let (re, im) = (e["re"].as_f64().unwrap(), e["im"].as_f64().unwrap());
+            let d = roots.iter().map(|z| (z.re - re).hypot(z.im - im)).fold(f64::MAX, f64::min);
+            assert!(d < 1e-9, "{re} {im}i: {roots:?}");
+            assert!(re < 0.0, "stable at 3 m/s with the assist: {v}");
+        }
+    }
+
+    #[test]
     fn json_keeps_its_keys_and_adds_labelled_modes() {
         let a = Args {
             model: "benchmark".into(),
             data: DataOptions::default(),
             speed: 5.0,
             json: true,
+            gain: Vec::new(),
         };
         let v: Value = serde_json::from_str(&run(&a).unwrap()).unwrap();
         assert_eq!(v["speed"], 5.0);

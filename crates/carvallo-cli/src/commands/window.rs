@@ -18,6 +18,15 @@
 //!   Speeds are forward speeds $v = Rs$ in m/s ($R = 0.38$ m, n° 117); the JSON adds the spin
 //!   squared `s2` (the memoir's variable) and `km_h` of both limits.
 //!
+//! * `--gain NAME=VALUE ...` or `--gain-table FILE.csv` (with `--model benchmark|FILE`): the
+//!   closed-loop stable speed range of the state feedback $u = -Kx$
+//!   ([`carvallo::whipple::feedback`]), by the Hurwitz route on the generated closed-loop
+//!   polynomial, in the speeds `--vmin` (default 0) to `--vmax` (default: every speed for
+//!   constant gains, the table's speeds for a table); JSON
+//!   `{ "model", "gains" | "gain_table", "from", "to", "stable": [[from, to], ...],
+//!   "lowest_stable_speed" }` (`to` and an interval's end are `null` for every speed above).
+//!   The gains and the table are described in [`crate::gains`].
+//!
 //! Unknown or missing arguments and an unreadable or invalid parameter file are usage errors:
 //! a message naming the value, exit code 2.
 
@@ -27,6 +36,7 @@ use carvallo::bicycle_straight::{
 use carvallo::whipple::Whipple;
 
 use crate::args::DataOptions;
+use crate::gains::GainValue;
 use serde_json::{json, Value};
 
 /// The Carvallo models (memoir n° 117–121) this command answers besides the benchmark bicycle.
@@ -47,6 +57,47 @@ pub struct Args {
     /// Print JSON `{model, weave_speed, capsize_speed, stable}` instead of text
     #[arg(long)]
     pub json: bool,
+    #[command(flatten)]
+    pub feedback: FeedbackOptions,
+}
+
+/// The state feedback of a closed-loop window.
+#[derive(Clone, Debug, Default, PartialEq, clap::Args)]
+pub struct FeedbackOptions {
+    /// A gain of the state feedback u = -K x, NAME = k_{roll|steer}_{roll|steer|roll_rate|steer_rate}
+    /// (roll or steer torque from roll, steer or their rates; the others are zero): the
+    /// closed-loop stable speed range
+    #[arg(long, value_name = "NAME=VALUE", value_parser = crate::gains::parse_gain, allow_hyphen_values = true)]
+    pub gain: Vec<GainValue>,
+    /// Gains as functions of speed: a CSV file with the header `speed,k_...` and one row per
+    /// speed, linearly interpolated
+    #[arg(long, value_name = "FILE.csv", conflicts_with = "gain")]
+    pub gain_table: Option<String>,
+    /// The lowest speed of a closed-loop window [m/s] [default: 0, or the table's first speed]
+    #[arg(long, value_name = "V", value_parser = crate::gains::speed)]
+    pub vmin: Option<f64>,
+    /// The highest speed of a closed-loop window [m/s] [default: every speed, or the table's
+    /// last speed]
+    #[arg(long, value_name = "V", value_parser = crate::gains::speed)]
+    pub vmax: Option<f64>,
+    /// The smallest balance-assist gain c (steer torque c times the roll rate into the fall,
+    /// k_steer_roll_rate = -c) at which the speed V is stable, and the closed-loop window there
+    #[arg(long, value_name = "V", value_parser = crate::gains::speed, conflicts_with_all = ["gain", "gain_table"])]
+    pub assist_down_to: Option<f64>,
+}
+
+/// The largest balance-assist gain `--assist-down-to` looks at [N m s/rad].
+pub const ASSIST_MAX: f64 = 1000.0;
+
+impl FeedbackOptions {
+    /// Whether any is given.
+    pub fn any(&self) -> bool {
+        !self.gain.is_empty()
+            || self.gain_table.is_some()
+            || self.vmin.is_some()
+            || self.vmax.is_some()
+            || self.assist_down_to.is_some()
+    }
 }
 
 /// A JSON number, `null` for an infinite speed.
@@ -60,12 +111,21 @@ fn finite(x: f64) -> Value {
 
 /// Runs `carvallo window`: the text to print, or an error naming the bad value.
 pub fn run(cmd: &Args) -> Result<String, String> {
-    let Args { model, data, json } = cmd;
+    let Args { model, data, json, feedback } = cmd;
     if CARVALLO_MODELS.contains(&model.as_str()) {
         if data.any() {
             return Err(format!("`--rider` and `--strict` read a bicycle file, not `{model}`"));
         }
+        if feedback.any() {
+            return Err(format!(
+                "the closed loop (--gain, --gain-table, --vmin, --vmax) is for the benchmark \
+                 bicycle or a bicycle file, not `{model}`"
+            ));
+        }
         return carvallo_window(model).and_then(|w| render_carvallo(model, &w, *json));
+    }
+    if feedback.any() {
+        return closed_loop(model, data, feedback, *json);
     }
     let w = Whipple::new(crate::args::bicycle(model, data)?).stability_window();
     let stable: Vec<Value> =
@@ -90,6 +150,80 @@ pub fn run(cmd: &Args) -> Result<String, String> {
             s.push_str(&format!("stable from {a} to {b} m/s\n"));
         }
         Ok(s)
+    }
+}
+
+/// The closed-loop window of `window --gain` or `--gain-table`.
+fn closed_loop(
+    model: &str,
+    data: &DataOptions,
+    fb: &FeedbackOptions,
+    as_json: bool,
+) -> Result<String, String> {
+    if fb.gain.is_empty() && fb.gain_table.is_none() && fb.assist_down_to.is_none() {
+        return Err(
+            "--vmin and --vmax bound a closed-loop window: give --gain or --gain-table".into()
+        );
+    }
+    let table = fb.gain_table.as_deref().map(crate::gains::read_gain_table).transpose()?;
+    let bike = Whipple::new(crate::args::bicycle(model, data)?);
+    let mut gains = crate::gains::gains_of(&fb.gain);
+    let assist = match fb.assist_down_to {
+        Some(target) => {
+            let c = bike.balance_assist_gain(target, ASSIST_MAX).ok_or_else(|| {
+                format!(
+                    "no balance-assist gain up to {ASSIST_MAX} N m s/rad makes {target} m/s stable"
+                )
+            })?;
+            gains = carvallo::whipple::feedback::Gains::balance_assist(c);
+            Some((target, c))
+        }
+        None => None,
+    };
+    let w = match &table {
+        Some(t) => {
+            let span = t.span();
+            bike.closed_loop_window_table(t, fb.vmin.unwrap_or(span.0), fb.vmax.unwrap_or(span.1))
+        }
+        None => bike.closed_loop_window(
+            &gains,
+            fb.vmin.unwrap_or(0.0),
+            fb.vmax.unwrap_or(f64::INFINITY),
+        ),
+    }
+    .map_err(|e| match &fb.gain_table {
+        Some(path) => {
+            e.to_string().replacen("the gain table", &format!("the gain table `{path}`"), 1)
+        }
+        None => e.to_string(),
+    })?;
+    let speed = |x: f64| if x.is_finite() { json!(x) } else { Value::Null };
+    if as_json {
+        let mut v = json!({ "model": model });
+        match &fb.gain_table {
+            Some(path) => v["gain_table"] = json!(path),
+            None => v["gains"] = crate::gains::gains_json(&gains),
+        }
+        if let Some((target, c)) = assist {
+            v["assist_down_to"] = json!(target);
+            v["assist_gain"] = json!(c);
+        }
+        v["from"] = json!(w.from);
+        v["to"] = speed(w.to);
+        v["stable"] = crate::gains::stable_json(&w);
+        v["lowest_stable_speed"] = w.lowest_stable_speed().map_or(Value::Null, speed);
+        serde_json::to_string_pretty(&v).map_err(|e| e.to_string())
+    } else {
+        let mut what = match &fb.gain_table {
+            Some(path) => format!("gain table {path}"),
+            None => format!("gains {}", crate::gains::gains_text(&gains)),
+        };
+        if let Some((target, c)) = assist {
+            what = format!(
+                "balance assist: the smallest gain c making {target} m/s stable is {c} N m s/rad\n{what}"
+            );
+        }
+        Ok(format!("model {model}\n{what}\n{}", crate::gains::window_text(&w)))
     }
 }
 
@@ -162,7 +296,12 @@ mod tests {
     fn parses_and_rejects_by_value() {
         assert_eq!(
             parse::<Args>(&["window", "--model", "benchmark", "--json"]),
-            Ok(Args { model: "benchmark".into(), data: DataOptions::default(), json: true })
+            Ok(Args {
+                model: "benchmark".into(),
+                data: DataOptions::default(),
+                json: true,
+                feedback: FeedbackOptions::default()
+            })
         );
         let e = parse::<Args>(&["window", "--speed", "3"]).unwrap_err();
         assert!(e.starts_with("error: unexpected argument '--speed'"), "{e}");
@@ -170,6 +309,83 @@ mod tests {
         assert!(e.contains("--model <MODEL>"), "{e}");
         let e = main(&["window", "--model", "/nonexistent/bike.toml"]).unwrap_err();
         assert!(e.starts_with("cannot read model file `/nonexistent/bike.toml`"), "{e}");
+    }
+
+    #[test]
+    fn a_gain_gives_the_closed_loop_window_checked_by_eigenvalues() {
+        let out =
+            main(&["window", "--model", "benchmark", "--gain", "k_steer_roll_rate=-10", "--json"])
+                .expect("ok");
+        let v: Value = serde_json::from_str(&out).expect("json");
+        assert_eq!(v["gains"]["k_steer_roll_rate"], -10.0);
+        assert_eq!(v["to"], Value::Null);
+        let lo = v["lowest_stable_speed"].as_f64().expect("stable somewhere");
+        let hi = v["stable"][0][1].as_f64().expect("bounded");
+        // The open-loop capsize speed stays (the roll-rate feedback does not touch a0); the
+        // lower edge moves down from the weave speed 4.29 m/s; the eigenvalues cross there.
+        assert!((hi - 6.024262015388).abs() < 1e-9 && lo < 4.0, "{out}");
+        let bike = Whipple::new(carvallo::whipple::WhippleParams::benchmark());
+        let k = carvallo::whipple::feedback::Gains::balance_assist(10.0);
+        assert!(bike.closed_loop_eigenvalues(lo + 1e-6, &k).iter().all(|e| e.re < 0.0));
+        assert!(bike.closed_loop_eigenvalues(lo - 1e-6, &k).iter().any(|e| e.re > 0.0));
+        let text = main(&["window", "--model", "benchmark", "--gain", "k_steer_roll_rate=-10"])
+            .expect("ok");
+        assert!(text.starts_with("model benchmark\ngains k_steer_roll_rate = -10\nspeeds from 0 m/s to any speed\nclosed-loop stable from "), "{text}");
+        let e =
+            parse::<Args>(&["window", "--model", "benchmark", "--gain", "k_yaw=1"]).unwrap_err();
+        assert!(e.contains("unknown gain `k_yaw`: expected one of k_roll_roll, "), "{e}");
+        let e = main(&["window", "--model", "carvallo", "--gain", "k_roll_roll=1"]).unwrap_err();
+        assert!(e.contains("not `carvallo`"), "{e}");
+        // The assist for 2 m/s: the lower edge of its window is 2 m/s.
+        let out = main(&["window", "--model", "benchmark", "--assist-down-to", "2", "--json"])
+            .expect("ok");
+        let v: Value = serde_json::from_str(&out).expect("json");
+        let c = v["assist_gain"].as_f64().expect("a gain");
+        assert_eq!(v["gains"]["k_steer_roll_rate"].as_f64(), Some(-c));
+        assert!((v["lowest_stable_speed"].as_f64().unwrap() - 2.0).abs() < 1e-9, "{out}");
+        let e = main(&["window", "--model", "benchmark", "--assist-down-to", "0.1"]).unwrap_err();
+        assert!(e.starts_with("no balance-assist gain up to 1000 N m s/rad makes 0.1 m/s"), "{e}");
+        let e = main(&["window", "--model", "benchmark", "--vmax", "3"]).unwrap_err();
+        assert!(e.contains("give --gain or --gain-table"), "{e}");
+        let e = main(&[
+            "window",
+            "--model",
+            "benchmark",
+            "--gain",
+            "k_roll_roll=1",
+            "--vmin",
+            "4",
+            "--vmax",
+            "3",
+        ])
+        .unwrap_err();
+        assert_eq!(e, "invalid speed range 4 to 3: expected 0 <= from <= to");
+    }
+
+    #[test]
+    fn a_gain_table_gives_the_window_of_speed_dependent_gains() {
+        let dir = std::env::temp_dir().join(format!("carvallo-window-{}", std::process::id()));
+        std::fs::create_dir_all(&dir).expect("temp dir");
+        let path = dir.join("gains.csv");
+        // A constant balance assist as a table: the window of the constant gain.
+        std::fs::write(&path, "speed,k_steer_roll_rate\n0,-10\n5,-10\n10,-10\n").expect("write");
+        let file = path.to_string_lossy().into_owned();
+        let out =
+            main(&["window", "--model", "benchmark", "--gain-table", &file, "--json"]).expect("ok");
+        let v: Value = serde_json::from_str(&out).expect("json");
+        assert_eq!((v["from"].as_f64(), v["to"].as_f64()), (Some(0.0), Some(10.0)));
+        let lo = v["lowest_stable_speed"].as_f64().expect("stable");
+        assert!((lo - 2.811741379713137).abs() < 1e-9, "{out}");
+        let e = main(&["window", "--model", "benchmark", "--gain-table", &file, "--vmax", "12"])
+            .unwrap_err();
+        assert_eq!(
+            e,
+            format!(
+                "the gain table `{file}` covers the speeds 0 to 10 m/s, not the range asked 0 to \
+                 12 m/s"
+            )
+        );
+        let _ = std::fs::remove_dir_all(&dir);
     }
 
     #[test]

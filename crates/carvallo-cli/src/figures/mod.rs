@@ -38,7 +38,7 @@ pub struct Missing {
 
 /// Every figure, in the order of the report. Adding a figure: write its function in
 /// [`memoir`] or [`modern`], add a row.
-pub const FIGURES: [Figure; 15] = [
+pub const FIGURES: [Figure; 16] = [
         Figure { file: "fig03_hoop_equilibrium.svg", title: "Memoir fig. 3: hoop, reality and stability of the steady states (n° 13–14)", caption: "Plane x = cos θ, y = s² (rates in √(g/R)): the curve (ℰ) where the two roots n of (E) merge, the curve (S1) where those of S are real, and the stability limit (S) through its vertical tangent; points A, B, D, F of n° 14.", draw: memoir::fig_3 },
         Figure { file: "fig04_hoop_skid.svg", title: "Memoir fig. 4: hoop, skid tendency (n° 15–16)", caption: "Polar diagram (angle θ from the vertical, radius s in √(g/R)): the curves n = const of (E′), the curves D = ±1/2 of (D″), (ℰ) and (S).", draw: memoir::fig_4 },
         Figure { file: "fig04bis_hoop_walking.svg", title: "Memoir fig. 4 bis: hoop, walking and pivoting (n° 17)", caption: "Polar diagram: (ℰ), (S), the separation (N) between walking and pivoting, and the curves n2 = −0.1, −0.3, −0.5.", draw: memoir::fig_4_bis },
@@ -50,6 +50,7 @@ pub const FIGURES: [Figure; 15] = [
         Figure { file: "carvallo_eigenvalues.svg", title: "Carvallo's bicycle without hands (n° 117–122): eigenvalues against speed", caption: "Time eigenvalues sλ (λ the roots of the quartic of n° 119, T = st) of Carvallo's bicycle, exactly linearised through the general model at the constants of n° 117, against v = Rs (R = 0.38 m), the stable range shaded; marked on the axis: the memoir's limits s² = 67.3 and 83.6 (v = 0.38√s²) and the derived ones.", draw: modern::fig_carvallo_eigenvalues },
         Figure { file: "benchmark_bode_magnitude.svg", title: "Benchmark bicycle: steer torque to lean, magnitude", caption: "Magnitude of the transfer function from the steer torque Tδ to the lean φ of the linearised bicycle (benchmark parameters unless --model is given) at 2, 4, 5 and 8 m/s, against the angular frequency: numerator (the adjugate of M s² + v C1 s + g K0 + v² K2) and characteristic polynomial both derived symbolically (`carvallo bode`). At 4 m/s, below the weave speed (4.29 m/s), the weave pair 0.41 ± 3.08i lies just right of the imaginary axis: the sharp peak near 3 rad/s; at 5 m/s (stable, −0.78 ± 4.46i) the peak is low and broad.", draw: modern::fig_bode_magnitude },
         Figure { file: "benchmark_bode_phase.svg", title: "Benchmark bicycle: steer torque to lean, phase", caption: "Phase of the same transfer function, unwrapped along the frequency from its value in (−180°, 180°] at 0.1 rad/s: through the unstable weave at 4 m/s it rises by about 180° (a right-half-plane pole), through the stable weave at 5 and 8 m/s it falls.", draw: modern::fig_bode_phase },
+        Figure { file: "benchmark_balance_assist.svg", title: "Benchmark bicycle: stable speed range against a balance-assist gain", caption: "Closed-loop stable speeds (shaded) of the linearised bicycle (benchmark parameters unless --model is given) with the balance-assist law Tδ = c·dφ/dt, steer torque into the fall in proportion to the roll rate (gain k_steer_roll_rate = −c of u = −Kx), for c from 0 to 50 N m s/rad, by the Hurwitz route on the closed-loop characteristic polynomial derived in v and the gains (`carvallo window --gain`, `carvallo sweep --gain`). The assist lowers the weave speed (4.29 m/s at c = 0) and leaves the capsize speed 6.02 m/s (the roll-rate feedback does not touch a0); the dotted line is the smallest c that makes 2 m/s stable (`carvallo window --assist-down-to 2`: 17.62 N m s/rad for the benchmark).", draw: modern::fig_balance_assist },
         Figure { file: "nonlinear_ground_tracks.svg", title: "Wheel ground tracks from a nonlinear simulation", caption: "Rear and front contact tracks of the nonlinear Carvallo–Whipple bicycle (benchmark parameters unless --model is given), RK4 from upright straight running at 4.6 m/s with an initial lean of 0.05 rad for 6 s; the number of crossings of the two tracks (n° 106), counted from the simulated data, is in the figure's title.", draw: modern::fig_tracks },
         Figure { file: "nonlinear_work_precision.svg", title: "Nonlinear simulation: error against work", caption: "The largest error over the state and over the samples every 0.01 s of the nonlinear Carvallo–Whipple bicycle (benchmark parameters unless --model is given) from upright straight running at 4.6 m/s with a lean of 0.05 rad for 5 s, against the number of right-hand side evaluations: RK4 at steps 0.02 s / 2^k (k = 0 … 6), Dormand–Prince 5(4) and DOP853 at rtol 1e-3 … 1e-12 (atol 1e-3 rtol); the reference is DOP853 at rtol 1e-14 (checked against RK4 at 1e-4 s by `carvallo bench`).", draw: modern::fig_work_precision },
         Figure { file: "benchmark_window_trail.svg", title: "Benchmark bicycle: stable speed range against the trail", caption: "Weave and capsize speeds and the stable range (shaded) as the trail c is varied, the other parameters fixed.", draw: modern::fig_window_trail },
@@ -72,9 +73,10 @@ mod tests {
         files.dedup();
         assert_eq!(files.len(), figs.len(), "two figures share a file name");
         assert!(files.iter().all(|f| f.ends_with(".svg") && !f.contains('/')));
-        assert_eq!((figs.len(), MISSING.len()), (15, 0));
+        assert_eq!((figs.len(), MISSING.len()), (16, 0));
         for drawn in [
             "carvallo_eigenvalues.svg",
+            "benchmark_balance_assist.svg",
             "nonlinear_ground_tracks.svg",
             "fig11_bicycle_sigma1_mu1.svg",
             "fig13_bicycle_contact_locus.svg",

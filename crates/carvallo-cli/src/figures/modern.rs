@@ -6,7 +6,8 @@
 //! ([`carvallo::whipple_nonlinear`]) with their crossings (n° 106) counted from the data, and
 //! the error of that simulation against the work, for RK4 and the error-controlled pairs; the
 //! Bode diagram (magnitude and phase) from the steer torque to the lean at a few speeds
-//! ([`carvallo::whipple::transfer`]).
+//! ([`carvallo::whipple::transfer`]); the closed-loop stable speed range against the gain of
+//! a balance-assist law ([`carvallo::whipple::feedback`]).
 
 use anyhow::{anyhow, Result};
 use carvallo::bicycle_straight::{window, Constants, Equations};
@@ -398,6 +399,53 @@ fn window_sweep(
     c.render()
 }
 
+/// The balance-assist figure's gains [N m s/rad], speed axis [m/s] and target speed [m/s].
+const ASSIST_GAINS: (f64, usize) = (50.0, 100);
+const ASSIST_V_MAX: f64 = 8.0;
+const ASSIST_TARGET: f64 = 2.0;
+
+/// The closed-loop stable speed range of the balance-assist law $T_\delta = c\,\dot\varphi$
+/// (`k_steer_roll_rate = -c`) against $c$: the stable speeds shaded (Hurwitz route on the
+/// generated closed-loop polynomial), the lower edge, and the smallest $c$ that makes
+/// [`ASSIST_TARGET`] stable (bisection on the lower edge).
+pub(super) fn fig_balance_assist(p: &WhippleParams) -> Result<String> {
+    use carvallo::whipple::feedback::Gains;
+    let bike = Whipple::new(p.clone());
+    let (c_max, n) = ASSIST_GAINS;
+    let step = c_max / n as f64;
+    let mut chart = Chart::new(
+        "Balance assist Tδ = c·dφ/dt: closed-loop stable speeds",
+        "balance-assist gain c (N m s/rad)",
+        "forward speed v (m/s)",
+        0.0..c_max,
+        0.0..ASSIST_V_MAX,
+    );
+    let mut lower = Vec::new();
+    for i in 0..=n {
+        let c = step * i as f64;
+        let w = bike.closed_loop_window(&Gains::balance_assist(c), 0.0, ASSIST_V_MAX)?;
+        for &(a, b) in &w.stable {
+            let (lo, hi) = ((c - step / 2.0).max(0.0), (c + step / 2.0).min(c_max));
+            chart.shade.push([(lo, a), (hi, b)]);
+        }
+        if let Some(v) = w.lowest_stable_speed() {
+            lower.push((c, v));
+        }
+    }
+    chart.shade_label = "closed-loop stable speeds".to_string();
+    chart.add_pieces("lowest stable speed", &lower, 1.5 * step, color(0), Stroke::Solid);
+    if let Some(c) = bike.balance_assist_gain(ASSIST_TARGET, 1000.0).filter(|c| *c <= c_max) {
+        chart.add(Curve::new(
+            format!("c = {c:.2} N m s/rad: stable down to {ASSIST_TARGET} m/s"),
+            vec![(c, 0.0), (c, ASSIST_V_MAX)],
+            BLACK,
+            Stroke::Dotted,
+        ));
+    }
+    chart.legend = SeriesLabelPosition::UpperRight;
+    chart.render()
+}
+
 /// The speeds of the Bode figures [m/s]: below, inside and above the benchmark's stable range.
 const BODE_SPEEDS: [f64; 4] = [2.0, 4.0, 5.0, 8.0];
 
@@ -500,6 +548,13 @@ mod tests {
         let d = decimate(&front, 50);
         assert!(d.len() <= 51, "{}", d.len());
         assert_eq!((d[0], d[d.len() - 1]), (front[0], front[front.len() - 1]));
+    }
+
+    #[test]
+    fn the_balance_assist_figure_marks_the_gain_for_the_target_speed() {
+        let svg = fig_balance_assist(&WhippleParams::benchmark()).expect("drawn");
+        assert!(svg.contains("c = 17.62 N m s/rad: stable down to 2 m/s"), "legend");
+        assert!(svg.contains("closed-loop stable speeds"));
     }
 
     #[test]

@@ -16,8 +16,9 @@
 //! re-exported here, at the path they had when they were one file. Beside them:
 //! [`nonlinear`] (the full nonlinear equations, memoir Part II), [`uncertainty`] (bands from
 //! parameter uncertainties), [`parameter_text`] (BicycleParameters' text format), [`plant`]
-//! (the state space with roll and steer torques as inputs) and [`transfer`] (its transfer
-//! functions and frequency responses).
+//! (the state space with roll and steer torques as inputs), [`transfer`] (its transfer
+//! functions and frequency responses) and [`feedback`] (state feedback: closed-loop
+//! eigenvalues and stable speed ranges).
 
 mod design;
 mod matrices;
@@ -25,6 +26,7 @@ mod model;
 mod params;
 
 pub mod certified;
+pub mod feedback;
 /// Friction at the steering pivot (memoir n° 123): viscous steer damping and dry friction.
 pub mod friction;
 pub mod modes;
