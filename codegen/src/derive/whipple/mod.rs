@@ -46,19 +46,6 @@ pub const PARAMS: [&str; 26] = [
     "w", "c", "lambda", "g", "rR", "mR", "IRxx", "IRyy", "xB", "zB", "mB", "IBxx", "IByy", "IBzz",
     "IBxz", "xH", "zH", "mH", "IHxx", "IHyy", "IHzz", "IHxz", "rF", "mF", "IFxx", "IFyy",
 ];
-/// Input names, in order: the forward speed, then the feedback gains ([`GAINS`]), which only
-/// the closed-loop coefficients `cl_a{k}_{j}` read.
-pub const INPUTS: [&str; 9] = [
-    "v",
-    "k_roll_roll",
-    "k_roll_steer",
-    "k_roll_roll_rate",
-    "k_roll_steer_rate",
-    "k_steer_roll",
-    "k_steer_steer",
-    "k_steer_roll_rate",
-    "k_steer_steer_rate",
-];
 
 /// Brings an expression in the stand-ins $\sin\lambda$, $\cos\lambda$ to the reduced normal form
 /// (one fraction, numerator reduced with $\sin^2\lambda + \cos^2\lambda = 1$).
@@ -585,7 +572,9 @@ pub fn derive() -> Result<Derivation> {
         model: "whipple".to_string(),
         source: file!().to_string(),
         params: PARAMS.iter().map(|s| s.to_string()).collect(),
-        inputs: INPUTS.iter().map(|s| s.to_string()).collect(),
+        // The inputs: the forward speed, then the feedback gains, which only the closed-loop
+        // coefficients `cl_a{k}_{j}` read.
+        inputs: std::iter::once("v").chain(GAINS).map(str::to_string).collect(),
         formulas,
         checks,
     })

@@ -73,17 +73,11 @@ crate::scene! {
 }
 
 /// The names of the eight gains, `k_{input}_{state}`, in the order of $K$ by rows (inputs
-/// roll, steer torque) then columns (states roll, steer, roll rate, steer rate).
-pub const GAIN_NAMES: [&str; 8] = [
-    "k_roll_roll",
-    "k_roll_steer",
-    "k_roll_roll_rate",
-    "k_roll_steer_rate",
-    "k_steer_roll",
-    "k_steer_steer",
-    "k_steer_roll_rate",
-    "k_steer_steer_rate",
-];
+/// roll, steer torque) then columns (states roll, steer, roll rate, steer rate): the inputs of
+/// the closed-loop scene, as the derivation names them (`GAINS` of
+/// `codegen/src/derive/whipple/mod.rs`), so that the two cannot drift apart.
+pub const GAIN_NAMES: &[&str] = closed_loop_scene::INPUTS;
+const _: () = assert!(GAIN_NAMES.len() == 8, "K is 2 x 4");
 
 /// The gain matrix $K$ of $u = -Kx$: `k[input][state]`, inputs (roll torque, steer torque),
 /// states (roll, steer, roll rate, steer rate); units N m/rad and N m s/rad.
