@@ -29,7 +29,7 @@ use anyhow::{anyhow, bail, Context, Result};
 use carvallo_ir::Program;
 
 pub use crate::derive::{DeriveFn, DERIVATIONS};
-use crate::emit::{emit_program, generated_header, normalize_text, render_checks, render_markdown};
+use crate::emit::{choose, generated_header, normalize_text, render_checks, render_markdown};
 use crate::Derivation;
 
 /// The directory, relative to the workspace root, that holds the generated files.
@@ -301,7 +301,9 @@ pub fn render_all(ds: &[Derivation]) -> Result<(BTreeMap<String, String>, Vec<Mo
 
 /// Renders one derivation into its three files.
 fn render_model(d: &Derivation) -> Result<Rendered> {
-    let program = emit_program(d).with_context(|| format!("cannot emit model {}", d.model))?;
+    let (mut program, lowering) =
+        choose(d).with_context(|| format!("cannot emit model {}", d.model))?;
+    program.header.extend(lowering);
     let ir = program.to_text();
     check_round_trip(&program, &ir).with_context(|| format!("model {}", d.model))?;
     let md = render_markdown(d).with_context(|| format!("cannot render model {}", d.model))?;

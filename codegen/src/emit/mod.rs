@@ -50,6 +50,7 @@ mod expr;
 mod latex;
 mod lower;
 mod markdown;
+mod optimize;
 mod text;
 
 use std::collections::BTreeMap;
@@ -63,6 +64,7 @@ use crate::{Derivation, Formula};
 pub use checks_tsv::render_checks;
 pub use expr::{rational_to_f64, Expr, Func};
 pub use latex::latex;
+pub use optimize::{choose, emit_program_optimized, Effort, EFFORTS};
 pub use markdown::{normalize_text, render_markdown, MAX_RENDERED_CHARS};
 pub use text::text;
 
