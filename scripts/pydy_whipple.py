@@ -133,6 +133,7 @@ class Model:
     holonomic: sm.Expr  # front contact height, a function of q4, q5, q7
     nonholonomic: sm.Matrix  # the three velocity constraints, linear in u
     rear_centre_acc: sm.Matrix  # acceleration of the rear wheel centre in N (3 x 1)
+    qdot: sm.Matrix  # q' in terms of u (the kinematical differential equations)
     lam: float
     values: dict  # Moore's parameter values by name
     seconds: float  # the derivation's wall time
@@ -210,7 +211,8 @@ def derive(params: dict[str, float] | None = None) -> Model:
     return Model(
         q=list(kane.q), u=list(kane.u), constants=[sym[k] for k in MOORE_PUBLISHED],
         mass_matrix=mass, forcing=forcing, holonomic=holonomic,
-        nonholonomic=sm.Matrix(nonholonomic), rear_centre_acc=acc, lam=b["lambda"],
+        nonholonomic=sm.Matrix(nonholonomic), rear_centre_acc=acc,
+        qdot=sm.Matrix([kdd[qi.diff(t)] for qi in kane.q]), lam=b["lambda"],
         values=values, seconds=time.perf_counter() - start)
 
 
@@ -291,6 +293,27 @@ class Numeric:
         lean, steer = math.pi / 2 - bq[4], -bq[6]
         return self.state(-bq[3], lean, steer, -bqd[4], -bqd[6], -bqd[7],
                           pitch_guess=math.pi - bq[5] + self.model.lam)
+
+    def precise_speed_derivatives(self, x: np.ndarray, digits: int = 60) -> list[float]:
+        """u' at the state `x` (its doubles taken exactly) from M and F evaluated and solved
+        with `digits` significant digits (mpmath), rounded to doubles: the reference for the
+        rounding error of the generated code."""
+        import mpmath
+
+        if not hasattr(self, "_mp"):
+            m = self.model
+            qs = [sm.Symbol(f.func.__name__) for f in m.q]
+            us = [sm.Symbol(f.func.__name__) for f in m.u]
+            args = (qs, us, m.constants)
+            self._mp = (sm.lambdify(args, to_symbols(m, m.mass_matrix), "mpmath", cse=True),
+                        sm.lambdify(args, to_symbols(m, m.forcing), "mpmath", cse=True))
+        with mpmath.workdps(digits):
+            xm = [mpmath.mpf(float(v)) for v in x]
+            c = [mpmath.mpf(float(v)) for v in self.const_array]
+            mm = mpmath.matrix(self._mp[0](xm[:4], xm[4:], c))
+            ff = mpmath.matrix(self._mp[1](xm[:4], xm[4:], c))
+            ud = mpmath.lu_solve(mm, ff)
+            return [float(ud[i]) for i in range(len(xm) - 4)]
 
     def basu_mandal_accelerations(self, x: np.ndarray, ud: np.ndarray) -> list[float]:
         """The nine accelerations of Basu-Mandal's Table 1 from the state `x` and the six speed
