@@ -8,8 +8,9 @@ with ours (issue 22, item 4). Run by scripts/pydy-c-peer, which installs the pin
    (`pydy_whipple.count_ops`).
 2. Wraps the generated `evaluate` in a timing `main` like our C peer's
    (crates/carvallo-cli/src/bench/peer.rs: the kernel `noinline`, compiler barriers around
-   every call, the smallest of five means over slices of at least `--min-time / 5` s) and
-   compiles it with `cc -O2` and with `cc -O3 -march=native`.
+   every call, the smallest of five means over slices of at least `--min-time / 5` s, by
+   default 0.002 s as `carvallo bench --quick` times ours) and compiles it with `cc -O2` and
+   with `cc -O3 -march=native`.
 3. Checks both builds: `M u' = F` solved at Basu-Mandal et al.'s (2007) Table 1 state, mapped to
    their nine accelerations, against the table and against `carvallo accel --basu-mandal`.
 4. Times, interleaved over `--rounds` rounds: PyDy -O2, PyDy -O3 -march=native, then
@@ -129,9 +130,10 @@ def carvallo_bench(carvallo: str) -> dict[str, tuple[float, int]]:
 
 def main() -> int:
     ap = argparse.ArgumentParser(description=__doc__.split("\n\n")[0])
-    ap.add_argument("--rounds", type=int, default=5, help="interleaved rounds (default 5)")
-    ap.add_argument("--min-time", type=float, default=0.5,
-                    help="seconds of each PyDy timing (default 0.5)")
+    ap.add_argument("--rounds", type=int, default=10, help="interleaved rounds (default 10)")
+    ap.add_argument("--min-time", type=float, default=0.002,
+                    help="seconds of each PyDy timing (default 0.002, the min_time of "
+                         "`carvallo bench --quick`, so that both sides are timed alike)")
     ap.add_argument("--carvallo", default=os.environ.get("CARVALLO_BIN", "target/release/carvallo"))
     ap.add_argument("--cc", default=os.environ.get("CC", "cc"))
     ap.add_argument("--keep", type=Path, help="write the generated C into this directory")
