@@ -55,3 +55,17 @@ def test_interpolation_is_log_log_and_never_extrapolates():
     assert peer.interp_loglog(xs, ys, 1e-10) is None
     assert peer.interp_loglog(xs, ys, 1e-2) is None
     assert peer.interp_loglog([1e-3, float("nan")], [1.0, 2.0], 1e-3) is None
+
+
+def test_pareto_front_keeps_only_undominated_runs():
+    pts = [(1e-3, 5.0), (1e-4, 4.0), (1e-5, 6.0), (1e-6, 5.5), (float("nan"), 1.0)]
+    # 1e-3 at 5.0 is beaten by 1e-4 at 4.0; 1e-6 at 5.5 beats 1e-5 at 6.0.
+    assert peer.pareto(pts) == [(1e-6, 5.5), (1e-4, 4.0)]
+
+
+def test_speedup_summary_says_met_only_when_every_error_is():
+    lines = peer.speedup_summary([(25.0, "dop853", 1e-6), (19.0, "dop853", 1e-8),
+                                  (30.0, "dopri5", 1e-6)], [("dop853", 1e-12)])
+    assert len(lines) == 2
+    assert "19x to 25x over 2 errors, >= 20x at 1 -> NOT met; 1 more accurate" in lines[0]
+    assert "30x to 30x over 1 errors, >= 20x at 1 -> met; 0 more accurate" in lines[1]
