@@ -25,6 +25,7 @@ from __future__ import annotations
 
 import argparse
 import json
+import math
 import os
 import re
 import shutil
@@ -138,10 +139,12 @@ def main() -> int:
     ap.add_argument("--cc", default=os.environ.get("CC", "cc"))
     ap.add_argument("--keep", type=Path, help="write the generated C into this directory")
     a = ap.parse_args()
-    if a.rounds < 1 or not a.min_time > 0:
-        raise SystemExit(f"error: invalid --rounds {a.rounds} or --min-time {a.min_time}")
+    if a.rounds < 1:
+        ap.error(f"invalid --rounds {a.rounds}: at least 1")
+    if not a.min_time > 0 or not math.isfinite(a.min_time):
+        ap.error(f"invalid --min-time {a.min_time}: a positive number of seconds")
     if shutil.which(a.cc) is None:
-        raise SystemExit(f"error: no C compiler `{a.cc}`")
+        ap.error(f"no C compiler `{a.cc}` (--cc or $CC)")
 
     import pydy
     from pydy.codegen.c_code import CMatrixGenerator

@@ -132,9 +132,9 @@ def main() -> int:
     ap.add_argument("--carvallo", default=os.environ.get("CARVALLO_BIN", "target/release/carvallo"))
     a = ap.parse_args()
     if a.repeats < 1:
-        raise SystemExit(f"error: invalid --repeats {a.repeats}: at least 1")
+        ap.error(f"invalid --repeats {a.repeats}: at least 1")
     if a.bench_runs < 1:
-        raise SystemExit(f"error: invalid --bench-runs {a.bench_runs}: at least 1")
+        ap.error(f"invalid --bench-runs {a.bench_runs}: at least 1")
 
     import pydy
     import scipy
