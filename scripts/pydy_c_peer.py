@@ -27,7 +27,6 @@ import argparse
 import json
 import math
 import os
-import re
 import shutil
 import subprocess
 import sys
@@ -149,8 +148,9 @@ def main() -> int:
     import pydy
     from pydy.codegen.c_code import CMatrixGenerator
 
+    cc_version = subprocess.run([a.cc, "--version"], capture_output=True, text=True).stdout
     print(f"== PyDy {pydy.__version__}, SymPy {sm.__version__}, NumPy {np.__version__}, "
-          f"{subprocess.run([a.cc, '--version'], capture_output=True, text=True).stdout.splitlines()[0]}")
+          f"{cc_version.splitlines()[0]}")
     model = pw.derive()
     print(f"Kane's equations derived in {model.seconds:.1f} s "
           f"(benchmark -> Moore parameters agree with PyDy's example to "

@@ -266,7 +266,8 @@ class Numeric:
             x -= step
             if abs(step) <= 1e-15 * (1.0 + abs(x)):
                 return x
-        raise RuntimeError(f"no pitch puts the front wheel on the ground at lean {lean}, steer {steer}")
+        raise RuntimeError(
+            f"no pitch puts the front wheel on the ground at lean {lean}, steer {steer}")
 
     def dependent_speeds(self, q, u_ind) -> np.ndarray:
         """u3, u5, u8 from the velocity constraints at coordinates q (q3, q4, q7, q5)."""
