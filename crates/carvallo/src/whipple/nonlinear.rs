@@ -37,6 +37,13 @@ use crate::numerics::integrate::{self, Grid, IntegrateError, Integration, Point}
 
 use crate::whipple::{BicycleDesign, WhippleError, WhippleParams};
 
+pub mod inputs;
+
+pub use self::inputs::{
+    Feedback, ForcedDiagnostics, ForcedSample, ForcedTrajectory, Impulse, InputError, Inputs,
+    Series, Signal,
+};
+
 crate::scene! {
     /// The front contact constraint and its pitch derivative.
     pub mod contact_scene {
@@ -96,6 +103,8 @@ pub enum NonlinearError {
         /// Why, in a few lower-case words.
         reason: &'static str,
     },
+    /// An input ([`inputs`]) that cannot be used, or a speed outside its gain table.
+    Input(InputError),
 }
 
 impl fmt::Display for NonlinearError {
@@ -112,6 +121,7 @@ impl fmt::Display for NonlinearError {
             NonlinearError::Integration { t, reason } => {
                 write!(f, "the integration failed at t = {t} s: {reason}")
             }
+            NonlinearError::Input(e) => write!(f, "{e}"),
         }
     }
 }
