@@ -443,7 +443,8 @@ impl Inputs {
             if !(j.t >= 0.0 && j.t < duration) {
                 return Err(InputError::ImpulseOutside { t: j.t, duration });
             }
-            let k = grid_index(grid, j.t).ok_or(InputError::ImpulseOffGrid { t: j.t, step: grid.h })?;
+            let k =
+                grid_index(grid, j.t).ok_or(InputError::ImpulseOffGrid { t: j.t, step: grid.h })?;
             points.push((k, [j.roll, j.steer]));
         }
         points.sort_by_key(|p| p.0);
@@ -691,8 +692,10 @@ impl Run<'_> {
     fn sample(&self, t: f64, y: &Y) -> Result<ForcedSample, NonlinearError> {
         let s = state_of(y);
         let sample = self.bike.sample(t, &s, self.guess.get())?;
-        let torque = self.torque(t, &s, sample.speed)?;
-        Ok(ForcedSample { sample, torque, work: y[10] })
+        // The sums of no terms are -0.0, the neutral element the right-hand side adds to
+        // f3; the samples show +0.0.
+        let [a, b] = self.torque(t, &s, sample.speed)?;
+        Ok(ForcedSample { sample, torque: [a + 0.0, b + 0.0], work: y[10] })
     }
 
     /// The impulse `j` = $(J_\varphi, J_\delta)$ applied to `y`: the speeds jump by
@@ -856,7 +859,8 @@ mod tests {
             let (sp, cp, st, ct) = (o.sphi, o.cphi, o.sth, o.cth);
             let s_body = [o.slam, 0.0, o.clam];
             // R_x(phi) R_y(th) s_body.
-            let r_y = [ct * s_body[0] + st * s_body[2], s_body[1], -st * s_body[0] + ct * s_body[2]];
+            let r_y =
+                [ct * s_body[0] + st * s_body[2], s_body[1], -st * s_body[0] + ct * s_body[2]];
             let yawed = [r_y[0], cp * r_y[1] - sp * r_y[2], sp * r_y[1] + cp * r_y[2]];
             for (k, want) in [o.sH_x, o.sH_y, o.sH_z].into_iter().enumerate() {
                 assert!((yawed[k] - want).abs() < 1e-14, "s: {yawed:?} vs sH {k} = {want}");
@@ -999,7 +1003,11 @@ mod tests {
                 rel.push(relative_difference(&nl, &lin, 0));
             }
             let ratio = rel[0] / rel[1];
-            assert!(rel[0] < 1e-3, "{name}: relative difference {:e} at the larger amplitude", rel[0]);
+            assert!(
+                rel[0] < 1e-3,
+                "{name}: relative difference {:e} at the larger amplitude",
+                rel[0]
+            );
             assert!((50.0..200.0).contains(&ratio), "{name}: {rel:?}, ratio {ratio}");
         }
     }
@@ -1022,13 +1030,17 @@ mod tests {
         let start = bike.initial_state(5.0, 0.0).expect("start");
         let grid = Grid::new(2.0, 1e-3, 10).expect("grid");
         let mut ends = Vec::new();
-        for (how, bound) in [
-            (Integration::RK4, 1e-8),
-            (Integration::adaptive(Method::Dop853, 1e-10, 1e-13), 1e-8),
-        ] {
+        for (how, bound) in
+            [(Integration::RK4, 1e-8), (Integration::adaptive(Method::Dop853, 1e-10, 1e-13), 1e-8)]
+        {
             let tr = bike.simulate_forced(start, &grid, &how, &[], &inputs).expect("run");
             let d = tr.diagnostics;
-            assert!(d.max_energy_change > 0.1, "{:?}: energy change {:e}", how.method, d.max_energy_change);
+            assert!(
+                d.max_energy_change > 0.1,
+                "{:?}: energy change {:e}",
+                how.method,
+                d.max_energy_change
+            );
             assert!(d.energy_drift < bound, "{:?}: balance {:e}", how.method, d.energy_drift);
             assert!(d.max_contact_residual < 1e-12, "{:e}", d.max_contact_residual);
             // The samples carry the work and the torques; the last work is the run's.
@@ -1080,7 +1092,8 @@ mod tests {
                     Series::new(vec![0.5, 0.5 + w], vec![jk / w, jk / w]).expect("pulse"),
                 )
             };
-            let inputs = Inputs { roll: vec![pulse(j[0])], steer: vec![pulse(j[1])], ..Inputs::default() };
+            let inputs =
+                Inputs { roll: vec![pulse(j[0])], steer: vec![pulse(j[1])], ..Inputs::default() };
             let tr = bike.simulate_forced(start, &grid, &how, &[], &inputs).expect("pulse");
             let (a, b) = (last(&tr), last(&exact));
             errors.push((0..4).map(|k| (a[k] - b[k]).abs()).fold(0.0, f64::max));
@@ -1171,15 +1184,28 @@ mod tests {
             "invalid torque series: value NaN in row 2 is not finite"
         );
         let s = Series::new(vec![1.0, 2.0], vec![4.0, 2.0]).expect("ok");
-        assert_eq!([s.at(0.5), s.at(1.0), s.at(1.5), s.at(2.0), s.at(2.5)], [0.0, 4.0, 3.0, 0.0, 0.0]);
+        assert_eq!(
+            [s.at(0.5), s.at(1.0), s.at(1.5), s.at(2.0), s.at(2.5)],
+            [0.0, 4.0, 3.0, 0.0, 0.0]
+        );
         for (j, want) in [
-            (Impulse { t: 0.0105, roll: 1.0, steer: 0.0 }, "invalid impulse time 0.0105 s: not a multiple of the step 0.001 s"),
-            (Impulse { t: 1.0, roll: 1.0, steer: 0.0 }, "invalid impulse time 1 s: outside the run [0, 1) s"),
+            (
+                Impulse { t: 0.0105, roll: 1.0, steer: 0.0 },
+                "invalid impulse time 0.0105 s: not a multiple of the step 0.001 s",
+            ),
+            (
+                Impulse { t: 1.0, roll: 1.0, steer: 0.0 },
+                "invalid impulse time 1 s: outside the run [0, 1) s",
+            ),
             (Impulse { t: -0.1, roll: 1.0, steer: 0.0 }, "invalid impulse time -0.1 s: outside"),
-            (Impulse { t: 0.5, roll: f64::INFINITY, steer: 0.0 }, "invalid impulse inf: must be finite"),
+            (
+                Impulse { t: 0.5, roll: f64::INFINITY, steer: 0.0 },
+                "invalid impulse inf: must be finite",
+            ),
         ] {
             let inputs = Inputs { impulses: vec![j], ..Inputs::default() };
-            let e = bike.simulate_forced(start, &grid, &Integration::RK4, &[], &inputs).unwrap_err();
+            let e =
+                bike.simulate_forced(start, &grid, &Integration::RK4, &[], &inputs).unwrap_err();
             assert!(e.to_string().starts_with(want), "{e}");
         }
         let inputs = Inputs {
