@@ -20,6 +20,10 @@
 //! solves $h(\varphi, \theta, \delta) = 0$ by Newton (from the last pitch found), so the
 //! constraint holds to rounding whatever the method and tolerance.
 //!
+//! [`simulate_forced`](WhippleNonlinear::simulate_forced) drives it: roll and steer torques as
+//! functions of time, impulses and state feedback, with the input's work in the energy balance
+//! ([`inputs`]).
+//!
 //! [`basu_mandal_accelerations`](WhippleNonlinear::basu_mandal_accelerations) evaluates the
 //! nine accelerations in the coordinates of Basu-Mandal, Chatterjee and Papadopoulos (Proc. R.
 //! Soc. A 463, 2007), whose Table 1 is the external check of these equations
