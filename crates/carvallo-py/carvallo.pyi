@@ -73,19 +73,21 @@ def frequency_response(
 ) -> dict[str, npt.NDArray[np.complex128] | npt.NDArray[np.float64]]:
     """G(iω) from input "roll"|"steer" torque to output "roll"|"steer"|"roll-rate"|"steer-rate": {"response" complex, "magnitude_db", "phase_deg" (unwrapped)}, each (n speeds, m omegas)."""
 
+GainTable = dict[str, Sequence[float]]
+
 def closed_loop_window(
     params: Params,
-    K: npt.ArrayLike | dict[str, float],
-    vmin: float = 0.0,
+    K: npt.ArrayLike | dict[str, float] | GainTable,
+    vmin: float | None = None,
     vmax: float | None = None,
     strict: bool = False,
 ) -> dict[str, object]:
-    """Closed-loop stable speed range of u = -K x, K (2, 4) (rows roll, steer torque; columns roll, steer, roll rate, steer rate) or gains by name: {"from", "to", "stable": [(from, to), ...], "lowest_stable_speed"} (None: unbounded)."""
+    """Closed-loop stable speed range of u = -K x, K (2, 4) (rows roll, steer torque; columns roll, steer, roll rate, steer rate) or gains by name, or a gain table {"speed": [...], "k_...": [...], ...} (interpolated in speed; vmin/vmax default to its speeds): {"from", "to", "stable": [(from, to), ...], "lowest_stable_speed"} (None: unbounded)."""
 
 def closed_loop_eigenvalues(
-    params: Params, K: npt.ArrayLike | dict[str, float], speeds: Speeds, strict: bool = False
+    params: Params, K: npt.ArrayLike | dict[str, float] | GainTable, speeds: Speeds, strict: bool = False
 ) -> npt.NDArray[np.complex128]:
-    """Eigenvalues of A - B K at each speed, shape (n, 4), sorted by real then imaginary part."""
+    """Eigenvalues of A - B K at each speed, shape (n, 4), sorted by real then imaginary part (a gain table must cover the speeds)."""
 
 def eigenvalues(params: Params, speeds: Speeds, strict: bool = False) -> npt.NDArray[np.complex128]:
     """Eigenvalues at each speed, shape (n, 4), sorted by real then imaginary part."""
@@ -119,12 +121,23 @@ def simulate(
     rtol: Optional[float] = None,
     atol: Optional[float] = None,
     stop_when: Sequence[str] = (),
+    torque_t: Optional[npt.ArrayLike] = None,
+    torque_roll: Optional[npt.ArrayLike] = None,
+    torque_steer: Optional[npt.ArrayLike] = None,
+    impulses: Sequence[tuple[float, float, float]] = (),
+    k: Optional[npt.ArrayLike | dict[str, float] | GainTable] = None,
 ) -> dict[str, object]:
     """Nonlinear simulation from upright straight running (rk4, or dopri5 / dop853 with rtol,
     default 1e-8, and atol, default 1e-3 rtol; stop_when conditions such as "lean=±0.5"), as
     `carvallo simulate --json`: arrays t, lean, steer, pitch, speed_rear, rear_x, rear_y,
     front_x, front_y, energy; floats step, energy_drift, max_contact_residual; method, rtol,
-    atol, rhs_evaluations, steps, rejected_steps, events (list of {"when", "t"})."""
+    atol, rhs_evaluations, steps, rejected_steps, events (list of {"when", "t"}).
+
+    Driven: torques sampled at torque_t (torque_roll and/or torque_steer, N m; interpolated,
+    zero outside), impulses (t, J_roll, J_steer) in N m s at multiples of step, feedback
+    T = -K x with k as in closed_loop_window (a gain table read at the rear contact's speed).
+    Adds arrays T_phi, T_delta, work_t and floats work, max_energy_change; energy_drift is then
+    that of E - E(0) - W."""
 
 def simulate_many(
     params: Params,

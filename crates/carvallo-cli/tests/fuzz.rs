@@ -111,6 +111,12 @@ fn every_command_keeps_the_exit_code_contract() {
     std::fs::write(&empty, "").unwrap();
     let binary = dir.join("binary.toml");
     std::fs::write(&binary, [0u8, 159, 146, 150, 255, 0, 1, 2, b'=', 7]).unwrap();
+    let torques = dir.join("torques.csv");
+    std::fs::write(&torques, "t,T_phi,T_delta\n0,0,1\n0.05,1e308,-1\n0.1,0,0\n").unwrap();
+    let decreasing = dir.join("decreasing.csv");
+    std::fs::write(&decreasing, "t,T_delta\n0,1\n0.05,2\n0.01,0\n").unwrap();
+    let gains = dir.join("gains.csv");
+    std::fs::write(&gains, "speed,k_steer_roll_rate\n0,-20\n4,-1e308\n").unwrap();
     let data = concat!(env!("CARGO_MANIFEST_DIR"), "/../../data/bicycleparameters");
     let file = |name: &str| match name {
         "EMPTY" => empty.display().to_string(),
@@ -118,6 +124,9 @@ fn every_command_keeps_the_exit_code_contract() {
         "TMS" => format!("{data}/bicycles/Tms/Parameters/TmsBenchmark.txt"),
         "BROWSER" => format!("{data}/bicycles/Browser/Parameters/BrowserBenchmark.txt"),
         "JASON" => format!("{data}/riders/Jason/Parameters/JasonBrowserBenchmark.txt"),
+        "TORQUES" => torques.display().to_string(),
+        "DECREASING" => decreasing.display().to_string(),
+        "GAINS" => gains.display().to_string(),
         m => m.to_string(),
     };
     let model = |rng: &mut Rng| file(rng.pick(MODELS));
@@ -263,6 +272,35 @@ fn every_command_keeps_the_exit_code_contract() {
                         "x=1e308",
                     ];
                     push(&mut args, "--stop-when", rng.pick(&stops).into());
+                }
+                // The inputs of a driven run: torques (valid, off the grid, unknown, not
+                // finite), sampled torques and feedback gains from files good and bad.
+                if rng.next().is_multiple_of(3) {
+                    let torques = [
+                        "steer=step:0.5@0.05",
+                        "roll=impulse:1@0.05",
+                        "roll=impulse:1@0.0505",
+                        "steer=impulse:1@5",
+                        "steer=step:NaN",
+                        "yaw=step:1",
+                        "steer=ramp:1",
+                        "roll=impulse:1e308@0",
+                        "steer=step:1@-1",
+                        "",
+                    ];
+                    push(&mut args, "--torque", rng.pick(&torques).into());
+                }
+                if rng.next().is_multiple_of(4) {
+                    let csv = ["TORQUES", "DECREASING", "EMPTY", "BINARY", "/nonexistent.csv"];
+                    push(&mut args, "--torque-csv", file(rng.pick(&csv)));
+                }
+                if rng.next().is_multiple_of(4) {
+                    let gain = format!("{}={}", rng.pick(GAINS), rng.pick(NUMBERS));
+                    push(&mut args, "--gain", gain);
+                }
+                if rng.next().is_multiple_of(5) {
+                    let tables = ["GAINS", "EMPTY", "BINARY", "/nonexistent.csv"];
+                    push(&mut args, "--gain-table", file(rng.pick(&tables)));
                 }
             }
             5 => {

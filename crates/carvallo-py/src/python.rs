@@ -15,7 +15,7 @@ use carvallo::sweep::Method;
 use carvallo::whipple::{
     StabilityWindow, TriangleWarning, Whipple, WhippleParams, FIELD_PATHS, PARAM_NAMES,
 };
-use carvallo::whipple_nonlinear::{Stop, WhippleNonlinear};
+use carvallo::whipple_nonlinear::{Feedback, Stop, WhippleNonlinear};
 use carvallo::whipple_uncertainty as unc;
 use numpy::{
     Complex64, PyArray1, PyArray2, PyArrayMethods, PyReadonlyArray1, PyReadonlyArray2,
@@ -436,24 +436,38 @@ fn gains_of(k: &Bound<'_, PyAny>) -> PyResult<carvallo::whipple::feedback::Gains
 
 /// The closed-loop stable speed range of the state feedback u = -K x (as `carvallo window
 /// --gain ... --json`): `{"from", "to", "stable": [(from, to), ...], "lowest_stable_speed"}`
-/// between `vmin` and `vmax` (default: every speed; `None` for an unbounded end).
+/// between `vmin` and `vmax` (default: every speed; `None` for an unbounded end). `K` may be a
+/// gain table (as `window --gain-table`): a dict with `speed` (increasing) and gains by name,
+/// each a sequence of the same length, linearly interpolated; `vmin` and `vmax` default to its
+/// speeds, and a range it does not cover is an error.
 #[pyfunction]
-#[pyo3(signature = (params, k, vmin = 0.0, vmax = None, strict = false))]
+#[pyo3(signature = (params, k, vmin = None, vmax = None, strict = false))]
 fn closed_loop_window<'py>(
     py: Python<'py>,
     params: &Bound<'py, PyAny>,
     k: &Bound<'py, PyAny>,
-    vmin: f64,
+    vmin: Option<f64>,
     vmax: Option<f64>,
     strict: bool,
 ) -> PyResult<Bound<'py, PyDict>> {
     let bike = Whipple::new(params_of(params, strict)?);
-    let gains = gains_of(k)?;
-    let to = vmax.unwrap_or(f64::INFINITY);
     if vmax.is_some_and(|x| !x.is_finite()) {
-        return Err(err(format!("invalid vmax {to}: must be finite (None for every speed)")));
+        return Err(err(format!(
+            "invalid vmax {}: must be finite (None for every speed)",
+            vmax.unwrap_or_default()
+        )));
     }
-    let w = bike.closed_loop_window(&gains, vmin, to).map_err(|e| err(e.to_string()))?;
+    let w = match feedback_of(k)? {
+        Feedback::Table(table) => {
+            let (lo, hi) = table.span();
+            bike.closed_loop_window_table(&table, vmin.unwrap_or(lo), vmax.unwrap_or(hi))
+        }
+        Feedback::Constant(gains) => {
+            bike.closed_loop_window(&gains, vmin.unwrap_or(0.0), vmax.unwrap_or(f64::INFINITY))
+        }
+        Feedback::None => unreachable!("feedback_of gives gains or a table"),
+    }
+    .map_err(|e| err(e.to_string()))?;
     let end = |x: f64| x.is_finite().then_some(x);
     let d = PyDict::new(py);
     d.set_item("from", w.from)?;
@@ -465,7 +479,8 @@ fn closed_loop_window<'py>(
 }
 
 /// The eigenvalues of the closed loop A - B K at each speed, shape (n, 4) complex, sorted by
-/// real then imaginary part.
+/// real then imaginary part; `K` as in [`closed_loop_window`] (a gain table is read at each
+/// speed, which it must cover).
 #[pyfunction]
 #[pyo3(signature = (params, k, speeds, strict = false))]
 fn closed_loop_eigenvalues<'py>(
@@ -476,10 +491,18 @@ fn closed_loop_eigenvalues<'py>(
     strict: bool,
 ) -> PyResult<Bound<'py, PyAny>> {
     let bike = Whipple::new(params_of(params, strict)?);
-    let gains = gains_of(k)?;
+    let feedback = feedback_of(k)?;
     let speeds = speeds_of(speeds)?;
     let mut flat = Vec::with_capacity(4 * speeds.len());
     for &v in &speeds {
+        let gains = match &feedback {
+            Feedback::Table(table) => table.at(v).ok_or_else(|| {
+                let (lo, hi) = table.span();
+                err(format!("the gain table covers the speeds {lo} to {hi} m/s, not {v} m/s"))
+            })?,
+            Feedback::Constant(g) => *g,
+            Feedback::None => unreachable!("feedback_of gives gains or a table"),
+        };
         let ev = bike.closed_loop_eigenvalues(v, &gains);
         if ev.len() != 4 {
             return Err(err(format!("the eigenvalues did not converge at speed {v}")));
@@ -487,6 +510,41 @@ fn closed_loop_eigenvalues<'py>(
         flat.extend(ev.iter().map(|e| Complex64::new(e.re, e.im)));
     }
     Ok(PyArray1::from_vec(py, flat).reshape([speeds.len(), 4])?.into_any())
+}
+
+/// The feedback of `K`: constant gains ([`gains_of`]) or, for a dict with the key `speed`, a
+/// gain table (the speeds and, by name, each gain at those speeds; gains not named are zero).
+fn feedback_of(k: &Bound<'_, PyAny>) -> PyResult<Feedback> {
+    use carvallo::whipple::feedback::{GainTable, Gains};
+    let Ok(dict) = k.cast::<PyDict>() else { return Ok(Feedback::Constant(gains_of(k)?)) };
+    let Some(speed) = dict.get_item("speed")? else {
+        return Ok(Feedback::Constant(gains_of(k)?));
+    };
+    let column = |name: &str, v: &Bound<'_, PyAny>| -> PyResult<Vec<f64>> {
+        v.extract().map_err(|_| err(format!("gain table: {name} must be a sequence of numbers")))
+    };
+    let speeds = column("speed", &speed)?;
+    let mut rows: Vec<(f64, Gains)> = speeds.iter().map(|&v| (v, Gains::ZERO)).collect();
+    for (key, v) in dict.iter() {
+        let name: String =
+            key.extract().map_err(|_| err("gain table: the keys must be strings"))?;
+        if name == "speed" {
+            continue;
+        }
+        Gains::index(&name).map_err(|e| err(format!("gain table: {e}")))?;
+        let values = column(&name, &v)?;
+        if values.len() != speeds.len() {
+            return Err(err(format!(
+                "gain table: {name} has {} values for {} speeds",
+                values.len(),
+                speeds.len()
+            )));
+        }
+        for (row, x) in rows.iter_mut().zip(values) {
+            let _ = row.1.set(&name, x);
+        }
+    }
+    GainTable::new(rows).map(Feedback::Table).map_err(|e| err(e.to_string()))
 }
 
 /// The modes at each speed, labelled by continuation in speed (as `carvallo eig --json`):
@@ -734,8 +792,15 @@ fn integration_of(
 /// `front_x`, `front_y`, `energy`), the floats `step`, `energy_drift`,
 /// `max_contact_residual`, the `method`, `rtol` and `atol` (None for rk4), the counts
 /// `rhs_evaluations`, `steps`, `rejected_steps` and `events` (a list of dicts `when`, `t`).
+///
+/// Driven (as `simulate --torque ... --gain ...`): `torque_t` with `torque_roll` and/or
+/// `torque_steer` (N m at those times, increasing; interpolated, zero outside), `impulses`
+/// (a list of `(t, J_roll, J_steer)` in N m s, t a multiple of `step`) and the feedback
+/// T = -K x with `k` as in `closed_loop_window` (a (2, 4) array, gains by name or a gain
+/// table read at the rear contact's speed). The dict then adds `T_phi`, `T_delta`, `work_t`,
+/// `work` and `max_energy_change`, and `energy_drift` is that of E - E(0) - W.
 #[pyfunction]
-#[pyo3(signature = (params, speed, lean0, duration, step = 0.001, every = 10, strict = false, *, method = "rk4", rtol = None, atol = None, stop_when = Vec::new()))]
+#[pyo3(signature = (params, speed, lean0, duration, step = 0.001, every = 10, strict = false, *, method = "rk4", rtol = None, atol = None, stop_when = Vec::new(), torque_t = None, torque_roll = None, torque_steer = None, impulses = Vec::new(), k = None))]
 #[allow(clippy::too_many_arguments)]
 fn simulate<'py>(
     py: Python<'py>,
@@ -750,6 +815,11 @@ fn simulate<'py>(
     rtol: Option<f64>,
     atol: Option<f64>,
     stop_when: Vec<String>,
+    torque_t: Option<Vec<f64>>,
+    torque_roll: Option<Vec<f64>>,
+    torque_steer: Option<Vec<f64>>,
+    impulses: Vec<(f64, f64, f64)>,
+    k: Option<Bound<'py, PyAny>>,
 ) -> PyResult<Bound<'py, PyDict>> {
     let (how, stops) = integration_of(method, rtol, atol, &stop_when)?;
     let bike = WhippleNonlinear::new(params_of(params, strict)?);
@@ -757,6 +827,10 @@ fn simulate<'py>(
     let grid = Grid::new(duration, step, every).map_err(|(name, value, reason)| {
         err(carvallo::ParameterError::InvalidParameter { name, value, reason }.to_string())
     })?;
+    let inputs = inputs_of(torque_t, torque_roll, torque_steer, impulses, k.as_ref())?;
+    if !inputs.is_empty() {
+        return simulate_driven(py, &bike, start, &grid, &how, &stops, &inputs);
+    }
     let tr = py
         .detach(|| bike.simulate_with(start, &grid, &how, &stops))
         .map_err(|e| err(e.to_string()))?;
@@ -780,6 +854,102 @@ fn simulate<'py>(
     d.set_item("step", tr.step)?;
     d.set_item("energy_drift", tr.energy_drift)?;
     d.set_item("max_contact_residual", tr.max_contact_residual)?;
+    let adaptive = how.method.is_adaptive();
+    d.set_item("method", how.method.name())?;
+    d.set_item("rtol", adaptive.then_some(how.rtol))?;
+    d.set_item("atol", adaptive.then_some(how.atol))?;
+    d.set_item("rhs_evaluations", tr.stats.rhs_evaluations)?;
+    d.set_item("steps", tr.stats.steps)?;
+    d.set_item("rejected_steps", tr.stats.rejected_steps)?;
+    let events = PyList::empty(py);
+    for &(k, t) in &tr.event {
+        let e = PyDict::new(py);
+        e.set_item("when", stops[k].text())?;
+        e.set_item("t", t)?;
+        events.append(e)?;
+    }
+    d.set_item("events", events)?;
+    Ok(d)
+}
+
+/// The inputs of `simulate`: the sampled torques (`torque_t` with `torque_roll` and/or
+/// `torque_steer`), the impulses `(t, J_roll, J_steer)` and the feedback `k`.
+fn inputs_of(
+    t: Option<Vec<f64>>,
+    roll: Option<Vec<f64>>,
+    steer: Option<Vec<f64>>,
+    impulses: Vec<(f64, f64, f64)>,
+    k: Option<&Bound<'_, PyAny>>,
+) -> PyResult<carvallo::whipple_nonlinear::Inputs> {
+    use carvallo::whipple_nonlinear::{Impulse, Inputs, Series, Signal};
+    let mut inputs = Inputs::default();
+    match (t, roll.is_some() || steer.is_some()) {
+        (Some(t), true) => {
+            let series = |values: Vec<f64>, name: &str| -> PyResult<Signal> {
+                Series::new(t.clone(), values)
+                    .map(Signal::Series)
+                    .map_err(|e| err(format!("{name}: {e}")))
+            };
+            if let Some(v) = roll {
+                inputs.roll.push(series(v, "torque_roll")?);
+            }
+            if let Some(v) = steer {
+                inputs.steer.push(series(v, "torque_steer")?);
+            }
+        }
+        (Some(_), false) => return Err(err("torque_t needs torque_roll or torque_steer")),
+        (None, true) => return Err(err("torque_roll and torque_steer need their times torque_t")),
+        (None, false) => {}
+    }
+    inputs.impulses =
+        impulses.into_iter().map(|(t, roll, steer)| Impulse { t, roll, steer }).collect();
+    if let Some(k) = k {
+        inputs.feedback = feedback_of(k)?;
+    }
+    Ok(inputs)
+}
+
+/// `simulate` driven by `inputs`: the columns of the undriven run and `T_phi`, `T_delta`,
+/// `work_t`, the floats `work` and `max_energy_change`; `energy_drift` is that of the balance
+/// E - E(0) - W.
+fn simulate_driven<'py>(
+    py: Python<'py>,
+    bike: &WhippleNonlinear,
+    start: carvallo::whipple_nonlinear::State,
+    grid: &Grid,
+    how: &Integration,
+    stops: &[Stop],
+    inputs: &carvallo::whipple_nonlinear::Inputs,
+) -> PyResult<Bound<'py, PyDict>> {
+    let tr = py
+        .detach(|| bike.simulate_forced(start, grid, how, stops, inputs))
+        .map_err(|e| err(e.to_string()))?;
+    let d = PyDict::new(py);
+    type Column = fn(&carvallo::whipple_nonlinear::ForcedSample) -> f64;
+    let columns: [(&str, Column); 13] = [
+        ("t", |s| s.sample.t),
+        ("lean", |s| s.sample.state.lean),
+        ("steer", |s| s.sample.state.steer),
+        ("pitch", |s| s.sample.pitch),
+        ("speed_rear", |s| s.sample.speed),
+        ("rear_x", |s| s.sample.rear_contact[0]),
+        ("rear_y", |s| s.sample.rear_contact[1]),
+        ("front_x", |s| s.sample.front_contact[0]),
+        ("front_y", |s| s.sample.front_contact[1]),
+        ("energy", |s| s.sample.energy),
+        ("T_phi", |s| s.torque[0]),
+        ("T_delta", |s| s.torque[1]),
+        ("work_t", |s| s.work),
+    ];
+    for (name, f) in columns {
+        d.set_item(name, PyArray1::from_vec(py, tr.samples.iter().map(f).collect()))?;
+    }
+    let diag = tr.diagnostics;
+    d.set_item("step", tr.step)?;
+    d.set_item("work", diag.work)?;
+    d.set_item("max_energy_change", diag.max_energy_change)?;
+    d.set_item("energy_drift", diag.energy_drift)?;
+    d.set_item("max_contact_residual", diag.max_contact_residual)?;
     let adaptive = how.method.is_adaptive();
     d.set_item("method", how.method.name())?;
     d.set_item("rtol", adaptive.then_some(how.rtol))?;

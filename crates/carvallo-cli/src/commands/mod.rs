@@ -10,6 +10,7 @@ pub mod kinematics;
 pub mod report;
 pub mod rest;
 pub mod simulate;
+pub mod simulate_inputs;
 pub mod statespace;
 pub mod turn;
 pub mod window;

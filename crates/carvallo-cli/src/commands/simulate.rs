@@ -22,6 +22,9 @@
 //! error of a failed run), each equal bit for bit to the single run; a progress bar is drawn on
 //! standard error when it is a terminal.
 //!
+//! `--torque`, `--torque-csv`, `--gain` and `--gain-table` drive the bicycle (roll and steer
+//! torques, state feedback): see [`super::simulate_inputs`].
+//!
 //! The parameter file is the anchors TOML format or BicycleParameters' text, with `--rider` and
 //! `--strict` as on `window` ([`crate::args::bicycle`]). Unknown,
 //! repeated or missing arguments, non-finite numbers and a failed simulation (the bicycle fell
@@ -268,6 +271,8 @@ pub struct Args {
     pub every: usize,
     #[command(flatten)]
     pub integration: IntegrationArgs,
+    #[command(flatten)]
+    pub inputs: super::simulate_inputs::InputArgs,
     /// Many simulations in parallel: a CSV file with the columns speed, lean0 and optionally
     /// steer_rate0 (one simulation a row, instead of --speed and --lean0)
     #[arg(long, value_name = "FILE.csv", conflicts_with_all = ["speed", "lean0", "json"])]
@@ -306,6 +311,19 @@ pub fn run(cmd: &Args) -> Result<String, String> {
     };
     let (speed, lean0) = (&speed, &lean0);
     let start = bike.initial_state(*speed, *lean0).map_err(|e| e.to_string())?;
+    if cmd.inputs.any() {
+        let header = (model.as_str(), *speed, *lean0, *every);
+        return super::simulate_inputs::run(
+            &cmd.inputs,
+            &bike,
+            start,
+            &grid,
+            &how,
+            stops,
+            header,
+            *json,
+        );
+    }
     let tr = bike.simulate_with(start, &grid, &how, stops).map_err(|e| e.to_string())?;
     let events: Vec<(String, f64)> = tr.event.iter().map(|&(k, t)| (stops[k].text(), t)).collect();
     if *json {
@@ -415,6 +433,7 @@ mod tests {
                 step: 0.001,
                 every: 10,
                 integration: IntegrationArgs::default(),
+                inputs: Default::default(),
                 batch: None,
                 csv: false,
                 json: true

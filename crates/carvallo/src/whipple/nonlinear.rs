@@ -20,6 +20,10 @@
 //! solves $h(\varphi, \theta, \delta) = 0$ by Newton (from the last pitch found), so the
 //! constraint holds to rounding whatever the method and tolerance.
 //!
+//! [`simulate_forced`](WhippleNonlinear::simulate_forced) drives it: roll and steer torques as
+//! functions of time, impulses and state feedback, with the input's work in the energy balance
+//! ([`inputs`]).
+//!
 //! [`basu_mandal_accelerations`](WhippleNonlinear::basu_mandal_accelerations) evaluates the
 //! nine accelerations in the coordinates of Basu-Mandal, Chatterjee and Papadopoulos (Proc. R.
 //! Soc. A 463, 2007), whose Table 1 is the external check of these equations
@@ -36,6 +40,13 @@ use crate::error::ParameterError;
 use crate::numerics::integrate::{self, Grid, IntegrateError, Integration, Point};
 
 use crate::whipple::{BicycleDesign, WhippleError, WhippleParams};
+
+pub mod inputs;
+
+pub use self::inputs::{
+    Feedback, ForcedDiagnostics, ForcedSample, ForcedTrajectory, Impulse, InputError, Inputs,
+    Series, Signal,
+};
 
 crate::scene! {
     /// The front contact constraint and its pitch derivative.
@@ -96,6 +107,8 @@ pub enum NonlinearError {
         /// Why, in a few lower-case words.
         reason: &'static str,
     },
+    /// An input ([`inputs`]) that cannot be used, or a speed outside its gain table.
+    Input(InputError),
 }
 
 impl fmt::Display for NonlinearError {
@@ -112,6 +125,7 @@ impl fmt::Display for NonlinearError {
             NonlinearError::Integration { t, reason } => {
                 write!(f, "the integration failed at t = {t} s: {reason}")
             }
+            NonlinearError::Input(e) => write!(f, "{e}"),
         }
     }
 }
