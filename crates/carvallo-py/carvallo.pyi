@@ -128,10 +128,10 @@ def simulate(
 
 def simulate_many(
     params: Params,
-    speeds: npt.NDArray[np.float64],
-    lean0s: npt.NDArray[np.float64],
+    speeds: npt.ArrayLike,
+    lean0s: npt.ArrayLike,
     duration: float,
-    steer_rates: Optional[npt.NDArray[np.float64]] = None,
+    steer_rates: Optional[npt.ArrayLike] = None,
     step: float = 0.001,
     *,
     method: str = "rk4",
@@ -142,7 +142,9 @@ def simulate_many(
 ) -> dict[str, object]:
     """Many simulations in parallel (GIL released), keeping the ends: arrays t_end, lean, steer,
     yaw, x, y, lean_rate, steer_rate, event_t, stopped_by, fell, ok, rhs_evaluations and the
-    list errors; each equals `simulate`'s end bit for bit."""
+    list errors; each equals `simulate`'s end bit for bit, and a chunk of a batch (any slice,
+    any memory layout) gives the batch's rows for it bit for bit, so chunks can run on Dask
+    workers (docs/examples/basin_dask.py)."""
 
 def report() -> list[dict[str, object]]:
     """The memoir concordance, the entries of `carvallo report --json`."""

@@ -798,6 +798,22 @@ fn simulate<'py>(
     Ok(d)
 }
 
+/// The values of a 1-d sequence of numbers (`what` names it in the error): any numpy array —
+/// a strided slice of a larger one, or one Dask deserialised into a misaligned buffer — or a
+/// list, copied through `numpy.require(x, float64, "CA")` (no copy when already contiguous and
+/// aligned float64), so a chunk of a batch is read whatever its memory layout.
+fn column_of(x: &Bound<'_, PyAny>, what: &str) -> PyResult<Vec<f64>> {
+    let bad = || err(format!("{what} must be a 1-d array of numbers"));
+    let a = x
+        .py()
+        .import("numpy")?
+        .getattr("require")?
+        .call1((x, "float64", "CA"))
+        .map_err(|_| bad())?;
+    let a: PyReadonlyArray1<'_, f64> = a.extract().map_err(|_| bad())?;
+    Ok(a.as_slice().map_err(|_| bad())?.to_vec())
+}
+
 /// Many simulations of the nonlinear bicycle in parallel, the GIL released: one from each
 /// (`speeds[k]`, `lean0s[k]`, `steer_rates[k]`, zero when None) with the options of
 /// `simulate`, keeping only the end (as `carvallo simulate --batch FILE --csv`). A dict of
@@ -805,17 +821,19 @@ fn simulate<'py>(
 /// `steer_rate` (NaN for a failed run), `event_t` (NaN when no stop condition was met),
 /// `stopped_by` (the index of the condition met, -1 for none), `fell` (a condition met or the
 /// contact lost), `ok`, `rhs_evaluations`, and `errors` (a list, None for a run that did not
-/// fail). Each run equals `simulate`'s bit for bit.
+/// fail). Each run equals `simulate`'s bit for bit, and a chunk (any slice of the batch, read
+/// whatever its layout, see [`column_of`]) gives the batch's rows for it bit for bit: the
+/// chunks of a batch can run in other processes (docs/examples/basin_dask.py over Dask).
 #[pyfunction]
 #[pyo3(signature = (params, speeds, lean0s, duration, steer_rates = None, step = 0.001, *, method = "rk4", rtol = None, atol = None, stop_when = Vec::new(), strict = false))]
 #[allow(clippy::too_many_arguments)]
 fn simulate_many<'py>(
     py: Python<'py>,
     params: &Bound<'py, PyAny>,
-    speeds: PyReadonlyArray1<'py, f64>,
-    lean0s: PyReadonlyArray1<'py, f64>,
+    speeds: &Bound<'py, PyAny>,
+    lean0s: &Bound<'py, PyAny>,
     duration: f64,
-    steer_rates: Option<PyReadonlyArray1<'py, f64>>,
+    steer_rates: Option<&Bound<'py, PyAny>>,
     step: f64,
     method: &str,
     rtol: Option<f64>,
@@ -825,22 +843,19 @@ fn simulate_many<'py>(
 ) -> PyResult<Bound<'py, PyDict>> {
     let (how, stops) = integration_of(method, rtol, atol, &stop_when)?;
     let bike = WhippleNonlinear::new(params_of(params, strict)?);
-    let speeds = speeds.as_slice()?;
-    let lean0s = lean0s.as_slice()?;
+    let speeds = column_of(speeds, "speeds")?;
+    let lean0s = column_of(lean0s, "lean0s")?;
     let n = speeds.len();
     if lean0s.len() != n {
         return Err(err(format!("lean0s has {} values for {n} speeds", lean0s.len())));
     }
-    let rates: Vec<f64> = match &steer_rates {
-        Some(r) if r.as_slice()?.len() != n => {
-            return Err(err(format!(
-                "steer_rates has {} values for {n} speeds",
-                r.as_slice()?.len()
-            )));
-        }
-        Some(r) => r.as_slice()?.to_vec(),
+    let rates: Vec<f64> = match steer_rates {
+        Some(r) => column_of(r, "steer_rates")?,
         None => vec![0.0; n],
     };
+    if rates.len() != n {
+        return Err(err(format!("steer_rates has {} values for {n} speeds", rates.len())));
+    }
     let mut starts = Vec::with_capacity(n);
     for k in 0..n {
         let mut s =
