@@ -120,8 +120,9 @@ def simulate(
     atol: Optional[float] = None,
     stop_when: Sequence[str] = (),
 ) -> dict[str, object]:
-    """Nonlinear simulation from upright straight running (rk4, or dopri5 / dop853 with rtol,
-    default 1e-8, and atol, default 1e-3 rtol; stop_when conditions such as "lean=±0.5"), as
+    """Nonlinear simulation from upright straight running (rk4, or dopri5 / dop853 /
+    vern9 with rtol, default 1e-8, and atol, default 1e-3 rtol; stop_when conditions
+    such as "lean=±0.5"), as
     `carvallo simulate --json`: arrays t, lean, steer, pitch, speed_rear, rear_x, rear_y,
     front_x, front_y, energy; floats step, energy_drift, max_contact_residual; method, rtol,
     atol, rhs_evaluations, steps, rejected_steps, events (list of {"when", "t"})."""

@@ -241,7 +241,7 @@ fn every_command_keeps_the_exit_code_contract() {
                     push(&mut args, "--every", rng.pick(COUNTS).into());
                 }
                 if rng.next().is_multiple_of(2) {
-                    let methods = ["rk4", "dopri5", "dop853", "euler", ""];
+                    let methods = ["rk4", "dopri5", "dop853", "vern9", "vern8", "euler", ""];
                     push(&mut args, "--method", rng.pick(&methods).into());
                 }
                 if rng.next().is_multiple_of(3) {

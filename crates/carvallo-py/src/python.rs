@@ -695,7 +695,8 @@ fn sweep<'py>(
     Ok(d)
 }
 
-/// The integration of `method` (`rk4`, `dopri5`, `dop853`) with the tolerances given or the
+/// The integration of `method` (`rk4`, `dopri5`, `dop853`, `vern9`) with the tolerances
+/// given or the
 /// command line's defaults, and the parsed stop conditions.
 fn integration_of(
     method: &str,
@@ -703,10 +704,11 @@ fn integration_of(
     atol: Option<f64>,
     stop_when: &[String],
 ) -> PyResult<(Integration, Vec<Stop>)> {
-    let m = IntegrationMethod::from_name(method)
-        .ok_or_else(|| err(format!("invalid method `{method}`: expected rk4, dopri5 or dop853")))?;
+    let m = IntegrationMethod::from_name(method).ok_or_else(|| {
+        err(format!("invalid method `{method}`: expected rk4, dopri5, dop853 or vern9"))
+    })?;
     if m == IntegrationMethod::Rk4 && (rtol.is_some() || atol.is_some()) {
-        return Err(err("rtol and atol need an adaptive method (dopri5 or dop853)"));
+        return Err(err("rtol and atol need an adaptive method (dopri5, dop853 or vern9)"));
     }
     let how = Integration::with_defaults(m, rtol, atol);
     if let Some((name, value, reason)) = how.unusable() {
@@ -728,8 +730,8 @@ fn integration_of(
 
 /// Integrates the nonlinear bicycle from upright straight running at `speed` with the lean
 /// `lean0`, as `carvallo simulate --json` with the same options: `method` (`rk4` at the step
-/// `step`, or `dopri5`, `dop853` with `rtol`, default 1e-8, and `atol`, default 1e-3 rtol,
-/// sampled every `every` × `step` seconds) and `stop_when` (conditions such as `"lean=±0.5"`).
+/// `step`, or `dopri5`, `dop853`, `vern9` with `rtol`, default 1e-8, and `atol`,
+/// default 1e-3 rtol, sampled every `every` × `step` seconds) and `stop_when` (conditions such as `"lean=±0.5"`).
 /// A dict of numpy arrays (`t`, `lean`, `steer`, `pitch`, `speed_rear`, `rear_x`, `rear_y`,
 /// `front_x`, `front_y`, `energy`), the floats `step`, `energy_drift`,
 /// `max_contact_residual`, the `method`, `rtol` and `atol` (None for rk4), the counts
@@ -800,16 +802,18 @@ fn simulate<'py>(
 
 /// The values of a 1-d sequence of numbers (`what` names it in the error): any numpy array —
 /// a strided slice of a larger one, or one Dask deserialised into a misaligned buffer — or a
-/// list, copied through `numpy.require(x, float64, "CA")` (no copy when already contiguous and
-/// aligned float64), so a chunk of a batch is read whatever its memory layout.
+/// list of real numbers (booleans, integers or floats; complex numbers, texts and objects are
+/// refused, not cast), copied through `numpy.require(x, float64, "CA")` (no copy when already
+/// contiguous and aligned float64), so a chunk of a batch is read whatever its memory layout.
 fn column_of(x: &Bound<'_, PyAny>, what: &str) -> PyResult<Vec<f64>> {
     let bad = || err(format!("{what} must be a 1-d array of numbers"));
-    let a = x
-        .py()
-        .import("numpy")?
-        .getattr("require")?
-        .call1((x, "float64", "CA"))
-        .map_err(|_| bad())?;
+    let np = x.py().import("numpy")?;
+    let a = np.getattr("asarray")?.call1((x,)).map_err(|_| bad())?;
+    let kind: String = a.getattr("dtype")?.getattr("kind")?.extract()?;
+    if !matches!(kind.as_str(), "b" | "i" | "u" | "f") {
+        return Err(bad());
+    }
+    let a = np.getattr("require")?.call1((a, "float64", "CA")).map_err(|_| bad())?;
     let a: PyReadonlyArray1<'_, f64> = a.extract().map_err(|_| bad())?;
     Ok(a.as_slice().map_err(|_| bad())?.to_vec())
 }
