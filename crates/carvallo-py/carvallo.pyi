@@ -171,3 +171,46 @@ def eigenvalue_bands(
     strict: bool = False,
 ) -> dict[str, npt.NDArray[np.float64]]:
     """Quantile bands of the sorted real parts of the eigenvalues: speeds, nominal, lower, upper."""
+
+def simulate_hoop(
+    theta0: float,
+    s0: float,
+    duration: float,
+    step: float = 0.001,
+    every: int = 10,
+    *,
+    p0: float = 0.0,
+    n0: float = 0.0,
+    radius: float = 0.5,
+    mass: float = 1.0,
+    g: float = 9.81,
+    method: str = "rk4",
+    rtol: Optional[float] = None,
+    atol: Optional[float] = None,
+    stop_when: Sequence[str] = (),
+) -> dict[str, object]:
+    """The rolling hoop (n° 7, state theta, p, n, s) by rk4 or dopri5 / dop853 / vern9 with
+    rtol and atol, until duration or a stop_when condition ("theta=±0.5"): arrays t, theta, p,
+    n, s; energy_drift, relative_energy_drift; method, rtol, atol, rhs_evaluations, steps,
+    rejected_steps, events (list of {"when", "t"})."""
+
+def simulate_unicycle(
+    rider: dict[str, float],
+    wheel: dict[str, float],
+    radius: float,
+    theta0: float,
+    s0: float,
+    duration: float,
+    step: float = 0.001,
+    every: int = 10,
+    *,
+    p0: float = 0.0,
+    n0: float = 0.0,
+    g: float = 9.81,
+    method: str = "rk4",
+    rtol: Optional[float] = None,
+    atol: Optional[float] = None,
+    stop_when: Sequence[str] = (),
+) -> dict[str, object]:
+    """The mounted unicycle (n° 21-24): rider {mass, height, a, b, c, l}, wheel {mass, a1, b1,
+    c1}; state, options and result as simulate_hoop."""

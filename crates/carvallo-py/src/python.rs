@@ -41,7 +41,7 @@ create_exception!(
      inertia that break a triangle inequality; the message names the parameter and by how much."
 );
 
-fn err(message: impl Into<String>) -> PyErr {
+pub(crate) fn err(message: impl Into<String>) -> PyErr {
     ParameterError::new_err(message.into())
 }
 
@@ -698,7 +698,7 @@ fn sweep<'py>(
 /// The integration of `method` (`rk4`, `dopri5`, `dop853`, `vern9`) with the tolerances
 /// given or the
 /// command line's defaults, and the parsed stop conditions.
-fn integration_of(
+pub(crate) fn integration_of(
     method: &str,
     rtol: Option<f64>,
     atol: Option<f64>,
@@ -1060,5 +1060,6 @@ fn carvallo_module(m: &Bound<'_, PyModule>) -> PyResult<()> {
     m.add_function(wrap_pyfunction!(first_order, m)?)?;
     m.add_function(wrap_pyfunction!(monte_carlo, m)?)?;
     m.add_function(wrap_pyfunction!(eigenvalue_bands, m)?)?;
+    crate::rolling::register(m)?;
     Ok(())
 }

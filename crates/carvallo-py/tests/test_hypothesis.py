@@ -137,6 +137,19 @@ def test_simulate_many(p, v, lean, rates, duration, method):
     check(lambda: carvallo.simulate_many(p, v, lean, duration, steer_rates=rates, method=method))
 
 
+@SETTINGS
+@given(theta=awkward_floats, s=awkward_floats, duration=st.one_of(awkward_floats, st.floats(0, 0.05)),
+       radius=awkward_floats, method=st.sampled_from(["rk4", "vern9", "x"]),
+       stop=st.lists(st.one_of(st.text(max_size=8), st.sampled_from(["theta=±0.5", "p=0", "s=+-1e300", "n=nan"])), max_size=9),
+       rider=st.one_of(st.none(), st.dictionaries(st.sampled_from(["mass", "height", "a", "b", "c", "l", "x"]), values, max_size=7)))
+def test_simulate_hoop_and_unicycle(theta, s, duration, radius, method, stop, rider):
+    if math.isfinite(duration) and abs(duration) > 0.05:
+        duration = 0.05
+    check(lambda: carvallo.simulate_hoop(theta, s, duration, radius=radius, method=method, stop_when=stop))
+    wheel = dict(mass=1.0, a1=0.375, b1=0.5, c1=0.125)
+    check(lambda: carvallo.simulate_unicycle(rider, wheel, 0.5, theta, s, duration, method=method, stop_when=stop))
+
+
 designs = st.one_of(
     hnp.arrays(hnp.floating_dtypes() | hnp.integer_dtypes() | hnp.boolean_dtypes(), hnp.array_shapes(min_dims=0, max_dims=3, max_side=30)),
     st.integers(1, 5).flatmap(lambda n: hnp.arrays(np.float64, (n, 26), elements=awkward_floats)),
