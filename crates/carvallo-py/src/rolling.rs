@@ -23,20 +23,7 @@ fn thresholds(stop_when: &[String]) -> PyResult<Vec<Threshold>> {
     stop_when
         .iter()
         .map(|text| {
-            let parsed = text.split_once('=').and_then(|(name, value)| {
-                let index = STATE.iter().position(|s| *s == name.trim())?;
-                let value = value.trim();
-                let (magnitude, number) = match value.strip_prefix('±') {
-                    Some(rest) => (true, rest),
-                    None => match value.strip_prefix("+-") {
-                        Some(rest) => (true, rest),
-                        None => (false, value),
-                    },
-                };
-                let value: f64 = number.parse().ok().filter(|v: &f64| v.is_finite())?;
-                Some(Threshold { index, value, magnitude })
-            });
-            parsed.ok_or_else(|| {
+            Threshold::parse(text, &STATE).ok_or_else(|| {
                 err(format!(
                     "invalid stop condition `{text}`: expected NAME=VALUE or NAME=±VALUE with \
                      NAME one of theta, p, n, s and a finite VALUE"

@@ -948,6 +948,43 @@ pub struct Threshold {
     pub magnitude: bool,
 }
 
+impl Threshold {
+    /// Reads `NAME=VALUE` (the component named NAME crosses VALUE) or `NAME=±VALUE` /
+    /// `NAME=+-VALUE` (its magnitude reaches VALUE), the components named by `names` in their
+    /// order; `None` for an unknown name, a VALUE that is not a finite number, or a negative
+    /// magnitude.
+    ///
+    /// # Example
+    /// ```
+    /// use carvallo::numerics::integrate::Threshold;
+    /// let t = Threshold::parse("theta=±0.5", &["theta", "p", "n", "s"]);
+    /// assert_eq!(t, Some(Threshold { index: 0, value: 0.5, magnitude: true }));
+    /// assert_eq!(Threshold::parse("lean=0.5", &["theta", "p", "n", "s"]), None);
+    /// ```
+    pub fn parse(text: &str, names: &[&str]) -> Option<Threshold> {
+        let (name, value) = text.split_once('=')?;
+        let index = names.iter().position(|n| *n == name.trim())?;
+        let value = value.trim();
+        let (magnitude, number) = match value.strip_prefix('±').or_else(|| value.strip_prefix("+-"))
+        {
+            Some(rest) => (true, rest),
+            None => (false, value),
+        };
+        let value: f64 = number.parse().ok().filter(|v: &f64| v.is_finite())?;
+        if magnitude && value < 0.0 {
+            return None;
+        }
+        Some(Threshold { index, value, magnitude })
+    }
+
+    /// The condition as [`parse`](Self::parse) reads it (`theta=±0.5`), the component named
+    /// by `names` (its index when `names` is too short).
+    pub fn text(&self, names: &[&str]) -> String {
+        let name = names.get(self.index).map_or_else(|| self.index.to_string(), |n| n.to_string());
+        format!("{name}={}{}", if self.magnitude { "±" } else { "" }, self.value)
+    }
+}
+
 /// Integrates the autonomous system $x' = f(x)$ that conserves `energy` from `x0` over
 /// `grid` by `how`, keeping the grid's samples (the state at an event last) and the largest
 /// energy drift over the accepted steps, until the end or the first of `stops` met.
