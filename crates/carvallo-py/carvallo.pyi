@@ -127,8 +127,9 @@ def simulate(
     impulses: Sequence[tuple[float, float, float]] = (),
     k: Optional[npt.ArrayLike | dict[str, float] | GainTable] = None,
 ) -> dict[str, object]:
-    """Nonlinear simulation from upright straight running (rk4, or dopri5 / dop853 with rtol,
-    default 1e-8, and atol, default 1e-3 rtol; stop_when conditions such as "lean=±0.5"), as
+    """Nonlinear simulation from upright straight running (rk4, or dopri5 / dop853 /
+    vern9 with rtol, default 1e-8, and atol, default 1e-3 rtol; stop_when conditions
+    such as "lean=±0.5"), as
     `carvallo simulate --json`: arrays t, lean, steer, pitch, speed_rear, rear_x, rear_y,
     front_x, front_y, energy; floats step, energy_drift, max_contact_residual; method, rtol,
     atol, rhs_evaluations, steps, rejected_steps, events (list of {"when", "t"}).
@@ -141,10 +142,10 @@ def simulate(
 
 def simulate_many(
     params: Params,
-    speeds: npt.NDArray[np.float64],
-    lean0s: npt.NDArray[np.float64],
+    speeds: npt.ArrayLike,
+    lean0s: npt.ArrayLike,
     duration: float,
-    steer_rates: Optional[npt.NDArray[np.float64]] = None,
+    steer_rates: Optional[npt.ArrayLike] = None,
     step: float = 0.001,
     *,
     method: str = "rk4",
@@ -155,7 +156,9 @@ def simulate_many(
 ) -> dict[str, object]:
     """Many simulations in parallel (GIL released), keeping the ends: arrays t_end, lean, steer,
     yaw, x, y, lean_rate, steer_rate, event_t, stopped_by, fell, ok, rhs_evaluations and the
-    list errors; each equals `simulate`'s end bit for bit."""
+    list errors; each equals `simulate`'s end bit for bit, and a chunk of a batch (any slice,
+    any memory layout) gives the batch's rows for it bit for bit, so chunks can run on Dask
+    workers (docs/examples/basin_dask.py)."""
 
 def report() -> list[dict[str, object]]:
     """The memoir concordance, the entries of `carvallo report --json`."""
@@ -181,3 +184,46 @@ def eigenvalue_bands(
     strict: bool = False,
 ) -> dict[str, npt.NDArray[np.float64]]:
     """Quantile bands of the sorted real parts of the eigenvalues: speeds, nominal, lower, upper."""
+
+def simulate_hoop(
+    theta0: float,
+    s0: float,
+    duration: float,
+    step: float = 0.001,
+    every: int = 10,
+    *,
+    p0: float = 0.0,
+    n0: float = 0.0,
+    radius: float = 0.5,
+    mass: float = 1.0,
+    g: float = 9.81,
+    method: str = "rk4",
+    rtol: Optional[float] = None,
+    atol: Optional[float] = None,
+    stop_when: Sequence[str] = (),
+) -> dict[str, object]:
+    """The rolling hoop (n° 7, state theta, p, n, s) by rk4 or dopri5 / dop853 / vern9 with
+    rtol and atol, until duration or a stop_when condition ("theta=±0.5"): arrays t, theta, p,
+    n, s; energy_drift, relative_energy_drift; method, rtol, atol, rhs_evaluations, steps,
+    rejected_steps, events (list of {"when", "t"})."""
+
+def simulate_unicycle(
+    rider: dict[str, float],
+    wheel: dict[str, float],
+    radius: float,
+    theta0: float,
+    s0: float,
+    duration: float,
+    step: float = 0.001,
+    every: int = 10,
+    *,
+    p0: float = 0.0,
+    n0: float = 0.0,
+    g: float = 9.81,
+    method: str = "rk4",
+    rtol: Optional[float] = None,
+    atol: Optional[float] = None,
+    stop_when: Sequence[str] = (),
+) -> dict[str, object]:
+    """The mounted unicycle (n° 21-24): rider {mass, height, a, b, c, l}, wheel {mass, a1, b1,
+    c1}; state, options and result as simulate_hoop."""

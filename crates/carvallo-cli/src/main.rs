@@ -24,7 +24,9 @@ mod perf;
 mod report_dir;
 mod report_html;
 
-use commands::{accel, bode, eig, kinematics, report, rest, simulate, statespace, turn, window};
+use commands::{
+    accel, bode, eig, kinematics, report, rest, rolling, simulate, statespace, turn, window,
+};
 
 /// carvallo: E. Carvallo's memoir (1897) on the hoop, unicycle and bicycle, re-derived and
 /// checked
@@ -67,6 +69,10 @@ enum Command {
     Rest(rest::Args),
     /// Contact, relations (I) and steady rates (2) of the memoir's bicycle (n° 59-69)
     Kinematics(kinematics::Args),
+    /// Simulate the rolling hoop (memoir n° 7): time series, energy drift, events
+    Hoop(rolling::HoopArgs),
+    /// Simulate the mounted unicycle (memoir n° 21-24): time series, energy drift, events
+    Unicycle(rolling::UnicycleArgs),
     /// Print a shell completion script: `carvallo completions bash > carvallo.bash`
     Completions {
         /// The shell
@@ -91,6 +97,8 @@ impl Command {
             Command::Turn(_) => "turn",
             Command::Rest(_) => "rest",
             Command::Kinematics(_) => "kinematics",
+            Command::Hoop(_) => "hoop",
+            Command::Unicycle(_) => "unicycle",
             Command::Completions { .. } => "completions",
         }
     }
@@ -111,6 +119,8 @@ impl Command {
             Command::Turn(a) => text(turn::run(a)),
             Command::Rest(a) => text(rest::run(a)),
             Command::Kinematics(a) => text(kinematics::run(a)),
+            Command::Hoop(a) => text(rolling::hoop(a)),
+            Command::Unicycle(a) => text(rolling::unicycle(a)),
             Command::Completions { shell } => {
                 let mut script = Vec::new();
                 clap_complete::generate(*shell, &mut Cli::command(), "carvallo", &mut script);

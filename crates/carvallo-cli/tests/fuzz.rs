@@ -250,7 +250,7 @@ fn every_command_keeps_the_exit_code_contract() {
                     push(&mut args, "--every", rng.pick(COUNTS).into());
                 }
                 if rng.next().is_multiple_of(2) {
-                    let methods = ["rk4", "dopri5", "dop853", "euler", ""];
+                    let methods = ["rk4", "dopri5", "dop853", "vern9", "vern8", "euler", ""];
                     push(&mut args, "--method", rng.pick(&methods).into());
                 }
                 if rng.next().is_multiple_of(3) {
@@ -316,6 +316,40 @@ fn every_command_keeps_the_exit_code_contract() {
                         format!("{{\"q\": [{}], \"qd\": [{}]}}", [x; 9].join(","), [x; 9].join(","))
                     }
                 };
+            }
+            6 if k % 30 != 6 => {
+                // Two rounds in three the hoop or the unicycle instead of `turn`.
+                args.push(if k % 30 == 16 { "hoop" } else { "unicycle" }.into());
+                if k % 30 == 26 {
+                    for flag in [
+                        "--radius",
+                        "--rider-mass",
+                        "--rider-height",
+                        "--rider-a",
+                        "--rider-b",
+                        "--rider-c",
+                        "--wheel-mass",
+                    ] {
+                        let v = if rng.next().is_multiple_of(3) { rng.pick(NUMBERS) } else { "1" };
+                        push(&mut args, flag, v.into());
+                    }
+                } else if rng.next().is_multiple_of(2) {
+                    push(&mut args, "--radius", rng.pick(NUMBERS).into());
+                }
+                push(&mut args, "--theta0", rng.pick(NUMBERS).into());
+                push(&mut args, "--s0", rng.pick(NUMBERS).into());
+                push(&mut args, "--duration", rng.pick(&["0.1", "0", "-1", "NaN", "x"]).into());
+                if rng.next().is_multiple_of(2) {
+                    let methods = ["rk4", "dopri5", "dop853", "vern9", "vern8", ""];
+                    push(&mut args, "--method", rng.pick(&methods).into());
+                }
+                if rng.next().is_multiple_of(3) {
+                    push(&mut args, "--rtol", rng.pick(NUMBERS).into());
+                }
+                if rng.next().is_multiple_of(3) {
+                    let stops = ["theta=±0.5", "p=0", "s=+-1", "theta=±-1", "lean=1", "n=nan"];
+                    push(&mut args, "--stop-when", rng.pick(&stops).into());
+                }
             }
             6 => {
                 args.push("turn".into());

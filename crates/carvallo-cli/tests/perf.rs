@@ -82,8 +82,9 @@ fn quick_bench_reports_times_beside_correct_errors() {
 /// The simulation section alone: every problem's reference agrees with RK4 at a small step (an
 /// independent code) to 1e-12, every row's error and counts are consistent (RK4: four
 /// evaluations a step, no rejection; the bicycle's contact residual at rounding), the adaptive
-/// rows' errors fall as the tolerance tightens, and DOP853 at rtol 1e-9 beats RK4 at its
-/// largest step in both error and evaluations on the bicycle.
+/// rows' errors fall as the tolerance tightens, DOP853 at rtol 1e-9 beats RK4 at its largest
+/// step in both error and evaluations on the bicycle, and Verner's 9(8) needs fewer
+/// evaluations than RK4 at its error.
 #[test]
 fn the_simulation_section_reports_work_against_precision() {
     let (code, json, err) = carvallo(&["bench", "--quick", "--only", "simulation", "--json"]);
@@ -126,6 +127,20 @@ fn the_simulation_section_reports_work_against_precision() {
     assert!(dop["rhs_evaluations"].as_u64() < rk4["rhs_evaluations"].as_u64(), "{dop} {rk4}");
     let fall = find("bicycle 2", "dop853", 1e-9);
     assert!(fall["event_time_error"].as_f64().unwrap() < 1e-9, "{fall}");
+    // Verner's 9(8) pair at rtol 1e-9: within ten times the tolerance on every problem, and
+    // on the bicycle fewer evaluations than RK4 needs for its error (RK4's error falling like
+    // h^4 from its largest step).
+    let verner: Vec<&Value> = rows.iter().filter(|r| r["method"] == "vern9").collect();
+    assert_eq!(verner.len(), refs.len(), "one row per problem");
+    for r in &verner {
+        assert_eq!(r["rtol"].as_f64(), Some(1e-9), "{r}");
+        assert!(r["error_final"].as_f64().unwrap() <= 1e-8, "{r}");
+    }
+    let vern = find("bicycle 4.6", "vern9", 1e-9);
+    let error = |r: &Value| r["error_final"].as_f64().unwrap();
+    let evals = |r: &Value| r["rhs_evaluations"].as_f64().unwrap();
+    let needed = evals(rk4) * (error(rk4) / error(vern)).powf(0.25);
+    assert!(evals(vern) < needed, "{vern}: rk4 needs {needed:.0} evaluations");
 }
 
 #[test]

@@ -62,6 +62,30 @@ fn an_adaptive_run_reports_its_counts_and_its_event() {
     assert_eq!(v["events"].as_array().map(Vec::len), Some(0));
 }
 
+/// Verner's 9(8) pair and DOP853 at tight tolerances agree on the fall's time and end (both
+/// within 1e-11 of each other; the runtime's tests check both against bisection), and the
+/// pair costs 16 evaluations a step plus 10 for the dense output of an accepted one.
+#[test]
+fn vern9_agrees_with_dop853() {
+    let stop = ["--stop-when", "lean=±0.5"];
+    let a = single("2", "0.05", &[&["--method", "vern9", "--rtol", "1e-12"][..], &stop].concat());
+    let b = single("2", "0.05", &[&["--method", "dop853", "--rtol", "1e-12"][..], &stop].concat());
+    assert_eq!(a["method"], "vern9");
+    let t = |v: &Value| v["events"][0]["t"].as_f64().unwrap();
+    assert!((t(&a) - t(&b)).abs() < 1e-11, "{} against {}", t(&a), t(&b));
+    let json = |v: &Value| v.to_string();
+    for key in ["lean", "steer", "rear_x", "rear_y"] {
+        let (x, y) = (last_number(&json(&a), key), last_number(&json(&b), key));
+        assert!((x - y).abs() < 1e-10, "{key}: {x} against {y}");
+    }
+    let (steps, rejected) = (a["steps"].as_u64().unwrap(), a["rejected_steps"].as_u64().unwrap());
+    let evals = a["rhs_evaluations"].as_u64().unwrap();
+    // Per attempt 15 stages after the first (not first-same-as-last: one more evaluation at the
+    // end of an accepted step), 10 for its interpolant; plus three at the start (the slope
+    // and the trial of the initial step, then the crate's own initial slope).
+    assert_eq!(evals, 3 + 15 * (steps + rejected) + 11 * steps, "{evals} {steps} {rejected}");
+}
+
 #[test]
 fn batch_rows_equal_single_runs_bit_for_bit() {
     let dir = std::env::temp_dir().join(format!("carvallo-batch-{}", std::process::id()));

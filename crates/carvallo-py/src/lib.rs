@@ -14,6 +14,8 @@ use carvallo::whipple::{TriangleWarning, WhippleParams, PARAM_NAMES};
 
 #[cfg(feature = "python")]
 mod python;
+#[cfg(feature = "python")]
+mod rolling;
 
 /// The parameter name as written by the user: the benchmark's (`lambda`) or BicycleParameters'
 /// (`lam`) name of the steer axis tilt, the others as in [`PARAM_NAMES`].

@@ -41,7 +41,7 @@ create_exception!(
      inertia that break a triangle inequality; the message names the parameter and by how much."
 );
 
-fn err(message: impl Into<String>) -> PyErr {
+pub(crate) fn err(message: impl Into<String>) -> PyErr {
     ParameterError::new_err(message.into())
 }
 
@@ -753,18 +753,20 @@ fn sweep<'py>(
     Ok(d)
 }
 
-/// The integration of `method` (`rk4`, `dopri5`, `dop853`) with the tolerances given or the
+/// The integration of `method` (`rk4`, `dopri5`, `dop853`, `vern9`) with the tolerances
+/// given or the
 /// command line's defaults, and the parsed stop conditions.
-fn integration_of(
+pub(crate) fn integration_of(
     method: &str,
     rtol: Option<f64>,
     atol: Option<f64>,
     stop_when: &[String],
 ) -> PyResult<(Integration, Vec<Stop>)> {
-    let m = IntegrationMethod::from_name(method)
-        .ok_or_else(|| err(format!("invalid method `{method}`: expected rk4, dopri5 or dop853")))?;
+    let m = IntegrationMethod::from_name(method).ok_or_else(|| {
+        err(format!("invalid method `{method}`: expected rk4, dopri5, dop853 or vern9"))
+    })?;
     if m == IntegrationMethod::Rk4 && (rtol.is_some() || atol.is_some()) {
-        return Err(err("rtol and atol need an adaptive method (dopri5 or dop853)"));
+        return Err(err("rtol and atol need an adaptive method (dopri5, dop853 or vern9)"));
     }
     let how = Integration::with_defaults(m, rtol, atol);
     if let Some((name, value, reason)) = how.unusable() {
@@ -786,8 +788,8 @@ fn integration_of(
 
 /// Integrates the nonlinear bicycle from upright straight running at `speed` with the lean
 /// `lean0`, as `carvallo simulate --json` with the same options: `method` (`rk4` at the step
-/// `step`, or `dopri5`, `dop853` with `rtol`, default 1e-8, and `atol`, default 1e-3 rtol,
-/// sampled every `every` × `step` seconds) and `stop_when` (conditions such as `"lean=±0.5"`).
+/// `step`, or `dopri5`, `dop853`, `vern9` with `rtol`, default 1e-8, and `atol`,
+/// default 1e-3 rtol, sampled every `every` × `step` seconds) and `stop_when` (conditions such as `"lean=±0.5"`).
 /// A dict of numpy arrays (`t`, `lean`, `steer`, `pitch`, `speed_rear`, `rear_x`, `rear_y`,
 /// `front_x`, `front_y`, `energy`), the floats `step`, `energy_drift`,
 /// `max_contact_residual`, the `method`, `rtol` and `atol` (None for rk4), the counts
@@ -862,7 +864,7 @@ fn simulate<'py>(
     d.set_item("steps", tr.stats.steps)?;
     d.set_item("rejected_steps", tr.stats.rejected_steps)?;
     let events = PyList::empty(py);
-    for &(k, t) in &tr.event {
+    if let Some((k, t)) = tr.event {
         let e = PyDict::new(py);
         e.set_item("when", stops[k].text())?;
         e.set_item("t", t)?;
@@ -958,7 +960,7 @@ fn simulate_driven<'py>(
     d.set_item("steps", tr.stats.steps)?;
     d.set_item("rejected_steps", tr.stats.rejected_steps)?;
     let events = PyList::empty(py);
-    for &(k, t) in &tr.event {
+    if let Some((k, t)) = tr.event {
         let e = PyDict::new(py);
         e.set_item("when", stops[k].text())?;
         e.set_item("t", t)?;
@@ -968,6 +970,24 @@ fn simulate_driven<'py>(
     Ok(d)
 }
 
+/// The values of a 1-d sequence of numbers (`what` names it in the error): any numpy array —
+/// a strided slice of a larger one, or one Dask deserialised into a misaligned buffer — or a
+/// list of real numbers (booleans, integers or floats; complex numbers, texts and objects are
+/// refused, not cast), copied through `numpy.require(x, float64, "CA")` (no copy when already
+/// contiguous and aligned float64), so a chunk of a batch is read whatever its memory layout.
+fn column_of(x: &Bound<'_, PyAny>, what: &str) -> PyResult<Vec<f64>> {
+    let bad = || err(format!("{what} must be a 1-d array of numbers"));
+    let np = x.py().import("numpy")?;
+    let a = np.getattr("asarray")?.call1((x,)).map_err(|_| bad())?;
+    let kind: String = a.getattr("dtype")?.getattr("kind")?.extract()?;
+    if !matches!(kind.as_str(), "b" | "i" | "u" | "f") {
+        return Err(bad());
+    }
+    let a = np.getattr("require")?.call1((a, "float64", "CA")).map_err(|_| bad())?;
+    let a: PyReadonlyArray1<'_, f64> = a.extract().map_err(|_| bad())?;
+    Ok(a.as_slice().map_err(|_| bad())?.to_vec())
+}
+
 /// Many simulations of the nonlinear bicycle in parallel, the GIL released: one from each
 /// (`speeds[k]`, `lean0s[k]`, `steer_rates[k]`, zero when None) with the options of
 /// `simulate`, keeping only the end (as `carvallo simulate --batch FILE --csv`). A dict of
@@ -975,17 +995,19 @@ fn simulate_driven<'py>(
 /// `steer_rate` (NaN for a failed run), `event_t` (NaN when no stop condition was met),
 /// `stopped_by` (the index of the condition met, -1 for none), `fell` (a condition met or the
 /// contact lost), `ok`, `rhs_evaluations`, and `errors` (a list, None for a run that did not
-/// fail). Each run equals `simulate`'s bit for bit.
+/// fail). Each run equals `simulate`'s bit for bit, and a chunk (any slice of the batch, read
+/// whatever its layout, see [`column_of`]) gives the batch's rows for it bit for bit: the
+/// chunks of a batch can run in other processes (docs/examples/basin_dask.py over Dask).
 #[pyfunction]
 #[pyo3(signature = (params, speeds, lean0s, duration, steer_rates = None, step = 0.001, *, method = "rk4", rtol = None, atol = None, stop_when = Vec::new(), strict = false))]
 #[allow(clippy::too_many_arguments)]
 fn simulate_many<'py>(
     py: Python<'py>,
     params: &Bound<'py, PyAny>,
-    speeds: PyReadonlyArray1<'py, f64>,
-    lean0s: PyReadonlyArray1<'py, f64>,
+    speeds: &Bound<'py, PyAny>,
+    lean0s: &Bound<'py, PyAny>,
     duration: f64,
-    steer_rates: Option<PyReadonlyArray1<'py, f64>>,
+    steer_rates: Option<&Bound<'py, PyAny>>,
     step: f64,
     method: &str,
     rtol: Option<f64>,
@@ -995,22 +1017,19 @@ fn simulate_many<'py>(
 ) -> PyResult<Bound<'py, PyDict>> {
     let (how, stops) = integration_of(method, rtol, atol, &stop_when)?;
     let bike = WhippleNonlinear::new(params_of(params, strict)?);
-    let speeds = speeds.as_slice()?;
-    let lean0s = lean0s.as_slice()?;
+    let speeds = column_of(speeds, "speeds")?;
+    let lean0s = column_of(lean0s, "lean0s")?;
     let n = speeds.len();
     if lean0s.len() != n {
         return Err(err(format!("lean0s has {} values for {n} speeds", lean0s.len())));
     }
-    let rates: Vec<f64> = match &steer_rates {
-        Some(r) if r.as_slice()?.len() != n => {
-            return Err(err(format!(
-                "steer_rates has {} values for {n} speeds",
-                r.as_slice()?.len()
-            )));
-        }
-        Some(r) => r.as_slice()?.to_vec(),
+    let rates: Vec<f64> = match steer_rates {
+        Some(r) => column_of(r, "steer_rates")?,
         None => vec![0.0; n],
     };
+    if rates.len() != n {
+        return Err(err(format!("steer_rates has {} values for {n} speeds", rates.len())));
+    }
     let mut starts = Vec::with_capacity(n);
     for k in 0..n {
         let mut s =
@@ -1211,5 +1230,6 @@ fn carvallo_module(m: &Bound<'_, PyModule>) -> PyResult<()> {
     m.add_function(wrap_pyfunction!(first_order, m)?)?;
     m.add_function(wrap_pyfunction!(monte_carlo, m)?)?;
     m.add_function(wrap_pyfunction!(eigenvalue_bands, m)?)?;
+    crate::rolling::register(m)?;
     Ok(())
 }

@@ -119,6 +119,37 @@ def test_simulate(p, speed, lean, duration, step, every):
     check(lambda: carvallo.simulate(p, speed, lean, duration, step=step, every=every))
 
 
+columns = st.one_of(
+    speeds,
+    hnp.arrays(hnp.complex_number_dtypes() | hnp.boolean_dtypes(), hnp.array_shapes(max_dims=1, max_side=3)),
+    st.integers(1, 3).flatmap(lambda n: hnp.arrays(np.float64, (n,), elements=awkward_floats)),
+    st.integers(1, 3).flatmap(lambda n: hnp.arrays(np.float64, (2 * n,), elements=st.floats(-1, 1)).map(lambda a: a[::2])),
+)
+
+
+@SETTINGS
+@given(p=params_dicts(), v=columns, lean=columns, rates=st.one_of(st.none(), columns),
+       duration=st.one_of(awkward_floats, st.floats(0, 0.05)), method=st.sampled_from(["rk4", "dop853", "vern9", "vern8"]))
+def test_simulate_many(p, v, lean, rates, duration, method):
+    # Short runs only: durations up to 0.05 s (at 1 ms for rk4).
+    if math.isfinite(duration) and abs(duration) > 0.05:
+        duration = 0.05
+    check(lambda: carvallo.simulate_many(p, v, lean, duration, steer_rates=rates, method=method))
+
+
+@SETTINGS
+@given(theta=awkward_floats, s=awkward_floats, duration=st.one_of(awkward_floats, st.floats(0, 0.05)),
+       radius=awkward_floats, method=st.sampled_from(["rk4", "vern9", "x"]),
+       stop=st.lists(st.one_of(st.text(max_size=8), st.sampled_from(["theta=±0.5", "p=0", "s=+-1e300", "n=nan"])), max_size=9),
+       rider=st.one_of(st.none(), st.dictionaries(st.sampled_from(["mass", "height", "a", "b", "c", "l", "x"]), values, max_size=7)))
+def test_simulate_hoop_and_unicycle(theta, s, duration, radius, method, stop, rider):
+    if math.isfinite(duration) and abs(duration) > 0.05:
+        duration = 0.05
+    check(lambda: carvallo.simulate_hoop(theta, s, duration, radius=radius, method=method, stop_when=stop))
+    wheel = dict(mass=1.0, a1=0.375, b1=0.5, c1=0.125)
+    check(lambda: carvallo.simulate_unicycle(rider, wheel, 0.5, theta, s, duration, method=method, stop_when=stop))
+
+
 designs = st.one_of(
     hnp.arrays(hnp.floating_dtypes() | hnp.integer_dtypes() | hnp.boolean_dtypes(), hnp.array_shapes(min_dims=0, max_dims=3, max_side=30)),
     st.integers(1, 5).flatmap(lambda n: hnp.arrays(np.float64, (n, 26), elements=awkward_floats)),

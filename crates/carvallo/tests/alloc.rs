@@ -42,6 +42,7 @@ fn a_final_only_simulation_allocates_nothing() {
         Integration::RK4,
         Integration::adaptive(Method::Dopri5, 1e-9, 1e-12),
         Integration::adaptive(Method::Dop853, 1e-12, 1e-15),
+        Integration::adaptive(Method::Vern9, 1e-12, 1e-15),
     ] {
         for speed in [4.6, 2.0] {
             let start = bike.initial_state(speed, 0.05).expect("state");

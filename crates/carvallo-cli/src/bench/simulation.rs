@@ -1,8 +1,8 @@
 //! The section `simulation` of `carvallo bench`: work-precision rows of the simulations — the
 //! nonlinear bicycle (4.6 m/s from a lean of 0.05 rad over 5 s and 30 s, and a fall at 2 m/s
-//! ended by the event `lean=±0.5`), the hoop and the unicycle — for every method: the adaptive
-//! pairs at tolerances $10^{-3}$ to $10^{-13}$ (atol $= 10^{-3}$ rtol) and RK4 at halving
-//! steps. Each row has the error at the final time and the largest over the samples (every
+//! ended by the event `lean=±0.5`), the hoop and the unicycle — for every method: DOPRI5 and
+//! DOP853 at tolerances $10^{-3}$ to $10^{-13}$ (atol $= 10^{-3}$ rtol), Verner's 9(8) pair
+//! (`vern9`) at $10^{-4}$, $10^{-7}$, $10^{-10}$, $10^{-13}$, and RK4 at halving steps. Each row has the error at the final time and the largest over the samples (every
 //! 0.01 s: the dense output of the adaptive methods) against a reference run (DOP853 at rtol
 //! $10^{-14}$, atol $10^{-17}$), the wall time, the right-hand side evaluations, the steps, the
 //! energy drift and (bicycle) the contact constraint's residual. Each reference is checked by
@@ -30,7 +30,7 @@ const SAMPLE: f64 = 0.01;
 pub struct SimulationRow {
     /// The simulated motion.
     pub problem: String,
-    /// `rk4`, `dopri5` or `dop853`.
+    /// `rk4`, `dopri5`, `dop853` or `vern9`.
     pub method: &'static str,
     /// The relative tolerance (adaptive methods; atol is 1e-3 of it).
     pub rtol: Option<f64>,
@@ -232,6 +232,9 @@ pub fn simulation_rows(
     let tolerances: Vec<f64> =
         if quick { vec![1e-3, 1e-6, 1e-9] } else { (3..=13).map(|k| 10f64.powi(-k)).collect() };
     let steps: Vec<u32> = if quick { vec![0, 2] } else { (0..=6).collect() };
+    // Verner's 9(8) at every third tolerance (four rows per problem).
+    let verner_tolerances: Vec<f64> =
+        if quick { vec![1e-9] } else { vec![1e-4, 1e-7, 1e-10, 1e-13] };
     let reference_how = Integration::adaptive(Method::Dop853, 1e-14, 1e-17);
     for p in problems(quick) {
         let sample_grid = Grid::new(p.duration, SAMPLE, 1).expect("grid");
@@ -280,8 +283,12 @@ pub fn simulation_rows(
                 },
             });
         };
-        for method in [Method::Dopri5, Method::Dop853] {
-            for &rtol in &tolerances {
+        for method in Method::ALL.into_iter().filter(|m| m.is_adaptive()) {
+            let tolerances = match method {
+                Method::Dopri5 | Method::Dop853 => &tolerances,
+                _ => &verner_tolerances,
+            };
+            for &rtol in tolerances {
                 push(
                     Integration::adaptive(method, rtol, 1e-3 * rtol),
                     sample_grid,

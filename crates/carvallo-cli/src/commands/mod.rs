@@ -9,6 +9,7 @@ pub mod eig;
 pub mod kinematics;
 pub mod report;
 pub mod rest;
+pub mod rolling;
 pub mod simulate;
 pub mod simulate_inputs;
 pub mod statespace;

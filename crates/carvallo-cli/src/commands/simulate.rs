@@ -1,12 +1,13 @@
 //! `carvallo simulate --model benchmark|FILE.toml --speed V --lean0 RAD --duration S
-//! [--step DT] [--every N] [--method rk4|dopri5|dop853 [--rtol R] [--atol A]]
+//! [--step DT] [--every N] [--method rk4|dopri5|dop853|vern9 [--rtol R] [--atol A]]
 //! [--stop-when NAME=VALUE|NAME=±VALUE ...] [--json]`: integrates the nonlinear
 //! Carvallo–Whipple equations from upright straight running at speed V with the initial lean
 //! RAD (RK4 at the step DT = 0.001 s by default, the pitch re-solved at every stage) and prints
 //! the time series every N steps (10 by default): time, lean, steer, pitch, rear contact speed,
 //! both ground tracks, energy, and the energy drift and largest contact residual of the run.
 //!
-//! With an adaptive `--method` (Dormand–Prince 5(4) or DOP853, tolerances `--rtol`, default
+//! With an adaptive `--method` (Dormand–Prince 5(4), DOP853 or Verner's 9(8) pair, tolerances
+//! `--rtol`, default
 //! 1e-8, and `--atol`, default 1e-3 × rtol) the step follows the error estimate and the
 //! printed times are the same grid, `k N DT`, sampled from the dense output. `--stop-when`
 //! ends the run when a quantity (`lean`, `steer`, `yaw`, `pitch`, `lean_rate`, `steer_rate`,
@@ -41,8 +42,8 @@ use crate::args::{finite, DataOptions};
 /// How `simulate` integrates: the method, its tolerances and the stop conditions.
 #[derive(Clone, Debug, Default, PartialEq, clap::Args)]
 pub struct IntegrationArgs {
-    /// The integrator: fixed-step RK4, or Dormand–Prince 5(4) or DOP853 with error control
-    /// and dense output
+    /// The integrator: fixed-step RK4, or Dormand–Prince 5(4), DOP853 or Verner's 9(8) with
+    /// error control and dense output
     #[arg(long, value_enum, default_value_t)]
     pub method: MethodArg,
     /// The relative tolerance of an adaptive method [default: 1e-8]
@@ -67,6 +68,8 @@ pub enum MethodArg {
     Dopri5,
     /// Hairer's DOP853 8(5,3), error-controlled, dense output of order 7
     Dop853,
+    /// Verner's efficient 9(8) pair, error-controlled, dense output of order 9
+    Vern9,
 }
 
 impl IntegrationArgs {
@@ -76,13 +79,14 @@ impl IntegrationArgs {
             MethodArg::Rk4 => Method::Rk4,
             MethodArg::Dopri5 => Method::Dopri5,
             MethodArg::Dop853 => Method::Dop853,
+            MethodArg::Vern9 => Method::Vern9,
         };
         if method == Method::Rk4 {
             if let Some(r) = self.rtol {
-                return Err(format!("invalid --rtol {r:?}: rk4 has a fixed step (--step); choose --method dopri5 or dop853"));
+                return Err(format!("invalid --rtol {r:?}: rk4 has a fixed step (--step); choose an adaptive --method such as dop853"));
             }
             if let Some(a) = self.atol {
-                return Err(format!("invalid --atol {a:?}: rk4 has a fixed step (--step); choose --method dopri5 or dop853"));
+                return Err(format!("invalid --atol {a:?}: rk4 has a fixed step (--step); choose an adaptive --method such as dop853"));
             }
             return Ok(Integration::RK4);
         }

@@ -190,7 +190,7 @@ pub(super) fn fig_work_precision(p: &WhippleParams) -> Result<String> {
         worst
     };
     let mut curves = Vec::new();
-    for (i, method) in [Method::Dopri5, Method::Dop853].into_iter().enumerate() {
+    for (i, method) in [Method::Dopri5, Method::Dop853, Method::Vern9].into_iter().enumerate() {
         let mut pts = Vec::new();
         for k in 3..=12 {
             let rtol = 10f64.powi(-k);
@@ -208,7 +208,7 @@ pub(super) fn fig_work_precision(p: &WhippleParams) -> Result<String> {
         // RK4 at 0.02 s samples every 0.02 s: compare with every other reference sample.
         pts.push(((n as f64).log10(), error(&rows).log10()));
     }
-    curves.push(Curve::new("rk4", pts, color(2), Stroke::Dashed));
+    curves.push(Curve::new("rk4", pts, color(3), Stroke::Dashed));
     let (mut x0, mut x1, mut y0, mut y1) = (f64::MAX, f64::MIN, f64::MAX, f64::MIN);
     for c in &curves {
         for &(x, y) in &c.points {

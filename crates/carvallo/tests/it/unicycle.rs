@@ -80,7 +80,7 @@ fn adaptive_pairs_reach_a_reference_checked_by_rk4() {
     };
     eprintln!("unicycle reference against rk4: {:.2e}", err(&rk4));
     assert!(err(&rk4) <= 1e-12, "{}", err(&rk4));
-    for method in [Method::Dopri5, Method::Dop853] {
+    for method in [Method::Dopri5, Method::Dop853, Method::Vern9] {
         for rtol in [1e-6, 1e-9] {
             let how = Integration::adaptive(method, rtol, 1e-3 * rtol);
             let tr = u.simulate_with(x0, &grid, &how, &[]).expect("run");

@@ -143,7 +143,7 @@ fn adaptive_pairs_reach_a_reference_checked_by_rk4() {
     }
     eprintln!("hoop reference against rk4 2.5e-5: {worst:.2e}, {:?}", reference.stats);
     assert!(worst <= 1e-12, "{worst}");
-    for method in [Method::Dopri5, Method::Dop853] {
+    for method in [Method::Dopri5, Method::Dop853, Method::Vern9] {
         for rtol in [1e-6, 1e-9] {
             let how = Integration::adaptive(method, rtol, 1e-3 * rtol);
             let tr = hoop.simulate_with(x0, &grid, &how, &[]).expect("run");
@@ -185,6 +185,7 @@ fn a_slow_hoop_falls_to_the_event_at_the_bisected_time() {
         (Integration::RK4, 1e-9),
         (Integration::adaptive(Method::Dopri5, 1e-10, 1e-13), 1e-8),
         (Integration::adaptive(Method::Dop853, 1e-12, 1e-15), 1e-10),
+        (Integration::adaptive(Method::Vern9, 1e-12, 1e-15), 1e-10),
     ] {
         let tr = hoop.simulate_with(x0, &grid, &how, &stop).expect("run");
         let (index, t) = tr.event.expect("an event");
