@@ -435,4 +435,5 @@ pub fn declare_symbols() {
     for name in SYMBOLS {
         let _ = var(name);
     }
+    crate::emit::declare_placeholders();
 }

@@ -13,9 +13,10 @@
 //!    must not look into replaced by a placeholder symbol: parameters, inputs, earlier formulas,
 //!    $\pi$, and the calls of `tan` and `atan2` (symbolica has no evaluator for these user
 //!    functions; they are lowered by the naive rules and enter as values). The placeholders are
-//!    `carvallo_lowering::x0`, `x1`, … created in index order, numbered in the order of first
-//!    appearance in the canonical trees, so the optimiser sees the same input whatever symbols
-//!    the process created before and its output is byte-stable.
+//!    `carvallo_lowering::x0`, `x1`, … numbered in the order of first appearance in the
+//!    canonical trees and created all at once right after the derivations' symbols
+//!    ([`declare_placeholders`]), so the optimiser sees the same input whatever the process did
+//!    before and its output is byte-stable.
 //! 3. The instructions are translated with the naive lowering's conventions: a multiplication by
 //!    $-1$ or a negative constant is carried as a sign and becomes a subtraction in the sum that
 //!    uses it (a negation only where a value must be materialised), negative integer powers
@@ -67,6 +68,19 @@ pub const EFFORTS: [Effort; 2] = [
     Effort { horner_iterations: 10, cpe_iterations: None },
 ];
 
+/// The number of placeholders [`declare_placeholders`] creates, more than any level of any
+/// model uses (a level that needs more is lowered naively).
+pub const PLACEHOLDERS: usize = 4096;
+
+/// Creates the placeholder symbols `carvallo_lowering::x0` … in order, right after the
+/// derivations' own symbols ([`crate::derive::declare_symbols`]), so that they have the same
+/// identities in every process, whatever it did before (the optimiser's output depends on them).
+pub fn declare_placeholders() {
+    for i in 0..PLACEHOLDERS {
+        let _ = placeholder(i);
+    }
+}
+
 /// The placeholder symbol number `i` (see the module docs).
 fn placeholder(i: usize) -> Symbol {
     symbol!(&format!("carvallo_lowering::x{i}"))
@@ -89,15 +103,16 @@ struct Rebuild<'a> {
 }
 
 impl Rebuild<'_> {
-    fn leaf(&mut self, v: Value) -> Atom {
+    fn leaf(&mut self, v: Value) -> Result<Atom, EmitError> {
         let n = self.leaves.len();
         let i = *self.index.entry(v).or_insert(n);
         if i == n {
+            if n == PLACEHOLDERS {
+                return Err(unsupported(format!("more than {PLACEHOLDERS} leaves in one level")));
+            }
             self.leaves.push(v);
-            // Create every placeholder up to i in order, so their ids increase with i.
-            let _ = placeholder(i);
         }
-        Atom::var(placeholder(i))
+        Ok(Atom::var(placeholder(i)))
     }
 
     fn atom(&mut self, e: &Expr) -> Result<Atom, EmitError> {
@@ -105,7 +120,7 @@ impl Rebuild<'_> {
             Expr::Num(r) => Atom::num(r.clone()),
             Expr::Sym(_) | Expr::Pi | Expr::Fun(Func::Tan | Func::Atan2, _) => {
                 let v = self.lower.value(e)?;
-                self.leaf(v)
+                self.leaf(v)?
             }
             Expr::Fun(f, args) => {
                 let a = self.atom(&args[0])?;

@@ -13,6 +13,11 @@ fn generated_is_up_to_date_body() {
     let ds: Vec<Derivation> =
         DERIVATIONS.iter().map(|(name, _)| crate::derived(name).clone()).collect();
     let (files, _) = render_all(&ds).unwrap_or_else(|e| panic!("rendering fails: {e:#}"));
+    if let Ok(dir) = std::env::var("CARVALLO_DUMP") {
+        for (name, text) in &files {
+            std::fs::write(Path::new(&dir).join(name.replace('/', "_")), text).unwrap();
+        }
+    }
     let statuses = compare_with_disk(root, &files).unwrap_or_else(|e| panic!("{e:#}"));
     assert!(!statuses.is_empty(), "regen checked no file");
     let changed: Vec<String> = statuses
