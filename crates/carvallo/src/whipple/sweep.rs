@@ -6,8 +6,10 @@
 //! around a base ([`Designs`]), optionally keeping every design's varied values and window
 //! ([`SweepOutput`]). Both evaluate the matrices four designs per call
 //! (`matrices_scene::eval_lanes`, bit for bit the scalar evaluator lane by lane) and keep of each
-//! window only [`hurwitz_window_summary`], the same code as [`hurwitz_window`] without the
-//! allocation of the stable intervals.
+//! window only [`hurwitz_window_summary`] (the same code as [`hurwitz_window`] without the
+//! allocation of the stable intervals), computed for the same four designs at once without a
+//! branch per design ([`hurwitz_window_summary_lanes`], equal to it design by design), so that
+//! the Hurwitz sweep never drops to scalar code per design.
 //!
 //! The designs stream through the evaluators in blocks of [`BLOCK`] (parallel within a block)
 //! into a running summary, so memory does not depend on the number of designs;
@@ -19,13 +21,16 @@ use std::time::Instant;
 
 use rayon::prelude::*;
 
-use super::matrices::{matrices_of, matrices_scene, scene_index, Matrices};
+use super::matrices::{matrices_of, matrices_scene, scene_index};
 use super::params::{
     point_like, skate_limit, valid_within, TriangleSlack, WhippleError, WhippleParams, PARAM_NAMES,
 };
 #[cfg(doc)]
 use super::stability::hurwitz_window;
-use super::stability::{eigen_window, hurwitz_window_summary, EigenGrid, WindowSummary};
+#[cfg(doc)]
+use super::stability::hurwitz_window_summary;
+use super::stability::{eigen_window, EigenGrid, WindowSummary};
+use super::window_lanes::hurwitz_window_summary_lanes;
 use crate::numerics::rng::SplitMix64;
 
 /// How [`sweep`] computes each design's window.
@@ -348,8 +353,9 @@ const CHUNK: usize = 4096;
 /// Designs evaluated between two updates of the running summary (and two looks at the stop
 /// flag of [`sweep_stream`]); only one block's results are held at a time.
 pub const BLOCK: usize = 16 * CHUNK;
-/// Designs per call of [`matrices_scene::eval_lanes`].
+/// Designs per call of [`matrices_scene::eval_lanes`] and of [`hurwitz_window_summary_lanes`].
 const LANES: usize = matrices_scene::LANES;
+const _: () = assert!(LANES == super::window_lanes::LANES);
 
 /// Computes the window of every design of `designs` (a grid or random designs around `base`),
 /// in parallel with rayon, four designs per evaluation of the matrices
@@ -512,11 +518,7 @@ pub fn sweep_stream(
                         std::array::from_fn(|a| std::array::from_fn(|j| values[j][index[a]]))
                     };
                     let o = matrices_scene::eval_lanes(&args);
-                    std::array::from_fn(|j| {
-                        let r = |k: usize| [[o[k][j], o[k + 1][j]], [o[k + 2][j], o[k + 3][j]]];
-                        let m = Matrices { m: r(0), c1: r(4), k0: r(8), k2: r(12) };
-                        Some(hurwitz_window_summary(&m, g))
-                    })
+                    hurwitz_window_summary_lanes(&o, g).map(Some)
                 }
                 Method::Eigen => std::array::from_fn(|j| {
                     if j >= n {
