@@ -1067,15 +1067,19 @@ pub fn run(cfg: &Config) -> Report {
         required: 1.0,
         met: per_million < 1.0,
     });
-    for (what, rate) in [("c sweep", grid_rate), ("Monte Carlo", random_rate)] {
+    // Issue 22: 10^7 designs/s for the trail grid, 3·10^6 for the 25-parameter Monte Carlo
+    // (whose designs are drawn and checked before they are evaluated), on 2 quiet cores.
+    for (what, rate, required) in
+        [("c sweep", grid_rate, 1e7), ("Monte Carlo 25 parameters", random_rate, 3e6)]
+    {
         targets.push(Target {
             name: format!(
                 "designs per second, {what}, hurwitz, {} threads (at least)",
                 rayon::current_num_threads()
             ),
             measured: rate,
-            required: 1e7,
-            met: rate >= 1e7,
+            required,
+            met: rate >= required,
         });
     }
     Report {
