@@ -47,6 +47,12 @@ fn quick_bench_reports_times_beside_correct_errors() {
     let windows = rows(&v, "windows");
     let hurwitz = windows.iter().find(|r| r["method"] == "hurwitz closed form").unwrap();
     assert!(hurwitz["max_rel_err"].as_f64().unwrap() < 1e-12, "{hurwitz}");
+    // The sweep's window four designs at once equals the scalar one.
+    let batched = windows
+        .iter()
+        .find(|r| r["method"].as_str().unwrap().starts_with("hurwitz, 4 designs at once"))
+        .unwrap();
+    assert!(batched["note"].as_str().unwrap().contains("equal to the scalar summary"), "{batched}");
     let quartic = rows(&v, "quartic");
     let comp = quartic.iter().find(|r| r["method"] == "aberth compensated").unwrap();
     assert!(comp["max_rel_err"].as_f64().unwrap() < 1e-15, "{comp}");

@@ -37,7 +37,10 @@
 //!   struct of the values that cross them (each stored once and loaded where it is used).
 //! * `lanes: N` (2, 4, 8 or 16) also emits `eval_lanes`, the same evaluator on `N` points per
 //!   call in structure-of-arrays form (`[[f64; N]; K]` in, `[[f64; N]; M]` out), lane `j`
-//!   bit for bit equal to `eval_array` of point `j`.
+//!   bit for bit equal to `eval_array` of point `j`. On x86 it is compiled twice,
+//!   `eval_lanes_portable` (SSE2) and `eval_lanes_avx2` (AVX2, no FMA, the same bits), and
+//!   `eval_lanes` picks one at run time; so is `eval` (`eval_portable`, `eval_avx2`) for
+//!   programs of 1,000 operations or more.
 //!
 //! # What a scene module contains
 //!
@@ -50,7 +53,8 @@
 //! order of `ARGS`); and the evaluators `eval(&Args) -> Out` and
 //! `eval_array(&[f64; N]) -> [f64; M]`; with `lanes: L` also `LANES` and
 //! `eval_lanes(&[[f64; L]; N]) -> [[f64; L]; M]`. The code is straight-line `f64` arithmetic and `f64`
-//! methods (`sqrt`, `sin`, `cos`, `tan`, `atan2`, `powi`): no allocation, no panics, no macros.
+//! methods (`sqrt`, `sin`, `cos`, `tan`, `atan2`, `powi`): no allocation, no panics, no macros
+//! (but `is_x86_feature_detected!` in the functions that choose the AVX2 variant).
 //! The module also holds `const _: &str = include_str!(...)` of the IR file, so Cargo rebuilds
 //! the calling crate when the file changes.
 //!

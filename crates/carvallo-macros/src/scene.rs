@@ -31,6 +31,10 @@ pub const RESERVED: &[&str] = &[
     "eval",
     "eval_array",
     "eval_lanes",
+    "eval_portable",
+    "eval_avx2",
+    "eval_lanes_portable",
+    "eval_lanes_avx2",
     "LANES",
     // Locals of the generated functions.
     "live",

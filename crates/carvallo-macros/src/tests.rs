@@ -179,13 +179,21 @@ fn lanes_add_a_structure_of_arrays_evaluator() {
     });
     assert_eq!(const_usize(&text, "LANES"), 4);
     assert!(text.contains("pub fn eval_lanes(args: &[[f64; 4]; 5]) -> [[f64; 4]; 4]"), "{text}");
+    // AVX2 chosen at run time, never FMA (lanes stay bit for bit the scalar evaluator).
+    assert!(text.contains("is_x86_feature_detected!(\"avx2\")"), "{text}");
+    assert!(text.contains("#[target_feature(enable = \"avx2\")]"), "{text}");
+    assert!(text.contains("fn lanes_part_0_avx2(live: &mut LiveLanes)"), "{text}");
+    assert!(!text.contains("fma"), "{text}");
+    // The demo is too small for an AVX2 copy of the scalar evaluator.
+    assert!(!text.contains("fn eval_avx2"), "{text}");
     // Both evaluators are split the same way, each with its own struct of crossing values.
     for k in 0..3 {
         assert!(text.contains(&format!("fn part_{k}(live: &mut Live)")), "{text}");
         assert!(text.contains(&format!("fn lanes_part_{k}(live: &mut LiveLanes)")), "{text}");
     }
-    // Each helper runs the scalar operations in a loop over the four lanes.
-    assert_eq!(text.matches("for j in 0..4 {").count(), 3 + 2, "{text}");
+    // Each helper runs the scalar operations in a loop over the four lanes (twice: the portable
+    // and the AVX2 variant).
+    assert_eq!(text.matches("for j in 0..4 {").count(), 2 * (3 + 2), "{text}");
     assert!(text.contains("let t6 = x.sin();"), "{text}");
     insta::with_settings!({
         description => "scene! over tests/fixtures/demo.ir with 4 lanes, at most 8 operations per function",

@@ -222,20 +222,45 @@ fn lanes_equal_the_scalar_evaluator_lane_by_lane_bit_for_bit() {
     for _ in 0..500 {
         let mut args = [[0.0; 4]; 5];
         args.iter_mut().flatten().for_each(|a| *a = next());
-        let got = four::eval_lanes(&args);
-        for j in 0..4 {
-            let want = full::eval_array(&args.map(|a| a[j]));
-            for k in 0..4 {
-                assert_eq!(got[k][j].to_bits(), want[k].to_bits(), "output {k} lane {j}");
+        // `eval_lanes` runs the AVX2 variant where the CPU has it; both variants are checked.
+        let mut variants = vec![("dispatched", four::eval_lanes(&args))];
+        variants.push(("portable", four::eval_lanes_portable(&args)));
+        #[cfg(any(target_arch = "x86", target_arch = "x86_64"))]
+        if std::is_x86_feature_detected!("avx2") {
+            // SAFETY: the CPU has AVX2.
+            variants.push(("avx2", unsafe { four::eval_lanes_avx2(&args) }));
+        }
+        for (variant, got) in variants {
+            for j in 0..4 {
+                let want = full::eval_array(&args.map(|a| a[j]));
+                for k in 0..4 {
+                    assert_eq!(
+                        got[k][j].to_bits(),
+                        want[k].to_bits(),
+                        "{variant}: output {k} lane {j}"
+                    );
+                }
             }
         }
         let mut args = [[0.0; 8]; 2];
         args.iter_mut().flatten().for_each(|a| *a = next());
-        let got = eight_split::eval_lanes(&args);
-        for j in 0..8 {
-            let want = fixed::eval_array(&args.map(|a| a[j]));
-            for k in 0..2 {
-                assert_eq!(got[k][j].to_bits(), want[k].to_bits(), "fixed output {k} lane {j}");
+        let mut variants = vec![("dispatched", eight_split::eval_lanes(&args))];
+        variants.push(("portable", eight_split::eval_lanes_portable(&args)));
+        #[cfg(any(target_arch = "x86", target_arch = "x86_64"))]
+        if std::is_x86_feature_detected!("avx2") {
+            // SAFETY: the CPU has AVX2.
+            variants.push(("avx2", unsafe { eight_split::eval_lanes_avx2(&args) }));
+        }
+        for (variant, got) in variants {
+            for j in 0..8 {
+                let want = fixed::eval_array(&args.map(|a| a[j]));
+                for k in 0..2 {
+                    assert_eq!(
+                        got[k][j].to_bits(),
+                        want[k].to_bits(),
+                        "{variant}: fixed output {k} lane {j}"
+                    );
+                }
             }
         }
     }

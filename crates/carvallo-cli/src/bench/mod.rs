@@ -79,6 +79,10 @@ struct PeerCase<'a> {
     /// `eval_lanes` on four points near `args`: nanoseconds per point, and whether every lane
     /// equals the scalar evaluator bit for bit.
     lanes: Option<&'a LanesFn>,
+    /// The portable (SSE2) variants where the scene has an AVX2 one chosen at run time: the
+    /// scalar evaluator's and `eval_lanes`' time per evaluation (the rows before AVX2).
+    portable: Option<&'a dyn Fn(f64) -> f64>,
+    lanes_portable: Option<&'a dyn Fn(f64) -> f64>,
 }
 
 /// `eval_lanes` timed over at least the given seconds on lanes near the given arguments.
@@ -137,6 +141,22 @@ fn peer_rows(cfg: &Config, rows: &mut Vec<Row>) -> Option<PeerRatios> {
         });
         (time_ns(mt, || nl::eval_lanes(black_box(&l))) / 4.0, same)
     };
+    let nl_portable = |mt: f64| {
+        let a = nl::Args::from_array(to(&nonlinear_args(&nl_names)));
+        time_ns(mt, || nl::eval_portable(black_box(&a)))
+    };
+    let nl_lanes_portable = |mt: f64| {
+        let l = spread_lanes::<{ nl::Args::LEN }>(&nonlinear_args(&nl_names));
+        time_ns(mt, || nl::eval_lanes_portable(black_box(&l))) / 4.0
+    };
+    let mx_lanes_portable = |mt: f64| {
+        let l = spread_lanes::<{ matrices_scene::Args::LEN }>(&other_args(&mx_names));
+        time_ns(mt, || matrices_scene::eval_lanes_portable(black_box(&l))) / 4.0
+    };
+    let uni_portable = |mt: f64| {
+        let a = uni::Args::from_array(uni_to(&other_args(&uni_names)));
+        time_ns(mt, || uni::eval_portable(black_box(&a)))
+    };
     let mx_lanes = |mt: f64, args: &[f64]| {
         let l = spread_lanes::<{ matrices_scene::Args::LEN }>(args);
         let got = matrices_scene::eval_lanes(&l);
@@ -154,6 +174,8 @@ fn peer_rows(cfg: &Config, rows: &mut Vec<Row>) -> Option<PeerRatios> {
             rust: &nl_eval,
             rust_ns: &nl_ns,
             lanes: Some(&nl_lanes),
+            portable: Some(&nl_portable),
+            lanes_portable: Some(&nl_lanes_portable),
         },
         PeerCase {
             name: "bicycle matrices",
@@ -162,6 +184,8 @@ fn peer_rows(cfg: &Config, rows: &mut Vec<Row>) -> Option<PeerRatios> {
             rust: &mx_eval,
             rust_ns: &mx_ns,
             lanes: Some(&mx_lanes),
+            portable: None,
+            lanes_portable: Some(&mx_lanes_portable),
         },
         PeerCase {
             name: "unicycle motion + energy",
@@ -170,6 +194,8 @@ fn peer_rows(cfg: &Config, rows: &mut Vec<Row>) -> Option<PeerRatios> {
             rust: &uni_eval,
             rust_ns: &uni_ns,
             lanes: None,
+            portable: Some(&uni_portable),
+            lanes_portable: None,
         },
     ];
     let mut nonlinear = None;
@@ -210,6 +236,23 @@ fn peer_rows(cfg: &Config, rows: &mut Vec<Row>) -> Option<PeerRatios> {
                 c.ns / ops as f64
             ),
         });
+        let simd = tables::simd_name();
+        if let Some(portable) = case.portable {
+            let ns = portable(cfg.min_time);
+            rows.push(Row {
+                section: "peer",
+                name: case.name.into(),
+                method: "generated Rust, SSE2 (before AVX2)".into(),
+                ops: Some(ops),
+                ns: Some(ns),
+                max_rel_err: None,
+                note: format!(
+                    "eval_portable; {:.2}x the C peer's time; {:.3} ns/op",
+                    ns / c.ns,
+                    ns / ops as f64
+                ),
+            });
+        }
         rows.push(Row {
             section: "peer",
             name: case.name.into(),
@@ -218,11 +261,32 @@ fn peer_rows(cfg: &Config, rows: &mut Vec<Row>) -> Option<PeerRatios> {
             ns: Some(rust_ns),
             max_rel_err: None,
             note: format!(
-                "{:.2}x the C peer's time; {:.3} ns/op",
+                "{:.2}x the C peer's time; {:.3} ns/op; {}",
                 rust_ns / c.ns,
-                rust_ns / ops as f64
+                rust_ns / ops as f64,
+                if case.portable.is_some() {
+                    format!("eval, {simd} chosen at run time")
+                } else {
+                    "eval, one inlined function (no AVX2 variant below 1,000 ops)".to_string()
+                }
             ),
         });
+        if let Some(portable) = case.lanes_portable {
+            let ns = portable(cfg.min_time);
+            rows.push(Row {
+                section: "peer",
+                name: case.name.into(),
+                method: "generated Rust, 4 lanes, SSE2 (before AVX2)".into(),
+                ops: Some(ops),
+                ns: Some(ns),
+                max_rel_err: None,
+                note: format!(
+                    "per evaluation (eval_lanes_portable / 4); {:.2}x the C peer's time; {:.3} ns/op",
+                    ns / c.ns,
+                    ns / ops as f64
+                ),
+            });
+        }
         let mut lanes_ratio = f64::NAN;
         if let Some(lanes) = case.lanes {
             let (ns, same) = lanes(cfg.min_time, &case.args);
@@ -235,8 +299,8 @@ fn peer_rows(cfg: &Config, rows: &mut Vec<Row>) -> Option<PeerRatios> {
                 ns: Some(ns),
                 max_rel_err: None,
                 note: format!(
-                    "per evaluation (eval_lanes / 4); {:.2}x the C peer's time; {:.3} ns/op; lanes {} \
-                     the scalar evaluator bit for bit",
+                    "per evaluation (eval_lanes / 4, {simd} chosen at run time); {:.2}x the C \
+                     peer's time; {:.3} ns/op; lanes {} the scalar evaluator bit for bit",
                     lanes_ratio,
                     ns / ops as f64,
                     if same { "equal" } else { "DIFFER FROM" }

@@ -39,6 +39,7 @@ use carvallo::numerics::rng::SplitMix64;
 use carvallo::whipple::nonlinear::{dynamics_scene, Configuration, WhippleNonlinear};
 use carvallo::whipple::stability::{self, reference_speeds, EigenGrid};
 use carvallo::whipple::sweep::{self, Method};
+use carvallo::whipple::window_lanes;
 use carvallo::whipple::{matrices_scene, Matrices, Whipple, WhippleParams, PARAM_NAMES};
 
 use super::measure::{
@@ -273,6 +274,21 @@ fn evaluator_rows(cfg: &Config, sc: &Scene<'_>, rows: &mut Vec<Row>) -> f64 {
     t_int / t_gen
 }
 
+/// The vector instructions the dispatching evaluators use on this CPU.
+pub fn simd_name() -> &'static str {
+    #[cfg(any(target_arch = "x86", target_arch = "x86_64"))]
+    {
+        if std::is_x86_feature_detected!("avx2") {
+            return "AVX2";
+        }
+        "SSE2"
+    }
+    #[cfg(not(any(target_arch = "x86", target_arch = "x86_64")))]
+    {
+        "portable"
+    }
+}
+
 /// Table 2; returns (Hurwitz time, eigen time, Hurwitz and eigen errors on the speeds both
 /// report, benchmark error).
 fn window_rows(cfg: &Config, rows: &mut Vec<Row>) -> (f64, f64, f64, f64, f64) {
@@ -395,6 +411,57 @@ fn window_rows(cfg: &Config, rows: &mut Vec<Row>) -> (f64, f64, f64, f64, f64) {
             grid.points,
             grid.vmax,
             t_e / t_h
+        ),
+    });
+    // What a sweep keeps of each window, design by design and four designs at once (the
+    // designs above, cycled to fill the lanes), per design.
+    let lane_matrices: [[[f64; 4]; 16]; 1] = {
+        let ms: Vec<Matrices> = whipples.iter().map(|w| matrices_of(w).0).collect();
+        let flat = |m: &Matrices| {
+            let mut f = [0.0; 16];
+            for (k, a) in [m.m, m.c1, m.k0, m.k2].iter().enumerate() {
+                f[4 * k..4 * k + 4].copy_from_slice(&[a[0][0], a[0][1], a[1][0], a[1][1]]);
+            }
+            f
+        };
+        [std::array::from_fn(|k| std::array::from_fn(|j| flat(&ms[j % ms.len()])[k]))]
+    };
+    let lanes_of = |o: &[[f64; 4]; 16]| -> [Matrices; 4] {
+        std::array::from_fn(|j| {
+            let r = |k: usize| [[o[k][j], o[k + 1][j]], [o[k + 2][j], o[k + 3][j]]];
+            Matrices { m: r(0), c1: r(4), k0: r(8), k2: r(12) }
+        })
+    };
+    let scalar_ms = lanes_of(&lane_matrices[0]);
+    let t_summary = time_ns(cfg.min_time, || {
+        black_box(&scalar_ms).map(|m| stability::hurwitz_window_summary(&m, g))
+    }) / 4.0;
+    let t_lanes = time_ns(cfg.min_time, || {
+        window_lanes::hurwitz_window_summary_lanes(black_box(&lane_matrices[0]), g)
+    }) / 4.0;
+    let same = window_lanes::hurwitz_window_summary_lanes(&lane_matrices[0], g)
+        == scalar_ms.map(|m| stability::hurwitz_window_summary(&m, g));
+    rows.push(Row {
+        section: "windows",
+        name: "weave, capsize, stable? (a sweep's summary)".into(),
+        method: "hurwitz, one design at a time".into(),
+        ops: None,
+        ns: Some(t_summary),
+        max_rel_err: None,
+        note: "per design; hurwitz_window_summary (branches per design)".into(),
+    });
+    rows.push(Row {
+        section: "windows",
+        name: "weave, capsize, stable? (a sweep's summary)".into(),
+        method: format!("hurwitz, 4 designs at once ({})", simd_name()),
+        ops: None,
+        ns: Some(t_lanes),
+        max_rel_err: None,
+        note: format!(
+            "per design; window_lanes (no branch per design), {:.2}x the time of one at a time; \
+             {} the scalar summary",
+            t_lanes / t_summary,
+            if same { "equal to" } else { "DIFFERS FROM" }
         ),
     });
     rows.push(Row {
@@ -1000,15 +1067,19 @@ pub fn run(cfg: &Config) -> Report {
         required: 1.0,
         met: per_million < 1.0,
     });
-    for (what, rate) in [("c sweep", grid_rate), ("Monte Carlo", random_rate)] {
+    // Issue 22: 10^7 designs/s for the trail grid, 3·10^6 for the 25-parameter Monte Carlo
+    // (whose designs are drawn and checked before they are evaluated), on 2 quiet cores.
+    for (what, rate, required) in
+        [("c sweep", grid_rate, 1e7), ("Monte Carlo 25 parameters", random_rate, 3e6)]
+    {
         targets.push(Target {
             name: format!(
                 "designs per second, {what}, hurwitz, {} threads (at least)",
                 rayon::current_num_threads()
             ),
             measured: rate,
-            required: 1e7,
-            met: rate >= 1e7,
+            required,
+            met: rate >= required,
         });
     }
     Report {

@@ -6,9 +6,18 @@
 pub struct SplitMix64(pub u64);
 
 impl SplitMix64 {
+    /// The increment of the state per draw.
+    const GAMMA: u64 = 0x9E37_79B9_7F4A_7C15;
+
+    /// Skips `n` draws in constant time: the state is a counter advanced by a constant per draw,
+    /// so the stream after `skip(n)` is the stream after `n` calls of [`Self::next_u64`].
+    pub fn skip(&mut self, n: u64) {
+        self.0 = self.0.wrapping_add(n.wrapping_mul(Self::GAMMA));
+    }
+
     /// The next 64 random bits.
     pub fn next_u64(&mut self) -> u64 {
-        self.0 = self.0.wrapping_add(0x9E37_79B9_7F4A_7C15);
+        self.0 = self.0.wrapping_add(Self::GAMMA);
         let mut z = self.0;
         z = (z ^ (z >> 30)).wrapping_mul(0xBF58_476D_1CE4_E5B9);
         z = (z ^ (z >> 27)).wrapping_mul(0x94D0_49BB_1331_11EB);
@@ -49,6 +58,19 @@ impl SplitMix64 {
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    #[test]
+    fn skipping_equals_drawing() {
+        for n in [0u64, 1, 2, 25, 1000] {
+            let (mut a, mut b) = (SplitMix64(12345), SplitMix64(12345));
+            for _ in 0..n {
+                a.next_u64();
+            }
+            b.skip(n);
+            assert_eq!(a, b);
+            assert_eq!(a.next_u64(), b.next_u64());
+        }
+    }
 
     #[test]
     fn first_outputs_of_seed_zero_are_the_published_ones() {

@@ -37,6 +37,7 @@ pub mod stability;
 pub mod sweep;
 pub mod transfer;
 pub mod uncertainty;
+pub mod window_lanes;
 
 pub use self::design::{BicycleDesign, Body, Wheel, FIELD_PATHS};
 pub use self::matrices::{char_poly_scene, matrices_scene, state_matrix, Mat2, Matrices};

@@ -6,8 +6,10 @@
 //! around a base ([`Designs`]), optionally keeping every design's varied values and window
 //! ([`SweepOutput`]). Both evaluate the matrices four designs per call
 //! (`matrices_scene::eval_lanes`, bit for bit the scalar evaluator lane by lane) and keep of each
-//! window only [`hurwitz_window_summary`], the same code as [`hurwitz_window`] without the
-//! allocation of the stable intervals.
+//! window only [`hurwitz_window_summary`] (the same code as [`hurwitz_window`] without the
+//! allocation of the stable intervals), computed for the same four designs at once without a
+//! branch per design ([`hurwitz_window_summary_lanes`], equal to it design by design), so that
+//! the Hurwitz sweep never drops to scalar code per design.
 //!
 //! The designs stream through the evaluators in blocks of [`BLOCK`] (parallel within a block)
 //! into a running summary, so memory does not depend on the number of designs;
@@ -19,13 +21,16 @@ use std::time::Instant;
 
 use rayon::prelude::*;
 
-use super::matrices::{matrices_of, matrices_scene, scene_index, Matrices};
+use super::matrices::{matrices_of, matrices_scene, scene_index};
 use super::params::{
     point_like, skate_limit, valid_within, TriangleSlack, WhippleError, WhippleParams, PARAM_NAMES,
 };
 #[cfg(doc)]
 use super::stability::hurwitz_window;
-use super::stability::{eigen_window, hurwitz_window_summary, EigenGrid, WindowSummary};
+#[cfg(doc)]
+use super::stability::hurwitz_window_summary;
+use super::stability::{eigen_window, EigenGrid, WindowSummary};
+use super::window_lanes::hurwitz_window_summary_lanes;
 use crate::numerics::rng::SplitMix64;
 
 /// How [`sweep`] computes each design's window.
@@ -343,13 +348,24 @@ fn param_indices<'a>(names: impl Iterator<Item = &'a str>) -> Result<Vec<usize>,
     Ok(out)
 }
 
+/// The indices of IRxx, IRyy, IFxx, IFyy in [`PARAM_NAMES`]: the wheels' triangle inequalities
+/// $I_{yy} \le 2 I_{xx}$ (within the slack) that [`valid_within`] checks.
+const WHEELS: [usize; 4] = [6, 7, 24, 25];
+const _: () = assert!(
+    matches!(PARAM_NAMES[6].as_bytes(), b"IRxx")
+        && matches!(PARAM_NAMES[7].as_bytes(), b"IRyy")
+        && matches!(PARAM_NAMES[24].as_bytes(), b"IFxx")
+        && matches!(PARAM_NAMES[25].as_bytes(), b"IFyy")
+);
+
 /// Designs processed per parallel task (a multiple of the lanes).
 const CHUNK: usize = 4096;
 /// Designs evaluated between two updates of the running summary (and two looks at the stop
 /// flag of [`sweep_stream`]); only one block's results are held at a time.
 pub const BLOCK: usize = 16 * CHUNK;
-/// Designs per call of [`matrices_scene::eval_lanes`].
+/// Designs per call of [`matrices_scene::eval_lanes`] and of [`hurwitz_window_summary_lanes`].
 const LANES: usize = matrices_scene::LANES;
+const _: () = assert!(LANES == super::window_lanes::LANES);
 
 /// Computes the window of every design of `designs` (a grid or random designs around `base`),
 /// in parallel with rayon, four designs per evaluation of the matrices
@@ -460,6 +476,19 @@ pub fn sweep_stream(
             (spreads.iter().map(|s| s.name.clone()).collect(), keys, *count)
         }
     };
+    // The draws of a random design that set a wheel's IRxx, IRyy, IFxx or IFyy: (position among
+    // the spreads, position in WHEELS, spread).
+    let wheel_draws: Vec<(usize, usize, f64)> = match designs {
+        Designs::Random { spreads, .. } => keys
+            .iter()
+            .zip(spreads)
+            .enumerate()
+            .filter_map(|(p, (k, s))| {
+                WHEELS.iter().position(|w| w == k).map(|slot| (p, slot, s.rel))
+            })
+            .collect(),
+        Designs::Grid(_) => Vec::new(),
+    };
     // Design i's parameter vector; false for a rejected random design.
     let fill = |i: usize, v: &mut [f64; 26]| -> bool {
         match designs {
@@ -473,7 +502,26 @@ pub fn sweep_stream(
             }
             Designs::Random { spreads, seed, .. } => {
                 let mut rng = SplitMix64(seed.wrapping_add(i as u64));
-                for _ in 0..MAX_DRAWS {
+                for draw in 0..MAX_DRAWS {
+                    // The wheels' triangle inequalities first, from the draws they need (the
+                    // test that rejects most draws: the benchmark's wheels are almost thin
+                    // discs); a draw that breaks one is rejected by `valid_within` too, so the
+                    // rest of its values are skipped, not computed (but the last draw is
+                    // computed whole: a rejected design reports its values).
+                    if !wheel_draws.is_empty() && draw + 1 < MAX_DRAWS {
+                        let mut w = WHEELS.map(|k| base_values[k]);
+                        for &(p, slot, rel) in &wheel_draws {
+                            let mut r = rng;
+                            r.skip(p as u64);
+                            w[slot] = r.scale(w[slot], rel);
+                        }
+                        if w[1] > 2.0 * w[0] * (1.0 + slack.0[0])
+                            || w[3] > 2.0 * w[2] * (1.0 + slack.0[1])
+                        {
+                            rng.skip(spreads.len() as u64);
+                            continue;
+                        }
+                    }
                     for (s, &k) in spreads.iter().zip(&keys) {
                         v[k] = rng.scale(base_values[k], s.rel);
                     }
@@ -512,11 +560,7 @@ pub fn sweep_stream(
                         std::array::from_fn(|a| std::array::from_fn(|j| values[j][index[a]]))
                     };
                     let o = matrices_scene::eval_lanes(&args);
-                    std::array::from_fn(|j| {
-                        let r = |k: usize| [[o[k][j], o[k + 1][j]], [o[k + 2][j], o[k + 3][j]]];
-                        let m = Matrices { m: r(0), c1: r(4), k0: r(8), k2: r(12) };
-                        Some(hurwitz_window_summary(&m, g))
-                    })
+                    hurwitz_window_summary_lanes(&o, g).map(Some)
                 }
                 Method::Eigen => std::array::from_fn(|j| {
                     if j >= n {
@@ -608,6 +652,55 @@ impl Part {
             self.values.extend(values);
             self.windows.push(w);
             self.valid.push(ok);
+        }
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// The random designs of [`sweep_designs`] (values and validity) are those of the plain
+    /// rejection loop, every value of every draw computed and checked by [`valid_within`]: the
+    /// draws rejected early by the wheels' inequalities are skipped, not changed.
+    #[test]
+    fn skipping_rejected_draws_keeps_the_designs() {
+        let base = WhippleParams::benchmark();
+        let names: Vec<&str> = PARAM_NAMES.iter().copied().filter(|n| *n != "g").collect();
+        let keys = param_indices(names.iter().copied()).expect("known names");
+        let slack = TriangleSlack::admitting(&base);
+        let count = 3000;
+        for (rel, seed) in [(0.2, 11u64), (0.6, 12)] {
+            let spreads: Vec<Spread> =
+                names.iter().map(|n| Spread { name: n.to_string(), rel }).collect();
+            let designs = Designs::Random { count, spreads: spreads.clone(), seed };
+            let out = sweep_designs(&base, &designs, Method::Hurwitz, true, &AtomicUsize::new(0))
+                .expect("valid spreads");
+            let mut draws = 0;
+            for i in 0..count {
+                let mut v = *base.values();
+                let mut rng = SplitMix64(seed.wrapping_add(i as u64));
+                let mut ok = false;
+                for _ in 0..MAX_DRAWS {
+                    draws += 1;
+                    for (s, &k) in spreads.iter().zip(&keys) {
+                        v[k] = rng.scale(base.values()[k], s.rel);
+                    }
+                    if valid_within(&v, &slack) {
+                        ok = true;
+                        break;
+                    }
+                }
+                assert_eq!(out.valid[i], ok, "design {i}");
+                let want: Vec<f64> = keys.iter().map(|&k| v[k]).collect();
+                assert_eq!(&out.values[i * keys.len()..(i + 1) * keys.len()], want, "design {i}");
+            }
+            // Most designs needed several draws (the early rejections were exercised), and at
+            // the wide spread some were rejected after every draw.
+            assert!(draws > 2 * count, "{draws} draws");
+            if rel > 0.5 {
+                assert!(out.rejected > 0, "no design rejected at spread {rel}");
+            }
         }
     }
 }
