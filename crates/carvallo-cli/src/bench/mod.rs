@@ -153,10 +153,6 @@ fn peer_rows(cfg: &Config, rows: &mut Vec<Row>) -> Option<PeerRatios> {
         let l = spread_lanes::<{ matrices_scene::Args::LEN }>(&other_args(&mx_names));
         time_ns(mt, || matrices_scene::eval_lanes_portable(black_box(&l))) / 4.0
     };
-    let uni_portable = |mt: f64| {
-        let a = uni::Args::from_array(uni_to(&other_args(&uni_names)));
-        time_ns(mt, || uni::eval_portable(black_box(&a)))
-    };
     let mx_lanes = |mt: f64, args: &[f64]| {
         let l = spread_lanes::<{ matrices_scene::Args::LEN }>(args);
         let got = matrices_scene::eval_lanes(&l);
@@ -194,7 +190,8 @@ fn peer_rows(cfg: &Config, rows: &mut Vec<Row>) -> Option<PeerRatios> {
             rust: &uni_eval,
             rust_ns: &uni_ns,
             lanes: None,
-            portable: Some(&uni_portable),
+            // Below `AVX2_MIN_OPS` since the optimised lowering (1,199 ops): one variant only.
+            portable: None,
             lanes_portable: None,
         },
     ];
