@@ -193,6 +193,8 @@ pub fn regen_selected(
     }
     // Every model prints its terms in the order of a full regeneration, however many are derived.
     crate::derive::declare_symbols();
+    // The lowering's placeholders next, so they have the same identities in every process.
+    crate::emit::declare_placeholders();
     let dir = workspace_root.join(GENERATED_DIR);
     let on_disk = read_tree(&dir)?;
     let mut models = Vec::with_capacity(derivations.len());

@@ -435,5 +435,4 @@ pub fn declare_symbols() {
     for name in SYMBOLS {
         let _ = var(name);
     }
-    crate::emit::declare_placeholders();
 }

@@ -73,7 +73,8 @@ pub const EFFORTS: [Effort; 2] = [
 pub const PLACEHOLDERS: usize = 4096;
 
 /// Creates the placeholder symbols `carvallo_lowering::x0` … in order, right after the
-/// derivations' own symbols ([`crate::derive::declare_symbols`]), so that they have the same
+/// derivations' own symbols (`derive::declare_symbols`; `regen` and the derivation tests call
+/// both before anything else), so that they have the same
 /// identities in every process, whatever it did before (the optimiser's output depends on them).
 pub fn declare_placeholders() {
     for i in 0..PLACEHOLDERS {

@@ -71,6 +71,7 @@ pub fn on_symbolica_thread(body: fn()) {
             // every test sees the state the regeneration had (a derivation that fails is
             // reported by the tests that use it).
             carvallo_codegen::derive::declare_symbols();
+            carvallo_codegen::emit::declare_placeholders();
             for (model, _) in DERIVATIONS {
                 let _ = catch_unwind(|| derived(model));
             }
