@@ -58,7 +58,7 @@ use super::certified::{Bounded, Certified};
 use super::model::Whipple;
 use crate::numerics::dd::Dd;
 use crate::numerics::eigen::{eigenvalues4, Eigenvalue};
-use crate::numerics::poly::{poly_eval_low, real_roots_in};
+use crate::numerics::poly::{poly_eval_low, real_roots_in, sign_change_roots_in};
 
 crate::scene! {
     /// The closed-loop characteristic polynomial: `cl_a{k}_{j}`, the coefficient of $v^j$ in
@@ -206,78 +206,137 @@ impl ClosedLoopPoly {
     /// $H_3 = a_1(a_2a_3 - a_1a_4) - a_0a_3^2$ as a polynomial in $v$ (lowest first, degree
     /// at most 6), the products in double-double arithmetic, rounded once.
     pub fn h3(&self) -> [f64; 7] {
-        h3_of(&self.coeffs.map(|c| c.to_vec()), 7).try_into().expect("seven coefficients")
+        h3_of(&self.coeffs)
     }
 }
 
-/// The product of two polynomials (lowest first) in double-double arithmetic.
-fn mul_dd(a: &[Dd], b: &[Dd]) -> Vec<Dd> {
-    let mut out = vec![Dd::from(0.0); a.len() + b.len() - 1];
-    for (i, x) in a.iter().enumerate() {
-        for (j, y) in b.iter().enumerate() {
-            out[i + j] = out[i + j] + *x * *y;
+/// A polynomial (lowest first) of degree at most 6 in double-double arithmetic, on the
+/// stack: `n` coefficients.
+#[derive(Clone, Copy)]
+struct DdPoly {
+    c: [Dd; 7],
+    n: usize,
+}
+
+impl DdPoly {
+    /// The first `max` coefficients of `a` without trailing zeros.
+    fn of(a: &[f64; 5], max: usize) -> DdPoly {
+        let n = a[..max].iter().rposition(|&x| x != 0.0).map_or(0, |i| i + 1);
+        let mut c = [Dd::from(0.0); 7];
+        for (ci, &x) in c.iter_mut().zip(&a[..n]) {
+            *ci = Dd::from(x);
         }
+        DdPoly { c, n }
     }
-    out
+
+    /// The product; the degrees of the Hurwitz functions keep it within degree 6.
+    fn mul(&self, b: &DdPoly) -> DdPoly {
+        let mut c = [Dd::from(0.0); 7];
+        if self.n == 0 || b.n == 0 {
+            return DdPoly { c, n: 0 };
+        }
+        for (i, x) in self.c[..self.n].iter().enumerate() {
+            for (j, y) in b.c[..b.n].iter().enumerate() {
+                c[i + j] = c[i + j] + *x * *y;
+            }
+        }
+        DdPoly { c, n: self.n + b.n - 1 }
+    }
+
+    fn sub(&self, b: &DdPoly) -> DdPoly {
+        let mut c = self.c;
+        for (ci, y) in c.iter_mut().zip(&b.c[..b.n]) {
+            *ci = *ci - *y;
+        }
+        DdPoly { c, n: self.n.max(b.n) }
+    }
 }
 
-fn sub_dd(a: &[Dd], b: &[Dd]) -> Vec<Dd> {
-    let n = a.len().max(b.len());
-    let z = Dd::from(0.0);
-    (0..n).map(|i| *a.get(i).unwrap_or(&z) - *b.get(i).unwrap_or(&z)).collect()
-}
-
-/// $H_3$ of the polynomials `a[k]` (lowest first), as `len` coefficients rounded to `f64`.
-fn h3_of(a: &[Vec<f64>; 5], len: usize) -> Vec<f64> {
-    let d: Vec<Vec<Dd>> = a.iter().map(|p| p.iter().map(|&x| Dd::from(x)).collect()).collect();
-    let a2a3 = mul_dd(&d[2], &d[3]);
-    let a1a4 = mul_dd(&d[1], &d[4]);
-    let left = mul_dd(&d[1], &sub_dd(&a2a3, &a1a4));
-    let right = mul_dd(&d[0], &mul_dd(&d[3], &d[3]));
-    let mut h: Vec<f64> = sub_dd(&left, &right).iter().map(|x| x.to_f64()).collect();
-    h.resize(len.max(h.len()), 0.0);
-    h.truncate(len);
-    h
+/// $H_3$ of the polynomials `a[k]` (lowest first; $a_k$ taken to its degree $4 - k$, the
+/// coefficients above it being zero, or only rounding in interpolated ones): the products in
+/// double-double arithmetic over the nonzero coefficients, the result rounded to `f64` once.
+fn h3_of(a: &[[f64; 5]; 5]) -> [f64; 7] {
+    let d: [DdPoly; 5] = std::array::from_fn(|k| DdPoly::of(&a[k], 5 - k));
+    let inner = d[2].mul(&d[3]).sub(&d[1].mul(&d[4]));
+    let h = d[1].mul(&inner).sub(&d[0].mul(&d[3].mul(&d[3])));
+    std::array::from_fn(|i| if i < h.n { h.c[i].to_f64() } else { 0.0 })
 }
 
 /// The stable intervals of $[from, to]$ for the polynomials `a[k]` in a variable $t$ (lowest
-/// first), $t$ mapped to the speed by `speed`: every real root of $a_0 \dots a_3$ and $H_3$ in
-/// $[t_0, t_1]$ is a cut, and the Routh–Hurwitz conditions are tested between cuts. Adjacent
-/// stable intervals are merged into `out` (already sorted, as the calls come in order).
+/// first), $t$ mapped to the speed by `speed`, in two stages without allocation (but `out`'s):
+///
+/// 1. every point of $(t_0, t_1)$ where one of $a_0 \dots a_3$ changes sign
+///    ([`sign_change_roots_in`]: Descartes' rule on the Bernstein coefficients skips a
+///    polynomial or a piece without a root, and each isolated root is located to adjacent
+///    floats by safeguarded Newton) is a cut; between cuts the signs of $a_k a_4$ are tested,
+///    giving the candidate intervals where all are positive;
+/// 2. $H_3$ (`h3`, formed only if there is a candidate) is cut at its sign changes within each
+///    candidate only, and tested between those cuts.
+///
+/// Adjacent stable intervals are merged into `out` (already sorted, as the calls come in
+/// order).
 fn hurwitz_intervals(
-    a: &[Vec<f64>; 5],
-    h3: &[f64],
+    a: &[[f64; 5]; 5],
+    h3: &dyn Fn() -> [f64; 7],
     (t0, t1): (f64, f64),
     speed: &dyn Fn(f64) -> f64,
     out: &mut Vec<(f64, f64)>,
 ) {
+    // At most 8 sign changes per polynomial (more than its degree only from the rounding of
+    // interpolated coefficients) and the two ends.
+    let mut cuts = [0.0; 2 + 4 * 8];
+    cuts[0] = t0;
+    let mut n = 1;
+    for p in &a[..4] {
+        for &t in sign_change_roots_in(p, t0, t1).as_slice() {
+            cuts[n] = t;
+            n += 1;
+        }
+    }
+    cuts[1..n].sort_unstable_by(f64::total_cmp);
+    cuts[n] = t1;
+    n += 1;
+    let mid_of = |lo: f64, hi: f64| if hi.is_finite() { 0.5 * (lo + hi) } else { 2.0 * lo + 1.0 };
     // a_4 = det M (constant for constant gains; never zero for a valid design): the sign of
     // the leading coefficient is normalised by testing a_k a_4 > 0, H3 a_4 > 0.
-    let mut cuts = vec![t0];
-    for p in a[..4].iter().map(Vec::as_slice).chain([h3]) {
-        cuts.extend(real_roots_in(p, t0, t1).into_iter().filter(|&t| t > t0 && t < t1));
-    }
-    cuts.sort_by(f64::total_cmp);
-    cuts.dedup();
-    cuts.push(t1);
-    let stable_at = |t: f64| {
-        let s = poly_eval_low(&a[4], t).signum();
-        s != 0.0
-            && a.iter().all(|p| poly_eval_low(p, t) * s > 0.0)
-            && poly_eval_low(h3, t) * s > 0.0
+    let lead = |t: f64| poly_eval_low(&a[4], t).signum();
+    let candidate = |t: f64| {
+        let s = lead(t);
+        s != 0.0 && a.iter().all(|p| poly_eval_low(p, t) * s > 0.0)
     };
-    for pair in cuts.windows(2) {
+    // The candidate intervals, adjacent ones merged.
+    let mut cand = [(0.0, 0.0); 2 + 4 * 8];
+    let mut nc = 0;
+    for pair in cuts[..n].windows(2) {
         let (lo, hi) = (pair[0], pair[1]);
-        if hi <= lo {
-            continue;
-        }
-        let mid = if hi.is_finite() { 0.5 * (lo + hi) } else { 2.0 * lo + 1.0 };
-        if stable_at(mid) {
-            let (vlo, vhi) = (speed(lo), speed(hi));
-            match out.last_mut() {
-                Some(last) if last.1 == vlo => last.1 = vhi,
-                _ => out.push((vlo, vhi)),
+        if hi > lo && candidate(mid_of(lo, hi)) {
+            if nc > 0 && cand[nc - 1].1 == lo {
+                cand[nc - 1].1 = hi;
+            } else {
+                cand[nc] = (lo, hi);
+                nc += 1;
             }
+        }
+    }
+    if nc == 0 {
+        return;
+    }
+    let h3 = h3();
+    for &(lo, hi) in &cand[..nc] {
+        let roots = sign_change_roots_in(&h3, lo, hi);
+        let mut left = lo;
+        for &right in roots.as_slice().iter().chain([&hi]) {
+            if right > left {
+                let m = mid_of(left, right);
+                if poly_eval_low(&h3, m) * lead(m) > 0.0 && candidate(m) {
+                    let (vlo, vhi) = (speed(left), speed(right));
+                    match out.last_mut() {
+                        Some(last) if last.1 == vlo => last.1 = vhi,
+                        _ => out.push((vlo, vhi)),
+                    }
+                }
+            }
+            left = right;
         }
     }
 }
@@ -496,17 +555,14 @@ impl Whipple {
             // Each a_k is a polynomial of degree <= 4 in v on [v0, v1]: interpolate it through
             // t = 0, 1/4, ..., 1 (v = v0 + t (v1 - v0)), exactly up to rounding.
             let speed = |t: f64| v0 + t * (v1 - v0);
-            let samples: Vec<[f64; 5]> = (0..5)
-                .map(|i| {
-                    let v = speed(i as f64 / 4.0);
-                    let g = g0.lerp(&g1, i as f64 / 4.0);
-                    self.closed_loop_poly(&g).at(v)
-                })
-                .collect();
-            let a: [Vec<f64>; 5] = std::array::from_fn(|k| {
-                interpolate_quartic(&std::array::from_fn(|i| samples[i][k])).to_vec()
+            let samples: [[f64; 5]; 5] = std::array::from_fn(|i| {
+                let v = speed(i as f64 / 4.0);
+                let g = g0.lerp(&g1, i as f64 / 4.0);
+                self.closed_loop_poly(&g).at(v)
             });
-            let h3 = h3_of(&a, 7);
+            let a: [[f64; 5]; 5] = std::array::from_fn(|k| {
+                interpolate_quartic(&std::array::from_fn(|i| samples[i][k]))
+            });
             let t = |v: f64| ((v - v0) / (v1 - v0)).clamp(0.0, 1.0);
             let exact = |x: f64| {
                 if x == t(lo) {
@@ -517,7 +573,7 @@ impl Whipple {
                     speed(x)
                 }
             };
-            hurwitz_intervals(&a, &h3, (t(lo), t(hi)), &exact, &mut stable);
+            hurwitz_intervals(&a, &|| h3_of(&a), (t(lo), t(hi)), &exact, &mut stable);
         }
         Ok(ClosedLoopWindow { from, to, stable })
     }
@@ -619,9 +675,44 @@ impl Whipple {
 
 /// The stable range of a closed-loop polynomial in $[from, to]$ ($0 \le from \le to$).
 pub fn closed_loop_window_of(p: &ClosedLoopPoly, from: f64, to: f64) -> ClosedLoopWindow {
-    let a: [Vec<f64>; 5] = p.coeffs.map(|c| c.to_vec());
     let mut stable = Vec::new();
-    hurwitz_intervals(&a, &p.h3(), (from, to), &|v| v, &mut stable);
+    hurwitz_intervals(&p.coeffs, &|| p.h3(), (from, to), &|v| v, &mut stable);
+    ClosedLoopWindow { from, to, stable }
+}
+
+/// The former route of [`closed_loop_window_of`], kept as a reference and as the baseline of
+/// `carvallo bench`: every real root of $a_0 \dots a_3$ and $H_3$ in the range by
+/// [`real_roots_in`] (isolation by the roots of the derivatives, recursively, each to adjacent
+/// floats, in vectors), sorted, the Routh–Hurwitz conditions tested between consecutive cuts.
+pub fn closed_loop_window_all_roots(p: &ClosedLoopPoly, from: f64, to: f64) -> ClosedLoopWindow {
+    let (a, h3) = (&p.coeffs, p.h3());
+    let mut cuts = vec![from];
+    for q in a[..4].iter().map(|q| &q[..]).chain([&h3[..]]) {
+        cuts.extend(real_roots_in(q, from, to).into_iter().filter(|&t| t > from && t < to));
+    }
+    cuts.sort_by(f64::total_cmp);
+    cuts.dedup();
+    cuts.push(to);
+    let stable_at = |t: f64| {
+        let s = poly_eval_low(&a[4], t).signum();
+        s != 0.0
+            && a.iter().all(|q| poly_eval_low(q, t) * s > 0.0)
+            && poly_eval_low(&h3, t) * s > 0.0
+    };
+    let mut stable: Vec<(f64, f64)> = Vec::new();
+    for pair in cuts.windows(2) {
+        let (lo, hi) = (pair[0], pair[1]);
+        if hi <= lo {
+            continue;
+        }
+        let mid = if hi.is_finite() { 0.5 * (lo + hi) } else { 2.0 * lo + 1.0 };
+        if stable_at(mid) {
+            match stable.last_mut() {
+                Some(last) if last.1 == lo => last.1 = hi,
+                _ => stable.push((lo, hi)),
+            }
+        }
+    }
     ClosedLoopWindow { from, to, stable }
 }
 
