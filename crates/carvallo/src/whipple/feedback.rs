@@ -680,6 +680,86 @@ pub fn closed_loop_window_of(p: &ClosedLoopPoly, from: f64, to: f64) -> ClosedLo
     ClosedLoopWindow { from, to, stable }
 }
 
+/// The edges of a closed-loop window located again at `bits` bits (the reference of
+/// `carvallo bench` and of the tests): the closed-loop polynomial's coefficients evaluated at
+/// `bits` bits from the IR program (`carvallo_ir::hp`, the design's parameters and the gains
+/// `k` exactly as given), then for every edge $e$ of `window` inside $(from, to)$ a bracket
+/// $e(1 \pm \delta)$ ($\delta = 10^{-10}$, grown tenfold until the verdict differs at its
+/// ends, up to $10^{-3}$) bisected 200 times on the Routh–Hurwitz verdict ($a_0 \dots a_3$
+/// and $H_3 = a_1(a_2a_3 - a_1a_4) - a_0a_3^2$ of the same sign as $a_4$, all at `bits`
+/// bits, $H_3$ from the values $a_k(v)$ and not from coefficients). Each interval's ends in
+/// the order of `window.stable`, rounded to the nearest `f64`; an end equal to `from` or `to`
+/// is returned as it is, and `None` marks an edge where no bracket changes verdict (the `f64`
+/// edge is off by more than $10^{-3}$ relative) or the evaluation failed.
+pub fn closed_loop_reference_edges(
+    bike: &Whipple,
+    k: &Gains,
+    window: &ClosedLoopWindow,
+    bits: usize,
+) -> Vec<(Option<f64>, Option<f64>)> {
+    use astro_float::{BigFloat, RoundingMode};
+    use carvallo_ir::{hp, Program};
+    const RM: RoundingMode = RoundingMode::ToEven;
+    let failed = || window.stable.iter().map(|_| (None, None)).collect();
+    let Some(program) = Program::parse(crate::artifacts::WHIPPLE.ir)
+        .ok()
+        .and_then(|p| p.select_outputs(closed_loop_scene::OUTPUTS).ok())
+    else {
+        return failed();
+    };
+    let params = bike.params();
+    let args: Vec<f64> = program.params.iter().map(|n| params.get(n).unwrap_or(f64::NAN)).collect();
+    let inputs: Vec<f64> = program.inputs.iter().map(|n| k.get(n).unwrap_or(f64::NAN)).collect();
+    let Ok(o) = hp::eval(&program, &args, &inputs, bits) else { return failed() };
+    // o: cl_a0_0..4, cl_a1_0..3, cl_a2_0..2, cl_a3_0..1, cl_a4_0.
+    let starts = [0, 5, 9, 12, 14, 15];
+    let p = bits;
+    let at = |v: &BigFloat| -> [BigFloat; 5] {
+        std::array::from_fn(|kk| {
+            o[starts[kk]..starts[kk + 1]]
+                .iter()
+                .rev()
+                .fold(BigFloat::from_word(0, p), |acc, c| acc.mul(v, p, RM).add(c, p, RM))
+        })
+    };
+    let stable =
+        |v: &BigFloat| {
+            let a = at(v);
+            let h3 = a[1]
+                .mul(&a[2].mul(&a[3], p, RM).sub(&a[1].mul(&a[4], p, RM), p, RM), p, RM)
+                .sub(&a[0].mul(&a[3], p, RM).mul(&a[3], p, RM), p, RM);
+            let lead = a[4].is_positive();
+            !a[4].is_zero()
+                && a[..4].iter().chain([&h3]).all(|x| !x.is_zero() && x.is_positive() == lead)
+        };
+    let refine = |e: f64| -> Option<f64> {
+        if e == window.from || e == window.to || !e.is_finite() {
+            return Some(e);
+        }
+        let mut delta = 1e-10;
+        while delta <= 1e-3 {
+            let (mut lo, mut hi) =
+                (hp::from_f64(e * (1.0 - delta), p), hp::from_f64(e * (1.0 + delta), p));
+            let at_lo = stable(&lo);
+            if at_lo != stable(&hi) {
+                let half = hp::from_f64(0.5, p);
+                for _ in 0..200 {
+                    let mid = lo.add(&hi, p, RM).mul(&half, p, RM);
+                    if stable(&mid) == at_lo {
+                        lo = mid;
+                    } else {
+                        hi = mid;
+                    }
+                }
+                return Some(hp::to_f64(&lo.add(&hi, p, RM).mul(&half, p, RM)));
+            }
+            delta *= 10.0;
+        }
+        None
+    };
+    window.stable.iter().map(|&(lo, hi)| (refine(lo), refine(hi))).collect()
+}
+
 /// The former route of [`closed_loop_window_of`], kept as a reference and as the baseline of
 /// `carvallo bench`: every real root of $a_0 \dots a_3$ and $H_3$ in the range by
 /// [`real_roots_in`] (isolation by the roots of the derivatives, recursively, each to adjacent
