@@ -241,16 +241,18 @@ pub fn sign_change_roots_in(coeffs: &[f64], lo: f64, hi: f64) -> RootsUpTo8 {
         wk *= w;
         *x *= wk;
     }
-    // Bernstein coefficients: b_i = sum_{k <= i} C(i, k) / C(n, k) q_k.
+    // Bernstein coefficients b_i = sum_{k <= i} C(i, k) q_k / C(n, k): divide by the
+    // binomials, then n passes of Pascal's rule (x_i += x_{i-1}) give the sums.
     let mut b = [0.0; MAX_BERNSTEIN_DEGREE + 1];
-    for (i, bi) in b.iter_mut().enumerate().take(n) {
-        let (mut s, mut cik, mut cnk) = (0.0, 1.0, 1.0);
-        for (k, qk) in q.iter().enumerate().take(i + 1) {
-            s += cik / cnk * qk;
-            cik = cik * (i - k) as f64 / (k + 1) as f64;
-            cnk = cnk * (deg - k) as f64 / (k + 1) as f64;
+    let mut cnk = 1.0;
+    for k in 0..n {
+        b[k] = q[k] / cnk;
+        cnk = cnk * (deg - k) as f64 / (k + 1) as f64;
+    }
+    for j in 1..n {
+        for i in (j..n).rev() {
+            b[i] += b[i - 1];
         }
-        *bi = s;
     }
     let mut d = [0.0; MAX_BERNSTEIN_DEGREE];
     for k in 1..n {
@@ -332,8 +334,9 @@ fn bernstein_pieces(
 /// values at the ends: Newton's method safeguarded as in `rtsafe` (Press et al., *Numerical
 /// Recipes*, § 9.4): the step starts at the secant point of the ends, a Newton step that
 /// leaves the bracket or does not halve the step before the last is replaced by bisection,
-/// and the bracket shrinks with every evaluation; it stops at an exact zero, at a step below
-/// one unit in the last place, or when the bracket is two adjacent floats.
+/// and the bracket shrinks with every evaluation; it stops at an exact zero, when the Newton
+/// step is below one unit in the last place (before it is taken), or when the bracket is two
+/// adjacent floats.
 fn bracketed_newton(c: &[f64], d: &[f64], (mut a, mut b): (f64, f64), f: (f64, f64)) -> f64 {
     let positive_at_a = f.0 > 0.0;
     let secant = a - f.0 * (b - a) / (f.1 - f.0);
@@ -353,8 +356,13 @@ fn bracketed_newton(c: &[f64], d: &[f64], (mut a, mut b): (f64, f64), f: (f64, f
         if mid <= a || mid >= b {
             return x;
         }
-        let dfx = poly_eval_low(d, x);
-        let newton = x - fx / dfx;
+        let step = fx / poly_eval_low(d, x);
+        if step.abs() <= f64::EPSILON * x.abs() {
+            // Newton moves less than an ulp: x is the root to the resolution of p.
+            return x;
+        }
+        let newton = x - step;
+        let dfx = fx / step;
         let next = if newton > a && newton < b && (2.0 * fx).abs() <= (dx_old * dfx).abs() {
             newton
         } else {

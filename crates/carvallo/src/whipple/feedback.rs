@@ -56,7 +56,8 @@ use nalgebra::{Matrix2x4, Matrix4};
 
 use super::certified::{Bounded, Certified};
 use super::model::Whipple;
-use crate::numerics::dd::Dd;
+use super::params::PARAM_NAMES;
+use crate::numerics::dd::{two_prod, Dd};
 use crate::numerics::eigen::{eigenvalues4, Eigenvalue};
 use crate::numerics::poly::{poly_eval_low, real_roots_in, sign_change_roots_in};
 
@@ -218,29 +219,44 @@ struct DdPoly {
     n: usize,
 }
 
-impl DdPoly {
-    /// The first `max` coefficients of `a` without trailing zeros.
-    fn of(a: &[f64; 5], max: usize) -> DdPoly {
-        let n = a[..max].iter().rposition(|&x| x != 0.0).map_or(0, |i| i + 1);
-        let mut c = [Dd::from(0.0); 7];
-        for (ci, &x) in c.iter_mut().zip(&a[..n]) {
-            *ci = Dd::from(x);
-        }
-        DdPoly { c, n }
-    }
+/// The number of coefficients of `a` up to its last nonzero one among the first `max`.
+fn len_of(a: &[f64; 5], max: usize) -> usize {
+    a[..max].iter().rposition(|&x| x != 0.0).map_or(0, |i| i + 1)
+}
 
-    /// The product; the degrees of the Hurwitz functions keep it within degree 6.
-    fn mul(&self, b: &DdPoly) -> DdPoly {
-        let mut c = [Dd::from(0.0); 7];
-        if self.n == 0 || b.n == 0 {
-            return DdPoly { c, n: 0 };
+impl DdPoly {
+    const ZERO: DdPoly = DdPoly { c: [Dd { hi: 0.0, lo: 0.0 }; 7], n: 0 };
+
+    /// The exact product of two `f64` polynomials (each product exact by Dekker's
+    /// TwoProduct, the sums in double-double).
+    fn mul_ff(a: &[f64], b: &[f64]) -> DdPoly {
+        let mut p = DdPoly::ZERO;
+        if a.is_empty() || b.is_empty() {
+            return p;
         }
-        for (i, x) in self.c[..self.n].iter().enumerate() {
-            for (j, y) in b.c[..b.n].iter().enumerate() {
-                c[i + j] = c[i + j] + *x * *y;
+        for (i, &x) in a.iter().enumerate() {
+            for (j, &y) in b.iter().enumerate() {
+                let (hi, lo) = two_prod(x, y);
+                p.c[i + j] = p.c[i + j] + Dd { hi, lo };
             }
         }
-        DdPoly { c, n: self.n + b.n - 1 }
+        p.n = a.len() + b.len() - 1;
+        p
+    }
+
+    /// The product by an `f64` polynomial `a`.
+    fn mul_f(&self, a: &[f64]) -> DdPoly {
+        let mut p = DdPoly::ZERO;
+        if a.is_empty() || self.n == 0 {
+            return p;
+        }
+        for (i, &x) in a.iter().enumerate() {
+            for (j, y) in self.c[..self.n].iter().enumerate() {
+                p.c[i + j] = p.c[i + j] + *y * Dd::from(x);
+            }
+        }
+        p.n = a.len() + self.n - 1;
+        p
     }
 
     fn sub(&self, b: &DdPoly) -> DdPoly {
@@ -254,11 +270,12 @@ impl DdPoly {
 
 /// $H_3$ of the polynomials `a[k]` (lowest first; $a_k$ taken to its degree $4 - k$, the
 /// coefficients above it being zero, or only rounding in interpolated ones): the products in
-/// double-double arithmetic over the nonzero coefficients, the result rounded to `f64` once.
+/// double-double arithmetic over the nonzero coefficients (the first ones exact), the result
+/// rounded to `f64` once.
 fn h3_of(a: &[[f64; 5]; 5]) -> [f64; 7] {
-    let d: [DdPoly; 5] = std::array::from_fn(|k| DdPoly::of(&a[k], 5 - k));
-    let inner = d[2].mul(&d[3]).sub(&d[1].mul(&d[4]));
-    let h = d[1].mul(&inner).sub(&d[0].mul(&d[3].mul(&d[3])));
+    let s: [&[f64]; 5] = std::array::from_fn(|k| &a[k][..len_of(&a[k], 5 - k)]);
+    let inner = DdPoly::mul_ff(s[2], s[3]).sub(&DdPoly::mul_ff(s[1], s[4]));
+    let h = inner.mul_f(s[1]).sub(&DdPoly::mul_ff(s[3], s[3]).mul_f(s[0]));
     std::array::from_fn(|i| if i < h.n { h.c[i].to_f64() } else { 0.0 })
 }
 
@@ -482,10 +499,28 @@ impl Whipple {
     /// The closed-loop characteristic polynomial for the gains `k`, from the generated
     /// evaluator.
     pub fn closed_loop_poly(&self, k: &Gains) -> ClosedLoopPoly {
-        let params = self.params();
-        let args = closed_loop_scene::Args::from_fn(|name| {
-            k.get(name).or_else(|| params.get(name)).unwrap_or(f64::NAN)
+        // Where each argument of the scene comes from: a parameter's index in PARAM_NAMES,
+        // or (from PARAM_NAMES.len() on) a gain's index in GAIN_NAMES; found once.
+        static SOURCE: std::sync::OnceLock<[usize; closed_loop_scene::Args::LEN]> =
+            std::sync::OnceLock::new();
+        let source = SOURCE.get_or_init(|| {
+            std::array::from_fn(|i| {
+                let name = closed_loop_scene::ARGS[i];
+                PARAM_NAMES.iter().position(|n| *n == name).unwrap_or_else(|| {
+                    PARAM_NAMES.len() + Gains::index(name).expect("a parameter or a gain")
+                })
+            })
         });
+        let (values, gains) = (self.params().values(), k.values());
+        let np = PARAM_NAMES.len();
+        let args = closed_loop_scene::Args::from_array(std::array::from_fn(|i| {
+            let s = source[i];
+            if s < np {
+                values[s]
+            } else {
+                gains[s - np]
+            }
+        }));
         let o = closed_loop_scene::eval(&args);
         ClosedLoopPoly {
             coeffs: [
