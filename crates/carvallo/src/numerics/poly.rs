@@ -193,7 +193,8 @@ impl RootsUpTo8 {
 /// (lowest first, degree at most [`MAX_BERNSTEIN_DEGREE`]; `hi` may be infinite: Cauchy's
 /// bound closes the interval) changes sign, ascending, each located to adjacent floats; no
 /// allocation. These are the roots of odd multiplicity that [`real_roots_in`] reports inside
-/// the interval, found without the roots of the derivatives:
+/// the interval, found without the roots of the derivatives. A line or a quadratic is solved
+/// in closed form (the cancellation-free quadratic formula); above,
 ///
 /// the polynomial is written in the Bernstein basis of the interval (a Taylor shift and
 /// scaling, then the change of basis, $O(n^2)$); by Descartes' rule the number of sign changes
@@ -225,6 +226,29 @@ pub fn sign_change_roots_in(coeffs: &[f64], lo: f64, hi: f64) -> RootsUpTo8 {
         }
         bound
     };
+    if deg <= 2 {
+        // Closed form: the root of a line, the cancellation-free quadratic formula (a double
+        // or complex pair changes no sign).
+        let mut r = [f64::NAN; 2];
+        if deg == 1 {
+            r[0] = -c[0] / c[1];
+        } else {
+            let disc = c[1] * c[1] - 4.0 * c[2] * c[0];
+            if disc > 0.0 {
+                let q = -0.5 * (c[1] + c[1].signum() * disc.sqrt());
+                r = [q / c[2], c[0] / q];
+                if r[1] < r[0] {
+                    r.swap(0, 1);
+                }
+            }
+        }
+        for x in r {
+            if x > lo && x < hi {
+                out.push(x);
+            }
+        }
+        return out;
+    }
     // Taylor shift to lo, scaling by w = hi - lo: q(y) = p(lo + w y), y in [0, 1].
     let mut q = [0.0; MAX_BERNSTEIN_DEGREE + 1];
     q[..n].copy_from_slice(c);

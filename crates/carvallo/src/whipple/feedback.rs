@@ -57,7 +57,7 @@ use nalgebra::{Matrix2x4, Matrix4};
 use super::certified::{Bounded, Certified};
 use super::model::Whipple;
 use super::params::PARAM_NAMES;
-use crate::numerics::dd::{two_prod, Dd};
+use crate::numerics::dd::{two_prod, two_sum, Dd};
 use crate::numerics::eigen::{eigenvalues4, Eigenvalue};
 use crate::numerics::poly::{poly_eval_low, real_roots_in, sign_change_roots_in};
 
@@ -219,6 +219,17 @@ struct DdPoly {
     n: usize,
 }
 
+/// `a + b` in double-double arithmetic, the cheaper sum (one TwoSum; error below
+/// $2u^2(|a| + |b|)$, far below the final rounding of an $H_3$ coefficient to `f64` unless
+/// it cancels by a factor $1/u$).
+#[inline]
+fn accumulate(a: Dd, b: Dd) -> Dd {
+    let (s, e) = two_sum(a.hi, b.hi);
+    let e = e + (a.lo + b.lo);
+    let hi = s + e;
+    Dd { hi, lo: e - (hi - s) }
+}
+
 /// The number of coefficients of `a` up to its last nonzero one among the first `max`.
 fn len_of(a: &[f64; 5], max: usize) -> usize {
     a[..max].iter().rposition(|&x| x != 0.0).map_or(0, |i| i + 1)
@@ -237,7 +248,7 @@ impl DdPoly {
         for (i, &x) in a.iter().enumerate() {
             for (j, &y) in b.iter().enumerate() {
                 let (hi, lo) = two_prod(x, y);
-                p.c[i + j] = p.c[i + j] + Dd { hi, lo };
+                p.c[i + j] = accumulate(p.c[i + j], Dd { hi, lo });
             }
         }
         p.n = a.len() + b.len() - 1;
@@ -252,7 +263,8 @@ impl DdPoly {
         }
         for (i, &x) in a.iter().enumerate() {
             for (j, y) in self.c[..self.n].iter().enumerate() {
-                p.c[i + j] = p.c[i + j] + *y * Dd::from(x);
+                let (hi, lo) = two_prod(y.hi, x);
+                p.c[i + j] = accumulate(p.c[i + j], Dd { hi, lo: lo + y.lo * x });
             }
         }
         p.n = a.len() + self.n - 1;
