@@ -30,12 +30,20 @@
 //! $H_3 = a_1(a_2a_3 - a_1a_4) - a_0a_3^2 > 0$. The $a_k$ are polynomials in $v$ of degree at
 //! most $4 - k$ and $H_3$ one of degree at most 6 (its coefficients are computed in
 //! double-double arithmetic, then rounded). With gains the odd powers of $v$ no longer vanish,
-//! so the substitution $u = v^2$ of [`super::stability`] does not apply: the real roots of the
-//! five polynomials in the speed range are found by [`real_roots_in`] (isolation by the roots
-//! of the derivative, then Newton's method kept inside each bracket, to adjacent floats), sorted,
-//! and the Routh–Hurwitz conditions are tested once between consecutive cuts. A closed-loop
-//! window costs about 7 µs on the benchmark (release build; the open-loop window, in closed form
-//! in $u = v^2$, about 0.15 µs from the matrices: `carvallo bench`).
+//! so the substitution $u = v^2$ of [`super::stability`] does not apply. The window is found
+//! in two stages without allocation ([`closed_loop_window_of`]): the points where
+//! $a_0 \dots a_3$ change sign in the speed range ([`sign_change_roots_in`]: a line or a
+//! quadratic in closed form; above, Descartes' rule on the Bernstein coefficients of the range
+//! skips a polynomial or a half without a root, and each isolated root is located to adjacent
+//! floats by safeguarded Newton) cut it into candidate intervals where all four have the sign
+//! of $a_4$; only if there is one is $H_3$ formed, and only its sign changes inside the
+//! candidates are located. The Routh–Hurwitz conditions are tested once between consecutive
+//! cuts. A closed-loop window costs about 0.8 µs on the benchmark with balance assist, plus
+//! 0.12 µs for the generated coefficients (release build, `carvallo bench`; the former route,
+//! every real root of the five polynomials by [`real_roots_in`], kept as
+//! [`closed_loop_window_all_roots`], about 6 µs; the open-loop window, in closed form in
+//! $u = v^2$, about 0.2 µs from the parameters). [`closed_loop_reference_edges`] locates the
+//! edges again at 256 bits: the reference of the tests and of `carvallo bench`.
 //!
 //! Near an edge [`ClosedLoopPoly::classify`] gives a certified verdict (double-double
 //! arithmetic with a running error bound, as [`super::certified`] does for the open loop).
