@@ -211,7 +211,7 @@ impl RootsUpTo8 {
 pub fn sign_change_roots_in(coeffs: &[f64], lo: f64, hi: f64) -> RootsUpTo8 {
     let mut out = RootsUpTo8::default();
     let n = coeffs.iter().rposition(|&c| c != 0.0).map_or(0, |i| i + 1);
-    if n < 2 || n > MAX_BERNSTEIN_DEGREE + 1 || lo.is_nan() || hi.is_nan() || lo >= hi {
+    if !(2..=MAX_BERNSTEIN_DEGREE + 1).contains(&n) || lo.is_nan() || hi.is_nan() || lo >= hi {
         return out;
     }
     let c = &coeffs[..n];
@@ -221,7 +221,7 @@ pub fn sign_change_roots_in(coeffs: &[f64], lo: f64, hi: f64) -> RootsUpTo8 {
     } else {
         let lead = c[deg];
         let bound = 1.0 + c[..deg].iter().map(|x| (x / lead).abs()).fold(0.0, f64::max);
-        if !(bound > lo) || !bound.is_finite() {
+        if bound.is_nan() || bound <= lo || !bound.is_finite() {
             return out;
         }
         bound
