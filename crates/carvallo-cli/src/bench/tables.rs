@@ -291,7 +291,9 @@ pub fn simd_name() -> &'static str {
 
 /// Table 2; returns (Hurwitz time, eigen time, Hurwitz and eigen errors on the speeds both
 /// report, benchmark error).
-fn window_rows(cfg: &Config, rows: &mut Vec<Row>) -> (f64, f64, f64, f64, f64) {
+/// The windows of table 2; returns the Hurwitz and eigenvalue times per design, their errors,
+/// the benchmark's error and the time of the matrices' scene.
+fn window_rows(cfg: &Config, rows: &mut Vec<Row>) -> (f64, f64, f64, f64, f64, f64) {
     let mut rng = SplitMix64(7);
     let mut designs = vec![WhippleParams::benchmark()];
     designs.extend((1..cfg.designs.max(1)).map(|_| random_design(&mut rng)));
@@ -473,16 +475,20 @@ fn window_rows(cfg: &Config, rows: &mut Vec<Row>) -> (f64, f64, f64, f64, f64) {
         max_rel_err: Some(e_scan),
         note: format!("{:.0}x slower than hurwitz", t_scan / t_h),
     });
-    (t_h, t_e, eh_common, ee, bench_err)
+    (t_h, t_e, eh_common, ee, bench_err, t_m)
 }
 
 /// The closed-loop windows of table 2: random gains (as in the tests of
 /// `carvallo::whipple::feedback`) on the benchmark and random designs, the Hurwitz route on the
-/// generated closed-loop polynomial against the eigenvalue sweep of $A - BK$ (200 grid steps to
-/// 10 m/s, each edge bisected to adjacent floats: the reference of the edges, which it locates
-/// to the precision of the eigenvalues' sign).
-fn closed_loop_rows(cfg: &Config, rows: &mut Vec<Row>) {
-    use carvallo::whipple::feedback::{closed_loop_scene as cl, Gains};
+/// generated closed-loop polynomial against the edges located at 256 bits
+/// ([`feedback::closed_loop_reference_edges`]: the coefficients at 256 bits from the IR, each
+/// edge bisected on the Hurwitz verdict at 256 bits) and against the eigenvalue sweep of
+/// $A - BK$ (200 grid steps to 10 m/s, each edge bisected to adjacent floats); the time per
+/// gain set of the fast route and of the former one (every root of every Hurwitz function),
+/// measured in the same run, against `open_ns`, the open-loop window per design (matrices and
+/// closed form).
+fn closed_loop_rows(cfg: &Config, open_ns: f64, rows: &mut Vec<Row>) {
+    use carvallo::whipple::feedback::{self, closed_loop_scene as cl, Gains};
     const SCALE: [f64; 8] = [200.0, 20.0, 50.0, 5.0, 20.0, 5.0, 20.0, 2.0];
     let (to, points) = (10.0, 200);
     let mut rng = SplitMix64(40);
@@ -507,12 +513,35 @@ fn closed_loop_rows(cfg: &Config, rows: &mut Vec<Row>) {
         .map(|(w, g)| {
             let h = w.closed_loop_window(g, 0.0, to).ok();
             let e = w.closed_loop_eigen_window(g, 0.0, to, points).ok();
-            (h, e)
+            let r =
+                h.as_ref().map(|h| feedback::closed_loop_reference_edges(w, g, h, REFERENCE_BITS));
+            (h, e, r)
         })
         .collect();
     let (mut worst_lo, mut worst_hi, mut compared, mut differ, mut stable) =
         (0.0f64, 0.0f64, 0usize, 0usize, 0usize);
-    for (h, e) in &results {
+    let (mut worst_ref, mut bench_ref, mut ref_edges, mut ref_failed) = (0.0f64, 0.0f64, 0, 0);
+    for (i, (h, e, r)) in results.iter().enumerate() {
+        if let (Some(h), Some(r)) = (h, r) {
+            for (x, y) in h.stable.iter().zip(r) {
+                for (edge, reference) in [(x.0, y.0), (x.1, y.1)] {
+                    if edge == 0.0 || edge == to {
+                        continue;
+                    }
+                    match reference {
+                        Some(reference) => {
+                            let err = rel(edge, reference);
+                            worst_ref = worst_ref.max(err);
+                            if i == 0 {
+                                bench_ref = bench_ref.max(err);
+                            }
+                            ref_edges += 1;
+                        }
+                        None => ref_failed += 1,
+                    }
+                }
+            }
+        }
         let (Some(h), Some(e)) = (h, e) else { continue };
         stable += usize::from(!h.stable.is_empty());
         if h.stable.len() != e.stable.len() {
@@ -532,7 +561,19 @@ fn closed_loop_rows(cfg: &Config, rows: &mut Vec<Row>) {
     let (w0, g0) = &cases[0];
     let t_h = time_ns(cfg.min_time, || w0.closed_loop_window(black_box(g0), 0.0, to));
     let t_inf = time_ns(cfg.min_time, || w0.closed_loop_window(black_box(g0), 0.0, f64::INFINITY));
+    let t_poly = time_ns(cfg.min_time, || w0.closed_loop_poly(black_box(g0)));
+    let t_old = time_ns(cfg.min_time, || {
+        feedback::closed_loop_window_all_roots(&w0.closed_loop_poly(black_box(g0)), 0.0, to)
+    });
     let t_e = time_ns(cfg.min_time, || w0.closed_loop_eigen_window(black_box(g0), 0.0, to, points));
+    // Over all the cases (gains stable somewhere or not, the mix of the tests): the mean time.
+    let polys: Vec<_> = cases.iter().map(|(w, g)| w.closed_loop_poly(g)).collect();
+    let t_mix = time_ns(cfg.min_time, || {
+        polys
+            .iter()
+            .map(|p| feedback::closed_loop_window_of(black_box(p), 0.0, to).stable.len())
+            .sum::<usize>()
+    }) / n as f64;
     let name = format!("closed-loop window, {n} random gains and designs");
     rows.push(Row {
         section: "windows",
@@ -540,12 +581,44 @@ fn closed_loop_rows(cfg: &Config, rows: &mut Vec<Row>) {
         method: "hurwitz on the closed-loop polynomial".into(),
         ops: Some(cl::OP_COUNT as u64),
         ns: Some(t_h),
-        max_rel_err: Some(worst_lo.max(worst_hi)),
+        max_rel_err: Some(worst_ref),
         note: format!(
-            "speeds 0 to {to} m/s, the scene included (its ops); lower edges {worst_lo:.1e}, upper \
-             edges {worst_hi:.1e} against the eigenvalue sweep over {compared} intervals; {stable} \
-             gain sets stable somewhere, {differ} where the sweep's grid misses a narrow window; \
-             every speed: {t_inf:.0} ns"
+            "speeds 0 to {to} m/s, the scene included (its ops, {t_poly:.0} ns); error against \
+             the edges at 256 bits over {ref_edges} edges (benchmark + balance assist \
+             {bench_ref:.1e}; {ref_failed} not found); lower edges {worst_lo:.1e}, upper \
+             edges {worst_hi:.1e} against the eigenvalue sweep over {compared} intervals; \
+             {stable} gain sets stable somewhere, {differ} where the sweep's grid misses a \
+             narrow window; every speed: {t_inf:.0} ns; mean over the {n} gain sets, \
+             scene excluded: {t_mix:.0} ns"
+        ),
+    });
+    rows.push(Row {
+        section: "windows",
+        name: name.clone(),
+        method: "former route: every root of every Hurwitz function".into(),
+        ops: Some(cl::OP_COUNT as u64),
+        ns: Some(t_old),
+        max_rel_err: None,
+        note: format!(
+            "real_roots_in (isolation by derivatives, vectors), the scene included; {:.1}x \
+             slower than the Bernstein/Descartes route",
+            t_old / t_h
+        ),
+    });
+    rows.push(Row {
+        section: "windows",
+        name: "closed-loop window per gain set".into(),
+        method: "gain sets per second, one thread".into(),
+        ops: None,
+        ns: Some(t_h),
+        max_rel_err: None,
+        note: format!(
+            "{:.3e} gain sets/s (former route {:.3e}/s); open-loop window {:.3e} designs/s \
+             (matrices + closed form, {open_ns:.0} ns): gains {:.1}x slower than designs",
+            1e9 / t_h,
+            1e9 / t_old,
+            1e9 / open_ns,
+            t_h / open_ns
         ),
     });
     rows.push(Row {
@@ -556,8 +629,8 @@ fn closed_loop_rows(cfg: &Config, rows: &mut Vec<Row>) {
         ns: Some(t_e),
         max_rel_err: None,
         note: format!(
-            "{points} grid points to {to} m/s + bisection (the reference); {:.0}x slower than \
-             hurwitz",
+            "{points} grid points to {to} m/s + bisection (the reference of the interval \
+             count); {:.0}x slower than hurwitz",
             t_e / t_h
         ),
     });
@@ -1021,8 +1094,8 @@ pub fn run(cfg: &Config) -> Report {
     for sc in &scenes {
         ratios.push((sc.name, evaluator_rows(cfg, sc, &mut rows)));
     }
-    let (t_h, t_e, e_h, e_e, bench_err) = window_rows(cfg, &mut rows);
-    closed_loop_rows(cfg, &mut rows);
+    let (t_h, t_e, e_h, e_e, bench_err, t_m) = window_rows(cfg, &mut rows);
+    closed_loop_rows(cfg, t_m + t_h, &mut rows);
     super::quartic::quartic_rows(cfg, &mut rows);
     super::certified::certified_rows(cfg, &mut rows);
     let distributions = distributions(cfg);

@@ -165,6 +165,243 @@ fn monotone_root(c: &[f64], d: &[f64], mut a: f64, mut b: f64, positive_at_a: bo
     x
 }
 
+/// The largest degree [`RootsUpTo8`] and [`sign_change_roots_in`] take.
+pub const MAX_BERNSTEIN_DEGREE: usize = 8;
+
+/// At most [`MAX_BERNSTEIN_DEGREE`] roots, ascending, on the stack.
+#[derive(Clone, Copy, Debug, Default)]
+pub struct RootsUpTo8 {
+    xs: [f64; MAX_BERNSTEIN_DEGREE],
+    n: usize,
+}
+
+impl RootsUpTo8 {
+    /// The roots found.
+    pub fn as_slice(&self) -> &[f64] {
+        &self.xs[..self.n]
+    }
+
+    fn push(&mut self, x: f64) {
+        if self.n < MAX_BERNSTEIN_DEGREE && (self.n == 0 || self.xs[self.n - 1] < x) {
+            self.xs[self.n] = x;
+            self.n += 1;
+        }
+    }
+}
+
+/// The points of the open interval $(lo, hi)$ where the polynomial $\sum_k c_k x^k$
+/// (lowest first, degree at most [`MAX_BERNSTEIN_DEGREE`]; `hi` may be infinite: Cauchy's
+/// bound closes the interval) changes sign, ascending, each located to adjacent floats; no
+/// allocation. These are the roots of odd multiplicity that [`real_roots_in`] reports inside
+/// the interval, found without the roots of the derivatives. A line or a quadratic is solved
+/// in closed form (the cancellation-free quadratic formula); above,
+///
+/// the polynomial is written in the Bernstein basis of the interval (a Taylor shift and
+/// scaling, then the change of basis, $O(n^2)$); by Descartes' rule the number of sign changes
+/// of the Bernstein coefficients bounds the number of roots in the interval and has its parity.
+/// No change: no root, the interval is done. One change: exactly one root, located by the same
+/// safeguarded Newton iteration as [`real_roots_in`] (Newton kept inside the bracket, bisection
+/// when it leaves or stalls). More: the interval is halved (de Casteljau) and each half treated
+/// alike, to a depth of 64 halvings, below which a sign change between the ends is taken as one
+/// root (a cluster narrower than $2^{-64}$ of the interval, below the resolution of $p$).
+/// The sign at the ends of every piece is evaluated by Horner's rule on `coeffs` (as the caller
+/// evaluates them): a sign change between the ends always gives a root, whatever the rounded
+/// Bernstein coefficients say. A point where $p$ is exactly zero and the sign changes across
+/// it is a root; an exact zero without change of sign is not.
+pub fn sign_change_roots_in(coeffs: &[f64], lo: f64, hi: f64) -> RootsUpTo8 {
+    let mut out = RootsUpTo8::default();
+    let n = coeffs.iter().rposition(|&c| c != 0.0).map_or(0, |i| i + 1);
+    if !(2..=MAX_BERNSTEIN_DEGREE + 1).contains(&n) || lo.is_nan() || hi.is_nan() || lo >= hi {
+        return out;
+    }
+    let c = &coeffs[..n];
+    let deg = n - 1;
+    let hi = if hi.is_finite() {
+        hi
+    } else {
+        let lead = c[deg];
+        let bound = 1.0 + c[..deg].iter().map(|x| (x / lead).abs()).fold(0.0, f64::max);
+        if bound.is_nan() || bound <= lo || !bound.is_finite() {
+            return out;
+        }
+        bound
+    };
+    if deg <= 2 {
+        // Closed form: the root of a line, the cancellation-free quadratic formula (a double
+        // or complex pair changes no sign).
+        let mut r = [f64::NAN; 2];
+        if deg == 1 {
+            r[0] = -c[0] / c[1];
+        } else {
+            let disc = c[1] * c[1] - 4.0 * c[2] * c[0];
+            if disc > 0.0 {
+                let q = -0.5 * (c[1] + c[1].signum() * disc.sqrt());
+                r = [q / c[2], c[0] / q];
+                if r[1] < r[0] {
+                    r.swap(0, 1);
+                }
+            }
+        }
+        for x in r {
+            if x > lo && x < hi {
+                out.push(x);
+            }
+        }
+        return out;
+    }
+    // Taylor shift to lo, scaling by w = hi - lo: q(y) = p(lo + w y), y in [0, 1].
+    let mut q = [0.0; MAX_BERNSTEIN_DEGREE + 1];
+    q[..n].copy_from_slice(c);
+    if lo != 0.0 {
+        for i in 0..deg {
+            for j in (i..deg).rev() {
+                q[j] += lo * q[j + 1];
+            }
+        }
+    }
+    let w = hi - lo;
+    let mut wk = 1.0;
+    for x in q.iter_mut().take(n).skip(1) {
+        wk *= w;
+        *x *= wk;
+    }
+    // Bernstein coefficients b_i = sum_{k <= i} C(i, k) q_k / C(n, k): divide by the
+    // binomials, then n passes of Pascal's rule (x_i += x_{i-1}) give the sums.
+    let mut b = [0.0; MAX_BERNSTEIN_DEGREE + 1];
+    let mut cnk = 1.0;
+    for k in 0..n {
+        b[k] = q[k] / cnk;
+        cnk = cnk * (deg - k) as f64 / (k + 1) as f64;
+    }
+    for j in 1..n {
+        for i in (j..n).rev() {
+            b[i] += b[i - 1];
+        }
+    }
+    let mut d = [0.0; MAX_BERNSTEIN_DEGREE];
+    for k in 1..n {
+        d[k - 1] = k as f64 * c[k];
+    }
+    let pos = |x: f64| poly_eval_low(c, x);
+    let ends = (pos(lo), pos(hi));
+    bernstein_pieces(c, &d[..deg], &b[..n], (lo, hi), ends, 0, &mut out);
+    out
+}
+
+/// One piece of [`sign_change_roots_in`]: `b` the Bernstein coefficients on `(l, r)`, `f`
+/// the values of `c` at the ends (Horner).
+fn bernstein_pieces(
+    c: &[f64],
+    d: &[f64],
+    b: &[f64],
+    (l, r): (f64, f64),
+    f: (f64, f64),
+    depth: u32,
+    out: &mut RootsUpTo8,
+) {
+    let changes = b
+        .iter()
+        .filter(|x| **x != 0.0)
+        .fold((0u32, 0.0f64), |(n, last), &x| {
+            (n + u32::from(last != 0.0 && (x > 0.0) != (last > 0.0)), x)
+        })
+        .0;
+    // An end where p is exactly zero: the sign just inside is that of the first (last)
+    // nonzero Bernstein coefficient, the lowest term of p's expansion about that end.
+    let inside = |x: f64, mut bs: std::slice::Iter<'_, f64>, last: bool| {
+        if x != 0.0 {
+            return x;
+        }
+        let nz = |y: &&f64| **y != 0.0;
+        (if last { bs.rfind(nz) } else { bs.find(nz) }).copied().unwrap_or(0.0)
+    };
+    let f = (inside(f.0, b.iter(), false), inside(f.1, b.iter(), true));
+    let ends_differ = f.0 != 0.0 && f.1 != 0.0 && (f.0 > 0.0) != (f.1 > 0.0);
+    let mid = 0.5 * (l + r);
+    if changes <= 1 || depth >= 64 || mid <= l || mid >= r {
+        if ends_differ {
+            out.push(bracketed_newton(c, d, (l, r), f));
+        }
+        return;
+    }
+    // de Casteljau at 1/2: the left half's coefficients are the first of each row, the right
+    // half's the last.
+    let n = b.len();
+    let mut left = [0.0; MAX_BERNSTEIN_DEGREE + 1];
+    let mut right = [0.0; MAX_BERNSTEIN_DEGREE + 1];
+    let mut row = [0.0; MAX_BERNSTEIN_DEGREE + 1];
+    row[..n].copy_from_slice(b);
+    for j in 0..n {
+        left[j] = row[0];
+        right[n - 1 - j] = row[n - 1 - j];
+        for i in 0..n - 1 - j {
+            row[i] = 0.5 * (row[i] + row[i + 1]);
+        }
+    }
+    let fm = poly_eval_low(c, mid);
+    // An exact zero at the cut: the sign just beside it on each side, and a root at the cut
+    // where they differ.
+    let delta = (r - l) * 1e-9;
+    let (fl, fr) = if fm == 0.0 {
+        (poly_eval_low(c, mid - delta), poly_eval_low(c, mid + delta))
+    } else {
+        (fm, fm)
+    };
+    bernstein_pieces(c, d, &left[..n], (l, mid), (f.0, fl), depth + 1, out);
+    if fm == 0.0 && fl != 0.0 && fr != 0.0 && (fl > 0.0) != (fr > 0.0) {
+        out.push(mid);
+    }
+    bernstein_pieces(c, d, &right[..n], (mid, r), (fr, f.1), depth + 1, out);
+}
+
+/// The root of the polynomial `c` (derivative `d`) in $(a, b)$ where it changes sign, `f` its
+/// values at the ends: Newton's method safeguarded as in `rtsafe` (Press et al., *Numerical
+/// Recipes*, § 9.4): the step starts at the secant point of the ends, a Newton step that
+/// leaves the bracket or does not halve the step before the last is replaced by bisection,
+/// and the bracket shrinks with every evaluation; it stops at an exact zero, when the Newton
+/// step is below one unit in the last place (before it is taken), or when the bracket is two
+/// adjacent floats.
+fn bracketed_newton(c: &[f64], d: &[f64], (mut a, mut b): (f64, f64), f: (f64, f64)) -> f64 {
+    let positive_at_a = f.0 > 0.0;
+    let secant = a - f.0 * (b - a) / (f.1 - f.0);
+    let mut x = if secant > a && secant < b { secant } else { 0.5 * (a + b) };
+    let (mut dx, mut dx_old) = (b - a, b - a);
+    for _ in 0..200 {
+        let fx = poly_eval_low(c, x);
+        if fx == 0.0 {
+            return x;
+        }
+        if (fx > 0.0) == positive_at_a {
+            a = x;
+        } else {
+            b = x;
+        }
+        let mid = 0.5 * (a + b);
+        if mid <= a || mid >= b {
+            return x;
+        }
+        let step = fx / poly_eval_low(d, x);
+        if step.abs() <= f64::EPSILON * x.abs() {
+            // Newton moves less than an ulp: x is the root to the resolution of p.
+            return x;
+        }
+        let newton = x - step;
+        let dfx = fx / step;
+        let next = if newton > a && newton < b && (2.0 * fx).abs() <= (dx_old * dfx).abs() {
+            newton
+        } else {
+            mid
+        };
+        dx_old = dx;
+        dx = next - x;
+        if dx.abs() <= f64::EPSILON * x.abs() {
+            return next;
+        }
+        x = next;
+    }
+    x
+}
+
 /// Golden-section minimisation of a unimodal `f` on `[lo, hi]` (200 steps); the midpoint of
 /// the last bracket.
 pub fn minimise(f: impl Fn(f64) -> f64, mut lo: f64, mut hi: f64) -> f64 {
@@ -238,6 +475,55 @@ mod tests {
         assert_eq!(real_roots_in(&[0.0, 0.0], 0.0, 1.0), Vec::<f64>::new());
         assert_eq!(real_roots_in(&[1.0, 0.0, 1.0], -3.0, 3.0), Vec::<f64>::new());
         assert_eq!(poly_eval_low(&[1.0, 2.0, 3.0], 2.0), 17.0);
+    }
+
+    #[test]
+    fn sign_changes_by_descartes_rule_match_the_derivative_isolation() {
+        // The known roots of real_roots_of_known_polynomials, found without derivatives.
+        let p = [-6.0, 5.0, 5.0, -5.0, 1.0];
+        let r = sign_change_roots_in(&p, 0.0, 10.0);
+        assert_eq!(r.as_slice().len(), 3, "{r:?}");
+        for (x, want) in r.as_slice().iter().zip([1.0, 2.0, 3.0]) {
+            assert!((x - want).abs() <= 4.0 * f64::EPSILON * want, "{x} {want}");
+        }
+        assert_eq!(sign_change_roots_in(&p, -5.0, f64::INFINITY).as_slice().len(), 4);
+        assert!(sign_change_roots_in(&p, 1.5, 1.9).as_slice().is_empty());
+        // Ends are excluded: an exact zero at an end is not reported, and the sign just inside
+        // is read from the Bernstein coefficients (x^3 - 4x, zero at 0, root at 2).
+        assert!(sign_change_roots_in(&p, 2.0, 2.5).as_slice().is_empty());
+        assert_eq!(sign_change_roots_in(&[0.0, -4.0, 0.0, 1.0], 0.0, 3.0).as_slice(), [2.0]);
+        // A double root is no sign change; the close pair is separated by halving.
+        let q = [-4.0, 9.0, -6.0, 1.0];
+        let r = sign_change_roots_in(&q, 0.0, 10.0);
+        assert_eq!(r.as_slice().len(), 1, "{r:?}");
+        assert!((r.as_slice()[0] - 4.0).abs() < 1e-14, "{r:?}");
+        let e = 1e-4;
+        let close = [1.0 * (1.0 + e), -(2.0 + e), 1.0];
+        let r = sign_change_roots_in(&close, 0.0, 3.0);
+        assert_eq!(r.as_slice().len(), 2, "{r:?}");
+        assert!((r.as_slice()[0] - 1.0).abs() < 1e-11 && (r.as_slice()[1] - 1.0 - e).abs() < 1e-11);
+        // An exact root at a halving point (x - 1)(x - 2)(x - 3) on [0, 4]: 2 is the first cut.
+        let cubic = [-6.0, 11.0, -6.0, 1.0];
+        assert_eq!(sign_change_roots_in(&cubic, 0.0, 4.0).as_slice(), [1.0, 2.0, 3.0]);
+        // Degree 6 with roots 0.5, 1, ..., 3, as real_roots_in finds them.
+        let mut six = vec![1.0];
+        for k in 1..=6 {
+            let root = 0.5 * k as f64;
+            let mut next = vec![0.0; six.len() + 1];
+            for (i, c) in six.iter().enumerate() {
+                next[i] -= root * c;
+                next[i + 1] += c;
+            }
+            six = next;
+        }
+        let (r, s) =
+            (sign_change_roots_in(&six, 0.0, f64::INFINITY), real_roots_in(&six, 0.0, 10.0));
+        assert_eq!(r.as_slice().len(), 6, "{r:?}");
+        for (x, y) in r.as_slice().iter().zip(&s) {
+            assert!((x - y).abs() <= 1e-12, "{r:?} {s:?}");
+        }
+        assert!(sign_change_roots_in(&[0.0, 0.0], 0.0, 1.0).as_slice().is_empty());
+        assert!(sign_change_roots_in(&[1.0, 0.0, 1.0], -3.0, 3.0).as_slice().is_empty());
     }
 
     #[test]

@@ -30,12 +30,20 @@
 //! $H_3 = a_1(a_2a_3 - a_1a_4) - a_0a_3^2 > 0$. The $a_k$ are polynomials in $v$ of degree at
 //! most $4 - k$ and $H_3$ one of degree at most 6 (its coefficients are computed in
 //! double-double arithmetic, then rounded). With gains the odd powers of $v$ no longer vanish,
-//! so the substitution $u = v^2$ of [`super::stability`] does not apply: the real roots of the
-//! five polynomials in the speed range are found by [`real_roots_in`] (isolation by the roots
-//! of the derivative, then Newton's method kept inside each bracket, to adjacent floats), sorted,
-//! and the Routh–Hurwitz conditions are tested once between consecutive cuts. A closed-loop
-//! window costs about 7 µs on the benchmark (release build; the open-loop window, in closed form
-//! in $u = v^2$, about 0.15 µs from the matrices: `carvallo bench`).
+//! so the substitution $u = v^2$ of [`super::stability`] does not apply. The window is found
+//! in two stages without allocation ([`closed_loop_window_of`]): the points where
+//! $a_0 \dots a_3$ change sign in the speed range ([`sign_change_roots_in`]: a line or a
+//! quadratic in closed form; above, Descartes' rule on the Bernstein coefficients of the range
+//! skips a polynomial or a half without a root, and each isolated root is located to adjacent
+//! floats by safeguarded Newton) cut it into candidate intervals where all four have the sign
+//! of $a_4$; only if there is one is $H_3$ formed, and only its sign changes inside the
+//! candidates are located. The Routh–Hurwitz conditions are tested once between consecutive
+//! cuts. A closed-loop window costs about 0.8 µs on the benchmark with balance assist, plus
+//! 0.12 µs for the generated coefficients (release build, `carvallo bench`; the former route,
+//! every real root of the five polynomials by [`real_roots_in`], kept as
+//! [`closed_loop_window_all_roots`], about 6 µs; the open-loop window, in closed form in
+//! $u = v^2$, about 0.2 µs from the parameters). [`closed_loop_reference_edges`] locates the
+//! edges again at 256 bits: the reference of the tests and of `carvallo bench`.
 //!
 //! Near an edge [`ClosedLoopPoly::classify`] gives a certified verdict (double-double
 //! arithmetic with a running error bound, as [`super::certified`] does for the open loop).
@@ -56,9 +64,10 @@ use nalgebra::{Matrix2x4, Matrix4};
 
 use super::certified::{Bounded, Certified};
 use super::model::Whipple;
-use crate::numerics::dd::Dd;
+use super::params::PARAM_NAMES;
+use crate::numerics::dd::{two_prod, two_sum, Dd};
 use crate::numerics::eigen::{eigenvalues4, Eigenvalue};
-use crate::numerics::poly::{poly_eval_low, real_roots_in};
+use crate::numerics::poly::{poly_eval_low, real_roots_in, sign_change_roots_in};
 
 crate::scene! {
     /// The closed-loop characteristic polynomial: `cl_a{k}_{j}`, the coefficient of $v^j$ in
@@ -206,78 +215,165 @@ impl ClosedLoopPoly {
     /// $H_3 = a_1(a_2a_3 - a_1a_4) - a_0a_3^2$ as a polynomial in $v$ (lowest first, degree
     /// at most 6), the products in double-double arithmetic, rounded once.
     pub fn h3(&self) -> [f64; 7] {
-        h3_of(&self.coeffs.map(|c| c.to_vec()), 7).try_into().expect("seven coefficients")
+        h3_of(&self.coeffs)
     }
 }
 
-/// The product of two polynomials (lowest first) in double-double arithmetic.
-fn mul_dd(a: &[Dd], b: &[Dd]) -> Vec<Dd> {
-    let mut out = vec![Dd::from(0.0); a.len() + b.len() - 1];
-    for (i, x) in a.iter().enumerate() {
-        for (j, y) in b.iter().enumerate() {
-            out[i + j] = out[i + j] + *x * *y;
+/// A polynomial (lowest first) of degree at most 6 in double-double arithmetic, on the
+/// stack: `n` coefficients.
+#[derive(Clone, Copy)]
+struct DdPoly {
+    c: [Dd; 7],
+    n: usize,
+}
+
+/// `a + b` in double-double arithmetic, the cheaper sum (one TwoSum; error below
+/// $2u^2(|a| + |b|)$, far below the final rounding of an $H_3$ coefficient to `f64` unless
+/// it cancels by a factor $1/u$).
+#[inline]
+fn accumulate(a: Dd, b: Dd) -> Dd {
+    let (s, e) = two_sum(a.hi, b.hi);
+    let e = e + (a.lo + b.lo);
+    let hi = s + e;
+    Dd { hi, lo: e - (hi - s) }
+}
+
+/// The number of coefficients of `a` up to its last nonzero one among the first `max`.
+fn len_of(a: &[f64; 5], max: usize) -> usize {
+    a[..max].iter().rposition(|&x| x != 0.0).map_or(0, |i| i + 1)
+}
+
+impl DdPoly {
+    const ZERO: DdPoly = DdPoly { c: [Dd { hi: 0.0, lo: 0.0 }; 7], n: 0 };
+
+    /// The exact product of two `f64` polynomials (each product exact by Dekker's
+    /// TwoProduct, the sums in double-double).
+    fn mul_ff(a: &[f64], b: &[f64]) -> DdPoly {
+        let mut p = DdPoly::ZERO;
+        if a.is_empty() || b.is_empty() {
+            return p;
         }
+        for (i, &x) in a.iter().enumerate() {
+            for (j, &y) in b.iter().enumerate() {
+                let (hi, lo) = two_prod(x, y);
+                p.c[i + j] = accumulate(p.c[i + j], Dd { hi, lo });
+            }
+        }
+        p.n = a.len() + b.len() - 1;
+        p
     }
-    out
+
+    /// The product by an `f64` polynomial `a`.
+    fn mul_f(&self, a: &[f64]) -> DdPoly {
+        let mut p = DdPoly::ZERO;
+        if a.is_empty() || self.n == 0 {
+            return p;
+        }
+        for (i, &x) in a.iter().enumerate() {
+            for (j, y) in self.c[..self.n].iter().enumerate() {
+                let (hi, lo) = two_prod(y.hi, x);
+                p.c[i + j] = accumulate(p.c[i + j], Dd { hi, lo: lo + y.lo * x });
+            }
+        }
+        p.n = a.len() + self.n - 1;
+        p
+    }
+
+    fn sub(&self, b: &DdPoly) -> DdPoly {
+        let mut c = self.c;
+        for (ci, y) in c.iter_mut().zip(&b.c[..b.n]) {
+            *ci = *ci - *y;
+        }
+        DdPoly { c, n: self.n.max(b.n) }
+    }
 }
 
-fn sub_dd(a: &[Dd], b: &[Dd]) -> Vec<Dd> {
-    let n = a.len().max(b.len());
-    let z = Dd::from(0.0);
-    (0..n).map(|i| *a.get(i).unwrap_or(&z) - *b.get(i).unwrap_or(&z)).collect()
-}
-
-/// $H_3$ of the polynomials `a[k]` (lowest first), as `len` coefficients rounded to `f64`.
-fn h3_of(a: &[Vec<f64>; 5], len: usize) -> Vec<f64> {
-    let d: Vec<Vec<Dd>> = a.iter().map(|p| p.iter().map(|&x| Dd::from(x)).collect()).collect();
-    let a2a3 = mul_dd(&d[2], &d[3]);
-    let a1a4 = mul_dd(&d[1], &d[4]);
-    let left = mul_dd(&d[1], &sub_dd(&a2a3, &a1a4));
-    let right = mul_dd(&d[0], &mul_dd(&d[3], &d[3]));
-    let mut h: Vec<f64> = sub_dd(&left, &right).iter().map(|x| x.to_f64()).collect();
-    h.resize(len.max(h.len()), 0.0);
-    h.truncate(len);
-    h
+/// $H_3$ of the polynomials `a[k]` (lowest first; $a_k$ taken to its degree $4 - k$, the
+/// coefficients above it being zero, or only rounding in interpolated ones): the products in
+/// double-double arithmetic over the nonzero coefficients (the first ones exact), the result
+/// rounded to `f64` once.
+fn h3_of(a: &[[f64; 5]; 5]) -> [f64; 7] {
+    let s: [&[f64]; 5] = std::array::from_fn(|k| &a[k][..len_of(&a[k], 5 - k)]);
+    let inner = DdPoly::mul_ff(s[2], s[3]).sub(&DdPoly::mul_ff(s[1], s[4]));
+    let h = inner.mul_f(s[1]).sub(&DdPoly::mul_ff(s[3], s[3]).mul_f(s[0]));
+    std::array::from_fn(|i| if i < h.n { h.c[i].to_f64() } else { 0.0 })
 }
 
 /// The stable intervals of $[from, to]$ for the polynomials `a[k]` in a variable $t$ (lowest
-/// first), $t$ mapped to the speed by `speed`: every real root of $a_0 \dots a_3$ and $H_3$ in
-/// $[t_0, t_1]$ is a cut, and the Routh–Hurwitz conditions are tested between cuts. Adjacent
-/// stable intervals are merged into `out` (already sorted, as the calls come in order).
+/// first), $t$ mapped to the speed by `speed`, in two stages without allocation (but `out`'s):
+///
+/// 1. every point of $(t_0, t_1)$ where one of $a_0 \dots a_3$ changes sign
+///    ([`sign_change_roots_in`]: Descartes' rule on the Bernstein coefficients skips a
+///    polynomial or a piece without a root, and each isolated root is located to adjacent
+///    floats by safeguarded Newton) is a cut; between cuts the signs of $a_k a_4$ are tested,
+///    giving the candidate intervals where all are positive;
+/// 2. $H_3$ (`h3`, formed only if there is a candidate) is cut at its sign changes within each
+///    candidate only, and tested between those cuts.
+///
+/// Adjacent stable intervals are merged into `out` (already sorted, as the calls come in
+/// order).
 fn hurwitz_intervals(
-    a: &[Vec<f64>; 5],
-    h3: &[f64],
+    a: &[[f64; 5]; 5],
+    h3: &dyn Fn() -> [f64; 7],
     (t0, t1): (f64, f64),
     speed: &dyn Fn(f64) -> f64,
     out: &mut Vec<(f64, f64)>,
 ) {
+    // At most 8 sign changes per polynomial (more than its degree only from the rounding of
+    // interpolated coefficients) and the two ends.
+    let mut cuts = [0.0; 2 + 4 * 8];
+    cuts[0] = t0;
+    let mut n = 1;
+    for p in &a[..4] {
+        for &t in sign_change_roots_in(p, t0, t1).as_slice() {
+            cuts[n] = t;
+            n += 1;
+        }
+    }
+    cuts[1..n].sort_unstable_by(f64::total_cmp);
+    cuts[n] = t1;
+    n += 1;
+    let mid_of = |lo: f64, hi: f64| if hi.is_finite() { 0.5 * (lo + hi) } else { 2.0 * lo + 1.0 };
     // a_4 = det M (constant for constant gains; never zero for a valid design): the sign of
     // the leading coefficient is normalised by testing a_k a_4 > 0, H3 a_4 > 0.
-    let mut cuts = vec![t0];
-    for p in a[..4].iter().map(Vec::as_slice).chain([h3]) {
-        cuts.extend(real_roots_in(p, t0, t1).into_iter().filter(|&t| t > t0 && t < t1));
-    }
-    cuts.sort_by(f64::total_cmp);
-    cuts.dedup();
-    cuts.push(t1);
-    let stable_at = |t: f64| {
-        let s = poly_eval_low(&a[4], t).signum();
-        s != 0.0
-            && a.iter().all(|p| poly_eval_low(p, t) * s > 0.0)
-            && poly_eval_low(h3, t) * s > 0.0
+    let lead = |t: f64| poly_eval_low(&a[4], t).signum();
+    let candidate = |t: f64| {
+        let s = lead(t);
+        s != 0.0 && a.iter().all(|p| poly_eval_low(p, t) * s > 0.0)
     };
-    for pair in cuts.windows(2) {
+    // The candidate intervals, adjacent ones merged.
+    let mut cand = [(0.0, 0.0); 2 + 4 * 8];
+    let mut nc = 0;
+    for pair in cuts[..n].windows(2) {
         let (lo, hi) = (pair[0], pair[1]);
-        if hi <= lo {
-            continue;
-        }
-        let mid = if hi.is_finite() { 0.5 * (lo + hi) } else { 2.0 * lo + 1.0 };
-        if stable_at(mid) {
-            let (vlo, vhi) = (speed(lo), speed(hi));
-            match out.last_mut() {
-                Some(last) if last.1 == vlo => last.1 = vhi,
-                _ => out.push((vlo, vhi)),
+        if hi > lo && candidate(mid_of(lo, hi)) {
+            if nc > 0 && cand[nc - 1].1 == lo {
+                cand[nc - 1].1 = hi;
+            } else {
+                cand[nc] = (lo, hi);
+                nc += 1;
             }
+        }
+    }
+    if nc == 0 {
+        return;
+    }
+    let h3 = h3();
+    for &(lo, hi) in &cand[..nc] {
+        let roots = sign_change_roots_in(&h3, lo, hi);
+        let mut left = lo;
+        for &right in roots.as_slice().iter().chain([&hi]) {
+            if right > left {
+                let m = mid_of(left, right);
+                if poly_eval_low(&h3, m) * lead(m) > 0.0 && candidate(m) {
+                    let (vlo, vhi) = (speed(left), speed(right));
+                    match out.last_mut() {
+                        Some(last) if last.1 == vlo => last.1 = vhi,
+                        _ => out.push((vlo, vhi)),
+                    }
+                }
+            }
+            left = right;
         }
     }
 }
@@ -423,10 +519,28 @@ impl Whipple {
     /// The closed-loop characteristic polynomial for the gains `k`, from the generated
     /// evaluator.
     pub fn closed_loop_poly(&self, k: &Gains) -> ClosedLoopPoly {
-        let params = self.params();
-        let args = closed_loop_scene::Args::from_fn(|name| {
-            k.get(name).or_else(|| params.get(name)).unwrap_or(f64::NAN)
+        // Where each argument of the scene comes from: a parameter's index in PARAM_NAMES,
+        // or (from PARAM_NAMES.len() on) a gain's index in GAIN_NAMES; found once.
+        static SOURCE: std::sync::OnceLock<[usize; closed_loop_scene::Args::LEN]> =
+            std::sync::OnceLock::new();
+        let source = SOURCE.get_or_init(|| {
+            std::array::from_fn(|i| {
+                let name = closed_loop_scene::ARGS[i];
+                PARAM_NAMES.iter().position(|n| *n == name).unwrap_or_else(|| {
+                    PARAM_NAMES.len() + Gains::index(name).expect("a parameter or a gain")
+                })
+            })
         });
+        let (values, gains) = (self.params().values(), k.values());
+        let np = PARAM_NAMES.len();
+        let args = closed_loop_scene::Args::from_array(std::array::from_fn(|i| {
+            let s = source[i];
+            if s < np {
+                values[s]
+            } else {
+                gains[s - np]
+            }
+        }));
         let o = closed_loop_scene::eval(&args);
         ClosedLoopPoly {
             coeffs: [
@@ -496,17 +610,14 @@ impl Whipple {
             // Each a_k is a polynomial of degree <= 4 in v on [v0, v1]: interpolate it through
             // t = 0, 1/4, ..., 1 (v = v0 + t (v1 - v0)), exactly up to rounding.
             let speed = |t: f64| v0 + t * (v1 - v0);
-            let samples: Vec<[f64; 5]> = (0..5)
-                .map(|i| {
-                    let v = speed(i as f64 / 4.0);
-                    let g = g0.lerp(&g1, i as f64 / 4.0);
-                    self.closed_loop_poly(&g).at(v)
-                })
-                .collect();
-            let a: [Vec<f64>; 5] = std::array::from_fn(|k| {
-                interpolate_quartic(&std::array::from_fn(|i| samples[i][k])).to_vec()
+            let samples: [[f64; 5]; 5] = std::array::from_fn(|i| {
+                let v = speed(i as f64 / 4.0);
+                let g = g0.lerp(&g1, i as f64 / 4.0);
+                self.closed_loop_poly(&g).at(v)
             });
-            let h3 = h3_of(&a, 7);
+            let a: [[f64; 5]; 5] = std::array::from_fn(|k| {
+                interpolate_quartic(&std::array::from_fn(|i| samples[i][k]))
+            });
             let t = |v: f64| ((v - v0) / (v1 - v0)).clamp(0.0, 1.0);
             let exact = |x: f64| {
                 if x == t(lo) {
@@ -517,7 +628,7 @@ impl Whipple {
                     speed(x)
                 }
             };
-            hurwitz_intervals(&a, &h3, (t(lo), t(hi)), &exact, &mut stable);
+            hurwitz_intervals(&a, &|| h3_of(&a), (t(lo), t(hi)), &exact, &mut stable);
         }
         Ok(ClosedLoopWindow { from, to, stable })
     }
@@ -619,9 +730,124 @@ impl Whipple {
 
 /// The stable range of a closed-loop polynomial in $[from, to]$ ($0 \le from \le to$).
 pub fn closed_loop_window_of(p: &ClosedLoopPoly, from: f64, to: f64) -> ClosedLoopWindow {
-    let a: [Vec<f64>; 5] = p.coeffs.map(|c| c.to_vec());
     let mut stable = Vec::new();
-    hurwitz_intervals(&a, &p.h3(), (from, to), &|v| v, &mut stable);
+    hurwitz_intervals(&p.coeffs, &|| p.h3(), (from, to), &|v| v, &mut stable);
+    ClosedLoopWindow { from, to, stable }
+}
+
+/// The edges of a closed-loop window located again at `bits` bits (the reference of
+/// `carvallo bench` and of the tests): the closed-loop polynomial's coefficients evaluated at
+/// `bits` bits from the IR program (`carvallo_ir::hp`, the design's parameters and the gains
+/// `k` exactly as given), then for every edge $e$ of `window` inside $(from, to)$ a bracket
+/// $e(1 \pm \delta)$ ($\delta = 10^{-10}$, grown tenfold until the verdict differs at its
+/// ends, up to $10^{-3}$) bisected 200 times on the Routh–Hurwitz verdict ($a_0 \dots a_3$
+/// and $H_3 = a_1(a_2a_3 - a_1a_4) - a_0a_3^2$ of the same sign as $a_4$, all at `bits`
+/// bits, $H_3$ from the values $a_k(v)$ and not from coefficients). Each interval's ends in
+/// the order of `window.stable`, rounded to the nearest `f64`; an end equal to `from` or `to`
+/// is returned as it is, and `None` marks an edge where no bracket changes verdict (the `f64`
+/// edge is off by more than $10^{-3}$ relative) or the evaluation failed.
+pub fn closed_loop_reference_edges(
+    bike: &Whipple,
+    k: &Gains,
+    window: &ClosedLoopWindow,
+    bits: usize,
+) -> Vec<(Option<f64>, Option<f64>)> {
+    use astro_float::{BigFloat, RoundingMode};
+    use carvallo_ir::{hp, Program};
+    const RM: RoundingMode = RoundingMode::ToEven;
+    let failed = || window.stable.iter().map(|_| (None, None)).collect();
+    let Some(program) = Program::parse(crate::artifacts::WHIPPLE.ir)
+        .ok()
+        .and_then(|p| p.select_outputs(closed_loop_scene::OUTPUTS).ok())
+    else {
+        return failed();
+    };
+    let params = bike.params();
+    let args: Vec<f64> = program.params.iter().map(|n| params.get(n).unwrap_or(f64::NAN)).collect();
+    let inputs: Vec<f64> = program.inputs.iter().map(|n| k.get(n).unwrap_or(f64::NAN)).collect();
+    let Ok(o) = hp::eval(&program, &args, &inputs, bits) else { return failed() };
+    // o: cl_a0_0..4, cl_a1_0..3, cl_a2_0..2, cl_a3_0..1, cl_a4_0.
+    let starts = [0, 5, 9, 12, 14, 15];
+    let p = bits;
+    let at = |v: &BigFloat| -> [BigFloat; 5] {
+        std::array::from_fn(|kk| {
+            o[starts[kk]..starts[kk + 1]]
+                .iter()
+                .rev()
+                .fold(BigFloat::from_word(0, p), |acc, c| acc.mul(v, p, RM).add(c, p, RM))
+        })
+    };
+    let stable =
+        |v: &BigFloat| {
+            let a = at(v);
+            let h3 = a[1]
+                .mul(&a[2].mul(&a[3], p, RM).sub(&a[1].mul(&a[4], p, RM), p, RM), p, RM)
+                .sub(&a[0].mul(&a[3], p, RM).mul(&a[3], p, RM), p, RM);
+            let lead = a[4].is_positive();
+            !a[4].is_zero()
+                && a[..4].iter().chain([&h3]).all(|x| !x.is_zero() && x.is_positive() == lead)
+        };
+    let refine = |e: f64| -> Option<f64> {
+        if e == window.from || e == window.to || !e.is_finite() {
+            return Some(e);
+        }
+        let mut delta = 1e-10;
+        while delta <= 1e-3 {
+            let (mut lo, mut hi) =
+                (hp::from_f64(e * (1.0 - delta), p), hp::from_f64(e * (1.0 + delta), p));
+            let at_lo = stable(&lo);
+            if at_lo != stable(&hi) {
+                let half = hp::from_f64(0.5, p);
+                for _ in 0..200 {
+                    let mid = lo.add(&hi, p, RM).mul(&half, p, RM);
+                    if stable(&mid) == at_lo {
+                        lo = mid;
+                    } else {
+                        hi = mid;
+                    }
+                }
+                return Some(hp::to_f64(&lo.add(&hi, p, RM).mul(&half, p, RM)));
+            }
+            delta *= 10.0;
+        }
+        None
+    };
+    window.stable.iter().map(|&(lo, hi)| (refine(lo), refine(hi))).collect()
+}
+
+/// The former route of [`closed_loop_window_of`], kept as a reference and as the baseline of
+/// `carvallo bench`: every real root of $a_0 \dots a_3$ and $H_3$ in the range by
+/// [`real_roots_in`] (isolation by the roots of the derivatives, recursively, each to adjacent
+/// floats, in vectors), sorted, the Routh–Hurwitz conditions tested between consecutive cuts.
+pub fn closed_loop_window_all_roots(p: &ClosedLoopPoly, from: f64, to: f64) -> ClosedLoopWindow {
+    let (a, h3) = (&p.coeffs, p.h3());
+    let mut cuts = vec![from];
+    for q in a[..4].iter().map(|q| &q[..]).chain([&h3[..]]) {
+        cuts.extend(real_roots_in(q, from, to).into_iter().filter(|&t| t > from && t < to));
+    }
+    cuts.sort_by(f64::total_cmp);
+    cuts.dedup();
+    cuts.push(to);
+    let stable_at = |t: f64| {
+        let s = poly_eval_low(&a[4], t).signum();
+        s != 0.0
+            && a.iter().all(|q| poly_eval_low(q, t) * s > 0.0)
+            && poly_eval_low(&h3, t) * s > 0.0
+    };
+    let mut stable: Vec<(f64, f64)> = Vec::new();
+    for pair in cuts.windows(2) {
+        let (lo, hi) = (pair[0], pair[1]);
+        if hi <= lo {
+            continue;
+        }
+        let mid = if hi.is_finite() { 0.5 * (lo + hi) } else { 2.0 * lo + 1.0 };
+        if stable_at(mid) {
+            match stable.last_mut() {
+                Some(last) if last.1 == lo => last.1 = hi,
+                _ => stable.push((lo, hi)),
+            }
+        }
+    }
     ClosedLoopWindow { from, to, stable }
 }
 
