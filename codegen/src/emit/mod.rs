@@ -64,10 +64,10 @@ use crate::{Derivation, Formula};
 pub use checks_tsv::render_checks;
 pub use expr::{rational_to_f64, Expr, Func};
 pub use latex::latex;
+pub use markdown::{normalize_text, render_markdown, MAX_RENDERED_CHARS};
 pub use optimize::{
     choose, declare_placeholders, emit_program_optimized, Effort, EFFORTS, PLACEHOLDERS,
 };
-pub use markdown::{normalize_text, render_markdown, MAX_RENDERED_CHARS};
 pub use text::text;
 
 use lower::{is_ir_name, Lowerer};

@@ -229,9 +229,8 @@ impl Translate<'_> {
             return Ok(Term::Num(rat(0)));
         }
         let one = coef == rat(1);
-        let fold = |b: &mut Builder, vs: &[Value]| {
-            vs.iter().copied().reduce(|acc, v| b.mul(acc, v))
-        };
+        let fold =
+            |b: &mut Builder, vs: &[Value]| vs.iter().copied().reduce(|acc, v| b.mul(acc, v));
         let n = fold(self.b, &num);
         let d = fold(self.b, &den);
         let monomial = match (n, d) {
@@ -344,7 +343,10 @@ impl Translate<'_> {
                 Instruction::Fun(o, call, _) => {
                     let (sym, _, args) = &**call;
                     if args.len() != 1 {
-                        return Err(unsupported(format!("call of {sym} with {} arguments", args.len())));
+                        return Err(unsupported(format!(
+                            "call of {sym} with {} arguments",
+                            args.len()
+                        )));
                     }
                     let a = self.term(args[0])?;
                     let a = self.value(a)?;
@@ -472,7 +474,9 @@ pub fn emit_program_optimized(
 fn exact(p: &Program, points: &[(Vec<f64>, Vec<f64>)]) -> Vec<Vec<f64>> {
     points
         .iter()
-        .map(|(params, inputs)| carvallo_ir::hp::eval_f64(p, params, inputs, 256).unwrap_or_default())
+        .map(|(params, inputs)| {
+            carvallo_ir::hp::eval_f64(p, params, inputs, 256).unwrap_or_default()
+        })
         .collect()
 }
 
@@ -574,10 +578,10 @@ pub fn choose(d: &Derivation) -> Result<(Program, Vec<String>), EmitError> {
                 continue;
             }
             let (ops, _) = super::count_ops(&p);
-            let (worst, at) = r
-                .iter()
-                .enumerate()
-                .fold((0.0, 0), |(w, a), (k, &x)| if x > w { (x, k) } else { (w, a) });
+            let (worst, at) =
+                r.iter()
+                    .enumerate()
+                    .fold((0.0, 0), |(w, a), (k, &x)| if x > w { (x, k) } else { (w, a) });
             lines.push(format!(
                 "  {effort}: {ops} ops, {} of {} outputs naive, largest error ratio {worst:.2} ({})",
                 fallback.len(),
@@ -613,8 +617,7 @@ pub fn choose(d: &Derivation) -> Result<(Program, Vec<String>), EmitError> {
 
 /// For each formula, the earlier formulas it names.
 fn dependencies(d: &Derivation) -> Result<Vec<Vec<usize>>, EmitError> {
-    let declared: BTreeSet<&str> =
-        d.params.iter().chain(&d.inputs).map(String::as_str).collect();
+    let declared: BTreeSet<&str> = d.params.iter().chain(&d.inputs).map(String::as_str).collect();
     let index: BTreeMap<&str, usize> =
         d.formulas.iter().enumerate().map(|(i, f)| (f.name.as_str(), i)).collect();
     d.formulas

@@ -496,7 +496,10 @@ fn optimised_lowering_body() {
                 let got = p.eval_f64(&[], &[x, y]).expect("the interpreter runs")[0];
                 let values = [("x".to_string(), x), ("y".to_string(), y)].into_iter().collect();
                 let want = symbolica_eval(&expr, &values);
-                assert!(close(got, want), "{case} ({effort}) at ({x}, {y}): {got:e} against {want:e}");
+                assert!(
+                    close(got, want),
+                    "{case} ({effort}) at ({x}, {y}): {got:e} against {want:e}"
+                );
             }
             let all = std::iter::once(0).collect();
             let naive = emit_program_optimized(&d, effort, &all).expect("the naive rules lower it");

@@ -856,22 +856,34 @@ fn simulate<'py>(
     d.set_item("step", tr.step)?;
     d.set_item("energy_drift", tr.energy_drift)?;
     d.set_item("max_contact_residual", tr.max_contact_residual)?;
+    set_run(&d, &how, &tr.stats, tr.event.map(|(k, t)| (stops[k].text(), t)))?;
+    Ok(d)
+}
+
+/// The keys every simulation's dictionary shares: `method`, `rtol` and `atol` (None for a
+/// fixed step), the counts `rhs_evaluations`, `steps`, `rejected_steps`, and `events`
+/// (`[{"when", "t"}]`, the condition met as given).
+pub(crate) fn set_run(
+    d: &Bound<'_, PyDict>,
+    how: &Integration,
+    stats: &carvallo::numerics::integrate::Stats,
+    event: Option<(String, f64)>,
+) -> PyResult<()> {
     let adaptive = how.method.is_adaptive();
     d.set_item("method", how.method.name())?;
     d.set_item("rtol", adaptive.then_some(how.rtol))?;
     d.set_item("atol", adaptive.then_some(how.atol))?;
-    d.set_item("rhs_evaluations", tr.stats.rhs_evaluations)?;
-    d.set_item("steps", tr.stats.steps)?;
-    d.set_item("rejected_steps", tr.stats.rejected_steps)?;
-    let events = PyList::empty(py);
-    if let Some((k, t)) = tr.event {
-        let e = PyDict::new(py);
-        e.set_item("when", stops[k].text())?;
+    d.set_item("rhs_evaluations", stats.rhs_evaluations)?;
+    d.set_item("steps", stats.steps)?;
+    d.set_item("rejected_steps", stats.rejected_steps)?;
+    let events = PyList::empty(d.py());
+    if let Some((when, t)) = event {
+        let e = PyDict::new(d.py());
+        e.set_item("when", when)?;
         e.set_item("t", t)?;
         events.append(e)?;
     }
-    d.set_item("events", events)?;
-    Ok(d)
+    d.set_item("events", events)
 }
 
 /// The inputs of `simulate`: the sampled torques (`torque_t` with `torque_roll` and/or
@@ -952,21 +964,7 @@ fn simulate_driven<'py>(
     d.set_item("max_energy_change", diag.max_energy_change)?;
     d.set_item("energy_drift", diag.energy_drift)?;
     d.set_item("max_contact_residual", diag.max_contact_residual)?;
-    let adaptive = how.method.is_adaptive();
-    d.set_item("method", how.method.name())?;
-    d.set_item("rtol", adaptive.then_some(how.rtol))?;
-    d.set_item("atol", adaptive.then_some(how.atol))?;
-    d.set_item("rhs_evaluations", tr.stats.rhs_evaluations)?;
-    d.set_item("steps", tr.stats.steps)?;
-    d.set_item("rejected_steps", tr.stats.rejected_steps)?;
-    let events = PyList::empty(py);
-    if let Some((k, t)) = tr.event {
-        let e = PyDict::new(py);
-        e.set_item("when", stops[k].text())?;
-        e.set_item("t", t)?;
-        events.append(e)?;
-    }
-    d.set_item("events", events)?;
+    set_run(&d, how, &tr.stats, tr.event.map(|(k, t)| (stops[k].text(), t)))?;
     Ok(d)
 }
 

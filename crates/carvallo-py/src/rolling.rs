@@ -10,9 +10,9 @@ use carvallo::numerics::integrate::{Grid, Integration, Threshold};
 use carvallo::unicycle::{Rider, Unicycle, Wheel};
 use numpy::PyArray1;
 use pyo3::prelude::*;
-use pyo3::types::{PyDict, PyList};
+use pyo3::types::PyDict;
 
-use crate::python::{err, integration_of};
+use crate::python::{err, integration_of, set_run};
 
 /// The names of the state's components, in its order.
 const STATE: [&str; 4] = ["theta", "p", "n", "s"];
@@ -55,21 +55,7 @@ fn trajectory_dict<'py>(
     }
     d.set_item("energy_drift", tr.diagnostics.max_energy_drift)?;
     d.set_item("relative_energy_drift", tr.diagnostics.relative_energy_drift())?;
-    let adaptive = how.method.is_adaptive();
-    d.set_item("method", how.method.name())?;
-    d.set_item("rtol", adaptive.then_some(how.rtol))?;
-    d.set_item("atol", adaptive.then_some(how.atol))?;
-    d.set_item("rhs_evaluations", tr.stats.rhs_evaluations)?;
-    d.set_item("steps", tr.stats.steps)?;
-    d.set_item("rejected_steps", tr.stats.rejected_steps)?;
-    let events = PyList::empty(py);
-    if let Some((k, t)) = tr.event {
-        let e = PyDict::new(py);
-        e.set_item("when", &stop_when[k])?;
-        e.set_item("t", t)?;
-        events.append(e)?;
-    }
-    d.set_item("events", events)?;
+    set_run(&d, how, &tr.stats, tr.event.map(|(k, t)| (stop_when[k].clone(), t)))?;
     Ok(d)
 }
 
