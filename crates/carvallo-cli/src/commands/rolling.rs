@@ -23,7 +23,7 @@ use carvallo::numerics::integrate::{Grid, Integration, Threshold};
 use carvallo::unicycle::{Rider, Unicycle, Wheel};
 use serde_json::json;
 
-use super::simulate::{IntegrationArgs, MethodArg};
+use super::simulate::ToleranceArgs;
 use crate::args::finite;
 
 /// The names of the state's components, in its order.
@@ -67,16 +67,8 @@ pub struct RunArgs {
     /// Print every N-th step (for an adaptive method, the dense output every N × DT seconds)
     #[arg(long, value_name = "N", default_value_t = 10, value_parser = positive)]
     pub every: usize,
-    /// The integrator: fixed-step RK4, or Dormand–Prince 5(4), DOP853 or Verner's 9(8) with
-    /// error control and dense output
-    #[arg(long, value_enum, default_value_t)]
-    pub method: MethodArg,
-    /// The relative tolerance of an adaptive method [default: 1e-8]
-    #[arg(long, value_name = "R", value_parser = finite, allow_hyphen_values = true)]
-    pub rtol: Option<f64>,
-    /// The absolute tolerance of an adaptive method [default: 1e-3 × rtol]
-    #[arg(long, value_name = "A", value_parser = finite, allow_hyphen_values = true)]
-    pub atol: Option<f64>,
+    #[command(flatten)]
+    pub tolerance: ToleranceArgs,
     /// Stop when NAME (theta, p, n, s) crosses VALUE, or when its magnitude reaches VALUE
     /// (NAME=±VALUE or NAME=+-VALUE); may be repeated
     #[arg(long = "stop-when", value_name = "NAME=VALUE", value_parser = parse_threshold, allow_hyphen_values = true)]
@@ -89,13 +81,7 @@ pub struct RunArgs {
 impl RunArgs {
     /// The integration and the grid, or an error naming the bad value.
     fn plan(&self) -> Result<(Integration, Grid), String> {
-        let how = IntegrationArgs {
-            method: self.method,
-            rtol: self.rtol,
-            atol: self.atol,
-            stop_when: Vec::new(),
-        }
-        .integration()?;
+        let how = self.tolerance.integration()?;
         let grid = Grid::new(self.duration, self.step, self.every)
             .map_err(|(name, value, reason)| format!("invalid --{name} {value:?}: {reason}"))?;
         Ok((how, grid))
@@ -260,6 +246,7 @@ mod tests {
     use super::*;
 
     use crate::args::parse;
+    use crate::commands::simulate::MethodArg;
 
     #[test]
     fn parses_and_rejects_by_value() {
@@ -279,7 +266,7 @@ mod tests {
         .expect("parse");
         assert_eq!((a.radius, a.mass, a.g, a.run.every), (0.5, 1.0, 9.81, 10));
         assert_eq!(a.run.stop_when, [Threshold { index: 0, value: 0.5, magnitude: true }]);
-        assert_eq!(a.run.method, MethodArg::Vern9);
+        assert_eq!(a.run.tolerance.method, MethodArg::Vern9);
         for (words, msg) in [
             (vec!["hoop", "--s0", "1", "--duration", "1"], "--theta0 <RAD>"),
             (

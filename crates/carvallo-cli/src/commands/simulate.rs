@@ -39,9 +39,9 @@ use serde_json::json;
 
 use crate::args::{finite, DataOptions};
 
-/// How `simulate` integrates: the method, its tolerances and the stop conditions.
+/// The integrator and its tolerances, shared by `simulate`, `hoop` and `unicycle`.
 #[derive(Clone, Debug, Default, PartialEq, clap::Args)]
-pub struct IntegrationArgs {
+pub struct ToleranceArgs {
     /// The integrator: fixed-step RK4, or Dormand–Prince 5(4), DOP853 or Verner's 9(8) with
     /// error control and dense output
     #[arg(long, value_enum, default_value_t)]
@@ -52,6 +52,13 @@ pub struct IntegrationArgs {
     /// The absolute tolerance of an adaptive method [default: 1e-3 × rtol]
     #[arg(long, value_name = "A", value_parser = finite, allow_hyphen_values = true)]
     pub atol: Option<f64>,
+}
+
+/// How `simulate` integrates: the method, its tolerances and the stop conditions.
+#[derive(Clone, Debug, Default, PartialEq, clap::Args)]
+pub struct IntegrationArgs {
+    #[command(flatten)]
+    pub tolerance: ToleranceArgs,
     /// Stop when NAME (lean, steer, yaw, pitch, lean_rate, steer_rate, x, y) crosses VALUE,
     /// or when its magnitude reaches VALUE (NAME=±VALUE or NAME=+-VALUE); may be repeated
     #[arg(long = "stop-when", value_name = "NAME=VALUE", value_parser = parse_stop, allow_hyphen_values = true)]
@@ -72,7 +79,7 @@ pub enum MethodArg {
     Vern9,
 }
 
-impl IntegrationArgs {
+impl ToleranceArgs {
     /// The integration these options describe, or an error naming the bad value.
     pub fn integration(&self) -> Result<Integration, String> {
         let method = match self.method {
@@ -298,7 +305,7 @@ fn positive(v: &str) -> Result<usize, String> {
 /// Runs `carvallo simulate`: the text to print, or an error naming the bad value.
 pub fn run(cmd: &Args) -> Result<String, String> {
     let Args { model, data, duration, step, every, integration, json, .. } = cmd;
-    let how = integration.integration()?;
+    let how = integration.tolerance.integration()?;
     let stops = &integration.stop_when;
     if cmd.csv && cmd.batch.is_none() {
         return Err("invalid --csv: it prints the rows of --batch FILE.csv".into());
