@@ -81,6 +81,20 @@ crate::scene! {
     }
 }
 
+/// The names of the state's components ([`State::to_array`] order), for errors.
+const STATE_NAMES: [&str; 10] = [
+    "x",
+    "y",
+    "yaw",
+    "lean",
+    "steer",
+    "rear wheel",
+    "front wheel",
+    "lean rate",
+    "steer rate",
+    "rear wheel rate",
+];
+
 /// Why an evaluation or a simulation of the nonlinear bicycle failed.
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub enum NonlinearError {
@@ -854,20 +868,8 @@ impl WhippleNonlinear {
         if let Some(bad) = how.unusable() {
             return Err(invalid(bad));
         }
-        const NAMES: [&str; 10] = [
-            "x",
-            "y",
-            "yaw",
-            "lean",
-            "steer",
-            "rear wheel",
-            "front wheel",
-            "lean rate",
-            "steer rate",
-            "rear wheel rate",
-        ];
         for (k, v) in start.to_array().iter().enumerate() {
-            finite(NAMES[k], *v)?;
+            finite(STATE_NAMES[k], *v)?;
         }
         for stop in stops {
             finite("stop value", stop.value)?;

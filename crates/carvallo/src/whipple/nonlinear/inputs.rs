@@ -73,7 +73,7 @@ use nalgebra::{Matrix3, Vector3};
 
 use super::{
     dynamics_scene, finite, invalid, Configuration, NonlinearError, Sample, State, Stop, Watched,
-    WhippleNonlinear,
+    WhippleNonlinear, STATE_NAMES,
 };
 use crate::numerics::integrate::{self, Grid, Integration, Point, Stats};
 use crate::numerics::ode::Trajectory;
@@ -627,20 +627,6 @@ impl WhippleNonlinear {
         Ok(trajectory)
     }
 }
-
-/// The names of the state's components, for errors.
-const STATE_NAMES: [&str; 10] = [
-    "x",
-    "y",
-    "yaw",
-    "lean",
-    "steer",
-    "rear wheel",
-    "front wheel",
-    "lean rate",
-    "steer rate",
-    "rear wheel rate",
-];
 
 /// A driven run in progress: what its segments share.
 struct Run<'a> {
