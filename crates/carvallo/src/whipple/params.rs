@@ -133,25 +133,61 @@ pub(crate) fn valid_within(v: &[f64; 26], slack: &TriangleSlack) -> bool {
     if (v[4] == 0.0 && v[7] != 0.0) || (v[22] == 0.0 && v[25] != 0.0) {
         return false;
     }
-    for (j, (xx, yy)) in [(6, 7), (24, 25)].into_iter().enumerate() {
-        if v[yy] > 2.0 * v[xx] * (1.0 + slack[j]) {
-            return false;
-        }
-    }
-    for (j, (xx, yy, zz, xz)) in [(11, 12, 13, 14), (18, 19, 20, 21)].into_iter().enumerate() {
-        let (a, c, d, yy) = (v[xx], v[zz], v[xz], v[yy]);
-        if a * c - d * d < 0.0 {
-            return false;
-        }
-        let mean = 0.5 * (a + c);
-        let half = (0.25 * (a - c) * (a - c) + d * d).sqrt();
-        let (l1, l2) = (mean - half, mean + half);
-        let s = 1.0 + slack[2 + j];
-        if yy > (l1 + l2) * s || l2 > (l1 + yy) * s {
-            return false;
-        }
+    if !TRIANGLE_BODIES.iter().enumerate().all(|(j, body)| body.holds(v, slack[j])) {
+        return false;
     }
     !point_like(v) || mass_matrix_regular(v)
+}
+
+/// The triangle inequalities of one body's moments of inertia, by the indices of its moments
+/// in [`PARAM_NAMES`], in the order of [`TriangleSlack`]'s slacks. [`valid_within`] checks them
+/// all; a sweep of random designs checks each as soon as its moments are drawn (a body's
+/// inequalities read its moments only).
+#[derive(Clone, Copy, Debug)]
+pub(crate) enum TriangleBody {
+    /// A wheel, symmetric about its axle: $I_{yy} \le 2 I_{xx}$ (`[xx, yy]`).
+    Wheel([usize; 2]),
+    /// A frame with an $xz$ product of inertia: its principal moments $l_1 \le l_2$ in the $xz$
+    /// plane and $I_{yy}$ obey the triangle inequalities, and the tensor is not indefinite
+    /// (`[xx, yy, zz, xz]`).
+    Frame([usize; 4]),
+}
+
+/// The bodies of [`TriangleBody`]: the rear wheel, the front wheel, the rear frame and the
+/// front frame (the order of [`TriangleSlack`]).
+pub(crate) static TRIANGLE_BODIES: [TriangleBody; 4] = [
+    TriangleBody::Wheel([6, 7]),
+    TriangleBody::Wheel([24, 25]),
+    TriangleBody::Frame([11, 12, 13, 14]),
+    TriangleBody::Frame([18, 19, 20, 21]),
+];
+
+impl TriangleBody {
+    /// The indices of the body's moments in [`PARAM_NAMES`].
+    pub(crate) fn keys(&self) -> &[usize] {
+        match self {
+            TriangleBody::Wheel(k) => k,
+            TriangleBody::Frame(k) => k,
+        }
+    }
+
+    /// Whether the moments of `v` obey the body's inequalities, each relaxed by `slack` (relative).
+    pub(crate) fn holds(self, v: &[f64; 26], slack: f64) -> bool {
+        match self {
+            TriangleBody::Wheel([xx, yy]) => !(v[yy] > 2.0 * v[xx] * (1.0 + slack)),
+            TriangleBody::Frame([xx, yy, zz, xz]) => {
+                let (a, c, d, yy) = (v[xx], v[zz], v[xz], v[yy]);
+                if a * c - d * d < 0.0 {
+                    return false;
+                }
+                let mean = 0.5 * (a + c);
+                let half = (0.25 * (a - c) * (a - c) + d * d).sqrt();
+                let (l1, l2) = (mean - half, mean + half);
+                let s = 1.0 + slack;
+                !(yy > (l1 + l2) * s || l2 > (l1 + yy) * s)
+            }
+        }
+    }
 }
 
 /// Whether a frame of `v` has a zero or singular inertia tensor (a point mass): then the mass
