@@ -59,6 +59,9 @@ pub const INDEPENDENT: [&str; 3] = ["phid", "deltad", "thetaRd"];
 pub const DEPENDENT: [&str; 3] = ["thetad", "psid", "thetaFd"];
 /// All six speeds: the independent ones, then the dependent ones.
 const SPEEDS: [&str; 6] = ["phid", "deltad", "thetaRd", "thetad", "psid", "thetaFd"];
+/// The names of the steer rotation's entries.
+const RS: [[&str; 3]; 3] =
+    [["rS_11", "rS_12", "rS_13"], ["rS_21", "rS_22", "rS_23"], ["rS_31", "rS_32", "rS_33"]];
 /// The four bodies: rear wheel, rear frame, front frame, front wheel.
 pub const BODIES: [&str; 4] = ["R", "B", "H", "F"];
 
@@ -247,6 +250,22 @@ pub fn derive() -> Result<Derivation> {
     let r_b = mm(&r_l, &rot_y(&sth, &cth));
     let r_s = mm(&mm(&rot_y(&slam, &clam), &rot_z(&sdel, &cdel)), &rot_y(&(-&slam), &clam));
     let r_h = mm(&r_b, &r_s);
+    // The steer rotation's entries are named (they enter the front frame's angular velocity
+    // and position vectors; expanded with the rear frame's they took several hundred
+    // operations): time derivatives through `rS_dot` below.
+    let rs_sym: M3 = [0, 1, 2].map(|i| {
+        [0, 1, 2].map(|j| {
+            nm.name(
+                RS[i][j],
+                &format!(
+                    "entry ({}, {}) of the steer rotation R_y(lambda) R_z(delta) R_y(-lambda)",
+                    i + 1,
+                    j + 1
+                ),
+                r_s[i][j].clone(),
+            )
+        })
+    });
     let c_r = mv(&r_l, &[num(0), num(0), -&rr]);
     let a0 = [&w + &c, num(0), rr.clone()];
     let front = |x: V3| -> V3 {
@@ -310,6 +329,15 @@ pub fn derive() -> Result<Derivation> {
         ("sdel", &cdel * &deltad),
         ("cdel", -(&sdel * &deltad)),
     ];
+    // The steer rotation's entries: d/dt rS_ij = (d r_s_ij / d delta) deltad.
+    let steer_rules = [("sdel", &cdel * &deltad), ("cdel", -(&sdel * &deltad))];
+    let mut rules = rules;
+    for k in 0..9 {
+        let rate = chain(&r_s[k / 3][k % 3], &steer_rules);
+        if !rate.is_zero() {
+            rules.push((RS[k / 3][k % 3], rate));
+        }
+    }
     // The time derivative at constant speeds of an expression in the sines and cosines. n_F is
     // not among the leaves: nothing differentiated this way contains it (the contact direction's
     // derivative is built by hand below).
@@ -335,7 +363,7 @@ pub fn derive() -> Result<Derivation> {
         &[num(0), thetad.clone(), num(0)],
     ));
     let w_r_body = expand3(&add(&w_b_body, &[num(0), thetard.clone(), num(0)]));
-    let w_h_body = expand3(&add(&mv(&transpose(&r_s), &w_b_body), &scale(&deltad, &s_axis)));
+    let w_h_body = expand3(&add(&mv(&transpose(&rs_sym), &w_b_body), &scale(&deltad, &s_axis)));
     let w_f_body = expand3(&add(&w_h_body, &[num(0), thetafd.clone(), num(0)]));
 
     // The emitted velocities and accelerations follow the rigid-body chain (yawed-frame
@@ -347,7 +375,11 @@ pub fn derive() -> Result<Derivation> {
     // out and expanded instead, the velocities and their time derivatives took about 2,400
     // operations more.
     // Everything is at constant speeds (the dependent accelerations' velocity parts).
-    let mut unname: Vec<(String, Atom)> = Vec::new();
+    // Named quantities and their expressions, in the order they are named (later ones may
+    // name earlier ones): the checks substitute them back, latest first.
+    let mut unname: Vec<(String, Atom)> = (0..9)
+        .map(|k| (RS[k / 3][k % 3].to_string(), r_s[k / 3][k % 3].clone()))
+        .collect();
     let mut name_vec = |nm: &mut Named, name: &str, description: &str, v: &V3| -> V3 {
         let named = nm.name3(name, description, v);
         for (k, c) in ["x", "y", "z"].iter().enumerate() {
@@ -379,18 +411,31 @@ pub fn derive() -> Result<Derivation> {
         "from the rear wheel centre to the steering axis point A, the front frame's reference point (yawed frame, m)",
         &expand3(&mv(&r_b, &a0)),
     );
-    let from_a = |x: V3| expand3(&mv(&r_b, &mv(&r_s, &sub(&x, &a0))));
+    // From A to a point of the front frame: R_B (R_S (x - A)), the vector in the rear frame
+    // named first.
+    let q_h = name_vec(
+        &mut nm,
+        "qH",
+        "from A to H's mass centre in the rear frame's axes (m)",
+        &expand3(&mv(&rs_sym, &sub(&[p("xH"), num(0), &p("zH") + &rr], &a0))),
+    );
     let rho_h = name_vec(
         &mut nm,
         "rhoH",
         "from A to H's mass centre (yawed frame, m)",
-        &from_a([p("xH"), num(0), &p("zH") + &rr]),
+        &expand3(&mv(&r_b, &q_h)),
+    );
+    let q_f = name_vec(
+        &mut nm,
+        "qF",
+        "from A to the front wheel centre C_F in the rear frame's axes (m)",
+        &expand3(&mv(&rs_sym, &sub(&[w.clone(), num(0), &rr - &rf], &a0))),
     );
     let rho_f = name_vec(
         &mut nm,
         "rhoF",
         "from A to the front wheel centre C_F (yawed frame, m)",
-        &from_a([w.clone(), num(0), &rr - &rf]),
+        &expand3(&mv(&r_b, &q_f)),
     );
     let step = |y: &(V3, V3), w: &V3, alpha: &V3, rho: &V3| -> (V3, V3) {
         let wr = cross(w, rho);
@@ -412,7 +457,7 @@ pub fn derive() -> Result<Derivation> {
     ];
     let same = |a: &Atom, b: &Atom, table: &[(String, Atom)]| {
         let mut x = a - b;
-        for (n, v) in table {
+        for (n, v) in table.iter().rev() {
             x = subst(&x, n, v);
         }
         trig_points.iter().all(|point| {
@@ -754,7 +799,7 @@ pub fn derive() -> Result<Derivation> {
                 "acceleration of {}'s mass centre when the independent accelerations vanish (yawed frame, m/s^2)",
                 b.name
             ),
-            &expand3(&acc0),
+            &acc0,
         );
         let alpha0 = nm.name3(
             &format!("alpha0_{}", b.name),
@@ -762,7 +807,7 @@ pub fn derive() -> Result<Derivation> {
                 "time derivative of the components of {}'s angular velocity (in the frame of w_) when the independent accelerations vanish (rad/s^2)",
                 b.name
             ),
-            &expand3(&alpha0),
+            &alpha0,
         );
         let iw = mv(&b.inertia, &om);
         // Euler: dH/dt = I (d omega/dt in the carrier's components) + carrier x I omega.
