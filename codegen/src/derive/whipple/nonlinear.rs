@@ -220,10 +220,6 @@ struct Body {
     /// Inertial acceleration of the mass centre at constant speeds (yawed frame).
     accel: V3,
     omega: V3,
-    /// Angular velocity of the frame whose components `omega` and `inertia` are in (the body
-    /// itself for the frames; the rear frame, resp. the front frame, for the wheels, whose
-    /// inertia is constant there by symmetry).
-    carrier: V3,
     inertia: M3,
     position: V3,
 }
@@ -703,7 +699,6 @@ pub fn derive() -> Result<Derivation> {
             velocity: kin_r.0.clone(),
             accel: kin_r.1.clone(),
             omega: w_r_body,
-            carrier: w_b_body.clone(),
             inertia: inertia("IRxx", "IRyy", "IRxx", None),
             position: c_r.clone(),
         },
@@ -713,7 +708,6 @@ pub fn derive() -> Result<Derivation> {
             velocity: kin_b.0.clone(),
             accel: kin_b.1.clone(),
             omega: w_b_body.clone(),
-            carrier: w_b_body,
             inertia: inertia("IBxx", "IByy", "IBzz", Some("IBxz")),
             position: pos_b.clone(),
         },
@@ -723,7 +717,6 @@ pub fn derive() -> Result<Derivation> {
             velocity: kin_h.0.clone(),
             accel: kin_h.1.clone(),
             omega: w_h_body.clone(),
-            carrier: w_h_body.clone(),
             inertia: inertia("IHxx", "IHyy", "IHzz", Some("IHxz")),
             position: pos_h.clone(),
         },
@@ -733,7 +726,6 @@ pub fn derive() -> Result<Derivation> {
             velocity: kin_f.0.clone(),
             accel: kin_f.1.clone(),
             omega: w_f_body,
-            carrier: w_h_body,
             inertia: inertia("IFxx", "IFyy", "IFxx", None),
             position: c_f.clone(),
         },
@@ -764,18 +756,6 @@ pub fn derive() -> Result<Derivation> {
                 )
             })
             .collect();
-        let wt: Vec<V3> = (0..3)
-            .map(|i| {
-                nm.name3(
-                    &format!("wt_{}_{}", b.name, INDEPENDENT[i]),
-                    &format!(
-                        "partial angular velocity of {} for {} (body frame)",
-                        b.name, INDEPENDENT[i]
-                    ),
-                    &partial(&b.omega, i),
-                )
-            })
-            .collect();
         let vel = nm.name3(
             &format!("v_{}", b.name),
             &format!("velocity of {}'s mass centre (yawed frame, m/s)", b.name),
@@ -788,10 +768,8 @@ pub fn derive() -> Result<Derivation> {
         );
         // Accelerations at zero independent accelerations.
         let mut acc0 = b.accel.clone();
-        let mut alpha0 = dtf3(&b.omega);
         for dd in 0..3 {
             acc0 = add(&acc0, &scale(&dep0[dd], &map3(&b.velocity, |c| d(c, DEPENDENT[dd]))));
-            alpha0 = add(&alpha0, &scale(&dep0[dd], &map3(&b.omega, |c| d(c, DEPENDENT[dd]))));
         }
         let acc0 = nm.name3(
             &format!("acc0_{}", b.name),
@@ -801,6 +779,45 @@ pub fn derive() -> Result<Derivation> {
             ),
             &acc0,
         );
+        let force = sub(&scale(&g, &zhat), &acc0);
+        for i in 0..3 {
+            for j in i..3 {
+                m3[i][j] = &m3[i][j] + &b.mass * dot(&vt[i], &vt[j]);
+            }
+            f3[i] = &f3[i] + &b.mass * dot(&force, &vt[i]);
+        }
+        let iw = mv(&b.inertia, &om);
+        kinetic = kinetic + &b.mass * dot(&vel, &vel) / num(2) + dot(&om, &iw) / num(2);
+        potential = potential - &b.mass * &g * &b.position[2];
+        // Rotation. A wheel turns with its frame C plus its spin about the axle y (its inertia
+        // diag(I_xx, I_yy, I_xx) is constant in C's axes): omega_W = omega_C + spin y, so its
+        // partial angular velocities are those of C plus s_i y (s_i: the spin's partial rate)
+        // and its angular acceleration at zero independent accelerations alpha0_C + sigma y
+        // (sigma: the spin's acceleration then). The wheel's terms are folded into its frame's:
+        // wt_W,i . I_W wt_W,j = wt_C,i . I_W wt_C,j + I_yy (s_i wt_C,j,y + s_j wt_C,i,y + s_i s_j),
+        // and its Euler torque I_W alpha_W + omega_C x I_W omega_W has the y component
+        // I_yy (alpha0_C,y + sigma) (I_W is symmetric about y).
+        let (wheel, s, spin, sigma): (&Body, [Atom; 3], Atom, Atom) = match b.name {
+            "R" | "F" => continue,
+            "B" => (&bodies[0], [num(0), num(0), num(1)], thetard.clone(), num(0)),
+            _ => (&bodies[3], [0, 1, 2].map(|i| a[2][i].clone()), thetafd.clone(), dep0[2].clone()),
+        };
+        let wt: Vec<V3> = (0..3)
+            .map(|i| {
+                nm.name3(
+                    &format!("wt_{}_{}", b.name, INDEPENDENT[i]),
+                    &format!(
+                        "partial angular velocity of {} for {} (body frame)",
+                        b.name, INDEPENDENT[i]
+                    ),
+                    &partial(&b.omega, i),
+                )
+            })
+            .collect();
+        let mut alpha0 = dtf3(&b.omega);
+        for dd in 0..3 {
+            alpha0 = add(&alpha0, &scale(&dep0[dd], &map3(&b.omega, |c| d(c, DEPENDENT[dd]))));
+        }
         let alpha0 = nm.name3(
             &format!("alpha0_{}", b.name),
             &format!(
@@ -809,21 +826,23 @@ pub fn derive() -> Result<Derivation> {
             ),
             &alpha0,
         );
-        let iw = mv(&b.inertia, &om);
-        // Euler: dH/dt = I (d omega/dt in the carrier's components) + carrier x I omega.
-        let carrier = if b.name == "R" || b.name == "F" { b.carrier.clone() } else { om.clone() };
-        let torque = add(&mv(&b.inertia, &alpha0), &cross(&carrier, &iw));
-        let force = sub(&scale(&g, &zhat), &acc0);
+        let iyy = wheel.inertia[1][1].clone();
+        let both: M3 = [0, 1, 2].map(|r| [0, 1, 2].map(|c| &b.inertia[r][c] + &wheel.inertia[r][c]));
+        let yhat = [num(0), num(1), num(0)];
+        // Euler: dH/dt = I (d omega/dt in the frame's components) + omega x I omega.
+        let torque = add(
+            &add(&mv(&both, &alpha0), &cross(&om, &mv(&both, &om))),
+            &add(&scale(&(&sigma * &iyy), &yhat), &cross(&om, &scale(&(&spin * &iyy), &yhat))),
+        );
+        let torque_y = &iyy * (&alpha0[1] + &sigma);
         for i in 0..3 {
             for j in i..3 {
                 m3[i][j] = &m3[i][j]
-                    + &b.mass * dot(&vt[i], &vt[j])
-                    + dot(&wt[i], &mv(&b.inertia, &wt[j]));
+                    + dot(&wt[i], &mv(&both, &wt[j]))
+                    + &iyy * (&s[i] * &wt[j][1] + &s[j] * &wt[i][1] + &s[i] * &s[j]);
             }
-            f3[i] = &f3[i] + &b.mass * dot(&force, &vt[i]) - dot(&torque, &wt[i]);
+            f3[i] = &f3[i] - dot(&torque, &wt[i]) - &s[i] * &torque_y;
         }
-        kinetic = kinetic + &b.mass * dot(&vel, &vel) / num(2) + dot(&om, &iw) / num(2);
-        potential = potential - &b.mass * &g * &b.position[2];
     }
     let labels = ["lean", "steer", "rear wheel"];
     for i in 0..3 {
