@@ -217,8 +217,6 @@ struct Body {
     name: &'static str,
     mass: Atom,
     velocity: V3,
-    /// Inertial acceleration of the mass centre at constant speeds (yawed frame).
-    accel: V3,
     omega: V3,
     inertia: M3,
     position: V3,
@@ -373,9 +371,8 @@ pub fn derive() -> Result<Derivation> {
     // Everything is at constant speeds (the dependent accelerations' velocity parts).
     // Named quantities and their expressions, in the order they are named (later ones may
     // name earlier ones): the checks substitute them back, latest first.
-    let mut unname: Vec<(String, Atom)> = (0..9)
-        .map(|k| (RS[k / 3][k % 3].to_string(), r_s[k / 3][k % 3].clone()))
-        .collect();
+    let mut unname: Vec<(String, Atom)> =
+        (0..9).map(|k| (RS[k / 3][k % 3].to_string(), r_s[k / 3][k % 3].clone())).collect();
     let mut name_vec = |nm: &mut Named, name: &str, description: &str, v: &V3| -> V3 {
         let named = nm.name3(name, description, v);
         for (k, c) in ["x", "y", "z"].iter().enumerate() {
@@ -697,7 +694,6 @@ pub fn derive() -> Result<Derivation> {
             name: "R",
             mass: p("mR"),
             velocity: kin_r.0.clone(),
-            accel: kin_r.1.clone(),
             omega: w_r_body,
             inertia: inertia("IRxx", "IRyy", "IRxx", None),
             position: c_r.clone(),
@@ -706,7 +702,6 @@ pub fn derive() -> Result<Derivation> {
             name: "B",
             mass: p("mB"),
             velocity: kin_b.0.clone(),
-            accel: kin_b.1.clone(),
             omega: w_b_body.clone(),
             inertia: inertia("IBxx", "IByy", "IBzz", Some("IBxz")),
             position: pos_b.clone(),
@@ -715,7 +710,6 @@ pub fn derive() -> Result<Derivation> {
             name: "H",
             mass: p("mH"),
             velocity: kin_h.0.clone(),
-            accel: kin_h.1.clone(),
             omega: w_h_body.clone(),
             inertia: inertia("IHxx", "IHyy", "IHzz", Some("IHxz")),
             position: pos_h.clone(),
@@ -724,38 +718,17 @@ pub fn derive() -> Result<Derivation> {
             name: "F",
             mass: p("mF"),
             velocity: kin_f.0.clone(),
-            accel: kin_f.1.clone(),
             omega: w_f_body,
             inertia: inertia("IFxx", "IFyy", "IFxx", None),
             position: c_f.clone(),
         },
     ];
     let g = p("g");
-    let mut m3 = vec![vec![num(0); 3]; 3];
-    let mut f3 = [num(0), num(0), num(0)];
+    // Energy: every body's velocity and angular velocity.
     let mut kinetic = num(0);
     let mut potential = num(0);
+    let mut om_of = Vec::new();
     for b in &bodies {
-        // Non-holonomic partial velocities.
-        let partial = |x: &V3, i: usize| -> V3 {
-            let mut out = map3(x, |c| d(c, INDEPENDENT[i]));
-            for dd in 0..3 {
-                out = add(&out, &scale(&a[dd][i], &map3(x, |c| d(c, DEPENDENT[dd]))));
-            }
-            out
-        };
-        let vt: Vec<V3> = (0..3)
-            .map(|i| {
-                nm.name3(
-                    &format!("vt_{}_{}", b.name, INDEPENDENT[i]),
-                    &format!(
-                        "partial velocity of {}'s mass centre for {} (yawed frame, m per unit speed)",
-                        b.name, INDEPENDENT[i]
-                    ),
-                    &partial(&b.velocity, i),
-                )
-            })
-            .collect();
         let vel = nm.name3(
             &format!("v_{}", b.name),
             &format!("velocity of {}'s mass centre (yawed frame, m/s)", b.name),
@@ -766,42 +739,169 @@ pub fn derive() -> Result<Derivation> {
             &format!("angular velocity of {} (body frame, rad/s)", b.name),
             &b.omega,
         );
-        // Accelerations at zero independent accelerations.
-        let mut acc0 = b.accel.clone();
-        for dd in 0..3 {
-            acc0 = add(&acc0, &scale(&dep0[dd], &map3(&b.velocity, |c| d(c, DEPENDENT[dd]))));
-        }
-        let acc0 = nm.name3(
-            &format!("acc0_{}", b.name),
-            &format!(
-                "acceleration of {}'s mass centre when the independent accelerations vanish (yawed frame, m/s^2)",
-                b.name
-            ),
-            &acc0,
-        );
-        let force = sub(&scale(&g, &zhat), &acc0);
-        for i in 0..3 {
-            for j in i..3 {
-                m3[i][j] = &m3[i][j] + &b.mass * dot(&vt[i], &vt[j]);
-            }
-            f3[i] = &f3[i] + &b.mass * dot(&force, &vt[i]);
-        }
         let iw = mv(&b.inertia, &om);
         kinetic = kinetic + &b.mass * dot(&vel, &vel) / num(2) + dot(&om, &iw) / num(2);
         potential = potential - &b.mass * &g * &b.position[2];
-        // Rotation. A wheel turns with its frame C plus its spin about the axle y (its inertia
-        // diag(I_xx, I_yy, I_xx) is constant in C's axes): omega_W = omega_C + spin y, so its
-        // partial angular velocities are those of C plus s_i y (s_i: the spin's partial rate)
-        // and its angular acceleration at zero independent accelerations alpha0_C + sigma y
-        // (sigma: the spin's acceleration then). The wheel's terms are folded into its frame's:
-        // wt_W,i . I_W wt_W,j = wt_C,i . I_W wt_C,j + I_yy (s_i wt_C,j,y + s_j wt_C,i,y + s_i s_j),
-        // and its Euler torque I_W alpha_W + omega_C x I_W omega_W has the y component
+        om_of.push(om);
+    }
+    // Non-holonomic partial velocities.
+    let partial = |x: &V3, i: usize| -> V3 {
+        let mut out = map3(x, |c| d(c, INDEPENDENT[i]));
+        for dd in 0..3 {
+            out = add(&out, &scale(&a[dd][i], &map3(x, |c| d(c, DEPENDENT[dd]))));
+        }
+        out
+    };
+    // The translational partial velocities and constant-speed acceleration of a point.
+    let point = |nm: &mut Named, name: &str, what: &str, kin: &(V3, V3)| -> (Vec<V3>, V3) {
+        let vt: Vec<V3> = (0..3)
+            .map(|i| {
+                nm.name3(
+                    &format!("vt_{name}_{}", INDEPENDENT[i]),
+                    &format!(
+                        "partial velocity of {what} for {} (yawed frame, m per unit speed)",
+                        INDEPENDENT[i]
+                    ),
+                    &partial(&kin.0, i),
+                )
+            })
+            .collect();
+        let mut acc0 = kin.1.clone();
+        for dd in 0..3 {
+            acc0 = add(&acc0, &scale(&dep0[dd], &map3(&kin.0, |c| d(c, DEPENDENT[dd]))));
+        }
+        let acc0 = nm.name3(
+            &format!("acc0_{name}"),
+            &format!(
+                "acceleration of {what} when the independent accelerations vanish (yawed frame, m/s^2)"
+            ),
+            &acc0,
+        );
+        (vt, acc0)
+    };
+    // The rear wheel centre's, for the runtime's accelerations.
+    let _ = point(&mut nm, "R", "the rear wheel centre", &kin_r);
+    // The dynamics by assemblies: each frame with its wheel, whose centre is fixed in it, as one
+    // body of the total mass at the assembly's mass centre T, with the inertia about T of the
+    // frame, the wheel (diag(I_xx, I_yy, I_xx) in the frame's axes, by symmetry) and the two
+    // masses' offsets d_k from T (sum of m_k (|d_k|^2 1 - d_k d_k^T), in the frame's axes).
+    // Kane's sums over the two bodies equal the assembly's (sum m_k d_k = 0), which halves the
+    // terms of M3 and f3; the wheel's spin adds the terms written out below.
+    let parallel = |parts: &[(Atom, V3)]| -> [Atom; 4] {
+        let mut j = [num(0), num(0), num(0), num(0)];
+        for (m, dk) in parts {
+            j[0] = &j[0] + m * dk[2].pow(num(2));
+            j[1] = &j[1] + m * (dk[0].pow(num(2)) + dk[2].pow(num(2)));
+            j[2] = &j[2] + m * dk[0].pow(num(2));
+            j[3] = &j[3] - m * &dk[0] * &dk[2];
+        }
+        j
+    };
+    let (m_r, m_b, m_h, m_f) = (p("mR"), p("mB"), p("mH"), p("mF"));
+    let mass_rear = &m_r + &m_b;
+    let mass_front = &m_h + &m_f;
+    // Offsets in the frames' axes: B's mass centre from the rear wheel centre; H's mass centre
+    // and the front wheel centre from A.
+    let off_b = [p("xB"), num(0), &p("zB") + &rr];
+    let off_h = sub(&[p("xH"), num(0), &p("zH") + &rr], &a0);
+    let off_f = sub(&[w.clone(), num(0), &rr - &rf], &a0);
+    // The assemblies' mass centres (the y components vanish), named.
+    let mut centre = |name: &str, what: &str, v: V3| -> V3 {
+        let x = nm.name(&format!("{name}_x"), &format!("{what}, x component (m)"), v[0].clone());
+        let z = nm.name(&format!("{name}_z"), &format!("{what}, z component (m)"), v[2].clone());
+        [x, num(0), z]
+    };
+    let e_rear = centre(
+        "eTR",
+        "the rear assembly's mass centre from the rear wheel centre in the rear frame's axes",
+        scale(&(&m_b / &mass_rear), &off_b),
+    );
+    let e_front = centre(
+        "eTF",
+        "the front assembly's mass centre from A in the front frame's axes",
+        scale(&(num(1) / &mass_front), &add(&scale(&m_h, &off_h), &scale(&m_f, &off_f))),
+    );
+    let j_rear =
+        parallel(&[(m_r.clone(), scale(&num(-1), &e_rear)), (m_b.clone(), sub(&off_b, &e_rear))]);
+    let j_front =
+        parallel(&[(m_h.clone(), sub(&off_h, &e_front)), (m_f.clone(), sub(&off_f, &e_front))]);
+    let assembly_inertia = |nm: &mut Named,
+                            name: &str,
+                            frame: &M3,
+                            wheel: &M3,
+                            j: [Atom; 4]|
+     -> M3 {
+        let comps = ["xx", "yy", "zz", "xz"];
+        let at = [(0, 0), (1, 1), (2, 2), (0, 2)];
+        let named: Vec<Atom> = (0..4)
+            .map(|k| {
+                let (r, c) = at[k];
+                nm.name(
+                    &format!("I{name}_{}", comps[k]),
+                    &format!(
+                        "{} entry of the {} assembly's inertia about its mass centre (frame axes, kg m^2)",
+                        comps[k],
+                        if name == "TR" { "rear" } else { "front" }
+                    ),
+                    &frame[r][c] + &wheel[r][c] + &j[k],
+                )
+            })
+            .collect();
+        [
+            [named[0].clone(), num(0), named[3].clone()],
+            [num(0), named[1].clone(), num(0)],
+            [named[3].clone(), num(0), named[2].clone()],
+        ]
+    };
+    let i_rear = assembly_inertia(&mut nm, "TR", &bodies[1].inertia, &bodies[0].inertia, j_rear);
+    let i_front = assembly_inertia(&mut nm, "TF", &bodies[2].inertia, &bodies[3].inertia, j_front);
+    let rho_tr = nm.name3(
+        "rhoTR",
+        "from the rear wheel centre to the rear assembly's mass centre (yawed frame, m)",
+        &expand3(&mv(&r_b, &e_rear)),
+    );
+    let q_tf = nm.name3(
+        "qTF",
+        "from A to the front assembly's mass centre in the rear frame's axes (m)",
+        &expand3(&mv(&rs_sym, &e_front)),
+    );
+    let rho_tf = nm.name3(
+        "rhoTF",
+        "from A to the front assembly's mass centre (yawed frame, m)",
+        &expand3(&mv(&r_b, &q_tf)),
+    );
+    let kin_tr = step(&kin_r, &w_b_yaw, &alpha_b, &rho_tr);
+    let kin_tf = step(&kin_a, &w_h_yaw, &alpha_h, &rho_tf);
+    let mut m3 = vec![vec![num(0); 3]; 3];
+    let mut f3 = [num(0), num(0), num(0)];
+    let yhat = [num(0), num(1), num(0)];
+    let assemblies = [
+        ("TR", "the rear assembly's mass centre", mass_rear, &kin_tr, 1, i_rear, 0),
+        ("TF", "the front assembly's mass centre", mass_front, &kin_tf, 2, i_front, 3),
+    ];
+    for (name, what, mass, kin, frame, inertia, wheel) in assemblies {
+        let (vt, acc0) = point(&mut nm, name, what, kin);
+        let force = sub(&scale(&g, &zhat), &acc0);
+        for i in 0..3 {
+            for j in i..3 {
+                m3[i][j] = &m3[i][j] + &mass * dot(&vt[i], &vt[j]);
+            }
+            f3[i] = &f3[i] + &mass * dot(&force, &vt[i]);
+        }
+        // Rotation. The wheel turns with its frame C plus its spin about the axle y:
+        // omega_W = omega_C + spin y, so its partial angular velocities are C's plus s_i y (s_i:
+        // the spin's partial rate) and its angular acceleration at zero independent
+        // accelerations alpha0_C + sigma y (sigma: the spin's acceleration then). Its spin's
+        // terms: wt_W,i . I_W wt_W,j = wt_C,i . I_W wt_C,j + I_yy (s_i wt_C,j,y + s_j wt_C,i,y
+        // + s_i s_j); its Euler torque I_W alpha_W + omega_C x I_W omega_W has the y component
         // I_yy (alpha0_C,y + sigma) (I_W is symmetric about y).
-        let (wheel, s, spin, sigma): (&Body, [Atom; 3], Atom, Atom) = match b.name {
-            "R" | "F" => continue,
-            "B" => (&bodies[0], [num(0), num(0), num(1)], thetard.clone(), num(0)),
-            _ => (&bodies[3], [0, 1, 2].map(|i| a[2][i].clone()), thetafd.clone(), dep0[2].clone()),
+        let b = &bodies[frame];
+        let (s, spin, sigma): ([Atom; 3], Atom, Atom) = if wheel == 0 {
+            ([num(0), num(0), num(1)], thetard.clone(), num(0))
+        } else {
+            ([0, 1, 2].map(|i| a[2][i].clone()), thetafd.clone(), dep0[2].clone())
         };
+        let om = &om_of[frame];
         let wt: Vec<V3> = (0..3)
             .map(|i| {
                 nm.name3(
@@ -826,19 +926,17 @@ pub fn derive() -> Result<Derivation> {
             ),
             &alpha0,
         );
-        let iyy = wheel.inertia[1][1].clone();
-        let both: M3 = [0, 1, 2].map(|r| [0, 1, 2].map(|c| &b.inertia[r][c] + &wheel.inertia[r][c]));
-        let yhat = [num(0), num(1), num(0)];
+        let iyy = bodies[wheel].inertia[1][1].clone();
         // Euler: dH/dt = I (d omega/dt in the frame's components) + omega x I omega.
         let torque = add(
-            &add(&mv(&both, &alpha0), &cross(&om, &mv(&both, &om))),
-            &add(&scale(&(&sigma * &iyy), &yhat), &cross(&om, &scale(&(&spin * &iyy), &yhat))),
+            &add(&mv(&inertia, &alpha0), &cross(om, &mv(&inertia, om))),
+            &add(&scale(&(&sigma * &iyy), &yhat), &cross(om, &scale(&(&spin * &iyy), &yhat))),
         );
         let torque_y = &iyy * (&alpha0[1] + &sigma);
         for i in 0..3 {
             for j in i..3 {
                 m3[i][j] = &m3[i][j]
-                    + dot(&wt[i], &mv(&both, &wt[j]))
+                    + dot(&wt[i], &mv(&inertia, &wt[j]))
                     + &iyy * (&s[i] * &wt[j][1] + &s[j] * &wt[i][1] + &s[i] * &s[j]);
             }
             f3[i] = &f3[i] - dot(&torque, &wt[i]) - &s[i] * &torque_y;
