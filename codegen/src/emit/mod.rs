@@ -50,6 +50,7 @@ mod expr;
 mod latex;
 mod lower;
 mod markdown;
+mod nominal;
 mod optimize;
 mod text;
 

@@ -26,7 +26,8 @@
 //! [`choose`] then measures both programs at seeded points against 256-bit evaluations and keeps
 //! the optimised one only when it has fewer operations, computes the same function (the 256-bit
 //! values agree) and its rounding error does not grow by more than 2× at the 99th percentile
-//! of any output.
+//! of any output, in either of two samples: uniform arguments, and the model's nominal values
+//! ([`super::nominal`]) scaled by up to ±20 %.
 
 use std::collections::{BTreeMap, BTreeSet, HashMap};
 
@@ -513,13 +514,20 @@ fn errors(p: &Program, points: &[(Vec<f64>, Vec<f64>)], refs: &[Vec<f64>]) -> Ve
 }
 
 /// The seeded points at which [`choose`] compares programs: every parameter and input uniform
-/// in [0.5, 1.5].
-fn points(p: &Program, n: usize) -> Vec<(Vec<f64>, Vec<f64>)> {
-    let mut rng = ChaCha8Rng::seed_from_u64(0x5ca1_ab1e);
+/// in [0.5, 1.5] (the first sample), or with `model` the model's nominal values
+/// ([`super::nominal`]) each scaled by a uniform factor in [0.8, 1.2], the others as in the first
+/// sample (the second).
+fn points(p: &Program, n: usize, model: Option<&str>) -> Vec<(Vec<f64>, Vec<f64>)> {
+    let mut rng =
+        ChaCha8Rng::seed_from_u64(if model.is_some() { 0x0a11_0ca7 } else { 0x5ca1_ab1e });
+    let mut draw = |name: &str| match model.and_then(|m| super::nominal::nominal(m, name)) {
+        Some(x) => x * rng.gen_range(0.8..1.2),
+        None => rng.gen_range(0.5..1.5),
+    };
     (0..n)
         .map(|_| {
-            let params = (0..p.params.len()).map(|_| rng.gen_range(0.5..1.5)).collect();
-            let inputs = (0..p.inputs.len()).map(|_| rng.gen_range(0.5..1.5)).collect();
+            let params = p.params.iter().map(|n| draw(n)).collect();
+            let inputs = p.inputs.iter().map(|n| draw(n)).collect();
             (params, inputs)
         })
         .collect()
@@ -534,13 +542,25 @@ fn points(p: &Program, n: usize) -> Vec<(Vec<f64>, Vec<f64>)> {
 pub fn choose(d: &Derivation) -> Result<(Program, Vec<String>), EmitError> {
     let naive = super::emit_program(d)?;
     let (naive_ops, _) = super::count_ops(&naive);
-    let pts = points(&naive, POINTS);
-    let refs = exact(&naive, &pts);
-    let naive_err = errors(&naive, &pts, &refs);
+    // Two samples: uniform arguments, and the model's nominal ones (when it has some).
+    let mut samples = vec![points(&naive, POINTS, None)];
+    if naive
+        .params
+        .iter()
+        .chain(&naive.inputs)
+        .any(|n| super::nominal::nominal(&d.model, n).is_some())
+    {
+        samples.push(points(&naive, POINTS, Some(&d.model)));
+    }
+    let refs: Vec<Vec<Vec<f64>>> = samples.iter().map(|pts| exact(&naive, pts)).collect();
+    let naive_err: Vec<Vec<f64>> =
+        samples.iter().zip(&refs).map(|(pts, r)| errors(&naive, pts, r)).collect();
     let deps = dependencies(d)?;
     let mut lines = vec![format!(
         "Lowering (codegen/src/emit/optimize.rs): naive {naive_ops} ops; symbolica's optimiser, \
-         outputs whose p99 rounding error at {POINTS} seeded points grows over 2x lowered naively:"
+         outputs whose p99 rounding error at {POINTS} seeded points{} grows over 2x lowered \
+         naively:",
+        if samples.len() > 1 { " (uniform, and around the model's nominal values)" } else { "" }
     )];
     let mut best: Option<(Program, usize, Effort)> = None;
     'efforts: for effort in EFFORTS {
@@ -553,13 +573,15 @@ pub fn choose(d: &Derivation) -> Result<(Program, Vec<String>), EmitError> {
                     break 'efforts;
                 }
             };
-            let err = errors(&p, &pts, &refs);
-            // Errors below 2^-52 count as the rounding of the last operation.
-            let r: Vec<f64> = naive_err
-                .iter()
-                .zip(&err)
-                .map(|(n, o)| o.max(f64::EPSILON) / n.max(f64::EPSILON))
-                .collect();
+            // Per output, the larger ratio of the two samples' p99 errors; errors below 2^-52
+            // count as the rounding of the last operation.
+            let mut r = vec![0.0f64; naive.outputs.len()];
+            for ((pts, refs), naive_err) in samples.iter().zip(&refs).zip(&naive_err) {
+                let err = errors(&p, pts, refs);
+                for (k, (n, o)) in naive_err.iter().zip(&err).enumerate() {
+                    r[k] = r[k].max(o.max(f64::EPSILON) / n.max(f64::EPSILON));
+                }
+            }
             let before = fallback.len();
             for k in (0..r.len()).filter(|&k| r[k] > 2.0) {
                 // A naive output whose error still grows inherits it from the formulas it
@@ -601,7 +623,7 @@ pub fn choose(d: &Derivation) -> Result<(Program, Vec<String>), EmitError> {
     };
     // The kept program computes the same function: its 256-bit values agree with the naive
     // program's far below f64 rounding.
-    for (a, b) in refs.iter().zip(exact(&p, &pts)) {
+    for (a, b) in refs[0].iter().zip(exact(&p, &samples[0])) {
         for (k, (x, y)) in a.iter().zip(&b).enumerate() {
             if a.len() == b.len() && (x - y).abs() > 1e-30 * x.abs().max(1.0) {
                 return Err(unsupported(format!(
