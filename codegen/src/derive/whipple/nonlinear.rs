@@ -255,7 +255,7 @@ pub fn derive() -> Result<Derivation> {
     let r_h = mm(&r_b, &r_s);
     // The steer rotation's entries are named (they enter the front frame's angular velocity
     // and position vectors; expanded with the rear frame's they took several hundred
-    // operations): time derivatives through `rS_dot` below.
+    // operations); their time derivatives come from the chain rule in delta (`rules` below).
     let rs_sym: M3 = [0, 1, 2].map(|i| {
         [0, 1, 2].map(|j| {
             nm.name(
