@@ -59,6 +59,9 @@ pub struct Derivation {
     pub formulas: Vec<Formula>,
     /// The symbolic checks, in the order they were made.
     pub checks: Vec<Check>,
+    /// Nominal values of some parameters and inputs, by name: where the model is evaluated in
+    /// practice (`derive::nominal`), for the lowering's second error sample; empty for none.
+    pub nominal: Vec<(String, f64)>,
 }
 
 pub mod cas;

@@ -4,6 +4,7 @@
 
 pub mod bicycle;
 pub mod hoop;
+pub mod nominal;
 pub mod symbols;
 pub mod unicycle;
 pub mod whipple;

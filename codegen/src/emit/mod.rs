@@ -50,7 +50,6 @@ mod expr;
 mod latex;
 mod lower;
 mod markdown;
-mod nominal;
 mod optimize;
 mod text;
 

@@ -27,7 +27,7 @@
 //! the optimised one only when it has fewer operations, computes the same function (the 256-bit
 //! values agree) and its rounding error does not grow by more than 2× at the 99th percentile
 //! of any output, in either of two samples: uniform arguments, and the model's nominal values
-//! ([`super::nominal`]) scaled by up to ±20 %.
+//! ([`Derivation::nominal`]) scaled by up to ±20 %.
 
 use std::collections::{BTreeMap, BTreeSet, HashMap};
 
@@ -514,13 +514,14 @@ fn errors(p: &Program, points: &[(Vec<f64>, Vec<f64>)], refs: &[Vec<f64>]) -> Ve
 }
 
 /// The seeded points at which [`choose`] compares programs: every parameter and input uniform
-/// in [0.5, 1.5] (the first sample), or with `model` the model's nominal values
-/// ([`super::nominal`]) each scaled by a uniform factor in [0.8, 1.2], the others as in the first
-/// sample (the second).
-fn points(p: &Program, n: usize, model: Option<&str>) -> Vec<(Vec<f64>, Vec<f64>)> {
+/// in [0.5, 1.5] (the first sample), or with `nominal` values by name (the derivation's
+/// [`Derivation::nominal`]) each of those scaled by a uniform factor in [0.8, 1.2], the others as
+/// in the first sample (the second).
+fn points(p: &Program, n: usize, nominal: Option<&[(String, f64)]>) -> Vec<(Vec<f64>, Vec<f64>)> {
     let mut rng =
-        ChaCha8Rng::seed_from_u64(if model.is_some() { 0x0a11_0ca7 } else { 0x5ca1_ab1e });
-    let mut draw = |name: &str| match model.and_then(|m| super::nominal::nominal(m, name)) {
+        ChaCha8Rng::seed_from_u64(if nominal.is_some() { 0x0a11_0ca7 } else { 0x5ca1_ab1e });
+    let value = |name: &str| nominal.and_then(|t| t.iter().find(|(k, _)| k == name)).map(|e| e.1);
+    let mut draw = |name: &str| match value(name) {
         Some(x) => x * rng.gen_range(0.8..1.2),
         None => rng.gen_range(0.5..1.5),
     };
@@ -544,13 +545,8 @@ pub fn choose(d: &Derivation) -> Result<(Program, Vec<String>), EmitError> {
     let (naive_ops, _) = super::count_ops(&naive);
     // Two samples: uniform arguments, and the model's nominal ones (when it has some).
     let mut samples = vec![points(&naive, POINTS, None)];
-    if naive
-        .params
-        .iter()
-        .chain(&naive.inputs)
-        .any(|n| super::nominal::nominal(&d.model, n).is_some())
-    {
-        samples.push(points(&naive, POINTS, Some(&d.model)));
+    if naive.params.iter().chain(&naive.inputs).any(|n| d.nominal.iter().any(|(k, _)| k == n)) {
+        samples.push(points(&naive, POINTS, Some(&d.nominal)));
     }
     let refs: Vec<Vec<Vec<f64>>> = samples.iter().map(|pts| exact(&naive, pts)).collect();
     let naive_err: Vec<Vec<f64>> =

@@ -52,6 +52,7 @@ fn single(params: &[&str], inputs: &[&str], expr: Atom) -> Derivation {
             expr,
         }],
         checks: vec![],
+        nominal: Vec::new(),
     }
 }
 

@@ -40,6 +40,7 @@ fn toy_model(model: &str, expr: &str) -> Derivation {
             holds: true,
             detail: "none".to_string(),
         }],
+        nominal: Vec::new(),
     }
 }
 

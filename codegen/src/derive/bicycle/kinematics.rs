@@ -842,5 +842,6 @@ pub fn derive() -> Result<Derivation> {
         inputs: geo::INPUTS.iter().map(|s| s.to_string()).collect(),
         formulas,
         checks,
+        nominal: crate::derive::nominal::values("bicycle_kinematics"),
     })
 }

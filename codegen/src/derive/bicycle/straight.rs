@@ -916,5 +916,6 @@ pub fn derive() -> Result<Derivation> {
         inputs: INPUTS.iter().map(|s| s.to_string()).collect(),
         formulas,
         checks,
+        nominal: crate::derive::nominal::values("bicycle_straight"),
     })
 }

@@ -749,5 +749,6 @@ pub fn derive() -> Result<Derivation> {
         inputs,
         formulas,
         checks,
+        nominal: crate::derive::nominal::values("hoop_discussion"),
     })
 }

@@ -577,5 +577,6 @@ pub fn derive() -> Result<Derivation> {
         inputs: std::iter::once("v").chain(GAINS).map(str::to_string).collect(),
         formulas,
         checks,
+        nominal: crate::derive::nominal::values("whipple"),
     })
 }

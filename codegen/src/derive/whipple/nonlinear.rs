@@ -1005,5 +1005,6 @@ pub fn derive() -> Result<Derivation> {
         inputs: INPUTS.iter().map(|s| s.to_string()).collect(),
         formulas: nm.formulas,
         checks,
+        nominal: crate::derive::nominal::values("whipple_nonlinear"),
     })
 }

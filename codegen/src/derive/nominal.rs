@@ -1,5 +1,6 @@
-//! Nominal arguments of the models: where each is evaluated in practice, for the second sample
-//! of the optimising lowering's error comparison ([`super::optimize::choose`]).
+//! Nominal arguments of the models: where each is evaluated in practice, handed over with each
+//! derivation ([`crate::Derivation::nominal`]) for the second sample of the optimising
+//! lowering's error comparison (`emit::optimize::choose`).
 //!
 //! Uniform arguments in $[0.5, 1.5]$ never bring two nearly equal moments of inertia or a
 //! mass ratio of 40 together, so an optimised form that loses digits in such a near
@@ -95,15 +96,16 @@ const WHEELS: [(&str, f64); 21] = [
     ("ds", 0.01),
 ];
 
-/// The nominal value of argument `name` of `model`, if it has one.
-pub fn nominal(model: &str, name: &str) -> Option<f64> {
+/// The nominal values of `model`'s arguments (names not among its parameters and inputs are
+/// ignored by the sampling; none for the memoir's bicycle models).
+pub fn values(model: &str) -> Vec<(String, f64)> {
     let tables: &[&[(&str, f64)]] = match model {
         "whipple" => &[&BENCHMARK, &WHIPPLE_INPUTS],
         "whipple_nonlinear" => &[&BENCHMARK, &NONLINEAR_INPUTS],
         "hoop" | "hoop_discussion" | "unicycle" => &[&WHEELS],
         _ => &[],
     };
-    tables.iter().flat_map(|t| t.iter()).find(|(n, _)| *n == name).map(|&(_, v)| v)
+    tables.iter().flat_map(|t| t.iter()).map(|&(n, v)| (n.to_string(), v)).collect()
 }
 
 #[cfg(test)]
@@ -116,9 +118,12 @@ mod tests {
     fn the_benchmark_follows_the_parameter_order() {
         let names: Vec<&str> = BENCHMARK.iter().map(|(n, _)| *n).collect();
         assert_eq!(names, crate::derive::whipple::PARAMS);
-        assert_eq!(nominal("whipple", "IBxz"), Some(2.4));
-        assert_eq!(nominal("whipple_nonlinear", "thetaRd"), Some(-15.0));
-        assert_eq!(nominal("bicycle_geometry", "R"), None);
-        assert_eq!(nominal("unicycle", "B"), Some(99.5));
+        let get = |model: &str, name: &str| {
+            values(model).into_iter().find(|(n, _)| n == name).map(|(_, v)| v)
+        };
+        assert_eq!(get("whipple", "IBxz"), Some(2.4));
+        assert_eq!(get("whipple_nonlinear", "thetaRd"), Some(-15.0));
+        assert_eq!(get("bicycle_geometry", "R"), None);
+        assert_eq!(get("unicycle", "B"), Some(99.5));
     }
 }
