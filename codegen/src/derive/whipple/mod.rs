@@ -313,6 +313,7 @@ pub fn tf_numerators(m: &Matrices) -> [[[Atom; 3]; 2]; 2] {
 
 /// The check that [`tf_numerators`] and [`char_poly`] fit: with generic symbols for the sixteen
 /// matrix entries, $N(s)\,P(s) = \det P(s)\, I$ identically in $s$, $v$, $g$ and the entries.
+#[allow(clippy::needless_range_loop)]
 fn tf_check() -> Check {
     let gm = generic_matrices();
     let (s, v, g) = (var("s"), var("v"), var("g"));
@@ -389,6 +390,7 @@ fn quartic_of(a: &[[Atom; 2]; 2], b: &[[Atom; 2]; 2], c: &[[Atom; 2]; 2]) -> [At
 /// and `g` with the entries of `m` as coefficients. Worked out on [`generic_matrices`] (so the
 /// expansion in $v$ never multiplies out the entries' own formulas), then the entries of `m`
 /// substituted.
+#[allow(clippy::needless_range_loop)]
 pub fn closed_loop_poly(m: &Matrices) -> Vec<Vec<Atom>> {
     let gm = generic_matrices();
     let (v, g) = (var("v"), var("g"));

@@ -750,7 +750,7 @@ pub fn derive() -> Result<Derivation> {
         );
         let iw = mv(&b.inertia, &om);
         kinetic = kinetic + &b.mass * dot(&vel, &vel) / num(2) + dot(&om, &iw) / num(2);
-        potential = potential - &b.mass * &g * &b.position[2];
+        potential -= &b.mass * &g * &b.position[2];
         om_of.push(om);
     }
     // Non-holonomic partial velocities.

@@ -174,7 +174,7 @@ impl TriangleBody {
     /// Whether the moments of `v` obey the body's inequalities, each relaxed by `slack` (relative).
     pub(crate) fn holds(self, v: &[f64; 26], slack: f64) -> bool {
         match self {
-            TriangleBody::Wheel([xx, yy]) => !(v[yy] > 2.0 * v[xx] * (1.0 + slack)),
+            TriangleBody::Wheel([xx, yy]) => v[yy] <= 2.0 * v[xx] * (1.0 + slack),
             TriangleBody::Frame([xx, yy, zz, xz]) => {
                 let (a, c, d, yy) = (v[xx], v[zz], v[xz], v[yy]);
                 if a * c - d * d < 0.0 {

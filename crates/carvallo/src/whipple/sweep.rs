@@ -730,6 +730,9 @@ mod tests {
         (values, valid, draws)
     }
 
+    /// A number computed from one design's varied values.
+    type Statistic = Box<dyn Fn(&[f64]) -> f64>;
+
     fn spreads_of(names: &[&str], rel: f64) -> Vec<Spread> {
         names.iter().map(|n| Spread { name: n.to_string(), rel }).collect()
     }
@@ -787,7 +790,7 @@ mod tests {
             assert!(draws > 5 * count, "{draws} plain draws");
             let at = |name: &str| names.iter().position(|n| *n == name).expect("spread");
             // Each statistic: a parameter, or a ratio that a body's inequality bounds.
-            let mut stats: Vec<Box<dyn Fn(&[f64]) -> f64>> = Vec::new();
+            let mut stats: Vec<Statistic> = Vec::new();
             for j in 0..keys.len() {
                 stats.push(Box::new(move |d: &[f64]| d[j]));
             }
