@@ -13,9 +13,8 @@
 //! gains, and for the nonlinear one a state of moderate lean, steer and rates at about 4.5 m/s;
 //! the hoop, the discussion of its motion and the unicycle take the values of the bench's
 //! scenes (`model_value` in `crates/carvallo-cli/src/bench/tables.rs`: a wheel of radius
-//! 0.5 m, its moments A = 100 and B = 99.5 nearly equal as for a thin rider-and-wheel body).
-//! The memoir's bicycle models (`bicycle_*`) have no nominal table yet: their arguments are
-//! Carvallo's symbols, whose values the memoir leaves open.
+//! 0.5 m, its moments A = 100 and B = 99.5 nearly equal as for a thin rider-and-wheel body);
+//! the memoir's bicycle models take his old bicycle of n° 52 and n° 117, as the runtime does.
 
 /// The 2007 benchmark's parameters, in the order of the whipple models' parameters.
 const BENCHMARK: [(&str, f64); 26] = [
@@ -96,13 +95,73 @@ const WHEELS: [(&str, f64); 21] = [
     ("ds", 0.01),
 ];
 
+/// The memoir's old bicycle of n° 52 and n° 117 (`carvallo::bicycle::straight::Constants::MEMOIR`):
+/// wheels of radius 0.38 m, wheelbase 1.10 m, trail 0.08 m, steering axis at 25° from the
+/// vertical, the mounted frame's centre of mass 0.20 m ahead of the rear wheel and 1 m high,
+/// 70 kg, hoop wheels of 5 kg, A + 2A₁ = 100, C = 4, L = 14 kg m²; at 3.3 m/s, inside his
+/// self-stable window 3.12–3.49 m/s.
+const STRAIGHT: [(&str, f64); 13] = [
+    ("R", 0.38),
+    ("l", 1.10),
+    ("c_1", 0.08),
+    ("eta", 0.436_332_312_998_582_4),
+    ("ecg", 0.20),
+    ("h", 1.0),
+    ("mu", 70.0),
+    ("mu1", 5.0),
+    ("A2", 100.0),
+    ("C", 4.0),
+    ("L", 14.0),
+    ("g", 9.81),
+    ("s", 3.3),
+];
+
+/// The same bicycle's geometry (n° 52: R, l, the fork offset c, the steering axis' angle σ₀ =
+/// 25°) in a moderately leaned and steered configuration: lean θ and steer γ of 0.1 rad, the
+/// angles σ and μ near σ₀.
+const GEOMETRY: [(&str, f64); 8] = [
+    ("R", 0.38),
+    ("l", 1.10),
+    ("c", 0.08),
+    ("sigma0", 0.436_332_312_998_582_4),
+    ("theta", 0.1),
+    ("gamma", 0.1),
+    ("sigma", 0.436_332_312_998_582_4),
+    ("mu", 0.436_332_312_998_582_4),
+];
+
+/// The steady-turning model's constants (`carvallo::bicycle::steady::BicycleParams::memoir`:
+/// the memoir's R, l, c, e, h, μ, μ₁ and hoop wheels; the frame's A, B, C, L, which the memoir
+/// does not give, as the runtime's illustrative values). Its state variables have no nominal
+/// values and are sampled uniformly.
+const STEADY: [(&str, f64); 15] = [
+    ("R", 0.38),
+    ("g", 9.81),
+    ("mu", 70.0),
+    ("e", 0.15),
+    ("h", 1.0),
+    ("A", 75.0),
+    ("B", 78.0),
+    ("C", 8.0),
+    ("L", 6.0),
+    ("mu1", 5.0),
+    ("A1", 1.083),
+    ("B1", 1.444),
+    ("C1", 0.361),
+    ("l", 1.10),
+    ("c", 0.08),
+];
+
 /// The nominal values of `model`'s arguments (names not among its parameters and inputs are
-/// ignored by the sampling; none for the memoir's bicycle models).
+/// ignored by the sampling).
 pub fn values(model: &str) -> Vec<(String, f64)> {
     let tables: &[&[(&str, f64)]] = match model {
         "whipple" => &[&BENCHMARK, &WHIPPLE_INPUTS],
         "whipple_nonlinear" => &[&BENCHMARK, &NONLINEAR_INPUTS],
         "hoop" | "hoop_discussion" | "unicycle" => &[&WHEELS],
+        "bicycle_straight" => &[&STRAIGHT],
+        "bicycle_geometry" | "bicycle_kinematics" => &[&GEOMETRY],
+        "bicycle_steady" => &[&STEADY],
         _ => &[],
     };
     tables.iter().flat_map(|t| t.iter()).map(|&(n, v)| (n.to_string(), v)).collect()
@@ -123,7 +182,10 @@ mod tests {
         };
         assert_eq!(get("whipple", "IBxz"), Some(2.4));
         assert_eq!(get("whipple_nonlinear", "thetaRd"), Some(-15.0));
-        assert_eq!(get("bicycle_geometry", "R"), None);
+        assert_eq!(get("bicycle_geometry", "R"), Some(0.38));
+        let eta = get("bicycle_straight", "eta").expect("eta");
+        assert!((eta - 25f64.to_radians()).abs() < 1e-15, "{eta}");
+        assert_eq!(get("nowhere", "R"), None);
         assert_eq!(get("unicycle", "B"), Some(99.5));
     }
 }
