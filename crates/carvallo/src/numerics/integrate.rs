@@ -964,6 +964,13 @@ impl Threshold {
     pub fn parse(text: &str, names: &[&str]) -> Option<Threshold> {
         let (name, value) = text.split_once('=')?;
         let index = names.iter().position(|n| *n == name.trim())?;
+        let (magnitude, value) = Threshold::parse_bound(value)?;
+        Some(Threshold { index, value, magnitude })
+    }
+
+    /// The VALUE of a condition: `(false, x)` for a finite number x, `(true, x)` for `±x` or
+    /// `+-x` with x finite and not negative (a magnitude bound); `None` otherwise.
+    pub fn parse_bound(value: &str) -> Option<(bool, f64)> {
         let value = value.trim();
         let (magnitude, number) = match value.strip_prefix('±').or_else(|| value.strip_prefix("+-"))
         {
@@ -974,7 +981,7 @@ impl Threshold {
         if magnitude && value < 0.0 {
             return None;
         }
-        Some(Threshold { index, value, magnitude })
+        Some((magnitude, value))
     }
 
     /// The condition as [`parse`](Self::parse) reads it (`theta=±0.5`), the component named

@@ -195,6 +195,24 @@ fn finite(name: &'static str, value: f64) -> Result<f64, NonlinearError> {
     }
 }
 
+/// The checks every simulation makes before it starts: a usable integration, a finite start
+/// state and stop values, and at most [`integrate::MAX_EVENTS`] stop conditions.
+fn check_run(start: &State, how: &Integration, stops: &[Stop]) -> Result<(), NonlinearError> {
+    if let Some(bad) = how.unusable() {
+        return Err(invalid(bad));
+    }
+    for (k, v) in start.to_array().iter().enumerate() {
+        finite(STATE_NAMES[k], *v)?;
+    }
+    for stop in stops {
+        finite("stop value", stop.value)?;
+    }
+    if stops.len() > integrate::MAX_EVENTS {
+        return Err(invalid(("stop conditions", stops.len() as f64, "at most 8")));
+    }
+    Ok(())
+}
+
 /// The coordinates that enter the equations and the three independent speeds.
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct Configuration {
@@ -437,16 +455,7 @@ impl Stop {
     pub fn parse(text: &str) -> Option<Stop> {
         let (name, value) = text.split_once('=')?;
         let quantity = Watched::ALL.into_iter().find(|w| w.name() == name.trim())?;
-        let value = value.trim();
-        let (magnitude, number) = match value.strip_prefix('±').or_else(|| value.strip_prefix("+-"))
-        {
-            Some(rest) => (true, rest),
-            None => (false, value),
-        };
-        let value: f64 = number.parse().ok().filter(|v: &f64| v.is_finite())?;
-        if magnitude && value < 0.0 {
-            return None;
-        }
+        let (magnitude, value) = integrate::Threshold::parse_bound(value)?;
         Some(Stop { quantity, value, magnitude })
     }
 
@@ -865,18 +874,7 @@ impl WhippleNonlinear {
         stops: &[Stop],
         keep: &mut dyn FnMut(f64, &State, f64) -> Result<(), NonlinearError>,
     ) -> Result<Final, NonlinearError> {
-        if let Some(bad) = how.unusable() {
-            return Err(invalid(bad));
-        }
-        for (k, v) in start.to_array().iter().enumerate() {
-            finite(STATE_NAMES[k], *v)?;
-        }
-        for stop in stops {
-            finite("stop value", stop.value)?;
-        }
-        if stops.len() > integrate::MAX_EVENTS {
-            return Err(invalid(("stop conditions", stops.len() as f64, "at most 8")));
-        }
+        check_run(&start, how, stops)?;
         let pitch0 = self.pitch(start.lean, start.steer, 0.0)?;
         let (e0, _) = self.observe(&self.configuration(&start, pitch0)?);
         // The Newton guess: the last pitch solved by a right-hand side evaluation or a step,

@@ -72,8 +72,8 @@ use std::fmt;
 use nalgebra::{Matrix3, Vector3};
 
 use super::{
-    dynamics_scene, finite, invalid, Configuration, NonlinearError, Sample, State, Stop, Watched,
-    WhippleNonlinear, STATE_NAMES,
+    check_run, dynamics_scene, Configuration, NonlinearError, Sample, State, Stop, Watched,
+    WhippleNonlinear,
 };
 use crate::numerics::integrate::{self, Grid, Integration, Point, Stats};
 use crate::numerics::ode::Trajectory;
@@ -573,18 +573,7 @@ impl WhippleNonlinear {
         stops: &[Stop],
         inputs: &Inputs,
     ) -> Result<ForcedTrajectory, NonlinearError> {
-        if let Some(bad) = how.unusable() {
-            return Err(invalid(bad));
-        }
-        for (k, v) in start.to_array().iter().enumerate() {
-            finite(STATE_NAMES[k], *v)?;
-        }
-        for stop in stops {
-            finite("stop value", stop.value)?;
-        }
-        if stops.len() > integrate::MAX_EVENTS {
-            return Err(invalid(("stop conditions", stops.len() as f64, "at most 8")));
-        }
+        check_run(&start, how, stops)?;
         let breaks = inputs.breaks(grid)?;
         let mut trajectory =
             Trajectory::with_capacity(grid.h, grid.samples(), ForcedDiagnostics::default());
