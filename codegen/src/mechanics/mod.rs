@@ -2,5 +2,6 @@
 //! derivatives of moving vectors of the memoir's n° 1–3 ([`frame`]), and the ε-series and small
 //! vector algebra of the exact linearisation ([`series`]).
 
+pub mod engine;
 pub mod frame;
 pub mod series;

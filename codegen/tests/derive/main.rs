@@ -15,6 +15,7 @@ mod bicycle_steady;
 mod bicycle_straight;
 mod common;
 mod emit;
+mod engine;
 mod hoop_checks;
 mod hoop_discussion;
 mod hoop_formulas;

@@ -582,3 +582,4 @@ pub fn derive() -> Result<Derivation> {
         nominal: crate::derive::nominal::values("whipple"),
     })
 }
+pub mod description;
