@@ -1,6 +1,6 @@
 //! Argument helpers shared by the subcommands: the value parsers clap calls (numbers that must
-//! parse and be finite), the options `--rider FILE` and `--strict`, and the bicycle that
-//! `--model benchmark|FILE` names.
+//! parse and be finite), the options `--rider FILE` and `--strict`, the bicycle that
+//! `--model benchmark|FILE` names, and the bounded reading of input files ([`read_text`]).
 
 use carvallo::parameter_text::{add_rider, Loaded, Rider, UncertainParams};
 use carvallo::whipple::WhippleParams;
@@ -72,9 +72,7 @@ pub fn uncertain_bicycle(
     let loaded = match &data.rider {
         None => loaded,
         Some(path) => {
-            let text = std::fs::read_to_string(path).map_err(|e| {
-                format!("cannot read rider file `{path}`: {}", e.to_string().to_lowercase())
-            })?;
+            let text = read_text(path, "rider file")?;
             let rider =
                 Rider::from_text(&text).map_err(|e| format!("invalid rider file `{path}`: {e}"))?;
             add_rider(&loaded.params, &rider)
@@ -124,8 +122,41 @@ pub fn toml_model(model: &str) -> Result<WhippleParams, String> {
 
 /// The text of the parameter file `model`.
 fn read_model_file(model: &str) -> Result<String, String> {
-    std::fs::read_to_string(model)
-        .map_err(|e| format!("cannot read model file `{model}`: {}", e.to_string().to_lowercase()))
+    read_text(model, "model file")
+}
+
+/// The most bytes read from one input file (parameter, rider, gain, torque and batch files) or
+/// from standard input: far above any real input, low enough that `--model /dev/zero` fails at
+/// once instead of filling the memory.
+pub const MAX_INPUT_BYTES: u64 = 16 << 20;
+
+/// The text of the file `path`, read whole up to [`MAX_INPUT_BYTES`]; a file that is not a
+/// regular file (a device, a pipe) is read with the same bound. Errors start with `cannot read
+/// {what} `path``, and name the bound for a file larger than it.
+pub fn read_text(path: impl AsRef<std::path::Path>, what: &str) -> Result<String, String> {
+    let path = path.as_ref();
+    let cannot = |reason: String| format!("cannot read {what} `{}`: {reason}", path.display());
+    let file = std::fs::File::open(path).map_err(|e| cannot(e.to_string().to_lowercase()))?;
+    if file.metadata().is_ok_and(|m| m.is_dir()) {
+        return Err(cannot("it is a directory".into()));
+    }
+    read_bounded(file).map_err(cannot)
+}
+
+/// Everything `reader` gives, as UTF-8 text, up to [`MAX_INPUT_BYTES`] (an error past it).
+pub fn read_bounded(reader: impl std::io::Read) -> Result<String, String> {
+    use std::io::Read as _;
+    let mut bytes = Vec::new();
+    reader
+        .take(MAX_INPUT_BYTES + 1)
+        .read_to_end(&mut bytes)
+        .map_err(|e| e.to_string().to_lowercase())?;
+    if bytes.len() as u64 > MAX_INPUT_BYTES {
+        return Err(format!("larger than {} MiB, the limit of an input", MAX_INPUT_BYTES >> 20));
+    }
+    String::from_utf8(bytes).map_err(|e| {
+        format!("not UTF-8 text (invalid byte at offset {})", e.utf8_error().valid_up_to())
+    })
 }
 
 /// Parses `words` (the command's name first) as the options `A` of one command, as the command
@@ -152,6 +183,25 @@ mod tests {
         assert_eq!(finite("inf"), Err("must be finite".into()));
         assert_eq!(lean_deg("-89.9"), Ok(-89.9));
         assert_eq!(lean_deg("90"), Err("must lie strictly between -90 and 90 degrees".into()));
+    }
+
+    #[test]
+    fn inputs_are_read_up_to_a_stated_bound() {
+        // A device without end, a directory, bytes that are not UTF-8 and a file just at the
+        // bound (read) and one byte past it (refused).
+        let e = read_text("/dev/zero", "model file").unwrap_err();
+        assert_eq!(
+            e,
+            "cannot read model file `/dev/zero`: larger than 16 MiB, the limit of an input"
+        );
+        let e = read_text("/", "rider file").unwrap_err();
+        assert_eq!(e, "cannot read rider file `/`: it is a directory");
+        let e = read_bounded(&[b'a', 0xff][..]).unwrap_err();
+        assert_eq!(e, "not UTF-8 text (invalid byte at offset 1)");
+        let at = vec![b' '; MAX_INPUT_BYTES as usize];
+        assert_eq!(read_bounded(&at[..]).map(|t| t.len()), Ok(at.len()));
+        let past = vec![b' '; MAX_INPUT_BYTES as usize + 1];
+        assert!(read_bounded(&past[..]).unwrap_err().starts_with("larger than 16 MiB"));
     }
 
     #[test]

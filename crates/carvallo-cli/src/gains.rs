@@ -111,9 +111,7 @@ pub fn speed(v: &str) -> Result<f64, String> {
 /// Reads the gain table `path` (see the [module docs](self)); errors start with
 /// `invalid gain table` or `cannot read gain table` and name the file.
 pub fn read_gain_table(path: &str) -> Result<GainTable, String> {
-    let text = std::fs::read_to_string(path).map_err(|e| {
-        format!("cannot read gain table `{path}`: {}", e.to_string().to_lowercase())
-    })?;
+    let text = crate::args::read_text(path, "gain table")?;
     let bad = |msg: String| format!("invalid gain table `{path}`: {msg}");
     let mut lines = text.lines().enumerate().filter(|(_, l)| !l.trim().is_empty());
     let (_, header) = lines.next().ok_or_else(|| bad("empty file".into()))?;

@@ -117,9 +117,7 @@ struct BatchRow {
 /// any order), then one row of finite numbers per simulation (blank lines skipped).
 fn read_batch(file: &std::path::Path) -> Result<Vec<BatchRow>, String> {
     let name = file.display();
-    let text = std::fs::read_to_string(file).map_err(|e| {
-        format!("cannot read batch file `{name}`: {}", e.to_string().to_lowercase())
-    })?;
+    let text = crate::args::read_text(file, "batch file")?;
     let mut lines = text.lines().enumerate().filter(|(_, l)| !l.trim().is_empty());
     let (_, header) = lines.next().ok_or_else(|| format!("invalid batch file `{name}`: empty"))?;
     let columns: Vec<&str> = header.split(',').map(str::trim).collect();

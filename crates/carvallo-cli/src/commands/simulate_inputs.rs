@@ -194,9 +194,7 @@ impl InputArgs {
 /// Reads a `--torque-csv` file: the roll and steer series (`None` for a column not given).
 fn read_torque_csv(file: &Path) -> Result<(Option<Series>, Option<Series>), String> {
     let name = file.display();
-    let text = std::fs::read_to_string(file).map_err(|e| {
-        format!("cannot read torque file `{name}`: {}", e.to_string().to_lowercase())
-    })?;
+    let text = crate::args::read_text(file, "torque file")?;
     let bad = |msg: String| format!("invalid torque file `{name}`: {msg}");
     let mut lines = text.lines().enumerate().filter(|(_, l)| !l.trim().is_empty());
     let (_, header) = lines.next().ok_or_else(|| bad("empty file".into()))?;
