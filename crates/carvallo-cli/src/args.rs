@@ -14,6 +14,92 @@ pub fn finite(v: &str) -> Result<f64, String> {
     Ok(x)
 }
 
+/// The numerically valid range of a number: where its computation neither overflows nor loses
+/// all its precision (not what seems physically usual: studies go far from the benchmark).
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct Range {
+    /// The least value.
+    pub lo: f64,
+    /// The greatest value.
+    pub hi: f64,
+    /// Why the range ends there, for the error.
+    pub why: &'static str,
+}
+
+/// Speeds of the bicycle [m/s]: beyond $10^6$ the gravity terms $g K_0$ fall within a few digits
+/// of the rounding of $v^2 K_2$ (and $v^2$ overflows at $10^{154}$).
+pub const SPEED: Range = Range {
+    lo: -1e6,
+    hi: 1e6,
+    why: "beyond it gravity is lost in the rounding of the speed terms",
+};
+/// Angles in radians, and in degrees: beyond $10^6$ an angle keeps fewer than ten digits of its
+/// sine (and none past $10^{16}$).
+pub const ANGLE: Range =
+    Range { lo: -1e6, hi: 1e6, why: "beyond it the angle's sine loses its digits" };
+/// Angular rates [rad/s] of the hoop and the unicycle: their squares times the lengths stay far
+/// from overflow and the energy keeps the gravity term.
+pub const RATE: Range =
+    Range { lo: -1e6, hi: 1e6, why: "beyond it gravity is lost in the rounding of the rate terms" };
+/// Lengths [m]: positive, so that products of up to six of them with the masses stay normal
+/// numbers.
+pub const LENGTH: Range =
+    Range { lo: 1e-6, hi: 1e6, why: "the equations' determinants must stay normal numbers" };
+/// Masses [kg]: positive, as [`LENGTH`].
+pub const MASS: Range =
+    Range { lo: 1e-30, hi: 1e30, why: "the equations' determinants must stay normal numbers" };
+/// Moments of inertia [kg m²], zero allowed.
+pub const INERTIA: Range =
+    Range { lo: 0.0, hi: 1e42, why: "the equations' determinants must stay normal numbers" };
+/// Products of inertia [kg m²], of either sign.
+pub const PRODUCT: Range =
+    Range { lo: -1e42, hi: 1e42, why: "the equations' determinants must stay normal numbers" };
+/// A mass that may be zero (a wheel's) [kg].
+pub const MASS_OR_ZERO: Range = Range { lo: 0.0, ..MASS };
+/// The acceleration of gravity [m/s²]: positive (the hoop and the unicycle stand on it).
+pub const GRAVITY: Range = Range {
+    lo: 1e-6,
+    hi: 1e6,
+    why: "gravity is positive, and beyond it the rates are lost in its rounding",
+};
+/// Gains of the state feedback: beyond $10^{12}$ the closed-loop matrix loses the bicycle's own
+/// terms in its rounding.
+pub const GAIN: Range = Range {
+    lo: -1e12,
+    hi: 1e12,
+    why: "beyond it the bicycle's own terms are lost in the rounding of the feedback",
+};
+/// Torques [N m] of a driven run: as [`GAIN`].
+pub const TORQUE: Range = Range {
+    lo: -1e12,
+    hi: 1e12,
+    why: "beyond it the bicycle's own terms are lost in the rounding of the torque",
+};
+/// Angular frequencies [rad/s] of `bode`: the transfer function's powers of ω stay normal.
+pub const FREQUENCY: Range =
+    Range { lo: 1e-12, hi: 1e12, why: "the transfer function's powers of omega must stay normal" };
+
+impl Range {
+    /// `x` if it lies in the range, or the error naming the range.
+    pub fn check(&self, x: f64) -> Result<f64, String> {
+        if x >= self.lo && x <= self.hi {
+            Ok(x)
+        } else {
+            Err(self.message())
+        }
+    }
+
+    /// The error of a value outside.
+    pub fn message(&self) -> String {
+        format!("must lie within [{:e}, {:e}] ({})", self.lo, self.hi, self.why)
+    }
+
+    /// The value parser of clap: a finite number within the range.
+    pub fn parser(self) -> impl Fn(&str) -> Result<f64, String> + Clone + Send + Sync + 'static {
+        move |v| finite(v).and_then(|x| self.check(x))
+    }
+}
+
 /// A lean angle in degrees, for clap's `value_parser`: a finite number strictly between -90
 /// and 90.
 pub fn lean_deg(v: &str) -> Result<f64, String> {

@@ -92,6 +92,8 @@ pub fn parse_torque(text: &str) -> Result<TorqueTerm, String> {
         }
     };
     let value = number(value, "value")?;
+    let value =
+        crate::args::TORQUE.check(value).map_err(|e| bad(format!("value `{value}` {e}")))?;
     let time = number(time, "time")?;
     if time < 0.0 {
         return Err(bad(format!("time `{time}` must not be negative")));
@@ -232,13 +234,18 @@ fn read_torque_csv(file: &Path) -> Result<(Option<Series>, Option<Series>), Stri
                 bad(format!("line {}: {} `{}` is not a finite number", i + 1, columns[k], cells[k]))
             })
         };
+        let torque = |k: usize| -> Result<f64, String> {
+            crate::args::TORQUE
+                .check(num(k)?)
+                .map_err(|e| bad(format!("line {}: {} `{}` {e}", i + 1, columns[k], cells[k])))
+        };
         lines_of.push(i + 1);
         t.push(num(tc)?);
         if let Some(k) = rc {
-            roll.push(num(k)?);
+            roll.push(torque(k)?);
         }
         if let Some(k) = sc {
-            steer.push(num(k)?);
+            steer.push(torque(k)?);
         }
     }
     let series = |column: Option<usize>, values: Vec<f64>| -> Result<Option<Series>, String> {

@@ -172,7 +172,7 @@ fn closed_loop(
         Some(target) => {
             let c = bike.balance_assist_gain(target, ASSIST_MAX).ok_or_else(|| {
                 format!(
-                    "no balance-assist gain up to {ASSIST_MAX} N m s/rad makes {target} m/s stable"
+                    "no balance-assist gain up to {ASSIST_MAX} N m s/rad makes --assist-down-to {target:?} m/s stable"
                 )
             })?;
             gains = carvallo::whipple::feedback::Gains::balance_assist(c);
