@@ -356,9 +356,23 @@ mod tests {
         assert!((theta.last().and_then(|x| x.as_f64()).expect("last").abs() - 0.5).abs() < 1e-9);
         assert_eq!(v["method"], "dop853");
         // The bad values of the run itself.
+        // Outside the numerically valid ranges: the option and the range named.
         let bad = ["hoop", "--theta0", "0", "--s0", "1", "--duration", "1", "--radius", "-1"];
+        let e = parse::<HoopArgs>(&bad).unwrap_err();
+        assert!(e.contains("'-1' for '--radius <M>': must lie within [1e-6, 1e6]"), "{e}");
+        let bad = ["hoop", "--theta0", "0", "--s0", "1e7", "--duration", "1"];
+        let e = parse::<HoopArgs>(&bad).unwrap_err();
+        assert!(e.contains("'1e7' for '--s0 <RAD/S>': must lie within [-1e6, 1e6]"), "{e}");
+        // Inside them, a step too long for the rates: the run diverges, said so.
+        let bad = ["hoop", "--theta0", "0.1", "--s0", "3", "--p0", "1e6", "--duration", "0.05"];
         let e = hoop(&parse::<HoopArgs>(&bad).expect("parse")).unwrap_err();
-        assert!(e.contains("radius"), "{e}");
+        assert!(e.starts_with("the integration diverged: the state is not finite at t = "), "{e}");
+        assert!(
+            e.ends_with(
+                "(--method rk4, --step 0.001); take a smaller --step or an adaptive --method"
+            ),
+            "{e}"
+        );
         let bad = ["hoop", "--theta0", "0", "--s0", "1", "--duration", "1", "--rtol", "1e-8"];
         let e = hoop(&parse::<HoopArgs>(&bad).expect("parse")).unwrap_err();
         assert!(e.contains("invalid --rtol"), "{e}");
