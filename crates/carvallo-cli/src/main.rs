@@ -23,6 +23,7 @@ mod gains;
 mod perf;
 mod report_dir;
 mod report_html;
+mod staging;
 
 use commands::{
     accel, bode, eig, kinematics, report, rest, rolling, simulate, statespace, turn, window,
