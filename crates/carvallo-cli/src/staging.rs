@@ -24,9 +24,7 @@
 //! the step named (`staged`, `written`, `exchanged`, `aside`, `replaced`) and
 //! `CARVALLO_TEST_NO_EXCHANGE=1` takes the fallback; release builds have neither hook.
 
-use std::ffi::CString;
 use std::fs::File;
-use std::os::unix::ffi::OsStrExt as _;
 use std::os::unix::io::AsRawFd as _;
 use std::path::{Path, PathBuf};
 use std::sync::Mutex;
@@ -82,13 +80,28 @@ fn kill_point(step: &str) {
     }
 }
 
+/// The flags of `renameat2`: fail if the target exists; swap the two names.
+const NOREPLACE: u32 = 1;
+const EXCHANGE: u32 = 2;
+#[cfg(target_os = "linux")]
+const _: () = assert!(NOREPLACE == libc::RENAME_NOREPLACE && EXCHANGE == libc::RENAME_EXCHANGE);
+
+/// `renameat2(from, to, flags)` in the current directory's terms; `Err` carries the OS error
+/// (`EINVAL` where the system has no `renameat2`: the fallback).
+#[cfg(not(target_os = "linux"))]
+fn rename2(_: &Path, _: &Path, _: u32) -> std::io::Result<()> {
+    Err(std::io::Error::from_raw_os_error(libc::EINVAL))
+}
+
 /// `renameat2(from, to, flags)` in the current directory's terms; `Err` carries the OS error.
-fn rename2(from: &Path, to: &Path, flags: libc::c_uint) -> std::io::Result<()> {
+#[cfg(target_os = "linux")]
+fn rename2(from: &Path, to: &Path, flags: u32) -> std::io::Result<()> {
     if cfg!(debug_assertions) && std::env::var_os("CARVALLO_TEST_NO_EXCHANGE").is_some() {
         return Err(std::io::Error::from_raw_os_error(libc::EINVAL));
     }
+    use std::os::unix::ffi::OsStrExt as _;
     let c = |p: &Path| {
-        CString::new(p.as_os_str().as_bytes())
+        std::ffi::CString::new(p.as_os_str().as_bytes())
             .map_err(|e| std::io::Error::new(std::io::ErrorKind::InvalidInput, e))
     };
     let (from, to) = (c(from)?, c(to)?);
@@ -201,13 +214,13 @@ impl Staging {
         let (tmp, dir) = (&self.tmp, &self.dir);
         let cannot = || format!("cannot rename `{}` to `{}`", tmp.display(), dir.display());
         loop {
-            match rename2(tmp, dir, libc::RENAME_NOREPLACE) {
+            match rename2(tmp, dir, NOREPLACE) {
                 Ok(()) => return Ok(()),
                 Err(e) if unsupported(&e) => return self.replace_fallback(),
                 Err(e) if e.raw_os_error() == Some(libc::EEXIST) => {}
                 Err(e) => return Err(e).with_context(cannot),
             }
-            match rename2(tmp, dir, libc::RENAME_EXCHANGE) {
+            match rename2(tmp, dir, EXCHANGE) {
                 Ok(()) => {
                     kill_point("exchanged");
                     // The previous report, now under the temporary name.
