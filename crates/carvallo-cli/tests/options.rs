@@ -104,7 +104,7 @@ const BASES: &[&[&str]] = &[
 const SKIPPED: &[(&str, &str)] = &[("report", "out")];
 
 /// The state of `accel`'s standard input.
-const STATE: &str = r#"{"q": [0, 0, 0, 0, 0, 0.1, 0, 0, 0], "qd": [0, 0, 0, 0, 1, 0, 0, 0, 0]}"#;
+const STATE: &str = r#"{"q": [0, 0, 0, 0, 1.5, 2.8, 0, 0, 0], "qd": [0, 0, 0, 0, 1, 0, 1, 1, 0]}"#;
 
 /// SplitMix64.
 struct Rng(u64);

@@ -51,6 +51,12 @@ fn accel(model: &str, input: &str) -> Result<String, String> {
         return Err(format!("invalid input `{v}` on standard input: {EXPECTED}"));
     }
     let (q, qd) = (nine(&v, "q")?, nine(&v, "qd")?);
+    // Positions and angles, and rates, within the ranges where the equations keep their digits.
+    for (key, values, range) in [("q", &q, crate::args::ANGLE), ("qd", &qd, crate::args::RATE)] {
+        for (k, x) in values.iter().enumerate() {
+            range.check(*x).map_err(|e| format!("`{key}[{k}]` = {x:?} {e}"))?;
+        }
+    }
     let qdd = bike.basu_mandal_accelerations(q, qd).map_err(|e| e.to_string())?;
     serde_json::to_string_pretty(&json!({ "qdd": qdd })).map_err(|e| e.to_string())
 }
@@ -95,5 +101,9 @@ mod tests {
         );
         let bad = r#"{"q": [0, 0, 0, 0, "x", 0, 0, 0, 0], "qd": [0, 0, 0, 0, 0, 0, 0, 0, 0]}"#;
         assert_eq!(accel("benchmark", bad).unwrap_err(), "`q[4]` is not a number: \"x\"");
+        let big =
+            r#"{"q": [0, 0, 0, 0, 1.5, 2.8, 0, 0, 0], "qd": [0, 0, 0, 0, 0, 0, 0, 1e200, 0]}"#;
+        let e = accel("benchmark", big).unwrap_err();
+        assert!(e.starts_with("`qd[7]` = 1e200 must lie within [-1e6, 1e6]"), "{e}");
     }
 }
