@@ -241,7 +241,10 @@ impl Staging {
         let (tmp, dir) = (&self.tmp, &self.dir);
         let parent = tmp.parent().unwrap_or(Path::new("."));
         let old = parent.join(format!("{}old-{}", prefix(dir), unique()));
-        let held = if dir.exists() {
+        let moved = dir.exists();
+        // Locked, so that no other run restores or removes it while it is aside (`None` when
+        // another process still holds the report it wrote: the rename goes on regardless).
+        let _held = if moved {
             let lock = try_lock(dir);
             std::fs::rename(dir, &old)
                 .with_context(|| format!("cannot move `{}` aside", dir.display()))?;
@@ -251,7 +254,7 @@ impl Staging {
             None
         };
         if let Err(e) = std::fs::rename(tmp, dir) {
-            if held.is_some() {
+            if moved {
                 let _ = std::fs::rename(&old, dir);
             }
             return Err(e).with_context(|| {
@@ -259,7 +262,7 @@ impl Staging {
             });
         }
         kill_point("replaced");
-        if held.is_some() {
+        if moved {
             let _ = std::fs::remove_dir_all(&old);
         }
         Ok(())
