@@ -1,6 +1,6 @@
 //! Argument helpers shared by the subcommands: the value parsers clap calls (numbers that must
-//! parse and be finite), the options `--rider FILE` and `--strict`, and the bicycle that
-//! `--model benchmark|FILE` names.
+//! parse and be finite), the options `--rider FILE` and `--strict`, the bicycle that
+//! `--model benchmark|FILE` names, and the bounded reading of input files ([`read_text`]).
 
 use carvallo::parameter_text::{add_rider, Loaded, Rider, UncertainParams};
 use carvallo::whipple::WhippleParams;
@@ -12,6 +12,92 @@ pub fn finite(v: &str) -> Result<f64, String> {
         return Err("must be finite".into());
     }
     Ok(x)
+}
+
+/// The numerically valid range of a number: where its computation neither overflows nor loses
+/// all its precision (not what seems physically usual: studies go far from the benchmark).
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct Range {
+    /// The least value.
+    pub lo: f64,
+    /// The greatest value.
+    pub hi: f64,
+    /// Why the range ends there, for the error.
+    pub why: &'static str,
+}
+
+/// Speeds of the bicycle [m/s]: beyond $10^6$ the gravity terms $g K_0$ fall within a few digits
+/// of the rounding of $v^2 K_2$ (and $v^2$ overflows at $10^{154}$).
+pub const SPEED: Range = Range {
+    lo: -1e6,
+    hi: 1e6,
+    why: "beyond it gravity is lost in the rounding of the speed terms",
+};
+/// Angles in radians, and in degrees: beyond $10^6$ an angle keeps fewer than ten digits of its
+/// sine (and none past $10^{16}$).
+pub const ANGLE: Range =
+    Range { lo: -1e6, hi: 1e6, why: "beyond it the angle's sine loses its digits" };
+/// Angular rates [rad/s] of the hoop and the unicycle: their squares times the lengths stay far
+/// from overflow and the energy keeps the gravity term.
+pub const RATE: Range =
+    Range { lo: -1e6, hi: 1e6, why: "beyond it gravity is lost in the rounding of the rate terms" };
+/// Lengths [m]: positive, so that products of up to six of them with the masses stay normal
+/// numbers.
+pub const LENGTH: Range =
+    Range { lo: 1e-6, hi: 1e6, why: "the equations' determinants must stay normal numbers" };
+/// Masses [kg]: positive, as [`LENGTH`].
+pub const MASS: Range =
+    Range { lo: 1e-30, hi: 1e30, why: "the equations' determinants must stay normal numbers" };
+/// Moments of inertia [kg m²], zero allowed.
+pub const INERTIA: Range =
+    Range { lo: 0.0, hi: 1e42, why: "the equations' determinants must stay normal numbers" };
+/// Products of inertia [kg m²], of either sign.
+pub const PRODUCT: Range =
+    Range { lo: -1e42, hi: 1e42, why: "the equations' determinants must stay normal numbers" };
+/// A mass that may be zero (a wheel's) [kg].
+pub const MASS_OR_ZERO: Range = Range { lo: 0.0, ..MASS };
+/// The acceleration of gravity [m/s²]: positive (the hoop and the unicycle stand on it).
+pub const GRAVITY: Range = Range {
+    lo: 1e-6,
+    hi: 1e6,
+    why: "gravity is positive, and beyond it the rates are lost in its rounding",
+};
+/// Gains of the state feedback: beyond $10^{12}$ the closed-loop matrix loses the bicycle's own
+/// terms in its rounding.
+pub const GAIN: Range = Range {
+    lo: -1e12,
+    hi: 1e12,
+    why: "beyond it the bicycle's own terms are lost in the rounding of the feedback",
+};
+/// Torques [N m] of a driven run: as [`GAIN`].
+pub const TORQUE: Range = Range {
+    lo: -1e12,
+    hi: 1e12,
+    why: "beyond it the bicycle's own terms are lost in the rounding of the torque",
+};
+/// Angular frequencies [rad/s] of `bode`: the transfer function's powers of ω stay normal.
+pub const FREQUENCY: Range =
+    Range { lo: 1e-12, hi: 1e12, why: "the transfer function's powers of omega must stay normal" };
+
+impl Range {
+    /// `x` if it lies in the range, or the error naming the range.
+    pub fn check(&self, x: f64) -> Result<f64, String> {
+        if x >= self.lo && x <= self.hi {
+            Ok(x)
+        } else {
+            Err(self.message())
+        }
+    }
+
+    /// The error of a value outside.
+    pub fn message(&self) -> String {
+        format!("must lie within [{:e}, {:e}] ({})", self.lo, self.hi, self.why)
+    }
+
+    /// The value parser of clap: a finite number within the range.
+    pub fn parser(self) -> impl Fn(&str) -> Result<f64, String> + Clone + Send + Sync + 'static {
+        move |v| finite(v).and_then(|x| self.check(x))
+    }
 }
 
 /// A lean angle in degrees, for clap's `value_parser`: a finite number strictly between -90
@@ -72,9 +158,7 @@ pub fn uncertain_bicycle(
     let loaded = match &data.rider {
         None => loaded,
         Some(path) => {
-            let text = std::fs::read_to_string(path).map_err(|e| {
-                format!("cannot read rider file `{path}`: {}", e.to_string().to_lowercase())
-            })?;
+            let text = read_text(path, "rider file")?;
             let rider =
                 Rider::from_text(&text).map_err(|e| format!("invalid rider file `{path}`: {e}"))?;
             add_rider(&loaded.params, &rider)
@@ -124,8 +208,41 @@ pub fn toml_model(model: &str) -> Result<WhippleParams, String> {
 
 /// The text of the parameter file `model`.
 fn read_model_file(model: &str) -> Result<String, String> {
-    std::fs::read_to_string(model)
-        .map_err(|e| format!("cannot read model file `{model}`: {}", e.to_string().to_lowercase()))
+    read_text(model, "model file")
+}
+
+/// The most bytes read from one input file (parameter, rider, gain, torque and batch files) or
+/// from standard input: far above any real input, low enough that `--model /dev/zero` fails at
+/// once instead of filling the memory.
+pub const MAX_INPUT_BYTES: u64 = 16 << 20;
+
+/// The text of the file `path`, read whole up to [`MAX_INPUT_BYTES`]; a file that is not a
+/// regular file (a device, a pipe) is read with the same bound. Errors start with `cannot read
+/// {what} `path``, and name the bound for a file larger than it.
+pub fn read_text(path: impl AsRef<std::path::Path>, what: &str) -> Result<String, String> {
+    let path = path.as_ref();
+    let cannot = |reason: String| format!("cannot read {what} `{}`: {reason}", path.display());
+    let file = std::fs::File::open(path).map_err(|e| cannot(e.to_string().to_lowercase()))?;
+    if file.metadata().is_ok_and(|m| m.is_dir()) {
+        return Err(cannot("it is a directory".into()));
+    }
+    read_bounded(file).map_err(cannot)
+}
+
+/// Everything `reader` gives, as UTF-8 text, up to [`MAX_INPUT_BYTES`] (an error past it).
+pub fn read_bounded(reader: impl std::io::Read) -> Result<String, String> {
+    use std::io::Read as _;
+    let mut bytes = Vec::new();
+    reader
+        .take(MAX_INPUT_BYTES + 1)
+        .read_to_end(&mut bytes)
+        .map_err(|e| e.to_string().to_lowercase())?;
+    if bytes.len() as u64 > MAX_INPUT_BYTES {
+        return Err(format!("larger than {} MiB, the limit of an input", MAX_INPUT_BYTES >> 20));
+    }
+    String::from_utf8(bytes).map_err(|e| {
+        format!("not UTF-8 text (invalid byte at offset {})", e.utf8_error().valid_up_to())
+    })
 }
 
 /// Parses `words` (the command's name first) as the options `A` of one command, as the command
@@ -152,6 +269,25 @@ mod tests {
         assert_eq!(finite("inf"), Err("must be finite".into()));
         assert_eq!(lean_deg("-89.9"), Ok(-89.9));
         assert_eq!(lean_deg("90"), Err("must lie strictly between -90 and 90 degrees".into()));
+    }
+
+    #[test]
+    fn inputs_are_read_up_to_a_stated_bound() {
+        // A device without end, a directory, bytes that are not UTF-8 and a file just at the
+        // bound (read) and one byte past it (refused).
+        let e = read_text("/dev/zero", "model file").unwrap_err();
+        assert_eq!(
+            e,
+            "cannot read model file `/dev/zero`: larger than 16 MiB, the limit of an input"
+        );
+        let e = read_text("/", "rider file").unwrap_err();
+        assert_eq!(e, "cannot read rider file `/`: it is a directory");
+        let e = read_bounded(&[b'a', 0xff][..]).unwrap_err();
+        assert_eq!(e, "not UTF-8 text (invalid byte at offset 1)");
+        let at = vec![b' '; MAX_INPUT_BYTES as usize];
+        assert_eq!(read_bounded(&at[..]).map(|t| t.len()), Ok(at.len()));
+        let past = vec![b' '; MAX_INPUT_BYTES as usize + 1];
+        assert!(read_bounded(&past[..]).unwrap_err().starts_with("larger than 16 MiB"));
     }
 
     #[test]

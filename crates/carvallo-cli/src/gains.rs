@@ -11,6 +11,8 @@
 use carvallo::whipple::feedback::{ClosedLoopWindow, GainTable, Gains, GAIN_NAMES};
 use serde_json::{json, Value};
 
+use crate::args::{GAIN, SPEED};
+
 /// One `--gain NAME=VALUE`.
 #[derive(Clone, Debug, PartialEq)]
 pub struct GainValue {
@@ -51,13 +53,13 @@ fn gain_name(name: &str) -> Result<String, String> {
     Gains::index(name).map(|_| name.to_string()).map_err(|e| e.to_string())
 }
 
+/// A gain of `text` (the value of the option `what`): finite and within [`GAIN`].
 fn number(s: &str, what: &str, text: &str) -> Result<f64, String> {
     let x: f64 = s.parse().map_err(|_| format!("invalid number `{s}` in {what} `{text}`"))?;
-    if x.is_finite() {
-        Ok(x)
-    } else {
-        Err(format!("invalid number `{s}` in {what} `{text}`: must be finite"))
+    if !x.is_finite() {
+        return Err(format!("invalid number `{s}` in {what} `{text}`: must be finite"));
     }
+    GAIN.check(x).map_err(|e| format!("invalid gain `{s}` in {what} `{text}`: {e}"))
 }
 
 /// Reads `NAME=VALUE` of `--gain` (clap's value parser).
@@ -105,15 +107,13 @@ pub fn speed(v: &str) -> Result<f64, String> {
     if x < 0.0 {
         return Err("must not be negative".into());
     }
-    Ok(x)
+    SPEED.check(x)
 }
 
 /// Reads the gain table `path` (see the [module docs](self)); errors start with
 /// `invalid gain table` or `cannot read gain table` and name the file.
 pub fn read_gain_table(path: &str) -> Result<GainTable, String> {
-    let text = std::fs::read_to_string(path).map_err(|e| {
-        format!("cannot read gain table `{path}`: {}", e.to_string().to_lowercase())
-    })?;
+    let text = crate::args::read_text(path, "gain table")?;
     let bad = |msg: String| format!("invalid gain table `{path}`: {msg}");
     let mut lines = text.lines().enumerate().filter(|(_, l)| !l.trim().is_empty());
     let (_, header) = lines.next().ok_or_else(|| bad("empty file".into()))?;
@@ -144,6 +144,11 @@ pub fn read_gain_table(path: &str) -> Result<GainTable, String> {
                 cell.parse().ok().filter(|x: &f64| x.is_finite()).ok_or_else(|| {
                     bad(format!("line {}: `{cell}` is not a finite number", n + 1))
                 })?;
+            let range = if values.is_empty() { SPEED } else { GAIN };
+            let what = if values.is_empty() { "speed" } else { "gain" };
+            let x = range
+                .check(x)
+                .map_err(|e| bad(format!("line {}: the {what} `{cell}` {e}", n + 1)))?;
             values.push(x);
         }
         let mut g = Gains::ZERO;

@@ -23,6 +23,7 @@ mod gains;
 mod perf;
 mod report_dir;
 mod report_html;
+mod staging;
 
 use commands::{
     accel, bode, eig, kinematics, report, rest, rolling, simulate, statespace, turn, window,
@@ -196,6 +197,13 @@ pub(crate) fn emit(text: &str) -> std::io::Result<()> {
 fn main() -> ExitCode {
     match Cli::try_parse() {
         Ok(cli) => cli.command.run(),
+        // `carvallo` alone: clap shows the help as an error; it says so first.
+        Err(err)
+            if err.kind() == clap::error::ErrorKind::DisplayHelpOnMissingArgumentOrSubcommand =>
+        {
+            error(&format!("a command is required\n\n{}", Cli::command().render_help()));
+            ExitCode::from(2)
+        }
         Err(err) => {
             // Help and version go to standard output (exit 0), usage errors to standard error
             // (exit 2); a closed stream loses the text without a panic.

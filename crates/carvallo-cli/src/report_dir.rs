@@ -11,21 +11,23 @@
 //! figure; none of the memoir's chapters is computed.
 //!
 //! Nothing is written unless everything succeeds: the directory is checked first (its parent
-//! must exist; an existing `DIR` must be empty or a report directory written before, marked by
-//! the file [`MARKER`], so that a mistyped `--out .` can never replace unrelated files), the
-//! report and figures are computed in memory, written into a temporary sibling directory, and
-//! that directory is renamed to `DIR`. A progress bar is drawn on standard error only when it is
+//! must exist and be writable; an existing `DIR` must be empty or a report directory written
+//! before, marked by the file [`MARKER`], so that a mistyped `--out .` can never replace
+//! unrelated files), the report and figures are computed in memory, written into a locked
+//! temporary sibling directory, and that directory replaces `DIR` atomically where the file
+//! system allows ([`crate::staging`]). A progress bar is drawn on standard error only when it is
 //! a terminal.
 
 use std::path::{Path, PathBuf};
 
-use anyhow::{anyhow, Context, Result};
+use anyhow::{Context, Result};
 use carvallo::parameter_text::UncertainParams;
 use carvallo::whipple::{Whipple, PARAM_NAMES};
 use carvallo::whipple_uncertainty::{mean_std, monte_carlo, speed_gradients};
 
 use crate::figures;
 use crate::report_html::{escape, escape_with_code, render_html, HtmlFigure};
+use crate::staging::Staging;
 
 /// The file that marks a directory written by `carvallo report --out`.
 pub const MARKER: &str = ".carvallo-report";
@@ -235,7 +237,7 @@ const BANDS_CAPTION: &str = "Real parts of the four eigenvalues against speed (p
 /// Computes the report and the figures for the bicycle `params` (named `model`) and writes them
 /// to `dir` (see the module docs). Returns the files written, relative to `dir`.
 pub fn write_report(dir: &Path, params: &UncertainParams, model: &str) -> Result<Vec<String>> {
-    let parent = check_out_dir(dir)?;
+    let staging = Staging::new(dir, &check_out_dir(dir)?)?;
     let figs = &figures::FIGURES;
     let banded = params.has_uncertainty();
     let mut progress = Progress::new(figs.len() + 2 + 2 * usize::from(banded));
@@ -287,7 +289,7 @@ pub fn write_report(dir: &Path, params: &UncertainParams, model: &str) -> Result
     }
     files.insert(0, ("report.md".to_string(), md));
     files.insert(1, ("report.html".to_string(), html));
-    let result = commit(dir, &parent, &mut files);
+    let result = commit(staging, &mut files);
     progress.done();
     progress.start(if result.is_ok() { "written" } else { "failed" });
     progress.finish();
@@ -295,17 +297,11 @@ pub fn write_report(dir: &Path, params: &UncertainParams, model: &str) -> Result
     Ok(files.into_iter().map(|(n, _)| n).collect())
 }
 
-/// Writes `files` and the [`MARKER`] into a temporary sibling of `dir` in `parent`, then
-/// renames it to `dir` (see the module docs); on failure nothing is left.
-fn commit(dir: &Path, parent: &Path, files: &mut Vec<(String, String)>) -> Result<()> {
+/// Writes `files` and the [`MARKER`] into the temporary directory of `staging` and puts it in
+/// place of `DIR` ([`Staging::commit`]); on failure nothing is left.
+fn commit(staging: Staging, files: &mut Vec<(String, String)>) -> Result<()> {
     files.push((MARKER.to_string(), "written by `carvallo report --out`\n".to_string()));
-    let name = dir.file_name().map(|n| n.to_string_lossy().into_owned()).unwrap_or_default();
-    let tmp = parent.join(format!(".{name}.tmp-{}", std::process::id()));
-    let result = write_all(&tmp, files).and_then(|()| replace_dir(&tmp, dir));
-    if result.is_err() {
-        let _ = std::fs::remove_dir_all(&tmp);
-    }
-    result
+    staging.commit(files)
 }
 
 /// The file name of the eigenvalue figure of [`write_bicycle_report`].
@@ -331,7 +327,7 @@ pub fn write_bicycle_report(
     rider: Option<&str>,
     warnings: &[String],
 ) -> Result<Vec<String>> {
-    let parent = check_out_dir(dir)?;
+    let staging = Staging::new(dir, &check_out_dir(dir)?)?;
     let window = Whipple::new(params.params.clone()).stability_window();
     let source = match rider {
         Some(r) => format!(
@@ -439,38 +435,8 @@ pub fn write_bicycle_report(
     html.push_str("</tbody>\n</table>\n</body>\n</html>\n");
     files.insert(0, ("report.md".to_string(), md));
     files.insert(1, ("report.html".to_string(), html));
-    commit(dir, &parent, &mut files)?;
+    commit(staging, &mut files)?;
     Ok(files.into_iter().map(|(n, _)| n).collect())
-}
-
-fn write_all(tmp: &Path, files: &[(String, String)]) -> Result<()> {
-    std::fs::create_dir(tmp).with_context(|| format!("cannot create `{}`", tmp.display()))?;
-    for (name, text) in files {
-        let path = tmp.join(name);
-        std::fs::write(&path, text)
-            .with_context(|| format!("cannot write `{}`", path.display()))?;
-    }
-    Ok(())
-}
-
-/// Renames `tmp` to `dir`, moving an existing report directory aside first and removing it
-/// afterwards.
-fn replace_dir(tmp: &Path, dir: &Path) -> Result<()> {
-    if dir.exists() {
-        let old = tmp.with_extension("old");
-        std::fs::rename(dir, &old)
-            .with_context(|| format!("cannot move `{}` aside", dir.display()))?;
-        if let Err(e) = std::fs::rename(tmp, dir) {
-            let _ = std::fs::rename(&old, dir);
-            return Err(anyhow!("cannot rename `{}` to `{}`: {e}", tmp.display(), dir.display()));
-        }
-        std::fs::remove_dir_all(&old)
-            .with_context(|| format!("cannot remove `{}`", old.display()))?;
-    } else {
-        std::fs::rename(tmp, dir)
-            .with_context(|| format!("cannot rename `{}` to `{}`", tmp.display(), dir.display()))?;
-    }
-    Ok(())
 }
 
 #[cfg(test)]

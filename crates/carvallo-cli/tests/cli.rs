@@ -36,6 +36,11 @@ fn help_and_unknown_arguments() {
         (code, version.as_str()),
         (0, concat!("carvallo ", env!("CARGO_PKG_VERSION"), "\n"))
     );
+    // No command: an error line first, then the help; exit 2, nothing on standard output.
+    let (code, out, err) = carvallo(&[]);
+    assert_eq!((code, out.as_str()), (2, ""));
+    assert!(err.starts_with("error: a command is required\n\n"), "{err}");
+    assert!(err.contains("Usage: carvallo <COMMAND>"), "{err}");
     // A usage error: the message, a suggestion, the usage of that command only; exit 2.
     let (code, _, err) = carvallo(&["report", "--jsn"]);
     assert_eq!(code, 2);

@@ -244,3 +244,40 @@ fn sweep_grids_and_random_designs_as_csv_and_json() {
     assert_eq!(code, 2);
     assert!(err.starts_with("error: parameter c is varied more than once"), "{err}");
 }
+
+#[test]
+fn ctrl_c_ends_an_eigen_sweep_within_its_first_block() {
+    use std::process::Stdio;
+    use std::time::{Duration, Instant};
+    let mut child = Command::new(env!("CARGO_BIN_EXE_carvallo"))
+        .args(["sweep", "--model", "benchmark", "--random", "1000000000", "--spread", "c=0.1"])
+        .args(["--method", "eigen", "--json"])
+        .stdout(Stdio::piped())
+        .stderr(Stdio::piped())
+        .spawn()
+        .unwrap();
+    std::thread::sleep(Duration::from_millis(1500));
+    let sent = Instant::now();
+    let kill = Command::new("kill").args(["-INT", &child.id().to_string()]).status().unwrap();
+    assert!(kill.success());
+    // The bound is generous for a loaded machine; the flag is read every four designs.
+    while child.try_wait().unwrap().is_none() {
+        if sent.elapsed() > Duration::from_secs(10) {
+            child.kill().unwrap();
+            panic!("the sweep ran on 10 s after SIGINT");
+        }
+        std::thread::sleep(Duration::from_millis(10));
+    }
+    let out = child.wait_with_output().unwrap();
+    let (json, err) =
+        (String::from_utf8(out.stdout).unwrap(), String::from_utf8(out.stderr).unwrap());
+    assert_eq!(out.status.code(), Some(0), "{err}");
+    let v: Value = serde_json::from_str(&json).unwrap();
+    let line = v["interrupted"].as_str().unwrap();
+    let done: usize = line.split(' ').nth(2).unwrap().parse().unwrap();
+    assert_eq!(line, format!("interrupted after {done} of 1000000000 designs"));
+    // Fewer designs than one block of the stream (65,536, where the flag used to be read): the
+    // sweep stopped inside it.
+    assert!(done < 65_536, "{line}");
+    assert_eq!(v["count"].as_u64(), Some(done as u64), "{v}");
+}

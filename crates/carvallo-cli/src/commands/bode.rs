@@ -31,7 +31,7 @@ pub struct Args {
     pub data: DataOptions,
     /// The forward speeds [m/s], separated by commas
     #[arg(long, value_name = "V", required = true, value_delimiter = ',',
-          value_parser = crate::args::finite, allow_hyphen_values = true)]
+          value_parser = crate::args::SPEED.parser(), allow_hyphen_values = true)]
     pub speed: Vec<f64>,
     /// The input: the roll torque or the steer torque
     #[arg(long, value_name = "INPUT",
@@ -68,7 +68,7 @@ fn positive(v: &str) -> Result<f64, String> {
     if x <= 0.0 {
         return Err("must be positive".into());
     }
-    Ok(x)
+    crate::args::FREQUENCY.check(x)
 }
 
 /// `FROM:TO:N` with `0 < FROM <= TO` finite and `1 <= N <= 10^6`: the frequencies of

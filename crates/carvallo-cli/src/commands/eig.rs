@@ -30,7 +30,7 @@ pub struct Args {
     #[command(flatten)]
     pub data: DataOptions,
     /// The forward speed [m/s]
-    #[arg(long, value_name = "V", value_parser = crate::args::finite, allow_hyphen_values = true)]
+    #[arg(long, value_name = "V", value_parser = crate::args::SPEED.parser(), allow_hyphen_values = true)]
     pub speed: f64,
     /// Print JSON `{speed, eigenvalues: [{re, im}, ...], modes: [...]}` instead of text
     #[arg(long)]

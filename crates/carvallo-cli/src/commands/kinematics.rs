@@ -17,7 +17,7 @@
 use carvallo::bicycle_kinematics::Kinematics;
 use serde_json::json;
 
-use crate::args::{finite, lean_deg};
+use crate::args::lean_deg;
 
 /// Largest |det| / column norms of the n° 68 system still counted as zero (as the report's
 /// n° 68 entry).
@@ -32,7 +32,7 @@ pub struct Args {
     #[arg(long = "theta", value_name = "DEG", value_parser = lean_deg, allow_hyphen_values = true)]
     pub theta_deg: f64,
     /// The handlebar angle γ [degrees]
-    #[arg(long = "gamma", value_name = "DEG", value_parser = finite, allow_hyphen_values = true)]
+    #[arg(long = "gamma", value_name = "DEG", value_parser = crate::args::ANGLE.parser(), allow_hyphen_values = true)]
     pub gamma_deg: f64,
     /// Print JSON instead of text
     #[arg(long)]

@@ -28,19 +28,27 @@ pub struct Args {
     pub json: bool,
 }
 
-/// A mass in kg: finite and not negative.
+/// A mass in kg: finite, not negative and at most $10^{12}$ kg (the frame's weight, tens of
+/// kilograms, keeps four digits beside the wheel's).
 fn mass(v: &str) -> Result<f64, String> {
     let x = finite(v)?;
     if x < 0.0 {
         return Err("must not be negative".into());
     }
-    Ok(x)
+    const WHEEL: crate::args::Range = crate::args::Range {
+        lo: 0.0,
+        hi: 1e12,
+        why: "beyond it the frame's weight is lost in the rounding of the wheel's",
+    };
+    WHEEL.check(x)
 }
 
 /// Runs `carvallo rest`: the text to print, or an error naming the bad value.
 pub fn run(c: &Args) -> Result<String, String> {
     let bike = RestBicycle::memoir().with_wheel_mass(c.wheel_mass).map_err(|e| e.to_string())?;
-    let p = bike.rest_position(-c.theta_deg.to_radians()).map_err(|e| e.to_string())?;
+    let p = bike
+        .rest_position(-c.theta_deg.to_radians())
+        .map_err(|e| format!("{e} (--theta {:?}, --wheel-mass {:?})", c.theta_deg, c.wheel_mass))?;
     let deg = |x: f64| x.to_degrees();
     let drop = p.at_lowest.wheel_height - p.at_equilibrium.wheel_height;
     if c.json {

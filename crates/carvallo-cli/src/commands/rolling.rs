@@ -24,7 +24,7 @@ use carvallo::unicycle::{Rider, Unicycle, Wheel};
 use serde_json::json;
 
 use super::simulate::ToleranceArgs;
-use crate::args::finite;
+use crate::args::{finite, ANGLE, GRAVITY, INERTIA, LENGTH, MASS, MASS_OR_ZERO, PRODUCT, RATE};
 
 /// The names of the state's components, in its order.
 const STATE: [&str; 4] = ["theta", "p", "n", "s"];
@@ -47,16 +47,16 @@ fn parse_threshold(text: &str) -> Result<Threshold, String> {
 #[derive(Clone, Debug, PartialEq, clap::Args)]
 pub struct RunArgs {
     /// The initial lean θ [rad]
-    #[arg(long, value_name = "RAD", value_parser = finite, allow_hyphen_values = true)]
+    #[arg(long, value_name = "RAD", value_parser = ANGLE.parser(), allow_hyphen_values = true)]
     pub theta0: f64,
     /// The initial rate s [rad/s] (the rolling rate of n° 7; the rate unit is sqrt(g/R))
-    #[arg(long, value_name = "RAD/S", value_parser = finite, allow_hyphen_values = true)]
+    #[arg(long, value_name = "RAD/S", value_parser = RATE.parser(), allow_hyphen_values = true)]
     pub s0: f64,
     /// The initial lean rate p [rad/s]
-    #[arg(long, value_name = "RAD/S", default_value_t = 0.0, value_parser = finite, allow_hyphen_values = true)]
+    #[arg(long, value_name = "RAD/S", default_value_t = 0.0, value_parser = RATE.parser(), allow_hyphen_values = true)]
     pub p0: f64,
     /// The initial rate n [rad/s] (the turning rate of n° 7)
-    #[arg(long, value_name = "RAD/S", default_value_t = 0.0, value_parser = finite, allow_hyphen_values = true)]
+    #[arg(long, value_name = "RAD/S", default_value_t = 0.0, value_parser = RATE.parser(), allow_hyphen_values = true)]
     pub n0: f64,
     /// How long to simulate [s]
     #[arg(long, value_name = "S", value_parser = finite, allow_hyphen_values = true)]
@@ -92,8 +92,22 @@ impl RunArgs {
         [self.theta0, self.p0, self.n0, self.s0]
     }
 
-    /// The run printed: `title` first in the text.
+    /// The run printed: `title` first in the text. A run whose state stops being finite (the
+    /// integration diverged) is an error naming the step and the method.
     fn render(&self, title: &str, how: &Integration, tr: &Trajectory) -> Result<String, String> {
+        let bad = tr.times.iter().zip(&tr.samples).find(|(_, x)| x.iter().any(|v| !v.is_finite()));
+        if let Some((t, _)) = bad {
+            return Err(format!(
+                "the integration diverged: the state is not finite at t = {t} s (--method {}{}); \
+                 take a smaller --step or an adaptive --method",
+                how.method.name(),
+                if how.method.is_adaptive() {
+                    String::new()
+                } else {
+                    format!(", --step {}", self.step)
+                }
+            ));
+        }
         let texts: Vec<String> = self.stop_when.iter().map(|t| t.text(&STATE)).collect();
         let adaptive = how.method.is_adaptive();
         if self.json {
@@ -154,13 +168,13 @@ impl RunArgs {
 #[derive(Clone, Debug, PartialEq, clap::Args)]
 pub struct HoopArgs {
     /// The hoop's radius R [m]
-    #[arg(long, value_name = "M", default_value_t = 0.5, value_parser = finite, allow_hyphen_values = true)]
+    #[arg(long, value_name = "M", default_value_t = 0.5, value_parser = LENGTH.parser(), allow_hyphen_values = true)]
     pub radius: f64,
     /// The hoop's mass [kg]
-    #[arg(long, value_name = "KG", default_value_t = 1.0, value_parser = finite, allow_hyphen_values = true)]
+    #[arg(long, value_name = "KG", default_value_t = 1.0, value_parser = MASS.parser(), allow_hyphen_values = true)]
     pub mass: f64,
     /// Gravity [m/s²]
-    #[arg(long, value_name = "M/S2", default_value_t = 9.81, value_parser = finite, allow_hyphen_values = true)]
+    #[arg(long, value_name = "M/S2", default_value_t = 9.81, value_parser = GRAVITY.parser(), allow_hyphen_values = true)]
     pub g: f64,
     #[command(flatten)]
     pub run: RunArgs,
@@ -181,31 +195,31 @@ pub fn hoop(c: &HoopArgs) -> Result<String, String> {
 #[derive(Clone, Debug, PartialEq, clap::Args)]
 pub struct UnicycleArgs {
     /// The wheel's radius R [m]
-    #[arg(long, value_name = "M", value_parser = finite, allow_hyphen_values = true)]
+    #[arg(long, value_name = "M", value_parser = LENGTH.parser(), allow_hyphen_values = true)]
     pub radius: f64,
     /// Gravity [m/s²]
-    #[arg(long, value_name = "M/S2", default_value_t = 9.81, value_parser = finite, allow_hyphen_values = true)]
+    #[arg(long, value_name = "M/S2", default_value_t = 9.81, value_parser = GRAVITY.parser(), allow_hyphen_values = true)]
     pub g: f64,
     /// The rider's mass μ [kg]
-    #[arg(long, value_name = "KG", value_parser = finite, allow_hyphen_values = true)]
+    #[arg(long, value_name = "KG", value_parser = MASS.parser(), allow_hyphen_values = true)]
     pub rider_mass: f64,
     /// The height of the rider's centre of gravity on Ok [m]
-    #[arg(long, value_name = "M", value_parser = finite, allow_hyphen_values = true)]
+    #[arg(long, value_name = "M", value_parser = LENGTH.parser(), allow_hyphen_values = true)]
     pub rider_height: f64,
     /// The rider's A = Σ m(η² + ζ²) [kg m²]
-    #[arg(long, value_name = "KG_M2", value_parser = finite, allow_hyphen_values = true)]
+    #[arg(long, value_name = "KG_M2", value_parser = INERTIA.parser(), allow_hyphen_values = true)]
     pub rider_a: f64,
     /// The rider's B = Σ m(ζ² + ξ²) [kg m²]
-    #[arg(long, value_name = "KG_M2", value_parser = finite, allow_hyphen_values = true)]
+    #[arg(long, value_name = "KG_M2", value_parser = INERTIA.parser(), allow_hyphen_values = true)]
     pub rider_b: f64,
     /// The rider's C = Σ m(ξ² + η²) [kg m²]
-    #[arg(long, value_name = "KG_M2", value_parser = finite, allow_hyphen_values = true)]
+    #[arg(long, value_name = "KG_M2", value_parser = INERTIA.parser(), allow_hyphen_values = true)]
     pub rider_c: f64,
     /// The rider's L = Σ m ζ ξ [kg m²]
-    #[arg(long, value_name = "KG_M2", default_value_t = 0.0, value_parser = finite, allow_hyphen_values = true)]
+    #[arg(long, value_name = "KG_M2", default_value_t = 0.0, value_parser = PRODUCT.parser(), allow_hyphen_values = true)]
     pub rider_l: f64,
     /// The wheel's mass [kg] (a thin hoop of radius R: A1 = 1.5 m R², B1 = 2 m R², C1 = 0.5 m R²)
-    #[arg(long, value_name = "KG", value_parser = finite, allow_hyphen_values = true)]
+    #[arg(long, value_name = "KG", value_parser = MASS_OR_ZERO.parser(), allow_hyphen_values = true)]
     pub wheel_mass: f64,
     #[command(flatten)]
     pub run: RunArgs,
@@ -342,9 +356,23 @@ mod tests {
         assert!((theta.last().and_then(|x| x.as_f64()).expect("last").abs() - 0.5).abs() < 1e-9);
         assert_eq!(v["method"], "dop853");
         // The bad values of the run itself.
+        // Outside the numerically valid ranges: the option and the range named.
         let bad = ["hoop", "--theta0", "0", "--s0", "1", "--duration", "1", "--radius", "-1"];
+        let e = parse::<HoopArgs>(&bad).unwrap_err();
+        assert!(e.contains("'-1' for '--radius <M>': must lie within [1e-6, 1e6]"), "{e}");
+        let bad = ["hoop", "--theta0", "0", "--s0", "1e7", "--duration", "1"];
+        let e = parse::<HoopArgs>(&bad).unwrap_err();
+        assert!(e.contains("'1e7' for '--s0 <RAD/S>': must lie within [-1e6, 1e6]"), "{e}");
+        // Inside them, a step too long for the rates: the run diverges, said so.
+        let bad = ["hoop", "--theta0", "0.1", "--s0", "3", "--p0", "1e6", "--duration", "0.05"];
         let e = hoop(&parse::<HoopArgs>(&bad).expect("parse")).unwrap_err();
-        assert!(e.contains("radius"), "{e}");
+        assert!(e.starts_with("the integration diverged: the state is not finite at t = "), "{e}");
+        assert!(
+            e.ends_with(
+                "(--method rk4, --step 0.001); take a smaller --step or an adaptive --method"
+            ),
+            "{e}"
+        );
         let bad = ["hoop", "--theta0", "0", "--s0", "1", "--duration", "1", "--rtol", "1e-8"];
         let e = hoop(&parse::<HoopArgs>(&bad).expect("parse")).unwrap_err();
         assert!(e.contains("invalid --rtol"), "{e}");

@@ -117,9 +117,7 @@ struct BatchRow {
 /// any order), then one row of finite numbers per simulation (blank lines skipped).
 fn read_batch(file: &std::path::Path) -> Result<Vec<BatchRow>, String> {
     let name = file.display();
-    let text = std::fs::read_to_string(file).map_err(|e| {
-        format!("cannot read batch file `{name}`: {}", e.to_string().to_lowercase())
-    })?;
+    let text = crate::args::read_text(file, "batch file")?;
     let mut lines = text.lines().enumerate().filter(|(_, l)| !l.trim().is_empty());
     let (_, header) = lines.next().ok_or_else(|| format!("invalid batch file `{name}`: empty"))?;
     let columns: Vec<&str> = header.split(',').map(str::trim).collect();
@@ -266,10 +264,10 @@ pub struct Args {
     #[command(flatten)]
     pub data: DataOptions,
     /// The initial forward speed [m/s]
-    #[arg(long, value_name = "V", value_parser = finite, allow_hyphen_values = true, required_unless_present = "batch")]
+    #[arg(long, value_name = "V", value_parser = crate::args::SPEED.parser(), allow_hyphen_values = true, required_unless_present = "batch")]
     pub speed: Option<f64>,
     /// The initial lean [rad]
-    #[arg(long, value_name = "RAD", value_parser = finite, allow_hyphen_values = true, required_unless_present = "batch")]
+    #[arg(long, value_name = "RAD", value_parser = crate::args::ANGLE.parser(), allow_hyphen_values = true, required_unless_present = "batch")]
     pub lean0: Option<f64>,
     /// How long to simulate [s]
     #[arg(long, value_name = "S", value_parser = finite, allow_hyphen_values = true)]
@@ -311,9 +309,8 @@ pub fn run(cmd: &Args) -> Result<String, String> {
         return Err("invalid --csv: it prints the rows of --batch FILE.csv".into());
     }
     let bike = WhippleNonlinear::new(crate::args::bicycle(model, data)?);
-    let grid = Grid::new(*duration, *step, *every).map_err(|(name, value, reason)| {
-        carvallo::ParameterError::InvalidParameter { name, value, reason }.to_string()
-    })?;
+    let grid = Grid::new(*duration, *step, *every)
+        .map_err(|(name, value, reason)| format!("invalid --{name} {value:?}: {reason}"))?;
     if let Some(file) = &cmd.batch {
         return batch(&bike, file, &grid, &how, stops, cmd.csv);
     }
@@ -335,7 +332,15 @@ pub fn run(cmd: &Args) -> Result<String, String> {
             *json,
         );
     }
-    let tr = bike.simulate_with(start, &grid, &how, stops).map_err(|e| e.to_string())?;
+    // An error after the start is the integration leaving the state's domain (a step too long
+    // for the rates): said so, with the options to change.
+    let tr = bike.simulate_with(start, &grid, &how, stops).map_err(|e| {
+        format!(
+            "the integration diverged: {e} (--method {}{}); take a smaller --step or an adaptive --method",
+            how.method.name(),
+            if how.method.is_adaptive() { String::new() } else { format!(", --step {}", step) }
+        )
+    })?;
     let events: Vec<(String, f64)> = tr.event.iter().map(|&(k, t)| (stops[k].text(), t)).collect();
     if *json {
         let col = |f: &dyn Fn(&carvallo::whipple_nonlinear::Sample) -> f64| -> Vec<f64> {

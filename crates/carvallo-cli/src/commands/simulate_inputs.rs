@@ -92,6 +92,8 @@ pub fn parse_torque(text: &str) -> Result<TorqueTerm, String> {
         }
     };
     let value = number(value, "value")?;
+    let value =
+        crate::args::TORQUE.check(value).map_err(|e| bad(format!("value `{value}` {e}")))?;
     let time = number(time, "time")?;
     if time < 0.0 {
         return Err(bad(format!("time `{time}` must not be negative")));
@@ -194,9 +196,7 @@ impl InputArgs {
 /// Reads a `--torque-csv` file: the roll and steer series (`None` for a column not given).
 fn read_torque_csv(file: &Path) -> Result<(Option<Series>, Option<Series>), String> {
     let name = file.display();
-    let text = std::fs::read_to_string(file).map_err(|e| {
-        format!("cannot read torque file `{name}`: {}", e.to_string().to_lowercase())
-    })?;
+    let text = crate::args::read_text(file, "torque file")?;
     let bad = |msg: String| format!("invalid torque file `{name}`: {msg}");
     let mut lines = text.lines().enumerate().filter(|(_, l)| !l.trim().is_empty());
     let (_, header) = lines.next().ok_or_else(|| bad("empty file".into()))?;
@@ -234,13 +234,18 @@ fn read_torque_csv(file: &Path) -> Result<(Option<Series>, Option<Series>), Stri
                 bad(format!("line {}: {} `{}` is not a finite number", i + 1, columns[k], cells[k]))
             })
         };
+        let torque = |k: usize| -> Result<f64, String> {
+            crate::args::TORQUE
+                .check(num(k)?)
+                .map_err(|e| bad(format!("line {}: {} `{}` {e}", i + 1, columns[k], cells[k])))
+        };
         lines_of.push(i + 1);
         t.push(num(tc)?);
         if let Some(k) = rc {
-            roll.push(num(k)?);
+            roll.push(torque(k)?);
         }
         if let Some(k) = sc {
-            steer.push(num(k)?);
+            steer.push(torque(k)?);
         }
     }
     let series = |column: Option<usize>, values: Vec<f64>| -> Result<Option<Series>, String> {

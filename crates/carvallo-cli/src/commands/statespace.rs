@@ -25,7 +25,7 @@ pub struct Args {
     pub data: DataOptions,
     /// The forward speeds [m/s], separated by commas
     #[arg(long, value_name = "V", required = true, value_delimiter = ',',
-          value_parser = crate::args::finite, allow_hyphen_values = true)]
+          value_parser = crate::args::SPEED.parser(), allow_hyphen_values = true)]
     pub speed: Vec<f64>,
     /// Print JSON `{speed, A, B}` (a list of them for several speeds) instead of text
     #[arg(long)]

@@ -25,7 +25,7 @@ pub struct Args {
     #[arg(long = "gamma", value_name = "DEG", value_parser = gamma, allow_hyphen_values = true)]
     pub gamma_deg: f64,
     /// The rolling speed Rs [m/s]
-    #[arg(long, value_name = "V", value_parser = finite, allow_hyphen_values = true)]
+    #[arg(long, value_name = "V", value_parser = crate::args::SPEED.parser(), allow_hyphen_values = true)]
     pub speed: f64,
     /// Print JSON instead of text
     #[arg(long)]

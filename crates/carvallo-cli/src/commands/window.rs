@@ -172,7 +172,7 @@ fn closed_loop(
         Some(target) => {
             let c = bike.balance_assist_gain(target, ASSIST_MAX).ok_or_else(|| {
                 format!(
-                    "no balance-assist gain up to {ASSIST_MAX} N m s/rad makes {target} m/s stable"
+                    "no balance-assist gain up to {ASSIST_MAX} N m s/rad makes --assist-down-to {target:?} m/s stable"
                 )
             })?;
             gains = carvallo::whipple::feedback::Gains::balance_assist(c);
@@ -344,7 +344,12 @@ mod tests {
         assert_eq!(v["gains"]["k_steer_roll_rate"].as_f64(), Some(-c));
         assert!((v["lowest_stable_speed"].as_f64().unwrap() - 2.0).abs() < 1e-9, "{out}");
         let e = main(&["window", "--model", "benchmark", "--assist-down-to", "0.1"]).unwrap_err();
-        assert!(e.starts_with("no balance-assist gain up to 1000 N m s/rad makes 0.1 m/s"), "{e}");
+        assert!(
+            e.starts_with(
+                "no balance-assist gain up to 1000 N m s/rad makes --assist-down-to 0.1 m/s"
+            ),
+            "{e}"
+        );
         let e = main(&["window", "--model", "benchmark", "--vmax", "3"]).unwrap_err();
         assert!(e.contains("give --gain or --gain-table"), "{e}");
         let e = main(&[
