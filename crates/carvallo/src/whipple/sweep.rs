@@ -434,8 +434,8 @@ impl Sampler {
 
 /// Designs processed per parallel task (a multiple of the lanes).
 const CHUNK: usize = 4096;
-/// Designs evaluated between two updates of the running summary (and two looks at the stop
-/// flag of [`sweep_stream`]); only one block's results are held at a time.
+/// Designs evaluated between two updates of the running summary (the stop flag of
+/// [`sweep_stream`] is read every four designs); only one block's results are held at a time.
 pub const BLOCK: usize = 16 * CHUNK;
 /// Designs per call of [`matrices_scene::eval_lanes`] and of [`hurwitz_window_summary_lanes`].
 const LANES: usize = matrices_scene::LANES;
@@ -484,7 +484,8 @@ pub fn sweep_designs(
 /// [`BLOCK`] (in parallel within a block, in order from block to block), folded into the
 /// summary, and with a `sink` each block's varied values and windows are handed to it in
 /// order (nothing is kept: [`SweepOutput::values`], `windows` and `valid` are empty). `stop` is
-/// read before every block: once it is set, the sweep ends and summarises the designs done
+/// read before every four designs (a few milliseconds at most, on the eigen route too): once it
+/// is set, the sweep ends and summarises the designs done, a prefix of the designs
 /// (`summary.count` less than [`SweepOutput::requested`]).
 ///
 /// # Errors
@@ -581,6 +582,10 @@ pub fn sweep_stream(
         let mut values = [base_values; LANES];
         let mut ok = [true; LANES];
         for group in (lo..hi).step_by(LANES) {
+            // Ctrl-C within a few designs, even at the eigen route's milliseconds per design.
+            if stop.load(Ordering::Relaxed) {
+                break;
+            }
             let n = LANES.min(hi - group);
             for j in 0..n {
                 values[j] = base_values;
@@ -611,8 +616,9 @@ pub fn sweep_stream(
             for j in 0..n {
                 part.add(ok[j], windows[j], keys.iter().map(|&k| values[j][k]));
             }
+            part.done += n;
         }
-        progress.fetch_add(hi - lo, Ordering::Relaxed);
+        progress.fetch_add(part.done, Ordering::Relaxed);
         part
     };
     let (mut acc, mut rejected, mut done) = (Acc::EMPTY, 0, 0);
@@ -622,11 +628,14 @@ pub fn sweep_stream(
             .into_par_iter()
             .map(|c| chunk(done + c * CHUNK))
             .collect();
+        // The designs done form a prefix: a chunk cut short by `stop` ends it (the chunks
+        // after it, done or not, are dropped).
+        let mut next = done;
         for (c, p) in parts.iter().enumerate() {
+            let first = done + c * CHUNK;
             acc = acc.merge(p.acc);
             rejected += p.rejected;
             if let Some(sink) = sink.as_mut() {
-                let first = done + c * CHUNK;
                 sink(&SweepChunk {
                     first,
                     values: &p.values,
@@ -634,8 +643,12 @@ pub fn sweep_stream(
                     valid: &p.valid,
                 });
             }
+            next = first + p.done;
+            if next < end.min(first + CHUNK) {
+                break;
+            }
         }
-        done = end;
+        done = next;
     }
     let elapsed = start.elapsed().as_secs_f64();
     let range = |n: usize, r: (f64, f64)| (n > 0).then_some(r);
@@ -658,6 +671,8 @@ pub fn sweep_stream(
 struct Part {
     acc: Acc,
     rejected: usize,
+    /// The designs done: all of the chunk's unless `stop` cut it short.
+    done: usize,
     record: bool,
     values: Vec<f64>,
     windows: Vec<Option<WindowSummary>>,
@@ -670,6 +685,7 @@ impl Part {
         Part {
             acc: Acc::EMPTY,
             rejected: 0,
+            done: 0,
             record,
             values: Vec::with_capacity(cap(n_values)),
             windows: Vec::with_capacity(cap(CHUNK)),

@@ -395,3 +395,35 @@ fn a_stopped_stream_summarises_the_blocks_done() {
     .unwrap_err();
     assert!(err.to_string().contains("1099511627776 x 1099511627776"), "{err}");
 }
+
+#[test]
+fn a_stream_stopped_within_a_block_keeps_a_prefix_of_the_designs() {
+    use std::sync::atomic::{AtomicBool, Ordering};
+    use sweep::{Designs, Spread, BLOCK};
+    let base = WhippleParams::benchmark();
+    let spreads = vec![Spread { name: "c".into(), rel: 0.5 }];
+    let random = |count| Designs::Random { count, spreads: spreads.clone(), seed: 5 };
+    // The flag is set as soon as a first chunk reports progress, in the middle of the first
+    // block: the eigen route stops within it, not at its end.
+    let (stop, progress) = (AtomicBool::new(false), AtomicUsize::new(0));
+    let out = std::thread::scope(|s| {
+        s.spawn(|| {
+            while progress.load(Ordering::Relaxed) == 0 {
+                std::thread::yield_now();
+            }
+            stop.store(true, Ordering::Relaxed);
+        });
+        sweep::sweep_stream(&base, &random(64 * BLOCK), Method::Eigen, &progress, &stop, None)
+            .unwrap()
+    });
+    let n = out.summary.count;
+    assert!(n > 0 && n < 64 * BLOCK, "{n} designs");
+    // The designs done are the first n: their summary is that of a sweep of n designs.
+    let whole = sweep::sweep_designs(&base, &random(n), Method::Eigen, false, &progress).unwrap();
+    let (a, b) = (&out.summary, &whole.summary);
+    assert_eq!(
+        (a.stable, a.with_weave, a.with_capsize, a.weave_range, a.capsize_range, a.failed),
+        (b.stable, b.with_weave, b.with_capsize, b.weave_range, b.capsize_range, b.failed)
+    );
+    assert_eq!(out.rejected, whole.rejected);
+}
