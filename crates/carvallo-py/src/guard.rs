@@ -126,11 +126,7 @@ fn shown(x: &Bound<'_, PyAny>) -> String {
 /// A whole number from 0 to $2^{64} - 1$ (a Python or numpy integer; not a float or a bool).
 pub(crate) fn whole(x: &Bound<'_, PyAny>, name: &str) -> PyResult<u64> {
     let bad = || {
-        err(format!(
-            "invalid {name} {}: must be a whole number from 0 to {}",
-            shown(x),
-            u64::MAX
-        ))
+        err(format!("invalid {name} {}: must be a whole number from 0 to {}", shown(x), u64::MAX))
     };
     if x.is_instance_of::<pyo3::types::PyBool>() || x.is_instance_of::<pyo3::types::PyFloat>() {
         return Err(bad());
@@ -149,9 +145,8 @@ pub(crate) fn real(x: &Bound<'_, PyAny>, name: &str) -> PyResult<f64> {
     if x.is_instance_of::<pyo3::types::PyString>() {
         return Err(err(format!("invalid {name} {}: not a number", shown(x))));
     }
-    x.extract::<f64>().map_err(|_| {
-        err(format!("invalid {name} {}: not a number that a float holds", shown(x)))
-    })
+    x.extract::<f64>()
+        .map_err(|_| err(format!("invalid {name} {}: not a number that a float holds", shown(x))))
 }
 
 /// [`real`] or None.
@@ -233,7 +228,10 @@ pub(crate) mod arg {
     /// `impulses`: a sequence of `(t, J_roll, J_steer)`.
     pub(crate) fn impulses(x: &Bound<'_, PyAny>) -> PyResult<Vec<(f64, f64, f64)>> {
         let bad = || {
-            err(format!("invalid impulses {}: must be a sequence of (t, J_roll, J_steer)", shown(x)))
+            err(format!(
+                "invalid impulses {}: must be a sequence of (t, J_roll, J_steer)",
+                shown(x)
+            ))
         };
         if x.is_instance_of::<pyo3::types::PyString>() {
             return Err(bad());

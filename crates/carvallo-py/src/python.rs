@@ -605,14 +605,22 @@ fn eigenvalues<'py>(
     let bike = Whipple::new(params_of(params, strict)?);
     let speeds = speeds_of(speeds)?;
     within(&format!("{} speeds", speeds.len()), speeds.len() as f64, 4.0 * 16.0)?;
-    let mut flat = Vec::with_capacity(4 * speeds.len());
-    for v in &speeds {
-        let ev = bike.eigenvalues(*v);
-        if ev.len() != 4 {
-            return Err(err(format!("the eigenvalues at speed {v} did not converge")));
+    // On a worker, so that Ctrl-C is seen during millions of speeds.
+    let flat = interruptible(py, |stop| {
+        let mut flat = Vec::with_capacity(4 * speeds.len());
+        for (k, v) in speeds.iter().enumerate() {
+            if k % 4096 == 0 && stop.load(std::sync::atomic::Ordering::Relaxed) {
+                break;
+            }
+            let ev = bike.eigenvalues(*v);
+            if ev.len() != 4 {
+                return Err(format!("the eigenvalues at speed {v} did not converge"));
+            }
+            flat.extend(ev.iter().map(|e| Complex64::new(e.re, e.im)));
         }
-        flat.extend(ev.iter().map(|e| Complex64::new(e.re, e.im)));
-    }
+        Ok(flat)
+    })?
+    .map_err(err)?;
     PyArray1::from_vec(py, flat).reshape([speeds.len(), 4])
 }
 
@@ -1061,7 +1069,9 @@ fn simulate_many<'py>(
     let n = speeds.len();
     // The starts, the ends and fourteen columns.
     let each = std::mem::size_of::<carvallo::whipple_nonlinear::State>()
-        + std::mem::size_of::<Result<carvallo::whipple_nonlinear::Final, carvallo::whipple_nonlinear::NonlinearError>>()
+        + std::mem::size_of::<
+            Result<carvallo::whipple_nonlinear::Final, carvallo::whipple_nonlinear::NonlinearError>,
+        >()
         + 14 * 8;
     within(&format!("{n} speeds"), n as f64, each as f64)?;
     if lean0s.len() != n {
@@ -1248,11 +1258,7 @@ fn eigenvalue_bands<'py>(
     }
     // The designs and their sorted real parts at every speed, then one rank at a time.
     let each = 26.0 * 8.0 + 24.0 + speeds.len() as f64 * 40.0 + 8.0;
-    within(
-        &format!("samples = {samples} with {} speeds", speeds.len()),
-        samples as f64,
-        each,
-    )?;
+    within(&format!("samples = {samples} with {} speeds", speeds.len()), samples as f64, each)?;
     let b = interruptible(py, |stop| {
         unc::eigenvalue_bands_until(&u, &speeds, samples, seed, (lo, hi), stop)
     })?

@@ -327,7 +327,8 @@ pub fn eigenvalue_bands(
     q_high: f64,
 ) -> EigenBands {
     let never = AtomicBool::new(false);
-    eigenvalue_bands_until(u, speeds, samples, seed, (q_low, q_high), &never).expect("never stopped")
+    eigenvalue_bands_until(u, speeds, samples, seed, (q_low, q_high), &never)
+        .expect("never stopped")
 }
 
 /// [`eigenvalue_bands`] reading `stop` before each design: `None` once it is set (Ctrl-C in a
