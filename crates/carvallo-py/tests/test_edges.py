@@ -232,7 +232,7 @@ LONG = {
     "sweep-eigen": "carvallo.sweep(carvallo.benchmark(), 'w', 0.05, 1.0, 10**12, method='eigen')",
     "monte_carlo": "carvallo.monte_carlo(carvallo.benchmark(), {'c': 0.001}, samples=10**7)",
     "eigenvalue_bands": "carvallo.eigenvalue_bands(carvallo.benchmark(), {'c': 0.001}, "
-                        "list(range(100)), samples=10**6)",
+                        "list(range(50)), samples=2 * 10**5)",
     "windows": "carvallo.windows(np.tile(list(carvallo.benchmark().values()), (3 * 10**6, 1)))",
 }
 
