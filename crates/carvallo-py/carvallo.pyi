@@ -5,6 +5,13 @@ axis tilt also as BicycleParameters' `lam`), SI units. Every error is a `Paramet
 `ValueError`) whose message names the key and the value. Every function taking `params`
 reads it as the parameter files are read: moments of inertia that break a triangle inequality
 are computed as given with a `PhysicsWarning`, or a `ParameterError` with `strict=True`.
+
+Limits (a `ParameterError` naming the argument and the limit, raised before allocating): a call
+needs at most 1 GiB for its result and working arrays; files are read up to 16 MiB; counts
+(`samples`, `count`, `every`, `seed`) are whole numbers from 0 to 2**64 - 1 and real arguments
+numbers a float holds. A wrong Python type for a text or flag argument is a `TypeError`.
+`sweep`, `windows`, `simulate_many`, `monte_carlo` and `eigenvalue_bands` run with the GIL
+released and raise `KeyboardInterrupt` within a fraction of a second of Ctrl-C.
 """
 
 from typing import Mapping, Optional, Sequence, Union
@@ -106,7 +113,8 @@ def sweep(
     params: Params, name: str, start: float, stop: float, count: int, method: str = "hurwitz",
     strict: bool = False,
 ) -> dict[str, object]:
-    """Summary of the windows as `name` runs linearly from start to stop (as `carvallo sweep --json`)."""
+    """Summary of the windows as `name` runs linearly from start to stop (as `carvallo sweep --json`);
+    constant memory for any count, stops on Ctrl-C within a few designs."""
 
 def simulate(
     params: Params,
@@ -172,7 +180,8 @@ def first_order(params: Params, sigma: Params, strict: bool = False) -> dict[str
 def monte_carlo(
     params: Params, sigma: Params, samples: int = 10000, seed: int = 1897, strict: bool = False
 ) -> dict[str, object]:
-    """Seeded Monte Carlo: arrays weave and capsize (NaN if none) and the count invalid."""
+    """Seeded Monte Carlo: arrays weave and capsize (NaN if none) and the count invalid; 32 bytes
+    a sample within the 1 GiB limit (about 3.3e7 samples); stops on Ctrl-C."""
 
 def eigenvalue_bands(
     params: Params,
@@ -183,7 +192,8 @@ def eigenvalue_bands(
     quantiles: tuple[float, float] = (0.025, 0.975),
     strict: bool = False,
 ) -> dict[str, npt.NDArray[np.float64]]:
-    """Quantile bands of the sorted real parts of the eigenvalues: speeds, nominal, lower, upper."""
+    """Quantile bands of the sorted real parts of the eigenvalues: speeds, nominal, lower, upper;
+    samples x (240 + 40 x speeds) bytes within the 1 GiB limit; stops on Ctrl-C."""
 
 def simulate_hoop(
     theta0: float,

@@ -22,6 +22,8 @@ use numpy::{
     PyUntypedArrayMethods,
 };
 use pyo3::create_exception;
+
+use crate::guard::{arg, interruptible, read_text, within};
 use pyo3::exceptions::PyValueError;
 use pyo3::prelude::*;
 use pyo3::types::{IntoPyDict, PyDict, PyList};
@@ -174,11 +176,7 @@ fn load_parameters<'py>(
     rider: Option<&str>,
     strict: bool,
 ) -> PyResult<(Bound<'py, PyDict>, Bound<'py, PyDict>)> {
-    let read = |p: &str, what: &str| {
-        std::fs::read_to_string(p).map_err(|e| {
-            err(format!("cannot read {what} file `{p}`: {}", e.to_string().to_lowercase()))
-        })
-    };
+    let read = read_text;
     let text = read(path, "parameter")?;
     let invalid = |e: carvallo::parameter_text::ParameterTextError| {
         err(format!("invalid parameter file `{path}`: {e}"))
@@ -228,9 +226,7 @@ fn add_rider<'py>(
     };
     let (rider, what) = if let Ok(path) = rider.extract::<std::path::PathBuf>() {
         let path = path.display().to_string();
-        let text = std::fs::read_to_string(&path).map_err(|e| {
-            err(format!("cannot read rider file `{path}`: {}", e.to_string().to_lowercase()))
-        })?;
+        let text = read_text(&path, "rider")?;
         let r = Rider::from_text(&text)
             .map_err(|e| err(format!("invalid rider file `{path}`: {e}")))?;
         (r, format!("rider file `{path}`"))
@@ -315,6 +311,7 @@ fn state_matrix<'py>(
     let bike = Whipple::new(params_of(params, strict)?);
     let scalar = speed.extract::<f64>().is_ok();
     let speeds = speeds_of(speed)?;
+    within(&format!("{} speeds", speeds.len()), speeds.len() as f64, 16.0 * 8.0)?;
     let mut flat = Vec::with_capacity(16 * speeds.len());
     for v in &speeds {
         let a = bike.state_matrix(*v);
@@ -345,6 +342,9 @@ fn state_space<'py>(
 ) -> PyResult<(Bound<'py, PyAny>, Bound<'py, PyAny>)> {
     let bike = Whipple::new(params_of(params, strict)?);
     let speeds = speeds_of(speeds)?;
+    // The state spaces, then A and B copied out of them.
+    let each = std::mem::size_of::<carvallo::whipple::plant::StateSpace>() + 24 * 8;
+    within(&format!("{} speeds", speeds.len()), speeds.len() as f64, each as f64)?;
     let spaces = bike.state_spaces(&speeds);
     let a: Vec<f64> = spaces.iter().flat_map(|s| s.a_rows().into_iter().flatten()).collect();
     let b: Vec<f64> = spaces.iter().flat_map(|s| s.b_rows().into_iter().flatten()).collect();
@@ -382,6 +382,13 @@ fn frequency_response<'py>(
     if let Some(x) = omegas.iter().find(|x| !(x.is_finite() && **x >= 0.0)) {
         return Err(err(format!("invalid omega {x:?}: must be finite and not negative")));
     }
+    // The points, then the response, magnitude and phase copied out of them.
+    let each = std::mem::size_of::<carvallo::whipple::transfer::FrequencyPoint>() + 16 + 8 + 8;
+    within(
+        &format!("{} speeds x {} omegas", speeds.len(), omegas.len()),
+        speeds.len() as f64 * omegas.len() as f64,
+        each as f64,
+    )?;
     let input: Input = input
         .parse()
         .map_err(|e: carvallo::whipple::transfer::UnknownSignal| err(e.to_string()))?;
@@ -446,8 +453,8 @@ fn closed_loop_window<'py>(
     py: Python<'py>,
     params: &Bound<'py, PyAny>,
     k: &Bound<'py, PyAny>,
-    vmin: Option<f64>,
-    vmax: Option<f64>,
+    #[pyo3(from_py_with = arg::vmin)] vmin: Option<f64>,
+    #[pyo3(from_py_with = arg::vmax)] vmax: Option<f64>,
     strict: bool,
 ) -> PyResult<Bound<'py, PyDict>> {
     let bike = Whipple::new(params_of(params, strict)?);
@@ -493,6 +500,7 @@ fn closed_loop_eigenvalues<'py>(
     let bike = Whipple::new(params_of(params, strict)?);
     let feedback = feedback_of(k)?;
     let speeds = speeds_of(speeds)?;
+    within(&format!("{} speeds", speeds.len()), speeds.len() as f64, 4.0 * 16.0)?;
     let mut flat = Vec::with_capacity(4 * speeds.len());
     for &v in &speeds {
         let gains = match &feedback {
@@ -561,6 +569,9 @@ fn modes<'py>(
 ) -> PyResult<(Vec<&'static str>, Bound<'py, PyAny>, Bound<'py, PyAny>)> {
     let bike = Whipple::new(params_of(params, strict)?);
     let speeds = speeds_of(speeds)?;
+    // The modes (four per speed), then the eigenvalues and vectors copied out of them.
+    let each = 4 * std::mem::size_of::<carvallo::whipple::modes::Mode>() + 20 * 16;
+    within(&format!("{} speeds", speeds.len()), speeds.len() as f64, each as f64)?;
     let all = bike
         .modes(&speeds)
         .ok_or_else(|| err("the modes cannot be followed to these speeds (more than 200 m/s from the reference speed, or no speed with one complex pair and two real roots)"))?;
@@ -593,14 +604,23 @@ fn eigenvalues<'py>(
 ) -> PyResult<Bound<'py, PyArray2<Complex64>>> {
     let bike = Whipple::new(params_of(params, strict)?);
     let speeds = speeds_of(speeds)?;
-    let mut flat = Vec::with_capacity(4 * speeds.len());
-    for v in &speeds {
-        let ev = bike.eigenvalues(*v);
-        if ev.len() != 4 {
-            return Err(err(format!("the eigenvalues at speed {v} did not converge")));
+    within(&format!("{} speeds", speeds.len()), speeds.len() as f64, 4.0 * 16.0)?;
+    // On a worker, so that Ctrl-C is seen during millions of speeds.
+    let flat = interruptible(py, |stop| {
+        let mut flat = Vec::with_capacity(4 * speeds.len());
+        for (k, v) in speeds.iter().enumerate() {
+            if k % 4096 == 0 && stop.load(std::sync::atomic::Ordering::Relaxed) {
+                break;
+            }
+            let ev = bike.eigenvalues(*v);
+            if ev.len() != 4 {
+                return Err(format!("the eigenvalues at speed {v} did not converge"));
+            }
+            flat.extend(ev.iter().map(|e| Complex64::new(e.re, e.im)));
         }
-        flat.extend(ev.iter().map(|e| Complex64::new(e.re, e.im)));
-    }
+        Ok(flat)
+    })?
+    .map_err(err)?;
     PyArray1::from_vec(py, flat).reshape([speeds.len(), 4])
 }
 
@@ -655,6 +675,9 @@ fn designs_of(designs: &Bound<'_, PyAny>) -> PyResult<Vec<[f64; 26]>> {
     if shape[1] != 26 {
         return Err(bad());
     }
+    // The rows, their windows and the result.
+    let each = 26 * 8 + std::mem::size_of::<StabilityWindow>() + 2 * 8;
+    within(&format!("designs of {} rows", shape[0]), shape[0] as f64, each as f64)?;
     let a = array.as_array();
     Ok(a.rows().into_iter().map(|r| std::array::from_fn(|k| r[k])).collect())
 }
@@ -697,7 +720,17 @@ fn windows<'py>(
             PyErr::warn(py, py.get_type::<PhysicsWarning>().as_any(), &message, 1)?;
         }
     }
-    let ws = py.detach(|| unc::windows_unchecked(&rows));
+    // In blocks, so that Ctrl-C is seen between two.
+    let ws = interruptible(py, |stop| {
+        let mut ws = Vec::with_capacity(rows.len());
+        for block in rows.chunks(1 << 14) {
+            if stop.load(std::sync::atomic::Ordering::Relaxed) {
+                break;
+            }
+            ws.extend(unc::windows_unchecked(block));
+        }
+        ws
+    })?;
     let flat: Vec<f64> = ws
         .iter()
         .flat_map(|w| [w.weave_speed.unwrap_or(f64::NAN), w.capsize_speed.unwrap_or(f64::NAN)])
@@ -715,9 +748,9 @@ fn sweep<'py>(
     py: Python<'py>,
     params: &Bound<'py, PyAny>,
     name: &str,
-    start: f64,
-    stop: f64,
-    count: usize,
+    #[pyo3(from_py_with = arg::start)] start: f64,
+    #[pyo3(from_py_with = arg::stop)] stop: f64,
+    #[pyo3(from_py_with = arg::count)] count: usize,
     method: &str,
     strict: bool,
 ) -> PyResult<Bound<'py, PyDict>> {
@@ -733,9 +766,18 @@ fn sweep<'py>(
         }
     }
     let progress = AtomicUsize::new(0);
-    let s = py
-        .detach(|| carvallo::sweep::sweep(&base, name, start, stop, count, m, &progress))
-        .map_err(|e| err(e.to_string()))?;
+    let designs = carvallo::sweep::Designs::Grid(vec![carvallo::sweep::Vary {
+        name: name.to_string(),
+        from: start,
+        to: stop,
+        count,
+    }]);
+    // Constant memory (blocks of designs); Ctrl-C stops it within a few designs.
+    let s = interruptible(py, |flag| {
+        carvallo::sweep::sweep_stream(&base, &designs, m, &progress, flag, None)
+    })?
+    .map_err(|e| err(e.to_string()))?
+    .summary;
     let d = PyDict::new(py);
     d.set_item("parameter", name)?;
     d.set_item("from", start)?;
@@ -807,20 +849,20 @@ pub(crate) fn integration_of(
 fn simulate<'py>(
     py: Python<'py>,
     params: &Bound<'py, PyAny>,
-    speed: f64,
-    lean0: f64,
-    duration: f64,
-    step: f64,
-    every: usize,
+    #[pyo3(from_py_with = arg::speed)] speed: f64,
+    #[pyo3(from_py_with = arg::lean0)] lean0: f64,
+    #[pyo3(from_py_with = arg::duration)] duration: f64,
+    #[pyo3(from_py_with = arg::step)] step: f64,
+    #[pyo3(from_py_with = arg::every)] every: usize,
     strict: bool,
     method: &str,
-    rtol: Option<f64>,
-    atol: Option<f64>,
+    #[pyo3(from_py_with = arg::rtol)] rtol: Option<f64>,
+    #[pyo3(from_py_with = arg::atol)] atol: Option<f64>,
     stop_when: Vec<String>,
-    torque_t: Option<Vec<f64>>,
-    torque_roll: Option<Vec<f64>>,
-    torque_steer: Option<Vec<f64>>,
-    impulses: Vec<(f64, f64, f64)>,
+    #[pyo3(from_py_with = arg::torque_t)] torque_t: Option<Vec<f64>>,
+    #[pyo3(from_py_with = arg::torque_roll)] torque_roll: Option<Vec<f64>>,
+    #[pyo3(from_py_with = arg::torque_steer)] torque_steer: Option<Vec<f64>>,
+    #[pyo3(from_py_with = arg::impulses)] impulses: Vec<(f64, f64, f64)>,
     k: Option<Bound<'py, PyAny>>,
 ) -> PyResult<Bound<'py, PyDict>> {
     let (how, stops) = integration_of(method, rtol, atol, &stop_when)?;
@@ -830,6 +872,13 @@ fn simulate<'py>(
         err(carvallo::ParameterError::InvalidParameter { name, value, reason }.to_string())
     })?;
     let inputs = inputs_of(torque_t, torque_roll, torque_steer, impulses, k.as_ref())?;
+    // The samples, then ten (driven: thirteen) columns copied out of them.
+    let each = std::mem::size_of::<carvallo::whipple_nonlinear::ForcedSample>() + 13 * 8;
+    within(
+        &format!("duration = {duration}, step = {step}, every = {every}"),
+        grid.samples() as f64,
+        each as f64,
+    )?;
     if !inputs.is_empty() {
         return simulate_driven(py, &bike, start, &grid, &how, &stops, &inputs);
     }
@@ -1004,12 +1053,12 @@ fn simulate_many<'py>(
     params: &Bound<'py, PyAny>,
     speeds: &Bound<'py, PyAny>,
     lean0s: &Bound<'py, PyAny>,
-    duration: f64,
+    #[pyo3(from_py_with = arg::duration)] duration: f64,
     steer_rates: Option<&Bound<'py, PyAny>>,
-    step: f64,
+    #[pyo3(from_py_with = arg::step)] step: f64,
     method: &str,
-    rtol: Option<f64>,
-    atol: Option<f64>,
+    #[pyo3(from_py_with = arg::rtol)] rtol: Option<f64>,
+    #[pyo3(from_py_with = arg::atol)] atol: Option<f64>,
     stop_when: Vec<String>,
     strict: bool,
 ) -> PyResult<Bound<'py, PyDict>> {
@@ -1018,6 +1067,13 @@ fn simulate_many<'py>(
     let speeds = column_of(speeds, "speeds")?;
     let lean0s = column_of(lean0s, "lean0s")?;
     let n = speeds.len();
+    // The starts, the ends and fourteen columns.
+    let each = std::mem::size_of::<carvallo::whipple_nonlinear::State>()
+        + std::mem::size_of::<
+            Result<carvallo::whipple_nonlinear::Final, carvallo::whipple_nonlinear::NonlinearError>,
+        >()
+        + 14 * 8;
+    within(&format!("{n} speeds"), n as f64, each as f64)?;
     if lean0s.len() != n {
         return Err(err(format!("lean0s has {} values for {n} speeds", lean0s.len())));
     }
@@ -1046,7 +1102,18 @@ fn simulate_many<'py>(
         err(carvallo::ParameterError::InvalidParameter { name, value, reason }.to_string())
     })?;
     let done = AtomicUsize::new(0);
-    let ends = py.detach(|| bike.simulate_many(&starts, &grid, &how, &stops, &done));
+    // A few runs at a time, so that Ctrl-C is seen between two groups.
+    let group = std::thread::available_parallelism().map_or(2, |n| n.get());
+    let ends = interruptible(py, |stop| {
+        let mut ends = Vec::with_capacity(n);
+        for chunk in starts.chunks(group) {
+            if stop.load(std::sync::atomic::Ordering::Relaxed) {
+                break;
+            }
+            ends.extend(bike.simulate_many(chunk, &grid, &how, &stops, &done));
+        }
+        ends
+    })?;
     let d = PyDict::new(py);
     type Column = fn(&carvallo::whipple_nonlinear::Final) -> f64;
     let columns: [(&str, Column); 9] = [
@@ -1146,12 +1213,14 @@ fn monte_carlo<'py>(
     py: Python<'py>,
     params: &Bound<'py, PyAny>,
     sigma: &Bound<'py, PyAny>,
-    samples: usize,
-    seed: u64,
+    #[pyo3(from_py_with = arg::samples)] samples: usize,
+    #[pyo3(from_py_with = arg::seed)] seed: u64,
     strict: bool,
 ) -> PyResult<Bound<'py, PyDict>> {
     let u = uncertain_of(params, sigma, strict)?;
-    let mc = py.detach(|| unc::monte_carlo(&u, samples, seed));
+    within(&format!("samples = {samples}"), samples as f64, 2.0 * 8.0 * 2.0)?;
+    let mc = interruptible(py, |stop| unc::monte_carlo_until(&u, samples, seed, stop))?
+        .ok_or_else(|| err("monte_carlo was stopped"))?;
     let d = PyDict::new(py);
     d.set_item("weave", PyArray1::from_vec(py, mc.weave))?;
     d.set_item("capsize", PyArray1::from_vec(py, mc.capsize))?;
@@ -1176,9 +1245,9 @@ fn eigenvalue_bands<'py>(
     params: &Bound<'py, PyAny>,
     sigma: &Bound<'py, PyAny>,
     speeds: &Bound<'py, PyAny>,
-    samples: usize,
-    seed: u64,
-    quantiles: (f64, f64),
+    #[pyo3(from_py_with = arg::samples)] samples: usize,
+    #[pyo3(from_py_with = arg::seed)] seed: u64,
+    #[pyo3(from_py_with = arg::quantiles)] quantiles: (f64, f64),
     strict: bool,
 ) -> PyResult<Bound<'py, PyDict>> {
     let u = uncertain_of(params, sigma, strict)?;
@@ -1187,7 +1256,13 @@ fn eigenvalue_bands<'py>(
     if !(0.0..=1.0).contains(&lo) || !(0.0..=1.0).contains(&hi) || lo > hi {
         return Err(err(format!("invalid quantiles ({lo}, {hi}): need 0 <= low <= high <= 1")));
     }
-    let b = py.detach(|| unc::eigenvalue_bands(&u, &speeds, samples, seed, lo, hi));
+    // The designs and their sorted real parts at every speed, then one rank at a time.
+    let each = 26.0 * 8.0 + 24.0 + speeds.len() as f64 * 40.0 + 8.0;
+    within(&format!("samples = {samples} with {} speeds", speeds.len()), samples as f64, each)?;
+    let b = interruptible(py, |stop| {
+        unc::eigenvalue_bands_until(&u, &speeds, samples, seed, (lo, hi), stop)
+    })?
+    .ok_or_else(|| err("eigenvalue_bands was stopped"))?;
     let d = PyDict::new(py);
     d.set_item("speeds", PyArray1::from_vec(py, b.speeds))?;
     d.set_item("nominal", rows4(py, &b.nominal)?)?;

@@ -12,6 +12,7 @@ use numpy::PyArray1;
 use pyo3::prelude::*;
 use pyo3::types::PyDict;
 
+use crate::guard::{arg, within};
 use crate::python::{err, integration_of, set_run};
 
 /// The names of the state's components, in its order.
@@ -38,6 +39,12 @@ fn grid_of(duration: f64, step: f64, every: usize) -> PyResult<Grid> {
     Grid::new(duration, step, every).map_err(|(name, value, reason)| {
         err(carvallo::ParameterError::InvalidParameter { name, value, reason }.to_string())
     })
+}
+
+/// Refuses a run whose samples (time, state, then five columns) need more than the limit.
+fn samples_within(grid: &Grid, duration: f64, step: f64, every: usize) -> PyResult<()> {
+    let what = format!("duration = {duration}, step = {step}, every = {every}");
+    within(&what, grid.samples() as f64, (8 + 4 * 8 + 5 * 8) as f64)
 }
 
 /// The run as a dict: arrays `t`, `theta`, `p`, `n`, `s`; `energy_drift` (J) and
@@ -100,25 +107,26 @@ fn numbers_of<const K: usize>(
 #[allow(clippy::too_many_arguments)]
 fn simulate_hoop<'py>(
     py: Python<'py>,
-    theta0: f64,
-    s0: f64,
-    duration: f64,
-    step: f64,
-    every: usize,
-    p0: f64,
-    n0: f64,
-    radius: f64,
-    mass: f64,
-    g: f64,
+    #[pyo3(from_py_with = arg::theta0)] theta0: f64,
+    #[pyo3(from_py_with = arg::s0)] s0: f64,
+    #[pyo3(from_py_with = arg::duration)] duration: f64,
+    #[pyo3(from_py_with = arg::step)] step: f64,
+    #[pyo3(from_py_with = arg::every)] every: usize,
+    #[pyo3(from_py_with = arg::p0)] p0: f64,
+    #[pyo3(from_py_with = arg::n0)] n0: f64,
+    #[pyo3(from_py_with = arg::radius)] radius: f64,
+    #[pyo3(from_py_with = arg::mass)] mass: f64,
+    #[pyo3(from_py_with = arg::g)] g: f64,
     method: &str,
-    rtol: Option<f64>,
-    atol: Option<f64>,
+    #[pyo3(from_py_with = arg::rtol)] rtol: Option<f64>,
+    #[pyo3(from_py_with = arg::atol)] atol: Option<f64>,
     stop_when: Vec<String>,
 ) -> PyResult<Bound<'py, PyDict>> {
     let (how, _) = integration_of(method, rtol, atol, &[])?;
     let stops = thresholds(&stop_when)?;
     let hoop = Hoop::new(radius, mass, g).map_err(|e| err(e.to_string()))?;
     let grid = grid_of(duration, step, every)?;
+    samples_within(&grid, duration, step, every)?;
     let x0 = [theta0, p0, n0, s0];
     let tr = py
         .detach(|| hoop.simulate_with(x0, &grid, &how, &stops))
@@ -137,18 +145,18 @@ fn simulate_unicycle<'py>(
     py: Python<'py>,
     rider: &Bound<'py, PyAny>,
     wheel: &Bound<'py, PyAny>,
-    radius: f64,
-    theta0: f64,
-    s0: f64,
-    duration: f64,
-    step: f64,
-    every: usize,
-    p0: f64,
-    n0: f64,
-    g: f64,
+    #[pyo3(from_py_with = arg::radius)] radius: f64,
+    #[pyo3(from_py_with = arg::theta0)] theta0: f64,
+    #[pyo3(from_py_with = arg::s0)] s0: f64,
+    #[pyo3(from_py_with = arg::duration)] duration: f64,
+    #[pyo3(from_py_with = arg::step)] step: f64,
+    #[pyo3(from_py_with = arg::every)] every: usize,
+    #[pyo3(from_py_with = arg::p0)] p0: f64,
+    #[pyo3(from_py_with = arg::n0)] n0: f64,
+    #[pyo3(from_py_with = arg::g)] g: f64,
     method: &str,
-    rtol: Option<f64>,
-    atol: Option<f64>,
+    #[pyo3(from_py_with = arg::rtol)] rtol: Option<f64>,
+    #[pyo3(from_py_with = arg::atol)] atol: Option<f64>,
     stop_when: Vec<String>,
 ) -> PyResult<Bound<'py, PyDict>> {
     let (how, _) = integration_of(method, rtol, atol, &[])?;
@@ -160,6 +168,7 @@ fn simulate_unicycle<'py>(
     let wheel = Wheel { mass: wheel_mass, a1, b1, c1 };
     let unicycle = Unicycle::new(radius, g, rider, wheel).map_err(|e| err(e.to_string()))?;
     let grid = grid_of(duration, step, every)?;
+    samples_within(&grid, duration, step, every)?;
     let x0 = [theta0, p0, n0, s0];
     let tr = py
         .detach(|| unicycle.simulate_with(x0, &grid, &how, &stops))

@@ -29,6 +29,8 @@
 //! only when it breaks one by more than the nominal does ([`TriangleSlack::admitting`]).
 //! [`eigenvalue_bands`] does the same for the real parts of the eigenvalues on a speed grid.
 
+use std::sync::atomic::{AtomicBool, Ordering};
+
 use rayon::prelude::*;
 
 use carvallo_ir::dual::{self, Dual};
@@ -201,22 +203,22 @@ pub fn windows(
 /// deviations `u.sigma` (a parameter with zero uncertainty keeps its value), from `seed`.
 pub fn sample_designs(u: &UncertainParams, samples: usize, seed: u64) -> Vec<[f64; 26]> {
     let mut rng = SplitMix64(seed);
-    let base = *u.params.values();
-    (0..samples)
-        .map(|_| {
-            let mut row = base;
-            let mut k = 0;
-            while k < N {
-                let (z0, z1) = rng.normal_pair();
-                row[k] += u.sigma[k] * z0;
-                if k + 1 < N {
-                    row[k + 1] += u.sigma[k + 1] * z1;
-                }
-                k += 2;
-            }
-            row
-        })
-        .collect()
+    (0..samples).map(|_| draw(u, &mut rng)).collect()
+}
+
+/// The next row of [`sample_designs`] drawn from `rng`.
+fn draw(u: &UncertainParams, rng: &mut SplitMix64) -> [f64; 26] {
+    let mut row = *u.params.values();
+    let mut k = 0;
+    while k < N {
+        let (z0, z1) = rng.normal_pair();
+        row[k] += u.sigma[k] * z0;
+        if k + 1 < N {
+            row[k + 1] += u.sigma[k + 1] * z1;
+        }
+        k += 2;
+    }
+    row
 }
 
 /// Mean and standard deviation (with the $n - 1$ divisor) of the finite values of `x`, and
@@ -247,16 +249,45 @@ pub struct MonteCarlo {
 /// The Monte Carlo propagation of `u`'s uncertainties to the weave and capsize speeds (see the
 /// [module docs](self)).
 pub fn monte_carlo(u: &UncertainParams, samples: usize, seed: u64) -> MonteCarlo {
-    let designs = sample_designs(u, samples, seed);
+    let never = AtomicBool::new(false);
+    monte_carlo_until(u, samples, seed, &never).expect("never stopped")
+}
+
+/// Samples drawn and evaluated between two looks at the stop flag of [`monte_carlo_until`].
+pub const MONTE_CARLO_BLOCK: usize = 1 << 14;
+
+/// [`monte_carlo`] in blocks of [`MONTE_CARLO_BLOCK`] samples (the same draws in the same
+/// order, so the same result), only one block's designs held at a time, reading `stop` before
+/// every block: `None` once it is set (Ctrl-C in a caller).
+pub fn monte_carlo_until(
+    u: &UncertainParams,
+    samples: usize,
+    seed: u64,
+    stop: &AtomicBool,
+) -> Option<MonteCarlo> {
+    let mut rng = SplitMix64(seed);
     let slack = TriangleSlack::admitting(&u.params);
-    let invalid =
-        designs.iter().filter(|d| WhippleParams::from_values_within(**d, &slack).is_err()).count();
-    let w = windows_unchecked(&designs);
-    MonteCarlo {
-        weave: w.iter().map(|w| w.weave_speed.unwrap_or(f64::NAN)).collect(),
-        capsize: w.iter().map(|w| w.capsize_speed.unwrap_or(f64::NAN)).collect(),
-        invalid,
+    let mut out =
+        MonteCarlo { weave: Vec::with_capacity(samples), capsize: Vec::new(), invalid: 0 };
+    out.capsize.reserve_exact(samples);
+    let mut done = 0;
+    while done < samples {
+        if stop.load(Ordering::Relaxed) {
+            return None;
+        }
+        let n = MONTE_CARLO_BLOCK.min(samples - done);
+        let designs: Vec<[f64; 26]> = (0..n).map(|_| draw(u, &mut rng)).collect();
+        out.invalid += designs
+            .iter()
+            .filter(|d| WhippleParams::from_values_within(**d, &slack).is_err())
+            .count();
+        for w in windows_unchecked(&designs) {
+            out.weave.push(w.weave_speed.unwrap_or(f64::NAN));
+            out.capsize.push(w.capsize_speed.unwrap_or(f64::NAN));
+        }
+        done += n;
     }
+    Some(out)
 }
 
 /// Quantile bands of the eigenvalues' real parts against speed.
@@ -295,6 +326,21 @@ pub fn eigenvalue_bands(
     q_low: f64,
     q_high: f64,
 ) -> EigenBands {
+    let never = AtomicBool::new(false);
+    eigenvalue_bands_until(u, speeds, samples, seed, (q_low, q_high), &never)
+        .expect("never stopped")
+}
+
+/// [`eigenvalue_bands`] reading `stop` before each design: `None` once it is set (Ctrl-C in a
+/// caller), the quantiles `(q_low, q_high)`.
+pub fn eigenvalue_bands_until(
+    u: &UncertainParams,
+    speeds: &[f64],
+    samples: usize,
+    seed: u64,
+    (q_low, q_high): (f64, f64),
+    stop: &AtomicBool,
+) -> Option<EigenBands> {
     let designs = sample_designs(u, samples, seed);
     let index = scene_index();
     let real_parts = |values: &[f64; 26]| -> Vec<Option<[f64; 4]>> {
@@ -311,7 +357,13 @@ pub fn eigenvalue_bands(
             })
             .collect()
     };
-    let per_design: Vec<Vec<Option<[f64; 4]>>> = designs.par_iter().map(real_parts).collect();
+    let per_design: Vec<Vec<Option<[f64; 4]>>> = designs
+        .par_iter()
+        .map(|d| if stop.load(Ordering::Relaxed) { Vec::new() } else { real_parts(d) })
+        .collect();
+    if stop.load(Ordering::Relaxed) {
+        return None;
+    }
     let nominal: Vec<[f64; 4]> =
         real_parts(u.params.values()).into_iter().map(|r| r.unwrap_or([f64::NAN; 4])).collect();
     let mut lower = Vec::with_capacity(speeds.len());
@@ -328,7 +380,7 @@ pub fn eigenvalue_bands(
         lower.push(lo);
         upper.push(hi);
     }
-    EigenBands { speeds: speeds.to_vec(), nominal, lower, upper }
+    Some(EigenBands { speeds: speeds.to_vec(), nominal, lower, upper })
 }
 
 #[cfg(test)]
