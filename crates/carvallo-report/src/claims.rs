@@ -35,6 +35,30 @@ pub struct Claim {
     pub verdict: Verdict,
     /// The reading under which the claim holds, where it fails, or what the numbers mean.
     pub note: String,
+    /// The perturbation of the derived side that must break the check, and the verdict the
+    /// same check gives on the perturbed input (`None` when no perturbation is stated yet).
+    pub falsification: Option<Falsification>,
+}
+
+/// A check run on a perturbed derived side (a model ingredient moved, a coefficient of the
+/// generated program scaled by a stated amount, a sign flipped; never the printed value
+/// replaced): what was perturbed and the verdict the check then gives. A check that can fail
+/// gives a verdict other than its own.
+#[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
+pub struct Falsification {
+    /// What was perturbed, and by how much.
+    pub perturbation: String,
+    /// The verdict of the same check on the perturbed input.
+    pub verdict: Verdict,
+    /// The evidence the check produced on the perturbed input.
+    pub evidence: BTreeMap<String, f64>,
+}
+
+impl Falsification {
+    /// Whether the perturbation broke the check: its verdict differs from `verdict`.
+    pub fn breaks(&self, verdict: Verdict) -> bool {
+        self.verdict != verdict
+    }
 }
 
 impl Claim {
@@ -56,7 +80,20 @@ impl Claim {
             evidence: evidence.iter().map(|(k, v)| (k.to_string(), *v)).collect(),
             verdict,
             note: note.to_string(),
+            falsification: None,
         }
+    }
+
+    /// The claim with the outcome of its check on a perturbed derived side: `perturbation`
+    /// says what was changed, `perturbed` is the claim the same check gives on that input
+    /// (its verdict and evidence are kept).
+    pub fn falsified_by(mut self, perturbation: &str, perturbed: Claim) -> Claim {
+        self.falsification = Some(Falsification {
+            perturbation: perturbation.to_string(),
+            verdict: perturbed.verdict,
+            evidence: perturbed.evidence,
+        });
+        self
     }
 
     /// The evidence as text: `name = value` pairs with 6 significant digits.
@@ -149,6 +186,15 @@ pub fn render_claims_text(claims: &[Claim]) -> String {
         }
         if !c.note.is_empty() {
             let _ = writeln!(out, "  note:     {}", c.note);
+        }
+        if let Some(f) = &c.falsification {
+            let outcome = if f.breaks(c.verdict) { "breaks it" } else { "does not break it" };
+            let _ = writeln!(
+                out,
+                "  falsify:  {} -> [{}], {outcome}",
+                f.perturbation,
+                f.verdict.as_str()
+            );
         }
     }
     out

@@ -40,7 +40,7 @@ pub mod unicycle;
 pub mod whipple;
 
 pub use checks::{parse_checks, SymbolicCheck};
-pub use claims::{Assertion, Claim, Status};
+pub use claims::{Assertion, Claim, Falsification, Status};
 pub use entry::{Derived, Entry, Memoir, Verdict};
 pub use hoop::hoop_entries;
 pub use policy::{AGREEMENT_TOLERANCE, REL_DIFF_FLOOR};

@@ -1472,6 +1472,63 @@ fn coulomb_pivot_study(
     }
 }
 
+/// θ'' = a²θ - `sign` a²k sgn(θ') from rest at `th0`, by RK4 with `steps` steps up to
+/// `t_end`: the position and speed at `t_end`. With `sign` = 1 (Coulomb friction) the
+/// equilibrium at rest holds while a²|θ| ≤ a²k (the static friction balances the weight's
+/// moment); with `sign` = -1 (the falsification) there is no static hold.
+fn coulomb_divergence(a: f64, k: f64, th0: f64, sign: f64, t_end: f64, steps: usize) -> (f64, f64) {
+    let acc = |th: f64, v: f64| {
+        let dir = if v != 0.0 { v.signum() } else { th.signum() };
+        if v == 0.0 && sign > 0.0 && th.abs() <= k {
+            0.0
+        } else {
+            a * a * th - sign * a * a * k * dir
+        }
+    };
+    let h = t_end / steps as f64;
+    let (mut th, mut v) = (th0, 0.0f64);
+    for _ in 0..steps {
+        let (k1x, k1v) = (v, acc(th, v));
+        let (k2x, k2v) = (v + 0.5 * h * k1v, acc(th + 0.5 * h * k1x, v + 0.5 * h * k1v));
+        let (k3x, k3v) = (v + 0.5 * h * k2v, acc(th + 0.5 * h * k2x, v + 0.5 * h * k2v));
+        let (k4x, k4v) = (v + h * k3v, acc(th + h * k3x, v + h * k3v));
+        th += h / 6.0 * (k1x + 2.0 * k2x + 2.0 * k3x + k4x);
+        v += h / 6.0 * (k1v + 2.0 * k2v + 2.0 * k3v + k4v);
+    }
+    (th, v)
+}
+
+/// n° 123, the divergence with dry friction, with the friction's sign `sign` (1 for the check).
+fn divergence_friction_check(sign: f64) -> Claim {
+    let (a, kk, t_end, steps) = (2.0f64, 0.1f64, 1.0f64, 2_000usize);
+    let (below, above) = (0.05f64, 0.3f64);
+    let (th_b, v_b) = coulomb_divergence(a, kk, below, sign, t_end, steps);
+    let (th_a, v_a) = coulomb_divergence(a, kk, above, sign, t_end, steps);
+    let (th_free, v_free) = coulomb_divergence(a, 0.0, above, 1.0, t_end, steps);
+    let no_start = th_b == below && v_b == 0.0;
+    let ratio = v_a / v_free;
+    let printed_ratio = (above - kk) / above;
+    let ratio_diff = (ratio - printed_ratio).abs();
+    // RK4 with h = 5e-4 on e^(2t): error of order (ah)^4 ~ 1e-12; 1e-9 leaves room.
+    let holds = no_start && th_a < th_free && v_a < v_free && ratio_diff <= 1e-9;
+    claim(
+        "bicycle-straight-friction-slows-divergence",
+        "123",
+        "For a divergence θ = θ0 e^(at) friction still increases stability: θ = k + (θ0 - k) e^(at), no start if θ0 < k, and a slower motion θ' = a(θ0 - k)e^(at) instead of θ' = θ0 e^(at).",
+        "θ'' = a²θ with a Coulomb friction -a²k sgn θ' (holding at rest while |θ| ≤ k) simulated from rest by RK4 (2000 steps to t = 1, a = 2, k = 0.1): from θ0 = 0.05 < k it must not start; from θ0 = 0.3 > k its angle and speed at t = 1 must stay below the frictionless run's, with the speed ratio equal to the memoir's (θ0 - k)/θ0 within 1e-9 (RK4 error about 1e-12)",
+        &[
+            ("θ(1) from θ0 = 0.05", th_b),
+            ("θ(1) from θ0 = 0.3 with friction", th_a),
+            ("θ(1) from θ0 = 0.3 without friction", th_free),
+            ("speed ratio with/without friction", ratio),
+            ("|ratio - (θ0 - k)/θ0|", ratio_diff),
+        ],
+        holds,
+        Verdict::DerivationDiffers,
+        "holds: from rest the motion is k + (θ0 - k) cosh(at), its speed a(θ0 - k) sinh(at) against a θ0 sinh(at) without friction, the memoir's ratio (θ0 - k)/θ0 (its exponential solution starts with the speed a(θ0 - k); the memoir writes θ0 e^(at) for the frictionless speed, a factor a dropped in a comparison it does not change)",
+    )
+}
+
 /// n° 123: the pendulum with dry friction, and friction at the steer of the bicycle.
 fn friction_claims(k: &Constants) -> Vec<Claim> {
     let mut out = Vec::new();
@@ -1498,23 +1555,10 @@ fn friction_claims(k: &Constants) -> Vec<Claim> {
         Verdict::DerivationDiffers,
         "below the threshold the swing shrinks, above it grows: the equilibrium is made stable for amplitudes below (2 + τ)k/τ only (a local stability, which the memoir's condition on θ0 states)",
     ));
-    // The exponential divergence: slower with friction.
-    let (th0, kk, aa) = (0.3f64, 0.1f64, 2.0f64);
-    let with = |t: f64| kk + (th0 - kk) * (aa * t).exp();
-    let resid = {
-        let (t, h) = (0.7, 1e-4);
-        let acc = (with(t + h) - 2.0 * with(t) + with(t - h)) / (h * h);
-        (acc - aa * aa * (with(t) - kk)).abs() / acc.abs()
-    };
-    out.push(claim(
-        "bicycle-straight-friction-slows-divergence",
-        "123",
-        "For a divergence θ = θ0 e^(at) friction still increases stability: θ = k + (θ0 - k) e^(at), no start if θ0 < k, and a slower motion θ' = a(θ0 - k)e^(at) instead of θ' = θ0 e^(at).",
-        "the memoir's θ = k + (θ0 - k)e^(at) checked against θ'' = a²(θ - k) (the friction -a²k opposing θ' > 0) by a central second difference at t = 0.7 (a = 2, k = 0.1, θ0 = 0.3); the speed ratio with and without friction (θ0 - k)/θ0",
-        &[("relative residual of the equation", resid), ("speed ratio (θ0 - k)/θ0", (th0 - kk) / th0)],
-        resid < 1e-6 && (th0 - kk) / th0 < 1.0,
-        Verdict::DerivationDiffers,
-        "holds; the frictionless speed is a θ0 e^(at), the memoir writes θ0 e^(at) (a factor a dropped in the comparison, which does not change it). This exponential solution has the initial speed a(θ0 - k); from rest the motion is k + (θ0 - k) cosh(at)",
+    // The exponential divergence: slower with friction, simulated from rest.
+    out.push(divergence_friction_check(1.0).falsified_by(
+        "the friction's sign flipped (+a²k sgn θ' instead of -a²k sgn θ', no static hold)",
+        divergence_friction_check(-1.0),
     ));
     // The bicycle: viscous friction at the steer.
     let cs = [0.03, 0.1, 0.3, 1.0];

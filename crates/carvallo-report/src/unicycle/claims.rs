@@ -137,7 +137,7 @@ fn unmounted_is_hoop() -> Claim {
         "unicycle-unmounted-is-hoop",
         "20",
         "The unmounted unicycle is a hoop and its theory the same (« le monocycle non monté est assimilable à un cerceau et sa théorie est la même »).",
-        "The generated full model (n° 22–24) with no rider (mu = A = B = C = L = 0) and the hoop wheel of n° 4 (A1, B1, C1 = 3/2, 2, 1/2 mu1 R^2), at 16 seeded states: its p', n', s' against the hoop's generated right-hand side (n° 7), and its stability first member (n° 76, L = 0) against the hoop's (n° 9).",
+        "The generated full model (n° 22–24) with no rider (mu = A = B = C = L = 0) and the hoop wheel of n° 4 (A1, B1, C1 = 3/2, 2, 1/2 mu1 R^2), at 16 seeded states: its p', n', s' against the hoop's generated right-hand side (n° 7), and its stability first member (n° 76, L = 0) against the hoop's (n° 9). Holds by construction because the derivation builds the unicycle's wheel terms with the hoop's code and both stabilities go through one routine: it shows that no rider term survives at mu = 0, not the hoop's theory a second time.",
         &[("states", cases as f64), ("max_diff_accelerations_in_g_over_R", worst), ("max_rel_diff_stability", worst_stab)],
         policy::claim(holds, Verdict::DerivationDiffers),
         "Equal to rounding: the unicycle model contains the hoop. The pedal cranks that change the moments of n° 4 are not modelled (they would change A1, B1, C1 only).",
@@ -146,23 +146,65 @@ fn unmounted_is_hoop() -> Claim {
 
 // n° 22 ------------------------------------------------------------------------------------
 
-fn weight_work() -> Claim {
-    let mut worst = 0.0f64;
+/// The height above the ground of the point `O + a i + b j + c k` of the unicycle leaning by
+/// `theta` about its heading `psi`: i the wheel's forward direction, j its axle, k the unit
+/// vector from the contact point O through the wheel's centre (the rider's axis). The frame is
+/// built by rotations (heading about the vertical, then the lean about i), not from the
+/// printed heights.
+fn height(psi: f64, theta: f64, offset: [f64; 3]) -> f64 {
+    use nalgebra::{Rotation3, Vector3};
+    let frame = Rotation3::from_axis_angle(&Vector3::z_axis(), psi)
+        * Rotation3::from_axis_angle(&Vector3::x_axis(), theta);
+    (frame * Vector3::new(offset[0], offset[1], offset[2])).z
+}
+
+/// The potential energy g (mu h_G + mu1 h_W) from the heights of the rider's centre
+/// G = O + z k and of the wheel's centre O + R k, at the lean `theta` and heading `psi`.
+fn potential_from_heights(p: &Point, psi: f64, theta: f64) -> f64 {
+    let h_g = height(psi, theta, [0.0, 0.0, p["z"]]);
+    let h_w = height(psi, theta, [0.0, 0.0, p["R"]]);
+    p["g"] * (p["mu"] * h_g + p["mu1"] * h_w)
+}
+
+/// The check of n° 22 with the generated program evaluated at the rider's height `z_scale` z
+/// (1 for the check itself; the falsification moves the generated side's G along k).
+fn weight_work_check(z_scale: f64) -> Claim {
+    let (mut worst_v, mut worst_w) = (0.0f64, 0.0f64);
+    let mut rng = crate::sample::Rng(super::SEED ^ 22);
     for base in points(false).iter().take(16) {
-        let rest = with(base, &[("p", 0.0), ("n", 0.0), ("s", 0.0)]);
-        let work = -diff(&rest, "theta", 1e-5, |q| out(q, "energy"));
-        let printed =
-            (base["mu"] * base["z"] + base["mu1"] * base["R"]) * base["g"] * base["theta"].sin();
-        worst = mx(worst, rel_diff(work, printed));
+        let rest = with(base, &[("p", 0.0), ("n", 0.0), ("s", 0.0), ("z", z_scale * base["z"])]);
+        let psi = rng.uniform(-PI, PI);
+        let th = base["theta"];
+        // The generated energy at zero rates against the heights' potential.
+        worst_v =
+            mx(worst_v, rel_diff(out(&rest, "energy"), potential_from_heights(base, psi, th)));
+        // The work of gravity for d(theta), from the heights, against the printed work.
+        let h = 1e-5;
+        let work = -(potential_from_heights(base, psi, th + h)
+            - potential_from_heights(base, psi, th - h))
+            / (2.0 * h);
+        let printed = (base["mu"] * base["z"] + base["mu1"] * base["R"]) * base["g"] * th.sin();
+        worst_w = mx(worst_w, rel_diff(work, printed));
+        // Turning (psi) and rolling do not move the heights.
+        let turned = potential_from_heights(base, psi + 0.7, th);
+        worst_w = mx(worst_w, rel_diff(turned, potential_from_heights(base, psi, th)));
     }
+    let holds = worst_v <= 1e-12 && worst_w <= FD;
     Claim::new(
         "unicycle-weight-work",
         "22",
         "The virtual work of gravity is (mu z + mu1 R) g sin(theta) dp for the fall, nothing for the turning and rolling displacements.",
-        "Minus the derivative in theta (central difference, h = 1e-5) of the generated energy at zero rates (the potential energy) at 16 seeded points, against the printed work.",
-        &[("points", 16.0), ("max_rel_diff", worst)],
-        policy::numeric(worst, FD, Verdict::DerivationDiffers),
-        "The potential energy of the generated model is (mu z + mu1 R) g cos(theta); it does not depend on the turning and rolling angles, so gravity works only in the fall.",
+        "An independent route: the heights of the rider's centre G = O + z k and of the wheel's centre O + R k, with k carried by rotation matrices (heading psi about the vertical, then the lean theta), give the potential g (mu h_G + mu1 h_W) at 16 seeded points and seeded headings; it is compared with the generated energy at zero rates (within 1e-12 relative), and its central difference in theta (h = 1e-5, within 1e-6) with the printed work; turning by 0.7 rad leaves it unchanged. The derivation (codegen) types the potential as the printed formula, so the comparison with the generated energy is what ties the program to the geometry.",
+        &[("points", 16.0), ("max_rel_diff_potential", worst_v), ("max_rel_diff_work", worst_w)],
+        policy::claim(holds, Verdict::DerivationDiffers),
+        "The potential energy of the generated model equals g (mu h_G + mu1 h_W) with h_G = z cos(theta), h_W = R cos(theta) from the geometry; it does not depend on the turning and rolling angles, so gravity works only in the fall.",
+    )
+}
+
+fn weight_work() -> Claim {
+    weight_work_check(1.0).falsified_by(
+        "the generated energy evaluated with the rider's centre at O + 1.001 z k (z scaled by 1 + 1e-3) while the heights keep G = O + z k",
+        weight_work_check(1.0 + 1e-3),
     )
 }
 
@@ -364,12 +406,23 @@ impl StringBike {
         (f(h) - f(-h)) / (2.0 * h)
     }
 
-    /// Work of the rider's own force on the lowest pedal (backwards, unit), with its reaction
-    /// on the frame.
-    fn interior_work(&self) -> f64 {
+    /// Virtual work, per radian of forward pedal rotation, of the rider's own backward unit
+    /// force on the lowest pedal and of its equal and opposite reaction applied at the point
+    /// `reaction` of the frame (its position at d = 0; it moves with the frame when
+    /// `moves_with_frame`, otherwise it is held fixed: the falsification). Each point's
+    /// displacement comes from its own kinematics, differenced at ±1e-6 rad.
+    fn interior_work(&self, reaction: (f64, f64), moves_with_frame: bool) -> f64 {
         let h = 1e-6;
-        let rel = |d: f64| self.pedal(d).0 - self.advance * d;
-        -(rel(h) - rel(-h)) / (2.0 * h)
+        let force = (-1.0, 0.0);
+        let frame_point = |d: f64| {
+            let shift = if moves_with_frame { self.advance * d } else { 0.0 };
+            (reaction.0 + shift, reaction.1)
+        };
+        let work = |d: f64| {
+            let (p, q) = (self.pedal(d), frame_point(d));
+            force.0 * p.0 + force.1 * p.1 - (force.0 * q.0 + force.1 * q.1)
+        };
+        (work(h) - work(-h)) / (2.0 * h)
     }
 }
 
@@ -414,18 +467,71 @@ fn string_angle() -> Claim {
     )
 }
 
-fn interior_force() -> Claim {
+/// The points of the frame where the rider's reaction is applied: the saddle (above the crank
+/// axle), the handlebar (ahead and higher) and the crank axle itself, relative to the rear
+/// contact point (m).
+const REACTION_POINTS: [(f64, f64); 3] = [(0.35, 0.95), (0.95, 1.0), (0.42, 0.27)];
+
+/// The check of n° 26 bis with the reaction carried by the frame (`moves_with_frame`) or held
+/// fixed (the falsification: the reaction applied to a point that does not move with the
+/// frame, as if the force came from outside).
+fn interior_force_check(moves_with_frame: bool) -> Claim {
     let all = bikes();
-    let smallest = all.iter().map(|b| b.interior_work() / b.crank).fold(f64::INFINITY, f64::min);
-    let holds = (smallest - 1.0).abs() <= FD;
+    let (mut smallest, mut worst) = (f64::INFINITY, 0.0f64);
+    for b in &all {
+        for q in REACTION_POINTS {
+            let w = b.interior_work(q, moves_with_frame);
+            smallest = smallest.min(w);
+            worst = mx(worst, (w / b.crank - 1.0).abs());
+        }
+    }
+    let holds = smallest > 0.0 && worst <= FD;
     Claim::new(
         "unicycle-interior-force-advances",
         "26 bis",
         "When the force on the pedal is interior (from the rider), the cycle advances: the reaction cancels the work of the translation and only the relative work remains.",
-        "The work, for a forward pedal rotation, of a backward unit force on the lowest pedal and its reaction on the frame, differenced at ±1e-6 rad on the same 72 geometries, in units of the crank m.",
-        &[("geometries", all.len() as f64), ("min_work_over_m", smallest)],
+        "The virtual work, for a forward pedal rotation, of a backward unit force on the lowest pedal (its displacement from the crank's kinematics on the advancing frame) and of the equal and opposite force on the frame, applied at the saddle, the handlebar or the crank axle (each point's displacement from the frame's translation), differenced at ±1e-6 rad on the same 72 geometries: positive, and equal to the crank m (the relative work) within 1e-6.",
+        &[("geometries", all.len() as f64), ("reaction_points", REACTION_POINTS.len() as f64), ("min_work", smallest), ("max_rel_diff_work_vs_crank", worst)],
         policy::claim(holds, Verdict::DerivationDiffers),
-        "The work is + F m per radian whatever the gear: positive, the cycle advances.",
+        "The work is + F m per radian whatever the gear and wherever the reaction acts on the frame: positive, the cycle advances. Applied to a point that does not move with the frame (an exterior force), the same force gives F (m - M) < 0: the paradox of n° 26.",
+    )
+}
+
+/// The check of n° 26 for every velocipede: a backward force on the lowest pedal from outside
+/// the machine, on the 72 bicycles of n° 26 bis with the advance per radian M scaled by
+/// `advance_scale` (1 for the check; the falsification gears the machines down below m).
+fn velocipede_paradox_check(advance_scale: f64) -> Claim {
+    let all: Vec<StringBike> = bikes()
+        .into_iter()
+        .map(|b| StringBike { advance: b.crank + advance_scale * (b.advance - b.crank), ..b })
+        .collect();
+    let mut largest = f64::NEG_INFINITY;
+    for b in &all {
+        // A point of the ground: the exterior force has no reaction on the frame.
+        largest = mx(largest, b.interior_work((0.0, 0.0), false));
+    }
+    Claim::new(
+        "unicycle-velocipede-paradox",
+        "26",
+        "The same holds for every velocipede (« tout appareil vélocipédique »): pulling the lowest pedal backwards makes it recede, the transmission hiding the reason.",
+        "The 72 bicycle geometries of n° 26 bis (gears 2–3, the frame advancing M per radian of the cranks of length m): the virtual work of a backward unit force on the lowest pedal with no reaction on the frame, differenced at ±1e-6 rad; negative for every one because M > m.",
+        &[("geometries", all.len() as f64), ("largest_work", largest)],
+        policy::claim(largest < 0.0, Verdict::DerivationDiffers),
+        "The work is -F (M - m) per radian: the pedal's point advances by M - m > 0 with the frame, as the wheel's pedal of n° 26 advances by R - m; the chain only changes M.",
+    )
+}
+
+fn velocipede_paradox() -> Claim {
+    velocipede_paradox_check(1.0).falsified_by(
+        "the machines geared down so that the frame advances less than the crank (M - m scaled by -0.5)",
+        velocipede_paradox_check(-0.5),
+    )
+}
+
+fn interior_force() -> Claim {
+    interior_force_check(true).falsified_by(
+        "the reaction applied at a point that does not move with the frame (an exterior force)",
+        interior_force_check(false),
     )
 }
 
@@ -1795,6 +1901,7 @@ pub fn claims() -> Vec<Claim> {
         slope_sign,
         pedal_paradox(),
         string_angle(),
+        velocipede_paradox(),
         interior_force(),
         steady_n_identity(),
         equilibrium_hoop_form(),
@@ -1866,7 +1973,7 @@ pub const INVENTORY: &[Assertion] = &[
     a("25", "out of steady state the first term mu R^2 s' far outweighs the other two of (s)", Left("a magnitude statement about a pedal-driven motion; the model has no motor moment, and in free motion the first term equals minus the others")),
     a("25", "-mu R^2 s' is the work of the cycle's inertia; the other two terms are of theoretical interest only", Left("an interpretation of the terms")),
     a("26", "pulling the lowest pedal backwards makes the cycle go backwards", Checked("unicycle-pedal-paradox")),
-    a("26", "the same holds for every velocipede, the transmission hiding the reason", Left("bicycle transmissions are outside the unicycle model (n° 26 bis checks the bicycle's string experiment)")),
+    a("26", "the same holds for every velocipede, the transmission hiding the reason", Checked("unicycle-velocipede-paradox")),
     a("26 bis", "string under the rear axle: backward pull recedes, forward or upward pull advances, a neutral inclination sin S = (m/M) sin(P, I), a constant of the machine", Checked("unicycle-string-neutral-angle")),
     a("26 bis", "an interior force on the pedal (from the rider) makes the cycle advance", Checked("unicycle-interior-force-advances")),
     a("27", "a windmill ship can sail against the wind only if the wind's work is positive in forward motion; its power decreases with its speed", Left("a ship and a windmill: outside the models of this workspace")),

@@ -114,7 +114,12 @@ fn claims_hold_and_snapshot() {
     let c = claims();
     assert_eq!(c.len(), 13, "{:#?}", c.iter().map(|x| &x.id).collect::<Vec<_>>());
     for x in &c {
-        assert_eq!(x.verdict, Verdict::Agrees, "{}: {}", x.id, x.note);
+        let expected = if x.id == "bicycle-turn-trail-factor-small" {
+            Verdict::Rounding
+        } else {
+            Verdict::Agrees
+        };
+        assert_eq!(x.verdict, expected, "{}: {}", x.id, x.note);
     }
     let get = |id: &str, key: &str| {
         c.iter().find(|x| x.id == id).and_then(|x| x.evidence.get(key).copied()).expect(key)
@@ -128,6 +133,13 @@ fn claims_hold_and_snapshot() {
         "max |centrifugal / gravity| / (theta0^2 + gamma^2)",
     );
     assert!(r > 0.1 && r < 1.0, "{r}");
+    // n° 102: the factor as defined, by hand from n° 96's bicycle (R = 0.38 m, c = 0.08 m,
+    // l = 1.10 m, η = 25°): 0.07327, above the bound 0.073 by less than its last digit, so the
+    // bound is the factor rounded (`rounding`, issue 38), not a strict inequality that holds.
+    let factor = get("bicycle-turn-trail-factor-small", "(R sin ω - c)/l");
+    let by_hand = (0.38 * 25f64.to_radians().sin() - 0.08) / 1.10;
+    assert!((factor - by_hand).abs() <= 1e-15, "{factor} vs {by_hand}");
+    assert!(factor > 0.073 && factor - 0.073 < 0.001, "{factor}");
     let v0 = get("bicycle-turn-steer-into-the-fall", "B changes sign at (km/h)");
     assert!(v0 > 1.0 && v0 < 3.0, "{v0}");
     let text = carvallo_report::claims::render_claims_text(&c);

@@ -11,6 +11,7 @@ mod bicycle_rest;
 mod bicycle_steady;
 mod bicycle_straight;
 mod bicycle_turn;
+mod falsify;
 mod hoop;
 mod hoop_discussion;
 mod policy;

@@ -152,7 +152,11 @@ fn small_lean_follows_the_linear_response() {
         worst = worst.max((s.state.lean - x[0]).abs()).max((s.state.steer - x[1]).abs());
     }
     eprintln!("largest nonlinear - linear difference: {worst:.2e} rad (lean0 {lean0})");
-    assert!(worst <= 1e-3 * lean0, "difference {worst}");
+    // Budget: from the upright the nonlinear terms are odd in the lean, so the gap is of order
+    // lean0^3 = 1e-12 grown over 3 s (measured 1.0e-11); both sides use RK4 at the same step,
+    // whose truncation differs by O(h^4) lean0 = 1e-16. The old bound 1e-3 lean0 = 1e-7 was
+    // ten thousand times the gap.
+    assert!(worst <= 100.0 * lean0.powi(3), "difference {worst}");
 }
 
 #[test]

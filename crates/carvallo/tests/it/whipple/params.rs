@@ -69,8 +69,18 @@ fn toml_value() -> impl Strategy<Value = String> {
 fn arbitrary_text_never_panics() {
     runner(1)
         .run(&any::<String>(), |text| {
-            let _ = WhippleParams::from_toml_str(&text);
-            let _ = WhippleParams::from_toml_str(&format!("[parameters]\n{text}"));
+            // Either read, with every parameter finite, or rejected with a message.
+            for t in [text.clone(), format!("[parameters]\n{text}")] {
+                match WhippleParams::from_toml_str(&t) {
+                    Ok(p) => {
+                        for key in PARAM_NAMES {
+                            let x = p.get(key).unwrap_or(f64::NAN);
+                            prop_assert!(x.is_finite(), "{key} read as {x} from {t:?}");
+                        }
+                    }
+                    Err(e) => prop_assert!(!e.to_string().is_empty(), "empty error for {t:?}"),
+                }
+            }
             Ok(())
         })
         .unwrap();

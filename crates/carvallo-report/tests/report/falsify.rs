@@ -1,0 +1,227 @@
+//! Falsifiability of the claims (issue 38): a claim whose check states a perturbation of the
+//! derived side (a model ingredient moved, a coefficient scaled, a sign flipped; never the
+//! printed value replaced) carries the verdict of the same check on the perturbed input
+//! ([`carvallo_report::claims::Falsification`]), and that verdict must differ from its own. A
+//! claim with none either says in its `how` why it holds by construction, or is in the
+//! backlog below, by name, so that the count of checks not yet shown to fail can only fall.
+
+use carvallo_report::{all_claims, Verdict};
+
+/// Claims whose check states no breaking perturbation yet (the backlog of issue 38). A claim
+/// leaves the list when it gains one ([`carvallo_report::Claim::falsified_by`]) or says why it
+/// holds by construction.
+const NOT_YET_FALSIFIED: &[&str] = &[
+    "bicycle-straight-47-not-stable",
+    "bicycle-straight-design-rule",
+    "bicycle-straight-footnote-divisor",
+    "bicycle-straight-friction-damps-weave",
+    "bicycle-straight-friction-widens-window",
+    "bicycle-straight-half-trail-rule",
+    "bicycle-straight-lower-limit-imaginary-pair",
+    "bicycle-straight-middle-factor-dominates",
+    "bicycle-straight-pendulum-friction-threshold",
+    "bicycle-straight-permanences-necessary",
+    "bicycle-straight-real-roots-stay-negative",
+    "bicycle-straight-slope-moment-sin-i",
+    "bicycle-straight-stable-only-in-third-row",
+    "bicycle-straight-table-gamma2-signs",
+    "bicycle-straight-upper-limit-stable",
+    "bicycle-straight-zero-root-turns-negative",
+    "bicycle-turn-centrifugal-moment-decreases",
+    "bicycle-turn-centrifugal-second-order",
+    "bicycle-turn-dfdtheta-negative",
+    "bicycle-turn-extremes-independent-of-speed",
+    "bicycle-turn-extremes-opposite-signs",
+    "bicycle-turn-instability-as-at-rest",
+    "bicycle-turn-l-below-a",
+    "bicycle-turn-mu-r2-below-half-a",
+    "bicycle-turn-steer-into-the-fall",
+    "bicycle-turn-unstable-whatever-speed",
+    "bicycle-turn-x-log-derivative-small",
+    "bicycle-turn-y-terms-cancel",
+    "geometry-axis-crosses-contact-radius",
+    "geometry-lowest-frame-where-e-touches",
+    "geometry-right-angle-turn-lowers-frame",
+    "geometry-sigma1-barely-moves-mu",
+    "hoop-characteristic-roots",
+    "hoop-cyclic-coordinates",
+    "hoop-cyclist-centrifugal-adds",
+    "hoop-d-half-three-cases",
+    "hoop-d-half-touches-e",
+    "hoop-d-minus-half-n1",
+    "hoop-e-limits",
+    "hoop-e-minus-s-sign",
+    "hoop-e-symmetry",
+    "hoop-fall-law-exponential",
+    "hoop-fall-law-pendular",
+    "hoop-fall-law-uniform",
+    "hoop-fall-mean-position",
+    "hoop-fall-mean-shift-sign",
+    "hoop-fall-rate-odd-in-time",
+    "hoop-fall-slower-for-large-r",
+    "hoop-graeffe-separated",
+    "hoop-graeffe-table-cells",
+    "hoop-h-cubic-one-root",
+    "hoop-h-is-n2",
+    "hoop-heavier-less-disturbed",
+    "hoop-horner-tableau-cells",
+    "hoop-lagrange-interchange",
+    "hoop-linear-criterion-sufficient",
+    "hoop-method-quadratic-criterion",
+    "hoop-n-above-e",
+    "hoop-n0-separates-roots",
+    "hoop-n1-skid-region",
+    "hoop-n2-acceptable-region",
+    "hoop-n2-skid-left",
+    "hoop-n2-walking-root",
+    "hoop-no-skid-normal-play",
+    "hoop-p2-has-factor-p",
+    "hoop-parameters-not-coordinates",
+    "hoop-practical-threshold",
+    "hoop-principal-axes",
+    "hoop-quartic-root-bracket",
+    "hoop-reality-curve-shape",
+    "hoop-reality-sides",
+    "hoop-recursion-7",
+    "hoop-recursion-first-order",
+    "hoop-root-squaring-half-thousandth",
+    "hoop-roots-on-ac",
+    "hoop-s-in-triangle-afd",
+    "hoop-s-n-periodic",
+    "hoop-stability-condition",
+    "hoop-stable-along-ae",
+    "hoop-stable-fall-stops",
+    "hoop-steady-state-persists",
+    "hoop-stick-neglected-term",
+    "hoop-threshold-grows-sqrt-r",
+    "hoop-trajectory-radius",
+    "hoop-turns-toward-lean",
+    "hoop-two-methods-conform",
+    "hoop-u-no-positive-root",
+    "hoop-u-smallest-root",
+    "hoop-upright-threshold",
+    "hoop-variation-table",
+    "hoop-verification-tableau-cells",
+    "hoop-virtual-work-is-moments",
+    "hoop-which-root-stable",
+    "kinematics-rider-low-and-forward",
+    "kinematics-upright-rest-unstable",
+    "rest-light-front-wheel-rests-at-lowest-frame",
+    "steady-abrupt-handlebar-throws-outward",
+    "steady-frame-decomposition",
+    "steady-frame-six-terms-steady",
+    "steady-frame-six-terms-unsteady",
+    "steady-front-wheel-terms",
+    "steady-gravity-quadrupled-at-half-speed",
+    "steady-handlebar-action-grows-with-speed",
+    "steady-leading-inertia-term",
+    "steady-neglected-term-bound",
+    "steady-omega-below-eta",
+    "steady-orders-fall",
+    "steady-orders-handlebar",
+    "steady-pedals-enter-the-rolling-equation-only",
+    "steady-rear-wheel-terms",
+    "steady-reduces-to-hoop-and-unicycle",
+    "steady-shift-centrifugal-moment",
+    "steady-shift-gravity-moment",
+    "steady-shift-handlebar-unchanged",
+    "steady-turns-toward-the-lean",
+    "steady-wheel-kinetic-energies",
+    "steady-wheels-lean-alike",
+    "steady-y-smaller-when-leaning",
+    "unicycle-78-big-wheel-remark",
+    "unicycle-78-l-sign",
+    "unicycle-78-leading-positive",
+    "unicycle-78-product-is-36",
+    "unicycle-abrupt-turn-increase",
+    "unicycle-abrupt-turn-pprime-larger",
+    "unicycle-accelerating-couple",
+    "unicycle-big-wheel-lean-stability",
+    "unicycle-bracket-positive",
+    "unicycle-e-larger-than-c",
+    "unicycle-e-zero-not-in-s",
+    "unicycle-equilibrium-hoop-form",
+    "unicycle-fall-turns-toward-lean",
+    "unicycle-l-terms-vanish-at-steady",
+    "unicycle-light-rider-hoop-limit",
+    "unicycle-light-stable-only-turning",
+    "unicycle-light-stable-root-n1",
+    "unicycle-light-turning-radius",
+    "unicycle-light-wheel-unstable",
+    "unicycle-n-touches-e",
+    "unicycle-pedal-paradox",
+    "unicycle-practical-region",
+    "unicycle-s-curve-ends",
+    "unicycle-s-curve-misses-e",
+    "unicycle-separation-curve",
+    "unicycle-skid-is-tan-on-e",
+    "unicycle-skid-reduces-to-hoop",
+    "unicycle-slope-moment",
+    "unicycle-slope-sign",
+    "unicycle-small-lean-outside-interval",
+    "unicycle-solved-form",
+    "unicycle-stability-biquadratic",
+    "unicycle-stability-circle",
+    "unicycle-stability-decreases-with-wheel",
+    "unicycle-stability-from-wheel-spin",
+    "unicycle-stability-recipe",
+    "unicycle-stable-between-roots",
+    "unicycle-stable-principle",
+    "unicycle-steady-n-identity",
+    "unicycle-steady-needs-no-motor",
+    "unicycle-straight-running-oscillates",
+    "unicycle-straight-running-steady",
+    "unicycle-straight-threshold-independent",
+    "unicycle-string-neutral-angle",
+    "unicycle-three-accelerations",
+    "unicycle-turns-toward-lean",
+    "unicycle-walking-pivoting-regions",
+    "unicycle-wheel-small-against-rider",
+];
+
+/// The words a claim's `how` uses to explain that its check holds by construction.
+const BY_CONSTRUCTION: &str = "Holds by construction because";
+
+#[test]
+fn every_stated_perturbation_breaks_its_check() {
+    let claims = all_claims();
+    let mut broken = 0usize;
+    for c in &claims {
+        let Some(f) = &c.falsification else { continue };
+        assert!(
+            f.breaks(c.verdict),
+            "{}: the perturbation `{}` leaves the verdict `{}`",
+            c.id,
+            f.perturbation,
+            c.verdict.as_str()
+        );
+        broken += 1;
+    }
+    assert!(broken >= 5, "only {broken} claims state a perturbation");
+}
+
+#[test]
+fn every_claim_fails_under_a_perturbation_or_says_why_not() {
+    let claims = all_claims();
+    let mut missing: Vec<&str> = Vec::new();
+    for c in &claims {
+        let stated = c.falsification.is_some() || c.how.contains(BY_CONSTRUCTION);
+        if !stated {
+            missing.push(&c.id);
+        }
+        if stated {
+            assert!(!NOT_YET_FALSIFIED.contains(&c.id.as_str()), "{}: leave the backlog", c.id);
+        }
+    }
+    let agrees_missing = claims
+        .iter()
+        .filter(|c| c.verdict == Verdict::Agrees && missing.contains(&c.id.as_str()))
+        .count();
+    let mut expected: Vec<&str> = NOT_YET_FALSIFIED.to_vec();
+    expected.sort_unstable();
+    missing.sort_unstable();
+    assert_eq!(
+        missing, expected,
+        "claims with no stated perturbation ({agrees_missing} of them `agrees`) differ from the backlog"
+    );
+}
