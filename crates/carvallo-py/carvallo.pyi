@@ -71,7 +71,7 @@ def modes(
 def frequency_response(
     params: Params, speeds: Speeds, omegas: Speeds, input: str, output: str, strict: bool = False
 ) -> dict[str, npt.NDArray[np.complex128] | npt.NDArray[np.float64]]:
-    """G(iω) from input "roll"|"steer" torque to output "roll"|"steer"|"roll-rate"|"steer-rate": {"response" complex, "magnitude_db", "phase_deg" (unwrapped)}, each (n speeds, m omegas)."""
+    """G(iω) from input "roll"|"steer" torque to output "roll"|"steer"|"roll-rate"|"steer-rate": {"response" complex, "magnitude_db", "phase_deg" (continuous in ω, in (-180°, 180°] as ω -> 0+, independent of the grid)}, each (n speeds, m omegas)."""
 
 GainTable = dict[str, Sequence[float]]
 

@@ -358,8 +358,9 @@ fn state_space<'py>(
 /// The frequency response $G(i\omega)$ from `input` ("roll" or "steer" torque) to `output`
 /// ("roll", "steer", "roll-rate", "steer-rate") at every speed and angular frequency [rad/s]
 /// (as `carvallo bode --json`): `{"response": complex (n, m), "magnitude_db": (n, m),
-/// "phase_deg": (n, m)}` for `n` speeds and `m` frequencies, the phase unwrapped along the
-/// frequencies in their order.
+/// "phase_deg": (n, m)}` for `n` speeds and `m` frequencies, the phase on the branch continuous
+/// in the frequency that lies in (-180°, 180°] as ω -> 0+: the same at a frequency whatever the
+/// grid.
 #[pyfunction]
 #[pyo3(signature = (params, speeds, omegas, input, output, strict = false))]
 fn frequency_response<'py>(

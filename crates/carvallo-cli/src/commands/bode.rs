@@ -2,7 +2,8 @@
 //! --output roll|steer|roll-rate|steer-rate [--omega W[,W...] | --omega-range FROM:TO:N]
 //! [--json | --csv]`: the frequency response $G(i\omega)$ of one input–output pair of the
 //! linearised bicycle ([`carvallo::whipple::transfer`]): magnitude in dB and phase in degrees,
-//! unwrapped along $\omega$ for each speed.
+//! on the branch continuous in $\omega$ that lies in $(-180°, 180°]$ as $\omega \to 0^+$ (the
+//! same at a frequency whatever the grid).
 //!
 //! JSON `{"model", "input", "output", "points": [{"speed", "omega", "re", "im",
 //! "magnitude_db", "phase_deg"}, ...]}`; CSV with the same columns as the points. Frequencies
