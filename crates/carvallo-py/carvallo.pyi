@@ -66,7 +66,7 @@ def state_space(
 def modes(
     params: Params, speeds: Speeds, strict: bool = False
 ) -> tuple[list[str], npt.NDArray[np.complex128], npt.NDArray[np.complex128]]:
-    """(labels, eigenvalues (n, 4), unit eigenvectors (n, 4, 4)); labels weave, weave, capsize, caster by continuation."""
+    """(labels, eigenvalues (n, 4), unit eigenvectors (n, 4, 4) in NumPy's convention: vectors[k, :, i] is mode i at speed k, the columns are the vectors); labels weave, weave, capsize, caster by continuation."""
 
 def frequency_response(
     params: Params, speeds: Speeds, omegas: Speeds, input: str, output: str, strict: bool = False

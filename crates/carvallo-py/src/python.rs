@@ -115,7 +115,10 @@ fn speeds_of(speeds: &Bound<'_, PyAny>) -> PyResult<Vec<f64>> {
     let v: Vec<f64> = if let Ok(x) = speeds.extract::<f64>() {
         vec![x]
     } else {
-        speeds.extract().map_err(|_| err("speeds must be a number or a 1-d sequence of numbers"))?
+        speeds.extract().map_err(|_| {
+            let shown = speeds.repr().map_or_else(|_| "?".to_string(), |r| r.to_string());
+            err(format!("invalid speeds {shown}: must be a number or a 1-d sequence of numbers"))
+        })?
     };
     if let Some(x) = v.iter().find(|x| !x.is_finite()) {
         return Err(err(format!("invalid speed {x}: must be finite")));
@@ -378,7 +381,10 @@ fn frequency_response<'py>(
     let omegas: Vec<f64> = if let Ok(x) = omegas.extract::<f64>() {
         vec![x]
     } else {
-        omegas.extract().map_err(|_| err("omegas must be a number or a 1-d sequence of numbers"))?
+        omegas.extract().map_err(|_| {
+            let shown = omegas.repr().map_or_else(|_| "?".to_string(), |r| r.to_string());
+            err(format!("invalid omegas {shown}: must be a number or a 1-d sequence of numbers"))
+        })?
     };
     if let Some(x) = omegas.iter().find(|x| !(x.is_finite() && **x >= 0.0)) {
         return Err(err(format!("invalid omega {x:?}: must be finite and not negative")));
@@ -550,8 +556,9 @@ fn feedback_of(k: &Bound<'_, PyAny>) -> PyResult<Feedback> {
 
 /// The modes at each speed, labelled by continuation in speed (as `carvallo eig --json`):
 /// `(labels, eigenvalues, vectors)` with the four labels ("weave", "weave", "capsize",
-/// "caster"), the eigenvalues (n, 4) complex and the unit eigenvectors (n, 4, 4) complex,
-/// `vectors[k, i]` the state (lean, steer, lean rate, steer rate) of mode `i`.
+/// "caster"), the eigenvalues (n, 4) complex and the unit eigenvectors (n, 4, 4) complex in
+/// NumPy's convention (`numpy.linalg.eig`): the columns are the vectors, `vectors[k, :, i]` the
+/// state (lean, steer, lean rate, steer rate) of mode `i` at speed `k`.
 #[pyfunction]
 #[pyo3(signature = (params, speeds, strict = false))]
 fn modes<'py>(
@@ -570,9 +577,14 @@ fn modes<'py>(
         .iter()
         .flat_map(|m| m.iter().map(|x| Complex64::new(x.eigenvalue.re, x.eigenvalue.im)))
         .collect();
+    // Row-major (speed, state, mode): the columns of each 4 x 4 block are the vectors.
     let vecs: Vec<Complex64> = all
         .iter()
-        .flat_map(|m| m.iter().flat_map(|x| x.vector.iter().map(|c| Complex64::new(c.re, c.im))))
+        .flat_map(|m| {
+            (0..4).flat_map(move |state| {
+                m.iter().map(move |x| Complex64::new(x.vector[state].re, x.vector[state].im))
+            })
+        })
         .collect();
     let n = speeds.len();
     Ok((
@@ -827,7 +839,7 @@ fn simulate<'py>(
     let (how, stops) = integration_of(method, rtol, atol, &stop_when)?;
     let bike = WhippleNonlinear::new(params_of(params, strict)?);
     let start = bike.initial_state(speed, lean0).map_err(|e| err(e.to_string()))?;
-    let grid = Grid::new(duration, step, every).map_err(|(name, value, reason)| {
+    let grid = Grid::exact(duration, step, every).map_err(|(name, value, reason)| {
         err(carvallo::ParameterError::InvalidParameter { name, value, reason }.to_string())
     })?;
     let inputs = inputs_of(torque_t, torque_roll, torque_steer, impulses, k.as_ref())?;
@@ -1043,7 +1055,7 @@ fn simulate_many<'py>(
         starts.push(s);
     }
     // Only the end is kept: no sample inside the run (the integration does not depend on them).
-    let grid = Grid::new(duration, step, usize::MAX).map_err(|(name, value, reason)| {
+    let grid = Grid::exact(duration, step, usize::MAX).map_err(|(name, value, reason)| {
         err(carvallo::ParameterError::InvalidParameter { name, value, reason }.to_string())
     })?;
     let done = AtomicUsize::new(0);

@@ -311,7 +311,7 @@ pub fn run(cmd: &Args) -> Result<String, String> {
         return Err("invalid --csv: it prints the rows of --batch FILE.csv".into());
     }
     let bike = WhippleNonlinear::new(crate::args::bicycle(model, data)?);
-    let grid = Grid::new(*duration, *step, *every).map_err(|(name, value, reason)| {
+    let grid = Grid::exact(*duration, *step, *every).map_err(|(name, value, reason)| {
         carvallo::ParameterError::InvalidParameter { name, value, reason }.to_string()
     })?;
     if let Some(file) = &cmd.batch {
