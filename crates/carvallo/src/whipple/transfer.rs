@@ -385,9 +385,17 @@ fn scene_values(
 impl Whipple {
     /// The transfer function from `input` to `output` at speed `v`, from the generated
     /// numerator and characteristic polynomial.
+    ///
+    /// Where the generated coefficients are not finite (the two-mass skate's zero wheel radii
+    /// divide zero spin inertias by zero radii in the symbolic expressions) they are taken from
+    /// the matrices instead, whose evaluator has that limit: $\det P(s)$ and the adjugate's entry
+    /// of $P(s) = M s^2 + v C_1 s + g K_0 + v^2 K_2$ expanded in $s$ ([`from_matrices`]).
     pub fn transfer_function(&self, v: f64, input: Input, output: Output) -> TransferFunction {
         let (numerator, denominator) = scene_values(self.params(), v, input, output);
-        TransferFunction { speed: v, input, output, numerator, denominator }
+        if numerator.iter().chain(&denominator).all(|x| x.is_finite()) {
+            return TransferFunction { speed: v, input, output, numerator, denominator };
+        }
+        from_matrices(&self.matrices(), self.params().value("g"), v, input, output)
     }
 
     /// The frequency response from `input` to `output` at every speed of `speeds` and every
@@ -420,6 +428,35 @@ impl Whipple {
         }
         out
     }
+}
+
+/// The transfer function from the matrices $M, C_1, K_0, K_2$: with
+/// $P(s) = M s^2 + v C_1 s + K$, $K = g K_0 + v^2 K_2$, the denominator
+/// $\det P = \det M\,s^4 + m(M, vC_1)\,s^3 + (m(M, K) + \det vC_1)\,s^2 + m(vC_1, K)\,s + \det K$
+/// ($m$ the mixed determinant) and the numerator the entry of $\operatorname{adj} P$.
+pub fn from_matrices(
+    m: &super::Matrices,
+    g: f64,
+    v: f64,
+    input: Input,
+    output: Output,
+) -> TransferFunction {
+    use crate::numerics::mat2::{det, mix};
+    let c: [[f64; 2]; 2] = std::array::from_fn(|r| std::array::from_fn(|k| v * m.c1[r][k]));
+    let k: [[f64; 2]; 2] =
+        std::array::from_fn(|r| std::array::from_fn(|j| g * m.k0[r][j] + v * v * m.k2[r][j]));
+    let denominator = [det(&k), mix(&c, &k), mix(&m.m, &k) + det(&c), mix(&m.m, &c), det(&m.m)];
+    // adj P = [[P11, -P01], [-P10, P00]]: the entry (output angle, input).
+    let row = usize::from(matches!(output, Output::Steer | Output::SteerRate));
+    let col = input.index();
+    let (i, j, sign) = match (row, col) {
+        (0, 0) => (1, 1, 1.0),
+        (0, _) => (0, 1, -1.0),
+        (_, 0) => (1, 0, -1.0),
+        _ => (0, 0, 1.0),
+    };
+    let numerator = [sign * k[i][j], sign * c[i][j], sign * m.m[i][j]];
+    TransferFunction { speed: v, input, output, numerator, denominator }
 }
 
 /// `n` frequencies spaced logarithmically from `from` to `to` (both included exactly; `n = 1`
@@ -628,6 +665,37 @@ mod tests {
                             assert_eq!(got[2].phase_deg, pts[k].phase_deg);
                             assert_eq!(tf.phase_deg(fine[k]), pts[k].phase_deg);
                         }
+                    }
+                }
+            }
+        }
+    }
+
+    #[test]
+    fn the_matrices_give_the_generated_transfer_functions() {
+        // The fallback of a design whose generated coefficients are not finite, checked where
+        // both exist, and used by the two-mass skate (zero wheel radii and spin inertias).
+        let mut rng = SplitMix64(38);
+        for _ in 0..50 {
+            let w = Whipple::new(WhippleParams::benchmark().perturbed(&mut rng, 0.2));
+            let v = rng.uniform(0.0, 10.0);
+            let g = w.params().value("g");
+            for input in Input::ALL {
+                for output in Output::ALL {
+                    let a = w.transfer_function(v, input, output);
+                    let b = from_matrices(&w.matrices(), g, v, input, output);
+                    let scale = a
+                        .denominator
+                        .iter()
+                        .chain(&a.numerator)
+                        .fold(0.0, |m: f64, x| m.max(x.abs()));
+                    for (x, y) in a
+                        .numerator
+                        .iter()
+                        .chain(&a.denominator)
+                        .zip(b.numerator.iter().chain(&b.denominator))
+                    {
+                        assert!((x - y).abs() <= 1e-12 * scale, "{input:?}->{output:?}: {x} {y}");
                     }
                 }
             }
