@@ -358,6 +358,69 @@ fn state_space<'py>(
     ))
 }
 
+/// The response of the linear plant at `speed` to a unit step (`kind="step"`) or unit impulse
+/// (`"impulse"`) of the `input` torque ("roll" or "steer") from rest, or from the initial state
+/// `x0` (lean, steer, lean rate, steer rate) with no input (`"initial"`), at each of `times`
+/// [s]: an (n, 4) array of the state, through the matrix exponential (as
+/// `carvallo response --json`; equal to SciPy's `signal.step`, `signal.impulse` and
+/// `signal.lsim` on the same A and B).
+#[pyfunction]
+#[pyo3(signature = (params, speed, times, kind, input = "steer", x0 = None, strict = false))]
+#[allow(clippy::too_many_arguments)]
+fn time_response<'py>(
+    py: Python<'py>,
+    params: &Bound<'py, PyAny>,
+    speed: f64,
+    times: &Bound<'py, PyAny>,
+    kind: &str,
+    input: &str,
+    x0: Option<Vec<f64>>,
+    strict: bool,
+) -> PyResult<Bound<'py, PyAny>> {
+    use carvallo::whipple::response::Excitation;
+    use carvallo::whipple::transfer::Input;
+    let bike = Whipple::new(params_of(params, strict)?);
+    let times: Vec<f64> = if let Ok(x) = times.extract::<f64>() {
+        vec![x]
+    } else {
+        times.extract().map_err(|_| {
+            let shown = times.repr().map_or_else(|_| "?".to_string(), |r| r.to_string());
+            err(format!("invalid times {shown}: must be a number or a 1-d sequence of numbers"))
+        })?
+    };
+    let input: Input = input
+        .parse()
+        .map_err(|e: carvallo::whipple::transfer::UnknownSignal| err(e.to_string()))?;
+    let excitation = match (kind, x0) {
+        ("step", None) => Excitation::Step(input),
+        ("impulse", None) => Excitation::Impulse(input),
+        ("initial", Some(x)) => {
+            let x: [f64; 4] = x.try_into().map_err(|x: Vec<f64>| {
+                err(format!(
+                    "invalid x0 of {} values: must be 4 (lean, steer, lean rate, steer rate)",
+                    x.len()
+                ))
+            })?;
+            Excitation::Initial(x)
+        }
+        ("initial", None) => return Err(err("kind \"initial\" needs x0")),
+        ("step" | "impulse", Some(_)) => {
+            return Err(err(format!(
+                "invalid x0 with kind {kind:?}: a step or impulse starts from rest"
+            )))
+        }
+        (other, _) => {
+            return Err(err(format!(
+                "invalid kind {other:?}: expected one of step, impulse, initial"
+            )))
+        }
+    };
+    let xs = bike.time_response(speed, excitation, &times).map_err(|e| err(e.to_string()))?;
+    let n = xs.len();
+    let flat: Vec<f64> = xs.into_iter().flatten().collect();
+    Ok(PyArray1::from_vec(py, flat).reshape([n, 4])?.into_any())
+}
+
 /// The frequency response $G(i\omega)$ from `input` ("roll" or "steer" torque) to `output`
 /// ("roll", "steer", "roll-rate", "steer-rate") at every speed and angular frequency [rad/s]
 /// (as `carvallo bode --json`): `{"response": complex (n, m), "magnitude_db": (n, m),
@@ -1228,6 +1291,7 @@ fn carvallo_module(m: &Bound<'_, PyModule>) -> PyResult<()> {
     m.add_function(wrap_pyfunction!(state_space, m)?)?;
     m.add_function(wrap_pyfunction!(modes, m)?)?;
     m.add_function(wrap_pyfunction!(frequency_response, m)?)?;
+    m.add_function(wrap_pyfunction!(time_response, m)?)?;
     m.add_function(wrap_pyfunction!(closed_loop_window, m)?)?;
     m.add_function(wrap_pyfunction!(closed_loop_eigenvalues, m)?)?;
     m.add_function(wrap_pyfunction!(eigenvalues, m)?)?;

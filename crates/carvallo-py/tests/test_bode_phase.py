@@ -15,6 +15,8 @@ import pytest
 from scipy import signal
 
 import carvallo
+
+pytestmark = pytest.mark.filterwarnings("ignore::carvallo.PhysicsWarning")
 from conftest import ROOT
 
 sys.path.insert(0, str(ROOT / "scripts"))
@@ -40,8 +42,8 @@ def mod360(d):
 
 @pytest.mark.parametrize("case", peer.CASES, ids=[peer.label(b, r) for b, r in peer.CASES])
 def test_phase_equals_scipy_freqresp_modulo_360(case):
-    """Largest difference modulo 360° below 1e-7° (measured: about 1e-11°; the difference of
-    the two complex values is within 1e-9 relative as the eigenvalues are)."""
+    """Largest difference modulo 360° below 1e-7° (measured: 1.6e-8° over all cases, SciPy
+    going through a transfer function whose coefficients it calls badly conditioned)."""
     params = load(*case)
     mats = peer.matrices(peer.parameters(*case))
     g = peer.parameters(*case)["g"]
