@@ -75,6 +75,17 @@ def frequency_response(
 
 GainTable = dict[str, Sequence[float]]
 
+def time_response(
+    params: Params,
+    speed: float,
+    times: Speeds,
+    kind: str,
+    input: str = "steer",
+    x0: Sequence[float] | None = None,
+    strict: bool = False,
+) -> npt.NDArray[np.float64]:
+    """States (n, 4) (lean, steer, lean rate, steer rate) of the linear plant after a unit "step" or "impulse" of the "roll"|"steer" torque from rest, or from x0 with no input ("initial"), by the matrix exponential."""
+
 def closed_loop_window(
     params: Params,
     K: npt.ArrayLike | dict[str, float] | GainTable,
