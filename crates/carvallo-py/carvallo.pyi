@@ -73,14 +73,25 @@ def state_space(
 def modes(
     params: Params, speeds: Speeds, strict: bool = False
 ) -> tuple[list[str], npt.NDArray[np.complex128], npt.NDArray[np.complex128]]:
-    """(labels, eigenvalues (n, 4), unit eigenvectors (n, 4, 4)); labels weave, weave, capsize, caster by continuation."""
+    """(labels, eigenvalues (n, 4), unit eigenvectors (n, 4, 4) in NumPy's convention: vectors[k, :, i] is mode i at speed k, the columns are the vectors); labels weave, weave, capsize, caster by continuation."""
 
 def frequency_response(
     params: Params, speeds: Speeds, omegas: Speeds, input: str, output: str, strict: bool = False
 ) -> dict[str, npt.NDArray[np.complex128] | npt.NDArray[np.float64]]:
-    """G(iω) from input "roll"|"steer" torque to output "roll"|"steer"|"roll-rate"|"steer-rate": {"response" complex, "magnitude_db", "phase_deg" (unwrapped)}, each (n speeds, m omegas)."""
+    """G(iω) from input "roll"|"steer" torque to output "roll"|"steer"|"roll-rate"|"steer-rate": {"response" complex, "magnitude_db", "phase_deg" (continuous in ω, in (-180°, 180°] as ω -> 0+, independent of the grid)}, each (n speeds, m omegas)."""
 
 GainTable = dict[str, Sequence[float]]
+
+def time_response(
+    params: Params,
+    speed: float,
+    times: Speeds,
+    kind: str,
+    input: str = "steer",
+    x0: Sequence[float] | None = None,
+    strict: bool = False,
+) -> npt.NDArray[np.float64]:
+    """States (n, 4) (lean, steer, lean rate, steer rate) of the linear plant after a unit "step" or "impulse" of the "roll"|"steer" torque from rest, or from x0 with no input ("initial"), by the matrix exponential."""
 
 def closed_loop_window(
     params: Params,

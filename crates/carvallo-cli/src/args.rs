@@ -129,6 +129,15 @@ impl DataOptions {
     pub fn any(&self) -> bool {
         self.rider.is_some() || self.strict
     }
+
+    /// The bicycle as outputs name it: `model`, or `model with rider RIDER` when a rider was
+    /// added, so that no output looks the same with and without `--rider`.
+    pub fn label(&self, model: &str) -> String {
+        match &self.rider {
+            Some(r) => format!("{model} with rider {r}"),
+            None => model.to_string(),
+        }
+    }
 }
 
 /// The bicycle `benchmark` or the one in the parameter file `model` read as `data` says: with
@@ -153,7 +162,16 @@ pub fn uncertain_bicycle(
         } else {
             UncertainParams::read(&text, data.strict)
         };
-        read.map_err(|e| format!("invalid model file `{model}`: {e}"))?
+        read.map_err(|e| {
+            if Rider::from_text(&text).is_ok() {
+                format!(
+                    "invalid model file `{model}`: it is a rider file (the rider's mB, xB, zB and \
+                     inertia), not a bicycle: give a bicycle as --model and this file as --rider"
+                )
+            } else {
+                format!("invalid model file `{model}`: {e}")
+            }
+        })?
     };
     let loaded = match &data.rider {
         None => loaded,

@@ -26,7 +26,8 @@ mod report_html;
 mod staging;
 
 use commands::{
-    accel, bode, eig, kinematics, report, rest, rolling, simulate, statespace, turn, window,
+    accel, bode, eig, kinematics, report, response, rest, rolling, simulate, statespace, turn,
+    window,
 };
 
 /// carvallo: E. Carvallo's memoir (1897) on the hoop, unicycle and bicycle, re-derived and
@@ -54,6 +55,9 @@ enum Command {
     /// The frequency response (Bode diagram) from the roll or steer torque to the lean, the
     /// steer or their rates
     Bode(bode::Args),
+    /// The time response of the linearised bicycle to a unit step or impulse of the roll or
+    /// steer torque, or from an initial state (matrix exponential)
+    Response(response::Args),
     /// Time per evaluation beside the error against 256 bits
     Bench(perf::BenchArgs),
     /// The stability windows of many designs (a grid or random designs around the model), or
@@ -91,6 +95,7 @@ impl Command {
             Command::Eig(_) => "eig",
             Command::Statespace(_) => "statespace",
             Command::Bode(_) => "bode",
+            Command::Response(_) => "response",
             Command::Bench(_) => "bench",
             Command::Sweep(_) => "sweep",
             Command::Accel(_) => "accel",
@@ -113,6 +118,7 @@ impl Command {
             Command::Eig(a) => text(eig::run(a)),
             Command::Statespace(a) => text(statespace::run(a)),
             Command::Bode(a) => text(bode::run(a)),
+            Command::Response(a) => text(response::run(a)),
             Command::Bench(a) => text(perf::bench(a)),
             Command::Sweep(a) => text(perf::sweep(a)),
             Command::Accel(a) => text(accel::run(a)),

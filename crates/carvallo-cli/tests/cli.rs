@@ -377,3 +377,76 @@ fn a_report_for_one_bicycle_names_its_file_and_rider() {
     );
     let _ = std::fs::remove_dir_all(&dir);
 }
+
+#[test]
+fn issue_37_defects_of_the_command_line() {
+    let data = concat!(env!("CARGO_MANIFEST_DIR"), "/../../data/bicycleparameters");
+    let bike = format!("{data}/bicycles/Browser/Parameters/BrowserBenchmark.txt");
+    let rider = format!("{data}/riders/Jason/Parameters/JasonBrowserBenchmark.txt");
+    // `eig` takes a list of speeds, as `statespace` and `bode` do; each speed's eigenvalues are
+    // those of `eig` at that speed alone.
+    let (code, both, _) = carvallo(&["eig", "--model", "benchmark", "--speed", "2,5"]);
+    assert_eq!(code, 0);
+    let (_, two, _) = carvallo(&["eig", "--model", "benchmark", "--speed", "2"]);
+    let (_, five, _) = carvallo(&["eig", "--model", "benchmark", "--speed", "5"]);
+    assert_eq!(both, format!("{two}{five}"));
+    let (code, json, _) = carvallo(&["eig", "--model", "benchmark", "--speed", "2,5", "--json"]);
+    assert_eq!(code, 0);
+    let v: serde_json::Value = serde_json::from_str(&json).unwrap();
+    assert_eq!(
+        v.as_array().map(|a| a.iter().map(|x| x["speed"].clone()).collect::<Vec<_>>()),
+        Some(vec![serde_json::json!(2.0), serde_json::json!(5.0)])
+    );
+    let (code, _, err) = carvallo(&["eig", "--model", "benchmark", "--speed", "2,fast"]);
+    assert_eq!(code, 2);
+    assert!(err.contains("invalid value 'fast'"), "{err}");
+    // Outputs say a rider was added: text headers and JSON.
+    for args in [
+        vec!["eig", "--speed", "5"],
+        vec!["window"],
+        vec!["bode", "--speed", "5", "--input", "steer", "--output", "roll", "--omega", "1"],
+        vec!["statespace", "--speed", "5"],
+    ] {
+        let mut with: Vec<&str> = args.clone();
+        with.extend(["--model", &bike, "--rider", &rider]);
+        let (code, text, err) = carvallo(&with);
+        assert_eq!(code, 0, "{with:?}: {err}");
+        assert!(text.contains(&format!("with rider {rider}")), "{with:?}: {text}");
+        {
+            with.push("--json");
+            let (_, json, _) = carvallo(&with);
+            let v: serde_json::Value = serde_json::from_str(&json).unwrap();
+            assert_eq!(v["rider"], serde_json::json!(rider), "{with:?}");
+        }
+        let mut without: Vec<&str> = args.clone();
+        without.extend(["--model", &bike]);
+        let (_, text, _) = carvallo(&without);
+        assert!(!text.contains("rider"), "{without:?}: {text}");
+    }
+    // A rider file given as --model says what it is.
+    let (code, out, err) = carvallo(&["eig", "--model", &rider, "--speed", "5"]);
+    assert_eq!((code, out.as_str()), (2, ""));
+    assert!(err.contains("it is a rider file") && err.contains("--rider"), "{err}");
+    // A step that does not divide the duration is refused, naming it.
+    let (code, _, err) = carvallo(&[
+        "simulate",
+        "--model",
+        "benchmark",
+        "--speed",
+        "5",
+        "--lean0",
+        "0.01",
+        "--duration",
+        "1",
+        "--step",
+        "0.3",
+    ]);
+    assert_eq!(code, 2);
+    assert!(err.contains("0.3") && err.contains("does not divide the duration"), "{err}");
+    // Grid values lo + i (hi - lo) / (n - 1): 0.08, not 0.07999999999999999.
+    let (code, csv, _) =
+        carvallo(&["sweep", "--model", "benchmark", "--vary", "c=0:0.12:4", "--csv"]);
+    assert_eq!(code, 0);
+    let cs: Vec<&str> = csv.lines().skip(1).map(|l| l.split(',').nth(1).unwrap()).collect();
+    assert_eq!(cs, ["0.0", "0.04", "0.08", "0.12"]);
+}

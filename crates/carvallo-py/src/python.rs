@@ -117,7 +117,10 @@ fn speeds_of(speeds: &Bound<'_, PyAny>) -> PyResult<Vec<f64>> {
     let v: Vec<f64> = if let Ok(x) = speeds.extract::<f64>() {
         vec![x]
     } else {
-        speeds.extract().map_err(|_| err("speeds must be a number or a 1-d sequence of numbers"))?
+        speeds.extract().map_err(|_| {
+            let shown = speeds.repr().map_or_else(|_| "?".to_string(), |r| r.to_string());
+            err(format!("invalid speeds {shown}: must be a number or a 1-d sequence of numbers"))
+        })?
     };
     if let Some(x) = v.iter().find(|x| !x.is_finite()) {
         return Err(err(format!("invalid speed {x}: must be finite")));
@@ -355,11 +358,75 @@ fn state_space<'py>(
     ))
 }
 
+/// The response of the linear plant at `speed` to a unit step (`kind="step"`) or unit impulse
+/// (`"impulse"`) of the `input` torque ("roll" or "steer") from rest, or from the initial state
+/// `x0` (lean, steer, lean rate, steer rate) with no input (`"initial"`), at each of `times`
+/// [s]: an (n, 4) array of the state, through the matrix exponential (as
+/// `carvallo response --json`; equal to SciPy's `signal.step`, `signal.impulse` and
+/// `signal.lsim` on the same A and B).
+#[pyfunction]
+#[pyo3(signature = (params, speed, times, kind, input = "steer", x0 = None, strict = false))]
+#[allow(clippy::too_many_arguments)]
+fn time_response<'py>(
+    py: Python<'py>,
+    params: &Bound<'py, PyAny>,
+    speed: f64,
+    times: &Bound<'py, PyAny>,
+    kind: &str,
+    input: &str,
+    x0: Option<Vec<f64>>,
+    strict: bool,
+) -> PyResult<Bound<'py, PyAny>> {
+    use carvallo::whipple::response::Excitation;
+    use carvallo::whipple::transfer::Input;
+    let bike = Whipple::new(params_of(params, strict)?);
+    let times: Vec<f64> = if let Ok(x) = times.extract::<f64>() {
+        vec![x]
+    } else {
+        times.extract().map_err(|_| {
+            let shown = times.repr().map_or_else(|_| "?".to_string(), |r| r.to_string());
+            err(format!("invalid times {shown}: must be a number or a 1-d sequence of numbers"))
+        })?
+    };
+    let input: Input = input
+        .parse()
+        .map_err(|e: carvallo::whipple::transfer::UnknownSignal| err(e.to_string()))?;
+    let excitation = match (kind, x0) {
+        ("step", None) => Excitation::Step(input),
+        ("impulse", None) => Excitation::Impulse(input),
+        ("initial", Some(x)) => {
+            let x: [f64; 4] = x.try_into().map_err(|x: Vec<f64>| {
+                err(format!(
+                    "invalid x0 of {} values: must be 4 (lean, steer, lean rate, steer rate)",
+                    x.len()
+                ))
+            })?;
+            Excitation::Initial(x)
+        }
+        ("initial", None) => return Err(err("kind \"initial\" needs x0")),
+        ("step" | "impulse", Some(_)) => {
+            return Err(err(format!(
+                "invalid x0 with kind {kind:?}: a step or impulse starts from rest"
+            )))
+        }
+        (other, _) => {
+            return Err(err(format!(
+                "invalid kind {other:?}: expected one of step, impulse, initial"
+            )))
+        }
+    };
+    let xs = bike.time_response(speed, excitation, &times).map_err(|e| err(e.to_string()))?;
+    let n = xs.len();
+    let flat: Vec<f64> = xs.into_iter().flatten().collect();
+    Ok(PyArray1::from_vec(py, flat).reshape([n, 4])?.into_any())
+}
+
 /// The frequency response $G(i\omega)$ from `input` ("roll" or "steer" torque) to `output`
 /// ("roll", "steer", "roll-rate", "steer-rate") at every speed and angular frequency [rad/s]
 /// (as `carvallo bode --json`): `{"response": complex (n, m), "magnitude_db": (n, m),
-/// "phase_deg": (n, m)}` for `n` speeds and `m` frequencies, the phase unwrapped along the
-/// frequencies in their order.
+/// "phase_deg": (n, m)}` for `n` speeds and `m` frequencies, the phase on the branch continuous
+/// in the frequency that lies in (-180°, 180°] as ω -> 0+: the same at a frequency whatever the
+/// grid.
 #[pyfunction]
 #[pyo3(signature = (params, speeds, omegas, input, output, strict = false))]
 fn frequency_response<'py>(
@@ -377,7 +444,10 @@ fn frequency_response<'py>(
     let omegas: Vec<f64> = if let Ok(x) = omegas.extract::<f64>() {
         vec![x]
     } else {
-        omegas.extract().map_err(|_| err("omegas must be a number or a 1-d sequence of numbers"))?
+        omegas.extract().map_err(|_| {
+            let shown = omegas.repr().map_or_else(|_| "?".to_string(), |r| r.to_string());
+            err(format!("invalid omegas {shown}: must be a number or a 1-d sequence of numbers"))
+        })?
     };
     if let Some(x) = omegas.iter().find(|x| !(x.is_finite() && **x >= 0.0)) {
         return Err(err(format!("invalid omega {x:?}: must be finite and not negative")));
@@ -557,8 +627,9 @@ fn feedback_of(k: &Bound<'_, PyAny>) -> PyResult<Feedback> {
 
 /// The modes at each speed, labelled by continuation in speed (as `carvallo eig --json`):
 /// `(labels, eigenvalues, vectors)` with the four labels ("weave", "weave", "capsize",
-/// "caster"), the eigenvalues (n, 4) complex and the unit eigenvectors (n, 4, 4) complex,
-/// `vectors[k, i]` the state (lean, steer, lean rate, steer rate) of mode `i`.
+/// "caster"), the eigenvalues (n, 4) complex and the unit eigenvectors (n, 4, 4) complex in
+/// NumPy's convention (`numpy.linalg.eig`): the columns are the vectors, `vectors[k, :, i]` the
+/// state (lean, steer, lean rate, steer rate) of mode `i` at speed `k`.
 #[pyfunction]
 #[pyo3(signature = (params, speeds, strict = false))]
 fn modes<'py>(
@@ -580,9 +651,14 @@ fn modes<'py>(
         .iter()
         .flat_map(|m| m.iter().map(|x| Complex64::new(x.eigenvalue.re, x.eigenvalue.im)))
         .collect();
+    // Row-major (speed, state, mode): the columns of each 4 x 4 block are the vectors.
     let vecs: Vec<Complex64> = all
         .iter()
-        .flat_map(|m| m.iter().flat_map(|x| x.vector.iter().map(|c| Complex64::new(c.re, c.im))))
+        .flat_map(|m| {
+            (0..4).flat_map(move |state| {
+                m.iter().map(move |x| Complex64::new(x.vector[state].re, x.vector[state].im))
+            })
+        })
         .collect();
     let n = speeds.len();
     Ok((
@@ -868,7 +944,7 @@ fn simulate<'py>(
     let (how, stops) = integration_of(method, rtol, atol, &stop_when)?;
     let bike = WhippleNonlinear::new(params_of(params, strict)?);
     let start = bike.initial_state(speed, lean0).map_err(|e| err(e.to_string()))?;
-    let grid = Grid::new(duration, step, every).map_err(|(name, value, reason)| {
+    let grid = Grid::exact(duration, step, every).map_err(|(name, value, reason)| {
         err(carvallo::ParameterError::InvalidParameter { name, value, reason }.to_string())
     })?;
     let inputs = inputs_of(torque_t, torque_roll, torque_steer, impulses, k.as_ref())?;
@@ -1098,7 +1174,7 @@ fn simulate_many<'py>(
         starts.push(s);
     }
     // Only the end is kept: no sample inside the run (the integration does not depend on them).
-    let grid = Grid::new(duration, step, usize::MAX).map_err(|(name, value, reason)| {
+    let grid = Grid::exact(duration, step, usize::MAX).map_err(|(name, value, reason)| {
         err(carvallo::ParameterError::InvalidParameter { name, value, reason }.to_string())
     })?;
     let done = AtomicUsize::new(0);
@@ -1290,6 +1366,7 @@ fn carvallo_module(m: &Bound<'_, PyModule>) -> PyResult<()> {
     m.add_function(wrap_pyfunction!(state_space, m)?)?;
     m.add_function(wrap_pyfunction!(modes, m)?)?;
     m.add_function(wrap_pyfunction!(frequency_response, m)?)?;
+    m.add_function(wrap_pyfunction!(time_response, m)?)?;
     m.add_function(wrap_pyfunction!(closed_loop_window, m)?)?;
     m.add_function(wrap_pyfunction!(closed_loop_eigenvalues, m)?)?;
     m.add_function(wrap_pyfunction!(eigenvalues, m)?)?;

@@ -327,9 +327,11 @@ def test_frequency_response_is_the_state_space_resolvent_and_the_cli(cli):
                 )
                 np.testing.assert_allclose(g[k], want, rtol=1e-11)
             np.testing.assert_allclose(fr["magnitude_db"], 20 * np.log10(np.abs(g)), rtol=1e-13)
-            np.testing.assert_allclose(
-                fr["phase_deg"], np.degrees(np.unwrap(np.angle(g), axis=1)), atol=1e-9
-            )
+            # The phase is G's argument modulo 360° on the branch continuous in ω from
+            # (-180°, 180°] at ω -> 0+ (issue 37), not unwrapped from the grid's first point.
+            d = (fr["phase_deg"] - np.degrees(np.angle(g)) + 180.0) % 360.0 - 180.0
+            assert np.abs(d).max() < 1e-9
+            assert (np.abs(np.diff(fr["phase_deg"], axis=1)) < 180.0).all()
     c = cli("bode", "--model", "benchmark", "--speed", "2,5", "--input", "steer", "--output",
             "roll", "--omega", ",".join(repr(float(w)) for w in omegas), "--json")
     fr = carvallo.frequency_response(p, speeds, omegas, "steer", "roll")
@@ -348,9 +350,13 @@ def test_modes_are_eigenvectors_with_the_labels_of_the_cli(cli):
     assert labels == ["weave", "weave", "capsize", "caster"]
     a, _ = carvallo.state_space(p, speeds)
     for k in range(2):
+        # NumPy's convention (numpy.linalg.eig): the columns are the vectors, A V = V diag(λ).
+        r = a[k] @ vec[k] - vec[k] @ np.diag(ev[k])
+        assert np.abs(r).max() < 1e-12 * max(1.0, np.abs(a[k]).max())
         for i in range(4):
-            r = a[k] @ vec[k, i] - ev[k, i] * vec[k, i]
-            assert np.abs(r).max() < 1e-12 * max(1.0, np.abs(a[k]).max())
+            assert np.linalg.norm(vec[k, :, i]) == pytest.approx(1.0, rel=1e-12)
+            # The rows are not vectors (the layout before issue 37 was the transpose).
+            assert np.abs(a[k] @ vec[k, i] - ev[k, i] * vec[k, i]).max() > 1e-3
     c = cli("eig", "--model", "benchmark", "--speed", "5", "--json")
     assert [m["label"] for m in c["modes"]] == labels
     assert [complex(m["re"], m["im"]) for m in c["modes"]] == list(ev[1])
@@ -498,3 +504,31 @@ def test_closed_loop_window_and_eigenvalues_agree_with_numpy_and_the_cli(cli):
         carvallo.closed_loop_window(p, np.zeros((4, 2)))
     with pytest.raises(carvallo.ParameterError, match="invalid speed range 3 to 1"):
         carvallo.closed_loop_window(p, k, 3.0, 1.0)
+
+
+def test_the_python_chapter_lists_every_function(root):
+    """Every public function of the module appears in the function table of
+    docs/guide/src/python.md (issue 37: state_space, modes, frequency_response,
+    closed_loop_window and closed_loop_eigenvalues were missing)."""
+    import re
+
+    text = (root / "docs" / "guide" / "src" / "python.md").read_text()
+    table = "\n".join(l for l in text.splitlines() if l.startswith("| `"))
+    listed = set(re.findall(r"`([a-z_]+)\(", table))
+    public = {n for n in dir(carvallo) if not n.startswith("_") and callable(getattr(carvallo, n))}
+    public = {n for n in public if n[0].islower()}
+    assert public - listed == set(), public - listed
+
+
+def test_bad_speeds_and_steps_are_named():
+    """Issue 37: `eigenvalues(p, "fast")` names the value; `simulate(step=0.3)` over 1 s is
+    refused rather than silently run at 0.3333 s."""
+    p = carvallo.benchmark()
+    with pytest.raises(carvallo.ParameterError, match=r"invalid speeds 'fast'"):
+        carvallo.eigenvalues(p, "fast")
+    with pytest.raises(carvallo.ParameterError, match=r"invalid omegas 'x'"):
+        carvallo.frequency_response(p, 5.0, "x", "steer", "roll")
+    with pytest.raises(carvallo.ParameterError, match=r"step.*0\.3.*does not divide the duration"):
+        carvallo.simulate(p, 5.0, 0.01, 1.0, step=0.3)
+    r = carvallo.simulate(p, 5.0, 0.01, 1.0, step=0.25, every=1)
+    assert r["step"] == 0.25 and len(r["t"]) == 5

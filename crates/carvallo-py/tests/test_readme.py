@@ -48,7 +48,7 @@ def test_the_guide_python_example_runs(root, tmp_path):
 def test_the_plant_chapter_python_examples_print_what_they_say(root, tmp_path):
     """Each `print(...)  # X` line of the ```python blocks of the plant chapter prints X."""
     blocks = python_blocks((root / "docs" / "guide" / "src" / "plant.md").read_text())
-    assert len(blocks) == 4, "the state-space, frequency-response, closed-loop and driven-simulation examples"
+    assert len(blocks) == 5, "the state-space, frequency-response, time-response, closed-loop and driven-simulation examples"
     for code in blocks:
         expected = [line.split("  # ", 1)[1]
                     for line in code.splitlines() if line.startswith("print(") and "  # " in line]

@@ -2,9 +2,10 @@
 //! --output roll|steer|roll-rate|steer-rate [--omega W[,W...] | --omega-range FROM:TO:N]
 //! [--json | --csv]`: the frequency response $G(i\omega)$ of one input–output pair of the
 //! linearised bicycle ([`carvallo::whipple::transfer`]): magnitude in dB and phase in degrees,
-//! unwrapped along $\omega$ for each speed.
+//! on the branch continuous in $\omega$ that lies in $(-180°, 180°]$ as $\omega \to 0^+$ (the
+//! same at a frequency whatever the grid).
 //!
-//! JSON `{"model", "input", "output", "points": [{"speed", "omega", "re", "im",
+//! JSON `{"model", "rider", "input", "output", "points": [{"speed", "omega", "re", "im",
 //! "magnitude_db", "phase_deg"}, ...]}`; CSV with the same columns as the points. Frequencies
 //! are angular [rad/s]; `--omega-range` spaces `N` of them logarithmically from `FROM` to `TO`
 //! (the axis of a Bode diagram); the default is `0.1:100:61` (20 per decade).
@@ -103,7 +104,7 @@ pub fn run(cmd: &Args) -> Result<String, String> {
             })
             .collect();
         let v = json!({
-            "model": model, "input": input.name(), "output": output.name(), "points": pts,
+            "model": model, "rider": data.rider, "input": input.name(), "output": output.name(), "points": pts,
         });
         return serde_json::to_string(&v).map_err(|e| e.to_string());
     }
@@ -116,7 +117,8 @@ pub fn run(cmd: &Args) -> Result<String, String> {
         return Ok(s);
     }
     let mut s = format!(
-        "frequency response of {model}: {} torque -> {}\n  speed [m/s]  omega [rad/s]  magnitude [dB]  phase [deg]\n",
+        "frequency response of {}: {} torque -> {}\n  speed [m/s]  omega [rad/s]  magnitude [dB]  phase [deg]\n",
+        data.label(model),
         input.name(),
         output.name()
     );

@@ -1,6 +1,8 @@
-//! `carvallo eig --model benchmark|FILE.toml --speed V [--json]`: the four eigenvalues of the
-//! linearised Carvallo–Whipple bicycle at speed V, as JSON
-//! `{ "speed", "eigenvalues": [{"re", "im"}, ...], "modes": [...] }`; each mode is
+//! `carvallo eig --model benchmark|FILE.toml --speed V[,V...] [--json]`: the four eigenvalues of
+//! the linearised Carvallo–Whipple bicycle at each speed V, as JSON
+//! `{ "model", "rider", "speed", "eigenvalues": [{"re", "im"}, ...], "modes": [...] }` for one
+//! speed and a list of such objects for several (`rider` is the rider file or null; the text's
+//! header names the rider too); each mode is
 //! `{"label", "re", "im", "vector", "steer_lean_ratio", "phase_deg"}` with the label weave,
 //! capsize or caster found by continuation in speed ([`carvallo::whipple::modes`]), the unit
 //! eigenvector `[{"re", "im"}, ...]` of (lean, steer, lean rate, steer rate); `modes` is empty
@@ -29,10 +31,12 @@ pub struct Args {
     pub model: String,
     #[command(flatten)]
     pub data: DataOptions,
-    /// The forward speed [m/s]
-    #[arg(long, value_name = "V", value_parser = crate::args::SPEED.parser(), allow_hyphen_values = true)]
-    pub speed: f64,
-    /// Print JSON `{speed, eigenvalues: [{re, im}, ...], modes: [...]}` instead of text
+    /// The forward speeds [m/s], separated by commas
+    #[arg(long, value_name = "V", required = true, value_delimiter = ',',
+          value_parser = crate::args::SPEED.parser(), allow_hyphen_values = true)]
+    pub speed: Vec<f64>,
+    /// Print JSON `{model, rider, speed, eigenvalues: [{re, im}, ...], modes: [...]}` instead of
+    /// text (a list of them for several speeds)
     #[arg(long)]
     pub json: bool,
     /// A gain of the state feedback u = -K x (as for `window --gain`): the eigenvalues of the
@@ -57,46 +61,67 @@ fn mode_json(m: &Mode) -> Value {
 
 /// Runs `carvallo eig`: the text to print, or an error naming the bad value.
 pub fn run(cmd: &Args) -> Result<String, String> {
-    let Args { model, data, speed, json, gain } = cmd;
-    let bike = Whipple::new(crate::args::bicycle(model, data)?);
+    let bike = Whipple::new(crate::args::bicycle(&cmd.model, &cmd.data)?);
+    let mut texts = Vec::new();
+    let mut values = Vec::new();
+    for &v in &cmd.speed {
+        let (text, value) = at_speed(cmd, &bike, v);
+        texts.push(text);
+        values.push(value);
+    }
+    if cmd.json {
+        let v = if values.len() == 1 { values.remove(0) } else { Value::Array(values) };
+        return serde_json::to_string_pretty(&v).map_err(|e| e.to_string());
+    }
+    Ok(texts.concat())
+}
+
+/// The text and the JSON value of one speed.
+fn at_speed(cmd: &Args, bike: &Whipple, v: f64) -> (String, Value) {
+    let Args { model, data, gain, .. } = cmd;
+    let speed = &v;
+    let rider = json!(data.rider);
+    let of = match &data.rider {
+        Some(_) => format!(" of {}", data.label(model)),
+        None => String::new(),
+    };
     if !gain.is_empty() {
         let k = crate::gains::gains_of(gain);
         let ev = bike.closed_loop_eigenvalues(*speed, &k);
-        if *json {
-            let list: Vec<Value> = ev.iter().map(|e| json!({ "re": e.re, "im": e.im })).collect();
-            let v = json!({
-                "speed": speed,
-                "gains": crate::gains::gains_json(&k),
-                "eigenvalues": list,
-                "modes": [],
-            });
-            return serde_json::to_string_pretty(&v).map_err(|e| e.to_string());
-        }
+        let list: Vec<Value> = ev.iter().map(|e| json!({ "re": e.re, "im": e.im })).collect();
+        let v = json!({
+            "model": model,
+            "rider": rider,
+            "speed": speed,
+            "gains": crate::gains::gains_json(&k),
+            "eigenvalues": list,
+            "modes": [],
+        });
         let mut s = format!(
-            "closed-loop eigenvalues at {speed} m/s, gains {}:\n",
+            "closed-loop eigenvalues{of} at {speed} m/s, gains {}:\n",
             crate::gains::gains_text(&k)
         );
         for e in &ev {
             s.push_str(&format!("{} {:+}i\n", e.re, e.im));
         }
-        return Ok(s);
+        return (s, v);
     }
     let ev = bike.eigenvalues(*speed);
-    if *json {
+    let value = if cmd.json {
         let list: Vec<Value> = ev.iter().map(|e| json!({ "re": e.re, "im": e.im })).collect();
         let modes: Vec<Value> = bike
             .modes(&[*speed])
             .and_then(|m| m.into_iter().next())
             .map_or(Vec::new(), |m| m.iter().map(mode_json).collect());
-        let v = json!({ "speed": speed, "eigenvalues": list, "modes": modes });
-        Ok(serde_json::to_string_pretty(&v).map_err(|e| e.to_string())?)
+        json!({ "model": model, "rider": rider, "speed": speed, "eigenvalues": list, "modes": modes })
     } else {
-        let mut s = format!("eigenvalues at {speed} m/s:\n");
-        for e in &ev {
-            s.push_str(&format!("{} {:+}i\n", e.re, e.im));
-        }
-        Ok(s)
+        Value::Null
+    };
+    let mut s = format!("eigenvalues{of} at {speed} m/s:\n");
+    for e in &ev {
+        s.push_str(&format!("{} {:+}i\n", e.re, e.im));
     }
+    (s, value)
 }
 
 #[cfg(test)]
@@ -112,15 +137,21 @@ mod tests {
             Ok(Args {
                 model: "b.toml".into(),
                 data: DataOptions::default(),
-                speed: 5.0,
+                speed: vec![5.0],
                 json: false,
                 gain: Vec::new(),
             })
         );
         assert_eq!(
             parse::<Args>(&["eig", "--speed", "-1", "--model", "b"]).map(|a| a.speed),
-            Ok(-1.0)
+            Ok(vec![-1.0])
         );
+        assert_eq!(
+            parse::<Args>(&["eig", "--speed", "2,5", "--model", "b"]).map(|a| a.speed),
+            Ok(vec![2.0, 5.0])
+        );
+        let e = parse::<Args>(&["eig", "--model", "x", "--speed", "2,fast"]).unwrap_err();
+        assert!(e.contains("invalid value 'fast'"), "{e}");
         let e = parse::<Args>(&["eig", "--model", "x", "--speed", "fast"]).unwrap_err();
         assert!(
             e.starts_with("error: invalid value 'fast' for '--speed <V>': not a number"),
@@ -162,7 +193,7 @@ mod tests {
         let a = Args {
             model: "benchmark".into(),
             data: DataOptions::default(),
-            speed: 5.0,
+            speed: vec![5.0],
             json: true,
             gain: Vec::new(),
         };

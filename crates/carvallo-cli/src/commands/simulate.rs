@@ -309,7 +309,7 @@ pub fn run(cmd: &Args) -> Result<String, String> {
         return Err("invalid --csv: it prints the rows of --batch FILE.csv".into());
     }
     let bike = WhippleNonlinear::new(crate::args::bicycle(model, data)?);
-    let grid = Grid::new(*duration, *step, *every)
+    let grid = Grid::exact(*duration, *step, *every)
         .map_err(|(name, value, reason)| format!("invalid --{name} {value:?}: {reason}"))?;
     if let Some(file) = &cmd.batch {
         return batch(&bike, file, &grid, &how, stops, cmd.csv);

@@ -58,6 +58,24 @@ fn to_text(ss: &StateSpace) -> String {
 pub fn run(cmd: &Args) -> Result<String, String> {
     let Args { model, data, speed, json } = cmd;
     let spaces = Whipple::new(crate::args::bicycle(model, data)?).state_spaces(speed);
+    if data.rider.is_some() {
+        // Say that a rider was added: the matrices alone look the same with and without.
+        let heading = format!("{}\n", data.label(model));
+        if !*json {
+            return Ok(heading + &spaces.iter().map(to_text).collect::<Vec<_>>().join("\n"));
+        }
+        let with = |ss| {
+            let mut v = to_json(ss);
+            v["model"] = json!(model);
+            v["rider"] = json!(data.rider);
+            v
+        };
+        let v = match spaces.as_slice() {
+            [one] => with(one),
+            many => Value::Array(many.iter().map(with).collect()),
+        };
+        return serde_json::to_string_pretty(&v).map_err(|e| e.to_string());
+    }
     if *json {
         let v = match spaces.as_slice() {
             [one] => to_json(one),

@@ -134,6 +134,7 @@ pub fn run(cmd: &Args) -> Result<String, String> {
     if *json {
         let v = json!({
             "model": model,
+            "rider": data.rider,
             "weave_speed": opt(w.weave_speed),
             "capsize_speed": opt(w.capsize_speed),
             "stable": stable,
@@ -142,7 +143,8 @@ pub fn run(cmd: &Args) -> Result<String, String> {
     } else {
         let show = |x: Option<f64>| x.map_or("none".to_string(), |v| format!("{v} m/s"));
         let mut s = format!(
-            "model {model}\nweave speed: {}\ncapsize speed: {}\n",
+            "model {}\nweave speed: {}\ncapsize speed: {}\n",
+            data.label(model),
             show(w.weave_speed),
             show(w.capsize_speed)
         );

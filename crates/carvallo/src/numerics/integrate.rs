@@ -226,6 +226,26 @@ impl Grid {
         Ok(Grid { h: duration / n as f64, n, every })
     }
 
+    /// As [`Grid::new`], but the step is kept as given: an error unless `duration / step` is a
+    /// whole number to $10^{-9}$ relative, so that a step is never silently changed (a step of
+    /// 0.3 s over 1 s is refused, naming the step and the nearest steps that divide it).
+    ///
+    /// # Errors
+    /// As [`Grid::new`], and (`"step"`, step, reason) for a step that does not divide the
+    /// duration.
+    pub fn exact(
+        duration: f64,
+        step: f64,
+        every: usize,
+    ) -> Result<Grid, (&'static str, f64, &'static str)> {
+        let g = Grid::new(duration, step, every)?;
+        let ratio = duration / step;
+        if (ratio - g.n as f64).abs() > 1e-9 * ratio {
+            return Err(("step", step, "does not divide the duration into whole steps"));
+        }
+        Ok(g)
+    }
+
     /// The time of grid point `i`, $i h$.
     pub fn time(&self, i: usize) -> f64 {
         i as f64 * self.h
@@ -1321,6 +1341,12 @@ mod tests {
         }
         assert_eq!(Grid::new(1.0, 2.0, 1), Err(("step", 2.0, "must not exceed the duration")));
         assert_eq!(Grid::new(1.0, 0.1, 0), Err(("every", 0.0, "must be positive")));
+        assert_eq!(
+            Grid::exact(1.0, 0.3, 1),
+            Err(("step", 0.3, "does not divide the duration into whole steps"))
+        );
+        assert_eq!(Grid::exact(1.0, 0.1, 1).map(|g| g.n), Ok(10));
+        assert_eq!(Grid::exact(6.0, 0.001, 1).map(|g| g.n), Ok(6000));
         let g = Grid::new(1.0, 0.1, 3).expect("grid");
         assert_eq!((g.n, g.samples()), (10, 5));
         assert!((0..=10).filter(|&i| g.sampled(i)).eq([0, 3, 6, 9, 10]));

@@ -198,14 +198,17 @@ pub struct Vary {
 }
 
 impl Vary {
-    /// The `i`-th value.
-    fn at(&self, i: usize) -> f64 {
+    /// The `i`-th value, $\mathrm{from} + i\,(\mathrm{to} - \mathrm{from})/(n - 1)$ in this
+    /// order of operations (the last exactly `to`): no repeated addition, and no fraction
+    /// $i/(n-1)$ rounded first, so that `0:0.12:4` gives 0.04 and 0.08, not
+    /// 0.039999999999999994 and 0.07999999999999999.
+    pub fn at(&self, i: usize) -> f64 {
         if self.count == 1 {
             self.from
         } else if i + 1 == self.count {
             self.to
         } else {
-            self.from + (self.to - self.from) * (i as f64 / (self.count - 1) as f64)
+            self.from + i as f64 * (self.to - self.from) / (self.count - 1) as f64
         }
     }
 }
@@ -713,6 +716,16 @@ impl Part {
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    #[test]
+    fn grid_values_are_from_plus_i_steps_not_a_rounded_fraction() {
+        let v = |from, to, count| Vary { name: "c".into(), from, to, count };
+        let got: Vec<f64> = (0..4).map(|i| v(0.0, 0.12, 4).at(i)).collect();
+        assert_eq!(got, [0.0, 0.04, 0.08, 0.12]);
+        let got: Vec<f64> = (0..6).map(|i| v(0.0, 0.1, 6).at(i)).collect();
+        assert_eq!(got, [0.0, 0.02, 0.04, 0.06000000000000001, 0.08, 0.1]);
+        assert_eq!(v(0.3, 0.9, 1).at(0), 0.3);
+    }
 
     /// The designs of the plain rejection loop: every value of every draw computed, the whole
     /// draw checked by [`valid_within`] and redrawn until it passes (at most [`MAX_DRAWS`]

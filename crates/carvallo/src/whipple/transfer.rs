@@ -15,12 +15,30 @@
 //! pair needs. The frequency response is $G(i\omega)$ in complex arithmetic; no matrix is
 //! inverted. It is checked against $C(i\omega I - A)^{-1}B$ of the state space
 //! ([`super::plant`]) by a complex LU solve in the tests.
+//!
+//! The phase is a function of $\omega$ alone, not of the grid it is evaluated on. With the
+//! zeros $z_k$, the poles $p_k$ and the gain $K$ (the ratio of the leading coefficients),
+//!
+//! $$\arg G(i\omega) = \arg K + \sum_k \arg(i\omega - z_k) - \sum_k \arg(i\omega - p_k),$$
+//!
+//! each factor taken on its own branch continuous in $\omega$: $i\omega - z$ runs along the
+//! vertical line $\operatorname{Re} = -\operatorname{Re} z$, so for a left-half-plane root the
+//! principal argument, in $(-90°, 90°)$, is continuous, and for a right-half-plane root the branch
+//! $[0°, 360°)$, in $(90°, 270°)$, is (the principal argument would jump by 360° at
+//! $\omega = \operatorname{Im} z$: exactly the unstable weave). The sum is then shifted by the one
+//! multiple of 360° that puts its limit as $\omega \to 0^+$ in $(-180°, 180°]$. The value itself
+//! is the principal argument of $G(i\omega)$ computed directly, moved by the multiple of 360°
+//! nearest to that sum: the roots choose the branch, they do not round the value. A root on the
+//! imaginary axis (a pole exactly at the weave speed) is a true jump of 180°; the jump of 180° of
+//! the low-frequency phase across the capsize speed (the real pole through the origin) is
+//! physical too.
 
 use std::fmt;
 use std::str::FromStr;
 
 use super::model::Whipple;
 use super::params::WhippleParams;
+use crate::numerics::quartic::{aberth_compensated, Complex};
 
 crate::scene! {
     /// Numerator ($s^0, s^1, s^2$) and denominator ($a_0 \dots a_4$) of lean / roll torque.
@@ -214,6 +232,96 @@ impl TransferFunction {
         }
     }
 
+    /// The zeros of $G$: the roots of the numerator (including the zero at the origin of a
+    /// rate output), of the degree its nonzero leading coefficient gives.
+    pub fn zeros(&self) -> Vec<Complex<f64>> {
+        let n = self.numerator;
+        let mut z = Vec::with_capacity(3);
+        if self.output.is_rate() {
+            z.push(Complex::new(0.0, 0.0));
+        }
+        if n[2] != 0.0 {
+            let (b, c) = (n[1] / n[2], n[0] / n[2]);
+            let disc = b * b - 4.0 * c;
+            if disc >= 0.0 {
+                // The larger-magnitude root without cancellation, the other from the product.
+                let q = -0.5 * (b + b.signum() * disc.sqrt());
+                z.push(Complex::new(q, 0.0));
+                z.push(Complex::new(if q != 0.0 { c / q } else { 0.0 }, 0.0));
+            } else {
+                let im = 0.5 * (-disc).sqrt();
+                z.push(Complex::new(-0.5 * b, im));
+                z.push(Complex::new(-0.5 * b, -im));
+            }
+        } else if n[1] != 0.0 {
+            z.push(Complex::new(-n[0] / n[1], 0.0));
+        }
+        z
+    }
+
+    /// The poles of $G$: the roots of the characteristic polynomial (the eigenvalues of $A$),
+    /// by Aberth's iteration with compensated evaluation
+    /// ([`aberth_compensated`](crate::numerics::quartic::aberth_compensated)).
+    pub fn poles(&self) -> [Complex<f64>; 4] {
+        aberth_compensated(&self.denominator)
+    }
+
+    /// The phase of $G(i\omega)$ [degrees] for $\omega \ge 0$, continuous in $\omega$ and in
+    /// $(-180°, 180°]$ as $\omega \to 0^+$ (see the [module docs](self)); NaN where $G$ is zero
+    /// or undefined. The same $\omega$ gives the same phase whatever other frequencies are
+    /// asked for.
+    pub fn phase_deg(&self, omega: f64) -> f64 {
+        self.phase_with(&self.zeros(), &self.poles(), omega)
+    }
+
+    /// [`Self::phase_deg`] with the zeros and poles computed once.
+    fn phase_with(&self, zeros: &[Complex<f64>], poles: &[Complex<f64>], omega: f64) -> f64 {
+        let (re, im) = self.at(omega);
+        let principal = im.atan2(re).to_degrees();
+        let branch_sum = |w: f64| {
+            let factor = |r: &Complex<f64>| {
+                // arg(iω - r) on the branch continuous along the vertical line Re = -Re r.
+                let a = (w - r.im).atan2(-r.re).to_degrees();
+                if r.re > 0.0 && a < 0.0 {
+                    a + 360.0
+                } else {
+                    a
+                }
+            };
+            zeros.iter().map(factor).sum::<f64>() - poles.iter().map(factor).sum::<f64>()
+        };
+        // The gain's sign; a rate's zero at the origin counts +90° as ω -> 0+.
+        let lead = if zeros.len() > usize::from(self.output.is_rate()) {
+            self.numerator[zeros.len() - usize::from(self.output.is_rate())]
+        } else {
+            self.numerator[0]
+        };
+        let gain = if lead / self.denominator[4] < 0.0 { 180.0 } else { 0.0 };
+        // The limit as ω -> 0+: each factor at ω = 0 is its limit, except a root at the origin
+        // (iω - 0 has argument 90° for every ω > 0).
+        let at_zero = |rs: &[Complex<f64>]| -> f64 {
+            rs.iter()
+                .map(|r| {
+                    if r.re == 0.0 && r.im == 0.0 {
+                        90.0
+                    } else {
+                        let a = (-r.im).atan2(-r.re).to_degrees();
+                        if r.re > 0.0 && a < 0.0 {
+                            a + 360.0
+                        } else {
+                            a
+                        }
+                    }
+                })
+                .sum()
+        };
+        let limit = gain + at_zero(zeros) - at_zero(poles);
+        // The one multiple of 360° putting the limit in (-180°, 180°].
+        let shift = -360.0 * ((limit - 180.0) / 360.0).ceil();
+        let continuous = gain + branch_sum(omega) + shift;
+        principal + 360.0 * ((continuous - principal) / 360.0).round()
+    }
+
     /// The numerator's coefficients of $s^0, s^1, s^2, s^3$ including the factor $s$ of a rate
     /// output (the last is zero for an angle).
     pub fn numerator_with_rate(&self) -> [f64; 4] {
@@ -239,8 +347,9 @@ pub struct FrequencyPoint {
     pub im: f64,
     /// $20 \log_{10} |G(i\omega)|$ [dB].
     pub magnitude_db: f64,
-    /// $\arg G(i\omega)$ [degrees], unwrapped along $\omega$ (consecutive points of one speed
-    /// differ by less than 180°; the first lies in $(-180°, 180°]$).
+    /// $\arg G(i\omega)$ [degrees] on the branch continuous in $\omega$ that lies in
+    /// $(-180°, 180°]$ as $\omega \to 0^+$ ([`TransferFunction::phase_deg`]): a function of
+    /// the frequency, not of the grid.
     pub phase_deg: f64,
 }
 
@@ -276,14 +385,22 @@ fn scene_values(
 impl Whipple {
     /// The transfer function from `input` to `output` at speed `v`, from the generated
     /// numerator and characteristic polynomial.
+    ///
+    /// Where the generated coefficients are not finite (the two-mass skate's zero wheel radii
+    /// divide zero spin inertias by zero radii in the symbolic expressions) they are taken from
+    /// the matrices instead, whose evaluator has that limit: $\det P(s)$ and the adjugate's entry
+    /// of $P(s) = M s^2 + v C_1 s + g K_0 + v^2 K_2$ expanded in $s$ ([`from_matrices`]).
     pub fn transfer_function(&self, v: f64, input: Input, output: Output) -> TransferFunction {
         let (numerator, denominator) = scene_values(self.params(), v, input, output);
-        TransferFunction { speed: v, input, output, numerator, denominator }
+        if numerator.iter().chain(&denominator).all(|x| x.is_finite()) {
+            return TransferFunction { speed: v, input, output, numerator, denominator };
+        }
+        from_matrices(&self.matrices(), self.params().value("g"), v, input, output)
     }
 
     /// The frequency response from `input` to `output` at every speed of `speeds` and every
     /// frequency of `omegas` [rad/s]: speed-major (all frequencies of the first speed, then
-    /// the next), the phase unwrapped along `omegas` in their order for each speed.
+    /// the next), the phase that of [`TransferFunction::phase_deg`] at each frequency.
     pub fn frequency_response(
         &self,
         speeds: &[f64],
@@ -294,14 +411,10 @@ impl Whipple {
         let mut out = Vec::with_capacity(speeds.len() * omegas.len());
         for &v in speeds {
             let tf = self.transfer_function(v, input, output);
-            let mut previous: Option<f64> = None;
+            let (zeros, poles) = (tf.zeros(), tf.poles());
             for &omega in omegas {
                 let (re, im) = tf.at(omega);
-                let mut phase = im.atan2(re).to_degrees();
-                if let Some(p) = previous {
-                    phase += 360.0 * ((p - phase) / 360.0).round();
-                }
-                previous = Some(phase);
+                let phase = tf.phase_with(&zeros, &poles, omega);
                 let magnitude_db = 20.0 * re.hypot(im).log10();
                 out.push(FrequencyPoint {
                     speed: v,
@@ -315,6 +428,35 @@ impl Whipple {
         }
         out
     }
+}
+
+/// The transfer function from the matrices $M, C_1, K_0, K_2$: with
+/// $P(s) = M s^2 + v C_1 s + K$, $K = g K_0 + v^2 K_2$, the denominator
+/// $\det P = \det M\,s^4 + m(M, vC_1)\,s^3 + (m(M, K) + \det vC_1)\,s^2 + m(vC_1, K)\,s + \det K$
+/// ($m$ the mixed determinant) and the numerator the entry of $\operatorname{adj} P$.
+pub fn from_matrices(
+    m: &super::Matrices,
+    g: f64,
+    v: f64,
+    input: Input,
+    output: Output,
+) -> TransferFunction {
+    use crate::numerics::mat2::{det, mix};
+    let c: [[f64; 2]; 2] = std::array::from_fn(|r| std::array::from_fn(|k| v * m.c1[r][k]));
+    let k: [[f64; 2]; 2] =
+        std::array::from_fn(|r| std::array::from_fn(|j| g * m.k0[r][j] + v * v * m.k2[r][j]));
+    let denominator = [det(&k), mix(&c, &k), mix(&m.m, &k) + det(&c), mix(&m.m, &c), det(&m.m)];
+    // adj P = [[P11, -P01], [-P10, P00]]: the entry (output angle, input).
+    let row = usize::from(matches!(output, Output::Steer | Output::SteerRate));
+    let col = input.index();
+    let (i, j, sign) = match (row, col) {
+        (0, 0) => (1, 1, 1.0),
+        (0, _) => (0, 1, -1.0),
+        (_, 0) => (1, 0, -1.0),
+        _ => (0, 0, 1.0),
+    };
+    let numerator = [sign * k[i][j], sign * c[i][j], sign * m.m[i][j]];
+    TransferFunction { speed: v, input, output, numerator, denominator }
 }
 
 /// `n` frequencies spaced logarithmically from `from` to `to` (both included exactly; `n = 1`
@@ -463,5 +605,100 @@ mod tests {
         assert_eq!(log_space(0.0, 1.0, 3), None);
         assert_eq!(log_space(2.0, 1.0, 3), None);
         assert_eq!(log_space(1.0, 2.0, 0), None);
+    }
+
+    /// Browser with Jason, as in the issue that found the grid-dependent phase.
+    fn browser_jason() -> Whipple {
+        use crate::whipple::parameter_text::{add_rider, Rider, UncertainParams};
+        let data = concat!(env!("CARGO_MANIFEST_DIR"), "/../../data/bicycleparameters");
+        let read = |p: &str| std::fs::read_to_string(format!("{data}/{p}")).expect("data file");
+        let bike =
+            UncertainParams::read(&read("bicycles/Browser/Parameters/BrowserBenchmark.txt"), false)
+                .expect("Browser");
+        let rider = Rider::from_text(&read("riders/Jason/Parameters/JasonBrowserBenchmark.txt"))
+            .expect("Jason");
+        Whipple::new(add_rider(&bike.params, &rider).expect("with rider").params.params)
+    }
+
+    #[test]
+    fn the_phase_does_not_depend_on_the_grid() {
+        // The issue's case: 3.162278 rad/s alone on a three-point grid gave 298.376°, on a
+        // 201-point grid -61.624°. Both must give the one value, on the branch that is
+        // continuous from (-180°, 180°] at ω -> 0+.
+        let w = browser_jason();
+        let sparse =
+            w.frequency_response(&[5.0], &[1.0, 3.162278, 10.0], Input::Steer, Output::Roll);
+        let mut dense = log_space(1.0, 10.0, 201).expect("range");
+        dense[100] = 3.162278;
+        let dense = w.frequency_response(&[5.0], &dense, Input::Steer, Output::Roll);
+        assert_eq!(sparse[1].phase_deg, dense[100].phase_deg);
+        assert!((sparse[1].phase_deg - -61.624).abs() < 1e-3, "{}", sparse[1].phase_deg);
+        // Every pair, speeds through capsize and weave, seeded random grids against one dense
+        // grid: the same value at the same frequency, bit for bit.
+        let mut rng = SplitMix64(37);
+        let bench = Whipple::new(WhippleParams::benchmark());
+        for bike in [&w, &bench] {
+            for v in [0.0, 1.0, 3.0, 4.0, 4.5, 5.0, 6.5, 8.0, 10.0] {
+                for input in Input::ALL {
+                    for output in Output::ALL {
+                        let tf = bike.transfer_function(v, input, output);
+                        let fine = log_space(1e-3, 1e3, 2000).expect("range");
+                        let pts = bike.frequency_response(&[v], &fine, input, output);
+                        // Continuous along the fine grid (no pole sits on the axis here).
+                        for p in pts.windows(2) {
+                            let d = (p[1].phase_deg - p[0].phase_deg).abs();
+                            assert!(
+                                d < 90.0,
+                                "v {v} {input:?}->{output:?} jump {d} at {}",
+                                p[1].omega
+                            );
+                        }
+                        // In (-180°, 180°] at the low end (no root within 1e-3 of the origin).
+                        let low = pts[0].phase_deg;
+                        assert!(low > -180.0 - 1.0 && low <= 180.0 + 1.0, "v {v}: {low}");
+                        for _ in 0..5 {
+                            let k = (rng.uniform(0.0, 1999.0)) as usize;
+                            let mut grid: Vec<f64> =
+                                (0..4).map(|_| 10f64.powf(rng.uniform(-3.0, 3.0))).collect();
+                            grid.insert(2, fine[k]);
+                            let got = bike.frequency_response(&[v], &grid, input, output);
+                            assert_eq!(got[2].phase_deg, pts[k].phase_deg);
+                            assert_eq!(tf.phase_deg(fine[k]), pts[k].phase_deg);
+                        }
+                    }
+                }
+            }
+        }
+    }
+
+    #[test]
+    fn the_matrices_give_the_generated_transfer_functions() {
+        // The fallback of a design whose generated coefficients are not finite, checked where
+        // both exist, and used by the two-mass skate (zero wheel radii and spin inertias).
+        let mut rng = SplitMix64(38);
+        for _ in 0..50 {
+            let w = Whipple::new(WhippleParams::benchmark().perturbed(&mut rng, 0.2));
+            let v = rng.uniform(0.0, 10.0);
+            let g = w.params().value("g");
+            for input in Input::ALL {
+                for output in Output::ALL {
+                    let a = w.transfer_function(v, input, output);
+                    let b = from_matrices(&w.matrices(), g, v, input, output);
+                    let scale = a
+                        .denominator
+                        .iter()
+                        .chain(&a.numerator)
+                        .fold(0.0, |m: f64, x| m.max(x.abs()));
+                    for (x, y) in a
+                        .numerator
+                        .iter()
+                        .chain(&a.denominator)
+                        .zip(b.numerator.iter().chain(&b.denominator))
+                    {
+                        assert!((x - y).abs() <= 1e-12 * scale, "{input:?}->{output:?}: {x} {y}");
+                    }
+                }
+            }
+        }
     }
 }

@@ -230,8 +230,9 @@ fn grid_of_two_parameters_gives_the_scalar_windows_design_by_design() {
     for i in 0..35 {
         // The first axis varies slowest; the last value of an axis is exactly `to`.
         let (c, w) = (out.values[2 * i], out.values[2 * i + 1]);
-        let want_c = if i / 5 == 6 { 0.2 } else { 0.2 * ((i / 5) as f64 / 6.0) };
-        let want_w = if i % 5 == 4 { 1.3 } else { 0.9 + 0.4 * ((i % 5) as f64 / 4.0) };
+        // Grid values from + k (to - from) / (n - 1) (issue 37: not a rounded fraction first).
+        let want_c = if i / 5 == 6 { 0.2 } else { (i / 5) as f64 * 0.2 / 6.0 };
+        let want_w = if i % 5 == 4 { 1.3 } else { 0.9 + (i % 5) as f64 * (1.3 - 0.9) / 4.0 };
         assert_eq!((c, w), (want_c, want_w), "design {i}");
         let mut v = *base.values();
         (v[k_c], v[k_w]) = (c, w);
