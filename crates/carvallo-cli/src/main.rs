@@ -25,7 +25,8 @@ mod report_dir;
 mod report_html;
 
 use commands::{
-    accel, bode, eig, kinematics, report, rest, rolling, simulate, statespace, turn, window,
+    accel, bode, eig, kinematics, parameters, report, rest, rolling, simulate, statespace, turn,
+    window,
 };
 
 /// carvallo: E. Carvallo's memoir (1897) on the hoop, unicycle and bicycle, re-derived and
@@ -53,6 +54,9 @@ enum Command {
     /// The frequency response (Bode diagram) from the roll or steer torque to the lean, the
     /// steer or their rates
     Bode(bode::Args),
+    /// The benchmark parameters from BicycleParameters' raw measurements (--raw FILE), with
+    /// their uncertainties, as a parameter file at full precision
+    Parameters(parameters::Args),
     /// Time per evaluation beside the error against 256 bits
     Bench(perf::BenchArgs),
     /// The stability windows of many designs (a grid or random designs around the model), or
@@ -90,6 +94,7 @@ impl Command {
             Command::Eig(_) => "eig",
             Command::Statespace(_) => "statespace",
             Command::Bode(_) => "bode",
+            Command::Parameters(_) => "parameters",
             Command::Bench(_) => "bench",
             Command::Sweep(_) => "sweep",
             Command::Accel(_) => "accel",
@@ -112,6 +117,7 @@ impl Command {
             Command::Eig(a) => text(eig::run(a)),
             Command::Statespace(a) => text(statespace::run(a)),
             Command::Bode(a) => text(bode::run(a)),
+            Command::Parameters(a) => text(parameters::run(a)),
             Command::Bench(a) => text(perf::bench(a)),
             Command::Sweep(a) => text(perf::sweep(a)),
             Command::Accel(a) => text(accel::run(a)),

@@ -13,6 +13,8 @@ use carvallo::parameter_text::UncertainParams;
 use carvallo::whipple::{TriangleWarning, WhippleParams, PARAM_NAMES};
 
 #[cfg(feature = "python")]
+mod common;
+#[cfg(feature = "python")]
 mod python;
 #[cfg(feature = "python")]
 mod rolling;

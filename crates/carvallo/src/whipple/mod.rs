@@ -33,6 +33,7 @@ pub mod modes;
 pub mod nonlinear;
 pub mod parameter_text;
 pub mod plant;
+pub mod raw;
 pub mod stability;
 pub mod sweep;
 pub mod transfer;

@@ -83,7 +83,7 @@ fn number(text: &str) -> Option<f64> {
 }
 
 /// Splits `value+/-sigma`, `(value+/-sigma)e-02` or `value` into numbers.
-fn value_and_sigma(text: &str) -> Result<(f64, f64), String> {
+pub(crate) fn value_and_sigma(text: &str) -> Result<(f64, f64), String> {
     let t = text.trim();
     let (body, exponent) = match t.strip_prefix('(') {
         Some(rest) => {
