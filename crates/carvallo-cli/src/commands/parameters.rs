@@ -2,7 +2,8 @@
 //! BicycleParameters' raw measurements (`RawData/<name>Measured.txt`) as
 //! `Bicycle(name, pathToData, forceRawCalc=True)` computes them
 //! ([`carvallo::whipple::raw`]), written as a parameter file `name = value+/-sigma` at full
-//! precision (round-trip floats), which `--model` reads. An unreadable or invalid file is an
+//! precision (round-trip floats), which `--model` reads; a flywheel measured inside the front
+//! wheel (`mD`, `IDxx`, `IDyy`) follows as comment lines, not part of the model. An unreadable or invalid file is an
 //! error naming the file and the line or measurement, exit code 2; nothing is written then.
 
 use carvallo::whipple::raw::benchmark_from_measured;
@@ -26,7 +27,12 @@ pub fn run(a: &Args) -> Result<String, String> {
     })?;
     let raw = benchmark_from_measured(&text)
         .map_err(|e| format!("invalid raw measurement file `{}`: {e}", a.raw))?;
-    let out = raw.params.to_text();
+    let mut out = raw.params.to_text();
+    for (name, v, s) in &raw.extra {
+        out.push_str(&format!(
+            "# {name} = {v:?}+/-{s:?} (a flywheel in the front wheel, not in the model)\n"
+        ));
+    }
     match &a.out {
         None => Ok(out),
         Some(path) => {

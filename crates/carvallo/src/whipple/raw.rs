@@ -38,8 +38,11 @@
 //! is not true!"); here $\lambda$'s derivatives come from the implicit function theorem on the
 //! equation it solves.
 //!
-//! Not computed (an error naming the key): a front frame measured in two parts (fork `S`,
-//! handlebar `G`), a flywheel `D`, and frames hung in more than three orientations.
+//! A front frame measured in two parts (fork `S`, handlebar `G`, the handlebar's reference
+//! point from `h6`, `h7`, `d5`, `d6`, `l`) is combined into `H` by the parallel-axis theorem; a
+//! frame hung in more than three orientations is solved by least squares; a flywheel `D`
+//! measured inside the front wheel is returned beside the parameters ([`Raw::extra`]), not added
+//! to them.
 
 use carvallo_ir::dual::Dual;
 
@@ -96,6 +99,9 @@ impl std::error::Error for RawError {}
 pub struct Raw {
     /// The parameters and their standard deviations.
     pub params: UncertainParams,
+    /// Quantities computed beside the model's 26 parameters, `(name, value, sigma)`: a flywheel's
+    /// `mD`, `IDxx`, `IDyy` (not in the model; BicycleParameters' analysis ignores it too).
+    pub extra: Vec<(String, f64, f64)>,
     /// The names of the measured quantities with an uncertainty, the variables of
     /// [`jacobian`](Self::jacobian), in the order of the file.
     pub measured: Vec<String>,
@@ -279,25 +285,70 @@ fn lambda_from_abc(rf: D, rr: D, a: D, b: D, cc: D) -> Result<D, RawError> {
     Ok(out)
 }
 
+/// The least-squares solution of `m x = y` for `m` of `n >= 3` rows (the normal equations;
+/// numpy's pseudo-inverse for a full column rank), exactly [`solve3`] for three rows.
+fn least_squares(m: &[[D; 3]], y: &[D]) -> [D; 3] {
+    if m.len() == 3 {
+        return solve3([m[0], m[1], m[2]], [y[0], y[1], y[2]]);
+    }
+    let mut a = [[c(0.0); 3]; 3];
+    let mut b = [c(0.0); 3];
+    for (row, yr) in m.iter().zip(y) {
+        for i in 0..3 {
+            for k in 0..3 {
+                a[i][k] = a[i][k] + row[i] * row[k];
+            }
+            b[i] = b[i] + row[i] * *yr;
+        }
+    }
+    solve3(a, b)
+}
+
+/// $rcsin$ through [`Dual::atan2`].
+fn asin(x: D) -> D {
+    x.atan2((c(1.0) - sq(x)).sqrt())
+}
+
+/// A frame hung from the pendulum: its part letter and, per orientation, the line through its
+/// mass centre (slope, intercept), the angle $eta$ and the key of its torsional period.
+struct Hung {
+    part: char,
+    lines: Vec<(D, D, D, String)>,
+}
+
+/// The mean of the intersections of every ordered pair of lines (BicycleParameters'
+/// `com.center_of_mass`).
+fn centre_of(lines: &[(D, D, D, String)]) -> (D, D) {
+    let (mut sx, mut sz, mut count) = (c(0.0), c(0.0), 0);
+    for i in 0..lines.len() {
+        for j in 0..lines.len() {
+            if i == j {
+                continue;
+            }
+            // [-m_i 1; -m_j 1] (x, z) = (b_i, b_j)
+            let (x, z) = solve2(
+                c(0.0) - lines[i].0,
+                c(1.0),
+                c(0.0) - lines[j].0,
+                c(1.0),
+                lines[i].1,
+                lines[j].1,
+            );
+            (sx, sz, count) = (sx + x, sz + z, count + 1);
+        }
+    }
+    (sx / c(count as f64), sz / c(count as f64))
+}
+
 /// The benchmark parameters of the raw measurements `text` (see the [module docs](self)).
 ///
 /// # Errors
 /// [`RawError`] naming the line, the missing measurement or the unsupported key.
 pub fn benchmark_from_measured(text: &str) -> Result<Raw, RawError> {
     let mp = Measurements::read(text)?;
-    for (key, what) in [
-        ("mS", "a front frame measured in two parts (fork S, handlebar G)"),
-        ("mG", "a front frame measured in two parts (fork S, handlebar G)"),
-        ("mD", "a flywheel D"),
-    ] {
-        if mp.has(key) {
-            return Err(RawError::Unsupported {
-                key: key.to_string(),
-                reason: format!("{what} is not handled by this computation"),
-            });
-        }
-    }
     let n = |k: &str| mp.need(k);
+    // BicycleParameters' `is_fork_split`: any key starting with S or with S second.
+    let split = mp.entries.iter().any(|(k, _)| k.starts_with('S') || k.get(1..2) == Some("S"));
     let rf = n("dF")? / c(2.0) / c(PI) / n("nF")?;
     let rr = n("dR")? / c(2.0) / c(PI) / n("nR")?;
     let (lam, w, fork_offset) = if mp.has("w") {
@@ -314,66 +365,68 @@ pub fn benchmark_from_measured(text: &str) -> Result<Raw, RawError> {
         (lam, w, b)
     };
     let trail = (rf * lam.sin() - fork_offset) / lam.cos();
-    let (mb, mf, mr, mh, g) = (n("mB")?, n("mF")?, n("mR")?, n("mH")?, n("g")?);
+    let (mb, mf, mr, g) = (n("mB")?, n("mF")?, n("mR")?, n("g")?);
+    // The handlebar's reference point from the front wheel centre (split fork only).
+    let (u1, u2) = if split {
+        let (r5, r6) = (n("d5")? / c(2.0), n("d6")? / c(2.0));
+        let l1 = n("h7")? - n("h6")? + r5 - r6;
+        let l0 = n("l")? - r5 - r6;
+        let l2 = l0 * asin(l1 / l0).cos();
+        let u1 = l2 * lam.sin() - l1 * lam.cos();
+        (u1, u1 / lam.tan() + l1 / lam.sin())
+    } else {
+        (c(0.0), c(0.0))
+    };
 
     // The mass-centre lines of each frame, in the order of the sorted `alpha` keys.
     let mut alpha_keys: Vec<&str> =
         mp.entries.iter().map(|(k, _)| k.as_str()).filter(|k| k.starts_with("alpha")).collect();
     alpha_keys.sort_unstable();
-    let mut lines: [Vec<(D, D, D, String)>; 2] = [Vec::new(), Vec::new()];
+    let parts: &[char] = if split { &['B', 'G', 'S'] } else { &['B', 'H'] };
+    let mut hung: Vec<Hung> = parts.iter().map(|&part| Hung { part, lines: Vec::new() }).collect();
     for key in alpha_keys {
         let alpha = n(key)?;
         let a = n(&format!("a{}", &key[5..]))?;
-        let part = &key[5..6];
+        let part = key[5..].chars().next().unwrap_or(' ');
         let beta = lam - alpha * c(PI) / c(180.0);
         let m = c(0.0) - beta.tan();
-        let (slot, b) = match part {
-            "B" => (0, c(0.0) - a / beta.cos() - rr),
-            "H" => (1, c(0.0) - a / beta.cos() - rf + w * beta.tan()),
-            _ => {
-                return Err(RawError::Unsupported {
-                    key: key.to_string(),
-                    reason: format!("unknown part {part} (expected B or H)"),
-                })
-            }
+        let b = match part {
+            'B' => c(0.0) - a / beta.cos() - rr,
+            'H' | 'S' => c(0.0) - a / beta.cos() - rf + w * beta.tan(),
+            'G' => c(0.0) - a / beta.cos() - (rf + u2) + (w - u1) * beta.tan(),
+            _ => c(f64::NAN),
         };
-        lines[slot].push((m, b, beta, format!("Tt{}", &key[5..])));
-    }
-    let mut centre = [(c(0.0), c(0.0)); 2];
-    for (slot, part) in [(0, "B"), (1, "H")] {
-        let l = &lines[slot];
-        if l.len() != 3 {
-            return Err(RawError::Unsupported {
-                key: format!("alpha{part}"),
+        let slot =
+            hung.iter_mut().find(|h| h.part == part).ok_or_else(|| RawError::Unsupported {
+                key: key.to_string(),
                 reason: format!(
-                    "the frame {part} is hung in {} orientations; this computation takes 3",
-                    l.len()
+                    "unknown part {part} (expected {})",
+                    parts.iter().map(char::to_string).collect::<Vec<_>>().join(", ")
+                ),
+            })?;
+        slot.lines.push((m, b, beta, format!("Tt{}", &key[5..])));
+    }
+    for h in &hung {
+        if h.lines.len() < 3 {
+            return Err(RawError::Unsupported {
+                key: format!("alpha{}", h.part),
+                reason: format!(
+                    "the frame {} is hung in {} orientations; its inertia needs at least 3",
+                    h.part,
+                    h.lines.len()
                 ),
             });
         }
-        let (mut sx, mut sz, mut count) = (c(0.0), c(0.0), 0);
-        for i in 0..l.len() {
-            for j in 0..l.len() {
-                if i == j {
-                    continue;
-                }
-                // [-m_i 1; -m_j 1] (x, z) = (b_i, b_j)
-                let (x, z) =
-                    solve2(c(0.0) - l[i].0, c(1.0), c(0.0) - l[j].0, c(1.0), l[i].1, l[j].1);
-                (sx, sz, count) = (sx + x, sz + z, count + 1);
-            }
-        }
-        centre[slot] = (sx / c(count as f64), sz / c(count as f64));
     }
-    let [(xb, zb), (xh, zh)] = centre;
+    let centres: Vec<(D, D)> = hung.iter().map(|h| centre_of(&h.lines)).collect();
+    let centre = |part: char| centres[parts.iter().position(|p| *p == part).unwrap_or(0)];
 
     let compound = |m: D, l: D, t: D| sq(t / c(2.0) / c(PI)) * m * g * l - m * sq(l);
     let ifyy = compound(mf, n("lF")?, n("TcF1")?);
     let iryy = compound(mr, n("lR")?, n("TcR1")?);
+    let (xb, zb) = centre('B');
     let lb = (sq(xb) + sq(zb + rr)).sqrt();
     let ibyy = compound(mb, lb, n("TcB1")?);
-    let lh = (sq(xh - w) + sq(zh + rf)).sqrt();
-    let ihyy = compound(mh, lh, n("TcH1")?);
 
     let ro = n("dP")? / c(2.0);
     let ipyy = n("mP")? / c(12.0) * (c(3.0) * sq(ro) + c(3.0) * sq(c(0.0)) + sq(n("lP")?));
@@ -381,19 +434,60 @@ pub fn benchmark_from_measured(text: &str) -> Result<Raw, RawError> {
     let torsional = |t: D| stiffness * sq(t) / c(4.0) / sq(c(PI));
     let ifxx = torsional(n("TtF1")?);
     let irxx = torsional(n("TtR1")?);
-    let mut planar = [[c(0.0); 3]; 2];
-    for slot in 0..2 {
-        let l = &lines[slot];
-        let mut m = [[c(0.0); 3]; 3];
-        let mut j = [c(0.0); 3];
-        for (i, (_, _, beta, key)) in l.iter().enumerate() {
+    let mut planar = Vec::with_capacity(hung.len());
+    for h in &hung {
+        let mut m = Vec::with_capacity(h.lines.len());
+        let mut j = Vec::with_capacity(h.lines.len());
+        for (_, _, beta, key) in &h.lines {
             let (sb, cb) = (beta.sin(), beta.cos());
-            m[i] = [sq(cb), c(-2.0) * sb * cb, sq(sb)];
-            j[i] = torsional(n(key)?);
+            m.push([sq(cb), c(-2.0) * sb * cb, sq(sb)]);
+            j.push(torsional(n(key)?));
         }
-        planar[slot] = solve3(m, j);
+        planar.push(least_squares(&m, &j));
     }
-    let [[ibxx, ibxz, ibzz], [ihxx, ihxz, ihzz]] = planar;
+    let inertia = |part: char| planar[parts.iter().position(|p| *p == part).unwrap_or(0)];
+    let [ibxx, ibxz, ibzz] = inertia('B');
+
+    // The front frame: measured whole, or its fork S and handlebar G combined.
+    let (mh, xh, zh, ihxx, ihxz, ihyy, ihzz) = if split {
+        let (ms, mg) = (n("mS")?, n("mG")?);
+        let ((xs, zs), (xg, zg)) = (centre('S'), centre('G'));
+        let ls = (sq(xs - w) + sq(zs + rf)).sqrt();
+        let isyy = compound(ms, ls, n("TcS1")?);
+        let lg = (sq(xg - w + u1) + sq(zg + rf + u2)).sqrt();
+        let igyy = compound(mg, lg, n("TcG1")?);
+        let mh = mg + ms;
+        let (xh, zh) = ((mg * xg + ms * xs) / mh, (mg * zg + ms * zs) / mh);
+        let ([igxx, igxz, igzz], [isxx, isxz, iszz]) = (inertia('G'), inertia('S'));
+        let (dgx, dgz, dsx, dsz) = (xg - xh, zg - zh, xs - xh, zs - zh);
+        let zero = c(0.0);
+        (
+            mh,
+            xh,
+            zh,
+            igxx + mg * (sq(zero) + sq(dgz)) + (isxx + ms * (sq(zero) + sq(dsz))),
+            igxz + mg * (zero - dgx * dgz) + (isxz + ms * (zero - dsx * dsz)),
+            igyy + mg * (sq(dgz) + sq(dgx)) + (isyy + ms * (sq(dsz) + sq(dsx))),
+            igzz + mg * (sq(dgx) + sq(zero)) + (iszz + ms * (sq(dsx) + sq(zero))),
+        )
+    } else {
+        let mh = n("mH")?;
+        let (xh, zh) = centre('H');
+        let lh = (sq(xh - w) + sq(zh + rf)).sqrt();
+        let ihyy = compound(mh, lh, n("TcH1")?);
+        let [ihxx, ihxz, ihzz] = inertia('H');
+        (mh, xh, zh, ihxx, ihxz, ihyy, ihzz)
+    };
+    // A flywheel D in the front wheel (measured together with it): not part of the model, as
+    // BicycleParameters' own analysis ignores it; returned beside the parameters.
+    let mut extra = Vec::new();
+    if mp.has("mD") {
+        let md = n("mD")? - mf;
+        let idyy = compound(n("mD")?, n("lF")?, n("TcD1")?) - ifyy;
+        let idxx = torsional(n("TtD1")?) - ifxx;
+        extra =
+            vec![("mD".to_string(), md), ("IDxx".to_string(), idxx), ("IDyy".to_string(), idyy)];
+    }
 
     let by_name = |name: &str| -> D {
         match name {
@@ -438,8 +532,13 @@ pub fn benchmark_from_measured(text: &str) -> Result<Raw, RawError> {
             reason: format!("the measurements give no valid bicycle: {e}"),
         })?
         .0;
+    let std = |v: &D| -> f64 {
+        v.grad[..k].iter().zip(&mp.sigma).map(|(d, s)| (d * s) * (d * s)).sum::<f64>().sqrt()
+    };
+    let extra = extra.iter().map(|(name, v)| (name.clone(), v.value, std(v))).collect();
     Ok(Raw {
         params: UncertainParams { params, sigma },
+        extra,
         measured: mp.names,
         measured_sigma: mp.sigma,
         jacobian,
