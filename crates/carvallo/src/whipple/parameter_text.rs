@@ -139,9 +139,11 @@ pub struct Loaded {
 
 /// Keys of BicycleParameters' files beside the 26 of [`PARAM_NAMES`]: the wheels' third
 /// moments, lateral positions, and the front frame's parts `G` (fork) and `S` (handlebar).
-const EXTRA_NAMES: [&str; 20] = [
+/// `xcl`, `zcl` (where the lateral force of Moore's experiments is applied) play no part in the
+/// model and are read and ignored.
+const EXTRA_NAMES: [&str; 22] = [
     "IRzz", "IFzz", "yB", "yH", "yG", "yS", "mG", "xG", "zG", "IGxx", "IGxz", "IGyy", "IGzz", "mS",
-    "xS", "zS", "ISxx", "ISxz", "ISyy", "ISzz",
+    "xS", "zS", "ISxx", "ISxz", "ISyy", "ISzz", "xcl", "zcl",
 ];
 
 /// A rigid body in the x–z plane: mass, mass centre `(x, z)` and inertia
@@ -227,7 +229,7 @@ impl UncertainParams {
         let mut values = [f64::NAN; 26];
         let mut sigma = [0.0; 26];
         let mut seen = [false; 26];
-        let mut extra: [Option<(f64, f64)>; 20] = [None; 20];
+        let mut extra: [Option<(f64, f64)>; 22] = [None; 22];
         for_each_line(text, |name, rest, err| {
             let key = if name == "lam" { "lambda" } else { name };
             let slot = match PARAM_NAMES.iter().position(|n| *n == key) {
@@ -275,7 +277,7 @@ impl UncertainParams {
         let mut values = [f64::NAN; 26];
         let mut sigma = [0.0; 26];
         let mut seen = [false; 26];
-        let mut extra: [Option<(f64, f64)>; 20] = [None; 20];
+        let mut extra: [Option<(f64, f64)>; 22] = [None; 22];
         let rule = |name: &str, value: f64, reason: String| ParameterTextError::Rule {
             key: name.to_string(),
             value,
@@ -306,6 +308,14 @@ impl UncertainParams {
                     return Err(rule(name, v, "must be finite".to_string()));
                 }
                 extra[k] = Some((v, s));
+            } else if ["mD", "IDxx", "IDyy", "IDzz"].contains(&name) {
+                return Err(rule(
+                    name,
+                    v,
+                    "a flywheel D is not in the model (BicycleParameters' analysis ignores it): \
+                     leave out mD, IDxx, IDyy to study the bicycle without it"
+                        .to_string(),
+                ));
             } else {
                 return Err(rule(
                     name,
@@ -326,7 +336,7 @@ impl UncertainParams {
         mut values: [f64; 26],
         mut sigma: [f64; 26],
         mut seen: [bool; 26],
-        extra: [Option<(f64, f64)>; 20],
+        extra: [Option<(f64, f64)>; 22],
         strict: bool,
     ) -> Result<Loaded, ParameterTextError> {
         let get = |name: &str| EXTRA_NAMES.iter().position(|n| *n == name).and_then(|k| extra[k]);
@@ -679,11 +689,16 @@ mod tests {
                 .unwrap_err()
                 .to_string()
         );
-        entries.last_mut().expect("yB").0 = "mD".into();
+        entries.last_mut().expect("yB").0 = "mQ".into();
         assert!(UncertainParams::from_entries(&entries, true)
             .unwrap_err()
             .to_string()
-            .starts_with("invalid mD 0.1: unknown parameter"));
+            .starts_with("invalid mQ 0.1: unknown parameter"));
+        entries.last_mut().expect("mQ").0 = "mD".into();
+        assert!(UncertainParams::from_entries(&entries, true)
+            .unwrap_err()
+            .to_string()
+            .starts_with("invalid mD 0.1: a flywheel D is not in the model"));
         entries.pop();
         entries[0].2 = -1.0;
         assert_eq!(
