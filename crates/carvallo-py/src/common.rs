@@ -90,12 +90,12 @@ fn value_of(name: &str, v: &Bound<'_, PyAny>) -> PyResult<(f64, Option<f64>)> {
     }
 }
 
+/// Parameter entries `(name, value, sigma)`.
+type Entries = Vec<(String, f64, f64)>;
+
 /// `(name, value, sigma)` of every entry (sigma zero for a plain number), and whether any
 /// value is a ufloat.
-pub(crate) fn entries_of(
-    mapping: &Bound<'_, PyAny>,
-    what: &str,
-) -> PyResult<(Vec<(String, f64, f64)>, bool)> {
+pub(crate) fn entries_of(mapping: &Bound<'_, PyAny>, what: &str) -> PyResult<(Entries, bool)> {
     let dict = mapping_of(mapping, what)?;
     let mut out = Vec::with_capacity(dict.len());
     let mut uncertain = false;

@@ -115,18 +115,16 @@ pub struct Raw {
 impl Raw {
     /// The covariance matrix of the 26 parameters, $J \operatorname{diag}(\sigma^2) J^T$.
     pub fn covariance(&self) -> [[f64; 26]; 26] {
-        let mut c = [[0.0; 26]; 26];
-        for i in 0..26 {
-            for k in 0..26 {
-                c[i][k] = (0..self.measured.len())
+        std::array::from_fn(|i| {
+            std::array::from_fn(|k| {
+                (0..self.measured.len())
                     .map(|j| {
                         let s = self.measured_sigma[j];
                         self.jacobian[i][j] * self.jacobian[k][j] * s * s
                     })
-                    .sum();
-            }
-        }
-        c
+                    .sum()
+            })
+        })
     }
 }
 
@@ -238,8 +236,9 @@ fn solve3(mut m: [[D; 3]; 3], mut y: [D; 3]) -> [D; 3] {
         y.swap(col, p);
         for row in col + 1..3 {
             let f = m[row][col] / m[col][col];
-            for k in col..3 {
-                m[row][k] = m[row][k] - f * m[col][k];
+            let pivot = m[col];
+            for (a, b) in m[row].iter_mut().zip(pivot).skip(col) {
+                *a = *a - f * b;
             }
             y[row] = y[row] - f * y[col];
         }
