@@ -6,6 +6,12 @@ axis tilt also as BicycleParameters' `lam`), SI units. Every error is a `Paramet
 reads it as the parameter files are read: moments of inertia that break a triangle inequality
 are computed as given with a `PhysicsWarning`, or a `ParameterError` with `strict=True`.
 
+`params` may be a dict of floats, a dict of `uncertainties` ufloats (their nominal values; their
+standard deviations and correlations go to the uncertainty functions when `sigma` is None), or a
+`bicycleparameters.Bicycle` (its `parameters['Benchmark']`, with the rider once added).
+BicycleParameters' extra keys (`yB`, `IRzz`, the fork `G` and handlebar `S`) obey the parameter
+files' rules. Neither package is imported.
+
 Limits (a `ParameterError` naming the argument and the limit, raised before allocating): a call
 needs at most 1 GiB for its result and working arrays; files are read up to 16 MiB; counts
 (`samples`, `count`, `every`, `seed`) are whole numbers from 0 to 2**64 - 1 and real arguments
@@ -22,7 +28,7 @@ import numpy.typing as npt
 __version__: str
 PARAM_NAMES: list[str]
 
-Params = Mapping[str, float]
+Params = Union[Mapping[str, object], object]
 Speeds = Union[float, Sequence[float], npt.NDArray[np.float64]]
 
 class ParameterError(ValueError):
@@ -55,6 +61,11 @@ def add_rider(
 ) -> tuple[dict[str, float], dict[str, float]]:
     """(params, sigma) with a rider (a BicycleParameters rider file, or a dict of mB, xB, yB, zB,
     IBxx, IBxz, IByy, IBzz) added to the rear frame, as Bicycle.add_rider."""
+
+def parameters_from_raw(path: str) -> tuple[dict[str, float], dict[str, float]]:
+    """(params, sigma) computed from BicycleParameters' raw measurements (RawData/<name>Measured.txt)
+    as Bicycle(name, pathToData, forceRawCalc=True) computes them; a front frame in two parts, a
+    flywheel or more than three pendulum orientations is a ParameterError naming the key."""
 
 def parse_parameters(text: str) -> tuple[dict[str, float], dict[str, float]]:
     """(params, sigma) from the text of a parameter file (either format)."""
@@ -185,18 +196,26 @@ def report() -> list[dict[str, object]]:
 def speed_gradients(params: Params, strict: bool = False) -> dict[str, object]:
     """Weave and capsize speeds with their exact derivatives: d_weave, d_capsize dicts."""
 
-def first_order(params: Params, sigma: Params, strict: bool = False) -> dict[str, Optional[float]]:
-    """First-order standard deviations weave_std, capsize_std for independent parameters."""
+def first_order(
+    params: Params, sigma: Optional[Params] = None, strict: bool = False
+) -> dict[str, Optional[float]]:
+    """First-order standard deviations weave_std, capsize_std: independent parameters with the
+    standard deviations `sigma`, or (sigma=None) those of ufloat params with their correlations."""
 
 def monte_carlo(
-    params: Params, sigma: Params, samples: int = 10000, seed: int = 1897, strict: bool = False
+    params: Params,
+    sigma: Optional[Params] = None,
+    samples: int = 10000,
+    seed: int = 1897,
+    strict: bool = False,
 ) -> dict[str, object]:
-    """Seeded Monte Carlo: arrays weave and capsize (NaN if none) and the count invalid; 32 bytes
-    a sample within the 1 GiB limit (about 3.3e7 samples); stops on Ctrl-C."""
+    """Seeded Monte Carlo: arrays weave and capsize (NaN if none) and the count invalid; sigma=None
+    takes the standard deviations of ufloat params (drawn independently); 32 bytes a sample
+    within the 1 GiB limit (about 3.3e7 samples); stops on Ctrl-C."""
 
 def eigenvalue_bands(
     params: Params,
-    sigma: Params,
+    sigma: Optional[Params],
     speeds: Speeds,
     samples: int = 2000,
     seed: int = 1897,

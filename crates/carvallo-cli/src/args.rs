@@ -209,6 +209,8 @@ pub fn is_data_error(message: &str) -> bool {
         "cannot read rider file `",
         "invalid gain table `",
         "cannot read gain table `",
+        "invalid raw measurement file `",
+        "cannot read raw measurement file `",
     ]
     .iter()
     .any(|p| message.starts_with(p))

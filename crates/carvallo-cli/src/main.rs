@@ -26,7 +26,8 @@ mod report_html;
 mod staging;
 
 use commands::{
-    accel, bode, eig, kinematics, report, response, rest, rolling, simulate, statespace, turn,
+    accel, bode, eig, kinematics, parameters, report, response, rest, rolling, simulate,
+    statespace, turn,
     window,
 };
 
@@ -58,6 +59,9 @@ enum Command {
     /// The time response of the linearised bicycle to a unit step or impulse of the roll or
     /// steer torque, or from an initial state (matrix exponential)
     Response(response::Args),
+    /// The benchmark parameters from BicycleParameters' raw measurements (--raw FILE), with
+    /// their uncertainties, as a parameter file at full precision
+    Parameters(parameters::Args),
     /// Time per evaluation beside the error against 256 bits
     Bench(perf::BenchArgs),
     /// The stability windows of many designs (a grid or random designs around the model), or
@@ -96,6 +100,7 @@ impl Command {
             Command::Statespace(_) => "statespace",
             Command::Bode(_) => "bode",
             Command::Response(_) => "response",
+            Command::Parameters(_) => "parameters",
             Command::Bench(_) => "bench",
             Command::Sweep(_) => "sweep",
             Command::Accel(_) => "accel",
@@ -119,6 +124,7 @@ impl Command {
             Command::Statespace(a) => text(statespace::run(a)),
             Command::Bode(a) => text(bode::run(a)),
             Command::Response(a) => text(response::run(a)),
+            Command::Parameters(a) => text(parameters::run(a)),
             Command::Bench(a) => text(perf::bench(a)),
             Command::Sweep(a) => text(perf::sweep(a)),
             Command::Accel(a) => text(accel::run(a)),

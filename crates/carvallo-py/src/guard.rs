@@ -20,7 +20,7 @@ use std::time::Duration;
 
 use pyo3::prelude::*;
 
-use crate::python::err;
+use crate::common::err;
 
 /// The most bytes one call may need for its result and working arrays: 1 GiB.
 pub(crate) const MAX_BYTES: f64 = (1u64 << 30) as f64;

@@ -15,6 +15,8 @@ use carvallo::whipple::{TriangleWarning, WhippleParams, PARAM_NAMES};
 #[cfg(feature = "python")]
 mod guard;
 #[cfg(feature = "python")]
+mod common;
+#[cfg(feature = "python")]
 mod python;
 #[cfg(feature = "python")]
 mod rolling;

@@ -2,108 +2,32 @@
 //! and out, every error a `carvallo.ParameterError` (a `ValueError`) whose message names the key
 //! and the value. `carvallo.pyi` beside `Cargo.toml` gives the types.
 //!
-//! Every function that takes a parameter dict reads it as the parameter files are read
-//! (`load_parameters`, the command line's `--model`): moments of inertia that break a triangle
+//! Every function that takes parameters takes a dict of numbers, a dict of `uncertainties`
+//! ufloats or a `bicycleparameters.Bicycle` (see `common`), read as the parameter files are read
+//! (`load_parameters`, the command line's `--model`, `yB` and the other extra keys included): moments of inertia that break a triangle
 //! inequality are computed as given with a `carvallo.PhysicsWarning` naming the parameter and
 //! the relative violation, or refused with `strict=True` (the command line's `--strict`).
 
 use std::sync::atomic::AtomicUsize;
 
-use carvallo::numerics::integrate::{Grid, Integration, Method as IntegrationMethod};
+use carvallo::numerics::integrate::{Grid, Integration};
 use carvallo::parameter_text::{Rider, UncertainParams, RIDER_NAMES};
 use carvallo::sweep::Method;
-use carvallo::whipple::{
-    StabilityWindow, TriangleWarning, Whipple, WhippleParams, FIELD_PATHS, PARAM_NAMES,
-};
+use carvallo::whipple::{StabilityWindow, Whipple, WhippleParams, FIELD_PATHS, PARAM_NAMES};
 use carvallo::whipple_nonlinear::{Feedback, Stop, WhippleNonlinear};
 use carvallo::whipple_uncertainty as unc;
 use numpy::{
     Complex64, PyArray1, PyArray2, PyArrayMethods, PyReadonlyArray1, PyReadonlyArray2,
     PyUntypedArrayMethods,
 };
-use pyo3::create_exception;
-
 use crate::guard::{arg, interruptible, read_text, within};
-use pyo3::exceptions::PyValueError;
 use pyo3::prelude::*;
 use pyo3::types::{IntoPyDict, PyDict, PyList};
 
-create_exception!(
-    carvallo,
-    ParameterError,
-    PyValueError,
-    "A bad parameter, parameter file or argument; the message names the key and the value."
-);
-
-create_exception!(
-    carvallo,
-    PhysicsWarning,
-    pyo3::exceptions::PyUserWarning,
-    "Parameters accepted although they break a physical law, such as measured moments of \
-     inertia that break a triangle inequality; the message names the parameter and by how much."
-);
-
-pub(crate) fn err(message: impl Into<String>) -> PyErr {
-    ParameterError::new_err(message.into())
-}
-
-/// `(name, value)` pairs from a mapping of numbers.
-fn pairs(mapping: &Bound<'_, PyAny>, what: &str) -> PyResult<Vec<(String, f64)>> {
-    let dict = mapping
-        .cast::<PyDict>()
-        .map_err(|_| err(format!("{what} must be a dict of name -> number")))?;
-    let mut out = Vec::with_capacity(dict.len());
-    for (k, v) in dict.iter() {
-        let name: String = k.extract().map_err(|_| {
-            err(format!(
-                "{what}: key {} is not a string",
-                k.repr().map(|r| r.to_string()).unwrap_or_default()
-            ))
-        })?;
-        let value: f64 = v.extract().map_err(|_| {
-            let shown = v.repr().map(|r| r.to_string()).unwrap_or_default();
-            err(format!("parameter {name} = {shown} is not a number"))
-        })?;
-        out.push((name, value));
-    }
-    Ok(out)
-}
-
-/// Each warning as a `carvallo.PhysicsWarning` (`warnings.warn`), prefixed by `source`.
-fn warn_all(py: Python<'_>, source: &str, warnings: &[TriangleWarning]) -> PyResult<()> {
-    let category = py.get_type::<PhysicsWarning>();
-    for w in warnings {
-        let message = std::ffi::CString::new(format!("{source}: {w}"))
-            .map_err(|_| err("a warning message holds a NUL byte"))?;
-        PyErr::warn(py, category.as_any(), &message, 1)?;
-    }
-    Ok(())
-}
-
-/// The bicycle of a parameter dict, as the readers of parameter files take it: moments of
-/// inertia breaking a triangle inequality are a `PhysicsWarning`, or an error when `strict`.
-fn params_of(mapping: &Bound<'_, PyAny>, strict: bool) -> PyResult<WhippleParams> {
-    let (p, warnings) =
-        crate::params_from_pairs_warning(&pairs(mapping, "params")?, strict).map_err(err)?;
-    warn_all(mapping.py(), "params", &warnings)?;
-    Ok(p)
-}
-
-/// As [`params_of`], with the standard deviations `sigma`.
-fn uncertain_of(
-    params: &Bound<'_, PyAny>,
-    sigma: &Bound<'_, PyAny>,
-    strict: bool,
-) -> PyResult<UncertainParams> {
-    let (u, warnings) = crate::uncertain_from_pairs_warning(
-        &pairs(params, "params")?,
-        &pairs(sigma, "sigma")?,
-        strict,
-    )
-    .map_err(err)?;
-    warn_all(params.py(), "params", &warnings)?;
-    Ok(u)
-}
+use crate::common::{
+    err, integration_of, pairs, params_of, set_run, uncertain_of, warn_all, Covariance,
+    ParameterError, PhysicsWarning,
+};
 
 fn dict_of<'py>(py: Python<'py>, values: &[f64; 26]) -> PyResult<Bound<'py, PyDict>> {
     let d = PyDict::new(py);
@@ -223,10 +147,7 @@ fn add_rider<'py>(
     sigma: Option<&Bound<'py, PyAny>>,
     strict: bool,
 ) -> PyResult<(Bound<'py, PyDict>, Bound<'py, PyDict>)> {
-    let u = match sigma {
-        Some(s) => uncertain_of(params, s, strict)?,
-        None => UncertainParams::exact(params_of(params, strict)?),
-    };
+    let u = uncertain_of(params, sigma, strict, false)?;
     let (rider, what) = if let Ok(path) = rider.extract::<std::path::PathBuf>() {
         let path = path.display().to_string();
         let text = read_text(&path, "rider")?;
@@ -270,6 +191,25 @@ fn add_rider<'py>(
     }
     warn_all(py, &format!("params with the {what}"), &loaded.warnings)?;
     let u = loaded.params;
+    Ok((dict_of(py, u.params.values())?, dict_of(py, &u.sigma)?))
+}
+
+/// The benchmark parameters computed from BicycleParameters' raw measurements (the file
+/// `RawData/<name>Measured.txt` at `path`) as `Bicycle(name, pathToData, forceRawCalc=True)`
+/// computes them: `(params, sigma)`, two dicts, the standard deviations from the measurements'
+/// by linear propagation. A front frame measured in two parts, a flywheel or a frame hung in
+/// more than three orientations is a `ParameterError` naming the key.
+#[pyfunction]
+fn parameters_from_raw<'py>(
+    py: Python<'py>,
+    path: &str,
+) -> PyResult<(Bound<'py, PyDict>, Bound<'py, PyDict>)> {
+    let text = std::fs::read_to_string(path).map_err(|e| {
+        err(format!("cannot read raw measurement file `{path}`: {}", e.to_string().to_lowercase()))
+    })?;
+    let raw = carvallo::whipple::raw::benchmark_from_measured(&text)
+        .map_err(|e| err(format!("invalid raw measurement file `{path}`: {e}")))?;
+    let u = raw.params;
     Ok((dict_of(py, u.params.values())?, dict_of(py, &u.sigma)?))
 }
 
@@ -871,39 +811,6 @@ fn sweep<'py>(
     Ok(d)
 }
 
-/// The integration of `method` (`rk4`, `dopri5`, `dop853`, `vern9`) with the tolerances
-/// given or the
-/// command line's defaults, and the parsed stop conditions.
-pub(crate) fn integration_of(
-    method: &str,
-    rtol: Option<f64>,
-    atol: Option<f64>,
-    stop_when: &[String],
-) -> PyResult<(Integration, Vec<Stop>)> {
-    let m = IntegrationMethod::from_name(method).ok_or_else(|| {
-        err(format!("invalid method `{method}`: expected rk4, dopri5, dop853 or vern9"))
-    })?;
-    if m == IntegrationMethod::Rk4 && (rtol.is_some() || atol.is_some()) {
-        return Err(err("rtol and atol need an adaptive method (dopri5, dop853 or vern9)"));
-    }
-    let how = Integration::with_defaults(m, rtol, atol);
-    if let Some((name, value, reason)) = how.unusable() {
-        return Err(err(format!("invalid {name} {value:?}: {reason}")));
-    }
-    let stops = stop_when
-        .iter()
-        .map(|t| {
-            Stop::parse(t).ok_or_else(|| {
-                err(format!(
-                    "invalid stop condition `{t}`: expected NAME=VALUE or NAME=±VALUE with NAME \
-                     one of lean, steer, yaw, pitch, lean_rate, steer_rate, x, y"
-                ))
-            })
-        })
-        .collect::<PyResult<Vec<Stop>>>()?;
-    Ok((how, stops))
-}
-
 /// Integrates the nonlinear bicycle from upright straight running at `speed` with the lean
 /// `lean0`, as `carvallo simulate --json` with the same options: `method` (`rk4` at the step
 /// `step`, or `dopri5`, `dop853`, `vern9` with `rtol`, default 1e-8, and `atol`,
@@ -983,32 +890,6 @@ fn simulate<'py>(
     d.set_item("max_contact_residual", tr.max_contact_residual)?;
     set_run(&d, &how, &tr.stats, tr.event.map(|(k, t)| (stops[k].text(), t)))?;
     Ok(d)
-}
-
-/// The keys every simulation's dictionary shares: `method`, `rtol` and `atol` (None for a
-/// fixed step), the counts `rhs_evaluations`, `steps`, `rejected_steps`, and `events`
-/// (`[{"when", "t"}]`, the condition met as given).
-pub(crate) fn set_run(
-    d: &Bound<'_, PyDict>,
-    how: &Integration,
-    stats: &carvallo::numerics::integrate::Stats,
-    event: Option<(String, f64)>,
-) -> PyResult<()> {
-    let adaptive = how.method.is_adaptive();
-    d.set_item("method", how.method.name())?;
-    d.set_item("rtol", adaptive.then_some(how.rtol))?;
-    d.set_item("atol", adaptive.then_some(how.atol))?;
-    d.set_item("rhs_evaluations", stats.rhs_evaluations)?;
-    d.set_item("steps", stats.steps)?;
-    d.set_item("rejected_steps", stats.rejected_steps)?;
-    let events = PyList::empty(d.py());
-    if let Some((when, t)) = event {
-        let e = PyDict::new(d.py());
-        e.set_item("when", when)?;
-        e.set_item("t", t)?;
-        events.append(e)?;
-    }
-    d.set_item("events", events)
 }
 
 /// The inputs of `simulate`: the sampled torques (`torque_t` with `torque_roll` and/or
@@ -1260,40 +1141,51 @@ fn speed_gradients<'py>(
     Ok(d)
 }
 
-/// First-order standard deviations of the weave and capsize speeds for independent parameters
-/// with the standard deviations `sigma` (a dict; missing names have none):
-/// `{"weave_speed", "weave_std", "capsize_speed", "capsize_std"}`.
+/// First-order standard deviations of the weave and capsize speeds:
+/// `{"weave_speed", "weave_std", "capsize_speed", "capsize_std"}`. Either independent
+/// parameters with the standard deviations `sigma` (a dict; missing names have none), or, with
+/// `sigma=None`, `params` of `uncertainties` ufloats (a dict or a `bicycleparameters.Bicycle`):
+/// their standard deviations and their correlations where they share sources.
 #[pyfunction]
-#[pyo3(signature = (params, sigma, strict = false))]
+#[pyo3(signature = (params, sigma = None, strict = false))]
 fn first_order<'py>(
     py: Python<'py>,
     params: &Bound<'py, PyAny>,
-    sigma: &Bound<'py, PyAny>,
+    sigma: Option<&Bound<'py, PyAny>>,
     strict: bool,
 ) -> PyResult<Bound<'py, PyDict>> {
-    let u = uncertain_of(params, sigma, strict)?;
+    let u = uncertain_of(params, sigma, strict, true)?;
+    let cov = match sigma {
+        None => Covariance::of(params, &u)?,
+        Some(_) => None,
+    };
+    let std = |g: &unc::SpeedGradient| match &cov {
+        Some(c) => c.std(&g.grad),
+        None => g.std(&u.sigma),
+    };
     let g = unc::speed_gradients(&u.params);
     let d = PyDict::new(py);
     d.set_item("weave_speed", g.weave.as_ref().map(|w| w.speed))?;
-    d.set_item("weave_std", g.weave.as_ref().map(|w| w.std(&u.sigma)))?;
+    d.set_item("weave_std", g.weave.as_ref().map(std))?;
     d.set_item("capsize_speed", g.capsize.as_ref().map(|c| c.speed))?;
-    d.set_item("capsize_std", g.capsize.as_ref().map(|c| c.std(&u.sigma)))?;
+    d.set_item("capsize_std", g.capsize.as_ref().map(std))?;
     Ok(d)
 }
 
-/// Monte Carlo: `samples` designs drawn normal about `params` with `sigma` (seeded);
+/// Monte Carlo: `samples` designs drawn normal about `params` with `sigma` (seeded; with
+/// `sigma=None` the standard deviations of ufloat `params`, drawn independently);
 /// `{"weave": array, "capsize": array, "invalid": int}` (NaN where a sample has no such speed).
 #[pyfunction]
-#[pyo3(signature = (params, sigma, samples = 10000, seed = 1897, strict = false))]
+#[pyo3(signature = (params, sigma = None, samples = 10000, seed = 1897, strict = false))]
 fn monte_carlo<'py>(
     py: Python<'py>,
     params: &Bound<'py, PyAny>,
-    sigma: &Bound<'py, PyAny>,
+    sigma: Option<&Bound<'py, PyAny>>,
     #[pyo3(from_py_with = arg::samples)] samples: usize,
     #[pyo3(from_py_with = arg::seed)] seed: u64,
     strict: bool,
 ) -> PyResult<Bound<'py, PyDict>> {
-    let u = uncertain_of(params, sigma, strict)?;
+    let u = uncertain_of(params, sigma, strict, true)?;
     within(&format!("samples = {samples}"), samples as f64, 2.0 * 8.0 * 2.0)?;
     let mc = interruptible(py, |stop| unc::monte_carlo_until(&u, samples, seed, stop))?
         .ok_or_else(|| err("monte_carlo was stopped"))?;
@@ -1311,7 +1203,8 @@ fn rows4<'py>(py: Python<'py>, rows: &[[f64; 4]]) -> PyResult<Bound<'py, PyArray
 
 /// Quantile bands of the eigenvalues' real parts against speed for `samples` Monte Carlo
 /// designs: `{"speeds", "nominal", "lower", "upper"}`, the last three of shape (n, 4), rank by
-/// rank of the sorted real parts.
+/// rank of the sorted real parts. `sigma=None` takes the standard deviations of ufloat
+/// `params`, drawn independently.
 #[pyfunction]
 #[pyo3(signature = (params, sigma, speeds, samples = 2000, seed = 1897, quantiles = (0.025, 0.975), strict = false))]
 // The arguments are the Python function's keywords.
@@ -1319,14 +1212,14 @@ fn rows4<'py>(py: Python<'py>, rows: &[[f64; 4]]) -> PyResult<Bound<'py, PyArray
 fn eigenvalue_bands<'py>(
     py: Python<'py>,
     params: &Bound<'py, PyAny>,
-    sigma: &Bound<'py, PyAny>,
+    sigma: Option<&Bound<'py, PyAny>>,
     speeds: &Bound<'py, PyAny>,
     #[pyo3(from_py_with = arg::samples)] samples: usize,
     #[pyo3(from_py_with = arg::seed)] seed: u64,
     #[pyo3(from_py_with = arg::quantiles)] quantiles: (f64, f64),
     strict: bool,
 ) -> PyResult<Bound<'py, PyDict>> {
-    let u = uncertain_of(params, sigma, strict)?;
+    let u = uncertain_of(params, sigma, strict, true)?;
     let speeds = speeds_of(speeds)?;
     let (lo, hi) = quantiles;
     if !(0.0..=1.0).contains(&lo) || !(0.0..=1.0).contains(&hi) || lo > hi {
@@ -1360,6 +1253,7 @@ fn carvallo_module(m: &Bound<'_, PyModule>) -> PyResult<()> {
     m.add_function(wrap_pyfunction!(design, m)?)?;
     m.add_function(wrap_pyfunction!(load_parameters, m)?)?;
     m.add_function(wrap_pyfunction!(parse_parameters, m)?)?;
+    m.add_function(wrap_pyfunction!(parameters_from_raw, m)?)?;
     m.add_function(wrap_pyfunction!(add_rider, m)?)?;
     m.add_function(wrap_pyfunction!(matrices, m)?)?;
     m.add_function(wrap_pyfunction!(state_matrix, m)?)?;

@@ -12,8 +12,8 @@ use numpy::PyArray1;
 use pyo3::prelude::*;
 use pyo3::types::PyDict;
 
+use crate::common::{err, integration_of, set_run};
 use crate::guard::{arg, within};
-use crate::python::{err, integration_of, set_run};
 
 /// The names of the state's components, in its order.
 const STATE: [&str; 4] = ["theta", "p", "n", "s"];

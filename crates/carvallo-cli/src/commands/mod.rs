@@ -7,6 +7,7 @@ pub mod accel;
 pub mod bode;
 pub mod eig;
 pub mod kinematics;
+pub mod parameters;
 pub mod report;
 pub mod response;
 pub mod rest;

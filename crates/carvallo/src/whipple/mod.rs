@@ -34,6 +34,7 @@ pub mod nonlinear;
 pub mod parameter_text;
 pub mod plant;
 pub mod response;
+pub mod raw;
 pub mod stability;
 pub mod sweep;
 pub mod transfer;

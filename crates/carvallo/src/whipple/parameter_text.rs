@@ -83,7 +83,7 @@ fn number(text: &str) -> Option<f64> {
 }
 
 /// Splits `value+/-sigma`, `(value+/-sigma)e-02` or `value` into numbers.
-fn value_and_sigma(text: &str) -> Result<(f64, f64), String> {
+pub(crate) fn value_and_sigma(text: &str) -> Result<(f64, f64), String> {
     let t = text.trim();
     let (body, exponent) = match t.strip_prefix('(') {
         Some(rest) => {
@@ -139,9 +139,11 @@ pub struct Loaded {
 
 /// Keys of BicycleParameters' files beside the 26 of [`PARAM_NAMES`]: the wheels' third
 /// moments, lateral positions, and the front frame's parts `G` (fork) and `S` (handlebar).
-const EXTRA_NAMES: [&str; 20] = [
+/// `xcl`, `zcl` (where the lateral force of Moore's experiments is applied) play no part in the
+/// model and are read and ignored.
+const EXTRA_NAMES: [&str; 22] = [
     "IRzz", "IFzz", "yB", "yH", "yG", "yS", "mG", "xG", "zG", "IGxx", "IGxz", "IGyy", "IGzz", "mS",
-    "xS", "zS", "ISxx", "ISxz", "ISyy", "ISzz",
+    "xS", "zS", "ISxx", "ISxz", "ISyy", "ISzz", "xcl", "zcl",
 ];
 
 /// A rigid body in the x–z plane: mass, mass centre `(x, z)` and inertia
@@ -227,7 +229,7 @@ impl UncertainParams {
         let mut values = [f64::NAN; 26];
         let mut sigma = [0.0; 26];
         let mut seen = [false; 26];
-        let mut extra: [Option<(f64, f64)>; 20] = [None; 20];
+        let mut extra: [Option<(f64, f64)>; 22] = [None; 22];
         for_each_line(text, |name, rest, err| {
             let key = if name == "lam" { "lambda" } else { name };
             let slot = match PARAM_NAMES.iter().position(|n| *n == key) {
@@ -257,6 +259,86 @@ impl UncertainParams {
             }
             Ok(())
         })?;
+        Self::assemble(values, sigma, seen, extra, strict)
+    }
+
+    /// Reads `(name, value, sigma)` entries (a mapping of numbers, such as a Python dict of
+    /// `uncertainties` ufloats) by the rules of [`read`](Self::read): the same names, the same
+    /// checks of BicycleParameters' extra keys, the same warnings.
+    ///
+    /// # Errors
+    /// [`ParameterTextError::Rule`] naming the key and value for an unknown or repeated name, a
+    /// value that is not finite or a standard deviation that is negative or not finite; the
+    /// other errors as [`read`](Self::read).
+    pub fn from_entries(
+        entries: &[(String, f64, f64)],
+        strict: bool,
+    ) -> Result<Loaded, ParameterTextError> {
+        let mut values = [f64::NAN; 26];
+        let mut sigma = [0.0; 26];
+        let mut seen = [false; 26];
+        let mut extra: [Option<(f64, f64)>; 22] = [None; 22];
+        let rule = |name: &str, value: f64, reason: String| ParameterTextError::Rule {
+            key: name.to_string(),
+            value,
+            reason,
+        };
+        for (name, v, s) in entries {
+            let (name, v, s) = (name.as_str(), *v, *s);
+            if !s.is_finite() || s < 0.0 {
+                return Err(rule(
+                    name,
+                    v,
+                    format!(
+                        "its standard deviation {s:?} must be a finite number of at least zero"
+                    ),
+                ));
+            }
+            let key = if name == "lam" { "lambda" } else { name };
+            if let Some(k) = PARAM_NAMES.iter().position(|n| *n == key) {
+                if seen[k] {
+                    return Err(rule(name, v, format!("{} given twice", PARAM_NAMES[k])));
+                }
+                (values[k], sigma[k], seen[k]) = (v, s, true);
+            } else if let Some(k) = EXTRA_NAMES.iter().position(|n| *n == key) {
+                if extra[k].is_some() {
+                    return Err(rule(name, v, format!("{name} given twice")));
+                }
+                if !v.is_finite() {
+                    return Err(rule(name, v, "must be finite".to_string()));
+                }
+                extra[k] = Some((v, s));
+            } else if ["mD", "IDxx", "IDyy", "IDzz"].contains(&name) {
+                return Err(rule(
+                    name,
+                    v,
+                    "a flywheel D is not in the model (BicycleParameters' analysis ignores it): \
+                     leave out mD, IDxx, IDyy to study the bicycle without it"
+                        .to_string(),
+                ));
+            } else {
+                return Err(rule(
+                    name,
+                    v,
+                    format!(
+                        "unknown parameter (the names are {}, lam, and BicycleParameters' {})",
+                        PARAM_NAMES.join(", "),
+                        EXTRA_NAMES.join(", ")
+                    ),
+                ));
+            }
+        }
+        Self::assemble(values, sigma, seen, extra, strict)
+    }
+
+    /// The checks and combinations of [`read`](Self::read) once the entries are collected.
+    fn assemble(
+        mut values: [f64; 26],
+        mut sigma: [f64; 26],
+        mut seen: [bool; 26],
+        extra: [Option<(f64, f64)>; 22],
+        strict: bool,
+    ) -> Result<Loaded, ParameterTextError> {
         let get = |name: &str| EXTRA_NAMES.iter().position(|n| *n == name).and_then(|k| extra[k]);
         let index = |name: &str| PARAM_NAMES.iter().position(|n| *n == name).unwrap_or(0);
         // The front frame from its parts, when they are given.
@@ -585,6 +667,44 @@ mod tests {
         assert_eq!(u.params, WhippleParams::benchmark());
         assert_eq!(u.sigma[0], 0.01 * 1.02);
         assert_eq!(u.to_text(), text);
+    }
+
+    #[test]
+    fn entries_follow_the_rules_of_the_text() {
+        let b = WhippleParams::benchmark();
+        let mut entries: Vec<(String, f64, f64)> = PARAM_NAMES
+            .iter()
+            .zip(b.values())
+            .map(|(n, v)| (n.to_string(), *v, 0.01 * v.abs()))
+            .collect();
+        entries.push(("yB".into(), 0.0, 0.0));
+        let text = format!("{}yB = 0.0+/-0.0\n", benchmark_text(0.01));
+        let from_text = UncertainParams::read(&text, true).expect("valid");
+        let from_entries = UncertainParams::from_entries(&entries, true).expect("valid");
+        assert_eq!(from_entries.params, from_text.params);
+        entries.last_mut().expect("yB").1 = 0.1;
+        assert_eq!(
+            UncertainParams::from_entries(&entries, true).unwrap_err().to_string(),
+            UncertainParams::read(&text.replace("yB = 0.0", "yB = 0.1"), true)
+                .unwrap_err()
+                .to_string()
+        );
+        entries.last_mut().expect("yB").0 = "mQ".into();
+        assert!(UncertainParams::from_entries(&entries, true)
+            .unwrap_err()
+            .to_string()
+            .starts_with("invalid mQ 0.1: unknown parameter"));
+        entries.last_mut().expect("mQ").0 = "mD".into();
+        assert!(UncertainParams::from_entries(&entries, true)
+            .unwrap_err()
+            .to_string()
+            .starts_with("invalid mD 0.1: a flywheel D is not in the model"));
+        entries.pop();
+        entries[0].2 = -1.0;
+        assert_eq!(
+            UncertainParams::from_entries(&entries, true).unwrap_err().to_string(),
+            "invalid w 1.02: its standard deviation -1.0 must be a finite number of at least zero"
+        );
     }
 
     #[test]
