@@ -105,10 +105,18 @@ impl StateRate {
         (o[0], o[1])
     }
 
-    /// The pitch projected onto the contact constraint by one Newton step from `pitch`.
+    /// The pitch projected onto the contact constraint by one Newton step from `pitch`, and
+    /// a second one when the first moved it by more than $10^{-7}$ rad (a loose tolerance's
+    /// drift, where one step leaves a residual above $10^{-12}$ m).
     pub fn project(&self, lean: f64, pitch: f64, steer: f64) -> f64 {
         let (h, dh) = self.contact(lean, pitch, steer);
-        pitch - h / dh
+        let step = h / dh;
+        let once = pitch - step;
+        if step.abs() <= 1e-7 {
+            return once;
+        }
+        let (h, dh) = self.contact(lean, once, steer);
+        once - h / dh
     }
 
     /// The state derivative at `y` ([`LEN`] components), with `torque` $(T_\varphi,
