@@ -870,7 +870,7 @@ impl WhippleNonlinear {
                     Watched::Lean => y[3],
                     Watched::Steer => y[4],
                     Watched::Yaw => y[2],
-                    Watched::Pitch => f.project(y[3], y[rate::PITCH], y[4]),
+                    Watched::Pitch => f.project(y[3], y[rate::PITCH], y[4])?,
                     Watched::LeanRate => y[7],
                     Watched::SteerRate => y[8],
                     Watched::X => y[0],
@@ -890,7 +890,7 @@ impl WhippleNonlinear {
                     Point::Step => {
                         // The pitch the right-hand side uses at this state: the integrated one
                         // projected by one Newton step.
-                        let pitch = f.project(s.lean, y[rate::PITCH], s.steer);
+                        let pitch = f.project(s.lean, y[rate::PITCH], s.steer)?;
                         let c = Configuration {
                             lean: s.lean,
                             pitch,

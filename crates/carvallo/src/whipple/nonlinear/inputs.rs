@@ -635,20 +635,20 @@ impl Run<'_> {
     }
 
     /// The configuration of `y`: its pitch projected onto the contact constraint.
-    fn configuration(&self, y: &Y) -> Configuration {
-        Configuration {
+    fn configuration(&self, y: &Y) -> Result<Configuration, NonlinearError> {
+        Ok(Configuration {
             lean: y[3],
-            pitch: self.f.project(y[3], y[rate::PITCH], y[4]),
+            pitch: self.f.project(y[3], y[rate::PITCH], y[4])?,
             steer: y[4],
             lean_rate: y[7],
             steer_rate: y[8],
             rear_wheel_rate: y[9],
-        }
+        })
     }
 
     /// Records the energy balance and the contact residual of the state `y`.
-    fn balance(&self, y: &Y) {
-        let c = self.configuration(y);
+    fn balance(&self, y: &Y) -> Result<(), NonlinearError> {
+        let c = self.configuration(y)?;
         let mut d = self.diagnostics.get();
         d.max_contact_residual =
             d.max_contact_residual.max(self.f.contact(c.lean, c.pitch, c.steer).0.abs());
@@ -656,6 +656,7 @@ impl Run<'_> {
         d.max_energy_change = d.max_energy_change.max((e - self.e0).abs());
         d.energy_drift = d.energy_drift.max((e - self.e0 - y[WORK]).abs());
         self.diagnostics.set(d);
+        Ok(())
     }
 
     /// The sample of `y` at time `t`.
@@ -671,7 +672,7 @@ impl Run<'_> {
     /// The impulse `j` = $(J_\varphi, J_\delta)$ applied to `y`: the speeds jump by
     /// $M_3^{-1}(J_\varphi, J_\delta, 0)$ and the work by $J\cdot(u_- + u_+)/2$.
     fn jump(&self, y: Y, j: [f64; 2]) -> Result<Y, NonlinearError> {
-        let c = self.configuration(&y);
+        let c = self.configuration(&y)?;
         let m = self.bike.kane_terms(&c).mass;
         let du = Matrix3::from_fn(|r, k| m[r][k])
             .lu()
@@ -683,7 +684,7 @@ impl Run<'_> {
         out[8] += du[1];
         out[9] += du[2];
         out[WORK] += j[0] * (y[7] + out[7]) / 2.0 + j[1] * (y[8] + out[8]) / 2.0;
-        self.balance(&out);
+        self.balance(&out)?;
         Ok(out)
     }
 
@@ -715,7 +716,7 @@ impl Run<'_> {
                     Watched::Lean => s.lean,
                     Watched::Steer => s.steer,
                     Watched::Yaw => s.yaw,
-                    Watched::Pitch => self.f.project(s.lean, y[rate::PITCH], s.steer),
+                    Watched::Pitch => self.f.project(s.lean, y[rate::PITCH], s.steer)?,
                     Watched::LeanRate => s.lean_rate,
                     Watched::SteerRate => s.steer_rate,
                     Watched::X => s.x,
@@ -729,7 +730,7 @@ impl Run<'_> {
         let mut observe = |kind: Point, t: f64, y: &Y| -> Result<(), NonlinearError> {
             match kind {
                 Point::Step => {
-                    self.balance(y);
+                    self.balance(y)?;
                 }
                 Point::Sample(i) => {
                     let global = k0 + i;

@@ -105,18 +105,31 @@ impl StateRate {
         (o[0], o[1])
     }
 
-    /// The pitch projected onto the contact constraint by one Newton step from `pitch`, and
-    /// a second one when the first moved it by more than $10^{-7}$ rad (a loose tolerance's
-    /// drift, where one step leaves a residual above $10^{-12}$ m).
-    pub fn project(&self, lean: f64, pitch: f64, steer: f64) -> f64 {
+    /// The pitch projected onto the contact constraint by one Newton step from `pitch`; when
+    /// that step is longer than $10^{-7}$ rad (a loose tolerance's drift, where one step
+    /// would leave a residual above $10^{-12}$ m) Newton continues to convergence.
+    ///
+    /// # Errors
+    /// [`NonlinearError::NoContact`] when Newton's method does not converge in 50 steps.
+    pub fn project(&self, lean: f64, pitch: f64, steer: f64) -> Result<f64, NonlinearError> {
         let (h, dh) = self.contact(lean, pitch, steer);
         let step = h / dh;
-        let once = pitch - step;
+        let mut th = pitch - step;
         if step.abs() <= 1e-7 {
-            return once;
+            return Ok(th);
         }
-        let (h, dh) = self.contact(lean, once, steer);
-        once - h / dh
+        for _ in 0..50 {
+            let (h, dh) = self.contact(lean, th, steer);
+            let step = h / dh;
+            if !step.is_finite() {
+                break;
+            }
+            th -= step;
+            if step.abs() <= 1e-14 * (1.0 + th.abs()) {
+                return Ok(th);
+            }
+        }
+        Err(NonlinearError::NoContact { lean, steer })
     }
 
     /// The state derivative at `y` ([`LEN`] components), with `torque` $(T_\varphi,
@@ -134,7 +147,7 @@ impl StateRate {
     ) -> Result<Rates, NonlinearError> {
         let (lean, steer, yaw) = (y[3], y[4], y[2]);
         let u = [y[7], y[8], y[9]];
-        let pitch = self.project(lean, y[PITCH], steer);
+        let pitch = self.project(lean, y[PITCH], steer)?;
         let mut a = self.rate;
         for (slot, v) in self.rate_slots.iter().zip([lean, pitch, steer, u[0], u[1], u[2]]) {
             if let Some(x) = a.get_mut(*slot) {
