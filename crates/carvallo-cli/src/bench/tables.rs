@@ -36,6 +36,7 @@ use rayon::prelude::*;
 
 use carvallo::numerics::quartic;
 use carvallo::numerics::rng::SplitMix64;
+use carvallo::whipple::nonlinear::rate::{self, project_scene, state_rate_scene, StateRate};
 use carvallo::whipple::nonlinear::{dynamics_scene, Configuration, WhippleNonlinear};
 use carvallo::whipple::stability::{self, reference_speeds, EigenGrid};
 use carvallo::whipple::sweep::{self, Method};
@@ -957,6 +958,35 @@ fn scene_rows(cfg: &Config, rows: &mut Vec<Row>) {
             dynamics_scene::OP_COUNT,
             t,
             "WhippleNonlinear::accelerations (M3, f3, dependent rates and accelerations, LU)",
+        );
+        // What an integrator calls: state in, state derivative out (the pitch a state,
+        // projected by one Newton step; M3, f3 and the dependent rates; the closed-form solve;
+        // the kinematic rates), against the kernel it evaluates.
+        let f = StateRate::new(&WhippleParams::benchmark());
+        let y: [f64; rate::LEN] =
+            [0.0, 0.0, 0.0, lean, steer, 0.0, 0.0, 0.2, -0.1, -5.0 / 0.3, c.pitch];
+        let a = nl_arr!(state_rate_scene);
+        let kernel = time_ns(mt, || state_rate_scene::eval_array(black_box(&a)));
+        add(
+            "bicycle (c) state -> state derivative",
+            "kernel only",
+            state_rate_scene::OP_COUNT,
+            kernel,
+            "M3, f3, dependent rates, rear contact speed: the kernel the right-hand side evaluates",
+        );
+        let t = time_ns(mt, || f.eval(black_box(&y)));
+        add(
+            "bicycle (c) state -> state derivative",
+            "whole",
+            state_rate_scene::OP_COUNT + project_scene::OP_COUNT,
+            t,
+            &format!(
+                "StateRate::eval: pitch projected by one Newton step ({} ops), the kernel, closed-form \
+                 3x3 solve, kinematic rates: {:.2}x the kernel (target <= 1.3x); compare PyDy's \
+                 M, F + 6x6 LU + kinematic rates in scripts/pydy-c-peer",
+                project_scene::OP_COUNT,
+                t / kernel
+            ),
         );
     }
 }

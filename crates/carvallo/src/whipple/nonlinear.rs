@@ -42,6 +42,9 @@ use crate::numerics::integrate::{self, Grid, IntegrateError, Integration, Point}
 use crate::whipple::{BicycleDesign, WhippleError, WhippleParams};
 
 pub mod inputs;
+pub mod rate;
+
+use self::rate::StateRate;
 
 pub use self::inputs::{
     Feedback, ForcedDiagnostics, ForcedSample, ForcedTrajectory, Impulse, InputError, Inputs,
@@ -700,28 +703,6 @@ impl WhippleNonlinear {
         })
     }
 
-    /// Time derivative of the state, and the pitch used.
-    fn rhs(&self, s: &State, guess: f64) -> Result<([f64; 10], f64), NonlinearError> {
-        let c = self.configuration(s, guess)?;
-        let a = self.accelerations(&c)?;
-        let (sy, cy) = s.yaw.sin_cos();
-        Ok((
-            [
-                a.rear_speed * cy,
-                a.rear_speed * sy,
-                a.dependent_rates[1],
-                s.lean_rate,
-                s.steer_rate,
-                s.rear_wheel_rate,
-                a.dependent_rates[2],
-                a.independent[0],
-                a.independent[1],
-                a.independent[2],
-            ],
-            c.pitch,
-        ))
-    }
-
     fn sample(&self, t: f64, s: &State, guess: f64) -> Result<Sample, NonlinearError> {
         let c = self.configuration(s, guess)?;
         let a = self.accelerations(&c)?;
@@ -877,67 +858,66 @@ impl WhippleNonlinear {
         check_run(&start, how, stops)?;
         let pitch0 = self.pitch(start.lean, start.steer, 0.0)?;
         let (e0, _) = self.observe(&self.configuration(&start, pitch0)?);
-        // The Newton guess: the last pitch solved by a right-hand side evaluation or a step,
-        // and the first one solved since the last accepted step (the guess for its pitch).
-        let guess = std::cell::Cell::new(pitch0);
-        let first = std::cell::Cell::new(f64::NAN);
+        let f = StateRate::new(&self.params);
         let (mut drift, mut residual) = (0.0f64, 0.0f64);
-        let mut rhs = |_t: f64, y: &[f64; 10]| -> Result<[f64; 10], NonlinearError> {
-            let (d, p) = self.rhs(&State::from_array(*y), guess.get())?;
-            guess.set(p);
-            if first.get().is_nan() {
-                first.set(p);
-            }
-            Ok(d)
-        };
+        let mut rhs = |_t: f64, y: &[f64; rate::LEN]| f.eval(y);
         let mut watchers: [_; integrate::MAX_EVENTS] = std::array::from_fn(|j| {
             let stop = stops.get(j).copied();
-            let guess = &guess;
-            move |y: &[f64; 10]| -> Result<f64, NonlinearError> {
+            let f = &f;
+            move |y: &[f64; rate::LEN]| -> Result<f64, NonlinearError> {
                 let Some(stop) = stop else { return Ok(f64::NAN) };
-                let s = State::from_array(*y);
                 let v = match stop.quantity {
-                    Watched::Lean => s.lean,
-                    Watched::Steer => s.steer,
-                    Watched::Yaw => s.yaw,
-                    Watched::Pitch => self.pitch(s.lean, s.steer, guess.get())?,
-                    Watched::LeanRate => s.lean_rate,
-                    Watched::SteerRate => s.steer_rate,
-                    Watched::X => s.x,
-                    Watched::Y => s.y,
+                    Watched::Lean => y[3],
+                    Watched::Steer => y[4],
+                    Watched::Yaw => y[2],
+                    Watched::Pitch => f.project(y[3], y[rate::PITCH], y[4])?,
+                    Watched::LeanRate => y[7],
+                    Watched::SteerRate => y[8],
+                    Watched::X => y[0],
+                    Watched::Y => y[1],
                 };
                 Ok(if stop.magnitude { v.abs() - stop.value } else { v - stop.value })
             }
         });
-        let mut events: [&mut integrate::EventFn<'_, 10, NonlinearError>; integrate::MAX_EVENTS] =
-            watchers.each_mut().map(|w| w as &mut integrate::EventFn<'_, 10, NonlinearError>);
-        let mut observe = |kind: Point, t: f64, y: &[f64; 10]| -> Result<(), NonlinearError> {
-            let s = State::from_array(*y);
-            match kind {
-                Point::Step => {
-                    let g = if first.get().is_nan() { guess.get() } else { first.get() };
-                    let c = self.configuration(&s, g)?;
-                    guess.set(c.pitch);
-                    first.set(f64::NAN);
-                    residual = residual.max(self.contact(c.lean, c.pitch, c.steer).0.abs());
-                    let (e, _) = self.observe(&c);
-                    drift = drift.max((e - e0).abs());
+        let mut events: [&mut integrate::EventFn<'_, { rate::LEN }, NonlinearError>;
+            integrate::MAX_EVENTS] = watchers
+            .each_mut()
+            .map(|w| w as &mut integrate::EventFn<'_, { rate::LEN }, NonlinearError>);
+        let mut observe =
+            |kind: Point, t: f64, y: &[f64; rate::LEN]| -> Result<(), NonlinearError> {
+                let s = rate::state_of(y);
+                match kind {
+                    Point::Step => {
+                        // The pitch the right-hand side uses at this state: the integrated one
+                        // projected by one Newton step.
+                        let pitch = f.project(s.lean, y[rate::PITCH], s.steer)?;
+                        let c = Configuration {
+                            lean: s.lean,
+                            pitch,
+                            steer: s.steer,
+                            lean_rate: s.lean_rate,
+                            steer_rate: s.steer_rate,
+                            rear_wheel_rate: s.rear_wheel_rate,
+                        };
+                        residual = residual.max(f.contact(c.lean, c.pitch, c.steer).0.abs());
+                        let (e, _) = self.observe(&c);
+                        drift = drift.max((e - e0).abs());
+                    }
+                    Point::Sample(_) | Point::Event => keep(t, &s, y[rate::PITCH])?,
                 }
-                Point::Sample(_) | Point::Event => keep(t, &s, guess.get())?,
-            }
-            Ok(())
-        };
+                Ok(())
+            };
         let outcome = integrate::integrate(
             how,
             grid,
-            start.to_array(),
+            rate::state_with_pitch(&start, pitch0),
             &mut rhs,
             &mut events[..stops.len()],
             &mut observe,
         )?;
         Ok(Final {
             t: outcome.end.0,
-            state: State::from_array(outcome.end.1),
+            state: rate::state_of(&outcome.end.1),
             event: outcome.event.map(|c| (c.index, c.t)),
             stats: outcome.stats,
             diagnostics: Diagnostics { energy_drift: drift, max_contact_residual: residual },

@@ -71,6 +71,7 @@ use std::fmt;
 
 use nalgebra::{Matrix3, Vector3};
 
+use super::rate::{self, StateRate};
 use super::{
     check_run, dynamics_scene, Configuration, NonlinearError, Sample, State, Stop, Watched,
     WhippleNonlinear,
@@ -490,59 +491,28 @@ pub struct ForcedDiagnostics {
 /// A driven run ([`WhippleNonlinear::simulate_forced`]).
 pub type ForcedTrajectory = Trajectory<ForcedSample, ForcedDiagnostics>;
 
-/// What a driven right-hand side evaluation gives.
-struct Rates {
-    /// $\dot u$.
-    accelerations: [f64; 3],
-    /// Pitch, yaw and front wheel rates.
-    dependent: [f64; 3],
-    /// The rear contact's speed.
-    speed: f64,
-    /// The torques applied.
-    torque: [f64; 2],
-}
+/// The state of a driven run: the eleven of [`rate::LEN`] (the ten of [`State`] and the
+/// pitch) and the work.
+type Y = [f64; 12];
 
-/// The state of a driven run: the ten of [`State`] and the work.
-type Y = [f64; 11];
+/// The index of the work in [`Y`].
+const WORK: usize = 11;
 
 fn state_of(y: &Y) -> State {
     State::from_array(std::array::from_fn(|i| y[i]))
 }
 
-fn y_of(s: &State, work: f64) -> Y {
-    let a = s.to_array();
-    std::array::from_fn(|i| if i < 10 { a[i] } else { work })
+/// The state of the right-hand side (without the work).
+fn plain(y: &Y) -> [f64; rate::LEN] {
+    std::array::from_fn(|i| y[i])
+}
+
+fn y_of(s: &State, pitch: f64, work: f64) -> Y {
+    let a = rate::state_with_pitch(s, pitch);
+    std::array::from_fn(|i| if i < WORK { a[i] } else { work })
 }
 
 impl WhippleNonlinear {
-    /// The accelerations $\dot u$ of $M_3\dot u = f_3 + (T_\varphi, T_\delta, 0)$ at `c`, the
-    /// dependent rates, the rear contact speed and the torques, those given by `torque` of the
-    /// rear contact speed.
-    fn forced_rates(
-        &self,
-        c: &Configuration,
-        torque: &mut dyn FnMut(f64) -> Result<[f64; 2], NonlinearError>,
-    ) -> Result<Rates, NonlinearError> {
-        let a = self.args(dynamics_scene::PARAMS, dynamics_scene::INPUTS, c);
-        let o = dynamics_scene::eval(&dynamics_scene::Args::from_array(a));
-        let tau = torque(o.rear_speed)?;
-        let m = Matrix3::new(
-            o.m3_11, o.m3_12, o.m3_13, o.m3_12, o.m3_22, o.m3_23, o.m3_13, o.m3_23, o.m3_33,
-        );
-        let f = Vector3::new(o.f3_1 + tau[0], o.f3_2 + tau[1], o.f3_3);
-        let ud = m
-            .lu()
-            .solve(&f)
-            .filter(|x| x.iter().all(|v| v.is_finite()))
-            .ok_or(NonlinearError::SingularMassMatrix { lean: c.lean, steer: c.steer })?;
-        Ok(Rates {
-            accelerations: [ud[0], ud[1], ud[2]],
-            dependent: [o.thetad, o.psid, o.thetaFd],
-            speed: o.rear_speed,
-            torque: tau,
-        })
-    }
-
     /// The accelerations at `c` with the generalised forces $(T_\varphi, T_\delta)$ added to
     /// the lean and steer rows of $f_3$: $\ddot\varphi$, $\ddot\delta$, $\ddot\theta_R$.
     ///
@@ -553,7 +523,13 @@ impl WhippleNonlinear {
         c: &Configuration,
         torque: [f64; 2],
     ) -> Result<[f64; 3], NonlinearError> {
-        Ok(self.forced_rates(c, &mut |_| Ok(torque))?.accelerations)
+        let a = self.args(dynamics_scene::PARAMS, dynamics_scene::INPUTS, c);
+        let o = dynamics_scene::eval(&dynamics_scene::Args::from_array(a));
+        rate::solve_symmetric(
+            [o.m3_11, o.m3_12, o.m3_13, o.m3_22, o.m3_23, o.m3_33],
+            [o.f3_1 + torque[0], o.f3_2 + torque[1], o.f3_3],
+        )
+        .ok_or(NonlinearError::SingularMassMatrix { lean: c.lean, steer: c.steer })
     }
 
     /// Integrates from `start` over `grid` by `how` driven by `inputs`, as
@@ -586,12 +562,12 @@ impl WhippleNonlinear {
             how,
             grid,
             e0,
-            guess: Cell::new(pitch0),
+            f: StateRate::new(&self.params),
             mid: Cell::new(0.0),
             diagnostics: Cell::new(ForcedDiagnostics::default()),
             stats: Cell::new(Stats::default()),
         };
-        let mut y = y_of(&start, 0.0);
+        let mut y = y_of(&start, pitch0, 0.0);
         let mut k0 = 0;
         let mut event = None;
         // Segments between the breaks; the last ends at the grid's end.
@@ -610,7 +586,7 @@ impl WhippleNonlinear {
             k0 = k1;
         }
         trajectory.diagnostics = run.diagnostics.get();
-        trajectory.diagnostics.work = y[10];
+        trajectory.diagnostics.work = y[WORK];
         trajectory.stats = run.stats.get();
         trajectory.event = event;
         Ok(trajectory)
@@ -625,8 +601,8 @@ struct Run<'a> {
     how: &'a Integration,
     grid: &'a Grid,
     e0: f64,
-    /// The Newton guess: the last pitch solved.
-    guess: Cell<f64>,
+    /// The right-hand side.
+    f: StateRate,
     /// The middle of the segment being integrated (s).
     mid: Cell<f64>,
     diagnostics: Cell<ForcedDiagnostics>,
@@ -641,61 +617,62 @@ impl Run<'_> {
         Ok(self.inputs.torque_when(when, x, speed)?)
     }
 
-    /// The derivative of `y` at time `t`, and the pitch used.
-    fn rhs(&self, t: f64, y: &Y) -> Result<(Y, f64), NonlinearError> {
+    /// The derivative of `y` at time `t`.
+    fn rhs(&self, t: f64, y: &Y) -> Result<Y, NonlinearError> {
         let s = state_of(y);
-        let c = self.bike.configuration(&s, self.guess.get())?;
-        let Rates { accelerations: ud, dependent: dep, speed, torque: tau } =
-            self.bike.forced_rates(&c, &mut |v| self.torque(t, &s, v))?;
-        let (sy, cy) = s.yaw.sin_cos();
-        Ok((
-            [
-                speed * cy,
-                speed * sy,
-                dep[1],
-                s.lean_rate,
-                s.steer_rate,
-                s.rear_wheel_rate,
-                dep[2],
-                ud[0],
-                ud[1],
-                ud[2],
-                tau[0] * s.lean_rate + tau[1] * s.steer_rate,
-            ],
-            c.pitch,
-        ))
+        let mut tau = [0.0, 0.0];
+        let r = self.f.rates_with(&plain(y), &mut |v| {
+            tau = self.torque(t, &s, v)?;
+            Ok(tau)
+        })?;
+        Ok(std::array::from_fn(|i| {
+            if i < WORK {
+                r.derivative[i]
+            } else {
+                tau[0] * s.lean_rate + tau[1] * s.steer_rate
+            }
+        }))
     }
 
-    /// Records the energy balance and the contact residual of the state `y` (pitch solved
-    /// from `guess`); returns the pitch.
-    fn balance(&self, y: &Y, guess: f64) -> Result<f64, NonlinearError> {
-        let s = state_of(y);
-        let c = self.bike.configuration(&s, guess)?;
+    /// The configuration of `y`: its pitch projected onto the contact constraint.
+    fn configuration(&self, y: &Y) -> Result<Configuration, NonlinearError> {
+        Ok(Configuration {
+            lean: y[3],
+            pitch: self.f.project(y[3], y[rate::PITCH], y[4])?,
+            steer: y[4],
+            lean_rate: y[7],
+            steer_rate: y[8],
+            rear_wheel_rate: y[9],
+        })
+    }
+
+    /// Records the energy balance and the contact residual of the state `y`.
+    fn balance(&self, y: &Y) -> Result<(), NonlinearError> {
+        let c = self.configuration(y)?;
         let mut d = self.diagnostics.get();
         d.max_contact_residual =
-            d.max_contact_residual.max(self.bike.contact(c.lean, c.pitch, c.steer).0.abs());
+            d.max_contact_residual.max(self.f.contact(c.lean, c.pitch, c.steer).0.abs());
         let (e, _) = self.bike.observe(&c);
         d.max_energy_change = d.max_energy_change.max((e - self.e0).abs());
-        d.energy_drift = d.energy_drift.max((e - self.e0 - y[10]).abs());
+        d.energy_drift = d.energy_drift.max((e - self.e0 - y[WORK]).abs());
         self.diagnostics.set(d);
-        Ok(c.pitch)
+        Ok(())
     }
 
     /// The sample of `y` at time `t`.
     fn sample(&self, t: f64, y: &Y) -> Result<ForcedSample, NonlinearError> {
         let s = state_of(y);
-        let sample = self.bike.sample(t, &s, self.guess.get())?;
+        let sample = self.bike.sample(t, &s, y[rate::PITCH])?;
         // The sums of no terms are -0.0, the neutral element the right-hand side adds to
         // f3; the samples show +0.0.
         let [a, b] = self.torque(t, &s, sample.speed)?;
-        Ok(ForcedSample { sample, torque: [a + 0.0, b + 0.0], work: y[10] })
+        Ok(ForcedSample { sample, torque: [a + 0.0, b + 0.0], work: y[WORK] })
     }
 
     /// The impulse `j` = $(J_\varphi, J_\delta)$ applied to `y`: the speeds jump by
     /// $M_3^{-1}(J_\varphi, J_\delta, 0)$ and the work by $J\cdot(u_- + u_+)/2$.
     fn jump(&self, y: Y, j: [f64; 2]) -> Result<Y, NonlinearError> {
-        let s = state_of(&y);
-        let c = self.bike.configuration(&s, self.guess.get())?;
+        let c = self.configuration(&y)?;
         let m = self.bike.kane_terms(&c).mass;
         let du = Matrix3::from_fn(|r, k| m[r][k])
             .lu()
@@ -706,8 +683,8 @@ impl Run<'_> {
         out[7] += du[0];
         out[8] += du[1];
         out[9] += du[2];
-        out[10] += j[0] * (y[7] + out[7]) / 2.0 + j[1] * (y[8] + out[8]) / 2.0;
-        self.guess.set(self.balance(&out, c.pitch)?);
+        out[WORK] += j[0] * (y[7] + out[7]) / 2.0 + j[1] * (y[8] + out[8]) / 2.0;
+        self.balance(&out)?;
         Ok(out)
     }
 
@@ -729,16 +706,7 @@ impl Run<'_> {
         let local = Grid { h: grid.h, n: k1 - k0, every: if whole { grid.every } else { 1 } };
         let offset = grid.time(k0);
         self.mid.set((grid.time(k0) + grid.time(k1)) / 2.0);
-        // The first pitch solved since the last accepted step (the guess for its pitch).
-        let first = Cell::new(f64::NAN);
-        let mut rhs = |t: f64, y: &Y| -> Result<Y, NonlinearError> {
-            let (d, p) = self.rhs(offset + t, y)?;
-            self.guess.set(p);
-            if first.get().is_nan() {
-                first.set(p);
-            }
-            Ok(d)
-        };
+        let mut rhs = |t: f64, y: &Y| -> Result<Y, NonlinearError> { self.rhs(offset + t, y) };
         let mut watchers: [_; integrate::MAX_EVENTS] = std::array::from_fn(|j| {
             let stop = self.stops.get(j).copied();
             move |y: &Y| -> Result<f64, NonlinearError> {
@@ -748,7 +716,7 @@ impl Run<'_> {
                     Watched::Lean => s.lean,
                     Watched::Steer => s.steer,
                     Watched::Yaw => s.yaw,
-                    Watched::Pitch => self.bike.pitch(s.lean, s.steer, self.guess.get())?,
+                    Watched::Pitch => self.f.project(s.lean, y[rate::PITCH], s.steer)?,
                     Watched::LeanRate => s.lean_rate,
                     Watched::SteerRate => s.steer_rate,
                     Watched::X => s.x,
@@ -757,14 +725,12 @@ impl Run<'_> {
                 Ok(if stop.magnitude { v.abs() - stop.value } else { v - stop.value })
             }
         });
-        let mut events: [&mut integrate::EventFn<'_, 11, NonlinearError>; integrate::MAX_EVENTS] =
-            watchers.each_mut().map(|w| w as &mut integrate::EventFn<'_, 11, NonlinearError>);
+        let mut events: [&mut integrate::EventFn<'_, 12, NonlinearError>; integrate::MAX_EVENTS] =
+            watchers.each_mut().map(|w| w as &mut integrate::EventFn<'_, 12, NonlinearError>);
         let mut observe = |kind: Point, t: f64, y: &Y| -> Result<(), NonlinearError> {
             match kind {
                 Point::Step => {
-                    let g = if first.get().is_nan() { self.guess.get() } else { first.get() };
-                    self.guess.set(self.balance(y, g)?);
-                    first.set(f64::NAN);
+                    self.balance(y)?;
                 }
                 Point::Sample(i) => {
                     let global = k0 + i;

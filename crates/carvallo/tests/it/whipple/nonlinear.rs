@@ -273,8 +273,15 @@ fn adaptive_runs_reach_a_cross_checked_reference() {
             let e = error(&tr, &reference);
             let end = final_error(&tr, &reference);
             eprintln!("{method} rtol {rtol:e}: error {e:.2e}, at the end {end:.2e}, {:?}, residual {:.1e}", tr.stats, tr.max_contact_residual);
-            // DOPRI5's dense output is of order 4: between its steps it errs more.
-            let dense = if method == Method::Dopri5 { 100.0 } else { 10.0 };
+            // DOPRI5's dense output is of order 4: between its steps it errs more. DOP853's is
+            // of order 7: since the pitch joined the state (its step control's norm over 11
+            // components), its dense error at rtol 1e-6 is 1.17e-5 (5.7e-6 before), at its
+            // unchanged 396 evaluations and a final error of 2.0e-8.
+            let dense = match method {
+                Method::Dopri5 => 100.0,
+                Method::Dop853 => 20.0,
+                _ => 10.0,
+            };
             assert!(end <= 10.0 * rtol, "{method} rtol {rtol}: error at the end {end}");
             assert!(e <= dense * rtol, "{method} rtol {rtol}: error {e}");
             assert!(tr.max_contact_residual <= 1e-14, "{}", tr.max_contact_residual);
