@@ -20,7 +20,8 @@ fn files() -> &'static [(String, String)] {
                 .map(|e| e.expect("entry").path())
                 .collect();
             dirs.sort();
-            for dir in dirs {
+            // Some bicycles and riders are shipped as raw measurements only (no Parameters).
+            for dir in dirs.into_iter().filter(|d| d.join("Parameters").is_dir()) {
                 let mut paths: Vec<_> = std::fs::read_dir(dir.join("Parameters"))
                     .expect("Parameters")
                     .map(|e| e.expect("entry").path())
