@@ -82,6 +82,20 @@ pub fn eval(
     inputs: &[f64],
     precision_bits: usize,
 ) -> Result<Vec<BigFloat>, IrError> {
+    let prec = precision_bits;
+    let params: Vec<BigFloat> = params.iter().map(|&x| from_f64(x, prec)).collect();
+    let inputs: Vec<BigFloat> = inputs.iter().map(|&x| from_f64(x, prec)).collect();
+    eval_big(p, &params, &inputs, prec)
+}
+
+/// Like [`eval`], with parameters and inputs given in high precision (for finite differences
+/// and Newton steps finer than an `f64` can hold).
+pub fn eval_big(
+    p: &Program,
+    params: &[BigFloat],
+    inputs: &[BigFloat],
+    precision_bits: usize,
+) -> Result<Vec<BigFloat>, IrError> {
     p.validate()?;
     if !(MIN_PRECISION_BITS..=MAX_PRECISION_BITS).contains(&precision_bits) {
         return Err(IrError::invalid(format!(
@@ -99,8 +113,6 @@ pub fn eval(
     let mut cc = Consts::new()
         .map_err(|e| IrError::invalid(format!("cannot set up astro-float constants: {e:?}")))?;
     let from = |x: f64| from_f64(x, prec);
-    let params: Vec<BigFloat> = params.iter().map(|&x| from(x)).collect();
-    let inputs: Vec<BigFloat> = inputs.iter().map(|&x| from(x)).collect();
     let mut vals: Vec<BigFloat> = Vec::with_capacity(p.insts.len());
     for inst in &p.insts {
         let get = |v: Value| -> &BigFloat {
