@@ -10,6 +10,7 @@
 
 use std::sync::atomic::AtomicUsize;
 
+use crate::guard::{arg, interruptible, read_text, within};
 use carvallo::numerics::integrate::{Grid, Integration};
 use carvallo::parameter_text::{Rider, UncertainParams, RIDER_NAMES};
 use carvallo::sweep::Method;
@@ -20,7 +21,6 @@ use numpy::{
     Complex64, PyArray1, PyArray2, PyArrayMethods, PyReadonlyArray1, PyReadonlyArray2,
     PyUntypedArrayMethods,
 };
-use crate::guard::{arg, interruptible, read_text, within};
 use pyo3::prelude::*;
 use pyo3::types::{IntoPyDict, PyDict, PyList};
 
@@ -204,9 +204,7 @@ fn parameters_from_raw<'py>(
     py: Python<'py>,
     path: &str,
 ) -> PyResult<(Bound<'py, PyDict>, Bound<'py, PyDict>)> {
-    let text = std::fs::read_to_string(path).map_err(|e| {
-        err(format!("cannot read raw measurement file `{path}`: {}", e.to_string().to_lowercase()))
-    })?;
+    let text = crate::guard::read_text(path, "raw measurement")?;
     let raw = carvallo::whipple::raw::benchmark_from_measured(&text)
         .map_err(|e| err(format!("invalid raw measurement file `{path}`: {e}")))?;
     let u = raw.params;
