@@ -403,7 +403,20 @@ fn frequency_response<'py>(
     let output: Output = output
         .parse()
         .map_err(|e: carvallo::whipple::transfer::UnknownSignal| err(e.to_string()))?;
-    let pts = bike.frequency_response(&speeds, &omegas, input, output);
+    // On a worker, so that Ctrl-C is seen during millions of points: the speeds one at a time
+    // and their frequencies in blocks (each point depends only on its speed and frequency).
+    let pts = interruptible(py, |stop| {
+        let mut pts = Vec::with_capacity(speeds.len() * omegas.len());
+        for v in &speeds {
+            for block in omegas.chunks(1 << 14) {
+                if stop.load(std::sync::atomic::Ordering::Relaxed) {
+                    return pts;
+                }
+                pts.extend(bike.frequency_response(&[*v], block, input, output));
+            }
+        }
+        pts
+    })?;
     let shape = [speeds.len(), omegas.len()];
     let g: Vec<Complex64> = pts.iter().map(|p| Complex64::new(p.re, p.im)).collect();
     let db: Vec<f64> = pts.iter().map(|p| p.magnitude_db).collect();
