@@ -726,6 +726,10 @@ fn windows<'py>(
     if validate {
         let (mut first, mut broken) = (None, 0usize);
         for (i, row) in rows.iter().enumerate() {
+            // Millions of rows take seconds: Ctrl-C is seen between blocks of them.
+            if i % (1 << 14) == 0 {
+                py.check_signals()?;
+            }
             let warnings = if strict {
                 WhippleParams::from_values(*row).map(|_| Vec::new())
             } else {
