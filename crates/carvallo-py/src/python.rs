@@ -308,7 +308,7 @@ fn state_space<'py>(
 fn time_response<'py>(
     py: Python<'py>,
     params: &Bound<'py, PyAny>,
-    speed: f64,
+    #[pyo3(from_py_with = arg::speed)] speed: f64,
     times: &Bound<'py, PyAny>,
     kind: &str,
     input: &str,
@@ -353,7 +353,20 @@ fn time_response<'py>(
             )))
         }
     };
-    let xs = bike.time_response(speed, excitation, &times).map_err(|e| err(e.to_string()))?;
+    // The states, then the flat copy.
+    within(&format!("{} times", times.len()), times.len() as f64, 2.0 * 4.0 * 8.0)?;
+    // On a worker, so that Ctrl-C is seen during millions of times (each is independent).
+    let xs = interruptible(py, |stop| {
+        let mut xs = Vec::with_capacity(times.len());
+        for block in times.chunks(1 << 12) {
+            if stop.load(std::sync::atomic::Ordering::Relaxed) {
+                break;
+            }
+            xs.extend(bike.time_response(speed, excitation, block)?);
+        }
+        Ok(xs)
+    })?
+    .map_err(|e: carvallo::ParameterError| err(e.to_string()))?;
     let n = xs.len();
     let flat: Vec<f64> = xs.into_iter().flatten().collect();
     Ok(PyArray1::from_vec(py, flat).reshape([n, 4])?.into_any())

@@ -66,6 +66,9 @@ CHILD = textwrap.dedent(
         "state_matrix": dict(params=B, speed=5.0),
         "state_space": dict(params=B, speeds=[1.0, 5.0]),
         "modes": dict(params=B, speeds=[5.0]),
+        "parameters_from_raw": dict(path=FIXTURE.replace(
+            "benchmark-1pct.txt", "bicycleparameters/bicycles/Browser/RawData/BrowserMeasured.txt")),
+        "time_response": dict(params=B, speed=5.0, times=[0.0, 0.5, 1.0], kind="step"),
         "frequency_response": dict(params=B, speeds=[5.0], omegas=[1.0, 10.0], input="steer",
                                    output="roll"),
         "closed_loop_window": dict(params=B, k={"k_roll_roll": 1.0}, vmin=0.0, vmax=10.0),
@@ -91,7 +94,7 @@ CHILD = textwrap.dedent(
         """The bad values for the argument `arg`, the same list in every run."""
         out = [-1, 0, 2**62, 2**64, 10**9, 10**12, 10**400, float("nan"), float("inf"),
                -float("inf"), 1e308, -1e308, 5e-324, "x", None, True, [], b"\xff"]
-        if arg in ("speeds", "omegas", "speed", "lean0s", "steer_rates"):
+        if arg in ("speeds", "omegas", "speed", "lean0s", "steer_rates", "times"):
             out += ["np.ones(10**7)", [1.0, 10**400], [float("nan")]]
         if arg in ("params", "sigma", "rider", "wheel", "k"):
             out += ["dict(B, c=-1.0)", "dict(B, c=10**400)", {}, {"c": "x"}]
@@ -187,6 +190,9 @@ ISSUE = [
     ("closed_loop_window", "vmax", 6),
     ("load_parameters", "path", 18),
     ("windows", "designs", 18),
+    # Not in the issue, added since: an endless device as raw measurements, 10**7 times.
+    ("parameters_from_raw", "path", 18),
+    ("time_response", "times", 18),
 ]
 
 
@@ -238,6 +244,8 @@ LONG = {
     "windows": "carvallo.windows(np.tile(list(carvallo.benchmark().values()), (3 * 10**6, 1)))",
     "frequency_response": "carvallo.frequency_response(carvallo.benchmark(), np.linspace(1, 9, 12), "
                           "np.logspace(-2, 3, 10**6), 'steer', 'roll')",
+    "time_response": "carvallo.time_response(carvallo.benchmark(), 5.0, np.linspace(0, 10, 10**7), "
+                     "'step')",
 }
 # The issue's bound: from the signal to the KeyboardInterrupt caught in the child.
 INTERRUPT_BOUND = 1.0
