@@ -27,8 +27,7 @@ mod staging;
 
 use commands::{
     accel, bode, eig, kinematics, parameters, report, response, rest, rolling, simulate,
-    statespace, turn,
-    window,
+    statespace, turn, window,
 };
 
 /// carvallo: E. Carvallo's memoir (1897) on the hoop, unicycle and bicycle, re-derived and

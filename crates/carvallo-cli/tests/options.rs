@@ -96,12 +96,22 @@ const BASES: &[&[&str]] = &[
         "--duration",
         "0.05",
     ],
+    &["response", "--model", "benchmark", "--speed", "5", "--kind", "step", "--samples", "5"],
+    &[
+        "parameters",
+        "--raw",
+        concat!(
+            env!("CARGO_MANIFEST_DIR"),
+            "/../../data/bicycleparameters/bicycles/Browser/RawData/BrowserMeasured.txt"
+        ),
+    ],
     &["completions", "bash"],
 ];
 
 /// Options not varied: `report --out` writes a whole report for every value that names a
-/// directory (ten seconds each); its edges are the tests of `report_out.rs`.
-const SKIPPED: &[(&str, &str)] = &[("report", "out")];
+/// directory (ten seconds each); its edges are the tests of `report_out.rs`. `parameters --out`
+/// is a file name, not a number: `--out=-inf` writes the file `-inf` and says so, which is right.
+const SKIPPED: &[(&str, &str)] = &[("report", "out"), ("parameters", "out")];
 
 /// The state of `accel`'s standard input.
 const STATE: &str = r#"{"q": [0, 0, 0, 0, 1.5, 2.8, 0, 0, 0], "qd": [0, 0, 0, 0, 1, 0, 1, 1, 0]}"#;

@@ -57,3 +57,18 @@ fn bad_raw_files_exit_2_naming_the_problem() {
     assert_eq!(code, 2);
     assert!(err.contains("line 3: expected `name = value`"), "{err}");
 }
+
+#[test]
+fn endless_and_non_regular_raw_files_are_refused_with_the_bound_named() {
+    let (code, out, err) = carvallo(&["parameters", "--raw", "/dev/zero"]);
+    assert_eq!(code, 2, "{err}");
+    assert!(out.is_empty(), "{out}");
+    assert!(
+        err.starts_with("error: cannot read raw measurement file `/dev/zero`: larger than 16 MiB"),
+        "{err}"
+    );
+    let dir = data("bicycles/Browser/RawData");
+    let (code, _, err) = carvallo(&["parameters", "--raw", &dir]);
+    assert_eq!(code, 2, "{err}");
+    assert!(err.contains("it is a directory"), "{err}");
+}

@@ -13,9 +13,9 @@ use carvallo::parameter_text::UncertainParams;
 use carvallo::whipple::{TriangleWarning, WhippleParams, PARAM_NAMES};
 
 #[cfg(feature = "python")]
-mod guard;
-#[cfg(feature = "python")]
 mod common;
+#[cfg(feature = "python")]
+mod guard;
 #[cfg(feature = "python")]
 mod python;
 #[cfg(feature = "python")]

@@ -10,6 +10,7 @@
 
 use std::sync::atomic::AtomicUsize;
 
+use crate::guard::{arg, interruptible, read_text, within};
 use carvallo::numerics::integrate::{Grid, Integration};
 use carvallo::parameter_text::{Rider, UncertainParams, RIDER_NAMES};
 use carvallo::sweep::Method;
@@ -20,7 +21,6 @@ use numpy::{
     Complex64, PyArray1, PyArray2, PyArrayMethods, PyReadonlyArray1, PyReadonlyArray2,
     PyUntypedArrayMethods,
 };
-use crate::guard::{arg, interruptible, read_text, within};
 use pyo3::prelude::*;
 use pyo3::types::{IntoPyDict, PyDict, PyList};
 
@@ -204,9 +204,7 @@ fn parameters_from_raw<'py>(
     py: Python<'py>,
     path: &str,
 ) -> PyResult<(Bound<'py, PyDict>, Bound<'py, PyDict>)> {
-    let text = std::fs::read_to_string(path).map_err(|e| {
-        err(format!("cannot read raw measurement file `{path}`: {}", e.to_string().to_lowercase()))
-    })?;
+    let text = crate::guard::read_text(path, "raw measurement")?;
     let raw = carvallo::whipple::raw::benchmark_from_measured(&text)
         .map_err(|e| err(format!("invalid raw measurement file `{path}`: {e}")))?;
     let u = raw.params;
@@ -310,7 +308,7 @@ fn state_space<'py>(
 fn time_response<'py>(
     py: Python<'py>,
     params: &Bound<'py, PyAny>,
-    speed: f64,
+    #[pyo3(from_py_with = arg::speed)] speed: f64,
     times: &Bound<'py, PyAny>,
     kind: &str,
     input: &str,
@@ -355,7 +353,20 @@ fn time_response<'py>(
             )))
         }
     };
-    let xs = bike.time_response(speed, excitation, &times).map_err(|e| err(e.to_string()))?;
+    // The states, then the flat copy.
+    within(&format!("{} times", times.len()), times.len() as f64, 2.0 * 4.0 * 8.0)?;
+    // On a worker, so that Ctrl-C is seen during millions of times (each is independent).
+    let xs = interruptible(py, |stop| {
+        let mut xs = Vec::with_capacity(times.len());
+        for block in times.chunks(1 << 12) {
+            if stop.load(std::sync::atomic::Ordering::Relaxed) {
+                break;
+            }
+            xs.extend(bike.time_response(speed, excitation, block)?);
+        }
+        Ok(xs)
+    })?
+    .map_err(|e: carvallo::ParameterError| err(e.to_string()))?;
     let n = xs.len();
     let flat: Vec<f64> = xs.into_iter().flatten().collect();
     Ok(PyArray1::from_vec(py, flat).reshape([n, 4])?.into_any())
@@ -405,7 +416,20 @@ fn frequency_response<'py>(
     let output: Output = output
         .parse()
         .map_err(|e: carvallo::whipple::transfer::UnknownSignal| err(e.to_string()))?;
-    let pts = bike.frequency_response(&speeds, &omegas, input, output);
+    // On a worker, so that Ctrl-C is seen during millions of points: the speeds one at a time
+    // and their frequencies in blocks (each point depends only on its speed and frequency).
+    let pts = interruptible(py, |stop| {
+        let mut pts = Vec::with_capacity(speeds.len() * omegas.len());
+        for v in &speeds {
+            for block in omegas.chunks(1 << 14) {
+                if stop.load(std::sync::atomic::Ordering::Relaxed) {
+                    return pts;
+                }
+                pts.extend(bike.frequency_response(&[*v], block, input, output));
+            }
+        }
+        pts
+    })?;
     let shape = [speeds.len(), omegas.len()];
     let g: Vec<Complex64> = pts.iter().map(|p| Complex64::new(p.re, p.im)).collect();
     let db: Vec<f64> = pts.iter().map(|p| p.magnitude_db).collect();
@@ -715,6 +739,10 @@ fn windows<'py>(
     if validate {
         let (mut first, mut broken) = (None, 0usize);
         for (i, row) in rows.iter().enumerate() {
+            // Millions of rows take seconds: Ctrl-C is seen between blocks of them.
+            if i % (1 << 14) == 0 {
+                py.check_signals()?;
+            }
             let warnings = if strict {
                 WhippleParams::from_values(*row).map(|_| Vec::new())
             } else {

@@ -22,9 +22,7 @@ pub struct Args {
 
 /// The parameter text, or the error message (a data error: see [`crate::args::is_data_error`]).
 pub fn run(a: &Args) -> Result<String, String> {
-    let text = std::fs::read_to_string(&a.raw).map_err(|e| {
-        format!("cannot read raw measurement file `{}`: {}", a.raw, e.to_string().to_lowercase())
-    })?;
+    let text = crate::args::read_text(&a.raw, "raw measurement file")?;
     let raw = benchmark_from_measured(&text)
         .map_err(|e| format!("invalid raw measurement file `{}`: {e}", a.raw))?;
     let mut out = raw.params.to_text();

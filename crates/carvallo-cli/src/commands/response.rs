@@ -9,8 +9,11 @@
 //! "roll_rate", "steer_rate"}` (arrays; `input` null for `initial`, `x0` null for a step or
 //! impulse); CSV `t,roll,steer,roll_rate,steer_rate`. The parameter file is read as for
 //! `window` (`--rider FILE`, `--strict`). A kind without what it needs (`initial` without
-//! `--x0`, a step or impulse with `--x0`), a duration that is not positive and finite and a count
-//! below 2 are usage errors naming the value, exit code 2.
+//! `--x0`, a step or impulse with `--x0`), a duration that is not positive and finite, a count
+//! below 2, a speed or an initial state outside the numerically valid ranges
+//! ([`crate::args::SPEED`], [`crate::args::ANGLE`]) and a duration over which the response is
+//! no longer finite (an unstable bicycle grows past the largest `f64`) are usage errors naming
+//! the value, exit code 2: no NaN or infinity is printed.
 
 use carvallo::whipple::response::Excitation;
 use carvallo::whipple::transfer::Input;
@@ -30,7 +33,7 @@ pub struct Args {
     #[command(flatten)]
     pub data: DataOptions,
     /// The forward speed [m/s]
-    #[arg(long, value_name = "V", value_parser = crate::args::finite, allow_hyphen_values = true)]
+    #[arg(long, value_name = "V", value_parser = crate::args::SPEED.parser(), allow_hyphen_values = true)]
     pub speed: f64,
     /// What drives the response: a unit step (1 N m) or a unit impulse (1 N m s) of the input
     /// from rest, or the initial state --x0 with no input
@@ -42,7 +45,7 @@ pub struct Args {
     pub input: Input,
     /// The initial state of `--kind initial`: lean, steer [rad], lean rate, steer rate [rad/s]
     #[arg(long, value_name = "X", value_delimiter = ',', num_args = 1,
-          value_parser = crate::args::finite, allow_hyphen_values = true)]
+          value_parser = crate::args::ANGLE.parser(), allow_hyphen_values = true)]
     pub x0: Vec<f64>,
     /// The duration [s]
     #[arg(long, value_name = "D", default_value_t = 5.0, value_parser = positive,
@@ -70,6 +73,15 @@ fn positive(v: &str) -> Result<f64, String> {
     Ok(x)
 }
 
+/// `x` as Rust prints it, or in scientific notation when that would run to many digits.
+fn short(x: f64) -> String {
+    if x != 0.0 && !(1e-4..1e9).contains(&x.abs()) {
+        format!("{x:e}")
+    } else {
+        format!("{x}")
+    }
+}
+
 /// Runs `carvallo response`: the text to print, or an error naming the bad value.
 pub fn run(cmd: &Args) -> Result<String, String> {
     let Args { model, data, speed, kind, input, x0, duration, samples, json, csv } = cmd;
@@ -91,9 +103,20 @@ pub fn run(cmd: &Args) -> Result<String, String> {
     let bike = Whipple::new(crate::args::bicycle(model, data)?);
     let n = *samples as usize;
     let times: Vec<f64> = (0..n)
-        .map(|i| if i + 1 == n { *duration } else { i as f64 * duration / (n - 1) as f64 })
+        .map(|i| if i + 1 == n { *duration } else { i as f64 / (n - 1) as f64 * duration })
         .collect();
     let xs = bike.time_response(*speed, excitation, &times).map_err(|e| e.to_string())?;
+    if let Some(i) = xs.iter().position(|x| x.iter().any(|c| !c.is_finite())) {
+        let last = if i == 0 { 0.0 } else { times[i - 1] };
+        return Err(format!(
+            "invalid value '{}' for '--duration <D>': the response is not finite at t = {} s \
+             (the last finite time is {} s: a bicycle unstable at {speed} m/s grows past the \
+             largest number, or the matrix exponential overflows); take a shorter --duration",
+            short(*duration),
+            short(times[i]),
+            short(last)
+        ));
+    }
     let column = |k: usize| xs.iter().map(|x| x[k]).collect::<Vec<f64>>();
     let input_name = match excitation {
         Excitation::Initial(_) => None,
@@ -188,6 +211,74 @@ mod tests {
             let e = run(&parse::<Args>(&words).expect("parses")).unwrap_err();
             assert!(e.starts_with(want), "{e}");
         }
+    }
+
+    #[test]
+    fn speeds_and_initial_states_outside_their_ranges_are_refused() {
+        let e = parse::<Args>(&["response", "--model", "b", "--speed", "1e308", "--kind", "step"])
+            .unwrap_err();
+        assert!(e.contains("'--speed <V>'") && e.contains("[-1e6, 1e6]"), "{e}");
+        let e = parse::<Args>(&[
+            "response",
+            "--model",
+            "b",
+            "--speed",
+            "5",
+            "--kind",
+            "initial",
+            "--x0",
+            "0,0,1e300,0",
+        ])
+        .unwrap_err();
+        assert!(e.contains("'--x0 <X>'") && e.contains("[-1e6, 1e6]"), "{e}");
+    }
+
+    #[test]
+    fn a_response_that_stops_being_finite_is_an_error_naming_the_duration() {
+        // At 0 m/s the benchmark capsizes at about 6 1/s: past about 120 s the response
+        // overflows; a stable bicycle over a duration of 1e300 s loses it in the exponential.
+        for (speed, duration) in [("0", "300"), ("5", "1.5e300"), ("5", "1.7976931348623157e308")] {
+            let a = parse::<Args>(&[
+                "response",
+                "--model",
+                "benchmark",
+                "--speed",
+                speed,
+                "--kind",
+                "step",
+                "--duration",
+                duration,
+                "--samples",
+                "3",
+            ])
+            .expect("valid");
+            let e = run(&a).unwrap_err();
+            assert!(
+                e.starts_with(&format!("invalid value '{duration}' for '--duration <D>'"))
+                    && e.contains("take a shorter --duration"),
+                "{e}"
+            );
+        }
+        // Short of the overflow, the same unstable bicycle is a finite result.
+        let a = parse::<Args>(&[
+            "response",
+            "--model",
+            "benchmark",
+            "--speed",
+            "0",
+            "--kind",
+            "step",
+            "--duration",
+            "10",
+            "--json",
+        ])
+        .expect("valid");
+        let v: serde_json::Value = serde_json::from_str(&run(&a).unwrap()).unwrap();
+        assert!(v["roll"]
+            .as_array()
+            .unwrap()
+            .iter()
+            .all(|x| x.as_f64().is_some_and(f64::is_finite)));
     }
 
     #[test]
