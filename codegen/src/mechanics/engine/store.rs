@@ -220,11 +220,10 @@ impl Store {
     fn eval_view(&self, v: AtomView<'_>, point: &mut BTreeMap<String, f64>) -> Option<f64> {
         Some(match v {
             AtomView::Num(_) => {
-                let r = crate::emit::Expr::from_atom(&v.to_owned()).ok()?;
-                match r {
-                    crate::emit::Expr::Num(q) => crate::emit::rational_to_f64(&q)?,
-                    _ => return None,
-                }
+                // A rational printed as `p` or `p/q` (the engine's numbers are rationals).
+                let text = v.to_owned().to_string();
+                let (p, q) = text.split_once('/').unwrap_or((text.as_str(), "1"));
+                p.trim().parse::<f64>().ok()? / q.trim().parse::<f64>().ok()?
             }
             AtomView::Var(x) => {
                 let name = x.get_symbol().get_stripped_name().to_string();
