@@ -2,6 +2,36 @@
 
 use carvallo_codegen::Check;
 
+/// The benchmark parameters of Meijaard et al. (2007), in the order of `whipple::PARAMS`.
+pub const BENCHMARK: [f64; 26] = [
+    1.02,
+    0.08,
+    std::f64::consts::PI / 10.0,
+    9.81,
+    0.3,
+    2.0,
+    0.0603,
+    0.12,
+    0.3,
+    -0.9,
+    85.0,
+    9.2,
+    11.0,
+    2.8,
+    2.4,
+    0.9,
+    -0.7,
+    4.0,
+    0.05892,
+    0.06,
+    0.00708,
+    -0.00756,
+    0.35,
+    3.0,
+    0.1405,
+    0.28,
+];
+
 /// Every check holds except the findings named in `expected_false`, each of which is among the
 /// checks and does not hold; the panic lists every check with the other outcome, with its
 /// section and evidence.

@@ -10,35 +10,7 @@
 
 use carvallo_codegen::emit::emit_program;
 
-/// The benchmark parameters of Meijaard et al. (2007), in the order of `wn::PARAMS`.
-const BENCHMARK: [f64; 26] = [
-    1.02,
-    0.08,
-    std::f64::consts::PI / 10.0,
-    9.81,
-    0.3,
-    2.0,
-    0.0603,
-    0.12,
-    0.3,
-    -0.9,
-    85.0,
-    9.2,
-    11.0,
-    2.8,
-    2.4,
-    0.9,
-    -0.7,
-    4.0,
-    0.05892,
-    0.06,
-    0.00708,
-    -0.00756,
-    0.35,
-    3.0,
-    0.1405,
-    0.28,
-];
+use crate::common::BENCHMARK;
 
 #[allow(clippy::needless_range_loop)]
 fn basu_mandal_table_one_body() {
