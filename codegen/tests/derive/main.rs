@@ -21,6 +21,7 @@ mod hoop_discussion;
 mod hoop_formulas;
 mod hoop_frame;
 mod hoop_numeric;
+mod lean_rider;
 mod regen_atomic;
 mod regen_fresh;
 mod unicycle;

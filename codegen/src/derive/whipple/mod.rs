@@ -583,3 +583,4 @@ pub fn derive() -> Result<Derivation> {
     })
 }
 pub mod description;
+pub mod lean_rider;

@@ -407,11 +407,23 @@ pub fn derive(m: &Model, st: &mut Store) -> Result<Kane, DescriptionError> {
         partials.push((vt, wt));
     }
     let mut torque_forces = vec![Atom::num(0); n];
+    // A torque acts between frames or wheels; a wheel's axes are its carrier's.
+    let turning = |name: &str| -> (V3, String) {
+        match m.wheels.iter().find(|w| w.name == name) {
+            Some(w) => {
+                let b = bodies.iter().find(|b| b.name == w.name).expect("every wheel is a body");
+                (b.motion.omega.clone(), w.carrier.clone())
+            }
+            None => (kin.frames[name].omega.clone(), name.to_string()),
+        }
+    };
     for t in &m.torques {
-        let e = kin.up(st, &t.axis.unit(), &t.to, &format!("e_{}", t.name));
+        let (to_omega, axes) = turning(&t.to);
+        let (from_omega, _) = turning(&t.from);
+        let e = kin.up(st, &t.axis.unit(), &axes, &format!("e_{}", t.name));
         for i in 0..n {
-            let to = partial(&kin.frames[&t.to].omega, i);
-            let from = partial(&kin.frames[&t.from].omega, i);
+            let to = partial(&to_omega, i);
+            let from = partial(&from_omega, i);
             let q = &t.value * dot(&e, &sub(&to, &from));
             f[i] = &f[i] + &q;
             torque_forces[i] = &torque_forces[i] + q;

@@ -192,18 +192,19 @@ pub struct Wheel {
     pub at_root: bool,
 }
 
-/// A torque between two frames about an axis of the second, the generalised force of a joint.
+/// A torque between two frames (or wheels) about an axis of the second (of a wheel's carrier),
+/// the generalised force of a joint.
 #[derive(Clone, Debug)]
 pub struct Torque {
     /// Its name (an input of the model, or the name of a spring's formula).
     pub name: String,
     /// The magnitude: an input symbol or an expression (a spring and a damper).
     pub value: Atom,
-    /// The frame that receives the reaction (`N` for the ground).
+    /// The frame or wheel that receives the reaction (`N` for the ground).
     pub from: String,
-    /// The frame that receives the torque.
+    /// The frame or wheel that receives the torque.
     pub to: String,
-    /// The axis of `to` about which it acts.
+    /// The axis of `to` (of its carrier, for a wheel) about which it acts.
     pub axis: Axis,
 }
 
@@ -430,8 +431,11 @@ impl Model {
         }
         for t in &self.torques {
             let item = format!("torque {}", t.name);
-            frame(&item, &t.from)?;
-            frame(&item, &t.to)?;
+            for end in [&t.from, &t.to] {
+                if !self.wheels.iter().any(|w| &w.name == end) {
+                    frame(&item, end)?;
+                }
+            }
         }
         if self.wheels.iter().filter(|w| w.at_root).count() > 1 {
             return Err(DescriptionError::Constraints {
