@@ -156,6 +156,7 @@ def simulate(
     torque_steer: Optional[npt.ArrayLike] = None,
     impulses: Sequence[tuple[float, float, float]] = (),
     k: Optional[npt.ArrayLike | dict[str, float] | GainTable] = None,
+    fall_angle: float = 1.2,
 ) -> dict[str, object]:
     """Nonlinear simulation from upright straight running (rk4, or dopri5 / dop853 /
     vern9 with rtol, default 1e-8, and atol, default 1e-3 rtol; stop_when conditions
@@ -163,6 +164,14 @@ def simulate(
     `carvallo simulate --json`: arrays t, lean, steer, pitch, speed_rear, rear_x, rear_y,
     front_x, front_y, energy; floats step, energy_drift, max_contact_residual; method, rtol,
     atol, rhs_evaluations, steps, rejected_steps, events (list of {"when", "t"}).
+
+    A fall is a result: the run ends when |lean| reaches fall_angle (rad, in (0, pi/2];
+    default 1.2, a stated angle), located on the integrator's interpolant; status is
+    "completed", "stopped" (a stop_when condition) or "fell", with status_line
+    ("fell at t = 1.94 s: ..."), fall_angle and fall_t (None unless it fell). A start at or
+    beyond fall_angle, or where no pitch puts the front wheel on the ground, raises
+    ParameterError naming lean0, whatever the method. Ctrl-C raises KeyboardInterrupt within
+    a step.
 
     Driven: torques sampled at torque_t (torque_roll and/or torque_steer, N m; interpolated,
     zero outside), impulses (t, J_roll, J_steer) in N m s at multiples of step, feedback

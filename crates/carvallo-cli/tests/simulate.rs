@@ -55,10 +55,12 @@ fn an_adaptive_run_reports_its_counts_and_its_event() {
     assert_eq!(times.last().unwrap().as_f64(), Some(t));
     assert!((leans.last().unwrap().as_f64().unwrap().abs() - 0.5).abs() < 1e-9);
     assert!(times.iter().all(|x| x.as_f64().unwrap() <= t));
-    // The default RK4 run has the same keys with its own counts and no event.
+    // The default RK4 run has the same keys with its own counts and no event: four
+    // evaluations a step and the slope at the end (the fall angle's event).
     let v = single("4.6", "0.05", &[]);
     assert_eq!((v["method"].as_str(), v["rtol"].as_f64()), (Some("rk4"), None));
-    assert_eq!((v["steps"].as_u64(), v["rhs_evaluations"].as_u64()), (Some(3000), Some(12000)));
+    assert_eq!((v["steps"].as_u64(), v["rhs_evaluations"].as_u64()), (Some(3000), Some(12001)));
+    assert_eq!(v["status"], "completed");
     assert_eq!(v["events"].as_array().map(Vec::len), Some(0));
 }
 
@@ -108,7 +110,7 @@ fn batch_rows_equal_single_runs_bit_for_bit() {
         {
             let row: Vec<&str> = line.split(',').collect();
             if row[4] == "failed" {
-                // The same failure as the single run's (2 m/s without a stop falls flat).
+                // The same failure as the single run's.
                 let args = [&BASE[..], &["--speed", speed, "--lean0", lean0], opts].concat();
                 let (code, _, err) = carvallo(&args);
                 let message = line.split('"').nth(1).unwrap();
@@ -133,22 +135,32 @@ fn batch_rows_equal_single_runs_bit_for_bit() {
                 );
             }
             assert_eq!(col(&row, "rhs_evaluations") as u64, v["rhs_evaluations"].as_u64().unwrap());
-            let fell = !v["events"].as_array().unwrap().is_empty();
+            // Fell: a stop condition met or the fall angle reached (the single run's status).
+            let fell = !v["events"].as_array().unwrap().is_empty() || v["status"] == "fell";
             assert_eq!(row[header.iter().position(|h| *h == "fell").unwrap()], fell.to_string());
+            if v["status"] == "fell" {
+                assert!(line.contains(",fall angle,"), "{line}");
+                assert_eq!(col(&row, "event_t").to_bits(), v["fall_t"].as_f64().unwrap().to_bits());
+            }
         }
     }
-    // A run that loses the contact (no stop condition, 2 m/s for 5 s) is a failed row that fell.
+    // A run that falls (no stop condition, 2 m/s for 5 s) is an ok row that fell at the fall
+    // angle; a start beyond it is a failed row with the message.
+    std::fs::write(&file, "lean0,speed\n0.05,4.6\n0.05,2\n\n2.0,3\n").unwrap();
     let args =
         [&["simulate", "--model", "benchmark", "--duration", "5"][..], &["--batch", path, "--csv"]]
             .concat();
     let (code, csv, _) = carvallo(&args);
     assert_eq!(code, 0);
+    let fallen = csv.lines().nth(2).unwrap();
+    assert!(fallen.starts_with("1,2.0,0.05,0.0,ok,true,fall angle,1.93"), "{fallen}");
     let failed = csv.lines().find(|l| l.contains(",failed,")).expect("a failed row");
     assert!(
-        failed.contains(",failed,true,") && failed.contains("no pitch puts the front wheel"),
+        failed.contains(",failed,false,")
+            && failed.contains("invalid lean 2.0 rad: at or beyond the fall angle ±1.2 rad"),
         "{failed}"
     );
-    // The quoted message has one comma ("at lean ... rad, steer ... rad").
+    // The quoted message has one comma ("±1.2 rad, where the bicycle is on the ground").
     assert_eq!(
         failed.split(',').count(),
         csv.lines().next().unwrap().split(',').count() + 1,

@@ -472,6 +472,7 @@ fn gains_of(k: &Bound<'_, PyAny>) -> PyResult<carvallo::whipple::feedback::Gains
     {
         return Err(err(format!("gain {} = {} is not finite", x.1, x.0)));
     }
+    gains_within(&gains, "")?;
     Ok(gains)
 }
 
@@ -492,16 +493,27 @@ fn closed_loop_window<'py>(
     strict: bool,
 ) -> PyResult<Bound<'py, PyDict>> {
     let bike = Whipple::new(params_of(params, strict)?);
-    if vmax.is_some_and(|x| !x.is_finite()) {
-        return Err(err(format!(
-            "invalid vmax {}: must be finite (None for every speed)",
-            vmax.unwrap_or_default()
-        )));
+    for (name, x) in [("vmin", vmin), ("vmax", vmax)] {
+        match x {
+            Some(x) if !x.is_finite() => {
+                return Err(err(format!(
+                    "invalid {name} {x:?}: must be finite (None for every speed)"
+                )))
+            }
+            Some(x) if !(0.0..=MAX_SPEED).contains(&x) => {
+                return Err(err(format!(
+                    "invalid {name} {x:?}: must lie within [0, {MAX_SPEED:e}] m/s (beyond it gravity is lost in the rounding of the speed terms)"
+                )))
+            }
+            _ => {}
+        }
     }
     let w = match feedback_of(k)? {
         Feedback::Table(table) => {
+            // Seconds for millions of rows: Ctrl-C is read between the table's intervals.
             let (lo, hi) = table.span();
-            bike.closed_loop_window_table(&table, vmin.unwrap_or(lo), vmax.unwrap_or(hi))
+            let (from, to) = (vmin.unwrap_or(lo), vmax.unwrap_or(hi));
+            interruptible(py, |stop| bike.closed_loop_window_table_until(&table, from, to, stop))?
         }
         Feedback::Constant(gains) => {
             bike.closed_loop_window(&gains, vmin.unwrap_or(0.0), vmax.unwrap_or(f64::INFINITY))
@@ -565,6 +577,15 @@ fn feedback_of(k: &Bound<'_, PyAny>) -> PyResult<Feedback> {
     let column = |name: &str, v: &Bound<'_, PyAny>| -> PyResult<Vec<f64>> {
         v.extract().map_err(|_| err(format!("gain table: {name} must be a sequence of numbers")))
     };
+    // The rows and, while they are read, one column of each gain: checked on the length,
+    // before a value is read.
+    if let Ok(n) = speed.len() {
+        within(
+            &format!("a gain table of {n} speeds"),
+            n as f64,
+            (std::mem::size_of::<(f64, Gains)>() + 8) as f64,
+        )?;
+    }
     let speeds = column("speed", &speed)?;
     let mut rows: Vec<(f64, Gains)> = speeds.iter().map(|&v| (v, Gains::ZERO)).collect();
     for (key, v) in dict.iter() {
@@ -586,7 +607,36 @@ fn feedback_of(k: &Bound<'_, PyAny>) -> PyResult<Feedback> {
             let _ = row.1.set(&name, x);
         }
     }
+    for (i, (v, g)) in rows.iter().enumerate() {
+        if v.abs() > MAX_SPEED {
+            return Err(err(format!(
+                "gain table: speed {v:?} in row {}: must lie within [-{MAX_SPEED:e}, {MAX_SPEED:e}] m/s",
+                i + 1
+            )));
+        }
+        gains_within(g, &format!(" in row {}", i + 1))?;
+    }
     GainTable::new(rows).map(Feedback::Table).map_err(|e| err(e.to_string()))
+}
+
+/// The largest speed (m/s) of a closed-loop range or gain table, as the command line's
+/// `--speed`: beyond it gravity is lost in the rounding of the speed terms.
+const MAX_SPEED: f64 = 1e6;
+
+/// The largest gain magnitude, as the command line's `--gain`: beyond it the bicycle's own
+/// terms are lost in the rounding of the feedback.
+const MAX_GAIN: f64 = 1e12;
+
+/// Refuses a gain above [`MAX_GAIN`] in magnitude, naming it (`whereabouts`: " in row 3").
+fn gains_within(g: &carvallo::whipple::feedback::Gains, whereabouts: &str) -> PyResult<()> {
+    for (x, name) in g.values().iter().zip(carvallo::whipple::feedback::GAIN_NAMES) {
+        if x.abs() > MAX_GAIN {
+            return Err(err(format!(
+                "gain {name} = {x:?}{whereabouts}: must lie within [-{MAX_GAIN:e}, {MAX_GAIN:e}] (beyond it the bicycle's own terms are lost in the rounding of the feedback)"
+            )));
+        }
+    }
+    Ok(())
 }
 
 /// The modes at each speed, labelled by continuation in speed (as `carvallo eig --json`):
@@ -846,7 +896,10 @@ fn sweep<'py>(
 /// A dict of numpy arrays (`t`, `lean`, `steer`, `pitch`, `speed_rear`, `rear_x`, `rear_y`,
 /// `front_x`, `front_y`, `energy`), the floats `step`, `energy_drift`,
 /// `max_contact_residual`, the `method`, `rtol` and `atol` (None for rk4), the counts
-/// `rhs_evaluations`, `steps`, `rejected_steps` and `events` (a list of dicts `when`, `t`).
+/// `rhs_evaluations`, `steps`, `rejected_steps` and `events` (a list of dicts `when`, `t`),
+/// and how the run ended ([`set_status`]): the run ends, fallen, when the lean's magnitude
+/// reaches `fall_angle` (default 1.2 rad; a start at or beyond it is refused). Ctrl-C raises
+/// `KeyboardInterrupt` within a step.
 ///
 /// Driven (as `simulate --torque ... --gain ...`): `torque_t` with `torque_roll` and/or
 /// `torque_steer` (N m at those times, increasing; interpolated, zero outside), `impulses`
@@ -855,7 +908,7 @@ fn sweep<'py>(
 /// table read at the rear contact's speed). The dict then adds `T_phi`, `T_delta`, `work_t`,
 /// `work` and `max_energy_change`, and `energy_drift` is that of E - E(0) - W.
 #[pyfunction]
-#[pyo3(signature = (params, speed, lean0, duration, step = 0.001, every = 10, strict = false, *, method = "rk4", rtol = None, atol = None, stop_when = Vec::new(), torque_t = None, torque_roll = None, torque_steer = None, impulses = Vec::new(), k = None))]
+#[pyo3(signature = (params, speed, lean0, duration, step = 0.001, every = 10, strict = false, *, method = "rk4", rtol = None, atol = None, stop_when = Vec::new(), torque_t = None, torque_roll = None, torque_steer = None, impulses = Vec::new(), k = None, fall_angle = carvallo::whipple_nonlinear::DEFAULT_FALL_ANGLE))]
 #[allow(clippy::too_many_arguments)]
 fn simulate<'py>(
     py: Python<'py>,
@@ -875,10 +928,25 @@ fn simulate<'py>(
     #[pyo3(from_py_with = arg::torque_steer)] torque_steer: Option<Vec<f64>>,
     #[pyo3(from_py_with = arg::impulses)] impulses: Vec<(f64, f64, f64)>,
     k: Option<Bound<'py, PyAny>>,
+    #[pyo3(from_py_with = arg::fall_angle)] fall_angle: f64,
 ) -> PyResult<Bound<'py, PyDict>> {
     let (how, stops) = integration_of(method, rtol, atol, &stop_when)?;
-    let bike = WhippleNonlinear::new(params_of(params, strict)?);
+    let bike = WhippleNonlinear::new(params_of(params, strict)?)
+        .with_fall_angle(fall_angle)
+        .map_err(|e| err(e.to_string()))?;
     let start = bike.initial_state(speed, lean0).map_err(|e| err(e.to_string()))?;
+    bike.check_start(&start).map_err(|e| {
+        use carvallo::whipple_nonlinear::NonlinearError;
+        err(match e {
+            NonlinearError::Fallen { fall_angle, .. } => format!(
+                "invalid lean0 {lean0}: at or beyond the fall angle ±{fall_angle} rad (fall_angle), where the bicycle is on the ground"
+            ),
+            NonlinearError::Parameter(carvallo::ParameterError::InvalidParameter {
+                reason, ..
+            }) => format!("invalid lean0 {lean0}: {reason}"),
+            other => other.to_string(),
+        })
+    })?;
     let grid = Grid::exact(duration, step, every).map_err(|(name, value, reason)| {
         err(carvallo::ParameterError::InvalidParameter { name, value, reason }.to_string())
     })?;
@@ -893,8 +961,8 @@ fn simulate<'py>(
     if !inputs.is_empty() {
         return simulate_driven(py, &bike, start, &grid, &how, &stops, &inputs);
     }
-    let tr = py
-        .detach(|| bike.simulate_with(start, &grid, &how, &stops))
+    // Ctrl-C ends the run within a step (KeyboardInterrupt, the samples dropped).
+    let tr = interruptible(py, |flag| bike.simulate_until(start, &grid, &how, &stops, flag))?
         .map_err(|e| err(e.to_string()))?;
     let d = PyDict::new(py);
     type Column = fn(&carvallo::whipple_nonlinear::Sample) -> f64;
@@ -916,8 +984,40 @@ fn simulate<'py>(
     d.set_item("step", tr.step)?;
     d.set_item("energy_drift", tr.energy_drift)?;
     d.set_item("max_contact_residual", tr.max_contact_residual)?;
-    set_run(&d, &how, &tr.stats, tr.event.map(|(k, t)| (stops[k].text(), t)))?;
+    let event = tr.event.map(|(k, t)| (stops[k].text(), t));
+    set_status(&d, &bike, event.as_ref(), tr.fall, tr.times.last().copied().unwrap_or(0.0))?;
+    set_run(&d, &how, &tr.stats, event)?;
     Ok(d)
+}
+
+/// How a run of `simulate` ended: `status` (`"completed"`, `"stopped"` by a condition of
+/// `stop_when`, `"fell"`: the lean reached `fall_angle`), `status_line` (`"fell at t = 1.94 s:
+/// ..."`), `fall_angle` and `fall_t` (None unless it fell). An interrupted run raises
+/// `KeyboardInterrupt` instead.
+fn set_status(
+    d: &Bound<'_, PyDict>,
+    bike: &WhippleNonlinear,
+    event: Option<&(String, f64)>,
+    fall: Option<f64>,
+    end: f64,
+) -> PyResult<()> {
+    let (status, line) = if let Some(t) = fall {
+        (
+            "fell",
+            format!(
+                "fell at t = {t} s: the lean reached the fall angle ±{} rad",
+                bike.fall_angle()
+            ),
+        )
+    } else if let Some((when, t)) = event {
+        ("stopped", format!("stopped at t = {t} s: {when}"))
+    } else {
+        ("completed", format!("completed at t = {end} s"))
+    };
+    d.set_item("status", status)?;
+    d.set_item("status_line", line)?;
+    d.set_item("fall_angle", bike.fall_angle())?;
+    d.set_item("fall_t", fall)
 }
 
 /// The inputs of `simulate`: the sampled torques (`torque_t` with `torque_roll` and/or
@@ -969,9 +1069,10 @@ fn simulate_driven<'py>(
     stops: &[Stop],
     inputs: &carvallo::whipple_nonlinear::Inputs,
 ) -> PyResult<Bound<'py, PyDict>> {
-    let tr = py
-        .detach(|| bike.simulate_forced(start, grid, how, stops, inputs))
-        .map_err(|e| err(e.to_string()))?;
+    let tr = interruptible(py, |flag| {
+        bike.simulate_forced_until(start, grid, how, stops, inputs, flag)
+    })?
+    .map_err(|e| err(e.to_string()))?;
     let d = PyDict::new(py);
     type Column = fn(&carvallo::whipple_nonlinear::ForcedSample) -> f64;
     let columns: [(&str, Column); 13] = [
@@ -998,7 +1099,9 @@ fn simulate_driven<'py>(
     d.set_item("max_energy_change", diag.max_energy_change)?;
     d.set_item("energy_drift", diag.energy_drift)?;
     d.set_item("max_contact_residual", diag.max_contact_residual)?;
-    set_run(&d, how, &tr.stats, tr.event.map(|(k, t)| (stops[k].text(), t)))?;
+    let event = tr.event.map(|(k, t)| (stops[k].text(), t));
+    set_status(&d, bike, event.as_ref(), tr.fall, tr.times.last().copied().unwrap_or(0.0))?;
+    set_run(&d, how, &tr.stats, event)?;
     Ok(d)
 }
 
@@ -1124,7 +1227,7 @@ fn simulate_many<'py>(
     let fell: Vec<bool> = ends
         .iter()
         .map(|e| match e {
-            Ok(f) => f.event.is_some(),
+            Ok(f) => f.fall.is_some() || f.event.is_some(),
             Err(e) => matches!(e, carvallo::whipple_nonlinear::NonlinearError::NoContact { .. }),
         })
         .collect();

@@ -45,6 +45,13 @@ pub struct Trajectory<S, D = ()> {
     /// The event that ended the run (its index among the stop conditions and its time, the
     /// time of the last sample), `None` when the run reached its end.
     pub event: Option<(usize, f64)>,
+    /// When the model's own limit ended the run (the nonlinear bicycle's lean reaching its
+    /// fall angle: [`WhippleNonlinear::fall_angle`](crate::whipple::nonlinear::WhippleNonlinear::fall_angle)),
+    /// the time of the last sample; `None` when it was not reached or the model has none.
+    pub fall: Option<f64>,
+    /// When a stop flag ended the run early (Ctrl-C), the time it reached (its last accepted
+    /// step; the samples are those of the grid up to it); `None` otherwise.
+    pub interrupted: Option<f64>,
 }
 
 impl<S, D> Trajectory<S, D> {
@@ -57,6 +64,8 @@ impl<S, D> Trajectory<S, D> {
             diagnostics,
             stats: Stats::default(),
             event: None,
+            fall: None,
+            interrupted: None,
         }
     }
 

@@ -33,6 +33,7 @@
 //! $\beta_f = -\theta_F$, and $(x_b, y_b, z_b) = (-X, Y, -Z)$ for the rear wheel centre.
 
 use std::fmt;
+use std::sync::atomic::AtomicBool;
 
 use nalgebra::{Matrix3, Vector3};
 
@@ -126,6 +127,13 @@ pub enum NonlinearError {
     },
     /// An input ([`inputs`]) that cannot be used, or a speed outside its gain table.
     Input(InputError),
+    /// A start at or beyond the fall angle: the bicycle would already lie on the ground.
+    Fallen {
+        /// The lean of the start (rad).
+        lean: f64,
+        /// The fall angle ([`WhippleNonlinear::fall_angle`], rad).
+        fall_angle: f64,
+    },
 }
 
 impl fmt::Display for NonlinearError {
@@ -143,6 +151,11 @@ impl fmt::Display for NonlinearError {
                 write!(f, "the integration failed at t = {t} s: {reason}")
             }
             NonlinearError::Input(e) => write!(f, "{e}"),
+            NonlinearError::Fallen { lean, fall_angle } => write!(
+                f,
+                "invalid lean {lean:?} rad: at or beyond the fall angle ±{fall_angle} rad, where \
+                 the bicycle is on the ground"
+            ),
         }
     }
 }
@@ -175,7 +188,7 @@ impl From<IntegrateError<NonlinearError>> for NonlinearError {
                 NonlinearError::Parameter(ParameterError::InvalidParameter {
                     name: "stop conditions",
                     value: count as f64,
-                    reason: "at most 8",
+                    reason: "at most 8 (with the fall)",
                 })
             }
         }
@@ -198,8 +211,18 @@ fn finite(name: &'static str, value: f64) -> Result<f64, NonlinearError> {
     }
 }
 
+/// The most stop conditions of a simulation: the integrator's events less the fall's.
+pub const MAX_STOPS: usize = integrate::MAX_EVENTS - 1;
+
+/// The fall angle of [`WhippleNonlinear::new`] (rad): a stated lean, 1.2 rad (69°). The
+/// Whipple model gives its frames and rider no extent (mass centres and inertias only), so no
+/// geometry tells where the frame, a pedal or the handlebar touches the ground; its only
+/// solids, the knife-edge wheels, lie flat at π/2, beyond where the front contact can be
+/// solved once the fork has turned in a fall (the benchmark loses it near 1.39 rad).
+pub const DEFAULT_FALL_ANGLE: f64 = 1.2;
+
 /// The checks every simulation makes before it starts: a usable integration, a finite start
-/// state and stop values, and at most [`integrate::MAX_EVENTS`] stop conditions.
+/// state and stop values, and at most [`MAX_STOPS`] stop conditions.
 fn check_run(start: &State, how: &Integration, stops: &[Stop]) -> Result<(), NonlinearError> {
     if let Some(bad) = how.unusable() {
         return Err(invalid(bad));
@@ -210,7 +233,7 @@ fn check_run(start: &State, how: &Integration, stops: &[Stop]) -> Result<(), Non
     for stop in stops {
         finite("stop value", stop.value)?;
     }
-    if stops.len() > integrate::MAX_EVENTS {
+    if stops.len() > MAX_STOPS {
         return Err(invalid(("stop conditions", stops.len() as f64, "at most 8")));
     }
     Ok(())
@@ -277,10 +300,11 @@ pub struct KaneTerms {
     pub rear_speed: f64,
 }
 
-/// The nonlinear bicycle for one parameter set.
+/// The nonlinear bicycle for one parameter set, and the lean at which it has fallen.
 #[derive(Clone, Debug)]
 pub struct WhippleNonlinear {
     params: WhippleParams,
+    fall_angle: f64,
 }
 
 /// The full simulation state: the coordinates other than the pitch and the independent speeds.
@@ -382,6 +406,10 @@ pub struct Final {
     pub state: State,
     /// The stop condition met (its index) and when, `None` when the run reached the end.
     pub event: Option<(usize, f64)>,
+    /// When the lean reached the fall angle, `None` when it did not.
+    pub fall: Option<f64>,
+    /// When the stop flag ended the run (its last accepted step), `None` when it did not.
+    pub interrupted: Option<f64>,
     /// Right-hand side evaluations and steps.
     pub stats: integrate::Stats,
     /// The energy drift and contact residual over the accepted steps.
@@ -469,9 +497,54 @@ impl Stop {
 }
 
 impl WhippleNonlinear {
-    /// The nonlinear bicycle with the parameters `params`.
+    /// The nonlinear bicycle with the parameters `params` and the fall angle
+    /// [`DEFAULT_FALL_ANGLE`].
     pub fn new(params: WhippleParams) -> WhippleNonlinear {
-        WhippleNonlinear { params }
+        WhippleNonlinear { params, fall_angle: DEFAULT_FALL_ANGLE }
+    }
+
+    /// The same bicycle with the fall angle `angle` (rad): a simulation ends, fallen, when the
+    /// magnitude of the lean reaches it (located on the integrator's interpolant like a stop
+    /// condition), and a start at or beyond it is refused.
+    ///
+    /// # Errors
+    /// [`NonlinearError::Parameter`] naming `fall angle` unless $0 < $ `angle` $\le \pi/2$
+    /// (at π/2 the wheels lie flat).
+    pub fn with_fall_angle(self, angle: f64) -> Result<WhippleNonlinear, NonlinearError> {
+        finite("fall angle", angle)?;
+        if !(angle > 0.0 && angle <= std::f64::consts::FRAC_PI_2) {
+            return Err(invalid(("fall angle", angle, "must lie in (0, pi/2] rad")));
+        }
+        Ok(WhippleNonlinear { fall_angle: angle, ..self })
+    }
+
+    /// The fall angle (rad): [`DEFAULT_FALL_ANGLE`] unless
+    /// [`with_fall_angle`](Self::with_fall_angle) set another.
+    pub fn fall_angle(&self) -> f64 {
+        self.fall_angle
+    }
+
+    /// Checks that `start` is a physical start and returns its pitch: a lean inside the fall
+    /// angle and a pitch that puts the front wheel on the ground (Newton from 0). Every
+    /// method of [`simulate_with`](Self::simulate_with) makes this check first.
+    ///
+    /// # Errors
+    /// [`NonlinearError::Fallen`] for a lean at or beyond the fall angle;
+    /// [`NonlinearError::Parameter`] naming the lean when no pitch puts the front wheel on the
+    /// ground (or a non-finite lean or steer).
+    pub fn check_start(&self, start: &State) -> Result<f64, NonlinearError> {
+        finite("lean", start.lean)?;
+        finite("steer", start.steer)?;
+        if start.lean.abs() >= self.fall_angle {
+            return Err(NonlinearError::Fallen { lean: start.lean, fall_angle: self.fall_angle });
+        }
+        self.pitch(start.lean, start.steer, 0.0).map_err(|_| {
+            invalid((
+                "lean",
+                start.lean,
+                "no pitch puts the front wheel on the ground at this lean and steer",
+            ))
+        })
     }
 
     /// The nonlinear bicycle of `design`, validated as [`WhippleParams::from_design`].
@@ -794,16 +867,35 @@ impl WhippleNonlinear {
         how: &Integration,
         stops: &[Stop],
     ) -> Result<Trajectory, NonlinearError> {
+        self.simulate_until(start, grid, how, stops, &AtomicBool::new(false))
+    }
+
+    /// [`simulate_with`](Self::simulate_with) that also ends when `stop` is set (Ctrl-C): the
+    /// samples up to the last accepted step, whose time is
+    /// [`Trajectory::interrupted`](crate::numerics::ode::Trajectory::interrupted).
+    ///
+    /// # Errors
+    /// As [`simulate_with`](Self::simulate_with).
+    pub fn simulate_until(
+        &self,
+        start: State,
+        grid: &Grid,
+        how: &Integration,
+        stops: &[Stop],
+        stop: &AtomicBool,
+    ) -> Result<Trajectory, NonlinearError> {
         let mut trajectory =
             Trajectory::with_capacity(grid.h, grid.samples(), Diagnostics::default());
         let mut keep = |t: f64, s: &State, guess: f64| -> Result<(), NonlinearError> {
             trajectory.push(t, self.sample(t, s, guess)?);
             Ok(())
         };
-        let end = self.run(start, grid, how, stops, &mut keep)?;
+        let end = self.run(start, grid, how, stops, &mut keep, stop)?;
         trajectory.diagnostics = end.diagnostics;
         trajectory.stats = end.stats;
         trajectory.event = end.event;
+        trajectory.fall = end.fall;
+        trajectory.interrupted = end.interrupted;
         Ok(trajectory)
     }
 
@@ -819,7 +911,7 @@ impl WhippleNonlinear {
         how: &Integration,
         stops: &[Stop],
     ) -> Result<Final, NonlinearError> {
-        self.run(start, grid, how, stops, &mut |_, _, _| Ok(()))
+        self.run(start, grid, how, stops, &mut |_, _, _| Ok(()), &AtomicBool::new(false))
     }
 
     /// [`simulate_final`](Self::simulate_final) from every start of `starts`, in parallel
@@ -846,7 +938,8 @@ impl WhippleNonlinear {
     }
 
     /// The integration behind [`simulate_with`](Self::simulate_with): `keep(t, state, guess)`
-    /// receives every sample (and the event's state) with the Newton guess for its pitch.
+    /// receives every sample (and the event's state) with the Newton guess for its pitch. The
+    /// fall is one more event after the stop conditions: $|\varphi|$ reaching the fall angle.
     fn run(
         &self,
         start: State,
@@ -854,15 +947,18 @@ impl WhippleNonlinear {
         how: &Integration,
         stops: &[Stop],
         keep: &mut dyn FnMut(f64, &State, f64) -> Result<(), NonlinearError>,
+        stop_flag: &AtomicBool,
     ) -> Result<Final, NonlinearError> {
         check_run(&start, how, stops)?;
-        let pitch0 = self.pitch(start.lean, start.steer, 0.0)?;
+        let pitch0 = self.check_start(&start)?;
+        let fall = Stop { quantity: Watched::Lean, value: self.fall_angle, magnitude: true };
+        let conditions = stops.len() + 1;
         let (e0, _) = self.observe(&self.configuration(&start, pitch0)?);
         let f = StateRate::new(&self.params);
         let (mut drift, mut residual) = (0.0f64, 0.0f64);
         let mut rhs = |_t: f64, y: &[f64; rate::LEN]| f.eval(y);
         let mut watchers: [_; integrate::MAX_EVENTS] = std::array::from_fn(|j| {
-            let stop = stops.get(j).copied();
+            let stop = if j == stops.len() { Some(fall) } else { stops.get(j).copied() };
             let f = &f;
             move |y: &[f64; rate::LEN]| -> Result<f64, NonlinearError> {
                 let Some(stop) = stop else { return Ok(f64::NAN) };
@@ -907,18 +1003,22 @@ impl WhippleNonlinear {
                 }
                 Ok(())
             };
-        let outcome = integrate::integrate(
+        let outcome = integrate::integrate_until(
             how,
             grid,
             rate::state_with_pitch(&start, pitch0),
             &mut rhs,
-            &mut events[..stops.len()],
+            &mut events[..conditions],
             &mut observe,
+            stop_flag,
         )?;
+        let fell = outcome.event.filter(|c| c.index == stops.len());
         Ok(Final {
             t: outcome.end.0,
             state: rate::state_of(&outcome.end.1),
-            event: outcome.event.map(|c| (c.index, c.t)),
+            event: outcome.event.filter(|c| c.index < stops.len()).map(|c| (c.index, c.t)),
+            fall: fell.map(|c| c.t),
+            interrupted: outcome.interrupted.then_some(outcome.end.0),
             stats: outcome.stats,
             diagnostics: Diagnostics { energy_drift: drift, max_contact_residual: residual },
         })
