@@ -16,8 +16,11 @@ Limits (a `ParameterError` naming the argument and the limit, raised before allo
 needs at most 1 GiB for its result and working arrays; files are read up to 16 MiB; counts
 (`samples`, `count`, `every`, `seed`) are whole numbers from 0 to 2**64 - 1 and real arguments
 numbers a float holds. A wrong Python type for a text or flag argument is a `TypeError`.
-`sweep`, `windows`, `simulate_many`, `monte_carlo` and `eigenvalue_bands` run with the GIL
-released and raise `KeyboardInterrupt` within a fraction of a second of Ctrl-C.
+`sweep`, `windows`, `simulate`, `simulate_hoop`, `simulate_unicycle`, `simulate_many`,
+`closed_loop_window` (a gain table), `monte_carlo` and `eigenvalue_bands` run with the GIL
+released and raise `KeyboardInterrupt` within a fraction of a second of Ctrl-C. Speeds of
+`closed_loop_window` and gain tables lie within 1e6 m/s and gains within 1e12, as on the
+command line.
 """
 
 from typing import Mapping, Optional, Sequence, Union
@@ -194,8 +197,8 @@ def simulate_many(
     strict: bool = False,
 ) -> dict[str, object]:
     """Many simulations in parallel (GIL released), keeping the ends: arrays t_end, lean, steer,
-    yaw, x, y, lean_rate, steer_rate, event_t, stopped_by, fell, ok, rhs_evaluations and the
-    list errors; each equals `simulate`'s end bit for bit, and a chunk of a batch (any slice,
+    yaw, x, y, lean_rate, steer_rate, event_t, fall_t (the lean reaching 1.2 rad; NaN when
+    not), stopped_by, fell, ok, rhs_evaluations and the list errors; each equals `simulate`'s end bit for bit, and a chunk of a batch (any slice,
     any memory layout) gives the batch's rows for it bit for bit, so chunks can run on Dask
     workers (docs/examples/basin_dask.py)."""
 

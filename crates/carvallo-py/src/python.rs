@@ -939,11 +939,11 @@ fn simulate<'py>(
         use carvallo::whipple_nonlinear::NonlinearError;
         err(match e {
             NonlinearError::Fallen { fall_angle, .. } => format!(
-                "invalid lean0 {lean0}: at or beyond the fall angle ±{fall_angle} rad (fall_angle), where the bicycle is on the ground"
+                "invalid lean0 {lean0:?}: at or beyond the fall angle ±{fall_angle} rad (fall_angle), where the bicycle is on the ground"
             ),
             NonlinearError::Parameter(carvallo::ParameterError::InvalidParameter {
                 reason, ..
-            }) => format!("invalid lean0 {lean0}: {reason}"),
+            }) => format!("invalid lean0 {lean0:?}: {reason}"),
             other => other.to_string(),
         })
     })?;
@@ -1128,8 +1128,9 @@ fn column_of(x: &Bound<'_, PyAny>, what: &str) -> PyResult<Vec<f64>> {
 /// `simulate`, keeping only the end (as `carvallo simulate --batch FILE --csv`). A dict of
 /// numpy arrays, one entry per start: `t_end`, `lean`, `steer`, `yaw`, `x`, `y`, `lean_rate`,
 /// `steer_rate` (NaN for a failed run), `event_t` (NaN when no stop condition was met),
-/// `stopped_by` (the index of the condition met, -1 for none), `fell` (a condition met or the
-/// contact lost), `ok`, `rhs_evaluations`, and `errors` (a list, None for a run that did not
+/// `fall_t` (when the lean reached the fall angle, 1.2 rad; NaN when it did not),
+/// `stopped_by` (the index of the condition met, -1 for none), `fell` (the fall angle reached,
+/// a condition met or the contact lost), `ok`, `rhs_evaluations`, and `errors` (a list, None for a run that did not
 /// fail). Each run equals `simulate`'s bit for bit, and a chunk (any slice of the batch, read
 /// whatever its layout, see [`column_of`]) gives the batch's rows for it bit for bit: the
 /// chunks of a batch can run in other processes (docs/examples/basin_dask.py over Dask).
@@ -1204,7 +1205,7 @@ fn simulate_many<'py>(
     })?;
     let d = PyDict::new(py);
     type Column = fn(&carvallo::whipple_nonlinear::Final) -> f64;
-    let columns: [(&str, Column); 9] = [
+    let columns: [(&str, Column); 10] = [
         ("t_end", |f| f.t),
         ("lean", |f| f.state.lean),
         ("steer", |f| f.state.steer),
@@ -1214,6 +1215,7 @@ fn simulate_many<'py>(
         ("lean_rate", |f| f.state.lean_rate),
         ("steer_rate", |f| f.state.steer_rate),
         ("event_t", |f| f.event.map_or(f64::NAN, |e| e.1)),
+        ("fall_t", |f| f.fall.unwrap_or(f64::NAN)),
     ];
     for (name, f) in columns {
         let v: Vec<f64> = ends.iter().map(|e| e.as_ref().map_or(f64::NAN, f)).collect();
