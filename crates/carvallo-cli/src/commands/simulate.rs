@@ -28,8 +28,15 @@
 //!
 //! The parameter file is the anchors TOML format or BicycleParameters' text, with `--rider` and
 //! `--strict` as on `window` ([`crate::args::bicycle`]). Unknown,
-//! repeated or missing arguments, non-finite numbers and a failed simulation (the bicycle fell
-//! flat) are errors naming the value, exit code 2.
+//! repeated or missing arguments, non-finite numbers, a start at or beyond the fall angle and a
+//! failed integration are errors naming the value, exit code 2.
+//!
+//! A fall is a result: the run ends when the lean's magnitude reaches `--fall-angle` (1.2 rad
+//! by default, [`carvallo::whipple_nonlinear::DEFAULT_FALL_ANGLE`]), located on the
+//! interpolant like a stop condition; the text says `fell at t = T s: ...` and the JSON has
+//! `status` (`completed`, `stopped`, `fell` or `interrupted`), `status_line`, `fall_angle`,
+//! `fall_t` and `interrupted`. Ctrl-C ends the run within a step: the samples so far and the
+//! line `interrupted at t = T s`, exit code 0 (as an interrupted sweep).
 
 use std::sync::atomic::{AtomicBool, AtomicUsize, Ordering};
 
