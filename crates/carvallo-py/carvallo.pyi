@@ -160,6 +160,7 @@ def simulate(
     impulses: Sequence[tuple[float, float, float]] = (),
     k: Optional[npt.ArrayLike | dict[str, float] | GainTable] = None,
     fall_angle: float = 1.2,
+    steer_lock: float = 1.4,
 ) -> dict[str, object]:
     """Nonlinear simulation from upright straight running (rk4, or dopri5 / dop853 /
     vern9 with rtol, default 1e-8, and atol, default 1e-3 rtol; stop_when conditions
@@ -171,7 +172,10 @@ def simulate(
     A fall is a result: the run ends when |lean| reaches fall_angle (rad, in (0, pi/2];
     default 1.2, a stated angle), located on the integrator's interpolant; status is
     "completed", "stopped" (a stop_when condition) or "fell", with status_line
-    ("fell at t = 1.94 s: ..."), fall_angle and fall_t (None unless it fell). A start at or
+    ("fell at t = 1.94 s: ..."), fall_angle and fall_t (None unless it fell). The run ends too
+    when |steer| reaches steer_lock (rad, in (0, pi/2); default 1.4, the handlebar against the
+    frame, short of the equations' singularity at pi/2): status "steer lock", steer_lock and
+    steer_lock_t. A start at or
     beyond fall_angle, or where no pitch puts the front wheel on the ground, raises
     ParameterError naming lean0, whatever the method. Ctrl-C raises KeyboardInterrupt within
     a step.
@@ -198,7 +202,7 @@ def simulate_many(
 ) -> dict[str, object]:
     """Many simulations in parallel (GIL released), keeping the ends: arrays t_end, lean, steer,
     yaw, x, y, lean_rate, steer_rate, event_t, fall_t (the lean reaching 1.2 rad; NaN when
-    not), stopped_by, fell, ok, rhs_evaluations and the list errors; each equals `simulate`'s end bit for bit, and a chunk of a batch (any slice,
+    not), steer_lock_t (the steer reaching 1.4 rad; NaN when not), stopped_by, fell, ok, rhs_evaluations and the list errors; each equals `simulate`'s end bit for bit, and a chunk of a batch (any slice,
     any memory layout) gives the batch's rows for it bit for bit, so chunks can run on Dask
     workers (docs/examples/basin_dask.py)."""
 

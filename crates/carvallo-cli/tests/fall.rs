@@ -1,6 +1,7 @@
 //! A fall is a result, and Ctrl-C ends a single simulation: `carvallo simulate` ends at the
 //! lean's fall angle with the status `fell` (exit 0, in the text and the JSON), its time
-//! located on the interpolant and checked against an independent run by another method; a
+//! located on the interpolant and checked against an independent run by another method, or at
+//! the steer lock (a slow fall, the fork turning across the frame) by every method alike; a
 //! start at or beyond the fall angle is refused by every method alike (exit 2 naming
 //! `--lean0`); SIGINT during a long `simulate`, `hoop` or `unicycle` ends it within a bound,
 //! with the samples so far and the line `interrupted at t = …` (exit 0, as a sweep).
@@ -25,6 +26,15 @@ fn fall(extra: &[&str]) -> Value {
     serde_json::from_str(&out).unwrap()
 }
 
+/// The time in a status line `WHAT at t = T s: ...`, checked against `t` (serde_json's float
+/// parser may read the printed number an ulp off).
+fn check_line(v: &Value, what: &str, t: f64) {
+    let line = v["status_line"].as_str().unwrap();
+    let rest = line.strip_prefix(&format!("{what} at t = ")).unwrap_or_else(|| panic!("{line}"));
+    let printed: f64 = rest.split(' ').next().unwrap().parse().unwrap();
+    assert!((printed - t).abs() <= 1e-15 * t, "{line} against {t}");
+}
+
 fn numbers(v: &Value, key: &str) -> Vec<f64> {
     v[key].as_array().unwrap().iter().map(|x| x.as_f64().unwrap()).collect()
 }
@@ -43,7 +53,7 @@ fn a_fall_ends_the_run_with_its_status() {
     assert_eq!(v["status"], "fell", "{}", v["status_line"]);
     assert_eq!(v["fall_angle"].as_f64(), Some(1.2));
     let t_fall = v["fall_t"].as_f64().unwrap();
-    assert!(v["status_line"].as_str().unwrap().starts_with(&format!("fell at t = {t_fall} s")));
+    check_line(&v, "fell", t_fall);
     let (t, lean) = (numbers(&v, "t"), numbers(&v, "lean"));
     // The trajectory up to the fall: the grid's samples before it, the state at it last.
     assert_eq!(*t.last().unwrap(), t_fall);
@@ -95,6 +105,64 @@ fn the_fall_time_agrees_between_methods_and_steps() {
     // Every sample before the fall is inside the angle.
     let leans = numbers(&v, "lean");
     assert!(leans[..leans.len() - 1].iter().all(|l| l.abs() < 0.8));
+}
+
+#[test]
+fn a_slow_fall_ends_at_the_steer_lock_by_every_method() {
+    // At 1 m/s the fork turns across the frame before the lean reaches the fall angle; the
+    // equations are singular at a steer of pi/2, where the adaptive pairs gave up. The steer
+    // lock (1.4 rad) ends the run first, at one time by every method.
+    let mut times = Vec::new();
+    for method in ["rk4", "dopri5", "dop853", "vern9"] {
+        let (code, out, err) = carvallo(&[
+            "simulate",
+            "--model",
+            "benchmark",
+            "--speed",
+            "1",
+            "--lean0",
+            "0.05",
+            "--duration",
+            "20",
+            "--method",
+            method,
+            "--json",
+        ]);
+        assert_eq!(code, 0, "{method}: {err}");
+        let v: Value = serde_json::from_str(&out).unwrap();
+        assert_eq!(v["status"], "steer lock", "{method}: {}", v["status_line"]);
+        assert_eq!(v["steer_lock"].as_f64(), Some(1.4));
+        assert!(v["fall_t"].is_null());
+        let t = v["steer_lock_t"].as_f64().unwrap();
+        assert_eq!(*numbers(&v, "t").last().unwrap(), t);
+        assert!((numbers(&v, "steer").last().unwrap().abs() - 1.4).abs() < 1e-12);
+        check_line(&v, "steer lock", t);
+        times.push(t);
+    }
+    eprintln!("steer lock times (rk4, dopri5, dop853, vern9): {times:?}");
+    // DOPRI5 at its default rtol 1e-8 is the loosest: within 1e-7 s of the others.
+    for t in &times {
+        assert!((t - times[2]).abs() < 1e-7, "{times:?}");
+    }
+    assert!((times[2] - times[3]).abs() < 1e-9, "{times:?}");
+    // A steer lock outside (0, pi/2) is named.
+    for bad in ["0", "1.5707963267948966", "2", "inf"] {
+        let (code, _, err) = carvallo(&[
+            "simulate",
+            "--model",
+            "benchmark",
+            "--speed",
+            "5",
+            "--lean0",
+            "0.1",
+            "--duration",
+            "1",
+            "--steer-lock",
+            bad,
+        ]);
+        assert_eq!(code, 2, "{bad}");
+        assert!(err.contains(&format!("invalid value '{bad}' for '--steer-lock <RAD>'")), "{err}");
+    }
 }
 
 #[test]

@@ -26,6 +26,13 @@ fn single_text(speed: &str, lean0: &str, extra: &[&str]) -> String {
     out
 }
 
+/// The number `key` in the JSON text, parsed by Rust's correctly rounded `str::parse`.
+fn number(json: &str, key: &str) -> f64 {
+    let from = json.find(&format!("\"{key}\":")).unwrap() + key.len() + 3;
+    let end = from + json[from..].find([',', '}']).unwrap();
+    json[from..end].parse().unwrap()
+}
+
 /// The last number of the array `key` in the JSON text, parsed by Rust's correctly rounded
 /// `str::parse` (serde_json's default float parser may err by an ulp).
 fn last_number(json: &str, key: &str) -> f64 {
@@ -135,12 +142,19 @@ fn batch_rows_equal_single_runs_bit_for_bit() {
                 );
             }
             assert_eq!(col(&row, "rhs_evaluations") as u64, v["rhs_evaluations"].as_u64().unwrap());
-            // Fell: a stop condition met or the fall angle reached (the single run's status).
-            let fell = !v["events"].as_array().unwrap().is_empty() || v["status"] == "fell";
+            // Fell: a stop condition met, the fall angle or the steer lock reached (the single
+            // run's status).
+            let limit = v["status"] == "fell" || v["status"] == "steer lock";
+            let fell = !v["events"].as_array().unwrap().is_empty() || limit;
             assert_eq!(row[header.iter().position(|h| *h == "fell").unwrap()], fell.to_string());
-            if v["status"] == "fell" {
-                assert!(line.contains(",fall angle,"), "{line}");
-                assert_eq!(col(&row, "event_t").to_bits(), v["fall_t"].as_f64().unwrap().to_bits());
+            for (status, by, key) in
+                [("fell", ",fall angle,", "fall_t"), ("steer lock", ",steer lock,", "steer_lock_t")]
+            {
+                if v["status"] == status {
+                    assert!(line.contains(by), "{line}");
+                    assert!(v[key].is_f64(), "{key}: {text}");
+                    assert_eq!(col(&row, "event_t").to_bits(), number(&text, key).to_bits());
+                }
             }
         }
     }

@@ -196,6 +196,7 @@ pub(crate) mod arg {
         speed: f64 = real;
         lean0: f64 = real;
         fall_angle: f64 = real;
+        steer_lock: f64 = real;
         duration: f64 = real;
         step: f64 = real;
         start: f64 = real;

@@ -898,7 +898,8 @@ fn sweep<'py>(
 /// `max_contact_residual`, the `method`, `rtol` and `atol` (None for rk4), the counts
 /// `rhs_evaluations`, `steps`, `rejected_steps` and `events` (a list of dicts `when`, `t`),
 /// and how the run ended ([`set_status`]): the run ends, fallen, when the lean's magnitude
-/// reaches `fall_angle` (default 1.2 rad; a start at or beyond it is refused). Ctrl-C raises
+/// reaches `fall_angle` (default 1.2 rad; a start at or beyond it is refused), or when the
+/// steer's reaches `steer_lock` (default 1.4 rad, the handlebar against the frame). Ctrl-C raises
 /// `KeyboardInterrupt` within a step.
 ///
 /// Driven (as `simulate --torque ... --gain ...`): `torque_t` with `torque_roll` and/or
@@ -908,7 +909,7 @@ fn sweep<'py>(
 /// table read at the rear contact's speed). The dict then adds `T_phi`, `T_delta`, `work_t`,
 /// `work` and `max_energy_change`, and `energy_drift` is that of E - E(0) - W.
 #[pyfunction]
-#[pyo3(signature = (params, speed, lean0, duration, step = 0.001, every = 10, strict = false, *, method = "rk4", rtol = None, atol = None, stop_when = Vec::new(), torque_t = None, torque_roll = None, torque_steer = None, impulses = Vec::new(), k = None, fall_angle = carvallo::whipple_nonlinear::DEFAULT_FALL_ANGLE))]
+#[pyo3(signature = (params, speed, lean0, duration, step = 0.001, every = 10, strict = false, *, method = "rk4", rtol = None, atol = None, stop_when = Vec::new(), torque_t = None, torque_roll = None, torque_steer = None, impulses = Vec::new(), k = None, fall_angle = carvallo::whipple_nonlinear::DEFAULT_FALL_ANGLE, steer_lock = carvallo::whipple_nonlinear::DEFAULT_STEER_LOCK))]
 #[allow(clippy::too_many_arguments)]
 fn simulate<'py>(
     py: Python<'py>,
@@ -929,10 +930,12 @@ fn simulate<'py>(
     #[pyo3(from_py_with = arg::impulses)] impulses: Vec<(f64, f64, f64)>,
     k: Option<Bound<'py, PyAny>>,
     #[pyo3(from_py_with = arg::fall_angle)] fall_angle: f64,
+    #[pyo3(from_py_with = arg::steer_lock)] steer_lock: f64,
 ) -> PyResult<Bound<'py, PyDict>> {
     let (how, stops) = integration_of(method, rtol, atol, &stop_when)?;
     let bike = WhippleNonlinear::new(params_of(params, strict)?)
         .with_fall_angle(fall_angle)
+        .and_then(|b| b.with_steer_lock(steer_lock))
         .map_err(|e| err(e.to_string()))?;
     let start = bike.initial_state(speed, lean0).map_err(|e| err(e.to_string()))?;
     bike.check_start(&start).map_err(|e| {
@@ -985,20 +988,22 @@ fn simulate<'py>(
     d.set_item("energy_drift", tr.energy_drift)?;
     d.set_item("max_contact_residual", tr.max_contact_residual)?;
     let event = tr.event.map(|(k, t)| (stops[k].text(), t));
-    set_status(&d, &bike, event.as_ref(), tr.fall, tr.times.last().copied().unwrap_or(0.0))?;
+    let end = tr.times.last().copied().unwrap_or(0.0);
+    set_status(&d, &bike, event.as_ref(), (tr.fall, tr.steer_lock), end)?;
     set_run(&d, &how, &tr.stats, event)?;
     Ok(d)
 }
 
 /// How a run of `simulate` ended: `status` (`"completed"`, `"stopped"` by a condition of
-/// `stop_when`, `"fell"`: the lean reached `fall_angle`), `status_line` (`"fell at t = 1.94 s:
-/// ..."`), `fall_angle` and `fall_t` (None unless it fell). An interrupted run raises
+/// `stop_when`, `"fell"`: the lean reached `fall_angle`, `"steer lock"`: the steer reached
+/// `steer_lock`), `status_line` (`"fell at t = 1.94 s: ..."`), `fall_angle`, `fall_t`,
+/// `steer_lock` and `steer_lock_t` (None unless reached). An interrupted run raises
 /// `KeyboardInterrupt` instead.
 fn set_status(
     d: &Bound<'_, PyDict>,
     bike: &WhippleNonlinear,
     event: Option<&(String, f64)>,
-    fall: Option<f64>,
+    (fall, lock): (Option<f64>, Option<f64>),
     end: f64,
 ) -> PyResult<()> {
     let (status, line) = if let Some(t) = fall {
@@ -1009,6 +1014,14 @@ fn set_status(
                 bike.fall_angle()
             ),
         )
+    } else if let Some(t) = lock {
+        (
+            "steer lock",
+            format!(
+                "steer lock at t = {t} s: the steer reached ±{} rad, the handlebar against the frame",
+                bike.steer_lock()
+            ),
+        )
     } else if let Some((when, t)) = event {
         ("stopped", format!("stopped at t = {t} s: {when}"))
     } else {
@@ -1017,7 +1030,9 @@ fn set_status(
     d.set_item("status", status)?;
     d.set_item("status_line", line)?;
     d.set_item("fall_angle", bike.fall_angle())?;
-    d.set_item("fall_t", fall)
+    d.set_item("fall_t", fall)?;
+    d.set_item("steer_lock", bike.steer_lock())?;
+    d.set_item("steer_lock_t", lock)
 }
 
 /// The inputs of `simulate`: the sampled torques (`torque_t` with `torque_roll` and/or
@@ -1100,7 +1115,8 @@ fn simulate_driven<'py>(
     d.set_item("energy_drift", diag.energy_drift)?;
     d.set_item("max_contact_residual", diag.max_contact_residual)?;
     let event = tr.event.map(|(k, t)| (stops[k].text(), t));
-    set_status(&d, bike, event.as_ref(), tr.fall, tr.times.last().copied().unwrap_or(0.0))?;
+    let end = tr.times.last().copied().unwrap_or(0.0);
+    set_status(&d, bike, event.as_ref(), (tr.fall, tr.steer_lock), end)?;
     set_run(&d, how, &tr.stats, event)?;
     Ok(d)
 }
@@ -1129,8 +1145,9 @@ fn column_of(x: &Bound<'_, PyAny>, what: &str) -> PyResult<Vec<f64>> {
 /// numpy arrays, one entry per start: `t_end`, `lean`, `steer`, `yaw`, `x`, `y`, `lean_rate`,
 /// `steer_rate` (NaN for a failed run), `event_t` (NaN when no stop condition was met),
 /// `fall_t` (when the lean reached the fall angle, 1.2 rad; NaN when it did not),
-/// `stopped_by` (the index of the condition met, -1 for none), `fell` (the fall angle reached,
-/// a condition met or the contact lost), `ok`, `rhs_evaluations`, and `errors` (a list, None for a run that did not
+/// `steer_lock_t` (when the steer reached the steer lock, 1.4 rad; NaN when it did not),
+/// `stopped_by` (the index of the condition met, -1 for none), `fell` (the fall angle or the
+/// steer lock reached, a condition met or the contact lost), `ok`, `rhs_evaluations`, and `errors` (a list, None for a run that did not
 /// fail). Each run equals `simulate`'s bit for bit, and a chunk (any slice of the batch, read
 /// whatever its layout, see [`column_of`]) gives the batch's rows for it bit for bit: the
 /// chunks of a batch can run in other processes (docs/examples/basin_dask.py over Dask).
@@ -1205,7 +1222,7 @@ fn simulate_many<'py>(
     })?;
     let d = PyDict::new(py);
     type Column = fn(&carvallo::whipple_nonlinear::Final) -> f64;
-    let columns: [(&str, Column); 10] = [
+    let columns: [(&str, Column); 11] = [
         ("t_end", |f| f.t),
         ("lean", |f| f.state.lean),
         ("steer", |f| f.state.steer),
@@ -1216,6 +1233,7 @@ fn simulate_many<'py>(
         ("steer_rate", |f| f.state.steer_rate),
         ("event_t", |f| f.event.map_or(f64::NAN, |e| e.1)),
         ("fall_t", |f| f.fall.unwrap_or(f64::NAN)),
+        ("steer_lock_t", |f| f.steer_lock.unwrap_or(f64::NAN)),
     ];
     for (name, f) in columns {
         let v: Vec<f64> = ends.iter().map(|e| e.as_ref().map_or(f64::NAN, f)).collect();
@@ -1229,7 +1247,7 @@ fn simulate_many<'py>(
     let fell: Vec<bool> = ends
         .iter()
         .map(|e| match e {
-            Ok(f) => f.fall.is_some() || f.event.is_some(),
+            Ok(f) => f.fall.is_some() || f.steer_lock.is_some() || f.event.is_some(),
             Err(e) => matches!(e, carvallo::whipple_nonlinear::NonlinearError::NoContact { .. }),
         })
         .collect();

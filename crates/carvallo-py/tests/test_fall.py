@@ -1,5 +1,7 @@
 """A fall is a result (issue 37, item 2) and the closed-loop window's arguments (issue 39).
 
+A slow fall ends at the steer lock (1.4 rad) instead, at one time by every method.
+
 `simulate` ends when the lean reaches `fall_angle` (1.2 rad by default) and returns the arrays
 up to then with `status` "fell", `status_line` and `fall_t`, the same fall time by RK4 and
 DOP853; a start at or beyond the fall angle raises ParameterError naming lean0 whatever the
@@ -41,6 +43,22 @@ def test_a_fall_is_a_result_with_its_status():
     s = carvallo.simulate(B, 2.0, 0.05, 10.0, stop_when=["lean=±0.5"])
     assert s["status"] == "stopped" and s["fall_t"] is None
     assert s["status_line"].startswith("stopped at t = 1.71")
+
+
+def test_a_slow_fall_ends_at_the_steer_lock():
+    times = []
+    for method in ("rk4", "dopri5", "dop853", "vern9"):
+        r = carvallo.simulate(B, 1.0, 0.05, 20.0, method=method)
+        assert r["status"] == "steer lock", r["status_line"]
+        assert r["fall_t"] is None and r["steer_lock"] == 1.4
+        assert r["t"][-1] == r["steer_lock_t"] and abs(abs(r["steer"][-1]) - 1.4) < 1e-12
+        times.append(r["steer_lock_t"])
+    assert max(times) - min(times) < 1e-7, times
+    m = carvallo.simulate_many(B, [1.0], [0.05], 20.0)
+    assert m["fell"][0] and m["steer_lock_t"][0] == times[0] and np.isnan(m["fall_t"][0])
+    for bad in (0.0, math.pi / 2, 2.0, math.inf):
+        with pytest.raises(carvallo.ParameterError, match="steer lock"):
+            carvallo.simulate(B, 5.0, 0.1, 1.0, steer_lock=bad)
 
 
 def test_a_driven_run_falls_too():

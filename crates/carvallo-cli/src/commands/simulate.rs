@@ -34,14 +34,18 @@
 //! A fall is a result: the run ends when the lean's magnitude reaches `--fall-angle` (1.2 rad
 //! by default, [`carvallo::whipple_nonlinear::DEFAULT_FALL_ANGLE`]), located on the
 //! interpolant like a stop condition; the text says `fell at t = T s: ...` and the JSON has
-//! `status` (`completed`, `stopped`, `fell` or `interrupted`), `status_line`, `fall_angle`,
-//! `fall_t` and `interrupted`. Ctrl-C ends the run within a step: the samples so far and the
+//! `status` (`completed`, `stopped`, `fell`, `steer lock` or `interrupted`), `status_line`,
+//! `fall_angle`, `fall_t`, `steer_lock`, `steer_lock_t` and `interrupted`. The steer reaching
+//! `--steer-lock` (1.4 rad by default: the handlebar against the frame, short of the equations'
+//! singularity at ±π/2, which a slow fall turns the fork into) ends the run the same way. Ctrl-C ends the run within a step: the samples so far and the
 //! line `interrupted at t = T s`, exit code 0 (as an interrupted sweep).
 
 use std::sync::atomic::{AtomicBool, AtomicUsize, Ordering};
 
 use carvallo::numerics::integrate::{Grid, Integration, Method};
-use carvallo::whipple_nonlinear::{NonlinearError, Stop, WhippleNonlinear, DEFAULT_FALL_ANGLE};
+use carvallo::whipple_nonlinear::{
+    NonlinearError, Stop, WhippleNonlinear, DEFAULT_FALL_ANGLE, DEFAULT_STEER_LOCK,
+};
 use serde_json::json;
 
 use crate::args::{finite, DataOptions};
@@ -200,9 +204,9 @@ fn batch(
         ends
     });
     let elapsed = clock.elapsed().as_secs_f64();
-    // Fell: the fall angle reached, a stop condition met, or the contact lost.
+    // Fell: the fall angle or the steer lock reached, a stop condition met, or the contact lost.
     let fell = |e: &Result<carvallo::whipple_nonlinear::Final, NonlinearError>| match e {
-        Ok(f) => f.fall.is_some() || f.event.is_some(),
+        Ok(f) => f.fall.is_some() || f.steer_lock.is_some() || f.event.is_some(),
         Err(NonlinearError::NoContact { .. }) => true,
         Err(_) => false,
     };
@@ -213,10 +217,11 @@ fn batch(
             match e {
                 Ok(f) => {
                     let st = f.state;
-                    let (by, te) = match (f.event, f.fall) {
-                        (Some((j, t)), _) => (stops[j].text(), format!("{t:?}")),
-                        (None, Some(t)) => ("fall angle".to_string(), format!("{t:?}")),
-                        (None, None) => (String::new(), String::new()),
+                    let (by, te) = match (f.event, f.fall, f.steer_lock) {
+                        (Some((j, t)), _, _) => (stops[j].text(), format!("{t:?}")),
+                        (None, Some(t), _) => ("fall angle".to_string(), format!("{t:?}")),
+                        (None, None, Some(t)) => ("steer lock".to_string(), format!("{t:?}")),
+                        (None, None, None) => (String::new(), String::new()),
                     };
                     let values =
                         [f.t, st.lean, st.steer, st.yaw, st.x, st.y, st.lean_rate, st.steer_rate]
@@ -244,7 +249,7 @@ fn batch(
     let fallen = ends.iter().filter(|e| fell(e)).count();
     let evaluations: usize = ends.iter().flatten().map(|f| f.stats.rhs_evaluations).sum();
     Ok(format!(
-        "{} simulations of {} s ({}{}) on {} threads in {elapsed:.3} s\n{fallen} fell (the fall angle reached, a stop condition met or the contact lost), {failed} failed, {evaluations} right-hand side evaluations\n",
+        "{} simulations of {} s ({}{}) on {} threads in {elapsed:.3} s\n{fallen} fell (the fall angle or the steer lock reached, a stop condition met or the contact lost), {failed} failed, {evaluations} right-hand side evaluations\n",
         rows.len(),
         grid.end(),
         how.method.name(),
@@ -290,6 +295,10 @@ pub struct Args {
     /// (a stated angle: the model gives the frame and rider no extent), in (0, π/2]
     #[arg(long, value_name = "RAD", default_value_t = DEFAULT_FALL_ANGLE, value_parser = fall_angle, allow_hyphen_values = true)]
     pub fall_angle: f64,
+    /// The steer at which the handlebar meets the frame [rad]: the run ends there, status
+    /// `steer lock` (a stated angle short of the equations' singularity at π/2), in (0, π/2)
+    #[arg(long, value_name = "RAD", default_value_t = DEFAULT_STEER_LOCK, value_parser = steer_lock, allow_hyphen_values = true)]
+    pub steer_lock: f64,
     #[command(flatten)]
     pub integration: IntegrationArgs,
     #[command(flatten)]
@@ -320,19 +329,40 @@ fn fall_angle(v: &str) -> Result<f64, String> {
     }
 }
 
-/// How a run of the bicycle ended: its status (`completed`, `stopped`, `fell`, `interrupted`)
-/// and the line that says so (`fell at t = 2.34 s: the lean reached ±1.2 rad`), from the
-/// stop condition met (its text and time), the fall's time, the interruption's time and the
-/// run's end.
+/// A steer lock: a finite number in (0, π/2).
+fn steer_lock(v: &str) -> Result<f64, String> {
+    let x = finite(v)?;
+    if x > 0.0 && x < std::f64::consts::FRAC_PI_2 {
+        Ok(x)
+    } else {
+        Err(format!(
+            "must lie in (0, {}) rad (at pi/2 the equations are singular)",
+            std::f64::consts::FRAC_PI_2
+        ))
+    }
+}
+
+/// How a run of the bicycle ended: its status (`completed`, `stopped`, `fell`, `steer lock`,
+/// `interrupted`) and the line that says so (`fell at t = 2.34 s: the lean reached ...`), from
+/// the stop condition met (its text and time), the times of the fall, of the steer lock and
+/// of the interruption, the bicycle (its limits) and the run's end.
 pub(crate) fn ending(
     event: Option<&(String, f64)>,
-    fall: Option<f64>,
+    limits: (Option<f64>, Option<f64>),
     interrupted: Option<f64>,
-    fall_angle: f64,
+    bike: &WhippleNonlinear,
     end: f64,
 ) -> (&'static str, String) {
+    let (fall, lock) = limits;
     if let Some(t) = fall {
-        ("fell", format!("fell at t = {t} s: the lean reached the fall angle ±{fall_angle} rad"))
+        let a = bike.fall_angle();
+        ("fell", format!("fell at t = {t} s: the lean reached the fall angle ±{a} rad"))
+    } else if let Some(t) = lock {
+        let a = bike.steer_lock();
+        (
+            "steer lock",
+            format!("steer lock at t = {t} s: the steer reached ±{a} rad, the handlebar against the frame"),
+        )
     } else if let Some((when, t)) = event {
         ("stopped", format!("stopped at t = {t} s: {when}"))
     } else if let Some(t) = interrupted {
@@ -340,6 +370,19 @@ pub(crate) fn ending(
     } else {
         ("completed", format!("completed at t = {end} s"))
     }
+}
+
+/// The JSON keys of the limits: `fall_angle`, `fall_t`, `steer_lock`, `steer_lock_t`.
+pub(crate) fn limits_json(
+    v: &mut serde_json::Value,
+    bike: &WhippleNonlinear,
+    fall: Option<f64>,
+    lock: Option<f64>,
+) {
+    v["fall_angle"] = json!(bike.fall_angle());
+    v["fall_t"] = json!(fall);
+    v["steer_lock"] = json!(bike.steer_lock());
+    v["steer_lock_t"] = json!(lock);
 }
 
 /// The message of a start that [`WhippleNonlinear::check_start`] refuses, naming `--lean0`.
@@ -372,6 +415,7 @@ pub fn run(cmd: &Args) -> Result<String, String> {
     }
     let bike = WhippleNonlinear::new(crate::args::bicycle(model, data)?)
         .with_fall_angle(cmd.fall_angle)
+        .and_then(|b| b.with_steer_lock(cmd.steer_lock))
         .map_err(|e| e.to_string())?;
     let grid = Grid::exact(*duration, *step, *every)
         .map_err(|(name, value, reason)| format!("invalid --{name} {value:?}: {reason}"))?;
@@ -408,7 +452,8 @@ pub fn run(cmd: &Args) -> Result<String, String> {
     })?;
     let events: Vec<(String, f64)> = tr.event.iter().map(|&(k, t)| (stops[k].text(), t)).collect();
     let end = tr.times.last().copied().unwrap_or(0.0);
-    let (status, line) = ending(events.first(), tr.fall, tr.interrupted, bike.fall_angle(), end);
+    let (status, line) =
+        ending(events.first(), (tr.fall, tr.steer_lock), tr.interrupted, &bike, end);
     if *json {
         let col = |f: &dyn Fn(&carvallo::whipple_nonlinear::Sample) -> f64| -> Vec<f64> {
             tr.samples.iter().map(f).collect()
@@ -428,8 +473,6 @@ pub fn run(cmd: &Args) -> Result<String, String> {
             "events": events.iter().map(|(when, t)| json!({"when": when, "t": t})).collect::<Vec<_>>(),
             "status": status,
             "status_line": line,
-            "fall_angle": bike.fall_angle(),
-            "fall_t": tr.fall,
             "interrupted": tr.interrupted.map(super::rolling::interrupted_line),
             "energy_drift": tr.energy_drift,
             "max_contact_residual": tr.max_contact_residual,
@@ -444,6 +487,8 @@ pub fn run(cmd: &Args) -> Result<String, String> {
             "front_y": col(&|s| s.front_contact[1]),
             "energy": col(&|s| s.energy),
         });
+        let mut v = v;
+        limits_json(&mut v, &bike, tr.fall, tr.steer_lock);
         serde_json::to_string(&v).map_err(|e| e.to_string())
     } else {
         let integrator = if how.method.is_adaptive() {
@@ -519,6 +564,7 @@ mod tests {
                 step: 0.001,
                 every: 10,
                 fall_angle: DEFAULT_FALL_ANGLE,
+                steer_lock: DEFAULT_STEER_LOCK,
                 integration: IntegrationArgs::default(),
                 inputs: Default::default(),
                 batch: None,

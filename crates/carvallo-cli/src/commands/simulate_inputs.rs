@@ -285,8 +285,13 @@ pub fn run(
         .map_err(|e| e.to_string())?;
     let events: Vec<(String, f64)> = tr.event.iter().map(|&(k, t)| (stops[k].text(), t)).collect();
     let end = tr.times.last().copied().unwrap_or(0.0);
-    let (status, line) =
-        super::simulate::ending(events.first(), tr.fall, tr.interrupted, bike.fall_angle(), end);
+    let (status, line) = super::simulate::ending(
+        events.first(),
+        (tr.fall, tr.steer_lock),
+        tr.interrupted,
+        bike,
+        end,
+    );
     let d = tr.diagnostics;
     if json {
         let col =
@@ -306,8 +311,6 @@ pub fn run(
             "events": events.iter().map(|(when, t)| json!({"when": when, "t": t})).collect::<Vec<_>>(),
             "status": status,
             "status_line": line,
-            "fall_angle": bike.fall_angle(),
-            "fall_t": tr.fall,
             "interrupted": tr.interrupted.map(super::rolling::interrupted_line),
             "inputs": args.json(),
             "work": d.work,
@@ -328,6 +331,8 @@ pub fn run(
             "T_delta": col(&|s| s.torque[1]),
             "work_t": col(&|s| s.work),
         });
+        let mut v = v;
+        super::simulate::limits_json(&mut v, bike, tr.fall, tr.steer_lock);
         return serde_json::to_string(&v).map_err(|e| e.to_string());
     }
     let integrator = if how.method.is_adaptive() {

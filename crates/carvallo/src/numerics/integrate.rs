@@ -492,7 +492,7 @@ pub fn integrate_until<'e, const N: usize, E: Clone>(
 }
 
 /// The most event functions of one run.
-pub const MAX_EVENTS: usize = 9;
+pub const MAX_EVENTS: usize = 10;
 
 /// The signs of the event functions since the start (the last nonzero value of each).
 struct Watch {

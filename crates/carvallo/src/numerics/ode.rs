@@ -49,6 +49,10 @@ pub struct Trajectory<S, D = ()> {
     /// fall angle: [`WhippleNonlinear::fall_angle`](crate::whipple::nonlinear::WhippleNonlinear::fall_angle)),
     /// the time of the last sample; `None` when it was not reached or the model has none.
     pub fall: Option<f64>,
+    /// When the model's steer limit ended the run (the nonlinear bicycle's steer reaching its
+    /// lock: [`WhippleNonlinear::steer_lock`](crate::whipple::nonlinear::WhippleNonlinear::steer_lock)),
+    /// the time of the last sample; `None` otherwise.
+    pub steer_lock: Option<f64>,
     /// When a stop flag ended the run early (Ctrl-C), the time it reached (its last accepted
     /// step; the samples are those of the grid up to it); `None` otherwise.
     pub interrupted: Option<f64>,
@@ -65,6 +69,7 @@ impl<S, D> Trajectory<S, D> {
             stats: Stats::default(),
             event: None,
             fall: None,
+            steer_lock: None,
             interrupted: None,
         }
     }

@@ -188,7 +188,7 @@ impl From<IntegrateError<NonlinearError>> for NonlinearError {
                 NonlinearError::Parameter(ParameterError::InvalidParameter {
                     name: "stop conditions",
                     value: count as f64,
-                    reason: "at most 8 (with the fall)",
+                    reason: "at most 8 (with the fall and the steer lock)",
                 })
             }
         }
@@ -211,8 +211,9 @@ fn finite(name: &'static str, value: f64) -> Result<f64, NonlinearError> {
     }
 }
 
-/// The most stop conditions of a simulation: the integrator's events less the fall's.
-pub const MAX_STOPS: usize = integrate::MAX_EVENTS - 1;
+/// The most stop conditions of a simulation: the integrator's events less the fall's and the
+/// steer lock's.
+pub const MAX_STOPS: usize = integrate::MAX_EVENTS - 2;
 
 /// The fall angle of [`WhippleNonlinear::new`] (rad): a stated lean, 1.2 rad (69°). The
 /// Whipple model gives its frames and rider no extent (mass centres and inertias only), so no
@@ -220,6 +221,13 @@ pub const MAX_STOPS: usize = integrate::MAX_EVENTS - 1;
 /// solids, the knife-edge wheels, lie flat at π/2, beyond where the front contact can be
 /// solved once the fork has turned in a fall (the benchmark loses it near 1.39 rad).
 pub const DEFAULT_FALL_ANGLE: f64 = 1.2;
+
+/// The steer lock of [`WhippleNonlinear::new`] (rad): a stated steer, 1.4 rad (80°), where the
+/// handlebar meets the frame. The model has no lock of its own, but its equations are singular
+/// at $\delta = \pm\pi/2$ (the fork across the frame: the yaw rate grows as $\tan\delta$
+/// times the rear speed), which a falling bicycle at low speed turns its fork into before its
+/// lean reaches the fall angle; a run ends at the lock, located like the fall.
+pub const DEFAULT_STEER_LOCK: f64 = 1.4;
 
 /// The checks every simulation makes before it starts: a usable integration, a finite start
 /// state and stop values, and at most [`MAX_STOPS`] stop conditions.
@@ -300,11 +308,13 @@ pub struct KaneTerms {
     pub rear_speed: f64,
 }
 
-/// The nonlinear bicycle for one parameter set, and the lean at which it has fallen.
+/// The nonlinear bicycle for one parameter set, the lean at which it has fallen and the steer
+/// at which the handlebar meets the frame.
 #[derive(Clone, Debug)]
 pub struct WhippleNonlinear {
     params: WhippleParams,
     fall_angle: f64,
+    steer_lock: f64,
 }
 
 /// The full simulation state: the coordinates other than the pitch and the independent speeds.
@@ -408,6 +418,8 @@ pub struct Final {
     pub event: Option<(usize, f64)>,
     /// When the lean reached the fall angle, `None` when it did not.
     pub fall: Option<f64>,
+    /// When the steer reached the steer lock, `None` when it did not.
+    pub steer_lock: Option<f64>,
     /// When the stop flag ended the run (its last accepted step), `None` when it did not.
     pub interrupted: Option<f64>,
     /// Right-hand side evaluations and steps.
@@ -500,7 +512,7 @@ impl WhippleNonlinear {
     /// The nonlinear bicycle with the parameters `params` and the fall angle
     /// [`DEFAULT_FALL_ANGLE`].
     pub fn new(params: WhippleParams) -> WhippleNonlinear {
-        WhippleNonlinear { params, fall_angle: DEFAULT_FALL_ANGLE }
+        WhippleNonlinear { params, fall_angle: DEFAULT_FALL_ANGLE, steer_lock: DEFAULT_STEER_LOCK }
     }
 
     /// The same bicycle with the fall angle `angle` (rad): a simulation ends, fallen, when the
@@ -524,6 +536,36 @@ impl WhippleNonlinear {
         self.fall_angle
     }
 
+    /// The same bicycle with the steer lock `angle` (rad): a simulation ends when the
+    /// magnitude of the steer reaches it (the handlebar against the frame), located like the
+    /// fall, and a start at or beyond it is refused.
+    ///
+    /// # Errors
+    /// [`NonlinearError::Parameter`] naming `steer lock` unless $0 < $ `angle` $< \pi/2$ (at
+    /// π/2 the equations are singular).
+    pub fn with_steer_lock(self, angle: f64) -> Result<WhippleNonlinear, NonlinearError> {
+        finite("steer lock", angle)?;
+        if !(angle > 0.0 && angle < std::f64::consts::FRAC_PI_2) {
+            return Err(invalid(("steer lock", angle, "must lie in (0, pi/2) rad")));
+        }
+        Ok(WhippleNonlinear { steer_lock: angle, ..self })
+    }
+
+    /// The steer lock (rad): [`DEFAULT_STEER_LOCK`] unless
+    /// [`with_steer_lock`](Self::with_steer_lock) set another.
+    pub fn steer_lock(&self) -> f64 {
+        self.steer_lock
+    }
+
+    /// The model's own limits, the events after the stop conditions: the fall (the lean's
+    /// magnitude reaching the fall angle) and the steer lock.
+    pub(crate) fn limits(&self) -> [Stop; 2] {
+        [
+            Stop { quantity: Watched::Lean, value: self.fall_angle, magnitude: true },
+            Stop { quantity: Watched::Steer, value: self.steer_lock, magnitude: true },
+        ]
+    }
+
     /// Checks that `start` is a physical start and returns its pitch: a lean inside the fall
     /// angle and a pitch that puts the front wheel on the ground (Newton from 0). Every
     /// method of [`simulate_with`](Self::simulate_with) makes this check first.
@@ -537,6 +579,9 @@ impl WhippleNonlinear {
         finite("steer", start.steer)?;
         if start.lean.abs() >= self.fall_angle {
             return Err(NonlinearError::Fallen { lean: start.lean, fall_angle: self.fall_angle });
+        }
+        if start.steer.abs() >= self.steer_lock {
+            return Err(invalid(("steer", start.steer, "at or beyond the steer lock")));
         }
         self.pitch(start.lean, start.steer, 0.0).map_err(|_| {
             invalid((
@@ -895,6 +940,7 @@ impl WhippleNonlinear {
         trajectory.stats = end.stats;
         trajectory.event = end.event;
         trajectory.fall = end.fall;
+        trajectory.steer_lock = end.steer_lock;
         trajectory.interrupted = end.interrupted;
         Ok(trajectory)
     }
@@ -939,7 +985,7 @@ impl WhippleNonlinear {
 
     /// The integration behind [`simulate_with`](Self::simulate_with): `keep(t, state, guess)`
     /// receives every sample (and the event's state) with the Newton guess for its pitch. The
-    /// fall is one more event after the stop conditions: $|\varphi|$ reaching the fall angle.
+    /// fall and the steer lock are two more events after the stop conditions ([`Self::limits`]).
     fn run(
         &self,
         start: State,
@@ -951,14 +997,17 @@ impl WhippleNonlinear {
     ) -> Result<Final, NonlinearError> {
         check_run(&start, how, stops)?;
         let pitch0 = self.check_start(&start)?;
-        let fall = Stop { quantity: Watched::Lean, value: self.fall_angle, magnitude: true };
-        let conditions = stops.len() + 1;
+        let limits = self.limits();
+        let conditions = stops.len() + limits.len();
         let (e0, _) = self.observe(&self.configuration(&start, pitch0)?);
         let f = StateRate::new(&self.params);
         let (mut drift, mut residual) = (0.0f64, 0.0f64);
         let mut rhs = |_t: f64, y: &[f64; rate::LEN]| f.eval(y);
         let mut watchers: [_; integrate::MAX_EVENTS] = std::array::from_fn(|j| {
-            let stop = if j == stops.len() { Some(fall) } else { stops.get(j).copied() };
+            let stop = match j.checked_sub(stops.len()) {
+                Some(k) => limits.get(k).copied(),
+                None => stops.get(j).copied(),
+            };
             let f = &f;
             move |y: &[f64; rate::LEN]| -> Result<f64, NonlinearError> {
                 let Some(stop) = stop else { return Ok(f64::NAN) };
@@ -1012,12 +1061,13 @@ impl WhippleNonlinear {
             &mut observe,
             stop_flag,
         )?;
-        let fell = outcome.event.filter(|c| c.index == stops.len());
+        let limit = |k: usize| outcome.event.filter(|c| c.index == stops.len() + k).map(|c| c.t);
         Ok(Final {
             t: outcome.end.0,
             state: rate::state_of(&outcome.end.1),
             event: outcome.event.filter(|c| c.index < stops.len()).map(|c| (c.index, c.t)),
-            fall: fell.map(|c| c.t),
+            fall: limit(0),
+            steer_lock: limit(1),
             interrupted: outcome.interrupted.then_some(outcome.end.0),
             stats: outcome.stats,
             diagnostics: Diagnostics { energy_drift: drift, max_contact_residual: residual },

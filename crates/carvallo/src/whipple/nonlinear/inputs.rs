@@ -584,7 +584,7 @@ impl WhippleNonlinear {
             mid: Cell::new(0.0),
             diagnostics: Cell::new(ForcedDiagnostics::default()),
             stats: Cell::new(Stats::default()),
-            fall: Stop { quantity: Watched::Lean, value: self.fall_angle(), magnitude: true },
+            limits: self.limits(),
             stop,
         };
         let mut y = y_of(&start, pitch0, 0.0);
@@ -596,10 +596,10 @@ impl WhippleNonlinear {
                 let (end, crossed, interrupted) = run.segment(k0, k1, y, &mut trajectory)?;
                 y = end;
                 if let Some((index, t)) = crossed {
-                    if index == stops.len() {
-                        trajectory.fall = Some(t);
-                    } else {
-                        event = crossed;
+                    match index.checked_sub(stops.len()) {
+                        Some(0) => trajectory.fall = Some(t),
+                        Some(_) => trajectory.steer_lock = Some(t),
+                        None => event = crossed,
                     }
                     break;
                 }
@@ -635,8 +635,8 @@ struct Run<'a> {
     mid: Cell<f64>,
     diagnostics: Cell<ForcedDiagnostics>,
     stats: Cell<Stats>,
-    /// The fall: the lean's magnitude reaching the fall angle (the event after the stops).
-    fall: Stop,
+    /// The fall and the steer lock (the events after the stops).
+    limits: [Stop; 2],
     /// The flag that ends the run early.
     stop: &'a AtomicBool,
 }
@@ -723,7 +723,8 @@ impl Run<'_> {
     /// Integrates `y0` over the grid points `k0..=k1` of the run's grid, keeping its samples
     /// there (the one at `k1` only at the grid's end: otherwise the run is split there and
     /// the sample is the state after the split). Returns the end state, the event, if any (the
-    /// fall's index is the number of stop conditions), and the time the stop flag ended it.
+    /// fall's index is the number of stop conditions, the steer lock's the next), and the time
+    /// the stop flag ended it.
     fn segment(
         &self,
         k0: usize,
@@ -741,8 +742,10 @@ impl Run<'_> {
         self.mid.set((grid.time(k0) + grid.time(k1)) / 2.0);
         let mut rhs = |t: f64, y: &Y| -> Result<Y, NonlinearError> { self.rhs(offset + t, y) };
         let mut watchers: [_; integrate::MAX_EVENTS] = std::array::from_fn(|j| {
-            let stop =
-                if j == self.stops.len() { Some(self.fall) } else { self.stops.get(j).copied() };
+            let stop = match j.checked_sub(self.stops.len()) {
+                Some(k) => self.limits.get(k).copied(),
+                None => self.stops.get(j).copied(),
+            };
             move |y: &Y| -> Result<f64, NonlinearError> {
                 let Some(stop) = stop else { return Ok(f64::NAN) };
                 let s = state_of(y);
@@ -787,7 +790,7 @@ impl Run<'_> {
             &local,
             y0,
             &mut rhs,
-            &mut events[..self.stops.len() + 1],
+            &mut events[..self.stops.len() + self.limits.len()],
             &mut observe,
             self.stop,
         )?;

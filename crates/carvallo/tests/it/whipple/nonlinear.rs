@@ -452,4 +452,17 @@ fn unphysical_starts_are_refused_by_every_method() {
         let e = bike().with_fall_angle(bad).unwrap_err().to_string();
         assert!(e.starts_with(&format!("invalid fall angle {bad:?}")), "{e}");
     }
+    for bad in [0.0, -0.1, std::f64::consts::FRAC_PI_2, f64::INFINITY] {
+        let e = bike().with_steer_lock(bad).unwrap_err().to_string();
+        assert!(e.starts_with(&format!("invalid steer lock {bad:?}")), "{e}");
+    }
+    // A slow fall turns the fork to the steer lock first, where every method ends.
+    let start = b.initial_state(1.0, 0.05).expect("state");
+    let grid = Grid::new(20.0, 0.001, 10).expect("grid");
+    for how in [Integration::RK4, Integration::adaptive(Method::Dop853, 1e-10, 1e-13)] {
+        let tr = b.simulate_with(start, &grid, &how, &[]).expect("run");
+        let t = tr.steer_lock.expect("the steer lock");
+        assert!(tr.fall.is_none() && (t - 1.0656945415).abs() < 1e-9, "{}: {t}", how.method);
+        assert!((tr.samples.last().unwrap().state.steer.abs() - 1.4).abs() < 1e-12);
+    }
 }
