@@ -252,6 +252,11 @@ LONG = {
     # (an undamped oscillation, small steps) over 10**5 s; the unicycle likewise. The hoop's
     # right-hand side is so cheap that its longest call (ten million RK4 steps; an adaptive
     # run stops at a million steps) takes about 2.5 s: it is signalled after INTO_SHORT.
+    "closed_loop_eigenvalues": "carvallo.closed_loop_eigenvalues(carvallo.benchmark(), "
+                               "{'k_steer_roll_rate': -10.0}, np.linspace(0, 10, 10**7))",
+    "closed_loop_window": "carvallo.closed_loop_window(carvallo.benchmark(), "
+                          "{'speed': np.linspace(0, 10, 10**7), 'k_steer_roll_rate': "
+                          "np.full(10**7, -10.0)})",
     "simulate": "carvallo.simulate(carvallo.benchmark(), 5.0, 0.01, 10000.0, every=10**6)",
     "simulate-dop853": "carvallo.simulate(carvallo.benchmark(), 4.29, 0.01, 100000.0, step=0.01, "
                        "every=10**6, method='dop853', rtol=1e-13)",
