@@ -17,7 +17,8 @@ needs at most 1 GiB for its result and working arrays; files are read up to 16 M
 (`samples`, `count`, `every`, `seed`) are whole numbers from 0 to 2**64 - 1 and real arguments
 numbers a float holds. A wrong Python type for a text or flag argument is a `TypeError`.
 `sweep`, `windows`, `simulate`, `simulate_hoop`, `simulate_unicycle`, `simulate_many`,
-`closed_loop_window` (a gain table), `monte_carlo` and `eigenvalue_bands` run with the GIL
+`closed_loop_window` (a gain table), `closed_loop_eigenvalues`, `monte_carlo` and
+`eigenvalue_bands` run with the GIL
 released and raise `KeyboardInterrupt` within a fraction of a second of Ctrl-C. Speeds of
 `closed_loop_window` and gain tables lie within 1e6 m/s and gains within 1e12, as on the
 command line.
