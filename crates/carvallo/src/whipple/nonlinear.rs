@@ -15,7 +15,11 @@
 //!
 //! [`simulate_with`](WhippleNonlinear::simulate_with) integrates by RK4 at a fixed step or by
 //! an error-controlled pair ([`crate::numerics::integrate`]), samples on a fixed grid and stops
-//! at [`Stop`] conditions (the lean reaching a bound, a sign change). The pitch is solved, not
+//! at [`Stop`] conditions (the lean reaching a bound, a sign change) or at the model's own
+//! limits: the fall (the lean reaching [`WhippleNonlinear::fall_angle`]) and the steer lock
+//! ([`WhippleNonlinear::steer_lock`]), events like the stop conditions, so that a fall is a
+//! result ([`Trajectory::fall`](crate::numerics::ode::Trajectory::fall)) and not the contact
+//! constraint failing; a start beyond either is refused. The pitch is solved, not
 //! integrated and projected: every right-hand side evaluation, sample and event evaluation
 //! solves $h(\varphi, \theta, \delta) = 0$ by Newton (from the last pitch found), so the
 //! constraint holds to rounding whatever the method and tolerance.
@@ -509,8 +513,8 @@ impl Stop {
 }
 
 impl WhippleNonlinear {
-    /// The nonlinear bicycle with the parameters `params` and the fall angle
-    /// [`DEFAULT_FALL_ANGLE`].
+    /// The nonlinear bicycle with the parameters `params`, the fall angle
+    /// [`DEFAULT_FALL_ANGLE`] and the steer lock [`DEFAULT_STEER_LOCK`].
     pub fn new(params: WhippleParams) -> WhippleNonlinear {
         WhippleNonlinear { params, fall_angle: DEFAULT_FALL_ANGLE, steer_lock: DEFAULT_STEER_LOCK }
     }
@@ -567,13 +571,14 @@ impl WhippleNonlinear {
     }
 
     /// Checks that `start` is a physical start and returns its pitch: a lean inside the fall
-    /// angle and a pitch that puts the front wheel on the ground (Newton from 0). Every
-    /// method of [`simulate_with`](Self::simulate_with) makes this check first.
+    /// angle, a steer inside the steer lock and a pitch that puts the front wheel on the
+    /// ground (Newton from 0). Every method of [`simulate_with`](Self::simulate_with) makes
+    /// this check first.
     ///
     /// # Errors
     /// [`NonlinearError::Fallen`] for a lean at or beyond the fall angle;
-    /// [`NonlinearError::Parameter`] naming the lean when no pitch puts the front wheel on the
-    /// ground (or a non-finite lean or steer).
+    /// [`NonlinearError::Parameter`] naming the steer at or beyond the steer lock, or the lean
+    /// when no pitch puts the front wheel on the ground (or a non-finite lean or steer).
     pub fn check_start(&self, start: &State) -> Result<f64, NonlinearError> {
         finite("lean", start.lean)?;
         finite("steer", start.steer)?;

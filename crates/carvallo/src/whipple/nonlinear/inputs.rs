@@ -621,6 +621,10 @@ impl WhippleNonlinear {
     }
 }
 
+/// The end of a segment: the state, the event that ended it (its index, the fall's after the
+/// stop conditions', and the time) and the time the stop flag ended it.
+type SegmentEnd = (Y, Option<(usize, f64)>, Option<f64>);
+
 /// A driven run in progress: what its segments share.
 struct Run<'a> {
     bike: &'a WhippleNonlinear,
@@ -731,7 +735,7 @@ impl Run<'_> {
         k1: usize,
         y0: Y,
         trajectory: &mut ForcedTrajectory,
-    ) -> Result<(Y, Option<(usize, f64)>, Option<f64>), NonlinearError> {
+    ) -> Result<SegmentEnd, NonlinearError> {
         let grid = self.grid;
         let last = k1 == grid.n;
         // The whole grid in one segment samples as an undriven run; a segment between
