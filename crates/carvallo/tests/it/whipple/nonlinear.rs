@@ -452,6 +452,24 @@ fn unphysical_starts_are_refused_by_every_method() {
         let e = bike().with_fall_angle(bad).unwrap_err().to_string();
         assert!(e.starts_with(&format!("invalid fall angle {bad:?}")), "{e}");
     }
+    // A start whose front wheel cannot touch the ground (a lean inside a wide fall angle with
+    // the fork turned into it, where a fall loses the contact) is refused before the first
+    // step by every method, naming the lean; so is a steer at the lock.
+    let wide = bike().with_fall_angle(std::f64::consts::FRAC_PI_2).expect("angle");
+    let mut flat = wide.initial_state(5.0, 1.5).expect("state");
+    flat.steer = 1.0;
+    assert!(wide.pitch(flat.lean, flat.steer, 0.0).is_err());
+    let mut locked = b.initial_state(5.0, 0.1).expect("state");
+    locked.steer = -1.4;
+    for how in [Integration::RK4, Integration::adaptive(Method::Dop853, 1e-8, 1e-11)] {
+        let e = wide.simulate_with(flat, &grid, &how, &[]).unwrap_err().to_string();
+        assert_eq!(
+            e,
+            "invalid lean 1.5: no pitch puts the front wheel on the ground at this lean and steer"
+        );
+        let e = b.simulate_with(locked, &grid, &how, &[]).unwrap_err().to_string();
+        assert_eq!(e, "invalid steer -1.4: at or beyond the steer lock");
+    }
     for bad in [0.0, -0.1, std::f64::consts::FRAC_PI_2, f64::INFINITY] {
         let e = bike().with_steer_lock(bad).unwrap_err().to_string();
         assert!(e.starts_with(&format!("invalid steer lock {bad:?}")), "{e}");
