@@ -16,8 +16,12 @@ Limits (a `ParameterError` naming the argument and the limit, raised before allo
 needs at most 1 GiB for its result and working arrays; files are read up to 16 MiB; counts
 (`samples`, `count`, `every`, `seed`) are whole numbers from 0 to 2**64 - 1 and real arguments
 numbers a float holds. A wrong Python type for a text or flag argument is a `TypeError`.
-`sweep`, `windows`, `simulate_many`, `monte_carlo` and `eigenvalue_bands` run with the GIL
-released and raise `KeyboardInterrupt` within a fraction of a second of Ctrl-C.
+`sweep`, `windows`, `simulate`, `simulate_hoop`, `simulate_unicycle`, `simulate_many`,
+`closed_loop_window` (a gain table), `closed_loop_eigenvalues`, `monte_carlo` and
+`eigenvalue_bands` run with the GIL
+released and raise `KeyboardInterrupt` within a fraction of a second of Ctrl-C. Speeds of
+`closed_loop_window` and gain tables lie within 1e6 m/s and gains within 1e12, as on the
+command line.
 """
 
 from typing import Mapping, Optional, Sequence, Union
@@ -156,6 +160,8 @@ def simulate(
     torque_steer: Optional[npt.ArrayLike] = None,
     impulses: Sequence[tuple[float, float, float]] = (),
     k: Optional[npt.ArrayLike | dict[str, float] | GainTable] = None,
+    fall_angle: float = 1.2,
+    steer_lock: float = 1.4,
 ) -> dict[str, object]:
     """Nonlinear simulation from upright straight running (rk4, or dopri5 / dop853 /
     vern9 with rtol, default 1e-8, and atol, default 1e-3 rtol; stop_when conditions
@@ -163,6 +169,17 @@ def simulate(
     `carvallo simulate --json`: arrays t, lean, steer, pitch, speed_rear, rear_x, rear_y,
     front_x, front_y, energy; floats step, energy_drift, max_contact_residual; method, rtol,
     atol, rhs_evaluations, steps, rejected_steps, events (list of {"when", "t"}).
+
+    A fall is a result: the run ends when |lean| reaches fall_angle (rad, in (0, pi/2];
+    default 1.2, a stated angle), located on the integrator's interpolant; status is
+    "completed", "stopped" (a stop_when condition) or "fell", with status_line
+    ("fell at t = 1.94 s: ..."), fall_angle and fall_t (None unless it fell). The run ends too
+    when |steer| reaches steer_lock (rad, in (0, pi/2); default 1.4, the handlebar against the
+    frame, short of the equations' singularity at pi/2): status "steer lock", steer_lock and
+    steer_lock_t. A start at or
+    beyond fall_angle, or where no pitch puts the front wheel on the ground, raises
+    ParameterError naming lean0, whatever the method. Ctrl-C raises KeyboardInterrupt within
+    a step.
 
     Driven: torques sampled at torque_t (torque_roll and/or torque_steer, N m; interpolated,
     zero outside), impulses (t, J_roll, J_steer) in N m s at multiples of step, feedback
@@ -185,8 +202,8 @@ def simulate_many(
     strict: bool = False,
 ) -> dict[str, object]:
     """Many simulations in parallel (GIL released), keeping the ends: arrays t_end, lean, steer,
-    yaw, x, y, lean_rate, steer_rate, event_t, stopped_by, fell, ok, rhs_evaluations and the
-    list errors; each equals `simulate`'s end bit for bit, and a chunk of a batch (any slice,
+    yaw, x, y, lean_rate, steer_rate, event_t, fall_t (the lean reaching 1.2 rad; NaN when
+    not), steer_lock_t (the steer reaching 1.4 rad; NaN when not), stopped_by, fell, ok, rhs_evaluations and the list errors; each equals `simulate`'s end bit for bit, and a chunk of a batch (any slice,
     any memory layout) gives the batch's rows for it bit for bit, so chunks can run on Dask
     workers (docs/examples/basin_dask.py)."""
 

@@ -2,8 +2,8 @@
 
 Each point of a grid over speed x initial lean is one simulation of the nonlinear bicycle
 (upright straight running at that speed, released with that lean) until `duration` seconds or
-the event `lean=+-fall`; the map says whether it fell (the event, or the contact lost) and
-when. The grid is cut into chunks (slices of the flattened grid); each chunk is one call of
+the event `lean=+-fall`; the map says whether it fell (the event, the fork reaching its steer
+lock first, or the contact lost) and when (`event_t`, or `steer_lock_t`). The grid is cut into chunks (slices of the flattened grid); each chunk is one call of
 `carvallo.simulate_many` on a Dask worker (the GIL released, the chunk's runs in parallel on
 the worker's cores), and the chunks' arrays are concatenated in their order. The runs share
 nothing, so the map equals the single-process `carvallo.simulate_many` of the whole grid bit
@@ -23,7 +23,8 @@ import carvallo
 import numpy as np
 
 # The arrays of `simulate_many` kept in the map (one value per point).
-COLUMNS = ("fell", "event_t", "t_end", "lean", "steer", "lean_rate", "steer_rate", "ok")
+COLUMNS = ("fell", "event_t", "steer_lock_t", "t_end", "lean", "steer", "lean_rate", "steer_rate",
+           "ok")
 
 
 def grid(speeds, leans):
@@ -104,13 +105,14 @@ def main():
         import matplotlib.pyplot as plt
 
         fig, ax = plt.subplots(figsize=(6, 3.6), dpi=80)
-        t = np.where(m["fell"], np.nan_to_num(m["event_t"], nan=0.0), np.nan)
+        when = np.where(np.isnan(m["event_t"]), m["steer_lock_t"], m["event_t"])
+        t = np.where(m["fell"], np.nan_to_num(when, nan=0.0), np.nan)
         im = ax.pcolormesh(speeds, leans, t.T, shading="nearest", cmap="viridis")
         ax.pcolormesh(speeds, leans, np.where(m["fell"], np.nan, 1.0).T, shading="nearest",
                       cmap="Greys", vmin=0, vmax=4)
         fig.colorbar(im, ax=ax, label="time of the fall (s)")
         ax.set(xlabel="speed (m/s)", ylabel="initial lean (rad)",
-               title="benchmark bicycle: fell within 5 s (|lean| = 0.5 rad)? grey: no")
+               title="benchmark: fell in 5 s (|lean| = 0.5 rad or steer lock)? grey: no")
         fig.tight_layout()
         fig.savefig(a.png)
 

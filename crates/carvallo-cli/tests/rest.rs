@@ -1,6 +1,7 @@
 //! Tests of `carvallo rest` (memoir n° 67): the JSON output against the library's own
 //! computation of the same rest position (the CLI adds nothing), the massless front wheel
-//! giving γ67 = γ55, and bad input as an error naming the value with exit code 2.
+//! giving γ67 = γ55, a lean without a rest position as a status (exit 0), and bad input as an
+//! error naming the value with exit code 2.
 
 use std::process::Command;
 
@@ -44,6 +45,27 @@ fn a_massless_front_wheel_rests_at_the_lowest_frame() {
     let v: serde_json::Value = serde_json::from_str(&out).unwrap();
     let d = v["difference_deg"].as_f64().unwrap();
     assert!(d.abs() <= 1e-5, "difference {d} deg");
+}
+
+#[test]
+fn a_lean_without_a_rest_position_is_a_status() {
+    // Near 90 degrees the front wheel finds no lowest point on the ground: the library says
+    // so, and the command reports it as the outcome, not as a usage error.
+    let e = RestBicycle::memoir().rest_position(-80f64.to_radians()).unwrap_err().to_string();
+    let (code, text, err) = carvallo(&["rest", "--theta", "80"]);
+    assert_eq!(code, 0, "{err}");
+    assert!(err.is_empty(), "{err}");
+    assert!(text.contains(&format!("no rest position: {e}\n")), "{text}");
+    let (code, out, err) = carvallo(&["rest", "--theta", "-89.9", "--json"]);
+    assert_eq!(code, 0, "{err}");
+    let v: serde_json::Value = serde_json::from_str(&out).unwrap();
+    assert_eq!(v["status"], "no rest position");
+    assert!(v["reason"].as_str().unwrap().starts_with("no front contact at theta"), "{v}");
+    assert!(v.get("gamma67_deg").is_none());
+    // A lean with one says so.
+    let (_, out, _) = carvallo(&["rest", "--theta", "20", "--json"]);
+    let v: serde_json::Value = serde_json::from_str(&out).unwrap();
+    assert_eq!(v["status"], "at rest");
 }
 
 #[test]

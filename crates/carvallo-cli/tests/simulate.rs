@@ -26,6 +26,13 @@ fn single_text(speed: &str, lean0: &str, extra: &[&str]) -> String {
     out
 }
 
+/// The number `key` in the JSON text, parsed by Rust's correctly rounded `str::parse`.
+fn number(json: &str, key: &str) -> f64 {
+    let from = json.find(&format!("\"{key}\":")).unwrap() + key.len() + 3;
+    let end = from + json[from..].find([',', '}']).unwrap();
+    json[from..end].parse().unwrap()
+}
+
 /// The last number of the array `key` in the JSON text, parsed by Rust's correctly rounded
 /// `str::parse` (serde_json's default float parser may err by an ulp).
 fn last_number(json: &str, key: &str) -> f64 {
@@ -55,10 +62,12 @@ fn an_adaptive_run_reports_its_counts_and_its_event() {
     assert_eq!(times.last().unwrap().as_f64(), Some(t));
     assert!((leans.last().unwrap().as_f64().unwrap().abs() - 0.5).abs() < 1e-9);
     assert!(times.iter().all(|x| x.as_f64().unwrap() <= t));
-    // The default RK4 run has the same keys with its own counts and no event.
+    // The default RK4 run has the same keys with its own counts and no event: four
+    // evaluations a step and the slope at the end (the fall angle's event).
     let v = single("4.6", "0.05", &[]);
     assert_eq!((v["method"].as_str(), v["rtol"].as_f64()), (Some("rk4"), None));
-    assert_eq!((v["steps"].as_u64(), v["rhs_evaluations"].as_u64()), (Some(3000), Some(12000)));
+    assert_eq!((v["steps"].as_u64(), v["rhs_evaluations"].as_u64()), (Some(3000), Some(12001)));
+    assert_eq!(v["status"], "completed");
     assert_eq!(v["events"].as_array().map(Vec::len), Some(0));
 }
 
@@ -108,7 +117,7 @@ fn batch_rows_equal_single_runs_bit_for_bit() {
         {
             let row: Vec<&str> = line.split(',').collect();
             if row[4] == "failed" {
-                // The same failure as the single run's (2 m/s without a stop falls flat).
+                // The same failure as the single run's.
                 let args = [&BASE[..], &["--speed", speed, "--lean0", lean0], opts].concat();
                 let (code, _, err) = carvallo(&args);
                 let message = line.split('"').nth(1).unwrap();
@@ -133,22 +142,39 @@ fn batch_rows_equal_single_runs_bit_for_bit() {
                 );
             }
             assert_eq!(col(&row, "rhs_evaluations") as u64, v["rhs_evaluations"].as_u64().unwrap());
-            let fell = !v["events"].as_array().unwrap().is_empty();
+            // Fell: a stop condition met, the fall angle or the steer lock reached (the single
+            // run's status).
+            let limit = v["status"] == "fell" || v["status"] == "steer lock";
+            let fell = !v["events"].as_array().unwrap().is_empty() || limit;
             assert_eq!(row[header.iter().position(|h| *h == "fell").unwrap()], fell.to_string());
+            for (status, by, key) in
+                [("fell", ",fall angle,", "fall_t"), ("steer lock", ",steer lock,", "steer_lock_t")]
+            {
+                if v["status"] == status {
+                    assert!(line.contains(by), "{line}");
+                    assert!(v[key].is_f64(), "{key}: {text}");
+                    assert_eq!(col(&row, "event_t").to_bits(), number(&text, key).to_bits());
+                }
+            }
         }
     }
-    // A run that loses the contact (no stop condition, 2 m/s for 5 s) is a failed row that fell.
+    // A run that falls (no stop condition, 2 m/s for 5 s) is an ok row that fell at the fall
+    // angle; a start beyond it is a failed row with the message.
+    std::fs::write(&file, "lean0,speed\n0.05,4.6\n0.05,2\n\n2.0,3\n").unwrap();
     let args =
         [&["simulate", "--model", "benchmark", "--duration", "5"][..], &["--batch", path, "--csv"]]
             .concat();
     let (code, csv, _) = carvallo(&args);
     assert_eq!(code, 0);
+    let fallen = csv.lines().nth(2).unwrap();
+    assert!(fallen.starts_with("1,2.0,0.05,0.0,ok,true,fall angle,1.93"), "{fallen}");
     let failed = csv.lines().find(|l| l.contains(",failed,")).expect("a failed row");
     assert!(
-        failed.contains(",failed,true,") && failed.contains("no pitch puts the front wheel"),
+        failed.contains(",failed,false,")
+            && failed.contains("invalid lean 2.0 rad: at or beyond the fall angle ±1.2 rad"),
         "{failed}"
     );
-    // The quoted message has one comma ("at lean ... rad, steer ... rad").
+    // The quoted message has one comma ("±1.2 rad, where the bicycle is on the ground").
     assert_eq!(
         failed.split(',').count(),
         csv.lines().next().unwrap().split(',').count() + 1,

@@ -472,6 +472,7 @@ fn gains_of(k: &Bound<'_, PyAny>) -> PyResult<carvallo::whipple::feedback::Gains
     {
         return Err(err(format!("gain {} = {} is not finite", x.1, x.0)));
     }
+    gains_within(&gains, "")?;
     Ok(gains)
 }
 
@@ -492,16 +493,27 @@ fn closed_loop_window<'py>(
     strict: bool,
 ) -> PyResult<Bound<'py, PyDict>> {
     let bike = Whipple::new(params_of(params, strict)?);
-    if vmax.is_some_and(|x| !x.is_finite()) {
-        return Err(err(format!(
-            "invalid vmax {}: must be finite (None for every speed)",
-            vmax.unwrap_or_default()
-        )));
+    for (name, x) in [("vmin", vmin), ("vmax", vmax)] {
+        match x {
+            Some(x) if !x.is_finite() => {
+                return Err(err(format!(
+                    "invalid {name} {x:?}: must be finite (None for every speed)"
+                )))
+            }
+            Some(x) if !(0.0..=MAX_SPEED).contains(&x) => {
+                return Err(err(format!(
+                    "invalid {name} {x:?}: must lie within [0, {MAX_SPEED:e}] m/s (beyond it gravity is lost in the rounding of the speed terms)"
+                )))
+            }
+            _ => {}
+        }
     }
     let w = match feedback_of(k)? {
         Feedback::Table(table) => {
+            // Seconds for millions of rows: Ctrl-C is read between the table's intervals.
             let (lo, hi) = table.span();
-            bike.closed_loop_window_table(&table, vmin.unwrap_or(lo), vmax.unwrap_or(hi))
+            let (from, to) = (vmin.unwrap_or(lo), vmax.unwrap_or(hi));
+            interruptible(py, |stop| bike.closed_loop_window_table_until(&table, from, to, stop))?
         }
         Feedback::Constant(gains) => {
             bike.closed_loop_window(&gains, vmin.unwrap_or(0.0), vmax.unwrap_or(f64::INFINITY))
@@ -535,22 +547,30 @@ fn closed_loop_eigenvalues<'py>(
     let feedback = feedback_of(k)?;
     let speeds = speeds_of(speeds)?;
     within(&format!("{} speeds", speeds.len()), speeds.len() as f64, 4.0 * 16.0)?;
-    let mut flat = Vec::with_capacity(4 * speeds.len());
-    for &v in &speeds {
-        let gains = match &feedback {
-            Feedback::Table(table) => table.at(v).ok_or_else(|| {
-                let (lo, hi) = table.span();
-                err(format!("the gain table covers the speeds {lo} to {hi} m/s, not {v} m/s"))
-            })?,
-            Feedback::Constant(g) => *g,
-            Feedback::None => unreachable!("feedback_of gives gains or a table"),
-        };
-        let ev = bike.closed_loop_eigenvalues(v, &gains);
-        if ev.len() != 4 {
-            return Err(err(format!("the eigenvalues did not converge at speed {v}")));
+    // About 1.5 s per million speeds: Ctrl-C is read every 4096 speeds.
+    let flat = interruptible(py, |stop| -> Result<Vec<Complex64>, String> {
+        let mut flat = Vec::with_capacity(4 * speeds.len());
+        for (i, &v) in speeds.iter().enumerate() {
+            if i % 4096 == 0 && stop.load(std::sync::atomic::Ordering::Relaxed) {
+                break;
+            }
+            let gains = match &feedback {
+                Feedback::Table(table) => table.at(v).ok_or_else(|| {
+                    let (lo, hi) = table.span();
+                    format!("the gain table covers the speeds {lo} to {hi} m/s, not {v} m/s")
+                })?,
+                Feedback::Constant(g) => *g,
+                Feedback::None => unreachable!("feedback_of gives gains or a table"),
+            };
+            let ev = bike.closed_loop_eigenvalues(v, &gains);
+            if ev.len() != 4 {
+                return Err(format!("the eigenvalues did not converge at speed {v}"));
+            }
+            flat.extend(ev.iter().map(|e| Complex64::new(e.re, e.im)));
         }
-        flat.extend(ev.iter().map(|e| Complex64::new(e.re, e.im)));
-    }
+        Ok(flat)
+    })?
+    .map_err(err)?;
     Ok(PyArray1::from_vec(py, flat).reshape([speeds.len(), 4])?.into_any())
 }
 
@@ -562,9 +582,20 @@ fn feedback_of(k: &Bound<'_, PyAny>) -> PyResult<Feedback> {
     let Some(speed) = dict.get_item("speed")? else {
         return Ok(Feedback::Constant(gains_of(k)?));
     };
+    // Through numpy (`column_of`): a column of millions of values is copied, not converted
+    // value by value with the GIL held.
     let column = |name: &str, v: &Bound<'_, PyAny>| -> PyResult<Vec<f64>> {
-        v.extract().map_err(|_| err(format!("gain table: {name} must be a sequence of numbers")))
+        column_of(v, &format!("gain table: {name}"))
     };
+    // The rows and, while they are read, one column of each gain: checked on the length,
+    // before a value is read.
+    if let Ok(n) = speed.len() {
+        within(
+            &format!("a gain table of {n} speeds"),
+            n as f64,
+            (std::mem::size_of::<(f64, Gains)>() + 8) as f64,
+        )?;
+    }
     let speeds = column("speed", &speed)?;
     let mut rows: Vec<(f64, Gains)> = speeds.iter().map(|&v| (v, Gains::ZERO)).collect();
     for (key, v) in dict.iter() {
@@ -586,7 +617,36 @@ fn feedback_of(k: &Bound<'_, PyAny>) -> PyResult<Feedback> {
             let _ = row.1.set(&name, x);
         }
     }
+    for (i, (v, g)) in rows.iter().enumerate() {
+        if v.abs() > MAX_SPEED {
+            return Err(err(format!(
+                "gain table: speed {v:?} in row {}: must lie within [-{MAX_SPEED:e}, {MAX_SPEED:e}] m/s",
+                i + 1
+            )));
+        }
+        gains_within(g, &format!(" in row {}", i + 1))?;
+    }
     GainTable::new(rows).map(Feedback::Table).map_err(|e| err(e.to_string()))
+}
+
+/// The largest speed (m/s) of a closed-loop range or gain table, as the command line's
+/// `--speed`: beyond it gravity is lost in the rounding of the speed terms.
+const MAX_SPEED: f64 = 1e6;
+
+/// The largest gain magnitude, as the command line's `--gain`: beyond it the bicycle's own
+/// terms are lost in the rounding of the feedback.
+const MAX_GAIN: f64 = 1e12;
+
+/// Refuses a gain above [`MAX_GAIN`] in magnitude, naming it (`whereabouts`: " in row 3").
+fn gains_within(g: &carvallo::whipple::feedback::Gains, whereabouts: &str) -> PyResult<()> {
+    for (x, name) in g.values().iter().zip(carvallo::whipple::feedback::GAIN_NAMES) {
+        if x.abs() > MAX_GAIN {
+            return Err(err(format!(
+                "gain {name} = {x:?}{whereabouts}: must lie within [-{MAX_GAIN:e}, {MAX_GAIN:e}] (beyond it the bicycle's own terms are lost in the rounding of the feedback)"
+            )));
+        }
+    }
+    Ok(())
 }
 
 /// The modes at each speed, labelled by continuation in speed (as `carvallo eig --json`):
@@ -846,7 +906,11 @@ fn sweep<'py>(
 /// A dict of numpy arrays (`t`, `lean`, `steer`, `pitch`, `speed_rear`, `rear_x`, `rear_y`,
 /// `front_x`, `front_y`, `energy`), the floats `step`, `energy_drift`,
 /// `max_contact_residual`, the `method`, `rtol` and `atol` (None for rk4), the counts
-/// `rhs_evaluations`, `steps`, `rejected_steps` and `events` (a list of dicts `when`, `t`).
+/// `rhs_evaluations`, `steps`, `rejected_steps` and `events` (a list of dicts `when`, `t`),
+/// and how the run ended ([`set_status`]): the run ends, fallen, when the lean's magnitude
+/// reaches `fall_angle` (default 1.2 rad; a start at or beyond it is refused), or when the
+/// steer's reaches `steer_lock` (default 1.4 rad, the handlebar against the frame). Ctrl-C raises
+/// `KeyboardInterrupt` within a step.
 ///
 /// Driven (as `simulate --torque ... --gain ...`): `torque_t` with `torque_roll` and/or
 /// `torque_steer` (N m at those times, increasing; interpolated, zero outside), `impulses`
@@ -855,7 +919,7 @@ fn sweep<'py>(
 /// table read at the rear contact's speed). The dict then adds `T_phi`, `T_delta`, `work_t`,
 /// `work` and `max_energy_change`, and `energy_drift` is that of E - E(0) - W.
 #[pyfunction]
-#[pyo3(signature = (params, speed, lean0, duration, step = 0.001, every = 10, strict = false, *, method = "rk4", rtol = None, atol = None, stop_when = Vec::new(), torque_t = None, torque_roll = None, torque_steer = None, impulses = Vec::new(), k = None))]
+#[pyo3(signature = (params, speed, lean0, duration, step = 0.001, every = 10, strict = false, *, method = "rk4", rtol = None, atol = None, stop_when = Vec::new(), torque_t = None, torque_roll = None, torque_steer = None, impulses = Vec::new(), k = None, fall_angle = carvallo::whipple_nonlinear::DEFAULT_FALL_ANGLE, steer_lock = carvallo::whipple_nonlinear::DEFAULT_STEER_LOCK))]
 #[allow(clippy::too_many_arguments)]
 fn simulate<'py>(
     py: Python<'py>,
@@ -875,10 +939,27 @@ fn simulate<'py>(
     #[pyo3(from_py_with = arg::torque_steer)] torque_steer: Option<Vec<f64>>,
     #[pyo3(from_py_with = arg::impulses)] impulses: Vec<(f64, f64, f64)>,
     k: Option<Bound<'py, PyAny>>,
+    #[pyo3(from_py_with = arg::fall_angle)] fall_angle: f64,
+    #[pyo3(from_py_with = arg::steer_lock)] steer_lock: f64,
 ) -> PyResult<Bound<'py, PyDict>> {
     let (how, stops) = integration_of(method, rtol, atol, &stop_when)?;
-    let bike = WhippleNonlinear::new(params_of(params, strict)?);
+    let bike = WhippleNonlinear::new(params_of(params, strict)?)
+        .with_fall_angle(fall_angle)
+        .and_then(|b| b.with_steer_lock(steer_lock))
+        .map_err(|e| err(e.to_string()))?;
     let start = bike.initial_state(speed, lean0).map_err(|e| err(e.to_string()))?;
+    bike.check_start(&start).map_err(|e| {
+        use carvallo::whipple_nonlinear::NonlinearError;
+        err(match e {
+            NonlinearError::Fallen { fall_angle, .. } => format!(
+                "invalid lean0 {lean0:?}: at or beyond the fall angle ±{fall_angle} rad (fall_angle), where the bicycle is on the ground"
+            ),
+            NonlinearError::Parameter(carvallo::ParameterError::InvalidParameter {
+                reason, ..
+            }) => format!("invalid lean0 {lean0:?}: {reason}"),
+            other => other.to_string(),
+        })
+    })?;
     let grid = Grid::exact(duration, step, every).map_err(|(name, value, reason)| {
         err(carvallo::ParameterError::InvalidParameter { name, value, reason }.to_string())
     })?;
@@ -893,8 +974,8 @@ fn simulate<'py>(
     if !inputs.is_empty() {
         return simulate_driven(py, &bike, start, &grid, &how, &stops, &inputs);
     }
-    let tr = py
-        .detach(|| bike.simulate_with(start, &grid, &how, &stops))
+    // Ctrl-C ends the run within a step (KeyboardInterrupt, the samples dropped).
+    let tr = interruptible(py, |flag| bike.simulate_until(start, &grid, &how, &stops, flag))?
         .map_err(|e| err(e.to_string()))?;
     let d = PyDict::new(py);
     type Column = fn(&carvallo::whipple_nonlinear::Sample) -> f64;
@@ -916,8 +997,52 @@ fn simulate<'py>(
     d.set_item("step", tr.step)?;
     d.set_item("energy_drift", tr.energy_drift)?;
     d.set_item("max_contact_residual", tr.max_contact_residual)?;
-    set_run(&d, &how, &tr.stats, tr.event.map(|(k, t)| (stops[k].text(), t)))?;
+    let event = tr.event.map(|(k, t)| (stops[k].text(), t));
+    let end = tr.times.last().copied().unwrap_or(0.0);
+    set_status(&d, &bike, event.as_ref(), (tr.fall, tr.steer_lock), end)?;
+    set_run(&d, &how, &tr.stats, event)?;
     Ok(d)
+}
+
+/// How a run of `simulate` ended: `status` (`"completed"`, `"stopped"` by a condition of
+/// `stop_when`, `"fell"`: the lean reached `fall_angle`, `"steer lock"`: the steer reached
+/// `steer_lock`), `status_line` (`"fell at t = 1.94 s: ..."`), `fall_angle`, `fall_t`,
+/// `steer_lock` and `steer_lock_t` (None unless reached). An interrupted run raises
+/// `KeyboardInterrupt` instead.
+fn set_status(
+    d: &Bound<'_, PyDict>,
+    bike: &WhippleNonlinear,
+    event: Option<&(String, f64)>,
+    (fall, lock): (Option<f64>, Option<f64>),
+    end: f64,
+) -> PyResult<()> {
+    let (status, line) = if let Some(t) = fall {
+        (
+            "fell",
+            format!(
+                "fell at t = {t} s: the lean reached the fall angle ±{} rad",
+                bike.fall_angle()
+            ),
+        )
+    } else if let Some(t) = lock {
+        (
+            "steer lock",
+            format!(
+                "steer lock at t = {t} s: the steer reached ±{} rad, the handlebar against the frame",
+                bike.steer_lock()
+            ),
+        )
+    } else if let Some((when, t)) = event {
+        ("stopped", format!("stopped at t = {t} s: {when}"))
+    } else {
+        ("completed", format!("completed at t = {end} s"))
+    };
+    d.set_item("status", status)?;
+    d.set_item("status_line", line)?;
+    d.set_item("fall_angle", bike.fall_angle())?;
+    d.set_item("fall_t", fall)?;
+    d.set_item("steer_lock", bike.steer_lock())?;
+    d.set_item("steer_lock_t", lock)
 }
 
 /// The inputs of `simulate`: the sampled torques (`torque_t` with `torque_roll` and/or
@@ -969,9 +1094,10 @@ fn simulate_driven<'py>(
     stops: &[Stop],
     inputs: &carvallo::whipple_nonlinear::Inputs,
 ) -> PyResult<Bound<'py, PyDict>> {
-    let tr = py
-        .detach(|| bike.simulate_forced(start, grid, how, stops, inputs))
-        .map_err(|e| err(e.to_string()))?;
+    let tr = interruptible(py, |flag| {
+        bike.simulate_forced_until(start, grid, how, stops, inputs, flag)
+    })?
+    .map_err(|e| err(e.to_string()))?;
     let d = PyDict::new(py);
     type Column = fn(&carvallo::whipple_nonlinear::ForcedSample) -> f64;
     let columns: [(&str, Column); 13] = [
@@ -998,7 +1124,10 @@ fn simulate_driven<'py>(
     d.set_item("max_energy_change", diag.max_energy_change)?;
     d.set_item("energy_drift", diag.energy_drift)?;
     d.set_item("max_contact_residual", diag.max_contact_residual)?;
-    set_run(&d, how, &tr.stats, tr.event.map(|(k, t)| (stops[k].text(), t)))?;
+    let event = tr.event.map(|(k, t)| (stops[k].text(), t));
+    let end = tr.times.last().copied().unwrap_or(0.0);
+    set_status(&d, bike, event.as_ref(), (tr.fall, tr.steer_lock), end)?;
+    set_run(&d, how, &tr.stats, event)?;
     Ok(d)
 }
 
@@ -1025,8 +1154,10 @@ fn column_of(x: &Bound<'_, PyAny>, what: &str) -> PyResult<Vec<f64>> {
 /// `simulate`, keeping only the end (as `carvallo simulate --batch FILE --csv`). A dict of
 /// numpy arrays, one entry per start: `t_end`, `lean`, `steer`, `yaw`, `x`, `y`, `lean_rate`,
 /// `steer_rate` (NaN for a failed run), `event_t` (NaN when no stop condition was met),
-/// `stopped_by` (the index of the condition met, -1 for none), `fell` (a condition met or the
-/// contact lost), `ok`, `rhs_evaluations`, and `errors` (a list, None for a run that did not
+/// `fall_t` (when the lean reached the fall angle, 1.2 rad; NaN when it did not),
+/// `steer_lock_t` (when the steer reached the steer lock, 1.4 rad; NaN when it did not),
+/// `stopped_by` (the index of the condition met, -1 for none), `fell` (the fall angle or the
+/// steer lock reached, a condition met or the contact lost), `ok`, `rhs_evaluations`, and `errors` (a list, None for a run that did not
 /// fail). Each run equals `simulate`'s bit for bit, and a chunk (any slice of the batch, read
 /// whatever its layout, see [`column_of`]) gives the batch's rows for it bit for bit: the
 /// chunks of a batch can run in other processes (docs/examples/basin_dask.py over Dask).
@@ -1101,7 +1232,7 @@ fn simulate_many<'py>(
     })?;
     let d = PyDict::new(py);
     type Column = fn(&carvallo::whipple_nonlinear::Final) -> f64;
-    let columns: [(&str, Column); 9] = [
+    let columns: [(&str, Column); 11] = [
         ("t_end", |f| f.t),
         ("lean", |f| f.state.lean),
         ("steer", |f| f.state.steer),
@@ -1111,6 +1242,8 @@ fn simulate_many<'py>(
         ("lean_rate", |f| f.state.lean_rate),
         ("steer_rate", |f| f.state.steer_rate),
         ("event_t", |f| f.event.map_or(f64::NAN, |e| e.1)),
+        ("fall_t", |f| f.fall.unwrap_or(f64::NAN)),
+        ("steer_lock_t", |f| f.steer_lock.unwrap_or(f64::NAN)),
     ];
     for (name, f) in columns {
         let v: Vec<f64> = ends.iter().map(|e| e.as_ref().map_or(f64::NAN, f)).collect();
@@ -1124,7 +1257,7 @@ fn simulate_many<'py>(
     let fell: Vec<bool> = ends
         .iter()
         .map(|e| match e {
-            Ok(f) => f.event.is_some(),
+            Ok(f) => f.fall.is_some() || f.steer_lock.is_some() || f.event.is_some(),
             Err(e) => matches!(e, carvallo::whipple_nonlinear::NonlinearError::NoContact { .. }),
         })
         .collect();

@@ -13,7 +13,7 @@ use pyo3::prelude::*;
 use pyo3::types::PyDict;
 
 use crate::common::{err, integration_of, set_run};
-use crate::guard::{arg, within};
+use crate::guard::{arg, interruptible, within};
 
 /// The names of the state's components, in its order.
 const STATE: [&str; 4] = ["theta", "p", "n", "s"];
@@ -128,8 +128,8 @@ fn simulate_hoop<'py>(
     let grid = grid_of(duration, step, every)?;
     samples_within(&grid, duration, step, every)?;
     let x0 = [theta0, p0, n0, s0];
-    let tr = py
-        .detach(|| hoop.simulate_with(x0, &grid, &how, &stops))
+    // Ctrl-C ends the run within a step (KeyboardInterrupt, the samples dropped).
+    let tr = interruptible(py, |stop| hoop.simulate_until(x0, &grid, &how, &stops, stop))?
         .map_err(|e| err(e.to_string()))?;
     trajectory_dict(py, &tr, &how, &stop_when)
 }
@@ -170,8 +170,7 @@ fn simulate_unicycle<'py>(
     let grid = grid_of(duration, step, every)?;
     samples_within(&grid, duration, step, every)?;
     let x0 = [theta0, p0, n0, s0];
-    let tr = py
-        .detach(|| unicycle.simulate_with(x0, &grid, &how, &stops))
+    let tr = interruptible(py, |stop| unicycle.simulate_until(x0, &grid, &how, &stops, stop))?
         .map_err(|e| err(e.to_string()))?;
     trajectory_dict(py, &tr, &how, &stop_when)
 }

@@ -147,9 +147,13 @@ def test_simulate_many_equals_single_runs():
         else:
             assert math.isnan(m["event_t"][k]) and m["stopped_by"][k] == -1
     assert not m["fell"][0] and m["fell"][1]
-    # Without a stop condition the slow bicycle falls flat: a failed run that fell.
-    m = carvallo.simulate_many(p, np.array([2.0]), np.array([0.05]), 5.0)
-    assert not m["ok"][0] and m["fell"][0] and "no pitch puts the front wheel" in m["errors"][0]
+    # Without a stop condition the slow bicycle falls: a run that ends at the fall angle, its
+    # time that of the single run; a start beyond the fall angle is a failed run.
+    m = carvallo.simulate_many(p, np.array([2.0, 3.0]), np.array([0.05, 2.0]), 5.0)
+    s = carvallo.simulate(p, 2.0, 0.05, 5.0)
+    assert m["ok"][0] and m["fell"][0] and m["errors"][0] is None
+    assert m["fall_t"][0] == s["fall_t"] and math.isnan(m["event_t"][0])
+    assert not m["ok"][1] and not m["fell"][1] and "at or beyond the fall angle" in m["errors"][1]
     with pytest.raises(carvallo.ParameterError, match="lean0s has 1 values for 2 speeds"):
         carvallo.simulate_many(p, np.array([1.0, 2.0]), np.array([0.0]), 1.0)
     with pytest.raises(carvallo.ParameterError, match="invalid method `euler`"):

@@ -6,8 +6,11 @@
 //!
 //! The frame leans by θ to the side of positive γ (the convention of the report's n° 56 and
 //! n° 67 entries); the handlebar falls to the side of the lean. Unknown, repeated or missing
-//! arguments, non-finite numbers, |θ| ≥ 90°, a negative wheel mass and a lean without a rest
-//! position are errors naming the value, exit code 2.
+//! arguments, non-finite numbers, |θ| ≥ 90° and a negative wheel mass are errors naming the
+//! value, exit code 2. A lean without a rest position (near 90° the front wheel finds no
+//! lowest point on the ground) is a physical outcome, not an error: exit 0 with the status
+//! `no rest position` and why (`"status"` and `"reason"` in JSON; `"status": "at rest"`
+//! otherwise).
 
 use carvallo::bicycle_rest::RestBicycle;
 use serde_json::json;
@@ -46,15 +49,17 @@ fn mass(v: &str) -> Result<f64, String> {
 /// Runs `carvallo rest`: the text to print, or an error naming the bad value.
 pub fn run(c: &Args) -> Result<String, String> {
     let bike = RestBicycle::memoir().with_wheel_mass(c.wheel_mass).map_err(|e| e.to_string())?;
-    let p = bike
-        .rest_position(-c.theta_deg.to_radians())
-        .map_err(|e| format!("{e} (--theta {:?}, --wheel-mass {:?})", c.theta_deg, c.wheel_mass))?;
+    let p = match bike.rest_position(-c.theta_deg.to_radians()) {
+        Ok(p) => p,
+        Err(e) => return Ok(no_rest_position(c, &e.to_string())),
+    };
     let deg = |x: f64| x.to_degrees();
     let drop = p.at_lowest.wheel_height - p.at_equilibrium.wheel_height;
     if c.json {
         let out = json!({
             "theta_deg": c.theta_deg,
             "wheel_mass": c.wheel_mass,
+            "status": "at rest",
             "gamma55_deg": deg(p.lowest.gamma),
             "gamma67_deg": deg(p.equilibrium.gamma),
             "difference_deg": deg(p.difference()),
@@ -89,6 +94,25 @@ pub fn run(c: &Args) -> Result<String, String> {
         1e3 * drop
     ));
     Ok(s)
+}
+
+/// The outcome of a lean without a rest position: the status and `reason`, in text or JSON.
+fn no_rest_position(c: &Args, reason: &str) -> String {
+    if c.json {
+        let out = json!({
+            "theta_deg": c.theta_deg,
+            "wheel_mass": c.wheel_mass,
+            "status": "no rest position",
+            "reason": reason,
+        });
+        return serde_json::to_string_pretty(&out).unwrap_or_default();
+    }
+    format!(
+        "handlebar at rest, lean theta = {} deg, front wheel {} kg (memoir n° 67)
+no rest position: {reason}
+",
+        c.theta_deg, c.wheel_mass
+    )
 }
 
 #[cfg(test)]

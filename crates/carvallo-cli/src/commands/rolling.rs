@@ -8,7 +8,9 @@
 //! reaches it, the time located on the interpolant. The text gives the counts, the relative
 //! energy drift (the motion conserves energy, n° 7) and the samples; `--json` the arrays `t`,
 //! `theta`, `p`, `n`, `s` with `energy_drift`, `relative_energy_drift`, `method`, `rtol`,
-//! `atol`, `rhs_evaluations`, `steps`, `rejected_steps` and `events`.
+//! `atol`, `rhs_evaluations`, `steps`, `rejected_steps`, `events` and `interrupted`. Ctrl-C
+//! ends a run within a step: the samples so far and the line `interrupted at t = T s` (the
+//! string in `interrupted`, null otherwise), exit code 0, as an interrupted sweep.
 //!
 //! The hoop's radius, mass and gravity have defaults (0.5 m, 1 kg, 9.81 m/s²; its motion does
 //! not depend on the mass); the unicycle's rider (n° 21: `--rider-mass`, `--rider-height`,
@@ -129,6 +131,7 @@ impl RunArgs {
                 "steps": tr.stats.steps,
                 "rejected_steps": tr.stats.rejected_steps,
                 "events": events,
+                "interrupted": tr.interrupted.map(interrupted_line),
             });
             return serde_json::to_string(&out).map_err(|e| e.to_string());
         }
@@ -156,12 +159,21 @@ impl RunArgs {
         if let Some((k, t)) = tr.event {
             s.push_str(&format!("stopped at t = {t} s: {}\n", texts[k]));
         }
+        if let Some(t) = tr.interrupted {
+            s.push_str(&format!("{}\n", interrupted_line(t)));
+        }
         s.push_str(" t        theta      p          n          s\n");
         for (t, x) in tr.times.iter().zip(&tr.samples) {
             s.push_str(&format!("{t:8.3} {:+.6} {:+.6} {:+.6} {:+.6}\n", x[0], x[1], x[2], x[3]));
         }
         Ok(s)
     }
+}
+
+/// The line of a run that Ctrl-C ended at `t` (its samples are those up to then; exit 0, as
+/// an interrupted sweep).
+pub(crate) fn interrupted_line(t: f64) -> String {
+    format!("interrupted at t = {t} s")
 }
 
 /// `carvallo hoop`: the rolling hoop simulated.
@@ -184,8 +196,9 @@ pub struct HoopArgs {
 pub fn hoop(c: &HoopArgs) -> Result<String, String> {
     let hoop = Hoop::new(c.radius, c.mass, c.g).map_err(|e| e.to_string())?;
     let (how, grid) = c.run.plan()?;
+    let stop = crate::perf::interrupt_flag();
     let tr = hoop
-        .simulate_with(c.run.start(), &grid, &how, &c.run.stop_when)
+        .simulate_until(c.run.start(), &grid, &how, &c.run.stop_when, stop)
         .map_err(|e| e.to_string())?;
     let title = format!("rolling hoop R {} m, mass {} kg, g {} m/s^2", c.radius, c.mass, c.g);
     c.run.render(&title, &how, &tr)
@@ -238,8 +251,10 @@ pub fn unicycle(c: &UnicycleArgs) -> Result<String, String> {
     let u = Unicycle::new(c.radius, c.g, rider, Wheel::hoop(c.wheel_mass, c.radius))
         .map_err(|e| e.to_string())?;
     let (how, grid) = c.run.plan()?;
-    let tr =
-        u.simulate_with(c.run.start(), &grid, &how, &c.run.stop_when).map_err(|e| e.to_string())?;
+    let stop = crate::perf::interrupt_flag();
+    let tr = u
+        .simulate_until(c.run.start(), &grid, &how, &c.run.stop_when, stop)
+        .map_err(|e| e.to_string())?;
     let title = format!(
         "unicycle R {} m, g {} m/s^2, rider {} kg at {} m (A {}, B {}, C {}, L {} kg m^2), wheel {} kg",
         c.radius,

@@ -28,13 +28,24 @@
 //!
 //! The parameter file is the anchors TOML format or BicycleParameters' text, with `--rider` and
 //! `--strict` as on `window` ([`crate::args::bicycle`]). Unknown,
-//! repeated or missing arguments, non-finite numbers and a failed simulation (the bicycle fell
-//! flat) are errors naming the value, exit code 2.
+//! repeated or missing arguments, non-finite numbers, a start at or beyond the fall angle and a
+//! failed integration are errors naming the value, exit code 2.
+//!
+//! A fall is a result: the run ends when the lean's magnitude reaches `--fall-angle` (1.2 rad
+//! by default, [`carvallo::whipple_nonlinear::DEFAULT_FALL_ANGLE`]), located on the
+//! interpolant like a stop condition; the text says `fell at t = T s: ...` and the JSON has
+//! `status` (`completed`, `stopped`, `fell`, `steer lock` or `interrupted`), `status_line`,
+//! `fall_angle`, `fall_t`, `steer_lock`, `steer_lock_t` and `interrupted`. The steer reaching
+//! `--steer-lock` (1.4 rad by default: the handlebar against the frame, short of the equations'
+//! singularity at ±π/2, which a slow fall turns the fork into) ends the run the same way. Ctrl-C ends the run within a step: the samples so far and the
+//! line `interrupted at t = T s`, exit code 0 (as an interrupted sweep).
 
 use std::sync::atomic::{AtomicBool, AtomicUsize, Ordering};
 
 use carvallo::numerics::integrate::{Grid, Integration, Method};
-use carvallo::whipple_nonlinear::{NonlinearError, Stop, WhippleNonlinear};
+use carvallo::whipple_nonlinear::{
+    NonlinearError, Stop, WhippleNonlinear, DEFAULT_FALL_ANGLE, DEFAULT_STEER_LOCK,
+};
 use serde_json::json;
 
 use crate::args::{finite, DataOptions};
@@ -193,9 +204,9 @@ fn batch(
         ends
     });
     let elapsed = clock.elapsed().as_secs_f64();
-    // Fell: a stop condition met, or the contact lost (the bicycle lay flat).
+    // Fell: the fall angle or the steer lock reached, a stop condition met, or the contact lost.
     let fell = |e: &Result<carvallo::whipple_nonlinear::Final, NonlinearError>| match e {
-        Ok(f) => f.event.is_some(),
+        Ok(f) => f.fall.is_some() || f.steer_lock.is_some() || f.event.is_some(),
         Err(NonlinearError::NoContact { .. }) => true,
         Err(_) => false,
     };
@@ -206,9 +217,11 @@ fn batch(
             match e {
                 Ok(f) => {
                     let st = f.state;
-                    let (by, te) = match f.event {
-                        Some((j, t)) => (stops[j].text(), format!("{t:?}")),
-                        None => (String::new(), String::new()),
+                    let (by, te) = match (f.event, f.fall, f.steer_lock) {
+                        (Some((j, t)), _, _) => (stops[j].text(), format!("{t:?}")),
+                        (None, Some(t), _) => ("fall angle".to_string(), format!("{t:?}")),
+                        (None, None, Some(t)) => ("steer lock".to_string(), format!("{t:?}")),
+                        (None, None, None) => (String::new(), String::new()),
                     };
                     let values =
                         [f.t, st.lean, st.steer, st.yaw, st.x, st.y, st.lean_rate, st.steer_rate]
@@ -236,7 +249,7 @@ fn batch(
     let fallen = ends.iter().filter(|e| fell(e)).count();
     let evaluations: usize = ends.iter().flatten().map(|f| f.stats.rhs_evaluations).sum();
     Ok(format!(
-        "{} simulations of {} s ({}{}) on {} threads in {elapsed:.3} s\n{fallen} fell (a stop condition met or the contact lost), {failed} failed, {evaluations} right-hand side evaluations\n",
+        "{} simulations of {} s ({}{}) on {} threads in {elapsed:.3} s\n{fallen} fell (the fall angle or the steer lock reached, a stop condition met or the contact lost), {failed} failed, {evaluations} right-hand side evaluations\n",
         rows.len(),
         grid.end(),
         how.method.name(),
@@ -278,6 +291,14 @@ pub struct Args {
     /// Print every N-th step (for an adaptive method, the dense output every N × DT seconds)
     #[arg(long, value_name = "N", default_value_t = 10, value_parser = positive)]
     pub every: usize,
+    /// The lean at which the bicycle has fallen [rad]: the run ends there, status `fell`
+    /// (a stated angle: the model gives the frame and rider no extent), in (0, π/2]
+    #[arg(long, value_name = "RAD", default_value_t = DEFAULT_FALL_ANGLE, value_parser = fall_angle, allow_hyphen_values = true)]
+    pub fall_angle: f64,
+    /// The steer at which the handlebar meets the frame [rad]: the run ends there, status
+    /// `steer lock` (a stated angle short of the equations' singularity at π/2), in (0, π/2)
+    #[arg(long, value_name = "RAD", default_value_t = DEFAULT_STEER_LOCK, value_parser = steer_lock, allow_hyphen_values = true)]
+    pub steer_lock: f64,
     #[command(flatten)]
     pub integration: IntegrationArgs,
     #[command(flatten)]
@@ -295,6 +316,90 @@ pub struct Args {
     pub json: bool,
 }
 
+/// A fall angle: a finite number in (0, π/2].
+fn fall_angle(v: &str) -> Result<f64, String> {
+    let x = finite(v)?;
+    if x > 0.0 && x <= std::f64::consts::FRAC_PI_2 {
+        Ok(x)
+    } else {
+        Err(format!(
+            "must lie in (0, {}] rad (at pi/2 the wheels lie flat)",
+            std::f64::consts::FRAC_PI_2
+        ))
+    }
+}
+
+/// A steer lock: a finite number in (0, π/2).
+fn steer_lock(v: &str) -> Result<f64, String> {
+    let x = finite(v)?;
+    if x > 0.0 && x < std::f64::consts::FRAC_PI_2 {
+        Ok(x)
+    } else {
+        Err(format!(
+            "must lie in (0, {}) rad (at pi/2 the equations are singular)",
+            std::f64::consts::FRAC_PI_2
+        ))
+    }
+}
+
+/// How a run of the bicycle ended: its status (`completed`, `stopped`, `fell`, `steer lock`,
+/// `interrupted`) and the line that says so (`fell at t = 2.34 s: the lean reached ...`), from
+/// the stop condition met (its text and time), the times of the fall, of the steer lock and
+/// of the interruption, the bicycle (its limits) and the run's end.
+pub(crate) fn ending(
+    event: Option<&(String, f64)>,
+    limits: (Option<f64>, Option<f64>),
+    interrupted: Option<f64>,
+    bike: &WhippleNonlinear,
+    end: f64,
+) -> (&'static str, String) {
+    let (fall, lock) = limits;
+    if let Some(t) = fall {
+        let a = bike.fall_angle();
+        ("fell", format!("fell at t = {t} s: the lean reached the fall angle ±{a} rad"))
+    } else if let Some(t) = lock {
+        let a = bike.steer_lock();
+        (
+            "steer lock",
+            format!("steer lock at t = {t} s: the steer reached ±{a} rad, the handlebar against the frame"),
+        )
+    } else if let Some((when, t)) = event {
+        ("stopped", format!("stopped at t = {t} s: {when}"))
+    } else if let Some(t) = interrupted {
+        ("interrupted", super::rolling::interrupted_line(t))
+    } else {
+        ("completed", format!("completed at t = {end} s"))
+    }
+}
+
+/// The JSON keys of the limits: `fall_angle`, `fall_t`, `steer_lock`, `steer_lock_t`.
+pub(crate) fn limits_json(
+    v: &mut serde_json::Value,
+    bike: &WhippleNonlinear,
+    fall: Option<f64>,
+    lock: Option<f64>,
+) {
+    v["fall_angle"] = json!(bike.fall_angle());
+    v["fall_t"] = json!(fall);
+    v["steer_lock"] = json!(bike.steer_lock());
+    v["steer_lock_t"] = json!(lock);
+}
+
+/// The message of a start that [`WhippleNonlinear::check_start`] refuses, naming `--lean0`.
+pub(crate) fn bad_start(lean0: f64, e: &NonlinearError) -> String {
+    match e {
+        NonlinearError::Fallen { fall_angle, .. } => format!(
+            "invalid --lean0 {lean0}: at or beyond the fall angle ±{fall_angle} rad (--fall-angle), where the bicycle is on the ground"
+        ),
+        NonlinearError::Parameter(carvallo::ParameterError::InvalidParameter {
+            name: "lean",
+            reason,
+            ..
+        }) => format!("invalid --lean0 {lean0}: {reason}"),
+        other => other.to_string(),
+    }
+}
+
 /// A positive count.
 fn positive(v: &str) -> Result<usize, String> {
     v.parse().ok().filter(|n| *n > 0).ok_or_else(|| "must be a positive integer".to_string())
@@ -308,7 +413,10 @@ pub fn run(cmd: &Args) -> Result<String, String> {
     if cmd.csv && cmd.batch.is_none() {
         return Err("invalid --csv: it prints the rows of --batch FILE.csv".into());
     }
-    let bike = WhippleNonlinear::new(crate::args::bicycle(model, data)?);
+    let bike = WhippleNonlinear::new(crate::args::bicycle(model, data)?)
+        .with_fall_angle(cmd.fall_angle)
+        .and_then(|b| b.with_steer_lock(cmd.steer_lock))
+        .map_err(|e| e.to_string())?;
     let grid = Grid::exact(*duration, *step, *every)
         .map_err(|(name, value, reason)| format!("invalid --{name} {value:?}: {reason}"))?;
     if let Some(file) = &cmd.batch {
@@ -319,6 +427,7 @@ pub fn run(cmd: &Args) -> Result<String, String> {
     };
     let (speed, lean0) = (&speed, &lean0);
     let start = bike.initial_state(*speed, *lean0).map_err(|e| e.to_string())?;
+    bike.check_start(&start).map_err(|e| bad_start(*lean0, &e))?;
     if cmd.inputs.any() {
         let header = (model.as_str(), *speed, *lean0, *every);
         return super::simulate_inputs::run(
@@ -334,7 +443,7 @@ pub fn run(cmd: &Args) -> Result<String, String> {
     }
     // An error after the start is the integration leaving the state's domain (a step too long
     // for the rates): said so, with the options to change.
-    let tr = bike.simulate_with(start, &grid, &how, stops).map_err(|e| {
+    let tr = bike.simulate_until(start, &grid, &how, stops, crate::perf::interrupt_flag()).map_err(|e| {
         format!(
             "the integration diverged: {e} (--method {}{}); take a smaller --step or an adaptive --method",
             how.method.name(),
@@ -342,6 +451,9 @@ pub fn run(cmd: &Args) -> Result<String, String> {
         )
     })?;
     let events: Vec<(String, f64)> = tr.event.iter().map(|&(k, t)| (stops[k].text(), t)).collect();
+    let end = tr.times.last().copied().unwrap_or(0.0);
+    let (status, line) =
+        ending(events.first(), (tr.fall, tr.steer_lock), tr.interrupted, &bike, end);
     if *json {
         let col = |f: &dyn Fn(&carvallo::whipple_nonlinear::Sample) -> f64| -> Vec<f64> {
             tr.samples.iter().map(f).collect()
@@ -359,6 +471,9 @@ pub fn run(cmd: &Args) -> Result<String, String> {
             "steps": tr.stats.steps,
             "rejected_steps": tr.stats.rejected_steps,
             "events": events.iter().map(|(when, t)| json!({"when": when, "t": t})).collect::<Vec<_>>(),
+            "status": status,
+            "status_line": line,
+            "interrupted": tr.interrupted.map(super::rolling::interrupted_line),
             "energy_drift": tr.energy_drift,
             "max_contact_residual": tr.max_contact_residual,
             "t": col(&|s| s.t),
@@ -372,6 +487,8 @@ pub fn run(cmd: &Args) -> Result<String, String> {
             "front_y": col(&|s| s.front_contact[1]),
             "energy": col(&|s| s.energy),
         });
+        let mut v = v;
+        limits_json(&mut v, &bike, tr.fall, tr.steer_lock);
         serde_json::to_string(&v).map_err(|e| e.to_string())
     } else {
         let integrator = if how.method.is_adaptive() {
@@ -392,9 +509,7 @@ pub fn run(cmd: &Args) -> Result<String, String> {
             "nonlinear {model} bicycle from {speed} m/s, lean {lean0} rad, {integrator}\nenergy drift {:e} J, largest contact residual {:e} m\n",
             tr.energy_drift, tr.max_contact_residual
         );
-        for (when, t) in &events {
-            s.push_str(&format!("stopped at t = {t} s: {when}\n"));
-        }
+        s.push_str(&format!("{line}\n"));
         if !stops.is_empty() && events.is_empty() {
             s.push_str("no stop condition met\n");
         }
@@ -448,6 +563,8 @@ mod tests {
                 duration: 2.0,
                 step: 0.001,
                 every: 10,
+                fall_angle: DEFAULT_FALL_ANGLE,
+                steer_lock: DEFAULT_STEER_LOCK,
                 integration: IntegrationArgs::default(),
                 inputs: Default::default(),
                 batch: None,

@@ -280,8 +280,18 @@ pub fn run(
 ) -> Result<String, String> {
     let (model, speed, lean0, every) = header;
     let inputs = args.inputs()?;
-    let tr = bike.simulate_forced(start, grid, how, stops, &inputs).map_err(|e| e.to_string())?;
+    let tr = bike
+        .simulate_forced_until(start, grid, how, stops, &inputs, crate::perf::interrupt_flag())
+        .map_err(|e| e.to_string())?;
     let events: Vec<(String, f64)> = tr.event.iter().map(|&(k, t)| (stops[k].text(), t)).collect();
+    let end = tr.times.last().copied().unwrap_or(0.0);
+    let (status, line) = super::simulate::ending(
+        events.first(),
+        (tr.fall, tr.steer_lock),
+        tr.interrupted,
+        bike,
+        end,
+    );
     let d = tr.diagnostics;
     if json {
         let col =
@@ -299,6 +309,9 @@ pub fn run(
             "steps": tr.stats.steps,
             "rejected_steps": tr.stats.rejected_steps,
             "events": events.iter().map(|(when, t)| json!({"when": when, "t": t})).collect::<Vec<_>>(),
+            "status": status,
+            "status_line": line,
+            "interrupted": tr.interrupted.map(super::rolling::interrupted_line),
             "inputs": args.json(),
             "work": d.work,
             "max_energy_change": d.max_energy_change,
@@ -318,6 +331,8 @@ pub fn run(
             "T_delta": col(&|s| s.torque[1]),
             "work_t": col(&|s| s.work),
         });
+        let mut v = v;
+        super::simulate::limits_json(&mut v, bike, tr.fall, tr.steer_lock);
         return serde_json::to_string(&v).map_err(|e| e.to_string());
     }
     let integrator = if how.method.is_adaptive() {
@@ -342,9 +357,7 @@ pub fn run(
         d.energy_drift,
         d.max_contact_residual
     );
-    for (when, t) in &events {
-        s.push_str(&format!("stopped at t = {t} s: {when}\n"));
-    }
+    s.push_str(&format!("{line}\n"));
     if !stops.is_empty() && events.is_empty() {
         s.push_str("no stop condition met\n");
     }

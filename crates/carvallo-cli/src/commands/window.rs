@@ -26,6 +26,10 @@
 //!   `{ "model", "gains" | "gain_table", "from", "to", "stable": [[from, to], ...],
 //!   "lowest_stable_speed" }` (`to` and an interval's end are `null` for every speed above).
 //!   The gains and the table are described in [`crate::gains`].
+//! * `--assist-down-to V`: the smallest balance-assist gain c (up to 1000 N m s/rad) that
+//!   makes V stable and the window there (`"status": "assisted"`); when there is none, a
+//!   physical outcome and not an error: the line `balance assist: no balance-assist gain ...`
+//!   (`"status": "no assist gain"` with `"reason"`), exit code 0.
 //!
 //! Unknown or missing arguments and an unreadable or invalid parameter file are usage errors:
 //! a message naming the value, exit code 2.
@@ -155,6 +159,28 @@ pub fn run(cmd: &Args) -> Result<String, String> {
     }
 }
 
+/// The outcome of `--assist-down-to` when no balance-assist gain up to [`ASSIST_MAX`] makes
+/// `target` stable: the status `no assist gain` and why (exit 0).
+fn no_assist(model: &str, target: f64, as_json: bool) -> Result<String, String> {
+    let reason =
+        format!("no balance-assist gain c up to {ASSIST_MAX} N m s/rad makes {target} m/s stable");
+    if as_json {
+        let v = json!({
+            "model": model,
+            "assist_down_to": target,
+            "assist_gain": Value::Null,
+            "status": "no assist gain",
+            "reason": reason,
+        });
+        return serde_json::to_string_pretty(&v).map_err(|e| e.to_string());
+    }
+    Ok(format!(
+        "model {model}
+balance assist: {reason}
+"
+    ))
+}
+
 /// The closed-loop window of `window --gain` or `--gain-table`.
 fn closed_loop(
     model: &str,
@@ -172,11 +198,10 @@ fn closed_loop(
     let mut gains = crate::gains::gains_of(&fb.gain);
     let assist = match fb.assist_down_to {
         Some(target) => {
-            let c = bike.balance_assist_gain(target, ASSIST_MAX).ok_or_else(|| {
-                format!(
-                    "no balance-assist gain up to {ASSIST_MAX} N m s/rad makes --assist-down-to {target:?} m/s stable"
-                )
-            })?;
+            // No gain is a physical outcome, not an error: the status and why, exit 0.
+            let Some(c) = bike.balance_assist_gain(target, ASSIST_MAX) else {
+                return no_assist(model, target, as_json);
+            };
             gains = carvallo::whipple::feedback::Gains::balance_assist(c);
             Some((target, c))
         }
@@ -209,6 +234,7 @@ fn closed_loop(
         if let Some((target, c)) = assist {
             v["assist_down_to"] = json!(target);
             v["assist_gain"] = json!(c);
+            v["status"] = json!("assisted");
         }
         v["from"] = json!(w.from);
         v["to"] = speed(w.to);
@@ -345,13 +371,19 @@ mod tests {
         let c = v["assist_gain"].as_f64().expect("a gain");
         assert_eq!(v["gains"]["k_steer_roll_rate"].as_f64(), Some(-c));
         assert!((v["lowest_stable_speed"].as_f64().unwrap() - 2.0).abs() < 1e-9, "{out}");
-        let e = main(&["window", "--model", "benchmark", "--assist-down-to", "0.1"]).unwrap_err();
-        assert!(
-            e.starts_with(
-                "no balance-assist gain up to 1000 N m s/rad makes --assist-down-to 0.1 m/s"
-            ),
-            "{e}"
+        assert_eq!(v["status"], "assisted");
+        // No gain up to the largest one looked at: a physical outcome, not an error.
+        let text = main(&["window", "--model", "benchmark", "--assist-down-to", "0.1"]).unwrap();
+        assert_eq!(
+            text,
+            "model benchmark\nbalance assist: no balance-assist gain c up to 1000 N m s/rad makes 0.1 m/s stable\n"
         );
+        let out = main(&["window", "--model", "benchmark", "--assist-down-to", "0.1", "--json"])
+            .expect("ok");
+        let v: Value = serde_json::from_str(&out).expect("json");
+        assert_eq!(v["status"], "no assist gain");
+        assert!(v["assist_gain"].is_null());
+        assert_eq!(v["assist_down_to"].as_f64(), Some(0.1));
         let e = main(&["window", "--model", "benchmark", "--vmax", "3"]).unwrap_err();
         assert!(e.contains("give --gain or --gain-table"), "{e}");
         let e = main(&[

@@ -34,6 +34,7 @@
 use std::cell::{Cell, RefCell};
 use std::convert::Infallible;
 use std::fmt;
+use std::sync::atomic::{AtomicBool, Ordering};
 
 use differential_equations::control::ControlFlag;
 use differential_equations::error::Error;
@@ -378,6 +379,9 @@ pub struct Outcome<const N: usize> {
     pub event: Option<Crossing<N>>,
     /// The last time and state (the event's when there is one).
     pub end: (f64, [f64; N]),
+    /// Whether the stop flag of [`integrate_until`] ended the run early, at `end` (the last
+    /// accepted step; the samples shown are those up to it).
+    pub interrupted: bool,
 }
 
 /// A right-hand side $f(t, x)$ that may fail with `E`.
@@ -422,6 +426,24 @@ pub fn integrate<'e, const N: usize, E: Clone>(
     events: &mut [&'e mut EventFn<'e, N, E>],
     observe: &mut Observer<'_, N, E>,
 ) -> Result<Outcome<N>, IntegrateError<E>> {
+    integrate_until(how, grid, x0, rhs, events, observe, &AtomicBool::new(false))
+}
+
+/// [`integrate`] that also ends when `stop` is set (by a Ctrl-C handler, or the thread that
+/// waits for the run): the flag is read after every accepted step, so the run ends within one
+/// step of it being set, with [`Outcome::interrupted`] and the last accepted step as its end.
+///
+/// # Errors
+/// As [`integrate`].
+pub fn integrate_until<'e, const N: usize, E: Clone>(
+    how: &Integration,
+    grid: &Grid,
+    x0: [f64; N],
+    rhs: &mut Rhs<'_, N, E>,
+    events: &mut [&'e mut EventFn<'e, N, E>],
+    observe: &mut Observer<'_, N, E>,
+    stop: &AtomicBool,
+) -> Result<Outcome<N>, IntegrateError<E>> {
     if events.len() > MAX_EVENTS {
         return Err(IntegrateError::TooManyEvents { count: events.len() });
     }
@@ -429,7 +451,7 @@ pub fn integrate<'e, const N: usize, E: Clone>(
     let mut watch = Watch::new();
     watch.start(events, &x0).map_err(IntegrateError::Model)?;
     match how.method {
-        Method::Rk4 => rk4(grid, x0, rhs, events, observe, &mut watch),
+        Method::Rk4 => rk4(grid, x0, rhs, events, observe, &mut watch, stop),
         Method::Dopri5 => adaptive(
             |h0| Dopri5::<N>::dopri5().rtol(how.rtol).atol(how.atol).max_steps(MAX_STEPS).h0(h0),
             how,
@@ -440,6 +462,7 @@ pub fn integrate<'e, const N: usize, E: Clone>(
             events,
             observe,
             &mut watch,
+            stop,
         ),
         Method::Dop853 => adaptive(
             |h0| Dop853::<N>::dop853().rtol(how.rtol).atol(how.atol).max_steps(MAX_STEPS).h0(h0),
@@ -451,6 +474,7 @@ pub fn integrate<'e, const N: usize, E: Clone>(
             events,
             observe,
             &mut watch,
+            stop,
         ),
         Method::Vern9 => adaptive(
             |h0| Vern9::<N>::rkv989e().rtol(how.rtol).atol(how.atol).max_steps(MAX_STEPS).h0(h0),
@@ -462,12 +486,13 @@ pub fn integrate<'e, const N: usize, E: Clone>(
             events,
             observe,
             &mut watch,
+            stop,
         ),
     }
 }
 
 /// The most event functions of one run.
-pub const MAX_EVENTS: usize = 8;
+pub const MAX_EVENTS: usize = 10;
 
 /// The signs of the event functions since the start (the last nonzero value of each).
 struct Watch {
@@ -599,6 +624,7 @@ fn rk4<'e, const N: usize, E: Clone>(
     events: &mut [&'e mut EventFn<'e, N, E>],
     observe: &mut Observer<'_, N, E>,
     watch: &mut Watch,
+    stop: &AtomicBool,
 ) -> Result<Outcome<N>, IntegrateError<E>> {
     let h = grid.h;
     let mut x = x0;
@@ -608,6 +634,9 @@ fn rk4<'e, const N: usize, E: Clone>(
     stats.rhs_evaluations += 1;
     for i in 1..=grid.n {
         let t0 = grid.time(i - 1);
+        if stop.load(Ordering::Relaxed) {
+            return Ok(Outcome { stats, event: None, end: (t0, x), interrupted: true });
+        }
         let axpy = |y: &[f64; N], a: f64, k: &[f64; N]| -> [f64; N] {
             std::array::from_fn(|j| y[j] + a * k[j])
         };
@@ -629,7 +658,12 @@ fn rk4<'e, const N: usize, E: Clone>(
             let mut interp = |t: f64| hermite(t0, t1, &xa, &x1, &da, &d1, t);
             if let Some(c) = watch.check(events, t0, t1, &x1, &mut interp).map_err(m)? {
                 observe(Point::Event, c.t, &c.state).map_err(m)?;
-                return Ok(Outcome { stats, event: Some(c), end: (c.t, c.state) });
+                return Ok(Outcome {
+                    stats,
+                    event: Some(c),
+                    end: (c.t, c.state),
+                    interrupted: false,
+                });
             }
         }
         observe(Point::Step, t1, &x1).map_err(m)?;
@@ -647,7 +681,7 @@ fn rk4<'e, const N: usize, E: Clone>(
             };
         }
     }
-    Ok(Outcome { stats, event: None, end: (grid.end(), x) })
+    Ok(Outcome { stats, event: None, end: (grid.end(), x), interrupted: false })
 }
 
 /// The cubic Hermite interpolant at `t` of the step from (`t0`, `x0`, slope `d0`) to (`t1`,
@@ -752,6 +786,9 @@ struct Sampler<'a, 'b, const N: usize, E> {
     /// The time of an accepted step that ended on a non-finite state (see `solout`).
     non_finite: Option<f64>,
     end: (f64, [f64; N]),
+    /// The flag that ends the run early, and whether it did.
+    stop: &'a AtomicBool,
+    interrupted: bool,
 }
 
 impl<const N: usize, E> Sampler<'_, '_, N, E> {
@@ -847,6 +884,10 @@ impl<const N: usize, E> Solout<f64, [f64; N]> for Sampler<'_, '_, N, E> {
             std::array::from_fn(|j| mirrored[j] - q(1.0 - s, j) + q(s, j))
         };
         match self.step(t_prev, t_curr, y_curr, &mut interp) {
+            Ok(false) if self.stop.load(Ordering::Relaxed) => {
+                self.interrupted = true;
+                ControlFlag::Terminate
+            }
             Ok(false) => ControlFlag::Continue,
             Ok(true) => ControlFlag::Terminate,
             Err(e) => {
@@ -869,6 +910,7 @@ fn adaptive<'e, const N: usize, E: Clone, S>(
     events: &mut [&'e mut EventFn<'e, N, E>],
     observe: &mut Observer<'_, N, E>,
     watch: &mut Watch,
+    stop: &AtomicBool,
 ) -> Result<Outcome<N>, IntegrateError<E>>
 where
     S: OrdinaryNumericalMethod<f64, [f64; N]> + Interpolation<f64, [f64; N]>,
@@ -917,6 +959,8 @@ where
         failure: None,
         non_finite: None,
         end: (0.0, x0),
+        stop,
+        interrupted: false,
     };
     let result = solve_ode(&mut method, &system, 0.0, grid.end(), &x0, &mut sampler);
     if let Some(e) = sampler.failure.take() {
@@ -947,13 +991,16 @@ where
         steps: solution.steps.accepted,
         rejected_steps: solution.steps.rejected,
     };
+    if sampler.interrupted {
+        return Ok(Outcome { stats, event: None, end: sampler.end, interrupted: true });
+    }
     if sampler.event.is_none() && sampler.next <= grid.n {
         // The crate ended a hair before the grid's end (a last step shorter than 10 ulps).
         let x = sampler.end.1;
         (sampler.observe)(Point::Sample(grid.n), grid.end(), &x).map_err(IntegrateError::Model)?;
         sampler.end = (grid.end(), x);
     }
-    Ok(Outcome { stats, event: sampler.event, end: sampler.end })
+    Ok(Outcome { stats, event: sampler.event, end: sampler.end, interrupted: false })
 }
 
 /// A terminal event on one state component: `x[index] - value` changes sign, or with
@@ -1027,6 +1074,23 @@ pub fn conservative<const N: usize>(
     energy: impl Fn([f64; N]) -> f64,
     stops: &[Threshold],
 ) -> Result<Trajectory<[f64; N], EnergyDrift>, IntegrateError<Infallible>> {
+    conservative_until(how, grid, x0, rhs, energy, stops, &AtomicBool::new(false))
+}
+
+/// [`conservative`] that also ends when `stop` is set ([`integrate_until`]): the samples up to
+/// the last accepted step, with its time in [`Trajectory::interrupted`].
+///
+/// # Errors
+/// As [`conservative`].
+pub fn conservative_until<const N: usize>(
+    how: &Integration,
+    grid: &Grid,
+    x0: [f64; N],
+    rhs: impl Fn([f64; N]) -> [f64; N],
+    energy: impl Fn([f64; N]) -> f64,
+    stops: &[Threshold],
+    stop: &AtomicBool,
+) -> Result<Trajectory<[f64; N], EnergyDrift>, IntegrateError<Infallible>> {
     let energy0 = energy(x0);
     let drift = EnergyDrift { energy0, max_energy_drift: 0.0 };
     let mut trajectory = Trajectory::with_capacity(grid.h, grid.samples(), drift);
@@ -1061,10 +1125,11 @@ pub fn conservative<const N: usize>(
         }
         Ok(())
     };
-    let outcome = integrate(how, grid, x0, &mut f, &mut events[..count], &mut observe)?;
+    let outcome = integrate_until(how, grid, x0, &mut f, &mut events[..count], &mut observe, stop)?;
     trajectory.diagnostics.max_energy_drift = max_drift;
     trajectory.stats = outcome.stats;
     trajectory.event = outcome.event.map(|c| (c.index, c.t));
+    trajectory.interrupted = outcome.interrupted.then_some(outcome.end.0);
     Ok(trajectory)
 }
 
@@ -1075,6 +1140,63 @@ mod tests {
     /// $x'' = -x$ from (1, 0): $x = \cos t$, $x' = -\sin t$.
     fn oscillator(_t: f64, x: &[f64; 2]) -> Result<[f64; 2], Infallible> {
         Ok([x[1], -x[0]])
+    }
+
+    #[test]
+    fn a_stop_flag_ends_the_run_after_the_step_that_saw_it() {
+        // The observer sets the flag at the first step past t = 1 (as a Ctrl-C handler would,
+        // from anywhere): the run ends there, interrupted, its samples those up to it.
+        let grid = Grid::new(10.0, 0.01, 1).expect("grid");
+        for how in [
+            Integration::RK4,
+            Integration::adaptive(Method::Dopri5, 1e-8, 1e-11),
+            Integration::adaptive(Method::Dop853, 1e-8, 1e-11),
+            Integration::adaptive(Method::Vern9, 1e-8, 1e-11),
+        ] {
+            let stop = AtomicBool::new(false);
+            let (mut set_at, mut last_sample, mut steps_after) = (None, 0.0, 0);
+            let mut observe = |kind: Point, t: f64, _x: &[f64; 2]| -> Result<(), Infallible> {
+                match kind {
+                    Point::Step if set_at.is_some() => steps_after += 1,
+                    Point::Step if t >= 1.0 => {
+                        set_at = Some(t);
+                        stop.store(true, Ordering::Relaxed);
+                    }
+                    Point::Sample(_) => last_sample = t,
+                    _ => {}
+                }
+                Ok(())
+            };
+            let out = integrate_until(
+                &how,
+                &grid,
+                [1.0, 0.0],
+                &mut oscillator,
+                &mut [],
+                &mut observe,
+                &stop,
+            )
+            .expect("run");
+            let set_at = set_at.expect("a step past t = 1");
+            assert!(out.interrupted, "{}", how.method);
+            assert_eq!(steps_after, 0, "{}", how.method);
+            assert_eq!(out.end.0, set_at, "{}", how.method);
+            assert!(last_sample <= set_at && set_at - last_sample < 0.01 + 1e-12, "{}", how.method);
+            assert!((out.end.1[0] - set_at.cos()).abs() < 1e-6, "{}", how.method);
+        }
+        // Unset, the same run reaches the end.
+        let out = integrate_until(
+            &Integration::RK4,
+            &grid,
+            [1.0, 0.0],
+            &mut oscillator,
+            &mut [],
+            &mut |_, _, _| Ok(()),
+            &AtomicBool::new(false),
+        )
+        .expect("run");
+        assert!(!out.interrupted);
+        assert_eq!(out.end.0, 10.0);
     }
 
     fn run(how: &Integration, grid: &Grid) -> (Outcome<2>, Vec<(f64, [f64; 2])>) {

@@ -45,6 +45,17 @@ pub struct Trajectory<S, D = ()> {
     /// The event that ended the run (its index among the stop conditions and its time, the
     /// time of the last sample), `None` when the run reached its end.
     pub event: Option<(usize, f64)>,
+    /// When the model's own limit ended the run (the nonlinear bicycle's lean reaching its
+    /// fall angle: [`WhippleNonlinear::fall_angle`](crate::whipple::nonlinear::WhippleNonlinear::fall_angle)),
+    /// the time of the last sample; `None` when it was not reached or the model has none.
+    pub fall: Option<f64>,
+    /// When the model's steer limit ended the run (the nonlinear bicycle's steer reaching its
+    /// lock: [`WhippleNonlinear::steer_lock`](crate::whipple::nonlinear::WhippleNonlinear::steer_lock)),
+    /// the time of the last sample; `None` otherwise.
+    pub steer_lock: Option<f64>,
+    /// When a stop flag ended the run early (Ctrl-C), the time it reached (its last accepted
+    /// step; the samples are those of the grid up to it); `None` otherwise.
+    pub interrupted: Option<f64>,
 }
 
 impl<S, D> Trajectory<S, D> {
@@ -57,6 +68,9 @@ impl<S, D> Trajectory<S, D> {
             diagnostics,
             stats: Stats::default(),
             event: None,
+            fall: None,
+            steer_lock: None,
+            interrupted: None,
         }
     }
 

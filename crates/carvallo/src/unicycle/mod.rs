@@ -14,8 +14,12 @@ pub mod discussion;
 /// The rider's pitch about the axle (n° 42) and the rolling rate held by the pedals (n° 78).
 pub mod variants;
 
+use std::sync::atomic::AtomicBool;
+
 use crate::error::ParameterError;
-use crate::numerics::integrate::{conservative, Grid, IntegrateError, Integration, Threshold};
+use crate::numerics::integrate::{
+    conservative_until, Grid, IntegrateError, Integration, Threshold,
+};
 use crate::numerics::ode::EnergyDrift;
 
 /// A motion computed by [`Unicycle::simulate_with`]: the states $(\theta, p, n, s)$ at the
@@ -306,8 +310,25 @@ impl Unicycle {
         how: &Integration,
         stops: &[Threshold],
     ) -> Result<Trajectory, IntegrateError<ParameterError>> {
+        self.simulate_until(state0, grid, how, stops, &AtomicBool::new(false))
+    }
+
+    /// [`simulate_with`](Self::simulate_with) that also ends when `stop` is set (Ctrl-C): the
+    /// samples up to the last accepted step, its time in
+    /// [`Trajectory::interrupted`](crate::numerics::ode::Trajectory::interrupted).
+    ///
+    /// # Errors
+    /// As [`simulate_with`](Self::simulate_with).
+    pub fn simulate_until(
+        &self,
+        state0: [f64; 4],
+        grid: &Grid,
+        how: &Integration,
+        stops: &[Threshold],
+        stop: &AtomicBool,
+    ) -> Result<Trajectory, IntegrateError<ParameterError>> {
         crate::hoop::check_run(state0, how)?;
-        conservative(how, grid, state0, |y| self.rhs(y), |y| self.energy(y), stops)
+        conservative_until(how, grid, state0, |y| self.rhs(y), |y| self.energy(y), stops, stop)
             .map_err(IntegrateError::widen)
     }
 

@@ -59,6 +59,7 @@
 //! as above.
 
 use std::fmt;
+use std::sync::atomic::{AtomicBool, Ordering};
 
 use nalgebra::{Matrix2x4, Matrix4};
 
@@ -595,6 +596,23 @@ impl Whipple {
         from: f64,
         to: f64,
     ) -> Result<ClosedLoopWindow, FeedbackError> {
+        self.closed_loop_window_table_until(table, from, to, &AtomicBool::new(false))
+    }
+
+    /// [`closed_loop_window_table`](Self::closed_loop_window_table) that reads `stop` before
+    /// each interval of the table (a table of millions of rows takes seconds): once it is set,
+    /// the intervals not yet seen are left out, and the caller drops the partial window
+    /// (Ctrl-C).
+    ///
+    /// # Errors
+    /// As [`closed_loop_window_table`](Self::closed_loop_window_table).
+    pub fn closed_loop_window_table_until(
+        &self,
+        table: &GainTable,
+        from: f64,
+        to: f64,
+        stop: &AtomicBool,
+    ) -> Result<ClosedLoopWindow, FeedbackError> {
         check_range(from, to)?;
         let span = table.span();
         if !(from >= span.0 && to <= span.1) {
@@ -602,6 +620,9 @@ impl Whipple {
         }
         let mut stable = Vec::new();
         for pair in table.rows().windows(2) {
+            if stop.load(Ordering::Relaxed) {
+                break;
+            }
             let ((v0, g0), (v1, g1)) = (pair[0], pair[1]);
             let (lo, hi) = (v0.max(from), v1.min(to));
             if hi <= lo {

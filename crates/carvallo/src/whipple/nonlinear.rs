@@ -15,7 +15,11 @@
 //!
 //! [`simulate_with`](WhippleNonlinear::simulate_with) integrates by RK4 at a fixed step or by
 //! an error-controlled pair ([`crate::numerics::integrate`]), samples on a fixed grid and stops
-//! at [`Stop`] conditions (the lean reaching a bound, a sign change). The pitch is solved, not
+//! at [`Stop`] conditions (the lean reaching a bound, a sign change) or at the model's own
+//! limits: the fall (the lean reaching [`WhippleNonlinear::fall_angle`]) and the steer lock
+//! ([`WhippleNonlinear::steer_lock`]), events like the stop conditions, so that a fall is a
+//! result ([`Trajectory::fall`](crate::numerics::ode::Trajectory::fall)) and not the contact
+//! constraint failing; a start beyond either is refused. The pitch is solved, not
 //! integrated and projected: every right-hand side evaluation, sample and event evaluation
 //! solves $h(\varphi, \theta, \delta) = 0$ by Newton (from the last pitch found), so the
 //! constraint holds to rounding whatever the method and tolerance.
@@ -33,6 +37,7 @@
 //! $\beta_f = -\theta_F$, and $(x_b, y_b, z_b) = (-X, Y, -Z)$ for the rear wheel centre.
 
 use std::fmt;
+use std::sync::atomic::AtomicBool;
 
 use nalgebra::{Matrix3, Vector3};
 
@@ -126,6 +131,13 @@ pub enum NonlinearError {
     },
     /// An input ([`inputs`]) that cannot be used, or a speed outside its gain table.
     Input(InputError),
+    /// A start at or beyond the fall angle: the bicycle would already lie on the ground.
+    Fallen {
+        /// The lean of the start (rad).
+        lean: f64,
+        /// The fall angle ([`WhippleNonlinear::fall_angle`], rad).
+        fall_angle: f64,
+    },
 }
 
 impl fmt::Display for NonlinearError {
@@ -143,6 +155,11 @@ impl fmt::Display for NonlinearError {
                 write!(f, "the integration failed at t = {t} s: {reason}")
             }
             NonlinearError::Input(e) => write!(f, "{e}"),
+            NonlinearError::Fallen { lean, fall_angle } => write!(
+                f,
+                "invalid lean {lean:?} rad: at or beyond the fall angle ±{fall_angle} rad, where \
+                 the bicycle is on the ground"
+            ),
         }
     }
 }
@@ -175,7 +192,7 @@ impl From<IntegrateError<NonlinearError>> for NonlinearError {
                 NonlinearError::Parameter(ParameterError::InvalidParameter {
                     name: "stop conditions",
                     value: count as f64,
-                    reason: "at most 8",
+                    reason: "at most 8 (with the fall and the steer lock)",
                 })
             }
         }
@@ -198,8 +215,26 @@ fn finite(name: &'static str, value: f64) -> Result<f64, NonlinearError> {
     }
 }
 
+/// The most stop conditions of a simulation: the integrator's events less the fall's and the
+/// steer lock's.
+pub const MAX_STOPS: usize = integrate::MAX_EVENTS - 2;
+
+/// The fall angle of [`WhippleNonlinear::new`] (rad): a stated lean, 1.2 rad (69°). The
+/// Whipple model gives its frames and rider no extent (mass centres and inertias only), so no
+/// geometry tells where the frame, a pedal or the handlebar touches the ground; its only
+/// solids, the knife-edge wheels, lie flat at π/2, beyond where the front contact can be
+/// solved once the fork has turned in a fall (the benchmark loses it near 1.39 rad).
+pub const DEFAULT_FALL_ANGLE: f64 = 1.2;
+
+/// The steer lock of [`WhippleNonlinear::new`] (rad): a stated steer, 1.4 rad (80°), where the
+/// handlebar meets the frame. The model has no lock of its own, but its equations are singular
+/// at $\delta = \pm\pi/2$ (the fork across the frame: the yaw rate grows as $\tan\delta$
+/// times the rear speed), which a falling bicycle at low speed turns its fork into before its
+/// lean reaches the fall angle; a run ends at the lock, located like the fall.
+pub const DEFAULT_STEER_LOCK: f64 = 1.4;
+
 /// The checks every simulation makes before it starts: a usable integration, a finite start
-/// state and stop values, and at most [`integrate::MAX_EVENTS`] stop conditions.
+/// state and stop values, and at most [`MAX_STOPS`] stop conditions.
 fn check_run(start: &State, how: &Integration, stops: &[Stop]) -> Result<(), NonlinearError> {
     if let Some(bad) = how.unusable() {
         return Err(invalid(bad));
@@ -210,7 +245,7 @@ fn check_run(start: &State, how: &Integration, stops: &[Stop]) -> Result<(), Non
     for stop in stops {
         finite("stop value", stop.value)?;
     }
-    if stops.len() > integrate::MAX_EVENTS {
+    if stops.len() > MAX_STOPS {
         return Err(invalid(("stop conditions", stops.len() as f64, "at most 8")));
     }
     Ok(())
@@ -277,10 +312,13 @@ pub struct KaneTerms {
     pub rear_speed: f64,
 }
 
-/// The nonlinear bicycle for one parameter set.
+/// The nonlinear bicycle for one parameter set, the lean at which it has fallen and the steer
+/// at which the handlebar meets the frame.
 #[derive(Clone, Debug)]
 pub struct WhippleNonlinear {
     params: WhippleParams,
+    fall_angle: f64,
+    steer_lock: f64,
 }
 
 /// The full simulation state: the coordinates other than the pitch and the independent speeds.
@@ -382,6 +420,12 @@ pub struct Final {
     pub state: State,
     /// The stop condition met (its index) and when, `None` when the run reached the end.
     pub event: Option<(usize, f64)>,
+    /// When the lean reached the fall angle, `None` when it did not.
+    pub fall: Option<f64>,
+    /// When the steer reached the steer lock, `None` when it did not.
+    pub steer_lock: Option<f64>,
+    /// When the stop flag ended the run (its last accepted step), `None` when it did not.
+    pub interrupted: Option<f64>,
     /// Right-hand side evaluations and steps.
     pub stats: integrate::Stats,
     /// The energy drift and contact residual over the accepted steps.
@@ -469,9 +513,88 @@ impl Stop {
 }
 
 impl WhippleNonlinear {
-    /// The nonlinear bicycle with the parameters `params`.
+    /// The nonlinear bicycle with the parameters `params`, the fall angle
+    /// [`DEFAULT_FALL_ANGLE`] and the steer lock [`DEFAULT_STEER_LOCK`].
     pub fn new(params: WhippleParams) -> WhippleNonlinear {
-        WhippleNonlinear { params }
+        WhippleNonlinear { params, fall_angle: DEFAULT_FALL_ANGLE, steer_lock: DEFAULT_STEER_LOCK }
+    }
+
+    /// The same bicycle with the fall angle `angle` (rad): a simulation ends, fallen, when the
+    /// magnitude of the lean reaches it (located on the integrator's interpolant like a stop
+    /// condition), and a start at or beyond it is refused.
+    ///
+    /// # Errors
+    /// [`NonlinearError::Parameter`] naming `fall angle` unless $0 < $ `angle` $\le \pi/2$
+    /// (at π/2 the wheels lie flat).
+    pub fn with_fall_angle(self, angle: f64) -> Result<WhippleNonlinear, NonlinearError> {
+        finite("fall angle", angle)?;
+        if !(angle > 0.0 && angle <= std::f64::consts::FRAC_PI_2) {
+            return Err(invalid(("fall angle", angle, "must lie in (0, pi/2] rad")));
+        }
+        Ok(WhippleNonlinear { fall_angle: angle, ..self })
+    }
+
+    /// The fall angle (rad): [`DEFAULT_FALL_ANGLE`] unless
+    /// [`with_fall_angle`](Self::with_fall_angle) set another.
+    pub fn fall_angle(&self) -> f64 {
+        self.fall_angle
+    }
+
+    /// The same bicycle with the steer lock `angle` (rad): a simulation ends when the
+    /// magnitude of the steer reaches it (the handlebar against the frame), located like the
+    /// fall, and a start at or beyond it is refused.
+    ///
+    /// # Errors
+    /// [`NonlinearError::Parameter`] naming `steer lock` unless $0 < $ `angle` $< \pi/2$ (at
+    /// π/2 the equations are singular).
+    pub fn with_steer_lock(self, angle: f64) -> Result<WhippleNonlinear, NonlinearError> {
+        finite("steer lock", angle)?;
+        if !(angle > 0.0 && angle < std::f64::consts::FRAC_PI_2) {
+            return Err(invalid(("steer lock", angle, "must lie in (0, pi/2) rad")));
+        }
+        Ok(WhippleNonlinear { steer_lock: angle, ..self })
+    }
+
+    /// The steer lock (rad): [`DEFAULT_STEER_LOCK`] unless
+    /// [`with_steer_lock`](Self::with_steer_lock) set another.
+    pub fn steer_lock(&self) -> f64 {
+        self.steer_lock
+    }
+
+    /// The model's own limits, the events after the stop conditions: the fall (the lean's
+    /// magnitude reaching the fall angle) and the steer lock.
+    pub(crate) fn limits(&self) -> [Stop; 2] {
+        [
+            Stop { quantity: Watched::Lean, value: self.fall_angle, magnitude: true },
+            Stop { quantity: Watched::Steer, value: self.steer_lock, magnitude: true },
+        ]
+    }
+
+    /// Checks that `start` is a physical start and returns its pitch: a lean inside the fall
+    /// angle, a steer inside the steer lock and a pitch that puts the front wheel on the
+    /// ground (Newton from 0). Every method of [`simulate_with`](Self::simulate_with) makes
+    /// this check first.
+    ///
+    /// # Errors
+    /// [`NonlinearError::Fallen`] for a lean at or beyond the fall angle;
+    /// [`NonlinearError::Parameter`] naming the steer at or beyond the steer lock, or the lean
+    /// when no pitch puts the front wheel on the ground (or a non-finite lean or steer).
+    pub fn check_start(&self, start: &State) -> Result<f64, NonlinearError> {
+        finite("lean", start.lean)?;
+        finite("steer", start.steer)?;
+        if start.lean.abs() >= self.fall_angle {
+            return Err(NonlinearError::Fallen { lean: start.lean, fall_angle: self.fall_angle });
+        }
+        if start.steer.abs() >= self.steer_lock {
+            return Err(invalid(("steer", start.steer, "at or beyond the steer lock")));
+        }
+        self.pitch(start.lean, start.steer, 0.0).map_err(|_| {
+            invalid((
+                "lean",
+                start.lean,
+                "no pitch puts the front wheel on the ground at this lean and steer",
+            ))
+        })
     }
 
     /// The nonlinear bicycle of `design`, validated as [`WhippleParams::from_design`].
@@ -794,16 +917,36 @@ impl WhippleNonlinear {
         how: &Integration,
         stops: &[Stop],
     ) -> Result<Trajectory, NonlinearError> {
+        self.simulate_until(start, grid, how, stops, &AtomicBool::new(false))
+    }
+
+    /// [`simulate_with`](Self::simulate_with) that also ends when `stop` is set (Ctrl-C): the
+    /// samples up to the last accepted step, whose time is
+    /// [`Trajectory::interrupted`](crate::numerics::ode::Trajectory::interrupted).
+    ///
+    /// # Errors
+    /// As [`simulate_with`](Self::simulate_with).
+    pub fn simulate_until(
+        &self,
+        start: State,
+        grid: &Grid,
+        how: &Integration,
+        stops: &[Stop],
+        stop: &AtomicBool,
+    ) -> Result<Trajectory, NonlinearError> {
         let mut trajectory =
             Trajectory::with_capacity(grid.h, grid.samples(), Diagnostics::default());
         let mut keep = |t: f64, s: &State, guess: f64| -> Result<(), NonlinearError> {
             trajectory.push(t, self.sample(t, s, guess)?);
             Ok(())
         };
-        let end = self.run(start, grid, how, stops, &mut keep)?;
+        let end = self.run(start, grid, how, stops, &mut keep, stop)?;
         trajectory.diagnostics = end.diagnostics;
         trajectory.stats = end.stats;
         trajectory.event = end.event;
+        trajectory.fall = end.fall;
+        trajectory.steer_lock = end.steer_lock;
+        trajectory.interrupted = end.interrupted;
         Ok(trajectory)
     }
 
@@ -819,7 +962,7 @@ impl WhippleNonlinear {
         how: &Integration,
         stops: &[Stop],
     ) -> Result<Final, NonlinearError> {
-        self.run(start, grid, how, stops, &mut |_, _, _| Ok(()))
+        self.run(start, grid, how, stops, &mut |_, _, _| Ok(()), &AtomicBool::new(false))
     }
 
     /// [`simulate_final`](Self::simulate_final) from every start of `starts`, in parallel
@@ -846,7 +989,8 @@ impl WhippleNonlinear {
     }
 
     /// The integration behind [`simulate_with`](Self::simulate_with): `keep(t, state, guess)`
-    /// receives every sample (and the event's state) with the Newton guess for its pitch.
+    /// receives every sample (and the event's state) with the Newton guess for its pitch. The
+    /// fall and the steer lock are two more events after the stop conditions ([`Self::limits`]).
     fn run(
         &self,
         start: State,
@@ -854,15 +998,21 @@ impl WhippleNonlinear {
         how: &Integration,
         stops: &[Stop],
         keep: &mut dyn FnMut(f64, &State, f64) -> Result<(), NonlinearError>,
+        stop_flag: &AtomicBool,
     ) -> Result<Final, NonlinearError> {
         check_run(&start, how, stops)?;
-        let pitch0 = self.pitch(start.lean, start.steer, 0.0)?;
+        let pitch0 = self.check_start(&start)?;
+        let limits = self.limits();
+        let conditions = stops.len() + limits.len();
         let (e0, _) = self.observe(&self.configuration(&start, pitch0)?);
         let f = StateRate::new(&self.params);
         let (mut drift, mut residual) = (0.0f64, 0.0f64);
         let mut rhs = |_t: f64, y: &[f64; rate::LEN]| f.eval(y);
         let mut watchers: [_; integrate::MAX_EVENTS] = std::array::from_fn(|j| {
-            let stop = stops.get(j).copied();
+            let stop = match j.checked_sub(stops.len()) {
+                Some(k) => limits.get(k).copied(),
+                None => stops.get(j).copied(),
+            };
             let f = &f;
             move |y: &[f64; rate::LEN]| -> Result<f64, NonlinearError> {
                 let Some(stop) = stop else { return Ok(f64::NAN) };
@@ -907,18 +1057,23 @@ impl WhippleNonlinear {
                 }
                 Ok(())
             };
-        let outcome = integrate::integrate(
+        let outcome = integrate::integrate_until(
             how,
             grid,
             rate::state_with_pitch(&start, pitch0),
             &mut rhs,
-            &mut events[..stops.len()],
+            &mut events[..conditions],
             &mut observe,
+            stop_flag,
         )?;
+        let limit = |k: usize| outcome.event.filter(|c| c.index == stops.len() + k).map(|c| c.t);
         Ok(Final {
             t: outcome.end.0,
             state: rate::state_of(&outcome.end.1),
-            event: outcome.event.map(|c| (c.index, c.t)),
+            event: outcome.event.filter(|c| c.index < stops.len()).map(|c| (c.index, c.t)),
+            fall: limit(0),
+            steer_lock: limit(1),
+            interrupted: outcome.interrupted.then_some(outcome.end.0),
             stats: outcome.stats,
             diagnostics: Diagnostics { energy_drift: drift, max_contact_residual: residual },
         })

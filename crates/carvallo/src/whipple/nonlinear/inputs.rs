@@ -68,6 +68,7 @@
 
 use std::cell::Cell;
 use std::fmt;
+use std::sync::atomic::AtomicBool;
 
 use nalgebra::{Matrix3, Vector3};
 
@@ -549,11 +550,28 @@ impl WhippleNonlinear {
         stops: &[Stop],
         inputs: &Inputs,
     ) -> Result<ForcedTrajectory, NonlinearError> {
+        self.simulate_forced_until(start, grid, how, stops, inputs, &AtomicBool::new(false))
+    }
+
+    /// [`simulate_forced`](Self::simulate_forced) that also ends when `stop` is set
+    /// (Ctrl-C), as [`simulate_until`](WhippleNonlinear::simulate_until) does.
+    ///
+    /// # Errors
+    /// As [`simulate_forced`](Self::simulate_forced).
+    pub fn simulate_forced_until(
+        &self,
+        start: State,
+        grid: &Grid,
+        how: &Integration,
+        stops: &[Stop],
+        inputs: &Inputs,
+        stop: &AtomicBool,
+    ) -> Result<ForcedTrajectory, NonlinearError> {
         check_run(&start, how, stops)?;
         let breaks = inputs.breaks(grid)?;
         let mut trajectory =
             Trajectory::with_capacity(grid.h, grid.samples(), ForcedDiagnostics::default());
-        let pitch0 = self.pitch(start.lean, start.steer, 0.0)?;
+        let pitch0 = self.check_start(&start)?;
         let (e0, _) = self.observe(&self.configuration(&start, pitch0)?);
         let run = Run {
             bike: self,
@@ -566,6 +584,8 @@ impl WhippleNonlinear {
             mid: Cell::new(0.0),
             diagnostics: Cell::new(ForcedDiagnostics::default()),
             stats: Cell::new(Stats::default()),
+            limits: self.limits(),
+            stop,
         };
         let mut y = y_of(&start, pitch0, 0.0);
         let mut k0 = 0;
@@ -573,10 +593,18 @@ impl WhippleNonlinear {
         // Segments between the breaks; the last ends at the grid's end.
         for (k1, jump) in breaks.into_iter().chain([(grid.n, [0.0, 0.0])]) {
             if k1 > k0 {
-                let (end, crossed) = run.segment(k0, k1, y, &mut trajectory)?;
+                let (end, crossed, interrupted) = run.segment(k0, k1, y, &mut trajectory)?;
                 y = end;
-                if crossed.is_some() {
-                    event = crossed;
+                if let Some((index, t)) = crossed {
+                    match index.checked_sub(stops.len()) {
+                        Some(0) => trajectory.fall = Some(t),
+                        Some(_) => trajectory.steer_lock = Some(t),
+                        None => event = crossed,
+                    }
+                    break;
+                }
+                if interrupted.is_some() {
+                    trajectory.interrupted = interrupted;
                     break;
                 }
             }
@@ -593,6 +621,10 @@ impl WhippleNonlinear {
     }
 }
 
+/// The end of a segment: the state, the event that ended it (its index, the fall's after the
+/// stop conditions', and the time) and the time the stop flag ended it.
+type SegmentEnd = (Y, Option<(usize, f64)>, Option<f64>);
+
 /// A driven run in progress: what its segments share.
 struct Run<'a> {
     bike: &'a WhippleNonlinear,
@@ -607,6 +639,10 @@ struct Run<'a> {
     mid: Cell<f64>,
     diagnostics: Cell<ForcedDiagnostics>,
     stats: Cell<Stats>,
+    /// The fall and the steer lock (the events after the stops).
+    limits: [Stop; 2],
+    /// The flag that ends the run early.
+    stop: &'a AtomicBool,
 }
 
 impl Run<'_> {
@@ -690,14 +726,16 @@ impl Run<'_> {
 
     /// Integrates `y0` over the grid points `k0..=k1` of the run's grid, keeping its samples
     /// there (the one at `k1` only at the grid's end: otherwise the run is split there and
-    /// the sample is the state after the split). Returns the end state and the event, if any.
+    /// the sample is the state after the split). Returns the end state, the event, if any (the
+    /// fall's index is the number of stop conditions, the steer lock's the next), and the time
+    /// the stop flag ended it.
     fn segment(
         &self,
         k0: usize,
         k1: usize,
         y0: Y,
         trajectory: &mut ForcedTrajectory,
-    ) -> Result<(Y, Option<(usize, f64)>), NonlinearError> {
+    ) -> Result<SegmentEnd, NonlinearError> {
         let grid = self.grid;
         let last = k1 == grid.n;
         // The whole grid in one segment samples as an undriven run; a segment between
@@ -708,7 +746,10 @@ impl Run<'_> {
         self.mid.set((grid.time(k0) + grid.time(k1)) / 2.0);
         let mut rhs = |t: f64, y: &Y| -> Result<Y, NonlinearError> { self.rhs(offset + t, y) };
         let mut watchers: [_; integrate::MAX_EVENTS] = std::array::from_fn(|j| {
-            let stop = self.stops.get(j).copied();
+            let stop = match j.checked_sub(self.stops.len()) {
+                Some(k) => self.limits.get(k).copied(),
+                None => self.stops.get(j).copied(),
+            };
             move |y: &Y| -> Result<f64, NonlinearError> {
                 let Some(stop) = stop else { return Ok(f64::NAN) };
                 let s = state_of(y);
@@ -748,20 +789,25 @@ impl Run<'_> {
             }
             Ok(())
         };
-        let outcome = integrate::integrate(
+        let outcome = integrate::integrate_until(
             self.how,
             &local,
             y0,
             &mut rhs,
-            &mut events[..self.stops.len()],
+            &mut events[..self.stops.len() + self.limits.len()],
             &mut observe,
+            self.stop,
         )?;
         let mut stats = self.stats.get();
         stats.rhs_evaluations += outcome.stats.rhs_evaluations;
         stats.steps += outcome.stats.steps;
         stats.rejected_steps += outcome.stats.rejected_steps;
         self.stats.set(stats);
-        Ok((outcome.end.1, outcome.event.map(|c| (c.index, offset + c.t))))
+        Ok((
+            outcome.end.1,
+            outcome.event.map(|c| (c.index, offset + c.t)),
+            outcome.interrupted.then_some(offset + outcome.end.0),
+        ))
     }
 }
 

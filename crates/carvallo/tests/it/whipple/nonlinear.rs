@@ -260,7 +260,10 @@ fn adaptive_runs_reach_a_cross_checked_reference() {
         let tr = run(&Integration::RK4, 5.0, h, 1 << k, &[]);
         let e = error(&tr, &reference);
         eprintln!("rk4 step {h:.2e}: error {e:.2e}, {} evaluations", tr.stats.rhs_evaluations);
-        assert_eq!(tr.stats.rhs_evaluations, 4 * tr.stats.steps);
+        // Four a step, and the slope at the end of the last: the fall angle is an event, whose
+        // location needs each step's Hermite interpolant (the end's slope is the next step's
+        // first).
+        assert_eq!(tr.stats.rhs_evaluations, 4 * tr.stats.steps + 1);
         rk4_errors.push((e, tr.stats.rhs_evaluations));
     }
     for w in rk4_errors.windows(2) {
@@ -379,6 +382,105 @@ fn the_rk4_baseline_is_the_old_simulate() {
         .expect("run");
     assert_eq!(old, new);
     assert_eq!(old.len(), 201);
-    assert_eq!(old.stats.rhs_evaluations, 8000);
+    // 2000 steps of four evaluations, and the slope at the end (the fall's event).
+    assert_eq!(old.stats.rhs_evaluations, 8001);
     assert!(old.event.is_none());
+}
+
+#[test]
+fn a_fall_ends_the_run_at_the_fall_angle_located_by_bisection() {
+    // The fall (2 m/s from a lean of 0.05 rad) with the fall angle 0.8 rad: DOP853's
+    // located time against a bisection on single RK4 steps of 1e-5 s (independent code: each
+    // step re-integrated from the last grid state before the crossing).
+    let b = bike().with_fall_angle(0.8).expect("angle");
+    let start = b.initial_state(2.0, 0.05).expect("state");
+    let grid = Grid::new(5.0, 0.01, 1).expect("grid");
+    let tr = b
+        .simulate_with(start, &grid, &Integration::adaptive(Method::Dop853, 1e-12, 1e-15), &[])
+        .expect("run");
+    let t_fall = tr.fall.expect("it falls");
+    assert!(tr.event.is_none() && tr.interrupted.is_none());
+    assert_eq!(*tr.times.last().unwrap(), t_fall);
+    assert!((tr.samples.last().unwrap().state.lean.abs() - 0.8).abs() < 1e-12);
+    // The reference: RK4 at 1e-5 s up to the last grid point before the fall, then bisection
+    // on the length of one more RK4 step.
+    let before = (t_fall / 0.01).floor() * 0.01;
+    let fine = Grid::new(before, 1e-5, 1000).expect("grid");
+    // (The reference runs with the default fall angle, 1.2 rad, so that they pass 0.8 rad.)
+    let free = bike();
+    let mid = free.simulate_with(start, &fine, &Integration::RK4, &[]).expect("run");
+    let s0 = mid.samples.last().unwrap().state;
+    assert!(s0.lean.abs() < 0.8);
+    let lean_after = |h: f64| -> f64 {
+        let g = Grid::new(h, h, 1).expect("grid");
+        let last = free.simulate_with(s0, &g, &Integration::RK4, &[]).expect("step");
+        last.samples.last().unwrap().state.lean.abs()
+    };
+    let (mut lo, mut hi) = (0.0f64, 0.02f64);
+    assert!(lean_after(hi) > 0.8);
+    for _ in 0..60 {
+        let m = 0.5 * (lo + hi);
+        if m <= 1e-9 || lean_after(m) < 0.8 {
+            lo = m;
+        } else {
+            hi = m;
+        }
+    }
+    let reference = before + 0.5 * (lo + hi);
+    eprintln!("fall at 0.8 rad: dop853 {t_fall}, bisection on rk4 {reference}");
+    assert!((t_fall - reference).abs() < 1e-8, "{t_fall} against {reference}");
+}
+
+#[test]
+fn unphysical_starts_are_refused_by_every_method() {
+    use carvallo::whipple::nonlinear::NonlinearError;
+    let b = bike();
+    let grid = Grid::new(1.0, 0.001, 10).expect("grid");
+    for how in [
+        Integration::RK4,
+        Integration::adaptive(Method::Dopri5, 1e-8, 1e-11),
+        Integration::adaptive(Method::Dop853, 1e-8, 1e-11),
+        Integration::adaptive(Method::Vern9, 1e-8, 1e-11),
+    ] {
+        let start = b.initial_state(5.0, 2.0).expect("state");
+        let e = b.simulate_with(start, &grid, &how, &[]).unwrap_err();
+        assert_eq!(e, NonlinearError::Fallen { lean: 2.0, fall_angle: 1.2 }, "{}", how.method);
+        let e = b.simulate_final(start, &grid, &how, &[]).unwrap_err();
+        assert!(matches!(e, NonlinearError::Fallen { .. }), "{e}");
+    }
+    for bad in [0.0, -0.1, 1.6, f64::NAN] {
+        let e = bike().with_fall_angle(bad).unwrap_err().to_string();
+        assert!(e.starts_with(&format!("invalid fall angle {bad:?}")), "{e}");
+    }
+    // A start whose front wheel cannot touch the ground (a lean inside a wide fall angle with
+    // the fork turned into it, where a fall loses the contact) is refused before the first
+    // step by every method, naming the lean; so is a steer at the lock.
+    let wide = bike().with_fall_angle(std::f64::consts::FRAC_PI_2).expect("angle");
+    let mut flat = wide.initial_state(5.0, 1.5).expect("state");
+    flat.steer = 1.0;
+    assert!(wide.pitch(flat.lean, flat.steer, 0.0).is_err());
+    let mut locked = b.initial_state(5.0, 0.1).expect("state");
+    locked.steer = -1.4;
+    for how in [Integration::RK4, Integration::adaptive(Method::Dop853, 1e-8, 1e-11)] {
+        let e = wide.simulate_with(flat, &grid, &how, &[]).unwrap_err().to_string();
+        assert_eq!(
+            e,
+            "invalid lean 1.5: no pitch puts the front wheel on the ground at this lean and steer"
+        );
+        let e = b.simulate_with(locked, &grid, &how, &[]).unwrap_err().to_string();
+        assert_eq!(e, "invalid steer -1.4: at or beyond the steer lock");
+    }
+    for bad in [0.0, -0.1, std::f64::consts::FRAC_PI_2, f64::INFINITY] {
+        let e = bike().with_steer_lock(bad).unwrap_err().to_string();
+        assert!(e.starts_with(&format!("invalid steer lock {bad:?}")), "{e}");
+    }
+    // A slow fall turns the fork to the steer lock first, where every method ends.
+    let start = b.initial_state(1.0, 0.05).expect("state");
+    let grid = Grid::new(20.0, 0.001, 10).expect("grid");
+    for how in [Integration::RK4, Integration::adaptive(Method::Dop853, 1e-10, 1e-13)] {
+        let tr = b.simulate_with(start, &grid, &how, &[]).expect("run");
+        let t = tr.steer_lock.expect("the steer lock");
+        assert!(tr.fall.is_none() && (t - 1.0656945415).abs() < 1e-9, "{}: {t}", how.method);
+        assert!((tr.samples.last().unwrap().state.steer.abs() - 1.4).abs() < 1e-12);
+    }
 }
