@@ -142,8 +142,8 @@ def plot_eigenvalues(params, speeds=None, name=None, ax=None):
     fig, ax = _axes(ax, (9, 6))
     y_max = 10.0
     for a, b in carvallo.window(params)["stable"]:
-        ax.axvspan(a, min(b, speeds[-1]), color="#78c878", alpha=0.35,
-                   label=f"stable: {a:.3f} < v < {b:.3f} m/s")
+        span = f"{a:.3f} < v < {b:.3f} m/s" if math.isfinite(b) else f"v > {a:.3f} m/s"
+        ax.axvspan(a, min(b, speeds[-1]), color="#78c878", alpha=0.35, label=f"stable: {span}")
     done = set()
     for i, label in enumerate(labels):
         re = ev[:, i].real

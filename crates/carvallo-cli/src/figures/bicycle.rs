@@ -44,12 +44,15 @@ pub fn fig_geometry(bikes: &[(String, SideView)]) -> Result<String> {
         h = [h[0].min(bh[0]), h[1].max(bh[1])];
     }
     let pad = 0.08 * (x[1] - x[0]).max(h[1] - h[0]).max(0.1);
-    // Room above for the labels and on the right for the legend.
+    // Room on the right, and above the drawing for the labels and the legend (its entries
+    // are about 18 pixels high, at the scale of the 792 pixels of the width).
     let x_range = x[0] - pad..x[1] + if bikes.len() > 1 { 6.0 * pad } else { 2.5 * pad };
-    let h_range = h[0] - 0.5 * pad..h[1] + 2.0 * pad;
+    let entries = if bikes.len() > 1 { bikes.len() } else { 4 };
+    let legend = (24.0 + 18.0 * entries as f64) * (x_range.end - x_range.start) / 792.0;
+    let h_range = h[0] - 0.5 * pad..h[1] + pad + legend;
     let title = match bikes {
         [(name, _)] => format!("{name}: geometry"),
-        _ => format!("Geometry: {}", names(bikes.iter().map(|b| b.0.as_str()))),
+        _ => format!("Geometry: {}", who(bikes.iter().map(|b| b.0.as_str()))),
     };
     let mut c = Chart::new(&title, "x forward (m)", "height (m)", x_range.clone(), h_range);
     c.equal_scale = true;
@@ -134,6 +137,22 @@ fn names<'a>(list: impl Iterator<Item = &'a str>) -> String {
     }
 }
 
+/// The bicycles of a title: their names (`a and b`), or their count when the names are too long
+/// for a title line (the legend names them).
+fn who<'a>(list: impl Iterator<Item = &'a str>) -> String {
+    let v: Vec<&str> = list.collect();
+    let all = names(v.iter().copied());
+    if all.chars().count() <= TITLE_NAMES {
+        all
+    } else {
+        format!("{} bicycles", v.len())
+    }
+}
+
+/// The most characters of names in a title: with the rest of a Bode title it still fits the
+/// figure's width.
+const TITLE_NAMES: usize = 40;
+
 /// The eigenvalues of the bicycle `p` named `name` against speed up to `v_max` (301 speeds),
 /// each labelled by its mode (`Whipple::modes`: continuation in speed from a reference where
 /// the weave is a complex pair): the real parts in the mode's colour, the weave's imaginary
@@ -154,7 +173,7 @@ pub fn fig_modes(p: &WhippleParams, name: &str, v_max: f64) -> Result<String> {
         c.shade.push([(a, -y_max), (b.min(v_max), y_max)]);
     }
     c.shade_label = match window.stable.first() {
-        Some((a, b)) => format!("stable: {a:.3} < v < {b:.3} m/s"),
+        Some((a, b)) => format!("stable: {}", super::chart::speed_range(*a, *b)),
         None => "no stable speed".to_string(),
     };
     let inside = |y: f64| (-y_max..=y_max).contains(&y);
@@ -181,20 +200,41 @@ pub fn fig_modes(p: &WhippleParams, name: &str, v_max: f64) -> Result<String> {
         .collect();
     c.add_pieces("weave: Im λ", &im, 1.5 * v_max / 300.0, color(0), Stroke::Dashed);
     c.add(Curve::new("", vec![(0.0, 0.0), (v_max, 0.0)], BLACK, Stroke::Solid));
-    // Each mode's name beside its curve, where the curve is inside the frame.
+    // The legend in the corner with the fewest points under it (its box is about a quarter
+    // of the width and a fifth of the height), each mode's name beside its curve where the
+    // curve is inside the frame and clear of the legend.
+    let drawn: Vec<(f64, f64)> = c.curves.iter().flat_map(|k| k.points.iter().copied()).collect();
+    let corners = [
+        (SeriesLabelPosition::LowerRight, (0.74, 1.0), (-1.0, -0.56)),
+        (SeriesLabelPosition::UpperRight, (0.74, 1.0), (0.56, 1.0)),
+        (SeriesLabelPosition::UpperLeft, (0.0, 0.26), (0.56, 1.0)),
+        (SeriesLabelPosition::LowerLeft, (0.0, 0.26), (-1.0, -0.56)),
+    ];
+    let under = |(x, y): (f64, f64), (x0, x1): (f64, f64), (y0, y1): (f64, f64)| {
+        (x0 * v_max..=x1 * v_max).contains(&x) && (y0 * y_max..=y1 * y_max).contains(&y)
+    };
+    let (position, bx, by) = corners
+        .into_iter()
+        .min_by_key(|(_, bx, by)| drawn.iter().filter(|p| under(**p, *bx, *by)).count())
+        .unwrap_or((SeriesLabelPosition::LowerRight, (0.74, 1.0), (-1.0, -0.56)));
     for (label, _) in MODES {
         let at = speeds.iter().zip(&modes).rev().find_map(|(&v, ms)| {
             let m = ms.iter().find(|m| m.label == label)?;
-            (v <= 0.93 * v_max && m.eigenvalue.re.abs() < 0.85 * y_max)
-                .then_some((v, m.eigenvalue.re))
+            let at = (v, m.eigenvalue.re);
+            (v <= 0.93 * v_max && at.1.abs() < 0.85 * y_max && !under(at, bx, by)).then_some(at)
         });
         if let Some(at) = at {
-            // Above the rising curves, below left of the falling caster.
-            let offset = if label == ModeLabel::Caster { (-52, 6) } else { (4, -22) };
+            // Above the rising curves, below left of the falling caster (right of it at the
+            // left edge).
+            let offset = match label {
+                ModeLabel::Caster if at.0 > 0.15 * v_max => (-52, 6),
+                ModeLabel::Caster => (8, 0),
+                _ => (4, -22),
+            };
             c.label_at(at, label.name(), offset);
         }
     }
-    c.legend = SeriesLabelPosition::LowerRight;
+    c.legend = position;
     c.render()
 }
 
@@ -249,7 +289,7 @@ pub fn fig_bode(
         [v] => format!(", v = {} m/s", trim(*v)),
         _ => String::new(),
     };
-    let who = names(bikes.iter().map(|b| b.0.as_str()));
+    let who = who(bikes.iter().map(|b| b.0.as_str()));
     let what = format!("{} to {}", input_text(input), output_text(output));
     let panel = |title: String, y_desc: &str, value: fn(&FrequencyPoint) -> f64| -> Result<Chart> {
         let all: Vec<f64> = curves.iter().flat_map(|(_, pts)| pts.iter().map(value)).collect();
@@ -378,5 +418,15 @@ mod tests {
         }
         assert!(texts.iter().any(|t| t.starts_with("Benchmark and Short trail: steer torque")));
         assert!(!texts.iter().any(|t| t.contains("log10")));
+        // Names too long for the title are counted there and named in the legend.
+        let long: Vec<(String, WhippleParams)> =
+            ["Alpha + Alexandra", "Bravo + Bartholomew", "Charlie + Christine"]
+                .iter()
+                .map(|n| (n.to_string(), WhippleParams::benchmark()))
+                .collect();
+        let texts =
+            svg_texts(&fig_bode(&long, &[5.0], &omegas, Input::Steer, Output::Roll).unwrap());
+        assert!(texts.iter().any(|t| t.starts_with("3 bicycles: steer torque")), "{texts:?}");
+        assert!(texts.iter().any(|t| t == "Bravo + Bartholomew"), "{texts:?}");
     }
 }

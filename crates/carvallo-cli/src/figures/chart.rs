@@ -459,6 +459,15 @@ pub(crate) fn svg_texts(svg: &str) -> Vec<String> {
     out
 }
 
+/// A stable speed range for a legend: `a < v < b m/s`, or `v > a m/s` without an upper end.
+pub(super) fn speed_range(a: f64, b: f64) -> String {
+    if b.is_finite() {
+        format!("{a:.3} < v < {b:.3} m/s")
+    } else {
+        format!("v > {a:.3} m/s")
+    }
+}
+
 pub(super) fn nice_step(r_max: f64) -> f64 {
     let raw = r_max / 6.0;
     let p = 10f64.powf(raw.log10().floor());

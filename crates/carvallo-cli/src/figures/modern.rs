@@ -57,7 +57,7 @@ fn eigenvalue_chart(
         c.shade.push([(a, -y_max), (b.min(v_max), y_max)]);
     }
     c.shade_label = match stable.first() {
-        Some((a, b)) => format!("stable: {a:.3} < v < {b:.3} m/s"),
+        Some((a, b)) => format!("stable: {}", super::chart::speed_range(*a, *b)),
         None => "no stable speed".to_string(),
     };
     let inside = |y: &f64| (-y_max..=y_max).contains(y);
@@ -317,7 +317,7 @@ pub fn fig_eigenvalue_bands(u: &UncertainParams, samples: usize) -> Result<Strin
         c.shade.push([(a, -y_max), (bb.min(v_max), y_max)]);
     }
     c.shade_label = match stable.first() {
-        Some((a, bb)) => format!("nominal stable: {a:.3} < v < {bb:.3} m/s"),
+        Some((a, bb)) => format!("nominal stable: {}", super::chart::speed_range(*a, *bb)),
         None => "no stable speed (nominal)".to_string(),
     };
     let clip = |y: f64| y.clamp(-y_max, y_max);
