@@ -154,11 +154,22 @@ def plot_eigenvalues(params, speeds=None, name=None, ax=None):
     im = np.max(np.stack([ev[:, i].imag for i in weave]), axis=0)
     ax.plot(speeds, np.where((im > 0) & (im <= y_max), im, np.nan), "--",
             color=_MODE_COLOURS["weave"], label="weave: Im λ")
+    # The legend in the corner with the fewest points under it (as the command line chooses),
+    # each mode's name beside its curve, inside the frame and clear of the legend.
+    v_max = speeds[-1]
+    corners = [("lower right", (0.74, 1.0), (-1.0, -0.56)), ("upper right", (0.74, 1.0), (0.56, 1.0)),
+               ("upper left", (0.0, 0.26), (0.56, 1.0)), ("lower left", (0.0, 0.26), (-1.0, -0.56))]
+    points = [(v, e.real) for row, v in zip(ev, speeds) for e in row] + list(zip(speeds, im))
+
+    def under(x, y, bx, by):
+        return bx[0] * v_max <= x <= bx[1] * v_max and by[0] * y_max <= y <= by[1] * y_max
+
+    loc, bx, by = min(corners, key=lambda c: sum(under(x, y, c[1], c[2]) for x, y in points))
     for label in ("weave", "capsize", "caster"):
-        i = labels.index(label)
-        re = ev[:, i].real
+        re = ev[:, labels.index(label)].real
         inside = [k for k in range(len(speeds))
-                  if abs(re[k]) < 0.85 * y_max and speeds[k] <= 0.93 * speeds[-1]]
+                  if abs(re[k]) < 0.85 * y_max and speeds[k] <= 0.93 * v_max
+                  and not under(speeds[k], re[k], bx, by)]
         if inside:
             k = inside[-1]
             ax.annotate(label, (speeds[k], re[k]), xytext=(4, 8), textcoords="offset points")
@@ -168,7 +179,7 @@ def plot_eigenvalues(params, speeds=None, name=None, ax=None):
     ax.set_xlabel("forward speed v (m/s)")
     ax.set_ylabel("eigenvalue (1/s)")
     ax.set_title(f"{name}: eigenvalues against speed")
-    ax.legend(loc="lower right")
+    ax.legend(loc=loc)
     return fig
 
 
