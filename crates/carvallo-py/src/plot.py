@@ -99,11 +99,11 @@ def plot_geometry(params, rider=None, name=None, ax=None):
             label="frame (schematic) and fork")
     ax.plot(g["fork"][:, 0], g["fork"][:, 1], color="#1f77b4")
     axis = g["steer_axis"]
-    tilt = math.degrees(abs(math.atan2(axis[1, 0] - axis[0, 0], axis[1, 1] - axis[0, 1])))
+    tilt = math.degrees(math.atan2(axis[0, 0] - axis[1, 0], axis[1, 1] - axis[0, 1]))
     ax.plot(axis[:, 0], axis[:, 1], "--", color="0.25", label=f"steer axis, λ = {tilt:.1f}°")
     trail = g["trail"]
     ax.plot(trail[:, 0], trail[:, 1], color="#d62728", lw=3,
-            label=f"trail c = {abs(trail[1, 0] - trail[0, 0]):.3f} m")
+            label=f"trail c = {trail[1, 0] - trail[0, 0]:.3f} m")
     xs = [p[0] for p in g["mass_centres"].values()]
     hs = [p[1] for p in g["mass_centres"].values()]
     ax.plot(xs, hs, "o", color="black", label="mass centres")

@@ -66,7 +66,7 @@ pub fn fig_geometry(bikes: &[(String, SideView)]) -> Result<String> {
         };
         // One bicycle: each part in the legend; several: each bicycle once, by its frame.
         let legend = |what: &str| if single { what.to_string() } else { String::new() };
-        c.add(Curve::new(legend(""), circle(v.rear_hub, v.rear_radius), wheel, Stroke::Solid));
+        c.add(Curve::new("", circle(v.rear_hub, v.rear_radius), wheel, Stroke::Solid));
         c.add(Curve::new("", circle(v.front_hub, v.front_radius), wheel, Stroke::Solid));
         let f = v.frame;
         c.add(Curve::new(
@@ -76,18 +76,19 @@ pub fn fig_geometry(bikes: &[(String, SideView)]) -> Result<String> {
             Stroke::Solid,
         ));
         c.add(Curve::new("", segment(v.fork[0], v.fork[1]), frame, Stroke::Solid));
-        let lambda = (v.steer_axis[1][0] - v.steer_axis[0][0])
-            .atan2(v.steer_axis[1][1] - v.steer_axis[0][1])
-            .abs();
+        // The tilt back from the vertical, of the axis's points (x0 − t sin λ, t cos λ).
+        let [[x0, h0], [x1, h1]] = v.steer_axis;
+        let lambda = (x0 - x1).atan2(h1 - h0);
         c.add(Curve::new(
             legend(&format!("steer axis, λ = {:.1}°", lambda.to_degrees())),
             segment(v.steer_axis[0], v.steer_axis[1]),
             axis,
             Stroke::Dashed,
         ));
-        let trail_len = (v.trail[1][0] - v.trail[0][0]).abs();
+        // Signed: the axis meets the ground ahead of the contact for a positive trail.
+        let c_trail = v.trail[1][0] - v.trail[0][0];
         c.add(Curve::new(
-            legend(&format!("trail c = {} m", trim3(trail_len))),
+            legend(&format!("trail c = {c_trail:.3} m")),
             segment(v.trail[0], v.trail[1]),
             trail,
             Stroke::Solid,
@@ -120,11 +121,6 @@ pub fn fig_geometry(bikes: &[(String, SideView)]) -> Result<String> {
 /// rear frame).
 pub(super) fn fig_report_geometry(p: &WhippleParams, name: &str) -> Result<String> {
     fig_geometry(&[(name.to_string(), SideView::new(p, None))])
-}
-
-/// `x` with three decimals, trailing zeros kept (a length in metres to the millimetre).
-fn trim3(x: f64) -> String {
-    format!("{x:.3}")
 }
 
 /// `a`, `a and b`, `a, b and c`.
