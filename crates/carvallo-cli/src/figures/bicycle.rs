@@ -340,6 +340,12 @@ mod tests {
         // The fork offset rF sin λ − c cos λ, and its foot on the axis.
         let e = 0.35 * lam.sin() - 0.08 * lam.cos();
         assert!((v.fork_offset() - e).abs() < 1e-12, "{} {e}", v.fork_offset());
+        // A long trail puts the hub behind the axis: a negative offset.
+        let mut long = *WhippleParams::benchmark().values();
+        long[1] = 0.2;
+        let behind = SideView::new(&WhippleParams::from_values(long).unwrap(), None).fork_offset();
+        let e_long = 0.35 * lam.sin() - 0.2 * lam.cos();
+        assert!(e_long < 0.0 && (behind - e_long).abs() < 1e-12, "{behind} {e_long}");
         let [hub, foot] = v.fork;
         let along = [(foot[0] - 1.10) / -lam.sin(), foot[1] / lam.cos()];
         assert!((along[0] - along[1]).abs() < 1e-12, "the foot is on the axis");

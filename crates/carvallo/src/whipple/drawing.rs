@@ -110,14 +110,12 @@ impl SideView {
     /// The fork offset $e = r_F\sin\lambda - c\cos\lambda$ [m]: the front hub's distance ahead
     /// of the steer axis.
     pub fn fork_offset(&self) -> f64 {
+        // The axis's unit vector u = (−sin λ, cos λ) and the forward normal (u_h, −u_x).
+        let [[gx, gh], [tx, th]] = self.steer_axis;
+        let len = (tx - gx).hypot(th - gh);
+        let (ux, uh) = ((tx - gx) / len, (th - gh) / len);
         let [[x0, h0], [x1, h1]] = self.fork;
-        let d = (x1 - x0).hypot(h1 - h0);
-        // Ahead of the axis: the hub lies forward of its foot.
-        if x0 >= x1 {
-            d
-        } else {
-            -d
-        }
+        (x0 - x1) * uh - (h0 - h1) * ux
     }
 
     /// Every point drawn, for the extent of a figure: the wheels' boxes, the axis, the frame
