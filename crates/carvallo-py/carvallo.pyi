@@ -24,6 +24,7 @@ released and raise `KeyboardInterrupt` within a fraction of a second of Ctrl-C. 
 command line.
 """
 
+import types
 from typing import Mapping, Optional, Sequence, Union
 
 import numpy as np
@@ -65,6 +66,50 @@ def add_rider(
 ) -> tuple[dict[str, float], dict[str, float]]:
     """(params, sigma) with a rider (a BicycleParameters rider file, or a dict of mB, xB, yB, zB,
     IBxx, IBxz, IByy, IBzz) added to the rear frame, as Bicycle.add_rider."""
+
+def geometry(
+    params: Params, rider: Union[str, Mapping[str, float], None] = None, strict: bool = False
+) -> dict[str, object]:
+    """The side view's points, as `carvallo plot geometry` draws them, each [x, h] in metres (x
+    forward from the rear contact, h the height): rear_contact, rear_hub, front_contact,
+    front_hub, rear_radius, front_radius, the segments steer_axis, trail, fork (2 x 2), the
+    schematic frame (3 x 2), mass_centres {name: [x, h]} and masses {name: kg} (rear wheel, rear
+    frame, front frame, front wheel, rider when `rider` is given apart, whole bicycle)."""
+
+# The figures (matplotlib, an optional dependency: an ImportError saying how to install it when
+# it is missing); also in the submodule `carvallo.plot`. Each returns the matplotlib Figure.
+plot: types.ModuleType
+
+def plot_geometry(
+    params: Params,
+    rider: Union[str, Mapping[str, float], None] = None,
+    name: Optional[str] = None,
+    ax: Optional[object] = None,
+) -> object:
+    """The side view of `geometry(params, rider)`, titled "name: geometry"."""
+
+def plot_eigenvalues(
+    params: Params,
+    speeds: Optional[Speeds] = None,
+    name: Optional[str] = None,
+    ax: Optional[object] = None,
+) -> object:
+    """The eigenvalues against speed (default 0 to 10 m/s), each named by its mode as `modes`
+    labels it (weave, capsize, caster), the stable range shaded; titled "name: eigenvalues
+    against speed"."""
+
+def plot_bode(
+    bicycles: Union[Params, Sequence[Params]],
+    speeds: Speeds = 5.0,
+    input: str = "steer",
+    output: str = "roll",
+    omegas: Optional[Speeds] = None,
+    names: Optional[Sequence[str]] = None,
+    axes: Optional[Sequence[object]] = None,
+) -> object:
+    """The Bode diagram (magnitude above, phase below, ω on a log axis labelled 10⁻¹, 10⁰, 10¹)
+    of one bicycle or a list compared, at each speed; the legend names each bicycle (`names`,
+    or a bicycleparameters.Bicycle's own name)."""
 
 def parameters_from_raw(path: str) -> tuple[dict[str, float], dict[str, float]]:
     """(params, sigma) computed from BicycleParameters' raw measurements (RawData/<name>Measured.txt)

@@ -76,6 +76,17 @@ def test_the_browser_finds_every_entry_figure_and_erratum(report):
     figures = re.findall(r'<figure id="([^"]+)">\s*<svg', dom)
     assert sorted(figures) == svgs and len(svgs) >= 13
     assert "eigenvalue_bands.svg" in figures
+    # The bicycle figures are named and titled after the bicycle (the file's stem), the
+    # eigenvalues labelled by mode and the Bode axes by decades, as the browser reads the text.
+    assert "benchmark_1pct_eigenvalues.svg" in figures and "benchmark_1pct_geometry.svg" in figures
+    assert not any(f.startswith("benchmark_") and not f.startswith("benchmark_1pct_") for f in svgs)
+    eig = re.search(r'<figure id="benchmark_1pct_eigenvalues.svg">(.*?)</figure>', dom, re.S).group(1)
+    eig_texts = [t.strip() for t in re.findall(r"<text[^>]*>(.*?)</text>", eig, re.S)]
+    assert "benchmark-1pct: eigenvalues against speed" in eig_texts
+    assert {"weave", "capsize", "caster"} <= set(eig_texts), eig_texts
+    bode = re.search(r'<figure id="benchmark_1pct_bode_phase.svg">(.*?)</figure>', dom, re.S).group(1)
+    bode_texts = [t.strip() for t in re.findall(r"<text[^>]*>(.*?)</text>", bode, re.S)]
+    assert {"10⁻¹", "10⁰", "10¹", "10²"} <= set(bode_texts), bode_texts
     assert "<script" not in dom and "http://" not in dom.replace("http://www.w3.org", "")
     # Formulas typeset (Greek letters and superscripts) and the filter anchors present.
     assert '<span class="math">' in dom and "<sup>2</sup>" in dom

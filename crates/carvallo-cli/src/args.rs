@@ -153,6 +153,27 @@ pub fn uncertain_bicycle(
     model: &str,
     data: &DataOptions,
 ) -> Result<(UncertainParams, Vec<String>), String> {
+    let (params, warnings) = read_bicycle(model, data)?;
+    for w in &warnings {
+        eprintln!("warning: {w}");
+    }
+    Ok((params, warnings))
+}
+
+/// The side view of the bicycle of `model` with the rider of `data` drawn apart (the bicycle
+/// read without it; its warnings are those [`uncertain_bicycle`] prints).
+pub fn side_view(
+    model: &str,
+    data: &DataOptions,
+) -> Result<carvallo::whipple::drawing::SideView, String> {
+    let bare = DataOptions { rider: None, strict: data.strict };
+    let (params, _) = read_bicycle(model, &bare)?;
+    let rider = data.rider.as_deref().map(rider_file).transpose()?;
+    Ok(carvallo::whipple::drawing::SideView::new(&params.params, rider.as_ref()))
+}
+
+/// As [`uncertain_bicycle`], the warnings returned, not printed.
+fn read_bicycle(model: &str, data: &DataOptions) -> Result<(UncertainParams, Vec<String>), String> {
     let loaded = if model == "benchmark" {
         Loaded { params: UncertainParams::exact(WhippleParams::benchmark()), warnings: Vec::new() }
     } else {
@@ -192,10 +213,65 @@ pub fn uncertain_bicycle(
         }
     }
     let warnings: Vec<String> = loaded.warnings.iter().map(|w| format!("{model}: {w}")).collect();
-    for w in &warnings {
-        eprintln!("warning: {w}");
-    }
     Ok((loaded.params, warnings))
+}
+
+/// The name of a bicycle for titles and file names: `Benchmark bicycle` for `benchmark`, or the stem
+/// of the parameter file without BicycleParameters' `Benchmark` suffix
+/// (`…/BrowserBenchmark.txt` → `Browser`), and with a rider `bicycle + rider`, the rider's stem
+/// without that suffix and without the bicycle's name (`JasonBrowserBenchmark.txt` on Browser →
+/// `Browser + Jason`).
+pub fn bicycle_name(model: &str, rider: Option<&str>) -> String {
+    let stem = |path: &str| {
+        let s = std::path::Path::new(path)
+            .file_stem()
+            .map_or_else(|| path.to_string(), |s| s.to_string_lossy().into_owned());
+        match s.strip_suffix("Benchmark") {
+            Some(head) if !head.is_empty() => head.to_string(),
+            _ => s,
+        }
+    };
+    let bike = if model == "benchmark" { "Benchmark bicycle".to_string() } else { stem(model) };
+    match rider {
+        None => bike,
+        Some(r) => {
+            let r = stem(r);
+            let r = match r.strip_suffix(bike.as_str()) {
+                Some(head) if !head.is_empty() => head.to_string(),
+                _ => r,
+            };
+            format!("{bike} + {r}")
+        }
+    }
+}
+
+/// A name as the start of a file name: lower case, each run of other characters than ASCII
+/// letters and digits one `_` (`Browser + Jason` → `browser_jason`); `bicycle` if nothing is
+/// left, and `benchmark` for the benchmark bicycle alone (the report's `benchmark_*.svg`).
+pub fn file_stem_of(name: &str) -> String {
+    if name == "Benchmark bicycle" {
+        return "benchmark".to_string();
+    }
+    let mut out = String::new();
+    for ch in name.chars() {
+        if ch.is_ascii_alphanumeric() {
+            out.push(ch.to_ascii_lowercase());
+        } else if !out.is_empty() && !out.ends_with('_') {
+            out.push('_');
+        }
+    }
+    let out = out.trim_end_matches('_').to_string();
+    if out.is_empty() {
+        "bicycle".to_string()
+    } else {
+        out
+    }
+}
+
+/// The rider of a BicycleParameters rider file, for drawing it apart from the bicycle.
+pub fn rider_file(path: &str) -> Result<Rider, String> {
+    let text = read_text(path, "rider file")?;
+    Rider::from_text(&text).map_err(|e| format!("invalid rider file `{path}`: {e}"))
 }
 
 /// Whether `message` (an error of a command) is about the data of a file rather than the
@@ -308,6 +384,22 @@ mod tests {
         assert_eq!(read_bounded(&at[..]).map(|t| t.len()), Ok(at.len()));
         let past = vec![b' '; MAX_INPUT_BYTES as usize + 1];
         assert!(read_bounded(&past[..]).unwrap_err().starts_with("larger than 16 MiB"));
+    }
+
+    #[test]
+    fn bicycles_are_named_by_their_files_stems() {
+        let bike = "data/bicycleparameters/bicycles/Browser/Parameters/BrowserBenchmark.txt";
+        let rider = "data/bicycleparameters/riders/Jason/Parameters/JasonBrowserBenchmark.txt";
+        assert_eq!(bicycle_name(bike, None), "Browser");
+        assert_eq!(bicycle_name(bike, Some(rider)), "Browser + Jason");
+        assert_eq!(bicycle_name("benchmark", None), "Benchmark bicycle");
+        assert_eq!(file_stem_of("Benchmark bicycle"), "benchmark");
+        assert_eq!(
+            bicycle_name("designs/light.toml", Some("r/Benchmark.txt")),
+            "light + Benchmark"
+        );
+        assert_eq!(file_stem_of("Browser + Jason"), "browser_jason");
+        assert_eq!(file_stem_of(" +é "), "bicycle");
     }
 
     #[test]

@@ -26,7 +26,7 @@ mod report_html;
 mod staging;
 
 use commands::{
-    accel, bode, eig, kinematics, parameters, report, response, rest, rolling, simulate,
+    accel, bode, eig, kinematics, parameters, plot, report, response, rest, rolling, simulate,
     statespace, turn, window,
 };
 
@@ -55,6 +55,9 @@ enum Command {
     /// The frequency response (Bode diagram) from the roll or steer torque to the lean, the
     /// steer or their rates
     Bode(bode::Args),
+    /// A figure (SVG) of one bicycle or several compared: the geometry, the eigenvalues against
+    /// speed labelled by mode, or the Bode diagram
+    Plot(plot::Args),
     /// The time response of the linearised bicycle to a unit step or impulse of the roll or
     /// steer torque, or from an initial state (matrix exponential)
     Response(response::Args),
@@ -98,6 +101,7 @@ impl Command {
             Command::Eig(_) => "eig",
             Command::Statespace(_) => "statespace",
             Command::Bode(_) => "bode",
+            Command::Plot(_) => "plot",
             Command::Response(_) => "response",
             Command::Parameters(_) => "parameters",
             Command::Bench(_) => "bench",
@@ -122,6 +126,7 @@ impl Command {
             Command::Eig(a) => text(eig::run(a)),
             Command::Statespace(a) => text(statespace::run(a)),
             Command::Bode(a) => text(bode::run(a)),
+            Command::Plot(a) => text(plot::run(a)),
             Command::Response(a) => text(response::run(a)),
             Command::Parameters(a) => text(parameters::run(a)),
             Command::Bench(a) => text(perf::bench(a)),

@@ -118,11 +118,13 @@ impl Progress {
     }
 }
 
-/// The Markdown section listing the figures (as images) and the missing ones.
-pub fn figures_section(figs: &[figures::Figure]) -> String {
+/// The Markdown section listing the figures (as images) and the missing ones, the bicycle
+/// figures named after the bicycle `name` (file stem `stem`).
+pub fn figures_section(figs: &[figures::Figure], name: &str, stem: &str) -> String {
     let mut s = String::from("## Figures\n\n");
     for f in figs {
-        s.push_str(&format!("### {}\n\n![{}]({})\n\n{}\n\n", f.title, f.title, f.file, f.caption));
+        let (title, file) = (f.title_for(name), f.file_for(stem));
+        s.push_str(&format!("### {title}\n\n![{title}]({file})\n\n{}\n\n", f.caption));
     }
     s.push_str("### Figures not drawn yet\n\n");
     if figures::MISSING.is_empty() {
@@ -234,9 +236,17 @@ pub const BANDS_FILE: &str = "eigenvalue_bands.svg";
 const BANDS_TITLE: &str = "The bicycle of the parameter file: eigenvalues with uncertainty bands";
 const BANDS_CAPTION: &str = "Real parts of the four eigenvalues against speed (points: nominal parameters) and, for each, the band between the 2.5 % and 97.5 % quantiles over 2 000 Monte Carlo samples of the stated uncertainties (seeded); the nominal stable range shaded.";
 
-/// Computes the report and the figures for the bicycle `params` (named `model`) and writes them
-/// to `dir` (see the module docs). Returns the files written, relative to `dir`.
-pub fn write_report(dir: &Path, params: &UncertainParams, model: &str) -> Result<Vec<String>> {
+/// Computes the report and the figures for the bicycle `params` (read from `model`, named
+/// `name` in the bicycle figures' titles and files: [`figures::Figure::title_for`] and
+/// [`figures::Figure::file_for`]) and writes them to `dir` (see the module docs). Returns the
+/// files written, relative to `dir`.
+pub fn write_report(
+    dir: &Path,
+    params: &UncertainParams,
+    model: &str,
+    name: &str,
+) -> Result<Vec<String>> {
+    let stem = crate::args::file_stem_of(name);
     let staging = Staging::new(dir, &check_out_dir(dir)?)?;
     let figs = &figures::FIGURES;
     let banded = params.has_uncertainty();
@@ -246,9 +256,10 @@ pub fn write_report(dir: &Path, params: &UncertainParams, model: &str) -> Result
     progress.done();
     let mut files: Vec<(String, String)> = Vec::new();
     for f in figs {
-        progress.start(f.file);
-        let svg = (f.draw)(&params.params).with_context(|| format!("cannot draw {}", f.file))?;
-        files.push((f.file.to_string(), svg));
+        let file = f.file_for(&stem);
+        progress.start(&file);
+        let svg = (f.draw)(&params.params, name).with_context(|| format!("cannot draw {file}"))?;
+        files.push((file, svg));
         progress.done();
     }
     let (mut extra_md, mut extra_html) = (String::new(), String::new());
@@ -264,19 +275,27 @@ pub fn write_report(dir: &Path, params: &UncertainParams, model: &str) -> Result
         progress.done();
     }
     progress.start("writing");
-    let mut figures_md = figures_section(figs);
+    let mut figures_md = figures_section(figs, name, &stem);
     if !extra_md.is_empty() {
         figures_md = format!("{extra_md}{figures_md}");
     }
     let claims = carvallo_report::all_claims();
     let assertions = carvallo_report::all_assertions();
     let mut md = carvallo_report::render_markdown(&entries, &claims, &assertions, &figures_md);
+    let titles: Vec<String> = files
+        .iter()
+        .map(|(file, _)| match figs.iter().find(|f| f.file_for(&stem) == *file) {
+            Some(f) => f.title_for(name),
+            None => BANDS_TITLE.to_string(),
+        })
+        .collect();
     let html_figs: Vec<HtmlFigure<'_>> = files
         .iter()
-        .map(|(file, svg)| {
-            let (title, caption) = match figs.iter().find(|f| f.file == file) {
-                Some(f) => (f.title, f.caption),
-                None => (BANDS_TITLE, BANDS_CAPTION),
+        .zip(&titles)
+        .map(|((file, svg), title)| {
+            let caption = match figs.iter().find(|f| f.file_for(&stem) == *file) {
+                Some(f) => f.caption,
+                None => BANDS_CAPTION,
             };
             HtmlFigure { file, title, caption, svg }
         })
@@ -304,8 +323,16 @@ fn commit(staging: Staging, files: &mut Vec<(String, String)>) -> Result<()> {
     staging.commit(files)
 }
 
-/// The file name of the eigenvalue figure of [`write_bicycle_report`].
-pub const BICYCLE_EIGENVALUES_FILE: &str = "eigenvalues.svg";
+/// The file name of the eigenvalue figure of [`write_bicycle_report`], after the bicycle's file
+/// stem (`browser_jason_eigenvalues.svg`).
+pub fn eigenvalues_file(stem: &str) -> String {
+    format!("{stem}_eigenvalues.svg")
+}
+
+/// The file name of the geometry figure of [`write_bicycle_report`] (`browser_geometry.svg`).
+pub fn geometry_file(stem: &str) -> String {
+    format!("{stem}_geometry.svg")
+}
 
 /// A speed for the report's text: round-trip digits, `none` when absent.
 fn speed_text(v: Option<f64>) -> String {
@@ -313,20 +340,26 @@ fn speed_text(v: Option<f64>) -> String {
 }
 
 /// The report of the bicycle `params` read from `model` (with the rider file `rider` added to
-/// its rear frame, and the reader's `warnings`), written to `dir` as `report.md`, `report.html`
-/// (self-contained), the eigenvalue figure [`BICYCLE_EIGENVALUES_FILE`] and, with stated
-/// uncertainties, [`BANDS_FILE`]: the file and rider read, the parameters and their standard
-/// deviations, the stable speed range (closed-form Hurwitz route, as `carvallo window`), the
-/// eigenvalues against speed and the uncertainty section of [`uncertainty_section`]. The
-/// memoir's chapters are not computed. Nothing is written unless everything succeeds, as for
+/// its rear frame, and the reader's `warnings`), drawn as `view` (the bicycle and the rider
+/// apart) and named after them ([`crate::args::bicycle_name`]), written to `dir` as
+/// `report.md`, `report.html` (self-contained), the geometry figure [`geometry_file`], the
+/// eigenvalue figure [`eigenvalues_file`] and, with stated uncertainties, [`BANDS_FILE`]: the
+/// file and rider read, the parameters and their standard deviations, the stable speed range
+/// (closed-form Hurwitz route, as `carvallo window`), the geometry, the eigenvalues against
+/// speed labelled by mode and the uncertainty section of [`uncertainty_section`]. The memoir's
+/// chapters are not computed. Nothing is written unless everything succeeds, as for
 /// [`write_report`]. Returns the files written, relative to `dir`.
 pub fn write_bicycle_report(
     dir: &Path,
     params: &UncertainParams,
     model: &str,
     rider: Option<&str>,
+    view: &carvallo::whipple::drawing::SideView,
     warnings: &[String],
 ) -> Result<Vec<String>> {
+    let name = crate::args::bicycle_name(model, rider);
+    let stem = crate::args::file_stem_of(&name);
+    let (eig_file, geo_file) = (eigenvalues_file(&stem), geometry_file(&stem));
     let staging = Staging::new(dir, &check_out_dir(dir)?)?;
     let window = Whipple::new(params.params.clone()).stability_window();
     let source = match rider {
@@ -367,12 +400,20 @@ pub fn write_bicycle_report(
     ];
     let mut files: Vec<(String, String)> = Vec::new();
     let v_max = window.capsize_speed.map_or(10.0, |c| (1.25 * c).clamp(10.0, 30.0).ceil());
-    let title = format!("{model}: eigenvalues against speed");
-    let svg = figures::fig_bicycle_eigenvalues(&params.params, &title, v_max)
-        .with_context(|| format!("cannot draw {BICYCLE_EIGENVALUES_FILE}"))?;
-    files.push((BICYCLE_EIGENVALUES_FILE.to_string(), svg));
-    let caption = "Real and imaginary parts of the four eigenvalues of the linearised \
-                   Carvallo–Whipple bicycle against the forward speed; the stable range is shaded.";
+    let title = format!("{name}: eigenvalues against speed");
+    let svg = figures::fig_modes(&params.params, &name, v_max)
+        .with_context(|| format!("cannot draw {eig_file}"))?;
+    files.push((eig_file.clone(), svg));
+    let geo_title = format!("{name}: geometry");
+    let geo_svg = figures::fig_geometry(&[(name.clone(), view.clone())])
+        .with_context(|| format!("cannot draw {geo_file}"))?;
+    let caption = "Real parts of the four eigenvalues of the linearised Carvallo–Whipple bicycle \
+                   and the weave's frequency against the forward speed, each labelled by its \
+                   mode (weave, capsize, caster) by continuation in speed; the stable range is \
+                   shaded.";
+    let geo_caption = "Side view from the parameters: the wheels, the steer axis (dashed) and \
+                       the trail, a schematic frame and fork, the mass centres of each body (the \
+                       rider's apart when a rider file is given) and of the whole.";
     let (mut unc_md, mut unc_html) = (String::new(), String::new());
     if params.has_uncertainty() {
         (unc_md, unc_html) = uncertainty_section(params, model);
@@ -401,7 +442,8 @@ pub fn write_bicycle_report(
     let mut md = format!("# {heading}\n\n{}\n\n## Stable speed range\n\n", notes.join(" "));
     md.push_str(&window_lines.join(" "));
     md.push_str(&format!(
-        "\n\n## Eigenvalues against speed\n\n![{title}]({BICYCLE_EIGENVALUES_FILE})\n\n*{caption}*\n\n"
+        "\n\n## Geometry\n\n![{geo_title}]({geo_file})\n\n*{geo_caption}*\n\n\
+         ## Eigenvalues against speed\n\n![{title}]({eig_file})\n\n*{caption}*\n\n"
     ));
     md.push_str(&unc_md);
     md.push_str("## Parameters\n\n| parameter | value | standard deviation |\n|---|---|---|\n");
@@ -414,13 +456,16 @@ pub fn write_bicycle_report(
          <meta name=\"viewport\" content=\"width=device-width, initial-scale=1\">\n\
          <title>{}</title>\n<style>{}</style>\n</head>\n<body>\n<h1>{}</h1>\n<p id=\"source\">{}</p>\n\
          <h2 id=\"window\">Stable speed range</h2>\n<p>{}</p>\n\
+         <h2 id=\"geometry\">Geometry</h2>\n\
+         <figure id=\"{geo_file}\">\n{geo_svg}\n<figcaption>{}</figcaption>\n</figure>\n\
          <h2 id=\"eigenvalues\">Eigenvalues against speed</h2>\n\
-         <figure id=\"{BICYCLE_EIGENVALUES_FILE}\">\n{eig_svg}\n<figcaption>{}</figcaption>\n</figure>\n{unc_html}",
+         <figure id=\"{eig_file}\">\n{eig_svg}\n<figcaption>{}</figcaption>\n</figure>\n{unc_html}",
         escape(&heading.replace('`', "")),
         crate::report_html::STYLE,
         escape_with_code(&heading),
         escape_with_code(&notes.join(" ")),
         escape(&window_lines.join(" ")),
+        escape(geo_caption),
         escape(caption),
     );
     html.push_str("<h2 id=\"parameters\">Parameters</h2>\n<table>\n<thead><tr><th>parameter</th><th>value</th><th>standard deviation</th></tr></thead>\n<tbody>\n");
@@ -435,6 +480,7 @@ pub fn write_bicycle_report(
     html.push_str("</tbody>\n</table>\n</body>\n</html>\n");
     files.insert(0, ("report.md".to_string(), md));
     files.insert(1, ("report.html".to_string(), html));
+    files.insert(2, (geo_file, geo_svg));
     commit(staging, &mut files)?;
     Ok(files.into_iter().map(|(n, _)| n).collect())
 }
@@ -448,7 +494,8 @@ mod tests {
         let dir = std::env::temp_dir().join(format!("carvallo-report-dir-{}", std::process::id()));
         let _ = std::fs::remove_dir_all(&dir);
         let params = UncertainParams::exact(carvallo::whipple::WhippleParams::benchmark());
-        let files = write_report(&dir, &params, "benchmark").expect("report written");
+        let files =
+            write_report(&dir, &params, "benchmark", "Benchmark bicycle").expect("report written");
         let md = std::fs::read_to_string(dir.join("report.md")).expect("report.md");
         for fig in &figures::FIGURES {
             assert!(files.iter().any(|f| f == fig.file), "{} not in {files:?}", fig.file);
@@ -460,6 +507,37 @@ mod tests {
                 fig.file
             );
         }
+        std::fs::remove_dir_all(&dir).expect("scratch directory removed");
+    }
+
+    #[test]
+    fn the_whole_report_of_another_bicycle_names_its_figures_after_it() {
+        let dir =
+            std::env::temp_dir().join(format!("carvallo-report-named-{}", std::process::id()));
+        let _ = std::fs::remove_dir_all(&dir);
+        let data = concat!(env!("CARGO_MANIFEST_DIR"), "/../../data/bicycleparameters");
+        let bike = format!("{data}/bicycles/Browser/Parameters/BrowserBenchmark.txt");
+        let rider = format!("{data}/riders/Jason/Parameters/JasonBrowserBenchmark.txt");
+        let data = crate::args::DataOptions { rider: Some(rider.clone()), strict: false };
+        let (params, _) = crate::args::uncertain_bicycle(&bike, &data).expect("read");
+        let name = crate::args::bicycle_name(&bike, Some(&rider));
+        let files = write_report(&dir, &params, &bike, &name).expect("report written");
+        assert!(!files.iter().any(|f| f.starts_with("benchmark_")), "{files:?}");
+        for f in [
+            "browser_jason_eigenvalues.svg",
+            "browser_jason_geometry.svg",
+            "browser_jason_bode_phase.svg",
+        ] {
+            assert!(files.iter().any(|x| x == f), "{f} not in {files:?}");
+        }
+        let svg = std::fs::read_to_string(dir.join("browser_jason_eigenvalues.svg")).unwrap();
+        let texts = figures::svg_texts(&svg);
+        assert!(
+            texts.iter().any(|t| t == "Browser + Jason: eigenvalues against speed"),
+            "{texts:?}"
+        );
+        let md = std::fs::read_to_string(dir.join("report.md")).unwrap();
+        assert!(md.contains("### Browser + Jason: geometry\n\n![Browser + Jason: geometry](browser_jason_geometry.svg)"));
         std::fs::remove_dir_all(&dir).expect("scratch directory removed");
     }
 }

@@ -326,7 +326,8 @@ fn a_report_for_one_bicycle_names_its_file_and_rider() {
     assert_eq!((code, stderr.as_str()), (0, ""), "{stderr}");
     assert_eq!(
         stdout,
-        "r/report.md\nr/report.html\nr/eigenvalues.svg\nr/eigenvalue_bands.svg\nr/.carvallo-report\n"
+        "r/report.md\nr/report.html\nr/browser_jason_geometry.svg\nr/browser_jason_eigenvalues.svg\n\
+         r/eigenvalue_bands.svg\nr/.carvallo-report\n"
     );
     let md = std::fs::read_to_string(dir.join("r/report.md")).unwrap();
     let html = std::fs::read_to_string(dir.join("r/report.html")).unwrap();
@@ -337,6 +338,8 @@ fn a_report_for_one_bicycle_names_its_file_and_rider() {
         assert!(page.contains(&bike) && page.contains(&rider), "names the files");
         assert!(page.contains(&weave), "{weave}");
         assert!(page.contains("Uncertainty of the bicycle") && page.contains("eigenvalues.svg"));
+        assert!(page.contains("Browser + Jason: eigenvalues against speed"), "titled by name");
+        assert!(page.contains("Browser + Jason: geometry"), "titled by name");
         assert!(!page.contains("concordance"), "no memoir chapter");
     }
     // Browser alone: the broken triangle inequality is a warning, in the report too; --strict
@@ -353,7 +356,8 @@ fn a_report_for_one_bicycle_names_its_file_and_rider() {
     assert!(!dir.join("s").exists(), "nothing may be written");
     // The two-mass-skate: stable above its weave speed, no capsize, no uncertainty stated.
     let (code, stdout, _) = carvallo_in(&dir, &["report", "--out", "t", "--model", &tms]);
-    let files = "t/report.md\nt/report.html\nt/eigenvalues.svg\nt/.carvallo-report\n";
+    let files =
+        "t/report.md\nt/report.html\nt/tms_geometry.svg\nt/tms_eigenvalues.svg\nt/.carvallo-report\n";
     assert_eq!((code, stdout.as_str()), (0, files));
     let md = std::fs::read_to_string(dir.join("t/report.md")).unwrap();
     assert!(md.contains("Capsize speed: none. Stable above 2.841008323370"), "{md}");

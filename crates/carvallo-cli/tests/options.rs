@@ -65,6 +65,7 @@ const BASES: &[&[&str]] = &[
         "--omega-range",
         "0.1:10:3",
     ],
+    &["plot", "bode", "--model", "benchmark", "--omega-range", "0.1:10:3"],
     &["bench", "--quick"],
     &["sweep", "--model", "benchmark", "--vary", "c=0:0.1:3"],
     &["accel", "--model", "benchmark", "--basu-mandal"],
@@ -110,8 +111,9 @@ const BASES: &[&[&str]] = &[
 
 /// Options not varied: `report --out` writes a whole report for every value that names a
 /// directory (ten seconds each); its edges are the tests of `report_out.rs`. `parameters --out`
-/// is a file name, not a number: `--out=-inf` writes the file `-inf` and says so, which is right.
-const SKIPPED: &[(&str, &str)] = &[("report", "out"), ("parameters", "out")];
+/// is a file name, not a number: `--out=-inf` writes the file `-inf` and says so, which is right;
+/// so is `plot --out`.
+const SKIPPED: &[(&str, &str)] = &[("report", "out"), ("parameters", "out"), ("plot", "out")];
 
 /// The state of `accel`'s standard input.
 const STATE: &str = r#"{"q": [0, 0, 0, 0, 1.5, 2.8, 0, 0, 0], "qd": [0, 0, 0, 0, 1, 0, 1, 1, 0]}"#;

@@ -39,12 +39,20 @@ fn report_at(dir: &Path) -> Option<String> {
     if !r.exists() {
         return None;
     }
-    for file in [".carvallo-report", "report.md", "report.html", "eigenvalues.svg"] {
-        assert!(r.join(file).is_file(), "{file} missing from {r:?}");
-    }
     let md = std::fs::read_to_string(r.join("report.md")).unwrap();
     let model = ["a.toml", "b.toml"].into_iter().find(|m| md.contains(&format!("`{m}`")));
-    Some(model.expect("a report of a.toml or b.toml").to_string())
+    let model = model.expect("a report of a.toml or b.toml");
+    // The figures are named after the bicycle: a_eigenvalues.svg for a.toml.
+    let stem = &model[..1];
+    for file in [
+        ".carvallo-report".to_string(),
+        "report.html".to_string(),
+        format!("{stem}_eigenvalues.svg"),
+        format!("{stem}_geometry.svg"),
+    ] {
+        assert!(r.join(&file).is_file(), "{file} missing from {r:?}");
+    }
+    Some(model.to_string())
 }
 
 /// The names in `dir` other than the two parameter files.

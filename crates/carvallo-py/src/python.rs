@@ -148,7 +148,23 @@ fn add_rider<'py>(
     strict: bool,
 ) -> PyResult<(Bound<'py, PyDict>, Bound<'py, PyDict>)> {
     let u = uncertain_of(params, sigma, strict, false)?;
-    let (rider, what) = if let Ok(path) = rider.extract::<std::path::PathBuf>() {
+    let (rider, what) = rider_of(rider)?;
+    let loaded = carvallo::parameter_text::add_rider(&u, &rider)
+        .map_err(|e| err(format!("invalid {what}: {e}")))?;
+    if strict {
+        if let Some(w) = loaded.warnings.first() {
+            return Err(err(format!("invalid params with the {what}: {w}")));
+        }
+    }
+    warn_all(py, &format!("params with the {what}"), &loaded.warnings)?;
+    let u = loaded.params;
+    Ok((dict_of(py, u.params.values())?, dict_of(py, &u.sigma)?))
+}
+
+/// A rider: the path of a BicycleParameters rider file or a dict of its eight values; with the
+/// words naming it in errors.
+fn rider_of(rider: &Bound<'_, PyAny>) -> PyResult<(Rider, String)> {
+    Ok(if let Ok(path) = rider.extract::<std::path::PathBuf>() {
         let path = path.display().to_string();
         let text = read_text(&path, "rider")?;
         let r = Rider::from_text(&text)
@@ -181,17 +197,52 @@ fn add_rider<'py>(
             }
         }
         (Rider { values, sigma: [0.0; 8] }, "rider".to_string())
+    })
+}
+
+/// The side view of the bicycle `params` for a geometry drawing, with the rider `rider` (a
+/// rider file or dict, as `add_rider` takes) drawn apart: the points the command line's
+/// `carvallo plot geometry` draws (`carvallo::whipple::drawing::SideView`), each `[x, h]` in
+/// metres (x forward from the rear contact, h the height): `rear_contact`, `rear_hub`,
+/// `front_contact`, `front_hub`, the radii `rear_radius` and `front_radius`, the segments
+/// `steer_axis`, `trail` and `fork` (2 x 2), the schematic `frame` (3 x 2: rear hub, foot of the
+/// front hub on the steer axis, top of the axis), `mass_centres` (`{name: [x, h]}`: rear wheel,
+/// rear frame, front frame, front wheel, rider, whole bicycle) and `masses` (`{name: kg}`).
+#[pyfunction]
+#[pyo3(signature = (params, rider = None, strict = false))]
+fn geometry<'py>(
+    py: Python<'py>,
+    params: &Bound<'py, PyAny>,
+    rider: Option<&Bound<'py, PyAny>>,
+    strict: bool,
+) -> PyResult<Bound<'py, PyDict>> {
+    let p = params_of(params, strict)?;
+    let rider = rider.filter(|r| !r.is_none()).map(rider_of).transpose()?.map(|(r, _)| r);
+    let v = carvallo::whipple::drawing::SideView::new(&p, rider.as_ref());
+    let d = PyDict::new(py);
+    let point = |x: [f64; 2]| PyArray1::from_vec(py, x.to_vec());
+    let rows = |r: &[[f64; 2]]| {
+        let rows: Vec<Vec<f64>> = r.iter().map(|x| x.to_vec()).collect();
+        PyArray2::from_vec2(py, &rows).map_err(|e| err(e.to_string()))
     };
-    let loaded = carvallo::parameter_text::add_rider(&u, &rider)
-        .map_err(|e| err(format!("invalid {what}: {e}")))?;
-    if strict {
-        if let Some(w) = loaded.warnings.first() {
-            return Err(err(format!("invalid params with the {what}: {w}")));
-        }
+    d.set_item("rear_contact", point(v.rear_contact))?;
+    d.set_item("rear_hub", point(v.rear_hub))?;
+    d.set_item("rear_radius", v.rear_radius)?;
+    d.set_item("front_contact", point(v.front_contact))?;
+    d.set_item("front_hub", point(v.front_hub))?;
+    d.set_item("front_radius", v.front_radius)?;
+    d.set_item("steer_axis", rows(&v.steer_axis)?)?;
+    d.set_item("trail", rows(&v.trail)?)?;
+    d.set_item("fork", rows(&v.fork)?)?;
+    d.set_item("frame", rows(&v.frame)?)?;
+    let (centres, masses) = (PyDict::new(py), PyDict::new(py));
+    for m in &v.mass_centres {
+        centres.set_item(m.name, point(m.at))?;
+        masses.set_item(m.name, m.mass)?;
     }
-    warn_all(py, &format!("params with the {what}"), &loaded.warnings)?;
-    let u = loaded.params;
-    Ok((dict_of(py, u.params.values())?, dict_of(py, &u.sigma)?))
+    d.set_item("mass_centres", centres)?;
+    d.set_item("masses", masses)?;
+    Ok(d)
 }
 
 /// The benchmark parameters computed from BicycleParameters' raw measurements (the file
@@ -1416,6 +1467,7 @@ fn carvallo_module(m: &Bound<'_, PyModule>) -> PyResult<()> {
     m.add_function(wrap_pyfunction!(parse_parameters, m)?)?;
     m.add_function(wrap_pyfunction!(parameters_from_raw, m)?)?;
     m.add_function(wrap_pyfunction!(add_rider, m)?)?;
+    m.add_function(wrap_pyfunction!(geometry, m)?)?;
     m.add_function(wrap_pyfunction!(matrices, m)?)?;
     m.add_function(wrap_pyfunction!(state_matrix, m)?)?;
     m.add_function(wrap_pyfunction!(state_space, m)?)?;
@@ -1436,5 +1488,21 @@ fn carvallo_module(m: &Bound<'_, PyModule>) -> PyResult<()> {
     m.add_function(wrap_pyfunction!(monte_carlo, m)?)?;
     m.add_function(wrap_pyfunction!(eigenvalue_bands, m)?)?;
     crate::rolling::register(m)?;
+    register_plot(m)?;
+    Ok(())
+}
+
+/// The figures of `plot.py` (matplotlib, imported when a figure is drawn): the submodule
+/// `carvallo.plot` (importable as such) and its `plot_geometry`, `plot_eigenvalues` and
+/// `plot_bode` at the top level too.
+fn register_plot(m: &Bound<'_, PyModule>) -> PyResult<()> {
+    let py = m.py();
+    let code = std::ffi::CString::new(include_str!("plot.py")).map_err(|e| err(e.to_string()))?;
+    let plot = PyModule::from_code(py, &code, c"carvallo/plot.py", c"carvallo.plot")?;
+    m.add_submodule(&plot)?;
+    py.import("sys")?.getattr("modules")?.set_item("carvallo.plot", &plot)?;
+    for name in ["plot_geometry", "plot_eigenvalues", "plot_bode"] {
+        m.add(name, plot.getattr(name)?)?;
+    }
     Ok(())
 }

@@ -49,6 +49,8 @@ SEED = 39
 CHILD = textwrap.dedent(
     r'''
     import json, math, sys, warnings
+    import matplotlib
+    matplotlib.use("Agg")
     import numpy as np
     import carvallo
 
@@ -67,6 +69,11 @@ CHILD = textwrap.dedent(
         "state_matrix": dict(params=B, speed=5.0),
         "state_space": dict(params=B, speeds=[1.0, 5.0]),
         "modes": dict(params=B, speeds=[5.0]),
+        "geometry": dict(params=B, rider=dict(mB=72.0, xB=0.3, yB=0.0, zB=-1.1, IBxx=7.0,
+                                              IBxz=1.3, IByy=8.0, IBzz=2.5)),
+        "plot_geometry": dict(params=B),
+        "plot_eigenvalues": dict(params=B, speeds=[1.0, 5.0]),
+        "plot_bode": dict(bicycles=B, speeds=[5.0], omegas=[1.0, 10.0]),
         "parameters_from_raw": dict(path=FIXTURE.replace(
             "benchmark-1pct.txt", "bicycleparameters/bicycles/Browser/RawData/BrowserMeasured.txt")),
         "time_response": dict(params=B, speed=5.0, times=[0.0, 0.5, 1.0], kind="step"),

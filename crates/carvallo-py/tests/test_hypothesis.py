@@ -81,8 +81,38 @@ def check(call):
 @SETTINGS
 @given(p=anything, strict=st.booleans())
 def test_functions_of_params(p, strict):
-    for f in (carvallo.design, carvallo.matrices, carvallo.window, carvallo.speed_gradients):
+    for f in (carvallo.design, carvallo.matrices, carvallo.window, carvallo.speed_gradients,
+              carvallo.geometry):
         check(lambda: f(p, strict=strict))
+
+
+@SETTINGS
+@given(w=st.floats(0.5, 2.0), c=st.floats(-0.2, 0.3), lam=st.floats(-1.4, 1.4), r_rear=st.floats(0.0, 0.6),
+       r_front=st.floats(0.0, 0.6))
+def test_geometry_puts_the_contacts_hubs_and_steer_axis_where_the_parameters_say(w, c, lam, r_rear, r_front):
+    """The side view of any bicycle: contacts at 0 and w, hubs at the radii, the steer axis
+    meeting the ground at w + c tilted back by λ, the front hub at the fork offset
+    rF sin λ − c cos λ ahead of it (perpendicular to the axis)."""
+    p = dict(BENCH, w=w, c=c, **{"lambda": lam}, rR=r_rear, rF=r_front)
+    with warnings.catch_warnings():
+        warnings.simplefilter("ignore", carvallo.PhysicsWarning)
+        try:
+            g = carvallo.geometry(p)
+        except carvallo.ParameterError:
+            return  # a bicycle the reader refuses (checked by test_functions_of_params)
+    tol = 1e-12
+    assert np.allclose(g["rear_hub"], [0, r_rear], atol=tol) and np.allclose(g["front_hub"], [w, r_front], atol=tol)
+    assert np.allclose(g["front_contact"], [w, 0], atol=tol)
+    assert np.allclose(g["trail"], [[w, 0], [w + c, 0]], atol=tol)
+    (x0, h0), (x1, h1) = g["steer_axis"]
+    assert abs(x0 - (w + c)) < tol and h0 == 0.0
+    if h1 - h0 > 1e-9:
+        assert abs(math.atan2(x0 - x1, h1 - h0) - lam) < 1e-9
+    hub, foot = g["fork"]
+    axis = np.array([-math.sin(lam), math.cos(lam)])
+    normal = np.array([math.cos(lam), math.sin(lam)])  # forward, perpendicular to the axis
+    assert abs(np.dot(hub - foot, axis)) < 1e-12
+    assert abs(np.dot(hub - foot, normal) - (r_front * math.sin(lam) - c * math.cos(lam))) < 1e-12
 
 
 @SETTINGS

@@ -74,7 +74,7 @@ fn positive(v: &str) -> Result<f64, String> {
 
 /// `FROM:TO:N` with `0 < FROM <= TO` finite and `1 <= N <= 10^6`: the frequencies of
 /// [`log_space`].
-fn omega_range(v: &str) -> Result<Frequencies, String> {
+pub(crate) fn omega_range(v: &str) -> Result<Frequencies, String> {
     let parts: Vec<&str> = v.split(':').collect();
     let [from, to, n] = parts[..] else {
         return Err("expected FROM:TO:N".into());

@@ -8,6 +8,7 @@ pub mod bode;
 pub mod eig;
 pub mod kinematics;
 pub mod parameters;
+pub mod plot;
 pub mod report;
 pub mod response;
 pub mod rest;

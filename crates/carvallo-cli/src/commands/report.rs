@@ -9,9 +9,12 @@
 //! `note`;
 //! `report --out DIR` writes the report directory ([`crate::report_dir`]) and prints the paths
 //! it wrote; `report --out DIR --model FILE [--rider FILE] [--strict]` writes the report of that
-//! bicycle alone (its window, eigenvalues against speed and uncertainty, naming the file and
-//! rider read; [`report_dir::write_bicycle_report`]) without the memoir's chapters, which
-//! `--memoir` adds back (the whole report, its bicycle figures drawn for FILE).
+//! bicycle alone (its window, geometry, eigenvalues against speed and uncertainty, naming the
+//! file and rider read; [`report_dir::write_bicycle_report`]) without the memoir's chapters,
+//! which `--memoir` adds back (the whole report, its bicycle figures drawn for FILE). The
+//! bicycle figures are titled and their files named after the bicycle
+//! ([`crate::args::bicycle_name`]: `BrowserBenchmark.txt` with `JasonBrowserBenchmark.txt` is
+//! `Browser + Jason`, its figures `browser_jason_*.svg`).
 //!
 //! A bad command line is a usage error of clap; an unusable output directory or model file is a
 //! [`BadInput`](crate::report_dir::BadInput), found before anything is written; both exit with
@@ -95,14 +98,17 @@ pub fn run(args: &Args) -> anyhow::Result<String> {
                 ))
                 .into());
             }
+            let name = crate::args::bicycle_name(&model, rider.as_deref());
             let files = if memoir || (model == "benchmark" && rider.is_none()) {
-                report_dir::write_report(path, &params, &model)?
+                report_dir::write_report(path, &params, &model, &name)?
             } else {
+                let view = crate::args::side_view(&model, &data).map_err(report_dir::BadInput)?;
                 report_dir::write_bicycle_report(
                     path,
                     &params,
                     &model,
                     rider.as_deref(),
+                    &view,
                     &warnings,
                 )?
             };

@@ -23,6 +23,8 @@ pub(super) enum Stroke {
     Dotted,
     /// Unconnected dots.
     Points,
+    /// Unconnected large dots (a few points that matter, as mass centres).
+    Dots,
 }
 
 /// One curve of a chart; an empty label keeps it out of the legend.
@@ -44,11 +46,13 @@ impl Curve {
     }
 }
 
-/// A labelled point; the label is drawn `offset` pixels from it.
+/// A labelled point; the label is drawn `offset` pixels from it, with a dot at the point or
+/// without (a curve's name beside it).
 pub(super) struct Mark {
     pub(super) at: (f64, f64),
     pub(super) text: String,
     pub(super) offset: (i32, i32),
+    pub(super) dot: bool,
 }
 
 /// A filled band: polygon, colour, legend label.
@@ -70,6 +74,11 @@ pub(super) struct Chart {
     pub(super) bands: Vec<Band>,
     /// Polar grid: maximal radius and ray step in degrees (`None`: Cartesian mesh).
     pub(super) polar: Option<(f64, f64)>,
+    /// The x values are $\log_{10}$ of the quantity: ticks at the decades labelled as powers
+    /// of ten (`10⁻¹`, `10⁰`, `10¹`), light lines at 2…9 times each.
+    pub(super) log_x: bool,
+    /// Equal scales on both axes (a drawing): the height follows from the ranges.
+    pub(super) equal_scale: bool,
     pub(super) legend: SeriesLabelPosition,
 }
 
@@ -118,6 +127,8 @@ impl Chart {
             marks: Vec::new(),
             bands: Vec::new(),
             polar: None,
+            log_x: false,
+            equal_scale: false,
             legend: SeriesLabelPosition::UpperRight,
         }
     }
@@ -155,11 +166,16 @@ impl Chart {
     }
 
     pub(super) fn mark(&mut self, at: (f64, f64), text: impl Into<String>) {
-        self.marks.push(Mark { at, text: text.into(), offset: (6, -18) });
+        self.marks.push(Mark { at, text: text.into(), offset: (6, -18), dot: true });
     }
 
     pub(super) fn mark_at(&mut self, at: (f64, f64), text: impl Into<String>, offset: (i32, i32)) {
-        self.marks.push(Mark { at, text: text.into(), offset });
+        self.marks.push(Mark { at, text: text.into(), offset, dot: true });
+    }
+
+    /// A text `offset` pixels from the point `at`, without a dot (a curve's name).
+    pub(super) fn label_at(&mut self, at: (f64, f64), text: impl Into<String>, offset: (i32, i32)) {
+        self.marks.push(Mark { at, text: text.into(), offset, dot: false });
     }
 
     /// Adds `points` as one curve per run without a gap: consecutive points more than
@@ -191,9 +207,16 @@ impl Chart {
         }
     }
 
-    /// Pixel size: 900 wide, height from the axis ranges for a polar chart (equal scales).
+    /// Pixel size: 900 wide, height from the axis ranges for a polar chart or a drawing (equal
+    /// scales).
     pub(super) fn size(&self) -> (u32, u32) {
         match self.polar {
+            _ if self.equal_scale => {
+                let ratio = (self.y.end - self.y.start) / (self.x.end - self.x.start);
+                // The plot area is 792 pixels wide and the height less 115.
+                let h = (792.0 * ratio + 115.0).clamp(300.0, 1100.0);
+                (900, h as u32)
+            }
             Some(_) => {
                 let ratio = (self.y.end - self.y.start) / (self.x.end - self.x.start);
                 let h = (820.0 * ratio + 140.0).clamp(500.0, 1100.0);
@@ -215,6 +238,22 @@ impl Chart {
         Ok(svg)
     }
 
+    /// Draws several charts stacked in one SVG document, each `height` pixels high.
+    pub(super) fn render_stacked(charts: &[Chart], height: u32) -> Result<String> {
+        let mut svg = String::new();
+        {
+            let n = charts.len().max(1);
+            let root =
+                SVGBackend::with_string(&mut svg, (900, height * n as u32)).into_drawing_area();
+            root.fill(&WHITE).map_err(|e| anyhow!("{e}"))?;
+            for (chart, area) in charts.iter().zip(root.split_evenly((n, 1))) {
+                chart.draw_on(&area).map_err(|e| anyhow!("cannot draw `{}`: {e}", chart.title))?;
+            }
+            root.present().map_err(|e| anyhow!("{e}"))?;
+        }
+        Ok(svg)
+    }
+
     pub(super) fn draw_on(&self, root: &DrawingArea<SVGBackend<'_>, Shift>) -> DrawResult {
         let mut chart = ChartBuilder::on(root)
             .caption(&self.title, (FONT, 21))
@@ -222,16 +261,39 @@ impl Chart {
             .x_label_area_size(52)
             .y_label_area_size(70)
             .build_cartesian_2d(self.x.clone(), self.y.clone())?;
+        let decades = |x: &f64| decade_label(*x);
+        // A drawing's ticks without `-0.0` for a zero that rounding put below it.
+        let metres = |x: &f64| format!("{:.1}", if x.abs() < 1e-9 { 0.0 } else { *x });
         let mut mesh = chart.configure_mesh();
         mesh.x_desc(self.x_desc.as_str())
             .y_desc(self.y_desc.as_str())
             .axis_desc_style((FONT, 17))
             .label_style((FONT, 14))
             .light_line_style(WHITE.mix(0.0));
+        if self.equal_scale {
+            mesh.x_label_formatter(&metres).y_label_formatter(&metres);
+        }
+        if self.log_x {
+            // One tick per decade (the range runs from decade to decade).
+            let n = (self.x.end - self.x.start).round().max(1.0) as usize + 1;
+            mesh.x_labels(n).x_label_formatter(&decades);
+        }
         if self.polar.is_some() {
             mesh.disable_mesh();
         }
         mesh.draw()?;
+        if self.log_x {
+            let light = GREY.mix(0.25).stroke_width(1);
+            let (y0, y1) = (self.y.start, self.y.end);
+            for d in self.x.start.floor() as i32..self.x.end.ceil() as i32 {
+                for k in 2..=9 {
+                    let x = f64::from(d) + f64::from(k).log10();
+                    if self.x.contains(&x) {
+                        chart.draw_series(LineSeries::new(vec![(x, y0), (x, y1)], light))?;
+                    }
+                }
+            }
+        }
         if let Some((r_max, step)) = self.polar {
             self.draw_polar_grid(&mut chart, r_max, step)?;
         }
@@ -265,6 +327,8 @@ impl Chart {
                 }
                 Stroke::Points => chart
                     .draw_series(c.points.iter().map(|p| Circle::new(*p, 2, c.color.filled())))?,
+                Stroke::Dots => chart
+                    .draw_series(c.points.iter().map(|p| Circle::new(*p, 4, c.color.filled())))?,
             };
             if !c.label.is_empty() {
                 let (color, stroke) = (c.color, c.stroke);
@@ -272,7 +336,7 @@ impl Chart {
                     let style = color.stroke_width(2);
                     // One element type for every stroke: a dot and up to three dashes.
                     let (dot, dashes): (bool, &[(i32, i32)]) = match stroke {
-                        Stroke::Points => (true, &[]),
+                        Stroke::Points | Stroke::Dots => (true, &[]),
                         Stroke::Solid => (false, &[(0, 20)]),
                         Stroke::Dashed => (false, &[(0, 8), (12, 20)]),
                         Stroke::Dotted => (false, &[(0, 3), (8, 11), (16, 19)]),
@@ -291,10 +355,17 @@ impl Chart {
             }
         }
         chart.draw_series(self.marks.iter().map(|m| {
+            let dot = if m.dot { BLACK.filled() } else { BLACK.mix(0.0).filled() };
             EmptyElement::at(m.at)
-                + Circle::new((0, 0), 4, BLACK.filled())
+                + Circle::new((0, 0), 4, dot)
                 + Text::new(m.text.clone(), m.offset, (FONT, 15))
         }))?;
+        let labelled = self.curves.iter().any(|c| !c.label.is_empty())
+            || (!self.shade.is_empty() && !self.shade_label.is_empty())
+            || self.bands.iter().any(|b| !b.2.is_empty());
+        if !labelled {
+            return Ok(());
+        }
         chart
             .configure_series_labels()
             .position(self.legend.clone())
@@ -346,6 +417,57 @@ impl Chart {
     }
 }
 
+/// The label of the tick at $x = \log_{10}$ of a quantity: `10ᵏ` with the exponent in
+/// superscript digits at a whole decade $k$, empty between decades.
+pub(super) fn decade_label(x: f64) -> String {
+    let k = x.round();
+    if (x - k).abs() > 1e-9 {
+        return String::new();
+    }
+    const SUPERSCRIPT: [char; 10] = ['⁰', '¹', '²', '³', '⁴', '⁵', '⁶', '⁷', '⁸', '⁹'];
+    let mut s = String::from("10");
+    if k < 0.0 {
+        s.push('⁻');
+    }
+    for digit in format!("{}", k.abs() as i64).chars() {
+        s.push(SUPERSCRIPT[digit.to_digit(10).unwrap_or(0) as usize]);
+    }
+    s
+}
+
+/// The `<text>` elements of an SVG document, their content trimmed and unescaped (`&amp;`,
+/// `&lt;`, `&gt;`, `&quot;`, `&#39;`), in document order.
+#[cfg(test)]
+pub(crate) fn svg_texts(svg: &str) -> Vec<String> {
+    let mut out = Vec::new();
+    let mut rest = svg;
+    while let Some(k) = rest.find("<text") {
+        rest = &rest[k..];
+        let Some(open) = rest.find('>') else { break };
+        let Some(close) = rest.find("</text>") else { break };
+        let inner = rest[open + 1..close].trim();
+        out.push(
+            inner
+                .replace("&lt;", "<")
+                .replace("&gt;", ">")
+                .replace("&quot;", "\"")
+                .replace("&#39;", "'")
+                .replace("&amp;", "&"),
+        );
+        rest = &rest[close + 7..];
+    }
+    out
+}
+
+/// A stable speed range for a legend: `a < v < b m/s`, or `v > a m/s` without an upper end.
+pub(super) fn speed_range(a: f64, b: f64) -> String {
+    if b.is_finite() {
+        format!("{a:.3} < v < {b:.3} m/s")
+    } else {
+        format!("v > {a:.3} m/s")
+    }
+}
+
 pub(super) fn nice_step(r_max: f64) -> f64 {
     let raw = r_max / 6.0;
     let p = 10f64.powf(raw.log10().floor());
@@ -381,5 +503,21 @@ mod tests {
         assert_eq!(c.curves.len(), 3);
         assert_eq!(svg.matches("pieces b").count(), 1);
         assert!(svg.matches("<text").count() >= 6 && svg.contains("<polyline"));
+    }
+
+    #[test]
+    fn a_log_axis_is_labelled_by_decades() {
+        assert_eq!(
+            [-2.0, -1.0, 0.0, 1.0, 12.0, 0.5].map(decade_label),
+            ["10⁻²", "10⁻¹", "10⁰", "10¹", "10¹²", ""]
+        );
+        let mut c = Chart::new("t", "ω (rad/s)", "y", -1.0..2.0, 0.0..1.0);
+        c.log_x = true;
+        c.add(Curve::new("a", vec![(-1.0, 0.0), (2.0, 1.0)], color(0), Stroke::Solid));
+        let texts = svg_texts(&c.render().unwrap());
+        for label in ["10⁻¹", "10⁰", "10¹", "10²"] {
+            assert!(texts.iter().any(|t| t == label), "no tick `{label}` in {texts:?}");
+        }
+        assert!(!texts.iter().any(|t| t.contains("log10")), "{texts:?}");
     }
 }

@@ -3,10 +3,14 @@
 //! [`FIGURES`] is the catalogue, in the order of the report: each row names the file, the
 //! title (which cites the memoir's figure and n° where it redraws one), the caption and the
 //! function that draws it. The functions live in [`memoir`] (the memoir's figures 3, 4, 4 bis,
-//! 7, 9, 11 and 13) and [`modern`] (eigenvalues, Bode diagrams, stable windows, ground tracks), and draw with
-//! the engine in [`chart`]. Figures the workspace cannot draw honestly yet are listed in
+//! 7, 9, 11 and 13), [`modern`] (eigenvalues, Bode diagrams, stable windows, ground tracks) and
+//! [`bicycle`] (the figures of a named bicycle: its geometry, its eigenvalues labelled by mode,
+//! Bode diagrams comparing bicycles), and draw with the engine in [`chart`]. The bicycle figures
+//! (files `benchmark_*.svg`) are named after the bicycle drawn: [`Figure::file_for`] and
+//! [`Figure::title_for`]. Figures the workspace cannot draw honestly yet are listed in
 //! [`MISSING`] with the reason.
 
+mod bicycle;
 mod chart;
 mod memoir;
 mod modern;
@@ -14,6 +18,9 @@ mod modern;
 use anyhow::Result;
 use carvallo::whipple::WhippleParams;
 
+pub use bicycle::{fig_bode, fig_geometry, fig_modes};
+#[cfg(test)]
+pub(crate) use chart::svg_texts;
 pub use modern::{fig_bicycle_eigenvalues, fig_eigenvalue_bands, BAND_SEED};
 
 /// One figure of the report.
@@ -24,8 +31,32 @@ pub struct Figure {
     pub title: &'static str,
     /// One or two sentences saying what the figure shows and where it comes from.
     pub caption: &'static str,
-    /// Computes the data and draws the figure for a bicycle (used by the modern figures only).
-    pub draw: fn(&WhippleParams) -> Result<String>,
+    /// Computes the data and draws the figure for a bicycle and its name (used by the modern
+    /// figures only).
+    pub draw: fn(&WhippleParams, &str) -> Result<String>,
+}
+
+/// The prefix of the files of the figures of the report's bicycle.
+const BICYCLE_PREFIX: &str = "benchmark_";
+
+impl Figure {
+    /// Its file for the bicycle whose file stem is `stem` ([`crate::args::file_stem_of`]):
+    /// `benchmark_eigenvalues.svg` becomes `browser_jason_eigenvalues.svg`; the others keep
+    /// theirs.
+    pub fn file_for(&self, stem: &str) -> String {
+        match self.file.strip_prefix(BICYCLE_PREFIX) {
+            Some(rest) => format!("{stem}_{rest}"),
+            None => self.file.to_string(),
+        }
+    }
+
+    /// Its title for the bicycle `name`: `Benchmark bicycle: …` becomes `name: …`.
+    pub fn title_for(&self, name: &str) -> String {
+        match self.title.strip_prefix("Benchmark bicycle") {
+            Some(rest) => format!("{name}{rest}"),
+            None => self.title.to_string(),
+        }
+    }
 }
 
 /// A figure of the memoir or of the issue that the workspace does not draw yet, and why.
@@ -38,15 +69,16 @@ pub struct Missing {
 
 /// Every figure, in the order of the report. Adding a figure: write its function in
 /// [`memoir`] or [`modern`], add a row.
-pub const FIGURES: [Figure; 16] = [
-        Figure { file: "fig03_hoop_equilibrium.svg", title: "Memoir fig. 3: hoop, reality and stability of the steady states (n° 13–14)", caption: "Plane x = cos θ, y = s² (rates in √(g/R)): the curve (ℰ) where the two roots n of (E) merge, the curve (S1) where those of S are real, and the stability limit (S) through its vertical tangent; points A, B, D, F of n° 14.", draw: memoir::fig_3 },
-        Figure { file: "fig04_hoop_skid.svg", title: "Memoir fig. 4: hoop, skid tendency (n° 15–16)", caption: "Polar diagram (angle θ from the vertical, radius s in √(g/R)): the curves n = const of (E′), the curves D = ±1/2 of (D″), (ℰ) and (S).", draw: memoir::fig_4 },
-        Figure { file: "fig04bis_hoop_walking.svg", title: "Memoir fig. 4 bis: hoop, walking and pivoting (n° 17)", caption: "Polar diagram: (ℰ), (S), the separation (N) between walking and pivoting, and the curves n2 = −0.1, −0.3, −0.5.", draw: memoir::fig_4_bis },
-        Figure { file: "fig07_unicycle_diagram.svg", title: "Memoir fig. 7: unicycle steady states, h/R = 2.5 (n° 32, 41)", caption: "Polar diagram (angle θ from the vertical, radius s in √(g/R)): (ℰ), the curves n = const of (E), the separation (N) with its asymptote, the branch θ < 16° of the stability limit (S) of n° 41, and the practical limits s = 1 and 20 km/h.", draw: memoir::fig_7 },
-        Figure { file: "fig09_unicycle_first_member.svg", title: "Memoir fig. 9: unicycle, reality condition of S(n²) (n° 41)", caption: "The first member 1/cos θ − (h/R) sin²θ cos θ − √(h/R) sin 2θ from the generated trinomial, against θ, with the memoir's table (n° 41); the derived zeros (marked) are 16.32° and 62.82°, which the memoir reads off its graph as 16°,0 and 62°,7.", draw: memoir::fig_9 },
-        Figure { file: "fig11_bicycle_sigma1_mu1.svg", title: "Memoir fig. 11: bicycle geometry, frame vertical (n° 52)", caption: "The frame's rotation σ1 = σ − σ0 and the front contact's μ1 = μ − μ0 (tan μ0 = tan σ0 cos γ) against the steer γ, in minutes of arc, for the old bicycle of n° 52 (R = 0.38 m, l = 1.10 m, c = 0.08 m, σ0 = 25°): the exact solution of the contact equations (1), (2) by Newton's method (lines) and the memoir's table (points).", draw: memoir::fig_11 },
-        Figure { file: "fig13_bicycle_contact_locus.svg", title: "Memoir fig. 13: locus of the front wheel's contact with the ground (n° 54)", caption: "The front contact M relative to its position M0 at γ = 0, frame vertical, old bicycle of n° 52, for γ from 0° to 90°: the exact solution (line, with γ marked every 20°) and the memoir's table (points); y is counted as in the memoir's table, whose sign is opposite to its printed formula y = −(R sin μ − c) sin γ (see the report, n° 54).", draw: memoir::fig_13 },
-        Figure { file: "benchmark_eigenvalues.svg", title: "Benchmark bicycle: eigenvalues against speed", caption: "Real and imaginary parts of the four eigenvalues of the linearised Carvallo–Whipple bicycle (Meijaard et al. 2007 parameters unless --model is given) against the forward speed; the stable range is shaded.", draw: modern::fig_eigenvalues },
+pub const FIGURES: [Figure; 17] = [
+        Figure { file: "fig03_hoop_equilibrium.svg", title: "Memoir fig. 3: hoop, reality and stability of the steady states (n° 13–14)", caption: "Plane x = cos θ, y = s² (rates in √(g/R)): the curve (ℰ) where the two roots n of (E) merge, the curve (S1) where those of S are real, and the stability limit (S) through its vertical tangent; points A, B, D, F of n° 14.", draw: |p, _| memoir::fig_3(p) },
+        Figure { file: "fig04_hoop_skid.svg", title: "Memoir fig. 4: hoop, skid tendency (n° 15–16)", caption: "Polar diagram (angle θ from the vertical, radius s in √(g/R)): the curves n = const of (E′), the curves D = ±1/2 of (D″), (ℰ) and (S).", draw: |p, _| memoir::fig_4(p) },
+        Figure { file: "fig04bis_hoop_walking.svg", title: "Memoir fig. 4 bis: hoop, walking and pivoting (n° 17)", caption: "Polar diagram: (ℰ), (S), the separation (N) between walking and pivoting, and the curves n2 = −0.1, −0.3, −0.5.", draw: |p, _| memoir::fig_4_bis(p) },
+        Figure { file: "fig07_unicycle_diagram.svg", title: "Memoir fig. 7: unicycle steady states, h/R = 2.5 (n° 32, 41)", caption: "Polar diagram (angle θ from the vertical, radius s in √(g/R)): (ℰ), the curves n = const of (E), the separation (N) with its asymptote, the branch θ < 16° of the stability limit (S) of n° 41, and the practical limits s = 1 and 20 km/h.", draw: |p, _| memoir::fig_7(p) },
+        Figure { file: "fig09_unicycle_first_member.svg", title: "Memoir fig. 9: unicycle, reality condition of S(n²) (n° 41)", caption: "The first member 1/cos θ − (h/R) sin²θ cos θ − √(h/R) sin 2θ from the generated trinomial, against θ, with the memoir's table (n° 41); the derived zeros (marked) are 16.32° and 62.82°, which the memoir reads off its graph as 16°,0 and 62°,7.", draw: |p, _| memoir::fig_9(p) },
+        Figure { file: "fig11_bicycle_sigma1_mu1.svg", title: "Memoir fig. 11: bicycle geometry, frame vertical (n° 52)", caption: "The frame's rotation σ1 = σ − σ0 and the front contact's μ1 = μ − μ0 (tan μ0 = tan σ0 cos γ) against the steer γ, in minutes of arc, for the old bicycle of n° 52 (R = 0.38 m, l = 1.10 m, c = 0.08 m, σ0 = 25°): the exact solution of the contact equations (1), (2) by Newton's method (lines) and the memoir's table (points).", draw: |p, _| memoir::fig_11(p) },
+        Figure { file: "fig13_bicycle_contact_locus.svg", title: "Memoir fig. 13: locus of the front wheel's contact with the ground (n° 54)", caption: "The front contact M relative to its position M0 at γ = 0, frame vertical, old bicycle of n° 52, for γ from 0° to 90°: the exact solution (line, with γ marked every 20°) and the memoir's table (points); y is counted as in the memoir's table, whose sign is opposite to its printed formula y = −(R sin μ − c) sin γ (see the report, n° 54).", draw: |p, _| memoir::fig_13(p) },
+        Figure { file: "benchmark_geometry.svg", title: "Benchmark bicycle: geometry", caption: "Side view of the bicycle (benchmark parameters unless --model is given) from its parameters: the wheels, the steer axis (dashed) tilted back by λ and meeting the ground the trail c ahead of the front contact, a schematic frame and fork, and the mass centres of the rear wheel, rear frame (with the rider when one is added), front frame, front wheel and of the whole (`carvallo plot geometry`).", draw: bicycle::fig_report_geometry },
+        Figure { file: "benchmark_eigenvalues.svg", title: "Benchmark bicycle: eigenvalues against speed", caption: "Real parts of the four eigenvalues of the linearised Carvallo–Whipple bicycle (Meijaard et al. 2007 parameters unless --model is given) and the weave's frequency against the forward speed, each labelled by its mode (weave, capsize, caster) as `carvallo modes` labels it, by continuation in speed; the stable range is shaded.", draw: modern::fig_eigenvalues },
         Figure { file: "carvallo_eigenvalues.svg", title: "Carvallo's bicycle without hands (n° 117–122): eigenvalues against speed", caption: "Time eigenvalues sλ (λ the roots of the quartic of n° 119, T = st) of Carvallo's bicycle, exactly linearised through the general model at the constants of n° 117, against v = Rs (R = 0.38 m), the stable range shaded; marked on the axis: the memoir's limits s² = 67.3 and 83.6 (v = 0.38√s²) and the derived ones.", draw: modern::fig_carvallo_eigenvalues },
         Figure { file: "benchmark_bode_magnitude.svg", title: "Benchmark bicycle: steer torque to lean, magnitude", caption: "Magnitude of the transfer function from the steer torque Tδ to the lean φ of the linearised bicycle (benchmark parameters unless --model is given) at 2, 4, 5 and 8 m/s, against the angular frequency: numerator (the adjugate of M s² + v C1 s + g K0 + v² K2) and characteristic polynomial both derived symbolically (`carvallo bode`). At 4 m/s, below the weave speed (4.29 m/s), the weave pair 0.41 ± 3.08i lies just right of the imaginary axis: the sharp peak near 3 rad/s; at 5 m/s (stable, −0.78 ± 4.46i) the peak is low and broad.", draw: modern::fig_bode_magnitude },
         Figure { file: "benchmark_bode_phase.svg", title: "Benchmark bicycle: steer torque to lean, phase", caption: "Phase of the same transfer function on the branch continuous in the frequency that lies in (−180°, 180°] as ω → 0⁺ (each zero's and pole's argument on its own branch: a function of ω, not of the grid): through the unstable weave at 4 m/s it rises by about 180° (a right-half-plane pole), through the stable weave at 5 and 8 m/s it falls.", draw: modern::fig_bode_phase },
@@ -73,7 +105,7 @@ mod tests {
         files.dedup();
         assert_eq!(files.len(), figs.len(), "two figures share a file name");
         assert!(files.iter().all(|f| f.ends_with(".svg") && !f.contains('/')));
-        assert_eq!((figs.len(), MISSING.len()), (16, 0));
+        assert_eq!((figs.len(), MISSING.len()), (17, 0));
         for drawn in [
             "carvallo_eigenvalues.svg",
             "benchmark_balance_assist.svg",
@@ -83,5 +115,18 @@ mod tests {
         ] {
             assert!(files.contains(&drawn), "{drawn} not drawn");
         }
+    }
+
+    #[test]
+    fn the_bicycle_figures_take_the_bicycles_name() {
+        let eig = FIGURES.iter().find(|f| f.file == "benchmark_eigenvalues.svg").unwrap();
+        assert_eq!(eig.file_for("browser_jason"), "browser_jason_eigenvalues.svg");
+        assert_eq!(eig.title_for("Browser + Jason"), "Browser + Jason: eigenvalues against speed");
+        assert_eq!(eig.title_for("Benchmark bicycle"), eig.title);
+        let fig3 = &FIGURES[0];
+        assert_eq!(
+            (fig3.file_for("x"), fig3.title_for("x")),
+            (fig3.file.into(), fig3.title.into())
+        );
     }
 }

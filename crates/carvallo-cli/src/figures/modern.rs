@@ -21,8 +21,10 @@ use plotters::prelude::*;
 
 use super::chart::{color, trim, Chart, Curve, Stroke, GREY};
 
-pub(super) fn fig_eigenvalues(p: &WhippleParams) -> Result<String> {
-    fig_bicycle_eigenvalues(p, "Benchmark bicycle: eigenvalues of the linearised equations", 10.0)
+/// The report's eigenvalues of its bicycle `name`, labelled by mode
+/// ([`super::bicycle::fig_modes`]).
+pub(super) fn fig_eigenvalues(p: &WhippleParams, name: &str) -> Result<String> {
+    super::bicycle::fig_modes(p, name, 10.0)
 }
 
 /// The eigenvalues of the bicycle `p` against speed up to `v_max` (401 speeds), titled
@@ -55,7 +57,7 @@ fn eigenvalue_chart(
         c.shade.push([(a, -y_max), (b.min(v_max), y_max)]);
     }
     c.shade_label = match stable.first() {
-        Some((a, b)) => format!("stable: {a:.3} < v < {b:.3} m/s"),
+        Some((a, b)) => format!("stable: {}", super::chart::speed_range(*a, *b)),
         None => "no stable speed".to_string(),
     };
     let inside = |y: &f64| (-y_max..=y_max).contains(y);
@@ -77,7 +79,7 @@ fn eigenvalue_chart(
 /// model: the roots λ of the quartic of n° 119 ($T = st$) scaled back to time eigenvalues
 /// $s\lambda$ (1/s), against $v = Rs$, with the memoir's printed limits $s^2 = 67.3$ and
 /// $83.6$ (n° 120–121) and the derived ones marked on the axis.
-pub(super) fn fig_carvallo_eigenvalues(_: &WhippleParams) -> Result<String> {
+pub(super) fn fig_carvallo_eigenvalues(_: &WhippleParams, _: &str) -> Result<String> {
     let k = Constants::MEMOIR;
     let eq = Equations::via_whipple(&k).map_err(|e| anyhow!("{e}"))?;
     let v_max = 8.0;
@@ -150,7 +152,7 @@ fn decimate(points: &[(f64, f64)], n: usize) -> Vec<(f64, f64)> {
 /// side evaluations, log-log: RK4 at steps 0.02 s / 2^k, DOPRI5 and DOP853 at rtol 1e-3 …
 /// 1e-12 (atol 1e-3 rtol), the error the largest over the state (|x − ref| / max(1, |ref|)) and
 /// over the samples every 0.01 s, against DOP853 at rtol 1e-14.
-pub(super) fn fig_work_precision(p: &WhippleParams) -> Result<String> {
+pub(super) fn fig_work_precision(p: &WhippleParams, _: &str) -> Result<String> {
     use carvallo::numerics::integrate::{Grid, Integration, Method};
     let bike = WhippleNonlinear::new(p.clone());
     let start = bike.initial_state(4.6, 0.05).map_err(|e| anyhow!("{e}"))?;
@@ -237,7 +239,7 @@ const TRACK_RUN: (f64, f64, f64, f64) = (4.6, 0.05, 6.0, 0.004);
 /// The rear and front contact tracks of the nonlinear bicycle from upright straight running
 /// at 4.6 m/s with an initial lean of 0.05 rad, and the number of crossings counted from them
 /// (n° 106: the two tracks cross periodically).
-pub(super) fn fig_tracks(p: &WhippleParams) -> Result<String> {
+pub(super) fn fig_tracks(p: &WhippleParams, _: &str) -> Result<String> {
     let (speed, lean0, duration, step) = TRACK_RUN;
     let bike = WhippleNonlinear::new(p.clone());
     let start = bike.initial_state(speed, lean0).map_err(|e| anyhow!("{e}"))?;
@@ -315,7 +317,7 @@ pub fn fig_eigenvalue_bands(u: &UncertainParams, samples: usize) -> Result<Strin
         c.shade.push([(a, -y_max), (bb.min(v_max), y_max)]);
     }
     c.shade_label = match stable.first() {
-        Some((a, bb)) => format!("nominal stable: {a:.3} < v < {bb:.3} m/s"),
+        Some((a, bb)) => format!("nominal stable: {}", super::chart::speed_range(*a, *bb)),
         None => "no stable speed (nominal)".to_string(),
     };
     let clip = |y: f64| y.clamp(-y_max, y_max);
@@ -408,7 +410,7 @@ const ASSIST_TARGET: f64 = 2.0;
 /// (`k_steer_roll_rate = -c`) against $c$: the stable speeds shaded (Hurwitz route on the
 /// generated closed-loop polynomial), the lower edge, and the smallest $c$ that makes
 /// [`ASSIST_TARGET`] stable (bisection on the lower edge).
-pub(super) fn fig_balance_assist(p: &WhippleParams) -> Result<String> {
+pub(super) fn fig_balance_assist(p: &WhippleParams, _: &str) -> Result<String> {
     use carvallo::whipple::feedback::Gains;
     let bike = Whipple::new(p.clone());
     let (c_max, n) = ASSIST_GAINS;
@@ -460,7 +462,8 @@ fn bode_data(p: &WhippleParams) -> Vec<(f64, Vec<FrequencyPoint>)> {
         .collect()
 }
 
-/// A Bode panel: `value` of each point against $\log_{10}\omega$, one curve per speed.
+/// A Bode panel: `value` of each point against ω on a logarithmic axis labelled by decades,
+/// one curve per speed.
 fn bode_chart(
     p: &WhippleParams,
     title: &str,
@@ -475,7 +478,9 @@ fn bode_chart(
         return Err(anyhow!("the frequency response is not finite"));
     }
     let pad = 0.05 * (hi - lo).max(1.0);
-    let mut c = Chart::new(title, "log10 ω (ω in rad/s)", y_desc, -1.0..2.0, lo - pad..hi + pad);
+    let mut c =
+        Chart::new(title, "angular frequency ω (rad/s)", y_desc, -1.0..2.0, lo - pad..hi + pad);
+    c.log_x = true;
     for (k, (v, pts)) in data.iter().enumerate() {
         let xy = pts.iter().map(|q| (q.omega.log10(), value(q))).collect();
         c.add(Curve::new(format!("v = {} m/s", trim(*v)), xy, color(k), Stroke::Solid));
@@ -484,44 +489,44 @@ fn bode_chart(
     c.render()
 }
 
-pub(super) fn fig_bode_magnitude(p: &WhippleParams) -> Result<String> {
+pub(super) fn fig_bode_magnitude(p: &WhippleParams, name: &str) -> Result<String> {
     bode_chart(
         p,
-        "Steer torque to lean: magnitude (Bode diagram)",
+        &format!("{name}: steer torque to lean, magnitude (Bode diagram)"),
         "|φ/Tδ| (dB, rad per N m)",
         |q| q.magnitude_db,
     )
 }
 
-pub(super) fn fig_bode_phase(p: &WhippleParams) -> Result<String> {
+pub(super) fn fig_bode_phase(p: &WhippleParams, name: &str) -> Result<String> {
     bode_chart(
         p,
-        "Steer torque to lean: phase (Bode diagram)",
+        &format!("{name}: steer torque to lean, phase (Bode diagram)"),
         "arg φ/Tδ (degrees, unwrapped)",
         |q| q.phase_deg,
     )
 }
 
-pub(super) fn fig_window_trail(p: &WhippleParams) -> Result<String> {
+pub(super) fn fig_window_trail(p: &WhippleParams, name: &str) -> Result<String> {
     let values: Vec<f64> = (0..=40).map(|k| 0.005 * k as f64).collect();
     window_sweep(
         p,
         "c",
         &values,
         1.0,
-        "Benchmark bicycle: stable speeds against the trail c",
+        &format!("{name}: stable speeds against the trail c"),
         "trail c (m)",
     )
 }
 
-pub(super) fn fig_window_tilt(p: &WhippleParams) -> Result<String> {
+pub(super) fn fig_window_tilt(p: &WhippleParams, name: &str) -> Result<String> {
     let values: Vec<f64> = (0..=80).map(|k| 0.5 * k as f64).collect();
     window_sweep(
         p,
         "lambda",
         &values,
         std::f64::consts::PI / 180.0,
-        "Benchmark bicycle: stable speeds against the steer axis tilt λ",
+        &format!("{name}: stable speeds against the steer axis tilt λ"),
         "steer axis tilt λ (degrees; head angle 90° − λ)",
     )
 }
@@ -552,7 +557,8 @@ mod tests {
 
     #[test]
     fn the_balance_assist_figure_marks_the_gain_for_the_target_speed() {
-        let svg = fig_balance_assist(&WhippleParams::benchmark()).expect("drawn");
+        let svg =
+            fig_balance_assist(&WhippleParams::benchmark(), "Benchmark bicycle").expect("drawn");
         assert!(svg.contains("c = 17.62 N m s/rad: stable down to 2 m/s"), "legend");
         assert!(svg.contains("closed-loop stable speeds"));
     }
@@ -585,7 +591,7 @@ mod tests {
         let at = track_crossings(&rear, &front);
         assert!(at.len() >= 2, "{at:?}");
         assert!(at.windows(2).all(|w| w[1].0 > w[0].0), "{at:?}");
-        let svg = fig_tracks(&WhippleParams::benchmark()).unwrap();
+        let svg = fig_tracks(&WhippleParams::benchmark(), "Benchmark bicycle").unwrap();
         assert!(svg.contains(&format!("cross {} times", at.len())));
     }
 }

@@ -18,7 +18,7 @@
 //! parameter uncertainties), [`parameter_text`] (BicycleParameters' text format), [`plant`]
 //! (the state space with roll and steer torques as inputs), [`transfer`] (its transfer
 //! functions and frequency responses) and [`feedback`] (state feedback: closed-loop
-//! eigenvalues and stable speed ranges).
+//! eigenvalues and stable speed ranges) and [`drawing`] (the points of a side view).
 
 mod design;
 mod matrices;
@@ -26,6 +26,7 @@ mod model;
 mod params;
 
 pub mod certified;
+pub mod drawing;
 pub mod feedback;
 /// Friction at the steering pivot (memoir n° 123): viscous steer damping and dry friction.
 pub mod friction;
