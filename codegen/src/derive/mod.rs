@@ -29,4 +29,5 @@ pub const DERIVATIONS: &[(&str, DeriveFn)] = &[
     ("bicycle_geometry", bicycle::geometry::derive),
     ("bicycle_kinematics", bicycle::kinematics::derive),
     ("bicycle_straight", bicycle::straight::derive),
+    ("lean_rider", whipple::lean_rider::derive),
 ];

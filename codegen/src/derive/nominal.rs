@@ -152,6 +152,61 @@ const STEADY: [(&str, f64); 15] = [
     ("c", 0.08),
 ];
 
+/// Moore's leaning rider (`lean_rider`): BicycleParameters' `mooreriderlean2012_browser_jason`
+/// (`data/mooreriderlean2012/browser_jason.toml`), its upright pitch as `lam`, and a state of
+/// moderate roll, steer, lean and rates at about 4.8 m/s, with moderate torques.
+const LEAN_RIDER: [(&str, f64); 49] = [
+    ("c9", 0.0),
+    ("d1", 0.9631492634872098),
+    ("d2", 0.4338396131640938),
+    ("d3", 0.0705000000001252),
+    ("d4", -0.6704626684911591),
+    ("g", 9.81),
+    ("ic11", 2.296859222953584),
+    ("ic22", 2.9922715238),
+    ("ic31", 0.01594448114273473),
+    ("ic33", 1.5101858377464155),
+    ("id11", 0.0904106601579),
+    ("id22", 0.152467620286),
+    ("ie11", 0.2811355367159554),
+    ("ie22", 0.246138810935),
+    ("ie31", 0.0063377219110826045),
+    ("ie33", 0.06782113764394461),
+    ("if11", 0.0883819364527),
+    ("if22", 0.149389340425),
+    ("ig11", 2.038073562525466),
+    ("ig22", 1.692108544034995),
+    ("ig31", 0.002113501449812),
+    ("ig33", 1.100753962972129),
+    ("k9", 0.0),
+    ("l1", 0.47759794513190806),
+    ("l2", -0.1680324796714025),
+    ("l3", -0.07654646159268344),
+    ("l4", -0.47166687226492093),
+    ("l5", 0.231223496809401),
+    ("l6", -0.271613547251923),
+    ("mc", 33.044),
+    ("md", 3.11),
+    ("me", 3.22),
+    ("mf", 2.02),
+    ("mg", 48.816),
+    ("rf", 0.34352982332),
+    ("rr", 0.340958858855),
+    ("lam", 0.399680398707),
+    ("q4", 0.1),
+    ("q5", 0.4),
+    ("q7", 0.15),
+    ("q9", 0.05),
+    ("q4d", 0.3),
+    ("q6d", -14.0),
+    ("q7d", 0.5),
+    ("q9d", 0.2),
+    ("T4", 1.0),
+    ("T6", 0.5),
+    ("T7", 0.3),
+    ("T9", 2.0),
+];
+
 /// The nominal values of `model`'s arguments (names not among its parameters and inputs are
 /// ignored by the sampling).
 pub fn values(model: &str) -> Vec<(String, f64)> {
@@ -162,6 +217,7 @@ pub fn values(model: &str) -> Vec<(String, f64)> {
         "bicycle_straight" => &[&STRAIGHT],
         "bicycle_geometry" | "bicycle_kinematics" => &[&GEOMETRY],
         "bicycle_steady" => &[&STEADY],
+        "lean_rider" => &[&LEAN_RIDER],
         _ => &[],
     };
     tables.iter().flat_map(|t| t.iter()).map(|&(n, v)| (n.to_string(), v)).collect()
