@@ -190,14 +190,14 @@ pub fn lean_rider() -> Model {
 /// engine (the mass matrix `M_<ui>_<uj>` and forcing `f_<ui>` of the independent speeds `q4d`,
 /// `q6d`, `q7d`, `q9d`, the dependent speeds `P_u`, `P_v`, `q3d`, `q5d`, `q8d`, the front
 /// contact's height and its pitch derivative for Newton's method, the energy). Carvallo's
-/// modified Lagrange equations are derived too and recorded as a check: they agree with Kane's
-/// at 256 bits at a seeded state on the contact constraint (the generated program keeps Kane's
-/// alone).
+/// modified Lagrange equations are derived too; the generated program keeps Kane's alone, and
+/// `codegen/tests/derive/lean_rider.rs` checks the two routes against each other at 256 bits
+/// (this layer may not emit a program to evaluate them).
 pub fn derive() -> Result<Derivation> {
     let model = lean_rider();
     let (d, kane_len, redundant) =
         engine::derivation(&model, file!()).map_err(|e| anyhow!("the leaning rider: {e}"))?;
-    let mut checks = vec![Check {
+    let checks = vec![Check {
         section: "34".into(),
         id: "redundant_rows".into(),
         statement: "the rolling constraints' only redundant row is the rear contact's vertical one"
@@ -205,62 +205,6 @@ pub fn derive() -> Result<Derivation> {
         holds: redundant.len() == 1 && redundant[0].starts_with("D vertical: "),
         detail: redundant.join("; "),
     }];
-    checks.push(routes_agree(&d)?);
     let formulas = d.formulas[..kane_len].to_vec();
     Ok(Derivation { formulas, checks, nominal: crate::derive::nominal::values("lean_rider"), ..d })
-}
-
-/// Kane's equations against the modified Lagrange equations at 256 bits, at the nominal
-/// parameters and state with the pitch put on the front contact by Newton's method.
-fn routes_agree(d: &Derivation) -> Result<Check> {
-    let prog = crate::emit::emit_program(d).map_err(|e| anyhow!("the leaning rider emits: {e}"))?;
-    let nominal = crate::derive::nominal::values("lean_rider");
-    let value = |name: &str| {
-        nominal
-            .iter()
-            .find(|(n, _)| n == name)
-            .map(|(_, v)| *v)
-            .ok_or_else(|| anyhow!("no nominal value for {name}"))
-    };
-    let params = prog.params.iter().map(|n| value(n)).collect::<Result<Vec<f64>>>()?;
-    let mut inputs = prog.inputs.iter().map(|n| value(n)).collect::<Result<Vec<f64>>>()?;
-    let at = |v: &[f64], name: &str| -> Result<f64> {
-        let k = prog
-            .outputs
-            .iter()
-            .position(|o| o.name == name)
-            .ok_or_else(|| anyhow!("no output {name}"))?;
-        Ok(v[k])
-    };
-    let q5 = prog.inputs.iter().position(|n| n == "q5").ok_or_else(|| anyhow!("no input q5"))?;
-    for _ in 0..30 {
-        let v = prog.eval_f64(&params, &inputs)?;
-        inputs[q5] -= at(&v, "F_contact_height")? / at(&v, "F_contact_height_dq5")?;
-    }
-    let v = carvallo_ir::hp::eval(&prog, &params, &inputs, 256)?;
-    let mut worst = (0.0f64, String::new());
-    for (k, o) in prog.outputs.iter().enumerate() {
-        let Some(kane) = o.name.strip_prefix("L_") else { continue };
-        let j = prog
-            .outputs
-            .iter()
-            .position(|x| x.name == kane)
-            .ok_or_else(|| anyhow!("no Kane output {kane}"))?;
-        let diff =
-            carvallo_ir::hp::to_f64(&v[k].sub(&v[j], 256, astro_float::RoundingMode::ToEven));
-        let r = diff.abs() / carvallo_ir::hp::to_f64(&v[j]).abs().max(1.0);
-        if r >= worst.0 {
-            worst = (r, kane.to_string());
-        }
-    }
-    Ok(Check {
-        section: "72".into(),
-        id: "kane_equals_modified_lagrange".into(),
-        statement: "Kane's equations and Carvallo's modified Lagrange equations (n° 72) give the same mass matrix and forcing".into(),
-        holds: worst.0 < 1e-60,
-        detail: format!(
-            "largest relative difference at 256 bits at the nominal state: {:.1e} ({})",
-            worst.0, worst.1
-        ),
-    })
 }
