@@ -47,6 +47,38 @@ pub(crate) fn err(message: impl Into<String>) -> PyErr {
     ParameterError::new_err(message.into())
 }
 
+/// Reading an argument: its failure becomes the argument's own error (`bad`, naming the value),
+/// except a failure that is not the value's fault, which passes through unchanged: Ctrl-C while
+/// numpy converts a large array (`KeyboardInterrupt`), `MemoryError` and `SystemExit`. Renaming
+/// those "must be a 1-d array of numbers" was a bug the Ctrl-C test of `closed_loop_window`
+/// found when the signal arrived during the conversion of its 10**7-row gain table.
+pub(crate) trait OrBad<T> {
+    fn or_bad(self, bad: impl FnOnce() -> PyErr) -> PyResult<T>;
+}
+
+impl<T, E: Into<PyErr>> OrBad<T> for Result<T, E> {
+    fn or_bad(self, bad: impl FnOnce() -> PyErr) -> PyResult<T> {
+        self.map_err(|e| {
+            let e: PyErr = e.into();
+            if cut_short(&e) {
+                e
+            } else {
+                bad()
+            }
+        })
+    }
+}
+
+/// Whether `e` is not the value's fault (see [`OrBad`]): an attempt that failed with it (a
+/// number tried before a sequence) must not go on to the next reading.
+pub(crate) fn cut_short(e: &PyErr) -> bool {
+    Python::attach(|py| {
+        e.is_instance_of::<pyo3::exceptions::PyKeyboardInterrupt>(py)
+            || e.is_instance_of::<pyo3::exceptions::PyMemoryError>(py)
+            || e.is_instance_of::<pyo3::exceptions::PySystemExit>(py)
+    })
+}
+
 fn shown(v: &Bound<'_, PyAny>) -> String {
     v.repr().map(|r| r.to_string()).unwrap_or_default()
 }
@@ -78,8 +110,10 @@ fn mapping_of<'py>(mapping: &Bound<'py, PyAny>, what: &str) -> PyResult<Bound<'p
 
 /// A value: a number, or an `uncertainties` ufloat `(nominal_value, std_dev)`.
 fn value_of(name: &str, v: &Bound<'_, PyAny>) -> PyResult<(f64, Option<f64>)> {
-    if let Ok(x) = v.extract::<f64>() {
-        return Ok((x, None));
+    match v.extract::<f64>() {
+        Ok(x) => return Ok((x, None)),
+        Err(e) if cut_short(&e) => return Err(e),
+        Err(_) => {}
     }
     let (Ok(n), Ok(s)) = (v.getattr("nominal_value"), v.getattr("std_dev")) else {
         return Err(err(format!("parameter {name} = {} is not a number", shown(v))));
@@ -101,7 +135,7 @@ pub(crate) fn entries_of(mapping: &Bound<'_, PyAny>, what: &str) -> PyResult<(En
     let mut uncertain = false;
     for (k, v) in dict.iter() {
         let name: String =
-            k.extract().map_err(|_| err(format!("{what}: key {} is not a string", shown(&k))))?;
+            k.extract().or_bad(|| err(format!("{what}: key {} is not a string", shown(&k))))?;
         let (x, s) = value_of(&name, &v)?;
         uncertain |= s.is_some();
         out.push((name, x, s.unwrap_or(0.0)));
@@ -213,7 +247,7 @@ impl Covariance {
                 }
             };
             for (var, d) in derivatives.iter().flat_map(|d| d.iter()) {
-                let d: f64 = d.extract().map_err(|_| {
+                let d: f64 = d.extract().or_bad(|| {
                     err(format!("parameter {name}: a derivative {} is not a number", shown(&d)))
                 })?;
                 let k = match index.get_item(&var)? {

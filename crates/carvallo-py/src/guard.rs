@@ -20,7 +20,7 @@ use std::time::Duration;
 
 use pyo3::prelude::*;
 
-use crate::common::err;
+use crate::common::{err, OrBad};
 
 /// The most bytes one call may need for its result and working arrays: 1 GiB.
 pub(crate) const MAX_BYTES: f64 = (1u64 << 30) as f64;
@@ -131,7 +131,7 @@ pub(crate) fn whole(x: &Bound<'_, PyAny>, name: &str) -> PyResult<u64> {
     if x.is_instance_of::<pyo3::types::PyBool>() || x.is_instance_of::<pyo3::types::PyFloat>() {
         return Err(bad());
     }
-    x.extract::<u64>().map_err(|_| bad())
+    x.extract::<u64>().or_bad(bad)
 }
 
 /// As [`whole`], as a count of items.
@@ -146,7 +146,7 @@ pub(crate) fn real(x: &Bound<'_, PyAny>, name: &str) -> PyResult<f64> {
         return Err(err(format!("invalid {name} {}: not a number", shown(x))));
     }
     x.extract::<f64>()
-        .map_err(|_| err(format!("invalid {name} {}: not a number that a float holds", shown(x))))
+        .or_bad(|| err(format!("invalid {name} {}: not a number that a float holds", shown(x))))
 }
 
 /// [`real`] or None.
@@ -167,8 +167,8 @@ pub(crate) fn optional_reals(x: &Bound<'_, PyAny>, name: &str) -> PyResult<Optio
         return Err(bad());
     }
     x.try_iter()
-        .map_err(|_| bad())?
-        .map(|item| real(&item.map_err(|_| bad())?, name))
+        .or_bad(bad)?
+        .map(|item| real(&item.or_bad(bad)?, name))
         .collect::<PyResult<Vec<f64>>>()
         .map(Some)
 }
@@ -176,7 +176,7 @@ pub(crate) fn optional_reals(x: &Bound<'_, PyAny>, name: &str) -> PyResult<Optio
 /// A fixed number of real numbers (a tuple or a sequence), named `name` in errors.
 fn reals<const K: usize>(x: &Bound<'_, PyAny>, name: &str) -> PyResult<[f64; K]> {
     let bad = || err(format!("invalid {name} {}: must be {K} numbers", shown(x)));
-    let v = optional_reals(x, name).map_err(|_| bad())?.ok_or_else(bad)?;
+    let v = optional_reals(x, name).or_bad(bad)?.ok_or_else(bad)?;
     <[f64; K]>::try_from(v).map_err(|_| bad())
 }
 
@@ -239,9 +239,9 @@ pub(crate) mod arg {
             return Err(bad());
         }
         x.try_iter()
-            .map_err(|_| bad())?
+            .or_bad(bad)?
             .map(|item| {
-                let [t, roll, steer] = reals::<3>(&item.map_err(|_| bad())?, "impulses")?;
+                let [t, roll, steer] = reals::<3>(&item.or_bad(bad)?, "impulses")?;
                 Ok((t, roll, steer))
             })
             .collect()

@@ -25,8 +25,8 @@ use pyo3::prelude::*;
 use pyo3::types::{IntoPyDict, PyDict, PyList};
 
 use crate::common::{
-    err, integration_of, pairs, params_of, set_run, uncertain_of, warn_all, Covariance,
-    ParameterError, PhysicsWarning,
+    cut_short, err, integration_of, pairs, params_of, set_run, uncertain_of, warn_all, Covariance,
+    OrBad, ParameterError, PhysicsWarning,
 };
 
 fn dict_of<'py>(py: Python<'py>, values: &[f64; 26]) -> PyResult<Bound<'py, PyDict>> {
@@ -37,15 +37,20 @@ fn dict_of<'py>(py: Python<'py>, values: &[f64; 26]) -> PyResult<Bound<'py, PyDi
     Ok(d)
 }
 
+/// A number or a 1-d sequence of numbers (`name`: the argument, in errors).
+fn number_or_numbers(x: &Bound<'_, PyAny>, name: &str) -> PyResult<Vec<f64>> {
+    match x.extract::<f64>() {
+        Ok(v) => Ok(vec![v]),
+        Err(e) if cut_short(&e) => Err(e),
+        Err(_) => x.extract().or_bad(|| {
+            let shown = x.repr().map_or_else(|_| "?".to_string(), |r| r.to_string());
+            err(format!("invalid {name} {shown}: must be a number or a 1-d sequence of numbers"))
+        }),
+    }
+}
+
 fn speeds_of(speeds: &Bound<'_, PyAny>) -> PyResult<Vec<f64>> {
-    let v: Vec<f64> = if let Ok(x) = speeds.extract::<f64>() {
-        vec![x]
-    } else {
-        speeds.extract().map_err(|_| {
-            let shown = speeds.repr().map_or_else(|_| "?".to_string(), |r| r.to_string());
-            err(format!("invalid speeds {shown}: must be a number or a 1-d sequence of numbers"))
-        })?
-    };
+    let v = number_or_numbers(speeds, "speeds")?;
     if let Some(x) = v.iter().find(|x| !x.is_finite()) {
         return Err(err(format!("invalid speed {x}: must be finite")));
     }
@@ -369,14 +374,7 @@ fn time_response<'py>(
     use carvallo::whipple::response::Excitation;
     use carvallo::whipple::transfer::Input;
     let bike = Whipple::new(params_of(params, strict)?);
-    let times: Vec<f64> = if let Ok(x) = times.extract::<f64>() {
-        vec![x]
-    } else {
-        times.extract().map_err(|_| {
-            let shown = times.repr().map_or_else(|_| "?".to_string(), |r| r.to_string());
-            err(format!("invalid times {shown}: must be a number or a 1-d sequence of numbers"))
-        })?
-    };
+    let times = number_or_numbers(times, "times")?;
     let input: Input = input
         .parse()
         .map_err(|e: carvallo::whipple::transfer::UnknownSignal| err(e.to_string()))?;
@@ -443,14 +441,7 @@ fn frequency_response<'py>(
     use carvallo::whipple::transfer::{Input, Output};
     let bike = Whipple::new(params_of(params, strict)?);
     let speeds = speeds_of(speeds)?;
-    let omegas: Vec<f64> = if let Ok(x) = omegas.extract::<f64>() {
-        vec![x]
-    } else {
-        omegas.extract().map_err(|_| {
-            let shown = omegas.repr().map_or_else(|_| "?".to_string(), |r| r.to_string());
-            err(format!("invalid omegas {shown}: must be a number or a 1-d sequence of numbers"))
-        })?
-    };
+    let omegas = number_or_numbers(omegas, "omegas")?;
     if let Some(x) = omegas.iter().find(|x| !(x.is_finite() && **x >= 0.0)) {
         return Err(err(format!("invalid omega {x:?}: must be finite and not negative")));
     }
@@ -504,9 +495,8 @@ fn gains_of(k: &Bound<'_, PyAny>) -> PyResult<carvallo::whipple::feedback::Gains
     } else {
         let bad =
             || err("K must be a (2, 4) array (rows roll, steer torque) or a dict of gains by name");
-        let arr =
-            k.py().import("numpy")?.call_method1("asarray", (k, "float64")).map_err(|_| bad())?;
-        let arr: PyReadonlyArray2<f64> = arr.extract().map_err(|_| bad())?;
+        let arr = k.py().import("numpy")?.call_method1("asarray", (k, "float64")).or_bad(bad)?;
+        let arr: PyReadonlyArray2<f64> = arr.extract().or_bad(bad)?;
         let shape = arr.shape();
         if shape != [2, 4] {
             return Err(err(format!("K must have the shape (2, 4), not {shape:?}")));
@@ -650,8 +640,7 @@ fn feedback_of(k: &Bound<'_, PyAny>) -> PyResult<Feedback> {
     let speeds = column("speed", &speed)?;
     let mut rows: Vec<(f64, Gains)> = speeds.iter().map(|&v| (v, Gains::ZERO)).collect();
     for (key, v) in dict.iter() {
-        let name: String =
-            key.extract().map_err(|_| err("gain table: the keys must be strings"))?;
+        let name: String = key.extract().or_bad(|| err("gain table: the keys must be strings"))?;
         if name == "speed" {
             continue;
         }
@@ -820,8 +809,8 @@ fn designs_of(designs: &Bound<'_, PyAny>) -> PyResult<Vec<[f64; 26]>> {
     let array = np
         .getattr("asarray")?
         .call((designs,), Some(&[("dtype", "float64")].into_py_dict(designs.py())?))
-        .map_err(|_| bad())?;
-    let array: PyReadonlyArray2<'_, f64> = array.extract().map_err(|_| bad())?;
+        .or_bad(bad)?;
+    let array: PyReadonlyArray2<'_, f64> = array.extract().or_bad(bad)?;
     let shape = array.shape();
     if shape[1] != 26 {
         return Err(bad());
@@ -1190,13 +1179,13 @@ fn simulate_driven<'py>(
 fn column_of(x: &Bound<'_, PyAny>, what: &str) -> PyResult<Vec<f64>> {
     let bad = || err(format!("{what} must be a 1-d array of numbers"));
     let np = x.py().import("numpy")?;
-    let a = np.getattr("asarray")?.call1((x,)).map_err(|_| bad())?;
+    let a = np.getattr("asarray")?.call1((x,)).or_bad(bad)?;
     let kind: String = a.getattr("dtype")?.getattr("kind")?.extract()?;
     if !matches!(kind.as_str(), "b" | "i" | "u" | "f") {
         return Err(bad());
     }
-    let a = np.getattr("require")?.call1((a, "float64", "CA")).map_err(|_| bad())?;
-    let a: PyReadonlyArray1<'_, f64> = a.extract().map_err(|_| bad())?;
+    let a = np.getattr("require")?.call1((a, "float64", "CA")).or_bad(bad)?;
+    let a: PyReadonlyArray1<'_, f64> = a.extract().or_bad(bad)?;
     Ok(a.as_slice().map_err(|_| bad())?.to_vec())
 }
 

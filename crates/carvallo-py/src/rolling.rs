@@ -12,7 +12,7 @@ use numpy::PyArray1;
 use pyo3::prelude::*;
 use pyo3::types::PyDict;
 
-use crate::common::{err, integration_of, set_run};
+use crate::common::{err, integration_of, set_run, OrBad};
 use crate::guard::{arg, interruptible, within};
 
 /// The names of the state's components, in its order.
@@ -85,7 +85,7 @@ fn numbers_of<const K: usize>(
     let mut out = [0.0; K];
     for (slot, key) in out.iter_mut().zip(keys) {
         let v = d.get_item(key)?.ok_or_else(|| err(format!("{what} lacks the key `{key}`")))?;
-        let x: f64 = v.extract().map_err(|_| err(format!("invalid {what}.{key}: not a number")))?;
+        let x: f64 = v.extract().or_bad(|| err(format!("invalid {what}.{key}: not a number")))?;
         if !x.is_finite() {
             return Err(err(format!("invalid {what}.{key} {x:?}: must be finite")));
         }

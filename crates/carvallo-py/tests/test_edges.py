@@ -321,3 +321,50 @@ def test_ctrl_c_stops_a_long_call(which):
     latency = float(caught) - sent
     print(f"\n{which}: KeyboardInterrupt {latency:.3f} s after SIGINT")
     assert latency < INTERRUPT_BOUND, f"{which}: KeyboardInterrupt {latency:.3f} s after SIGINT"
+
+
+class CutShort:
+    """An argument whose conversion is cut short (numpy's __array__, float's __float__,
+    iteration) by `error`: Ctrl-C while numpy converts a large array, or memory running out."""
+
+    def __init__(self, error):
+        self.error = error
+
+    def __array__(self, dtype=None, copy=None):
+        raise self.error()
+
+    def __float__(self):
+        raise self.error()
+
+    def __iter__(self):
+        raise self.error()
+
+    def __len__(self):
+        return 3
+
+
+@pytest.mark.parametrize("error", [KeyboardInterrupt, MemoryError])
+@pytest.mark.parametrize("call", [
+    lambda x: carvallo.closed_loop_window(carvallo.benchmark(), {"speed": [1.0, 2.0, 3.0],
+                                          "k_roll_roll": x}),
+    lambda x: carvallo.closed_loop_window(carvallo.benchmark(), {"speed": x,
+                                          "k_roll_roll": [1.0, 2.0, 3.0]}),
+    lambda x: carvallo.simulate_many(carvallo.benchmark(), x, [0.01] * 3, 0.1),
+    lambda x: carvallo.windows(x),
+    lambda x: carvallo.eigenvalues(carvallo.benchmark(), x),
+    lambda x: carvallo.eigenvalues(carvallo.benchmark(), [1.0, x]),
+    lambda x: carvallo.simulate(carvallo.benchmark(), x, 0.01, 0.1),
+    lambda x: carvallo.simulate(carvallo.benchmark(), 5.0, 0.01, 0.1, impulses=[(0.1, x, 0.0)]),
+    lambda x: carvallo.monte_carlo(carvallo.benchmark(), {"c": x}, samples=10, seed=1),
+    lambda x: carvallo.eigenvalues(dict(carvallo.benchmark(), c=x), [5.0]),
+    lambda x: carvallo.time_response(carvallo.benchmark(), 5.0, x, "impulse"),
+    lambda x: carvallo.frequency_response(carvallo.benchmark(), [5.0], x, "steer", "roll"),
+], ids=["gain", "gain-speed", "simulate_many", "windows", "eigenvalues", "eigenvalues-item",
+        "simulate", "impulses", "sigma", "params", "times", "omegas"])
+def test_an_interrupted_conversion_is_not_a_bad_value(call, error):
+    """A KeyboardInterrupt or MemoryError raised while an argument is converted passes through
+    as itself, never renamed a ParameterError about the value (it once was: Ctrl-C during the
+    conversion of closed_loop_window's 10**7-row gain table read "k_steer_roll_rate must be a
+    1-d array of numbers")."""
+    with pytest.raises(error):
+        call(CutShort(error))
