@@ -37,10 +37,12 @@ artifact!(BICYCLE_GEOMETRY, "bicycle_geometry");
 artifact!(BICYCLE_KINEMATICS, "bicycle_kinematics");
 artifact!(BICYCLE_STEADY, "bicycle_steady");
 artifact!(BICYCLE_STRAIGHT, "bicycle_straight");
+artifact!(LEAN_RIDER, "lean_rider");
 
 /// Every model with committed artifacts: the hoop and the unicycle (Part I), the modern
-/// Carvallo–Whipple bicycle, then Carvallo's bicycle of Part II.
-pub const MODELS: [Artifact; 9] = [
+/// Carvallo–Whipple bicycle, then Carvallo's bicycle of Part II, then Moore's leaning rider
+/// (from the mechanics engine).
+pub const MODELS: [Artifact; 10] = [
     HOOP,
     UNICYCLE,
     HOOP_DISCUSSION,
@@ -50,6 +52,7 @@ pub const MODELS: [Artifact; 9] = [
     BICYCLE_KINEMATICS,
     BICYCLE_STEADY,
     BICYCLE_STRAIGHT,
+    LEAN_RIDER,
 ];
 
 /// The artifacts of `model`; `None` when no model of that name is embedded.

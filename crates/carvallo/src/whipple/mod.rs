@@ -30,6 +30,7 @@ pub mod drawing;
 pub mod feedback;
 /// Friction at the steering pivot (memoir n° 123): viscous steer damping and dry friction.
 pub mod friction;
+pub mod lean_rider;
 pub mod modes;
 pub mod nonlinear;
 pub mod parameter_text;

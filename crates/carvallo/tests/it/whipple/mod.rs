@@ -7,6 +7,7 @@
 mod basu_mandal;
 mod bicycleparameters;
 mod design;
+mod lean_rider;
 mod nonlinear;
 mod params;
 mod reader_fuzz;

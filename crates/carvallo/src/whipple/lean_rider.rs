@@ -1,0 +1,607 @@
+//! Moore's (2012) leaning rider: the Carvallo–Whipple bicycle with the rider's upper body on a
+//! revolute lean joint on the rear frame, exactly as BicycleParameters 1.5.2 defines it
+//! (`models.MooreRiderLean2012Model`, parameter set `mooreriderlean2012_browser_jason`).
+//!
+//! The equations come from the mechanics engine's description
+//! (`codegen/src/derive/whipple/lean_rider.rs`, Kane's method; `generated/lean_rider.ir`):
+//! the mass matrix $M$ and forcing $f$ of the four independent speeds $u_4, u_6, u_7, u_9$
+//! (roll, rear wheel, steer, lean joint), the dependent rates $\dot q_3, \dot q_5, \dot q_8$
+//! (yaw, pitch, front wheel) and the rear contact's velocity $(P_u, P_v)$ in the yawed frame.
+//! The state is Moore's twelve, `q1 q2 q3 q4 q6 q7 q8 q9 u4 u6 u7 u9`
+//! ([`STATE_NAMES`]), with the rear frame pitch $q_5$ carried beside them as a thirteenth so
+//! that no Newton solve of the contact constraint runs at every evaluation; the inputs are the
+//! roll torque $T_4$, the rear wheel torque $T_6$, the steer torque $T_7$ and the lean torque
+//! $T_9$ (the joint's passive torque $-(c_9 \dot q_9 + k_9 q_9)$ is in the equations).
+//!
+//! The lean joint's axis is tilted by $\lambda$ from the rear frame, and Moore's $\lambda$ is
+//! the rear frame's pitch upright ([`LeanRider::upright_pitch`], found here by Newton on the
+//! front contact's height), so a parameter file gives Moore's 36 values without it.
+//!
+//! The linearisation about upright straight running at speed $v$ ($u_6 = -v/r_R$, the pitch
+//! held at its upright value, which is stationary in roll and steer by symmetry) is taken by
+//! forward-mode dual numbers through the whole program ([`carvallo_ir::dual`]) and the
+//! $4 \times 4$ solve: exact to rounding, no step size. [`LeanRider::state_space`] gives
+//! $A$ ($12 \times 12$) and $B$ ($12 \times 3$, over $T_4, T_7, T_9$, BicycleParameters' inputs: it
+//! drops $T_6$); six of the twelve eigenvalues are zero (the ignorable coordinates and the rear
+//! wheel's speed) and [`LeanRider::eigenvalues`] gives the other six, those of roll, steer and
+//! lean. With Browser + Jason's $k_9 = c_9 = 0$ the torso is an inverted pendulum (a real
+//! eigenvalue near $+7\ \mathrm{s}^{-1}$ at every speed), so its open-loop stable speed range is
+//! empty ([`LeanRider::stable_speeds`] says so); joint stiffness or lean feedback makes one.
+
+use std::fmt;
+use std::ops::{Add, Div, Mul, Sub};
+use std::sync::OnceLock;
+
+use carvallo_ir::dual::{self, Dual};
+use carvallo_ir::Program;
+use nalgebra::{Complex, SMatrix};
+
+crate::scene! {
+    /// Kane's equations ($M$, $f$), the dependent rates and the rear contact's velocity: every
+    /// output the right-hand side needs, and nothing else.
+    pub mod dynamics_scene {
+        model: lean_rider,
+        outputs: [M_q4d_q4d, M_q4d_q6d, M_q4d_q7d, M_q4d_q9d, M_q6d_q6d, M_q6d_q7d, M_q6d_q9d,
+                  M_q7d_q7d, M_q7d_q9d, M_q9d_q9d, f_q4d, f_q6d, f_q7d, f_q9d,
+                  q3d, q5d, q8d, P_u, P_v],
+    }
+}
+
+crate::scene! {
+    /// The front contact's height $h$ above the ground and $\partial h/\partial q_5$.
+    pub mod contact_scene {
+        model: lean_rider,
+        outputs: [F_contact_height, F_contact_height_dq5],
+    }
+}
+
+/// The names of the state's components, Moore's order (then the pitch `q5`, the thirteenth).
+pub const STATE_NAMES: [&str; 12] =
+    ["q1", "q2", "q3", "q4", "q6", "q7", "q8", "q9", "u4", "u6", "u7", "u9"];
+
+/// The inputs of [`LeanRider::state_space`]'s $B$: roll, steer and lean torques (N m).
+pub const INPUT_NAMES: [&str; 3] = ["T4", "T7", "T9"];
+
+/// The components of the state that the six non-zero eigenvalues live on: roll, steer, lean
+/// and their rates.
+pub const LATERAL: [usize; 6] = [3, 5, 7, 8, 10, 11];
+
+/// The index of the pitch `q5` in a 13-component state.
+pub const PITCH: usize = 12;
+
+/// The text of BicycleParameters' `mooreriderlean2012_browser_jason`
+/// (`data/mooreriderlean2012/browser_jason.toml`, its source named there).
+pub const BROWSER_JASON: &str =
+    include_str!("../../../../data/mooreriderlean2012/browser_jason.toml");
+
+/// A parameter set of the model: Moore's 36 values by name ([`LeanRiderParams::NAMES`]).
+#[derive(Clone, Debug, PartialEq)]
+pub struct LeanRiderParams {
+    values: [f64; 36],
+}
+
+/// What is wrong with a parameter set or a parameter file.
+#[derive(Clone, Debug, PartialEq)]
+pub enum LeanRiderError {
+    /// A line that is not `name = value`.
+    Line {
+        /// Its 1-based number.
+        line: usize,
+        /// Its text.
+        text: String,
+    },
+    /// A name the model does not have.
+    Unknown {
+        /// The name.
+        name: String,
+    },
+    /// A name given twice.
+    Repeated {
+        /// The name.
+        name: String,
+    },
+    /// A name the set lacks.
+    Missing {
+        /// The name.
+        name: &'static str,
+    },
+    /// A value that is not a finite number.
+    NotANumber {
+        /// The parameter.
+        name: String,
+        /// The value as written.
+        text: String,
+    },
+    /// A value outside what the model allows.
+    Invalid {
+        /// The parameter.
+        name: &'static str,
+        /// Its value.
+        value: f64,
+        /// What it must be.
+        reason: &'static str,
+    },
+    /// The front wheel cannot touch the ground upright: no pitch puts its contact on it.
+    NoUpright,
+}
+
+impl fmt::Display for LeanRiderError {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        match self {
+            LeanRiderError::Line { line, text } => {
+                write!(f, "line {line}: expected `name = value`, found `{text}`")
+            }
+            LeanRiderError::Unknown { name } => write!(
+                f,
+                "unknown parameter `{name}` (the leaning rider's are {})",
+                LeanRiderParams::NAMES.join(", ")
+            ),
+            LeanRiderError::Repeated { name } => write!(f, "parameter `{name}` given twice"),
+            LeanRiderError::Missing { name } => write!(f, "missing parameter `{name}`"),
+            LeanRiderError::NotANumber { name, text } => {
+                write!(f, "parameter `{name}` = `{text}` is not a finite number")
+            }
+            LeanRiderError::Invalid { name, value, reason } => {
+                write!(f, "invalid parameter {name} = {value}: {reason}")
+            }
+            LeanRiderError::NoUpright => write!(
+                f,
+                "no rear frame pitch puts the front wheel on the ground upright (check d1, d2, \
+                 d3, rf and rr)"
+            ),
+        }
+    }
+}
+
+impl std::error::Error for LeanRiderError {}
+
+impl LeanRiderParams {
+    /// Moore's names, BicycleParameters' spelling: the hinge and frame lengths `d1`–`d4`,
+    /// `l1`–`l6`, the wheel radii `rr`, `rf`, the masses `mc` (rear frame), `md` (rear wheel),
+    /// `me` (front frame), `mf` (front wheel), `mg` (torso), their inertias, gravity `g` and
+    /// the lean joint's damping `c9` and stiffness `k9`.
+    pub const NAMES: [&'static str; 36] = [
+        "c9", "d1", "d2", "d3", "d4", "g", "ic11", "ic22", "ic31", "ic33", "id11", "id22", "ie11",
+        "ie22", "ie31", "ie33", "if11", "if22", "ig11", "ig22", "ig31", "ig33", "k9", "l1", "l2",
+        "l3", "l4", "l5", "l6", "mc", "md", "me", "mf", "mg", "rf", "rr",
+    ];
+
+    /// BicycleParameters' `mooreriderlean2012_browser_jason`: Jason on the Browser bicycle.
+    pub fn browser_jason() -> LeanRiderParams {
+        LeanRiderParams::from_text(BROWSER_JASON).expect("the committed parameter file reads")
+    }
+
+    /// The values in [`NAMES`](Self::NAMES) order, checked: finite; masses, wheel radii and
+    /// gravity positive; the principal moments and `c9`, `k9` not negative.
+    ///
+    /// # Errors
+    /// [`LeanRiderError::Invalid`] naming the first bad value.
+    pub fn new(values: [f64; 36]) -> Result<LeanRiderParams, LeanRiderError> {
+        for (&name, &value) in Self::NAMES.iter().zip(&values) {
+            let reason = if !value.is_finite() {
+                Some("must be finite")
+            } else if matches!(name, "mc" | "md" | "me" | "mf" | "mg" | "rf" | "rr" | "g")
+                && value <= 0.0
+            {
+                Some("must be positive")
+            } else if (matches!(name, "c9" | "k9")
+                || (name.starts_with('i') && name[2..] != *"31"))
+                && value < 0.0
+            {
+                Some("must not be negative")
+            } else {
+                None
+            };
+            if let Some(reason) = reason {
+                return Err(LeanRiderError::Invalid { name, value, reason });
+            }
+        }
+        Ok(LeanRiderParams { values })
+    }
+
+    /// Reads `name = value` lines (`#` comments, blank lines; TOML's plain key–value form,
+    /// as `data/mooreriderlean2012/browser_jason.toml`). Every one of the 36 names is required;
+    /// BicycleParameters' nominal speed `v` is accepted and not used (speeds are the caller's).
+    ///
+    /// # Errors
+    /// The first bad line, unknown, repeated or missing name, or bad value.
+    pub fn from_text(text: &str) -> Result<LeanRiderParams, LeanRiderError> {
+        let mut values = [None; 36];
+        let mut seen_v = false;
+        for (k, line) in text.lines().enumerate() {
+            let line = line.split('#').next().unwrap_or("").trim();
+            if line.is_empty() {
+                continue;
+            }
+            let Some((name, value)) = line.split_once('=') else {
+                return Err(LeanRiderError::Line { line: k + 1, text: line.to_string() });
+            };
+            let (name, value) = (name.trim(), value.trim());
+            let number = || {
+                value.parse::<f64>().ok().filter(|x| x.is_finite()).ok_or_else(|| {
+                    LeanRiderError::NotANumber { name: name.to_string(), text: value.to_string() }
+                })
+            };
+            if name == "v" {
+                if seen_v {
+                    return Err(LeanRiderError::Repeated { name: name.to_string() });
+                }
+                seen_v = true;
+                number()?;
+                continue;
+            }
+            let Some(i) = Self::NAMES.iter().position(|n| *n == name) else {
+                return Err(LeanRiderError::Unknown { name: name.to_string() });
+            };
+            if values[i].is_some() {
+                return Err(LeanRiderError::Repeated { name: name.to_string() });
+            }
+            values[i] = Some(number()?);
+        }
+        let mut out = [0.0; 36];
+        for (k, v) in values.iter().enumerate() {
+            out[k] = v.ok_or(LeanRiderError::Missing { name: Self::NAMES[k] })?;
+        }
+        LeanRiderParams::new(out)
+    }
+
+    /// Whether `text` reads as this model's parameters (Moore's names, not the benchmark's):
+    /// it names `mg`, `ig11` and `d4` on lines of their own.
+    pub fn looks_like(text: &str) -> bool {
+        ["mg", "ig11", "d4"].iter().all(|name| {
+            text.lines().any(|l| l.split('=').next().is_some_and(|n| n.trim() == *name))
+        })
+    }
+
+    /// The value of `name`, or `None` for a name the model does not have.
+    pub fn get(&self, name: &str) -> Option<f64> {
+        Self::NAMES.iter().position(|n| *n == name).map(|k| self.values[k])
+    }
+
+    /// The values, [`NAMES`](Self::NAMES) order.
+    pub fn values(&self) -> &[f64; 36] {
+        &self.values
+    }
+
+    /// The same set with `name` set to `value`.
+    ///
+    /// # Errors
+    /// [`LeanRiderError::Unknown`] for a name the model does not have, and as [`new`](Self::new).
+    pub fn with(&self, name: &str, value: f64) -> Result<LeanRiderParams, LeanRiderError> {
+        let k = Self::NAMES
+            .iter()
+            .position(|n| *n == name)
+            .ok_or_else(|| LeanRiderError::Unknown { name: name.to_string() })?;
+        let mut values = self.values;
+        values[k] = value;
+        LeanRiderParams::new(values)
+    }
+}
+
+/// The arithmetic the right-hand side is written in: `f64` for evaluation, [`Dual`] for the
+/// linearisation.
+trait Real:
+    Copy + Add<Output = Self> + Sub<Output = Self> + Mul<Output = Self> + Div<Output = Self>
+{
+    fn sin(self) -> Self;
+    fn cos(self) -> Self;
+}
+
+impl Real for f64 {
+    fn sin(self) -> f64 {
+        f64::sin(self)
+    }
+    fn cos(self) -> f64 {
+        f64::cos(self)
+    }
+}
+
+impl<const N: usize> Real for Dual<N> {
+    fn sin(self) -> Dual<N> {
+        Dual::sin(self)
+    }
+    fn cos(self) -> Dual<N> {
+        Dual::cos(self)
+    }
+}
+
+/// Solves $M x = f$ for the symmetric positive definite $4 \times 4$ mass matrix by Gaussian
+/// elimination without pivoting (its pivots are the positive ones of $LDL^T$).
+fn solve4<T: Real>(mut m: [[T; 4]; 4], mut f: [T; 4]) -> [T; 4] {
+    for k in 0..4 {
+        for i in k + 1..4 {
+            let r = m[i][k] / m[k][k];
+            for j in k..4 {
+                m[i][j] = m[i][j] - r * m[k][j];
+            }
+            f[i] = f[i] - r * f[k];
+        }
+    }
+    let mut x = f;
+    for k in (0..4).rev() {
+        for j in k + 1..4 {
+            x[k] = x[k] - m[k][j] * x[j];
+        }
+        x[k] = x[k] / m[k][k];
+    }
+    x
+}
+
+/// The state derivative from the outputs of [`dynamics_scene`] (its `OUTPUTS` order) at the
+/// state `x` (12 components, Moore's order).
+fn assemble<T: Real>(o: &[T; 19], x: &[T; 12]) -> [T; 13] {
+    let m = [
+        [o[0], o[1], o[2], o[3]],
+        [o[1], o[4], o[5], o[6]],
+        [o[2], o[5], o[7], o[8]],
+        [o[3], o[6], o[8], o[9]],
+    ];
+    let ud = solve4(m, [o[10], o[11], o[12], o[13]]);
+    let (q3d, q5d, q8d, pu, pv) = (o[14], o[15], o[16], o[17], o[18]);
+    let (s3, c3) = (x[2].sin(), x[2].cos());
+    [
+        pu * c3 - pv * s3,
+        pu * s3 + pv * c3,
+        q3d,
+        x[8],
+        x[9],
+        x[10],
+        q8d,
+        x[11],
+        ud[0],
+        ud[1],
+        ud[2],
+        ud[3],
+        q5d,
+    ]
+}
+
+/// The program `generated/lean_rider.ir`, parsed once.
+fn program() -> &'static Program {
+    static PROGRAM: OnceLock<Program> = OnceLock::new();
+    PROGRAM.get_or_init(|| {
+        Program::parse(crate::artifacts::LEAN_RIDER.ir).expect("the committed program parses")
+    })
+}
+
+/// The leaning rider with one parameter set: its upright pitch found and the evaluators'
+/// arguments filled.
+#[derive(Clone, Debug)]
+pub struct LeanRider {
+    params: LeanRiderParams,
+    lam: f64,
+    dynamics: [f64; dynamics_scene::Args::LEN],
+    contact: [f64; contact_scene::Args::LEN],
+}
+
+/// A scene's argument array with the parameters of `params` (and `lam`) and the inputs zero.
+fn filled<const N: usize>(params: &LeanRiderParams, lam: f64, names: &[&str]) -> [f64; N] {
+    std::array::from_fn(|i| match names.get(i) {
+        Some(&"lam") => lam,
+        Some(name) => params.get(name).unwrap_or(0.0),
+        None => 0.0,
+    })
+}
+
+/// The position of input `name` in a scene's argument array (`usize::MAX` when it does not
+/// take it).
+fn slot(params: &[&str], inputs: &[&str], name: &str) -> usize {
+    inputs.iter().position(|n| *n == name).map_or(usize::MAX, |i| params.len() + i)
+}
+
+impl LeanRider {
+    /// The model with the parameters `params`; its upright pitch (Moore's $\lambda$) is found
+    /// by Newton's method on the front contact's height, from the sign change of the height
+    /// nearest to zero pitch on a grid of $(-\pi/2, \pi/2)$.
+    ///
+    /// # Errors
+    /// [`LeanRiderError::NoUpright`] when no pitch puts the front wheel on the ground.
+    pub fn new(params: LeanRiderParams) -> Result<LeanRider, LeanRiderError> {
+        let contact = filled(&params, 0.0, contact_scene::PARAMS);
+        let mut rider = LeanRider {
+            dynamics: filled(&params, 0.0, dynamics_scene::PARAMS),
+            contact,
+            params,
+            lam: 0.0,
+        };
+        rider.lam = rider.pitch_on_ground(0.0, 0.0).ok_or(LeanRiderError::NoUpright)?;
+        rider.dynamics = filled(&rider.params, rider.lam, dynamics_scene::PARAMS);
+        Ok(rider)
+    }
+
+    /// The parameters.
+    pub fn params(&self) -> &LeanRiderParams {
+        &self.params
+    }
+
+    /// The rear frame's pitch upright (rad), Moore's $\lambda$: the front contact on the ground
+    /// with roll and steer zero.
+    pub fn upright_pitch(&self) -> f64 {
+        self.lam
+    }
+
+    /// The front contact's height (m) and its derivative in pitch (m/rad) at roll `q4`,
+    /// pitch `q5` and steer `q7`.
+    pub fn contact(&self, q4: f64, q5: f64, q7: f64) -> (f64, f64) {
+        let mut a = self.contact;
+        for (name, v) in [("q4", q4), ("q5", q5), ("q7", q7)] {
+            if let Some(x) = a.get_mut(slot(contact_scene::PARAMS, contact_scene::INPUTS, name)) {
+                *x = v;
+            }
+        }
+        let o = contact_scene::eval_array(&a);
+        (o[0], o[1])
+    }
+
+    /// The pitch that puts the front contact on the ground at roll `q4` and steer `q7`: the
+    /// root of its height nearest zero pitch (a grid of 256 pitches in $(-\pi/2, \pi/2)$, then
+    /// Newton to a step below $10^{-15}$ rad); `None` when the height has no sign change.
+    pub fn pitch_on_ground(&self, q4: f64, q7: f64) -> Option<f64> {
+        let n = 256;
+        let at = |k: usize| -std::f64::consts::FRAC_PI_2 * (1.0 - 2.0 * k as f64 / n as f64);
+        let mut best: Option<f64> = None;
+        for k in 0..n {
+            let (a, b) = (at(k), at(k + 1));
+            let (ha, hb) = (self.contact(q4, a, q7).0, self.contact(q4, b, q7).0);
+            if ha == 0.0 || ha.signum() != hb.signum() {
+                let mid = 0.5 * (a + b);
+                if best.is_none_or(|x| mid.abs() < x.abs()) {
+                    best = Some(mid);
+                }
+            }
+        }
+        let mut th = best?;
+        for _ in 0..50 {
+            let (h, dh) = self.contact(q4, th, q7);
+            let step = h / dh;
+            th -= step;
+            if !th.is_finite() {
+                return None;
+            }
+            if step.abs() < 1e-15 {
+                break;
+            }
+        }
+        Some(th)
+    }
+
+    /// The state derivative at the state `x` (Moore's twelve, then the pitch `q5`) under the
+    /// torques `[T4, T6, T7, T9]` (N m): the twelve rates, then $\dot q_5$.
+    pub fn rate(&self, x: &[f64; 13], torques: &[f64; 4]) -> [f64; 13] {
+        let mut a = self.dynamics;
+        let (p, i) = (dynamics_scene::PARAMS, dynamics_scene::INPUTS);
+        let values = [
+            ("q4", x[3]),
+            ("q5", x[PITCH]),
+            ("q7", x[5]),
+            ("q9", x[7]),
+            ("q4d", x[8]),
+            ("q6d", x[9]),
+            ("q7d", x[10]),
+            ("q9d", x[11]),
+            ("T4", torques[0]),
+            ("T6", torques[1]),
+            ("T7", torques[2]),
+            ("T9", torques[3]),
+        ];
+        for (name, v) in values {
+            if let Some(s) = a.get_mut(slot(p, i, name)) {
+                *s = v;
+            }
+        }
+        let o = dynamics_scene::eval_array(&a);
+        let x12: [f64; 12] = std::array::from_fn(|k| x[k]);
+        assemble(&o, &x12)
+    }
+
+    /// The upright straight-running state at speed `speed` (m/s): everything zero but the rear
+    /// wheel's rate $u_6 = -v/r_R$ and the pitch.
+    pub fn upright(&self, speed: f64) -> [f64; 13] {
+        let mut x = [0.0; 13];
+        x[9] = -speed / self.params.get("rr").expect("rr");
+        x[PITCH] = self.lam;
+        x
+    }
+
+    /// $A$ ($12 \times 12$, Moore's state order) and $B$ ($12 \times 3$, inputs $T_4, T_7, T_9$)
+    /// of the linearisation about upright straight running at `speed` (m/s), the pitch held
+    /// at its upright value: dual numbers through `generated/lean_rider.ir` and the solve.
+    pub fn state_space(&self, speed: f64) -> (SMatrix<f64, 12, 12>, SMatrix<f64, 12, 3>) {
+        const N: usize = 15;
+        let prog = program();
+        let x0 = self.upright(speed);
+        let x: [Dual<N>; 12] = std::array::from_fn(|k| Dual::variable(x0[k], k));
+        let torques = [Dual::variable(0.0, 12), Dual::constant(0.0), Dual::variable(0.0, 13)];
+        let t9 = Dual::variable(0.0, 14);
+        let params: Vec<Dual<N>> = prog
+            .params
+            .iter()
+            .map(|name| {
+                Dual::constant(if name == "lam" {
+                    self.lam
+                } else {
+                    self.params.get(name).expect("every parameter of the program is Moore's")
+                })
+            })
+            .collect();
+        let by_name = |name: &str| -> Dual<N> {
+            match name {
+                "q4" => x[3],
+                "q5" => Dual::constant(self.lam),
+                "q7" => x[5],
+                "q9" => x[7],
+                "q4d" => x[8],
+                "q6d" => x[9],
+                "q7d" => x[10],
+                "q9d" => x[11],
+                "T4" => torques[0],
+                "T6" => torques[1],
+                "T7" => torques[2],
+                "T9" => t9,
+                other => panic!("the program has an unexpected input {other}"),
+            }
+        };
+        let inputs: Vec<Dual<N>> = prog.inputs.iter().map(|n| by_name(n)).collect();
+        let out = dual::eval(prog, &params, &inputs).expect("the committed program evaluates");
+        let o: [Dual<N>; 19] = std::array::from_fn(|k| {
+            let name = dynamics_scene::OUTPUTS[k];
+            let i = prog.outputs.iter().position(|p| p.name == name).expect("the scene's output");
+            out[i]
+        });
+        let d = assemble(&o, &x);
+        let a = SMatrix::<f64, 12, 12>::from_fn(|i, j| d[i].grad[j]);
+        let b = SMatrix::<f64, 12, 3>::from_fn(|i, j| d[i].grad[12 + j]);
+        (a, b)
+    }
+
+    /// The six eigenvalues of roll, steer and lean at `speed` (m/s) — those of $A$ on
+    /// [`LATERAL`]; the other six of $A$ are zero — sorted by decreasing real part, then by
+    /// decreasing imaginary part.
+    pub fn eigenvalues(&self, speed: f64) -> [Complex<f64>; 6] {
+        let (a, _) = self.state_space(speed);
+        let lateral = SMatrix::<f64, 6, 6>::from_fn(|i, j| a[(LATERAL[i], LATERAL[j])]);
+        let mut ev: Vec<Complex<f64>> = lateral.complex_eigenvalues().iter().copied().collect();
+        ev.sort_by(|p, q| q.re.total_cmp(&p.re).then(q.im.total_cmp(&p.im)));
+        std::array::from_fn(|k| ev[k])
+    }
+
+    /// The speed ranges within `[lo, hi]` (m/s) where all six eigenvalues have negative real
+    /// parts: a scan at `steps` equal steps, each change of stability then bisected to
+    /// $10^{-10}$ m/s. Empty when no speed of the scan is stable (Browser + Jason's passive
+    /// torso, $k_9 = c_9 = 0$).
+    pub fn stable_speeds(&self, lo: f64, hi: f64, steps: usize) -> Vec<(f64, f64)> {
+        let growth = |v: f64| self.eigenvalues(v)[0].re;
+        let stable = |v: f64| growth(v) < 0.0;
+        let edge = |mut a: f64, mut b: f64| {
+            let sa = stable(a);
+            while b - a > 1e-10 {
+                let m = 0.5 * (a + b);
+                if stable(m) == sa {
+                    a = m;
+                } else {
+                    b = m;
+                }
+            }
+            0.5 * (a + b)
+        };
+        let steps = steps.max(1);
+        let at = |k: usize| lo + (hi - lo) * k as f64 / steps as f64;
+        let mut out = Vec::new();
+        let mut start = stable(lo).then_some(lo);
+        for k in 1..=steps {
+            let (a, b) = (at(k - 1), at(k));
+            match (start, stable(b)) {
+                (None, true) => start = Some(edge(a, b)),
+                (Some(s), false) => {
+                    out.push((s, edge(a, b)));
+                    start = None;
+                }
+                _ => {}
+            }
+        }
+        if let Some(s) = start {
+            out.push((s, hi));
+        }
+        out
+    }
+}

@@ -1,0 +1,173 @@
+//! The runtime's leaning rider ([`carvallo::whipple::lean_rider`]) against its peer,
+//! BicycleParameters 1.5.2's `MooreRiderLean2012Model` with `mooreriderlean2012_browser_jason`
+//! (numbers written by `scripts/lean-rider-peer.py` into
+//! `data/mooreriderlean2012/browser_jason_peer.json`): the upright pitch, the state derivative at
+//! the peer's six seeded states, $A$ and $B$ at six speeds (dual numbers here, the peer's
+//! symbolic Jacobians there) and the six non-zero eigenvalues; the empty stable speed range of
+//! the passive torso; the parameter file's errors.
+
+use carvallo::whipple::lean_rider::{LeanRider, LeanRiderError, LeanRiderParams, LATERAL};
+use serde_json::Value;
+
+fn peer() -> Value {
+    let text = include_str!("../../../../../data/mooreriderlean2012/browser_jason_peer.json");
+    serde_json::from_str(text).expect("the peer's JSON")
+}
+
+fn number(v: &Value) -> f64 {
+    v.as_str().expect("a number as a string").parse().expect("a number")
+}
+
+fn numbers(v: &Value) -> Vec<f64> {
+    v.as_array().expect("an array").iter().map(number).collect()
+}
+
+fn rider() -> LeanRider {
+    LeanRider::new(LeanRiderParams::browser_jason()).expect("Browser + Jason stand upright")
+}
+
+#[test]
+fn parameters_and_upright_pitch_equal_the_peers() {
+    let peer = peer();
+    let p = LeanRiderParams::browser_jason();
+    for name in LeanRiderParams::NAMES {
+        assert_eq!(p.get(name), Some(number(&peer["parameters"][name])), "{name}");
+    }
+    let pitch = rider().upright_pitch();
+    let theirs = number(&peer["upright_pitch_q5"]);
+    // The peer prints 12 digits.
+    assert!((pitch - theirs).abs() < 1e-12, "upright pitch {pitch} against the peer's {theirs}");
+    let (h, _) = rider().contact(0.0, pitch, 0.0);
+    assert!(h.abs() < 1e-15, "the front contact is {h} m off the ground");
+}
+
+#[test]
+fn rates_equal_the_peers_at_its_seeded_states() {
+    let peer = peer();
+    let rider = rider();
+    let names = ["q1p", "q2p", "q3p", "q4p", "q6p", "q7p", "q8p", "q9p", "u4p", "u6p", "u7p", "u9p"];
+    let mut worst = 0.0f64;
+    let states = peer["nonlinear"]["lam_constant"].as_array().expect("states");
+    assert_eq!(states.len(), 6);
+    for state in states {
+        let q = numbers(&state["q1..q9"]);
+        let u = numbers(&state["u4,u6,u7,u9"]);
+        let t = numbers(&state["T4,T6,T7,T9"]);
+        let x = [q[0], q[1], q[2], q[3], q[5], q[6], q[7], q[8], u[0], u[1], u[2], u[3], q[4]];
+        let d = rider.rate(&x, &[t[0], t[1], t[2], t[3]]);
+        for (k, name) in names.iter().enumerate() {
+            let theirs = number(&state["values"][name]);
+            worst = worst.max((d[k] - theirs).abs() / theirs.abs().max(1.0));
+        }
+        let theirs = number(&state["values"]["u5"]);
+        worst = worst.max((d[12] - theirs).abs() / theirs.abs().max(1.0));
+    }
+    eprintln!("lean rider rates: largest relative difference to the peer {worst:e}");
+    // The peer is f64 code (Autolev's), with its own rounding.
+    assert!(worst < 1e-11, "rates differ from the peer's by {worst:e}");
+}
+
+#[test]
+fn state_space_and_eigenvalues_equal_the_peers() {
+    let peer = peer();
+    let rider = rider();
+    let (mut worst_a, mut worst_b, mut worst_eig) = (0.0f64, 0.0f64, 0.0f64);
+    for case in peer["linear"].as_array().expect("speeds") {
+        let v = number(&case["v"]);
+        let (a, b) = rider.state_space(v);
+        let peer_a: Vec<Vec<f64>> = case["A"].as_array().unwrap().iter().map(numbers).collect();
+        let peer_b: Vec<Vec<f64>> = case["B"].as_array().unwrap().iter().map(numbers).collect();
+        let scale_a = peer_a.iter().flatten().fold(0.0f64, |m, x| m.max(x.abs()));
+        let scale_b = peer_b.iter().flatten().fold(0.0f64, |m, x| m.max(x.abs()));
+        for i in 0..12 {
+            for j in 0..12 {
+                worst_a = worst_a.max((a[(i, j)] - peer_a[i][j]).abs() / scale_a);
+            }
+            for j in 0..3 {
+                worst_b = worst_b.max((b[(i, j)] - peer_b[i][j]).abs() / scale_b);
+            }
+        }
+        // The peer's twelve: six zero, then ours.
+        let mut theirs: Vec<(f64, f64)> = case["eigenvalues_re_im"]
+            .as_array()
+            .unwrap()
+            .iter()
+            .map(|z| (number(&z[0]), number(&z[1])))
+            .filter(|(re, im)| re.hypot(*im) > 1e-9)
+            .collect();
+        assert_eq!(theirs.len(), 6, "the peer's non-zero eigenvalues at {v} m/s");
+        theirs.sort_by(|p, q| q.0.total_cmp(&p.0).then(q.1.total_cmp(&p.1)));
+        let ours = rider.eigenvalues(v);
+        for (z, (re, im)) in ours.iter().zip(&theirs) {
+            worst_eig = worst_eig.max((z.re - re).hypot(z.im - im) / re.hypot(*im));
+        }
+        // The torso's inverted pendulum, at every speed.
+        assert!((6.5..8.0).contains(&ours[0].re) && ours[0].im == 0.0, "{v} m/s: {ours:?}");
+        // The other six eigenvalues of the whole A are zero: a defective one (the rear wheel's
+        // angle and speed form a Jordan block), which rounding splits by about the square root
+        // of the machine epsilon (±8.5e-9 at 1 m/s).
+        let all = a.complex_eigenvalues();
+        let zeros = all.iter().filter(|z| z.norm() < 1e-6).count();
+        assert_eq!(zeros, 6, "{v} m/s: {all:?}");
+        assert!(LATERAL.iter().all(|&k| k < 12));
+    }
+    eprintln!(
+        "lean rider: |ΔA| ≤ {worst_a:e} max|A|, |ΔB| ≤ {worst_b:e} max|B|, eigenvalues {worst_eig:e}"
+    );
+    assert!(worst_a < 1e-10, "A differs from the peer's by {worst_a:e} of its largest entry");
+    assert!(worst_b < 1e-10, "B differs from the peer's by {worst_b:e} of its largest entry");
+    assert!(worst_eig < 1e-10, "eigenvalues differ from the peer's by {worst_eig:e}");
+}
+
+#[test]
+fn the_passive_torso_has_no_stable_speed_and_a_stiff_joint_has_one() {
+    let rider = rider();
+    assert_eq!(rider.stable_speeds(0.0, 10.0, 100), Vec::<(f64, f64)>::new());
+    // A stiff, damped lean joint: the torso rides on the frame, and the bicycle's own window
+    // (weave and capsize speeds) appears; each edge is a change of sign of the largest real
+    // part.
+    let stiff = LeanRiderParams::browser_jason()
+        .with("k9", 1e4)
+        .and_then(|p| p.with("c9", 100.0))
+        .expect("valid");
+    let stiff = LeanRider::new(stiff).expect("upright");
+    let window = stiff.stable_speeds(0.0, 10.0, 100);
+    eprintln!("stiff lean joint: stable speeds {window:?}");
+    assert_eq!(window.len(), 1, "{window:?}");
+    let (lo, hi) = window[0];
+    assert!(lo > 1.0 && hi > lo + 1.0, "{window:?}");
+    for (v, stable) in [(lo - 1e-6, false), (lo + 1e-6, true)] {
+        assert_eq!(stiff.eigenvalues(v)[0].re < 0.0, stable, "at {v} m/s");
+    }
+}
+
+#[test]
+fn parameter_files_name_what_is_wrong() {
+    let text = carvallo::whipple::lean_rider::BROWSER_JASON;
+    assert!(LeanRiderParams::looks_like(text));
+    let without = text.replace("mg = ", "# mg = ");
+    assert_eq!(
+        LeanRiderParams::from_text(&without),
+        Err(LeanRiderError::Missing { name: "mg" })
+    );
+    let unknown = format!("{text}\nmz = 1.0\n");
+    assert_eq!(
+        LeanRiderParams::from_text(&unknown),
+        Err(LeanRiderError::Unknown { name: "mz".into() })
+    );
+    let nan = text.replace("mg = 48.816", "mg = nan");
+    assert_eq!(
+        LeanRiderParams::from_text(&nan),
+        Err(LeanRiderError::NotANumber { name: "mg".into(), text: "nan".into() })
+    );
+    let negative = text.replace("mg = 48.816", "mg = -48.816");
+    assert!(matches!(
+        LeanRiderParams::from_text(&negative),
+        Err(LeanRiderError::Invalid { name: "mg", .. })
+    ));
+    let e = LeanRiderParams::from_text("d1 0.9").unwrap_err();
+    assert_eq!(e.to_string(), "line 1: expected `name = value`, found `d1 0.9`");
+    // A front wheel far above the ground.
+    let high = LeanRiderParams::browser_jason().with("rf", 10.0).expect("positive");
+    assert_eq!(LeanRider::new(high).unwrap_err(), LeanRiderError::NoUpright);
+}
