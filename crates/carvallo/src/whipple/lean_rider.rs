@@ -184,8 +184,7 @@ impl LeanRiderParams {
                 && value <= 0.0
             {
                 Some("must be positive")
-            } else if (matches!(name, "c9" | "k9")
-                || (name.starts_with('i') && name[2..] != *"31"))
+            } else if (matches!(name, "c9" | "k9") || (name.starts_with('i') && name[2..] != *"31"))
                 && value < 0.0
             {
                 Some("must not be negative")
@@ -418,6 +417,93 @@ impl LeanRider {
     /// with roll and steer zero.
     pub fn upright_pitch(&self) -> f64 {
         self.lam
+    }
+
+    /// The benchmark's 26 parameters of this bicycle with the torso locked upright in the rear
+    /// frame (the Carvallo–Whipple bicycle the rider becomes when $q_9$ is held at zero): C's
+    /// frame is the benchmark's pitched by $\lambda$, so inertias turn by
+    /// $R = \begin{pmatrix}\cos\lambda&0&\sin\lambda\\0&1&0\\-\sin\lambda&0&\cos\lambda\end{pmatrix}$,
+    /// $I_B = R I_C R^\top + I_G$ moved by parallel axes to the common centre of the rear frame
+    /// and the torso; wheelbase and trail from the hinge geometry. Browser + Jason gives
+    /// $w = 1.121$, $c = 0.0686$, $m_B = 81.86$. The triangle inequalities a measured frame may
+    /// break are returned as warnings, as for a BicycleParameters file.
+    ///
+    /// # Errors
+    /// As [`WhippleParams::from_values_warning`](super::WhippleParams::from_values_warning).
+    pub fn locked(
+        &self,
+    ) -> Result<(super::WhippleParams, Vec<super::TriangleWarning>), super::WhippleError> {
+        let p = |name: &str| self.params.get(name).expect("Moore's parameter");
+        let (sl, cl) = self.lam.sin_cos();
+        let (c1, c3) = ([cl, -sl], [sl, cl]); // x and z components of C's axes 1 and 3
+        let along = |o: [f64; 2], a: f64, u: [f64; 2], b: f64, w: [f64; 2]| {
+            [o[0] + a * u[0] + b * w[0], o[1] + a * u[1] + b * w[1]]
+        };
+        let rr = p("rr");
+        let d_o = [0.0, -rr];
+        let ce = along(d_o, p("d1"), c1, 0.0, c3);
+        let fo = along(ce, p("d3"), c1, p("d2"), c3);
+        let w = fo[0];
+        let trail = ce[0] - ce[1] / cl * sl - w;
+        let co = along(d_o, p("l1"), c1, p("l2"), c3);
+        let go = [p("l5"), -rr + p("d4") + p("l6")];
+        let eo = along(fo, p("l3"), c1, p("l4"), c3);
+        // R I R^T for I = [[i11, 0, i31], [0, i22, 0], [i31, 0, i33]]: (xx, yy, zz, xz).
+        let turn = |i11: f64, i22: f64, i33: f64, i31: f64| {
+            let r = [[cl, sl], [-sl, cl]];
+            let i = [[i11, i31], [i31, i33]];
+            let mut o = [[0.0; 2]; 2];
+            for (a, row) in o.iter_mut().enumerate() {
+                for (b, x) in row.iter_mut().enumerate() {
+                    for k in 0..2 {
+                        for l in 0..2 {
+                            *x += r[a][k] * i[k][l] * r[b][l];
+                        }
+                    }
+                }
+            }
+            (o[0][0], i22, o[1][1], o[0][1])
+        };
+        let (mc, mg) = (p("mc"), p("mg"));
+        let mb = mc + mg;
+        let xb = (mc * co[0] + mg * go[0]) / mb;
+        let zb = (mc * co[1] + mg * go[1]) / mb;
+        let (cxx, cyy, czz, cxz) = turn(p("ic11"), p("ic22"), p("ic33"), p("ic31"));
+        // Parallel axes to the common centre: m (|r|^2 1 - r r^T).
+        let shift = |m: f64, c: [f64; 2]| {
+            let (rx, rz) = (c[0] - xb, c[1] - zb);
+            (m * rz * rz, m * (rx * rx + rz * rz), m * rx * rx, -m * rx * rz)
+        };
+        let (s1, s2) = (shift(mc, co), shift(mg, go));
+        let (hxx, hyy, hzz, hxz) = turn(p("ie11"), p("ie22"), p("ie33"), p("ie31"));
+        super::WhippleParams::from_values_warning([
+            w,
+            trail,
+            self.lam,
+            p("g"),
+            rr,
+            p("md"),
+            p("id11"),
+            p("id22"),
+            xb,
+            zb,
+            mb,
+            cxx + p("ig11") + s1.0 + s2.0,
+            cyy + p("ig22") + s1.1 + s2.1,
+            czz + p("ig33") + s1.2 + s2.2,
+            cxz + p("ig31") + s1.3 + s2.3,
+            eo[0],
+            eo[1],
+            p("me"),
+            hxx,
+            hyy,
+            hzz,
+            hxz,
+            p("rf"),
+            p("mf"),
+            p("if11"),
+            p("if22"),
+        ])
     }
 
     /// The front contact's height (m) and its derivative in pitch (m/rad) at roll `q4`,

@@ -45,7 +45,8 @@ fn parameters_and_upright_pitch_equal_the_peers() {
 fn rates_equal_the_peers_at_its_seeded_states() {
     let peer = peer();
     let rider = rider();
-    let names = ["q1p", "q2p", "q3p", "q4p", "q6p", "q7p", "q8p", "q9p", "u4p", "u6p", "u7p", "u9p"];
+    let names =
+        ["q1p", "q2p", "q3p", "q4p", "q6p", "q7p", "q8p", "q9p", "u4p", "u6p", "u7p", "u9p"];
     let mut worst = 0.0f64;
     let states = peer["nonlinear"]["lam_constant"].as_array().expect("states");
     assert_eq!(states.len(), 6);
@@ -141,15 +142,50 @@ fn the_passive_torso_has_no_stable_speed_and_a_stiff_joint_has_one() {
     }
 }
 
+/// The stiffer the lean joint, the nearer the rider's four slow eigenvalues come to the
+/// Whipple bicycle's with the torso locked in the rear frame ([`LeanRider::locked`], evaluated
+/// by the hand-derived `generated/whipple.ir`): the difference falls as $1/k_9$ (3.1e-4, 3.1e-5,
+/// 3.1e-6 at $k_9 = 10^5, 10^6, 10^7$; beyond, rounding in the stiff matrix), and the two
+/// fast ones are the torso's oscillation on the joint, near $\pm i\sqrt{k_9/I}$.
+#[test]
+fn a_stiff_lean_joint_is_the_locked_whipple_bicycle() {
+    use carvallo::whipple::Whipple;
+    let rider = rider();
+    let (locked, _warnings) = rider.locked().expect("a valid bicycle");
+    assert!((locked.values()[0] - 1.121).abs() < 5e-4, "wheelbase {}", locked.values()[0]);
+    let whipple = Whipple::new(locked);
+    let mut previous = f64::INFINITY;
+    for k9 in [1e5, 1e6, 1e7] {
+        let stiff = LeanRider::new(LeanRiderParams::browser_jason().with("k9", k9).unwrap())
+            .expect("upright");
+        let mut worst = 0.0f64;
+        for v in [2.0, 4.0, 5.5, 8.0] {
+            let ours = stiff.eigenvalues(v);
+            // The torso's oscillation: the two of largest size, purely imaginary.
+            let mut slow: Vec<_> = ours.iter().filter(|z| z.norm() < 60.0).copied().collect();
+            assert_eq!(slow.len(), 4, "k9 = {k9}, {v} m/s: {ours:?}");
+            let mut theirs: Vec<_> =
+                whipple.eigenvalues(v).iter().map(|e| nalgebra::Complex::new(e.re, e.im)).collect();
+            let key = |z: &nalgebra::Complex<f64>| (z.re, z.im);
+            slow.sort_by(|a, b| key(a).partial_cmp(&key(b)).unwrap());
+            theirs.sort_by(|a, b| key(a).partial_cmp(&key(b)).unwrap());
+            for (a, b) in slow.iter().zip(&theirs) {
+                worst = worst.max((a - b).norm() / b.norm());
+            }
+        }
+        eprintln!("k9 = {k9:e}: slow eigenvalues within {worst:e} of the locked Whipple bicycle's");
+        assert!(worst < 1e3 / k9, "k9 = {k9}: {worst:e}");
+        assert!(worst < previous / 5.0, "k9 = {k9}: {worst:e} after {previous:e}");
+        previous = worst;
+    }
+}
+
 #[test]
 fn parameter_files_name_what_is_wrong() {
     let text = carvallo::whipple::lean_rider::BROWSER_JASON;
     assert!(LeanRiderParams::looks_like(text));
     let without = text.replace("mg = ", "# mg = ");
-    assert_eq!(
-        LeanRiderParams::from_text(&without),
-        Err(LeanRiderError::Missing { name: "mg" })
-    );
+    assert_eq!(LeanRiderParams::from_text(&without), Err(LeanRiderError::Missing { name: "mg" }));
     let unknown = format!("{text}\nmz = 1.0\n");
     assert_eq!(
         LeanRiderParams::from_text(&unknown),
