@@ -310,8 +310,9 @@ fn solve4<T: Real>(mut m: [[T; 4]; 4], mut f: [T; 4]) -> [T; 4] {
     for k in 0..4 {
         for i in k + 1..4 {
             let r = m[i][k] / m[k][k];
-            for j in k..4 {
-                m[i][j] = m[i][j] - r * m[k][j];
+            let pivot_row = m[k];
+            for (x, p) in m[i].iter_mut().zip(pivot_row).skip(k) {
+                *x = *x - r * p;
             }
             f[i] = f[i] - r * f[k];
         }
