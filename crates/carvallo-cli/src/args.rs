@@ -3,6 +3,7 @@
 //! `--model benchmark|FILE` names, and the bounded reading of input files ([`read_text`]).
 
 use carvallo::parameter_text::{add_rider, Loaded, Rider, UncertainParams};
+use carvallo::whipple::lean_rider::{LeanRider, LeanRiderParams};
 use carvallo::whipple::WhippleParams;
 
 /// A finite number, for clap's `value_parser` (the error names the value with its option).
@@ -172,12 +173,56 @@ pub fn side_view(
     Ok(carvallo::whipple::drawing::SideView::new(&params.params, rider.as_ref()))
 }
 
+/// The name `--model` gives Moore's (2012) leaning rider with BicycleParameters' Browser +
+/// Jason ([`LeanRiderParams::browser_jason`]).
+pub const LEAN_RIDER: &str = "lean-rider";
+
+/// The commands that take the leaning rider, for the error of the others.
+pub const LEAN_RIDER_COMMANDS: &str = "eig, window and statespace";
+
+/// The leaning rider when `model` names it: `lean-rider`, or a parameter file in Moore's names
+/// ([`LeanRiderParams::looks_like`]); `None` for any other model. `--rider` and `--strict`
+/// read a bicycle file and are errors with it.
+pub fn lean_rider(model: &str, data: &DataOptions) -> Result<Option<LeanRider>, String> {
+    let params = if model == LEAN_RIDER {
+        LeanRiderParams::browser_jason()
+    } else if model == "benchmark" || std::fs::metadata(model).is_err() {
+        return Ok(None);
+    } else {
+        let text = read_model_file(model)?;
+        if !LeanRiderParams::looks_like(&text) {
+            return Ok(None);
+        }
+        LeanRiderParams::from_text(&text)
+            .map_err(|e| format!("invalid leaning-rider file `{model}`: {e}"))?
+    };
+    if data.any() {
+        return Err(format!(
+            "`--rider` and `--strict` read a bicycle file; `{model}` is the leaning rider, whose \
+             rider is in its parameters"
+        ));
+    }
+    LeanRider::new(params).map(Some).map_err(|e| format!("invalid leaning rider `{model}`: {e}"))
+}
+
 /// As [`uncertain_bicycle`], the warnings returned, not printed.
 fn read_bicycle(model: &str, data: &DataOptions) -> Result<(UncertainParams, Vec<String>), String> {
+    let not_yet = || {
+        format!(
+            "`{model}` is the leaning rider (Moore 2012): this command does not take it yet; \
+             {LEAN_RIDER_COMMANDS} do"
+        )
+    };
+    if model == LEAN_RIDER {
+        return Err(not_yet());
+    }
     let loaded = if model == "benchmark" {
         Loaded { params: UncertainParams::exact(WhippleParams::benchmark()), warnings: Vec::new() }
     } else {
         let text = read_model_file(model)?;
+        if LeanRiderParams::looks_like(&text) {
+            return Err(not_yet());
+        }
         let read = if text.lines().any(|l| l.trim_start().starts_with('[')) {
             UncertainParams::from_any(&text).map(|params| Loaded { params, warnings: Vec::new() })
         } else {

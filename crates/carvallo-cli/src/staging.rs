@@ -148,10 +148,12 @@ fn clean_leftovers(dir: &Path, parent: &Path) {
         let name = path.file_name().map(|n| n.to_string_lossy().into_owned()).unwrap_or_default();
         let old = name[prefix.len()..].starts_with("old-");
         // A killed fallback: DIR absent, the previous report set aside complete.
-        if old && !dir.exists() && path.join(MARKER).is_file() {
-            if std::fs::rename(&path, dir).is_ok() {
-                continue;
-            }
+        if old
+            && !dir.exists()
+            && path.join(MARKER).is_file()
+            && std::fs::rename(&path, dir).is_ok()
+        {
+            continue;
         }
         let _ = std::fs::remove_dir_all(&path);
     }

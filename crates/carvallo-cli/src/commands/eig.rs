@@ -26,7 +26,8 @@ use serde_json::{json, Value};
 #[derive(Clone, Debug, PartialEq, clap::Args)]
 pub struct Args {
     /// The bicycle: `benchmark` or a parameter file (the anchors' TOML or BicycleParameters'
-    /// `name = value+/-sigma` text)
+    /// `name = value+/-sigma` text); or Moore's leaning rider: `lean-rider` (Browser + Jason)
+    /// or a file in Moore's names
     #[arg(long, value_name = "MODEL")]
     pub model: String,
     #[command(flatten)]
@@ -61,6 +62,15 @@ fn mode_json(m: &Mode) -> Value {
 
 /// Runs `carvallo eig`: the text to print, or an error naming the bad value.
 pub fn run(cmd: &Args) -> Result<String, String> {
+    if let Some(rider) = crate::args::lean_rider(&cmd.model, &cmd.data)? {
+        if !cmd.gain.is_empty() {
+            return Err(format!(
+                "--gain (the closed loop) is for the bicycle, not yet for the leaning rider `{}`",
+                cmd.model
+            ));
+        }
+        return super::lean_rider::eig(&cmd.model, &rider, &cmd.speed, cmd.json);
+    }
     let bike = Whipple::new(crate::args::bicycle(&cmd.model, &cmd.data)?);
     let mut texts = Vec::new();
     let mut values = Vec::new();

@@ -7,6 +7,7 @@ pub mod accel;
 pub mod bode;
 pub mod eig;
 pub mod kinematics;
+pub mod lean_rider;
 pub mod parameters;
 pub mod plot;
 pub mod report;

@@ -18,7 +18,8 @@ use crate::args::DataOptions;
 #[derive(Clone, Debug, PartialEq, clap::Args)]
 pub struct Args {
     /// The bicycle: `benchmark` or a parameter file (the anchors' TOML or BicycleParameters'
-    /// `name = value+/-sigma` text)
+    /// `name = value+/-sigma` text); or Moore's leaning rider: `lean-rider` (Browser + Jason)
+    /// or a file in Moore's names
     #[arg(long, value_name = "MODEL")]
     pub model: String,
     #[command(flatten)]
@@ -57,6 +58,9 @@ fn to_text(ss: &StateSpace) -> String {
 /// Runs `carvallo statespace`: the text to print, or an error naming the bad value.
 pub fn run(cmd: &Args) -> Result<String, String> {
     let Args { model, data, speed, json } = cmd;
+    if let Some(rider) = crate::args::lean_rider(model, data)? {
+        return super::lean_rider::statespace(model, &rider, speed, *json);
+    }
     let spaces = Whipple::new(crate::args::bicycle(model, data)?).state_spaces(speed);
     if data.rider.is_some() {
         // Say that a rider was added: the matrices alone look the same with and without.

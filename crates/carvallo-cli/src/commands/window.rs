@@ -53,7 +53,9 @@ pub const CARVALLO_MODELS: [&str; 4] =
 pub struct Args {
     /// The bicycle: `benchmark`, a parameter file (the anchors' TOML or BicycleParameters'
     /// `name = value+/-sigma` text), or one of Carvallo's models `carvallo`,
-    /// `carvallo-formulas`, `carvallo-memoir`, `carvallo-quartic`
+    /// `carvallo-formulas`, `carvallo-memoir`, `carvallo-quartic`; or Moore's leaning rider:
+    /// `lean-rider` (Browser + Jason) or a file in Moore's names (its stable speeds in a scan of
+    /// 0 to 20 m/s)
     #[arg(long, value_name = "MODEL")]
     pub model: String,
     #[command(flatten)]
@@ -127,6 +129,15 @@ pub fn run(cmd: &Args) -> Result<String, String> {
             ));
         }
         return carvallo_window(model).and_then(|w| render_carvallo(model, &w, *json));
+    }
+    if let Some(rider) = crate::args::lean_rider(model, data)? {
+        if feedback.any() {
+            return Err(format!(
+                "the closed loop (--gain, --gain-table, --vmin, --vmax, --assist-down-to) is for \
+                 the bicycle, not yet for the leaning rider `{model}`"
+            ));
+        }
+        return super::lean_rider::window(model, &rider, *json);
     }
     if feedback.any() {
         return closed_loop(model, data, feedback, *json);

@@ -1,0 +1,149 @@
+//! `--model lean-rider` (and a parameter file in Moore's names) in `eig`, `window` and
+//! `statespace`, against BicycleParameters 1.5.2's `MooreRiderLean2012Model`
+//! (`data/mooreriderlean2012/browser_jason_peer.json`): every entry of A and B and the six
+//! non-zero eigenvalues at the peer's six speeds, through the binary's JSON; the empty window
+//! of the passive torso and the window of a stiff joint; the commands that do not take the
+//! model yet, and the options that do not apply, are errors naming it (exit 2).
+
+use std::process::Command;
+
+use serde_json::Value;
+
+fn carvallo(args: &[&str]) -> (i32, String, String) {
+    let out = Command::new(env!("CARGO_BIN_EXE_carvallo")).args(args).output().unwrap();
+    (
+        out.status.code().unwrap_or(-1),
+        String::from_utf8(out.stdout).unwrap(),
+        String::from_utf8(out.stderr).unwrap(),
+    )
+}
+
+fn root() -> std::path::PathBuf {
+    std::path::Path::new(env!("CARGO_MANIFEST_DIR")).join("../..")
+}
+
+fn peer() -> Value {
+    let path = root().join("data/mooreriderlean2012/browser_jason_peer.json");
+    serde_json::from_str(&std::fs::read_to_string(path).unwrap()).unwrap()
+}
+
+fn number(v: &Value) -> f64 {
+    match v {
+        Value::String(s) => s.parse().unwrap(),
+        v => v.as_f64().unwrap(),
+    }
+}
+
+fn matrix(v: &Value) -> Vec<Vec<f64>> {
+    v.as_array()
+        .unwrap()
+        .iter()
+        .map(|r| r.as_array().unwrap().iter().map(number).collect())
+        .collect()
+}
+
+#[test]
+fn eig_and_statespace_equal_bicycleparameters() {
+    let peer = peer();
+    let cases = peer["linear"].as_array().unwrap();
+    let speeds: Vec<String> = cases.iter().map(|c| number(&c["v"]).to_string()).collect();
+    let speeds = speeds.join(",");
+    let file = root().join("data/mooreriderlean2012/browser_jason.toml");
+    for model in ["lean-rider", file.to_str().unwrap()] {
+        let (code, out, err) =
+            carvallo(&["statespace", "--model", model, "--speed", &speeds, "--json"]);
+        assert_eq!(code, 0, "{err}");
+        let ours: Value = serde_json::from_str(&out).unwrap();
+        let (code, out, err) = carvallo(&["eig", "--model", model, "--speed", &speeds, "--json"]);
+        assert_eq!(code, 0, "{err}");
+        let eig: Value = serde_json::from_str(&out).unwrap();
+        let (mut worst_ab, mut worst_eig) = (0.0f64, 0.0f64);
+        for (k, case) in cases.iter().enumerate() {
+            let ss = &ours[k];
+            assert_eq!(ss["state"][0], "q1");
+            assert_eq!(ss["inputs"], serde_json::json!(["T4", "T7", "T9"]));
+            for key in ["A", "B"] {
+                let (a, b) = (matrix(&ss[key]), matrix(&case[key]));
+                let scale = b.iter().flatten().fold(0.0f64, |m, x| m.max(x.abs()));
+                for (ra, rb) in a.iter().zip(&b) {
+                    assert_eq!(ra.len(), rb.len());
+                    for (x, y) in ra.iter().zip(rb) {
+                        worst_ab = worst_ab.max((x - y).abs() / scale);
+                    }
+                }
+            }
+            let mut theirs: Vec<(f64, f64)> = case["eigenvalues_re_im"]
+                .as_array()
+                .unwrap()
+                .iter()
+                .map(|z| (number(&z[0]), number(&z[1])))
+                .filter(|(re, im)| re.hypot(*im) > 1e-9)
+                .collect();
+            theirs.sort_by(|p, q| q.0.total_cmp(&p.0).then(q.1.total_cmp(&p.1)));
+            let list = eig[k]["eigenvalues"].as_array().unwrap();
+            assert_eq!(list.len(), 6);
+            for (z, (re, im)) in list.iter().zip(&theirs) {
+                let d = (number(&z["re"]) - re).hypot(number(&z["im"]) - im) / re.hypot(*im);
+                worst_eig = worst_eig.max(d);
+            }
+        }
+        eprintln!("{model}: A, B within {worst_ab:e} of max, eigenvalues {worst_eig:e}");
+        assert!(worst_ab < 1e-10, "{model}: {worst_ab:e}");
+        assert!(worst_eig < 1e-10, "{model}: {worst_eig:e}");
+    }
+}
+
+#[test]
+fn window_is_empty_for_the_passive_torso_and_not_for_a_stiff_joint() {
+    let (code, out, err) = carvallo(&["window", "--model", "lean-rider", "--json"]);
+    assert_eq!(code, 0, "{err}");
+    let w: Value = serde_json::from_str(&out).unwrap();
+    assert_eq!(w["stable"], serde_json::json!([]));
+    let least = number(&w["least_growth"]["re"]);
+    assert!(least > 6.0 && number(&w["least_growth"]["im"]) == 0.0, "{w}");
+    let (_, text, _) = carvallo(&["window", "--model", "lean-rider"]);
+    assert!(text.contains("no stable speed from 0 to 20 m/s"), "{text}");
+
+    let dir = std::env::temp_dir().join(format!("carvallo-lean-{}", std::process::id()));
+    std::fs::create_dir_all(&dir).unwrap();
+    let base =
+        std::fs::read_to_string(root().join("data/mooreriderlean2012/browser_jason.toml")).unwrap();
+    let stiff = base.replace("k9 = 0.0", "k9 = 10000.0").replace("c9 = 0.0", "c9 = 100.0");
+    assert_ne!(stiff, base);
+    let path = dir.join("stiff.toml");
+    std::fs::write(&path, stiff).unwrap();
+    let (code, out, err) = carvallo(&["window", "--model", path.to_str().unwrap(), "--json"]);
+    assert_eq!(code, 0, "{err}");
+    let w: Value = serde_json::from_str(&out).unwrap();
+    let stable = w["stable"].as_array().unwrap();
+    assert_eq!(stable.len(), 1, "{w}");
+    let (lo, hi) = (number(&stable[0][0]), number(&stable[0][1]));
+    // The runtime's test finds the same edges by its own bisection.
+    assert!((lo - 4.990701769990846).abs() < 1e-8 && (hi - 7.109479530388491).abs() < 1e-8, "{w}");
+    std::fs::remove_dir_all(&dir).ok();
+}
+
+#[test]
+fn what_does_not_apply_is_an_error_naming_the_model() {
+    for args in [
+        &["bode", "--model", "lean-rider", "--speed", "4", "--input", "steer", "--output", "roll"]
+            [..],
+        &["simulate", "--model", "lean-rider", "--speed", "4", "--lean", "1", "--duration", "1"],
+        &["window", "--model", "lean-rider", "--rider", "x"],
+        &["eig", "--model", "lean-rider", "--speed", "4", "--gain", "k_roll_roll=1"],
+    ] {
+        let (code, out, err) = carvallo(args);
+        assert_eq!(code, 2, "{args:?}: {out}{err}");
+        assert!(err.contains("lean"), "{args:?}: {err}");
+    }
+    let dir = std::env::temp_dir().join(format!("carvallo-lean-bad-{}", std::process::id()));
+    std::fs::create_dir_all(&dir).unwrap();
+    let base =
+        std::fs::read_to_string(root().join("data/mooreriderlean2012/browser_jason.toml")).unwrap();
+    let path = dir.join("bad.toml");
+    std::fs::write(&path, base.replace("mg = 48.816", "mg = -1")).unwrap();
+    let (code, _, err) = carvallo(&["eig", "--model", path.to_str().unwrap(), "--speed", "4"]);
+    assert_eq!(code, 2);
+    assert!(err.contains("invalid parameter mg = -1: must be positive"), "{err}");
+    std::fs::remove_dir_all(&dir).ok();
+}
