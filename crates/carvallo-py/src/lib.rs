@@ -17,6 +17,8 @@ mod common;
 #[cfg(feature = "python")]
 mod guard;
 #[cfg(feature = "python")]
+mod lean_rider;
+#[cfg(feature = "python")]
 mod python;
 #[cfg(feature = "python")]
 mod rolling;

@@ -212,6 +212,10 @@ def plot_bode(bicycles, speeds=5.0, input="steer", output="roll", omegas=None, n
             f"the {MAX_CURVES} curves of one figure")
     if speeds.size == 0 or omegas.size == 0:
         raise carvallo.ParameterError("invalid speeds or omegas: none given")
+    if (omegas <= 0).any():
+        raise carvallo.ParameterError(
+            f"invalid omega {float(omegas[omegas <= 0][0])!r}: the plot's logarithmic frequency axis "
+            "needs positive frequencies")
     if names is None:
         default = ["Bicycle"] if len(bicycles) == 1 else [
             f"bicycle {k + 1}" for k in range(len(bicycles))]

@@ -328,7 +328,8 @@ fn state_matrix<'py>(
 
 /// The state space with roll and steer torque as inputs at each speed: `(A, B)` of shapes
 /// (n, 4, 4) and (n, 4, 2), x = (lean, steer, lean rate, steer rate), u = (T_phi, T_delta),
-/// C = I, D = 0 (as `carvallo statespace`).
+/// C = I, D = 0 (as `carvallo statespace`). For the leaning rider's params (`lean_rider()`),
+/// shapes (n, 12, 12) and (n, 12, 3), Moore's 12 states and the torques T4, T7, T9.
 #[pyfunction]
 #[pyo3(signature = (params, speeds, strict = false))]
 fn state_space<'py>(
@@ -337,6 +338,9 @@ fn state_space<'py>(
     speeds: &Bound<'py, PyAny>,
     strict: bool,
 ) -> PyResult<(Bound<'py, PyAny>, Bound<'py, PyAny>)> {
+    if let Some(rider) = crate::lean_rider::rider_of(params)? {
+        return crate::lean_rider::state_space(py, &rider, &speeds_of(speeds)?);
+    }
     let bike = Whipple::new(params_of(params, strict)?);
     let speeds = speeds_of(speeds)?;
     // The state spaces, then A and B copied out of them.
@@ -733,7 +737,8 @@ fn modes<'py>(
 }
 
 /// The eigenvalues at each speed, shape (n, 4) complex, sorted by real then imaginary part (as
-/// `carvallo eig`).
+/// `carvallo eig`). For the leaning rider's params (`lean_rider()`), the six of roll, steer and
+/// lean, shape (n, 6), by decreasing real part.
 #[pyfunction]
 #[pyo3(signature = (params, speeds, strict = false))]
 fn eigenvalues<'py>(
@@ -742,6 +747,9 @@ fn eigenvalues<'py>(
     speeds: &Bound<'py, PyAny>,
     strict: bool,
 ) -> PyResult<Bound<'py, PyArray2<Complex64>>> {
+    if let Some(rider) = crate::lean_rider::rider_of(params)? {
+        return crate::lean_rider::eigenvalues(py, &rider, &speeds_of(speeds)?);
+    }
     let bike = Whipple::new(params_of(params, strict)?);
     let speeds = speeds_of(speeds)?;
     within(&format!("{} speeds", speeds.len()), speeds.len() as f64, 4.0 * 16.0)?;
@@ -774,6 +782,8 @@ fn window_dict<'py>(py: Python<'py>, w: &StabilityWindow) -> PyResult<Bound<'py,
 
 /// `{"weave_speed", "capsize_speed", "stable": [(from, to), ...]}` (m/s; None where a speed
 /// does not exist, inf for an interval stable at every larger speed), as `carvallo window`.
+/// For the leaning rider's params (`lean_rider()`), `{"stable", "scan", "state", "inputs"}`:
+/// the stable speeds of a scan of 0 to 20 m/s.
 #[pyfunction]
 #[pyo3(signature = (params, strict = false))]
 fn window<'py>(
@@ -781,6 +791,9 @@ fn window<'py>(
     params: &Bound<'py, PyAny>,
     strict: bool,
 ) -> PyResult<Bound<'py, PyDict>> {
+    if let Some(rider) = crate::lean_rider::rider_of(params)? {
+        return crate::lean_rider::window(py, &rider);
+    }
     window_dict(py, &Whipple::new(params_of(params, strict)?).stability_window())
 }
 
@@ -1477,6 +1490,7 @@ fn carvallo_module(m: &Bound<'_, PyModule>) -> PyResult<()> {
     m.add_function(wrap_pyfunction!(monte_carlo, m)?)?;
     m.add_function(wrap_pyfunction!(eigenvalue_bands, m)?)?;
     crate::rolling::register(m)?;
+    crate::lean_rider::register(m)?;
     register_plot(m)?;
     Ok(())
 }

@@ -95,6 +95,8 @@ CHILD = textwrap.dedent(
         "eigenvalue_bands": dict(params=B, sigma={"c": 0.001}, speeds=[1.0, 5.0], samples=50,
                                  seed=1),
         "simulate_hoop": dict(theta0=0.1, s0=3.0, duration=0.2, every=10),
+        "lean_rider": dict(path=FIXTURE.replace(
+            "benchmark-1pct.txt", "mooreriderlean2012/browser_jason.toml")),
         "simulate_unicycle": dict(rider=RIDER, wheel=WHEEL, radius=0.5, theta0=0.05, s0=3.0,
                                   duration=0.2, every=10),
     }

@@ -135,6 +135,10 @@ def test_the_submodule_imports_and_a_bicycle_object_names_itself():
     assert {"v = 4 m/s", "v = 6 m/s"} <= set(t)
     with pytest.raises(carvallo.ParameterError, match="1 names for 2 bicycles"):
         carvallo.plot_bode([carvallo.benchmark()] * 2, names=["a"])
+    # Found by the seeded fuzz of test_edges: ω = 0 (valid for frequency_response) was a bare
+    # ValueError from the logarithmic axis.
+    with pytest.raises(carvallo.ParameterError, match="invalid omega 0.0: the plot's log"):
+        carvallo.plot_bode(carvallo.benchmark(), omegas=[0.0, 1.0])
 
 
 def test_without_matplotlib_the_error_says_how_to_install_it(monkeypatch):
