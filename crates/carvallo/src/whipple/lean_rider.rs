@@ -30,7 +30,12 @@
 
 use std::fmt;
 use std::ops::{Add, Div, Mul, Sub};
+use std::sync::atomic::AtomicBool;
 use std::sync::OnceLock;
+
+use crate::numerics::integrate::{
+    integrate_until, Grid, IntegrateError, Integration, Point, Stats,
+};
 
 use carvallo_ir::dual::{self, Dual};
 use carvallo_ir::Program;
@@ -44,6 +49,15 @@ crate::scene! {
         outputs: [M_q4d_q4d, M_q4d_q6d, M_q4d_q7d, M_q4d_q9d, M_q6d_q6d, M_q6d_q7d, M_q6d_q9d,
                   M_q7d_q7d, M_q7d_q9d, M_q9d_q9d, f_q4d, f_q6d, f_q7d, f_q9d,
                   q3d, q5d, q8d, P_u, P_v],
+    }
+}
+
+crate::scene! {
+    /// The total energy (kinetic plus gravity's potential; the lean joint's spring is not in
+    /// it): conserved without torques and damping, what a simulation's drift is measured by.
+    pub mod energy_scene {
+        model: lean_rider,
+        outputs: [energy],
     }
 }
 
@@ -372,6 +386,55 @@ pub struct LeanRider {
     lam: f64,
     dynamics: [f64; dynamics_scene::Args::LEN],
     contact: [f64; contact_scene::Args::LEN],
+    energy: [f64; energy_scene::Args::LEN],
+}
+
+/// The lean joint in a simulation.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum Joint {
+    /// Free: the torso moves on it under gravity, the spring and damper and $T_9$.
+    Free,
+    /// Locked at its initial angle: $\dot u_9 = 0$ (the lean equation gives the joint's
+    /// reaction and is dropped); the bicycle of [`LeanRider::locked`] when that angle is zero.
+    Locked,
+}
+
+/// How a simulation ended: a physical outcome, not an error.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub enum RunEnd {
+    /// The end of the duration.
+    Completed,
+    /// The roll $|q_4|$ reached the fall angle at `t` (s).
+    Fell {
+        /// When (s).
+        t: f64,
+    },
+    /// The torso's lean on its joint $|q_9|$ reached the fall angle at `t` (s).
+    TorsoFell {
+        /// When (s).
+        t: f64,
+    },
+    /// The stop flag (Ctrl-C) ended the run at `t` (s), the last accepted step.
+    Interrupted {
+        /// When (s).
+        t: f64,
+    },
+}
+
+/// A simulation of the leaning rider: the samples of the grid up to its end.
+#[derive(Clone, Debug, PartialEq)]
+pub struct LeanRun {
+    /// The sample times (s).
+    pub times: Vec<f64>,
+    /// The states (Moore's twelve, then the pitch `q5`).
+    pub states: Vec<[f64; 13]>,
+    /// How it ended, and the state then.
+    pub end: (RunEnd, [f64; 13]),
+    /// The integrator's counts.
+    pub stats: Stats,
+    /// The largest change of the total energy at the accepted steps (J): a measure of the
+    /// integration's error when no torque, damping or spring does work.
+    pub max_energy_drift: f64,
 }
 
 /// A scene's argument array with the parameters of `params` (and `lam`) and the inputs zero.
@@ -401,11 +464,13 @@ impl LeanRider {
         let mut rider = LeanRider {
             dynamics: filled(&params, 0.0, dynamics_scene::PARAMS),
             contact,
+            energy: filled(&params, 0.0, energy_scene::PARAMS),
             params,
             lam: 0.0,
         };
         rider.lam = rider.pitch_on_ground(0.0, 0.0).ok_or(LeanRiderError::NoUpright)?;
         rider.dynamics = filled(&rider.params, rider.lam, dynamics_scene::PARAMS);
+        rider.energy = filled(&rider.params, rider.lam, energy_scene::PARAMS);
         Ok(rider)
     }
 
@@ -555,9 +620,12 @@ impl LeanRider {
     /// The state derivative at the state `x` (Moore's twelve, then the pitch `q5`) under the
     /// torques `[T4, T6, T7, T9]` (N m): the twelve rates, then $\dot q_5$.
     pub fn rate(&self, x: &[f64; 13], torques: &[f64; 4]) -> [f64; 13] {
-        let mut a = self.dynamics;
-        let (p, i) = (dynamics_scene::PARAMS, dynamics_scene::INPUTS);
-        let values = [
+        self.rate_with(x, torques, Joint::Free)
+    }
+
+    /// The inputs of a scene at the state `x` and the torques, by name.
+    fn inputs_at(x: &[f64; 13], torques: &[f64; 4]) -> [(&'static str, f64); 12] {
+        [
             ("q4", x[3]),
             ("q5", x[PITCH]),
             ("q7", x[5]),
@@ -570,15 +638,133 @@ impl LeanRider {
             ("T6", torques[1]),
             ("T7", torques[2]),
             ("T9", torques[3]),
-        ];
-        for (name, v) in values {
+        ]
+    }
+
+    /// The total energy (J) at the state `x` (kinetic plus gravity's potential).
+    pub fn energy(&self, x: &[f64; 13]) -> f64 {
+        let mut a = self.energy;
+        for (name, v) in Self::inputs_at(x, &[0.0; 4]) {
+            if let Some(s) = a.get_mut(slot(energy_scene::PARAMS, energy_scene::INPUTS, name)) {
+                *s = v;
+            }
+        }
+        energy_scene::eval_array(&a)[0]
+    }
+
+    /// As [`rate`](Self::rate), the lean joint free or locked ([`Joint`]); with it locked the
+    /// lean rates $\dot q_9$, $\dot u_9$ are zero and the other three accelerations solve the
+    /// $3 \times 3$ system of roll, rear wheel and steer.
+    pub fn rate_with(&self, x: &[f64; 13], torques: &[f64; 4], joint: Joint) -> [f64; 13] {
+        let mut a = self.dynamics;
+        let (p, i) = (dynamics_scene::PARAMS, dynamics_scene::INPUTS);
+        for (name, v) in Self::inputs_at(x, torques) {
             if let Some(s) = a.get_mut(slot(p, i, name)) {
                 *s = v;
             }
         }
-        let o = dynamics_scene::eval_array(&a);
+        let mut o = dynamics_scene::eval_array(&a);
+        if joint == Joint::Locked {
+            // The lean row replaced by u9' = 0: M's last row and column the unit vector.
+            for k in [3, 6, 8] {
+                o[k] = 0.0;
+            }
+            o[9] = 1.0;
+            o[13] = 0.0;
+        }
         let x12: [f64; 12] = std::array::from_fn(|k| x[k]);
-        assemble(&o, &x12)
+        let mut d = assemble(&o, &x12);
+        if joint == Joint::Locked {
+            d[7] = 0.0;
+        }
+        d
+    }
+
+    /// Integrates the nonlinear equations from `x0` (Moore's twelve, then the pitch, which is
+    /// first put on the contact constraint by Newton) under the constant torques
+    /// `[T4, T6, T7, T9]` (N m) over `grid` by `how`, with the lean joint `joint`, until the
+    /// grid's end, the roll $|q_4|$ or the torso's lean $|q_9|$ reaching `fall_angle` (rad;
+    /// [`RunEnd::Fell`], [`RunEnd::TorsoFell`]) or `stop` being set. At every evaluation the
+    /// pitch is put back on the constraint by one Newton step from the carried value, as the
+    /// bicycle's right-hand side does; the energy drift is measured at every accepted step.
+    ///
+    /// # Errors
+    /// [`IntegrateError::Model`] with [`LeanRiderError::NoUpright`] when the front wheel
+    /// cannot touch the ground at the start; the integrator's failures.
+    #[allow(clippy::too_many_arguments)]
+    pub fn simulate(
+        &self,
+        x0: [f64; 13],
+        torques: [f64; 4],
+        joint: Joint,
+        grid: &Grid,
+        how: &Integration,
+        fall_angle: f64,
+        stop: &AtomicBool,
+    ) -> Result<LeanRun, IntegrateError<LeanRiderError>> {
+        let mut x0 = x0;
+        x0[PITCH] = self
+            .pitch_near(x0[3], x0[PITCH], x0[5])
+            .ok_or(IntegrateError::Model(LeanRiderError::NoUpright))?;
+        let energy0 = self.energy(&x0);
+        let mut rhs = |_t: f64, x: &[f64; 13]| -> Result<[f64; 13], LeanRiderError> {
+            let mut y = *x;
+            let (h, dh) = self.contact(y[3], y[PITCH], y[5]);
+            y[PITCH] -= h / dh;
+            Ok(self.rate_with(&y, &torques, joint))
+        };
+        let mut roll =
+            |x: &[f64; 13]| -> Result<f64, LeanRiderError> { Ok(fall_angle - x[3].abs()) };
+        let mut torso =
+            |x: &[f64; 13]| -> Result<f64, LeanRiderError> { Ok(fall_angle - x[7].abs()) };
+        let (mut times, mut states) = (Vec::new(), Vec::new());
+        let mut drift = 0.0f64;
+        let mut observe = |point: Point, t: f64, x: &[f64; 13]| -> Result<(), LeanRiderError> {
+            match point {
+                Point::Sample(_) => {
+                    times.push(t);
+                    states.push(*x);
+                }
+                Point::Step => drift = drift.max((self.energy(x) - energy0).abs()),
+                Point::Event => {}
+            }
+            Ok(())
+        };
+        let outcome = integrate_until(
+            how,
+            grid,
+            x0,
+            &mut rhs,
+            &mut [&mut roll, &mut torso],
+            &mut observe,
+            stop,
+        )?;
+        let (t, x) = outcome.end;
+        let end = match (outcome.event, outcome.interrupted) {
+            (Some(c), _) if c.index == 0 => RunEnd::Fell { t: c.t },
+            (Some(c), _) => RunEnd::TorsoFell { t: c.t },
+            (None, true) => RunEnd::Interrupted { t },
+            (None, false) => RunEnd::Completed,
+        };
+        Ok(LeanRun { times, states, end: (end, x), stats: outcome.stats, max_energy_drift: drift })
+    }
+
+    /// The pitch that puts the front contact on the ground at roll `q4` and steer `q7`, by
+    /// Newton from `guess`; `None` when it does not converge in 50 steps.
+    pub fn pitch_near(&self, q4: f64, guess: f64, q7: f64) -> Option<f64> {
+        let mut th = guess;
+        for _ in 0..50 {
+            let (h, dh) = self.contact(q4, th, q7);
+            let step = h / dh;
+            th -= step;
+            if !th.is_finite() {
+                return None;
+            }
+            if step.abs() < 1e-15 {
+                return Some(th);
+            }
+        }
+        (self.contact(q4, th, q7).0.abs() < 1e-12).then_some(th)
     }
 
     /// The upright straight-running state at speed `speed` (m/s): everything zero but the rear
