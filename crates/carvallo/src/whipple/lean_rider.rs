@@ -414,11 +414,36 @@ pub enum RunEnd {
         /// When (s).
         t: f64,
     },
+    /// The steer $|q_7|$ reached the steer lock at `t` (s).
+    SteerLock {
+        /// When (s).
+        t: f64,
+    },
     /// The stop flag (Ctrl-C) ended the run at `t` (s), the last accepted step.
     Interrupted {
         /// When (s).
         t: f64,
     },
+}
+
+/// Where a simulation ends as a fall (rad): the roll's or the torso's lean magnitude reaching
+/// `fall_angle`, the steer's reaching `steer_lock` (the bicycle's defaults,
+/// [`DEFAULT_FALL_ANGLE`](crate::whipple_nonlinear::DEFAULT_FALL_ANGLE) and
+/// [`DEFAULT_STEER_LOCK`](crate::whipple_nonlinear::DEFAULT_STEER_LOCK), in [`Limits::DEFAULT`]).
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct Limits {
+    /// The roll's and the torso's fall angle (rad).
+    pub fall_angle: f64,
+    /// The steer lock (rad).
+    pub steer_lock: f64,
+}
+
+impl Limits {
+    /// The bicycle's: 1.2 rad and 1.4 rad.
+    pub const DEFAULT: Limits = Limits {
+        fall_angle: crate::whipple_nonlinear::DEFAULT_FALL_ANGLE,
+        steer_lock: crate::whipple_nonlinear::DEFAULT_STEER_LOCK,
+    };
 }
 
 /// A simulation of the leaning rider: the samples of the grid up to its end.
@@ -681,10 +706,11 @@ impl LeanRider {
     }
 
     /// Integrates the nonlinear equations from `x0` (Moore's twelve, then the pitch, which is
-    /// first put on the contact constraint by Newton) under the constant torques
-    /// `[T4, T6, T7, T9]` (N m) over `grid` by `how`, with the lean joint `joint`, until the
-    /// grid's end, the roll $|q_4|$ or the torso's lean $|q_9|$ reaching `fall_angle` (rad;
-    /// [`RunEnd::Fell`], [`RunEnd::TorsoFell`]) or `stop` being set. At every evaluation the
+    /// first put on the contact constraint by Newton) under the torques `torques(t)`
+    /// `= [T4, T6, T7, T9]` (N m) over `grid` by `how`, with the lean joint `joint`, until the
+    /// grid's end, the roll $|q_4|$ or the torso's lean $|q_9|$ reaching `limits.fall_angle`
+    /// (rad; [`RunEnd::Fell`], [`RunEnd::TorsoFell`]), the steer $|q_7|$ reaching
+    /// `limits.steer_lock` ([`RunEnd::SteerLock`]) or `stop` being set. At every evaluation the
     /// pitch is put back on the constraint by one Newton step from the carried value, as the
     /// bicycle's right-hand side does; the energy drift is measured at every accepted step.
     ///
@@ -695,28 +721,31 @@ impl LeanRider {
     pub fn simulate(
         &self,
         x0: [f64; 13],
-        torques: [f64; 4],
+        torques: &(dyn Fn(f64) -> [f64; 4] + Sync),
         joint: Joint,
         grid: &Grid,
         how: &Integration,
-        fall_angle: f64,
+        limits: Limits,
         stop: &AtomicBool,
     ) -> Result<LeanRun, IntegrateError<LeanRiderError>> {
+        let Limits { fall_angle, steer_lock } = limits;
         let mut x0 = x0;
         x0[PITCH] = self
             .pitch_near(x0[3], x0[PITCH], x0[5])
             .ok_or(IntegrateError::Model(LeanRiderError::NoUpright))?;
         let energy0 = self.energy(&x0);
-        let mut rhs = |_t: f64, x: &[f64; 13]| -> Result<[f64; 13], LeanRiderError> {
+        let mut rhs = |t: f64, x: &[f64; 13]| -> Result<[f64; 13], LeanRiderError> {
             let mut y = *x;
             let (h, dh) = self.contact(y[3], y[PITCH], y[5]);
             y[PITCH] -= h / dh;
-            Ok(self.rate_with(&y, &torques, joint))
+            Ok(self.rate_with(&y, &torques(t), joint))
         };
         let mut roll =
             |x: &[f64; 13]| -> Result<f64, LeanRiderError> { Ok(fall_angle - x[3].abs()) };
         let mut torso =
             |x: &[f64; 13]| -> Result<f64, LeanRiderError> { Ok(fall_angle - x[7].abs()) };
+        let mut steer =
+            |x: &[f64; 13]| -> Result<f64, LeanRiderError> { Ok(steer_lock - x[5].abs()) };
         let (mut times, mut states) = (Vec::new(), Vec::new());
         let mut drift = 0.0f64;
         let mut observe = |point: Point, t: f64, x: &[f64; 13]| -> Result<(), LeanRiderError> {
@@ -735,14 +764,15 @@ impl LeanRider {
             grid,
             x0,
             &mut rhs,
-            &mut [&mut roll, &mut torso],
+            &mut [&mut roll, &mut torso, &mut steer],
             &mut observe,
             stop,
         )?;
         let (t, x) = outcome.end;
         let end = match (outcome.event, outcome.interrupted) {
             (Some(c), _) if c.index == 0 => RunEnd::Fell { t: c.t },
-            (Some(c), _) => RunEnd::TorsoFell { t: c.t },
+            (Some(c), _) if c.index == 1 => RunEnd::TorsoFell { t: c.t },
+            (Some(c), _) => RunEnd::SteerLock { t: c.t },
             (None, true) => RunEnd::Interrupted { t },
             (None, false) => RunEnd::Completed,
         };

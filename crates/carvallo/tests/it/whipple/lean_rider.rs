@@ -189,7 +189,7 @@ fn a_stiff_lean_joint_is_the_locked_whipple_bicycle() {
 #[test]
 fn the_locked_simulation_is_the_whipple_bicycles() {
     use carvallo::numerics::integrate::{integrate, Grid, Integration, Method, Point};
-    use carvallo::whipple::lean_rider::{Joint, RunEnd};
+    use carvallo::whipple::lean_rider::{Joint, Limits, RunEnd};
     use carvallo::whipple::nonlinear::rate::StateRate;
     use std::sync::atomic::AtomicBool;
     let rider = rider();
@@ -200,7 +200,15 @@ fn the_locked_simulation_is_the_whipple_bicycles() {
     let mut x0 = rider.upright(5.0);
     x0[8] = 0.5;
     let run = rider
-        .simulate(x0, [0.0; 4], Joint::Locked, &grid, &how, 1.2, &AtomicBool::new(false))
+        .simulate(
+            x0,
+            &|_| [0.0; 4],
+            Joint::Locked,
+            &grid,
+            &how,
+            Limits::DEFAULT,
+            &AtomicBool::new(false),
+        )
         .expect("a run");
     assert_eq!(run.end.0, RunEnd::Completed);
     // The bicycle's state: x, y, yaw, lean, steer, rear wheel, front wheel, lean rate, steer
@@ -249,7 +257,7 @@ fn the_locked_simulation_is_the_whipple_bicycles() {
 #[test]
 fn a_free_run_conserves_energy_until_the_torso_falls() {
     use carvallo::numerics::integrate::{Grid, Integration, Method};
-    use carvallo::whipple::lean_rider::{Joint, RunEnd};
+    use carvallo::whipple::lean_rider::{Joint, Limits, RunEnd};
     use std::sync::atomic::AtomicBool;
     let rider = rider();
     let mut x0 = rider.upright(5.0);
@@ -257,7 +265,9 @@ fn a_free_run_conserves_energy_until_the_torso_falls() {
     let grid = Grid::new(10.0, 0.001, 100).expect("a grid");
     let how = Integration::adaptive(Method::Dop853, 1e-12, 1e-12);
     let never = AtomicBool::new(false);
-    let run = rider.simulate(x0, [0.0; 4], Joint::Free, &grid, &how, 1.2, &never).unwrap();
+    let run = rider
+        .simulate(x0, &|_| [0.0; 4], Joint::Free, &grid, &how, Limits::DEFAULT, &never)
+        .unwrap();
     let RunEnd::TorsoFell { t } = run.end.0 else { panic!("{:?}", run.end.0) };
     let scale = rider.energy(&run.states[0]).abs();
     eprintln!(
@@ -267,8 +277,9 @@ fn a_free_run_conserves_energy_until_the_torso_falls() {
     assert!(t > 0.5 && t < 5.0, "{t}");
     assert!(run.max_energy_drift < 1e-9 * scale, "{:e}", run.max_energy_drift);
     assert!((run.end.1[7].abs() - 1.2).abs() < 1e-9, "{:?}", run.end.1);
-    let rk4 =
-        rider.simulate(x0, [0.0; 4], Joint::Free, &grid, &Integration::RK4, 1.2, &never).unwrap();
+    let rk4 = rider
+        .simulate(x0, &|_| [0.0; 4], Joint::Free, &grid, &Integration::RK4, Limits::DEFAULT, &never)
+        .unwrap();
     assert!(rk4.max_energy_drift > run.max_energy_drift, "{rk4:?}");
 }
 
