@@ -2,8 +2,9 @@
 //! `statespace`, against BicycleParameters 1.5.2's `MooreRiderLean2012Model`
 //! (`data/mooreriderlean2012/browser_jason_peer.json`): every entry of A and B and the six
 //! non-zero eigenvalues at the peer's six speeds, through the binary's JSON; the empty window
-//! of the passive torso and the window of a stiff joint; the commands that do not take the
-//! model yet, and the options that do not apply, are errors naming it (exit 2).
+//! of the passive torso and the window of a stiff joint; `simulate`'s energy, kept without
+//! torques and changed by exactly the lean torque's work with one; the commands that do not
+//! take the model yet, and the options that do not apply, are errors naming it (exit 2).
 
 use std::process::Command;
 
@@ -128,7 +129,33 @@ fn what_does_not_apply_is_an_error_naming_the_model() {
     for args in [
         &["bode", "--model", "lean-rider", "--speed", "4", "--input", "steer", "--output", "roll"]
             [..],
-        &["simulate", "--model", "lean-rider", "--speed", "4", "--lean", "1", "--duration", "1"],
+        &["simulate", "--model", "lean-rider", "--batch", "x.csv", "--duration", "1"],
+        &[
+            "simulate",
+            "--model",
+            "lean-rider",
+            "--speed",
+            "4",
+            "--lean0",
+            "0.01",
+            "--duration",
+            "1",
+            "--torque",
+            "lean=impulse:1@0.5",
+        ],
+        &[
+            "simulate",
+            "--model",
+            "benchmark",
+            "--speed",
+            "4",
+            "--lean0",
+            "0.01",
+            "--duration",
+            "1",
+            "--torque",
+            "lean=step:1@0.5",
+        ],
         &["window", "--model", "lean-rider", "--rider", "x"],
         &["eig", "--model", "lean-rider", "--speed", "4", "--gain", "k_roll_roll=1"],
     ] {
@@ -146,4 +173,52 @@ fn what_does_not_apply_is_an_error_naming_the_model() {
     assert_eq!(code, 2);
     assert!(err.contains("invalid parameter mg = -1: must be positive"), "{err}");
     std::fs::remove_dir_all(&dir).ok();
+}
+
+fn column(v: &Value, name: &str) -> Vec<f64> {
+    v[name].as_array().unwrap_or_else(|| panic!("no column {name}")).iter().map(number).collect()
+}
+
+/// Without torques the energy is kept until the passive torso falls off its joint (a status,
+/// exit 0); with a lean torque $T_9$ from the start, the energy grows by exactly its work
+/// $T_9 \Delta q_9$ (the joint torque's power is $T_9 \dot q_9$; gravity is in the energy),
+/// 5 N m × 1.2 rad = 6 J when the torso falls, to the integrator's error.
+#[test]
+fn simulate_keeps_the_energy_and_the_lean_torque_does_its_work() {
+    let args = [
+        "simulate",
+        "--model",
+        "lean-rider",
+        "--speed",
+        "5",
+        "--lean0",
+        "0.01",
+        "--duration",
+        "3",
+        "--json",
+    ];
+    let (code, out, err) = carvallo(&args);
+    assert_eq!(code, 0, "{err}");
+    let v: Value = serde_json::from_str(&out).unwrap();
+    assert_eq!(v["status"], "torso fell", "{}", v["status_line"]);
+    let e = column(&v, "energy");
+    let drift = e.iter().fold(0.0f64, |m, x| m.max((x - e[0]).abs()));
+    assert!(drift < 1e-8 * e[0], "RK4 at 1 ms: {drift:e} J");
+    let lean = column(&v, "lean");
+    assert!((lean.last().unwrap().abs() - 1.2).abs() < 1e-12, "{:?}", lean.last());
+
+    let mut args = args.to_vec();
+    args.extend(["--method", "dop853", "--rtol", "1e-11", "--torque", "lean=step:5@0"]);
+    let (code, out, err) = carvallo(&args);
+    assert_eq!(code, 0, "{err}");
+    let v: Value = serde_json::from_str(&out).unwrap();
+    let (e, lean) = (column(&v, "energy"), column(&v, "lean"));
+    let n = e.len() - 1;
+    let work = 5.0 * (lean[n] - lean[0]);
+    eprintln!(
+        "lean torque 5 N m: energy {} -> {} J, work {work} J, status {}",
+        e[0], e[n], v["status_line"]
+    );
+    assert!(work.abs() > 1.0, "the torso must move: {work}");
+    assert!((e[n] - e[0] - work).abs() < 1e-6, "{} J against {work} J", e[n] - e[0]);
 }

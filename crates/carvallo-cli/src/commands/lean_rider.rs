@@ -1,5 +1,5 @@
-//! The leaning rider (Moore 2012, [`carvallo::whipple::lean_rider`]) in `eig`, `window` and
-//! `statespace`, selected by `--model lean-rider` (BicycleParameters' Browser + Jason) or by a
+//! The leaning rider (Moore 2012, [`carvallo::whipple::lean_rider`]) in `eig`, `window`,
+//! `statespace` and `simulate`, selected by `--model lean-rider` (BicycleParameters' Browser + Jason) or by a
 //! parameter file in Moore's names ([`crate::args::lean_rider`]).
 //!
 //! - `eig`: the six eigenvalues of roll, steer and lean at each speed (the other six of the
@@ -11,9 +11,22 @@
 //!   ($k_9 = c_9 = 0$) there is none, and the output says why (the torso's real eigenvalue).
 //! - `statespace`: $A$ ($12 \times 12$, state `q1 q2 q3 q4 q6 q7 q8 q9 u4 u6 u7 u9`) and $B$
 //!   ($12 \times 3$, inputs `T4 T7 T9`), JSON `{"speed", "state", "inputs", "A", "B"}`.
+//! - `simulate`: the nonlinear equations from upright straight running at `--speed` with the
+//!   roll `--lean0` (rad), under `--torque roll|steer|lean=step:VALUE@TIME` terms, by the
+//!   integrator of `--method`, until `--duration`, a fall (the roll or the torso's lean on its
+//!   joint reaching `--fall-angle`), the steer lock or Ctrl-C; rows of time, roll, steer, the
+//!   torso's lean, yaw, pitch, the rear contact and the energy, then the status line; JSON
+//!   with the same columns, `status` (`completed`, `fell`, `torso fell`, `steer lock`,
+//!   `interrupted`), `status_line`, the counts and the energy drift. Batches, impulses, torque
+//!   files, gains and stop conditions are the bicycle's.
 
-use carvallo::whipple::lean_rider::{LeanRider, INPUT_NAMES, STATE_NAMES};
+use carvallo::numerics::integrate::{Grid, Integration};
+use carvallo::whipple::lean_rider::{
+    Joint, LeanRider, Limits, RunEnd, INPUT_NAMES, PITCH, STATE_NAMES,
+};
 use serde_json::{json, Value};
+
+use super::simulate_inputs::{Input, Kind};
 
 /// The speeds `window` scans (m/s) and its number of steps.
 pub const SCAN: (f64, f64, usize) = (0.0, 20.0, 400);
@@ -141,5 +154,152 @@ pub fn statespace(
         let v = if values.len() == 1 { values.remove(0) } else { Value::Array(values) };
         return serde_json::to_string_pretty(&v).map_err(|e| e.to_string());
     }
+    Ok(s)
+}
+
+/// `carvallo simulate` on the leaning rider.
+pub fn simulate(
+    cmd: &super::simulate::Args,
+    rider: &LeanRider,
+    how: &Integration,
+) -> Result<String, String> {
+    let model = &cmd.model;
+    let not_here = |what: &str| {
+        Err(format!("{what} is for the bicycle, not yet for the leaning rider `{model}`"))
+    };
+    if cmd.batch.is_some() {
+        return not_here("--batch");
+    }
+    if !cmd.integration.stop_when.is_empty() {
+        return not_here("--stop-when");
+    }
+    let inputs = &cmd.inputs;
+    if inputs.torque_csv.is_some() || !inputs.gain.is_empty() || inputs.gain_table.is_some() {
+        return not_here("--torque-csv, --gain and --gain-table");
+    }
+    let mut steps = Vec::new();
+    for term in &inputs.torque {
+        if term.kind == Kind::Impulse {
+            return Err(format!(
+                "invalid --torque `{}`: impulses are for the bicycle; the leaning rider takes \
+                 steps (INPUT=step:VALUE@TIME)",
+                term.text
+            ));
+        }
+        let k = match term.input {
+            Input::Roll => 0,
+            Input::Steer => 2,
+            Input::Lean => 3,
+        };
+        steps.push((k, term.value, term.time));
+    }
+    let (Some(speed), Some(lean0)) = (cmd.speed, cmd.lean0) else {
+        return Err("--speed and --lean0 are required without --batch".into());
+    };
+    let limits = Limits { fall_angle: cmd.fall_angle, steer_lock: cmd.steer_lock };
+    if lean0.abs() >= limits.fall_angle {
+        return Err(format!(
+            "invalid --lean0 {lean0}: at or beyond the fall angle ±{} rad",
+            limits.fall_angle
+        ));
+    }
+    let grid = Grid::exact(cmd.duration, cmd.step, cmd.every)
+        .map_err(|(name, value, reason)| format!("invalid --{name} {value:?}: {reason}"))?;
+    let torques = move |t: f64| {
+        let mut u = [0.0; 4];
+        for &(k, value, start) in &steps {
+            if t >= start {
+                u[k] += value;
+            }
+        }
+        u
+    };
+    let mut x0 = rider.upright(speed);
+    x0[3] = lean0;
+    let run = rider
+        .simulate(x0, &torques, Joint::Free, &grid, how, limits, crate::perf::interrupt_flag())
+        .map_err(|e| {
+            format!(
+                "the integration diverged: {e:?} (--method {}); take a smaller --step or an \
+                 adaptive --method",
+                how.method.name()
+            )
+        })?;
+    let end_t = run.times.last().copied().unwrap_or(0.0);
+    let (status, line) = match run.end.0 {
+        RunEnd::Completed => ("completed", format!("completed at t = {end_t} s")),
+        RunEnd::Fell { t } => (
+            "fell",
+            format!(
+                "fell at t = {t} s: the roll reached the fall angle ±{} rad",
+                limits.fall_angle
+            ),
+        ),
+        RunEnd::TorsoFell { t } => (
+            "torso fell",
+            format!(
+                "torso fell at t = {t} s: the torso's lean on its joint reached ±{} rad",
+                limits.fall_angle
+            ),
+        ),
+        RunEnd::SteerLock { t } => (
+            "steer lock",
+            format!("steer lock at t = {t} s: the steer reached ±{} rad", limits.steer_lock),
+        ),
+        RunEnd::Interrupted { t } => ("interrupted", super::rolling::interrupted_line(t)),
+    };
+    // The samples, then the end when it is not one of them.
+    let mut rows: Vec<(f64, [f64; 13])> =
+        run.times.iter().copied().zip(run.states.iter().copied()).collect();
+    let end_time = match run.end.0 {
+        RunEnd::Fell { t } | RunEnd::TorsoFell { t } | RunEnd::SteerLock { t } => Some(t),
+        _ => None,
+    };
+    if let Some(t) = end_time {
+        if rows.last().is_none_or(|(s, _)| *s < t) {
+            rows.push((t, run.end.1));
+        }
+    }
+    const COLUMNS: [&str; 9] = ["t", "roll", "steer", "lean", "yaw", "pitch", "x", "y", "energy"];
+    let row = |t: f64, x: &[f64; 13]| -> [f64; 9] {
+        [t, x[3], x[5], x[7], x[2], x[PITCH], x[0], x[1], rider.energy(x)]
+    };
+    let table: Vec<[f64; 9]> = rows.iter().map(|(t, x)| row(*t, x)).collect();
+    if cmd.json {
+        let mut v = json!({
+            "model": model,
+            "speed": speed,
+            "lean0": lean0,
+            "method": how.method.name(),
+            "rtol": how.method.is_adaptive().then_some(how.rtol),
+            "atol": how.method.is_adaptive().then_some(how.atol),
+            "status": status,
+            "status_line": line,
+            "fall_angle": limits.fall_angle,
+            "steer_lock": limits.steer_lock,
+            "rhs_evaluations": run.stats.rhs_evaluations,
+            "steps": run.stats.steps,
+            "rejected_steps": run.stats.rejected_steps,
+            "max_energy_drift": run.max_energy_drift,
+        });
+        for (k, name) in COLUMNS.iter().enumerate() {
+            v[*name] = json!(table.iter().map(|r| r[k]).collect::<Vec<_>>());
+        }
+        return serde_json::to_string_pretty(&v).map_err(|e| e.to_string());
+    }
+    let mut s = header(model, rider);
+    s.push_str(&format!("{}\n", COLUMNS.join(" ")));
+    for r in &table {
+        let cells: Vec<String> = r.iter().map(|x| format!("{x}")).collect();
+        s.push_str(&format!("{}\n", cells.join(" ")));
+    }
+    s.push_str(&format!(
+        "{line}\nmethod {}, {} steps ({} rejected), {} evaluations; energy drift {:e} J\n",
+        how.method.name(),
+        run.stats.steps,
+        run.stats.rejected_steps,
+        run.stats.rhs_evaluations,
+        run.max_energy_drift
+    ));
     Ok(s)
 }

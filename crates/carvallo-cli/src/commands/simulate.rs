@@ -413,6 +413,9 @@ pub fn run(cmd: &Args) -> Result<String, String> {
     if cmd.csv && cmd.batch.is_none() {
         return Err("invalid --csv: it prints the rows of --batch FILE.csv".into());
     }
+    if let Some(rider) = crate::args::lean_rider(model, data)? {
+        return super::lean_rider::simulate(cmd, &rider, &how);
+    }
     let bike = WhippleNonlinear::new(crate::args::bicycle(model, data)?)
         .with_fall_angle(cmd.fall_angle)
         .and_then(|b| b.with_steer_lock(cmd.steer_lock))

@@ -37,6 +37,9 @@ pub enum Input {
     Roll,
     /// The steer torque $T_\delta$.
     Steer,
+    /// The leaning rider's lean torque $T_9$, between the torso and the rear frame
+    /// (`--model lean-rider` only).
+    Lean,
 }
 
 /// The kind of a `--torque` term.
@@ -72,7 +75,12 @@ pub fn parse_torque(text: &str) -> Result<TorqueTerm, String> {
     let input = match input.trim() {
         "roll" => Input::Roll,
         "steer" => Input::Steer,
-        other => return Err(bad(format!("unknown input `{other}`: expected roll or steer"))),
+        "lean" => Input::Lean,
+        other => {
+            return Err(bad(format!(
+                "unknown input `{other}`: expected roll or steer (or lean, the leaning rider's)"
+            )))
+        }
     };
     let (kind, rest) = rest
         .split_once(':')
@@ -139,13 +147,20 @@ impl InputArgs {
             let list = match term.input {
                 Input::Roll => &mut inputs.roll,
                 Input::Steer => &mut inputs.steer,
+                Input::Lean => {
+                    return Err(format!(
+                        "invalid --torque `{}`: the lean torque is the leaning rider's \
+                         (--model lean-rider); the bicycle takes roll and steer",
+                        term.text
+                    ))
+                }
             };
             match term.kind {
                 Kind::Step => list.push(Signal::Step { value: term.value, start: term.time }),
                 Kind::Impulse => {
                     let (roll, steer) = match term.input {
                         Input::Roll => (term.value, 0.0),
-                        Input::Steer => (0.0, term.value),
+                        _ => (0.0, term.value),
                     };
                     inputs.impulses.push(Impulse { t: term.time, roll, steer });
                 }
