@@ -215,6 +215,7 @@ pub(crate) mod arg {
         torque_t: Option<Vec<f64>> = optional_reals;
         torque_roll: Option<Vec<f64>> = optional_reals;
         torque_steer: Option<Vec<f64>> = optional_reals;
+        torque_lean: Option<Vec<f64>> = optional_reals;
         every: usize = count;
         count: usize = count;
         samples: usize = count;

@@ -7,12 +7,15 @@
 
 use std::sync::atomic::Ordering;
 
-use carvallo::whipple::lean_rider::{LeanRider, LeanRiderParams, INPUT_NAMES, STATE_NAMES};
+use carvallo::numerics::integrate::{Grid, Integration};
+use carvallo::whipple::lean_rider::{
+    Joint, LeanRider, LeanRiderParams, Limits, RunEnd, INPUT_NAMES, PITCH, STATE_NAMES,
+};
 use numpy::{Complex64, PyArray1, PyArray2, PyArrayMethods};
 use pyo3::prelude::*;
 use pyo3::types::{PyDict, PyList};
 
-use crate::common::{err, pairs};
+use crate::common::{err, pairs, set_run};
 use crate::guard::{interruptible, read_text, within};
 
 /// The leaning rider's parameters when `params` is a mapping in Moore's names (it holds `mg`,
@@ -120,6 +123,167 @@ pub(crate) fn window<'py>(py: Python<'py>, rider: &LeanRider) -> PyResult<Bound<
     d.set_item("scan", (lo, hi))?;
     d.set_item("state", STATE_NAMES.to_vec())?;
     d.set_item("inputs", INPUT_NAMES.to_vec())?;
+    Ok(d)
+}
+
+/// The torques of a simulation: `t` (increasing) and the roll, steer and lean torques at those
+/// times (N m), linearly interpolated, zero outside.
+pub(crate) struct Torques {
+    t: Vec<f64>,
+    series: [Option<Vec<f64>>; 3],
+}
+
+impl Torques {
+    /// Checks the series: `t` with at least one of them, each as long as `t`, finite, `t`
+    /// increasing.
+    pub(crate) fn new(t: Option<Vec<f64>>, series: [Option<Vec<f64>>; 3]) -> PyResult<Torques> {
+        let names = ["torque_roll", "torque_steer", "torque_lean"];
+        let Some(t) = t else {
+            if let Some(k) = series.iter().position(Option::is_some) {
+                return Err(err(format!("{} needs torque_t, the times of its values", names[k])));
+            }
+            return Ok(Torques { t: Vec::new(), series });
+        };
+        if series.iter().all(Option::is_none) {
+            return Err(err("torque_t without torque_roll, torque_steer or torque_lean"));
+        }
+        if let Some(x) = t.iter().find(|x| !x.is_finite()) {
+            return Err(err(format!("invalid torque_t {x}: must be finite")));
+        }
+        if let Some(w) = t.windows(2).find(|w| w[1] <= w[0]) {
+            return Err(err(format!(
+                "invalid torque_t: {} after {} is not increasing",
+                w[1], w[0]
+            )));
+        }
+        for (name, s) in names.iter().zip(&series) {
+            if let Some(s) = s {
+                if s.len() != t.len() {
+                    return Err(err(format!(
+                        "invalid {name}: {} values for {} times",
+                        s.len(),
+                        t.len()
+                    )));
+                }
+                if let Some(x) = s.iter().find(|x| !x.is_finite()) {
+                    return Err(err(format!("invalid {name} {x}: must be finite")));
+                }
+            }
+        }
+        Ok(Torques { t, series })
+    }
+
+    /// `[T4, T6, T7, T9]` at `time`.
+    fn at(&self, time: f64) -> [f64; 4] {
+        let mut out = [0.0; 4];
+        let (t, n) = (&self.t, self.t.len());
+        if n == 0 || time < t[0] || time > t[n - 1] {
+            return out;
+        }
+        let k = t.partition_point(|x| *x <= time).clamp(1, n.max(2) - 1);
+        for (slot, s) in [0, 2, 3].into_iter().zip(&self.series) {
+            if let Some(s) = s {
+                out[slot] = if n == 1 {
+                    s[0]
+                } else {
+                    let w = (time - t[k - 1]) / (t[k] - t[k - 1]);
+                    s[k - 1] + w * (s[k] - s[k - 1])
+                };
+            }
+        }
+        out
+    }
+}
+
+/// The start and the limits of a simulation.
+pub(crate) struct Start {
+    pub(crate) speed: f64,
+    pub(crate) lean0: f64,
+    pub(crate) fall_angle: f64,
+    pub(crate) steer_lock: f64,
+}
+
+/// `simulate` on the leaning rider (see its doc in `python.rs`).
+pub(crate) fn simulate<'py>(
+    py: Python<'py>,
+    rider: &LeanRider,
+    start: Start,
+    grid: &Grid,
+    how: &Integration,
+    torques: &Torques,
+) -> PyResult<Bound<'py, PyDict>> {
+    let Start { speed, lean0, fall_angle, steer_lock } = start;
+    for (name, v) in [("fall_angle", fall_angle), ("steer_lock", steer_lock)] {
+        if !(v.is_finite() && v > 0.0) {
+            return Err(err(format!("invalid {name} {v}: must be finite and positive")));
+        }
+    }
+    if lean0.abs() >= fall_angle {
+        return Err(err(format!(
+            "invalid lean0 {lean0:?}: at or beyond the fall angle ±{fall_angle} rad (fall_angle)"
+        )));
+    }
+    let mut x0 = rider.upright(speed);
+    x0[3] = lean0;
+    let limits = Limits { fall_angle, steer_lock };
+    let run = interruptible(py, |stop| {
+        rider.simulate(x0, &|t| torques.at(t), Joint::Free, grid, how, limits, stop)
+    })?
+    .map_err(|e| err(format!("the integration failed: {e:?}")))?;
+    if let RunEnd::Interrupted { .. } = run.end.0 {
+        // interruptible raised KeyboardInterrupt already when the flag came from Ctrl-C.
+        return Err(pyo3::exceptions::PyKeyboardInterrupt::new_err("interrupted"));
+    }
+    let mut rows: Vec<(f64, [f64; 13])> =
+        run.times.iter().copied().zip(run.states.iter().copied()).collect();
+    let (status, line) = match run.end.0 {
+        RunEnd::Completed => {
+            let t = rows.last().map_or(0.0, |r| r.0);
+            ("completed", format!("completed at t = {t} s"))
+        }
+        RunEnd::Fell { t } => (
+            "fell",
+            format!("fell at t = {t} s: the roll reached the fall angle ±{fall_angle} rad"),
+        ),
+        RunEnd::TorsoFell { t } => (
+            "torso fell",
+            format!(
+                "torso fell at t = {t} s: the torso's lean on its joint reached ±{fall_angle} rad"
+            ),
+        ),
+        RunEnd::SteerLock { t } => {
+            ("steer lock", format!("steer lock at t = {t} s: the steer reached ±{steer_lock} rad"))
+        }
+        RunEnd::Interrupted { t } => ("interrupted", format!("interrupted at t = {t} s")),
+    };
+    if let RunEnd::Fell { t } | RunEnd::TorsoFell { t } | RunEnd::SteerLock { t } = run.end.0 {
+        if rows.last().is_none_or(|(s, _)| *s < t) {
+            rows.push((t, run.end.1));
+        }
+    }
+    let d = PyDict::new(py);
+    type Column = fn(&LeanRider, f64, &[f64; 13]) -> f64;
+    let columns: [(&str, Column); 9] = [
+        ("t", |_, t, _| t),
+        ("roll", |_, _, x| x[3]),
+        ("steer", |_, _, x| x[5]),
+        ("lean", |_, _, x| x[7]),
+        ("yaw", |_, _, x| x[2]),
+        ("pitch", |_, _, x| x[PITCH]),
+        ("x", |_, _, x| x[0]),
+        ("y", |_, _, x| x[1]),
+        ("energy", |r, _, x| r.energy(x)),
+    ];
+    for (name, f) in columns {
+        let col: Vec<f64> = rows.iter().map(|(t, x)| f(rider, *t, x)).collect();
+        d.set_item(name, PyArray1::from_vec(py, col))?;
+    }
+    d.set_item("status", status)?;
+    d.set_item("status_line", line)?;
+    d.set_item("fall_angle", fall_angle)?;
+    d.set_item("steer_lock", steer_lock)?;
+    d.set_item("max_energy_drift", run.max_energy_drift)?;
+    set_run(&d, how, &run.stats, None)?;
     Ok(d)
 }
 

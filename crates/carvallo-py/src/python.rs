@@ -971,8 +971,14 @@ fn sweep<'py>(
 /// T = -K x with `k` as in `closed_loop_window` (a (2, 4) array, gains by name or a gain
 /// table read at the rear contact's speed). The dict then adds `T_phi`, `T_delta`, `work_t`,
 /// `work` and `max_energy_change`, and `energy_drift` is that of E - E(0) - W.
+///
+/// For the leaning rider's params (`lean_rider()`): `lean0` is the roll, `torque_lean` (with
+/// `torque_t`) the lean torque T9 beside `torque_roll` and `torque_steer`; the dict holds `t`,
+/// `roll`, `steer`, `lean` (the torso on its joint), `yaw`, `pitch`, `x`, `y`, `energy`, the
+/// counts, `max_energy_drift` and `status` (`completed`, `fell`, `torso fell`, `steer lock`)
+/// with `status_line` (as `carvallo simulate --model lean-rider --json`).
 #[pyfunction]
-#[pyo3(signature = (params, speed, lean0, duration, step = 0.001, every = 10, strict = false, *, method = "rk4", rtol = None, atol = None, stop_when = Vec::new(), torque_t = None, torque_roll = None, torque_steer = None, impulses = Vec::new(), k = None, fall_angle = carvallo::whipple_nonlinear::DEFAULT_FALL_ANGLE, steer_lock = carvallo::whipple_nonlinear::DEFAULT_STEER_LOCK))]
+#[pyo3(signature = (params, speed, lean0, duration, step = 0.001, every = 10, strict = false, *, method = "rk4", rtol = None, atol = None, stop_when = Vec::new(), torque_t = None, torque_roll = None, torque_steer = None, impulses = Vec::new(), k = None, fall_angle = carvallo::whipple_nonlinear::DEFAULT_FALL_ANGLE, steer_lock = carvallo::whipple_nonlinear::DEFAULT_STEER_LOCK, torque_lean = None))]
 #[allow(clippy::too_many_arguments)]
 fn simulate<'py>(
     py: Python<'py>,
@@ -994,8 +1000,34 @@ fn simulate<'py>(
     k: Option<Bound<'py, PyAny>>,
     #[pyo3(from_py_with = arg::fall_angle)] fall_angle: f64,
     #[pyo3(from_py_with = arg::steer_lock)] steer_lock: f64,
+    #[pyo3(from_py_with = arg::torque_lean)] torque_lean: Option<Vec<f64>>,
 ) -> PyResult<Bound<'py, PyDict>> {
     let (how, stops) = integration_of(method, rtol, atol, &stop_when)?;
+    if let Some(rider) = crate::lean_rider::rider_of(params)? {
+        if !stops.is_empty() || !impulses.is_empty() || k.is_some() {
+            return Err(err(
+                "stop_when, impulses and k are for the bicycle, not yet for the leaning rider",
+            ));
+        }
+        let grid = Grid::exact(duration, step, every).map_err(|(name, value, reason)| {
+            err(carvallo::ParameterError::InvalidParameter { name, value, reason }.to_string())
+        })?;
+        within(
+            &format!("duration = {duration}, step = {step}, every = {every}"),
+            grid.samples() as f64,
+            (13 + 9) as f64 * 8.0,
+        )?;
+        let torques =
+            crate::lean_rider::Torques::new(torque_t, [torque_roll, torque_steer, torque_lean])?;
+        let start = crate::lean_rider::Start { speed, lean0, fall_angle, steer_lock };
+        return crate::lean_rider::simulate(py, &rider, start, &grid, &how, &torques);
+    }
+    if torque_lean.is_some() {
+        return Err(err(
+            "torque_lean is the leaning rider's (params = carvallo.lean_rider()); the bicycle \
+             takes torque_roll and torque_steer",
+        ));
+    }
     let bike = WhippleNonlinear::new(params_of(params, strict)?)
         .with_fall_angle(fall_angle)
         .and_then(|b| b.with_steer_lock(steer_lock))

@@ -68,3 +68,35 @@ def test_bad_leaning_rider_params_name_the_value():
         carvallo.eigenvalues(dict(carvallo.lean_rider(), mg=-1.0), [4.0])
     with pytest.raises(carvallo.ParameterError, match="unknown parameter `w`"):
         carvallo.state_space(dict(carvallo.lean_rider(), w=1.0), [4.0])
+
+
+def test_simulate_keeps_the_energy_and_the_lean_torque_does_its_work():
+    """Without torques the energy is kept until the passive torso falls (a status, not an
+    error); with a lean torque ramping from 0 to 8 N m over 1 s its work, the integral of
+    T9 dq9 (trapezoids on a fine grid), is the energy's gain."""
+    r = carvallo.simulate(carvallo.lean_rider(), 5.0, 0.01, 3.0)
+    assert r["status"] == "torso fell", r["status_line"]
+    assert abs(abs(r["lean"][-1]) - 1.2) < 1e-12
+    assert np.abs(r["energy"] - r["energy"][0]).max() < 1e-8 * r["energy"][0]
+    r = carvallo.simulate(carvallo.lean_rider(), 5.0, 0.01, 3.0, every=1, method="dop853",
+                          rtol=1e-11, torque_t=[0.0, 1.0], torque_lean=[0.0, 8.0])
+    t, lean, e = r["t"], r["lean"], r["energy"]
+    torque = np.interp(t, [0.0, 1.0], [0.0, 8.0], right=0.0)
+    work = np.sum(0.5 * (torque[1:] + torque[:-1]) * np.diff(lean))
+    print(f"\nramped lean torque: energy gain {e[-1] - e[0]:.9f} J, work {work:.9f} J, "
+          f"{r['status_line']}")
+    assert abs(work) > 1.0
+    # Trapezoids at 1 ms on a smooth integrand: far below 1e-4 J.
+    assert abs(e[-1] - e[0] - work) < 1e-4, (e[-1] - e[0], work)
+
+
+def test_simulate_refuses_what_is_the_bicycles():
+    with pytest.raises(carvallo.ParameterError, match="torque_lean is the leaning rider's"):
+        carvallo.simulate(carvallo.benchmark(), 5.0, 0.01, 1.0, torque_t=[0.0, 1.0],
+                          torque_lean=[1.0, 1.0])
+    with pytest.raises(carvallo.ParameterError, match="not yet for the leaning rider"):
+        carvallo.simulate(carvallo.lean_rider(), 5.0, 0.01, 1.0, stop_when=["lean=0.5"])
+    with pytest.raises(carvallo.ParameterError, match="torque_lean needs torque_t"):
+        carvallo.simulate(carvallo.lean_rider(), 5.0, 0.01, 1.0, torque_lean=[1.0])
+    with pytest.raises(carvallo.ParameterError, match="invalid lean0 1.3"):
+        carvallo.simulate(carvallo.lean_rider(), 5.0, 1.3, 1.0)
