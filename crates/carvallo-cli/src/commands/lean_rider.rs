@@ -293,8 +293,13 @@ pub fn simulate(
         let cells: Vec<String> = r.iter().map(|x| format!("{x}")).collect();
         s.push_str(&format!("{}\n", cells.join(" ")));
     }
+    let energy = if inputs.torque.is_empty() {
+        "energy drift"
+    } else {
+        "largest energy change (the torques do work)"
+    };
     s.push_str(&format!(
-        "{line}\nmethod {}, {} steps ({} rejected), {} evaluations; energy drift {:e} J\n",
+        "{line}\nmethod {}, {} steps ({} rejected), {} evaluations; {energy} {:e} J\n",
         how.method.name(),
         run.stats.steps,
         run.stats.rejected_steps,
