@@ -100,3 +100,18 @@ def test_simulate_refuses_what_is_the_bicycles():
         carvallo.simulate(carvallo.lean_rider(), 5.0, 0.01, 1.0, torque_lean=[1.0])
     with pytest.raises(carvallo.ParameterError, match="invalid lean0 1.3"):
         carvallo.simulate(carvallo.lean_rider(), 5.0, 1.3, 1.0)
+
+
+def test_the_guides_example_runs_as_written():
+    """docs/guide/src/lean-rider.md's Python block, executed; what its comments say, asserted."""
+    import re
+    from conftest import ROOT
+    text = (ROOT / "docs" / "guide" / "src" / "lean-rider.md").read_text()
+    [code] = re.findall(r"```python\n(.*?)```", text, flags=re.S)
+    ns = {}
+    exec(code, ns)
+    assert ns["ev"].shape == (3, 6) and (ns["ev"].real[:, 0] > 6.5).all()
+    assert ns["A"].shape == (1, 12, 12) and ns["B"].shape == (1, 12, 3)
+    w = carvallo.window(dict(ns["p"], k9=1e4, c9=100.0))
+    assert [(round(a, 2), round(b, 2)) for a, b in w["stable"]] == [(4.99, 7.11)]
+    assert ns["run"]["status"] == "torso fell" and abs(ns["run"]["lean"][-1]) == 1.2
