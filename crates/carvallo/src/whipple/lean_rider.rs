@@ -291,6 +291,51 @@ impl LeanRiderParams {
     }
 }
 
+/// A state feedback $T = -K x$ on the leaning rider's lateral states: rows the roll, steer and
+/// lean torques (T4, T7, T9), columns roll, steer, the torso's lean and their rates ([`LATERAL`]
+/// order), named `k_{roll|steer|lean}_{roll|steer|lean|roll_rate|steer_rate|lean_rate}` as the
+/// bicycle's gains are. `k_lean_lean` and `k_lean_lean_rate` are a spring and a damper on the
+/// lean joint: the same as $k_9$ and $c_9$.
+#[derive(Clone, Copy, Debug, Default, PartialEq)]
+pub struct LeanGains(pub [[f64; 6]; 3]);
+
+impl LeanGains {
+    /// The torques, rows of $K$.
+    pub const INPUTS: [&'static str; 3] = ["roll", "steer", "lean"];
+    /// The states, columns of $K$.
+    pub const STATES: [&'static str; 6] =
+        ["roll", "steer", "lean", "roll_rate", "steer_rate", "lean_rate"];
+
+    /// The row and column of the gain `name`; `None` for a name that is not one.
+    pub fn index(name: &str) -> Option<(usize, usize)> {
+        let rest = name.strip_prefix("k_")?;
+        Self::INPUTS.iter().enumerate().find_map(|(i, input)| {
+            let state = rest.strip_prefix(input)?.strip_prefix('_')?;
+            Self::STATES.iter().position(|s| *s == state).map(|j| (i, j))
+        })
+    }
+
+    /// The gains given by name (the others zero; a name given twice keeps its last value).
+    ///
+    /// # Errors
+    /// The first name that is not a gain of the leaning rider.
+    pub fn from_named<'a>(
+        pairs: impl IntoIterator<Item = (&'a str, f64)>,
+    ) -> Result<LeanGains, String> {
+        let mut k = LeanGains::default();
+        for (name, value) in pairs {
+            let (i, j) = Self::index(name).ok_or_else(|| {
+                format!(
+                    "unknown gain `{name}` for the leaning rider: expected \
+                     k_{{roll|steer|lean}}_{{roll|steer|lean|roll_rate|steer_rate|lean_rate}}"
+                )
+            })?;
+            k.0[i][j] = value;
+        }
+        Ok(k)
+    }
+}
+
 /// The arithmetic the right-hand side is written in: `f64` for evaluation, [`Dual`] for the
 /// linearisation.
 trait Real:
@@ -861,8 +906,17 @@ impl LeanRider {
     /// [`LATERAL`]; the other six of $A$ are zero — sorted by decreasing real part, then by
     /// decreasing imaginary part.
     pub fn eigenvalues(&self, speed: f64) -> [Complex<f64>; 6] {
-        let (a, _) = self.state_space(speed);
-        let lateral = SMatrix::<f64, 6, 6>::from_fn(|i, j| a[(LATERAL[i], LATERAL[j])]);
+        self.closed_loop_eigenvalues(speed, &LeanGains::default())
+    }
+
+    /// The six eigenvalues of roll, steer and lean under the feedback `k` ($A - BK$ on
+    /// [`LATERAL`]), sorted as [`eigenvalues`](Self::eigenvalues).
+    pub fn closed_loop_eigenvalues(&self, speed: f64, k: &LeanGains) -> [Complex<f64>; 6] {
+        let (a, b) = self.state_space(speed);
+        let lateral = SMatrix::<f64, 6, 6>::from_fn(|i, j| {
+            a[(LATERAL[i], LATERAL[j])]
+                - (0..3).map(|r| b[(LATERAL[i], r)] * k.0[r][j]).sum::<f64>()
+        });
         let mut ev: Vec<Complex<f64>> = lateral.complex_eigenvalues().iter().copied().collect();
         ev.sort_by(|p, q| q.re.total_cmp(&p.re).then(q.im.total_cmp(&p.im)));
         std::array::from_fn(|k| ev[k])
@@ -873,7 +927,18 @@ impl LeanRider {
     /// $10^{-10}$ m/s. Empty when no speed of the scan is stable (Browser + Jason's passive
     /// torso, $k_9 = c_9 = 0$).
     pub fn stable_speeds(&self, lo: f64, hi: f64, steps: usize) -> Vec<(f64, f64)> {
-        let growth = |v: f64| self.eigenvalues(v)[0].re;
+        self.closed_loop_stable_speeds(lo, hi, steps, &LeanGains::default())
+    }
+
+    /// As [`stable_speeds`](Self::stable_speeds) under the feedback `k`.
+    pub fn closed_loop_stable_speeds(
+        &self,
+        lo: f64,
+        hi: f64,
+        steps: usize,
+        k: &LeanGains,
+    ) -> Vec<(f64, f64)> {
+        let growth = |v: f64| self.closed_loop_eigenvalues(v, k)[0].re;
         let stable = |v: f64| growth(v) < 0.0;
         let edge = |mut a: f64, mut b: f64| {
             let sa = stable(a);

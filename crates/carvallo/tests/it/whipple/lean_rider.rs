@@ -283,6 +283,38 @@ fn a_free_run_conserves_energy_until_the_torso_falls() {
     assert!(rk4.max_energy_drift > run.max_energy_drift, "{rk4:?}");
 }
 
+/// Lean feedback $T_9 = -k\,q_9 - c\,\dot q_9$ through $B$ is the joint's own spring and
+/// damper $k_9 = k$, $c_9 = c$ in the equations: two routes to the same closed loop. Roll and
+/// steer feedback change the eigenvalues (the gains reach the system).
+#[test]
+fn lean_feedback_is_the_joints_spring_and_damper() {
+    use carvallo::whipple::lean_rider::LeanGains;
+    let rider = rider();
+    let k = LeanGains::from_named([("k_lean_lean", 1e4), ("k_lean_lean_rate", 100.0)]).unwrap();
+    let sprung = LeanRider::new(
+        LeanRiderParams::browser_jason().with("k9", 1e4).and_then(|p| p.with("c9", 100.0)).unwrap(),
+    )
+    .unwrap();
+    let mut worst = 0.0f64;
+    for v in [1.0, 3.0, 5.0, 7.0, 9.0] {
+        let (a, b) = (rider.closed_loop_eigenvalues(v, &k), sprung.eigenvalues(v));
+        for (x, y) in a.iter().zip(&b) {
+            worst = worst.max((x - y).norm() / y.norm());
+        }
+    }
+    eprintln!("lean feedback against the joint's spring and damper: {worst:e}");
+    // The stiff joint's entries (k9/I ~ 5e3 against eigenvalues of ~1) cost digits: 1.9e-12.
+    assert!(worst < 1e-10, "{worst:e}");
+    let (ours, theirs) =
+        (rider.closed_loop_stable_speeds(0.0, 10.0, 100, &k), sprung.stable_speeds(0.0, 10.0, 100));
+    assert_eq!(ours.len(), 1);
+    assert!((ours[0].0 - theirs[0].0).abs() < 1e-8 && (ours[0].1 - theirs[0].1).abs() < 1e-8);
+    let roll = LeanGains::from_named([("k_roll_roll_rate", 5.0)]).unwrap();
+    assert_ne!(rider.closed_loop_eigenvalues(5.0, &roll), rider.eigenvalues(5.0));
+    assert!(LeanGains::from_named([("k_lean_yaw", 1.0)]).unwrap_err().contains("k_lean_yaw"));
+    assert_eq!(LeanGains::index("k_steer_lean_rate"), Some((1, 5)));
+}
+
 #[test]
 fn parameter_files_name_what_is_wrong() {
     let text = carvallo::whipple::lean_rider::BROWSER_JASON;
