@@ -9,6 +9,7 @@
 //! numbers per speed, speeds increasing; its errors name the file.
 
 use carvallo::whipple::feedback::{ClosedLoopWindow, GainTable, Gains, GAIN_NAMES};
+use carvallo::whipple::lean_rider::LeanGains;
 use serde_json::{json, Value};
 
 use crate::args::{GAIN, SPEED};
@@ -50,7 +51,28 @@ impl GainAxis {
 
 /// Checks a gain name: the error names it and lists the valid ones.
 fn gain_name(name: &str) -> Result<String, String> {
+    if LeanGains::index(name).is_some() {
+        return Ok(name.to_string());
+    }
     Gains::index(name).map(|_| name.to_string()).map_err(|e| e.to_string())
+}
+
+/// An error for the first gain of `values` that only the leaning rider has (`k_lean_...`,
+/// `k_..._lean`, `k_..._lean_rate`): the bicycle's feedback would drop it.
+pub fn bicycle_only(values: &[GainValue]) -> Result<(), String> {
+    match values.iter().find(|v| Gains::index(&v.name).is_err()) {
+        Some(v) => Err(format!(
+            "invalid --gain `{}`: a gain of the leaning rider (--model lean-rider); the \
+             bicycle's are k_{{roll|steer}}_{{roll|steer|roll_rate|steer_rate}}",
+            v.name
+        )),
+        None => Ok(()),
+    }
+}
+
+/// The leaning rider's gains of the `--gain` options (the others zero).
+pub fn lean_gains_of(values: &[GainValue]) -> Result<LeanGains, String> {
+    LeanGains::from_named(values.iter().map(|v| (v.name.as_str(), v.value)))
 }
 
 /// A gain of `text` (the value of the option `what`): finite and within [`GAIN`].

@@ -157,7 +157,9 @@ fn what_does_not_apply_is_an_error_naming_the_model() {
             "lean=step:1@0.5",
         ],
         &["window", "--model", "lean-rider", "--rider", "x"],
-        &["eig", "--model", "lean-rider", "--speed", "4", "--gain", "k_roll_roll=1"],
+        &["window", "--model", "benchmark", "--gain", "k_lean_lean=1"],
+        &["eig", "--model", "benchmark", "--speed", "4", "--gain", "k_roll_lean_rate=1"],
+        &["window", "--model", "lean-rider", "--gain-table", "x.csv"],
     ] {
         let (code, out, err) = carvallo(args);
         assert_eq!(code, 2, "{args:?}: {out}{err}");
@@ -221,4 +223,55 @@ fn simulate_keeps_the_energy_and_the_lean_torque_does_its_work() {
     );
     assert!(work.abs() > 1.0, "the torso must move: {work}");
     assert!((e[n] - e[0] - work).abs() < 1e-6, "{} J against {work} J", e[n] - e[0]);
+}
+
+/// Lean feedback from the command line: `--gain k_lean_lean=K --gain k_lean_lean_rate=C` closes
+/// the loop through B, which is the joint's own spring and damper k9 = K, c9 = C in the
+/// parameter file: the same window and eigenvalues by two routes.
+#[test]
+fn lean_feedback_equals_the_joints_spring_and_damper() {
+    let gains = ["--gain", "k_lean_lean=10000", "--gain", "k_lean_lean_rate=100"];
+    let mut args = vec!["window", "--model", "lean-rider", "--json"];
+    args.extend(gains);
+    let (code, out, err) = carvallo(&args);
+    assert_eq!(code, 0, "{err}");
+    let w: Value = serde_json::from_str(&out).unwrap();
+    assert_eq!(number(&w["gains"]["k_lean_lean"]), 10000.0);
+    let stable = w["stable"].as_array().unwrap();
+    assert_eq!(stable.len(), 1, "{w}");
+    let (lo, hi) = (number(&stable[0][0]), number(&stable[0][1]));
+    assert!((lo - 4.990701769990846).abs() < 1e-8 && (hi - 7.109479530388491).abs() < 1e-8, "{w}");
+    let mut args = vec!["eig", "--model", "lean-rider", "--speed", "3,5,8", "--json"];
+    args.extend(gains);
+    let (code, closed, err) = carvallo(&args);
+    assert_eq!(code, 0, "{err}");
+    let dir = std::env::temp_dir().join(format!("carvallo-lean-gain-{}", std::process::id()));
+    std::fs::create_dir_all(&dir).unwrap();
+    let base =
+        std::fs::read_to_string(root().join("data/mooreriderlean2012/browser_jason.toml")).unwrap();
+    let path = dir.join("sprung.toml");
+    std::fs::write(
+        &path,
+        base.replace("k9 = 0.0", "k9 = 10000.0").replace("c9 = 0.0", "c9 = 100.0"),
+    )
+    .unwrap();
+    let (code, sprung, err) =
+        carvallo(&["eig", "--model", path.to_str().unwrap(), "--speed", "3,5,8", "--json"]);
+    assert_eq!(code, 0, "{err}");
+    let (a, b): (Value, Value) =
+        (serde_json::from_str(&closed).unwrap(), serde_json::from_str(&sprung).unwrap());
+    for k in 0..3 {
+        for (x, y) in a[k]["eigenvalues"]
+            .as_array()
+            .unwrap()
+            .iter()
+            .zip(b[k]["eigenvalues"].as_array().unwrap())
+        {
+            let (dx, dy) =
+                (number(&x["re"]) - number(&y["re"]), number(&x["im"]) - number(&y["im"]));
+            let size = number(&y["re"]).hypot(number(&y["im"]));
+            assert!(dx.hypot(dy) < 1e-10 * size, "{x} against {y}");
+        }
+    }
+    std::fs::remove_dir_all(&dir).ok();
 }

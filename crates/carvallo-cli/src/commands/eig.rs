@@ -63,14 +63,10 @@ fn mode_json(m: &Mode) -> Value {
 /// Runs `carvallo eig`: the text to print, or an error naming the bad value.
 pub fn run(cmd: &Args) -> Result<String, String> {
     if let Some(rider) = crate::args::lean_rider(&cmd.model, &cmd.data)? {
-        if !cmd.gain.is_empty() {
-            return Err(format!(
-                "--gain (the closed loop) is for the bicycle, not yet for the leaning rider `{}`",
-                cmd.model
-            ));
-        }
-        return super::lean_rider::eig(&cmd.model, &rider, &cmd.speed, cmd.json);
+        let k = crate::gains::lean_gains_of(&cmd.gain)?;
+        return super::lean_rider::eig(&cmd.model, &rider, &k, &cmd.speed, cmd.json);
     }
+    crate::gains::bicycle_only(&cmd.gain)?;
     let bike = Whipple::new(crate::args::bicycle(&cmd.model, &cmd.data)?);
     let mut texts = Vec::new();
     let mut values = Vec::new();

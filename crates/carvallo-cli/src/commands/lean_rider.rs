@@ -22,13 +22,14 @@
 
 use carvallo::numerics::integrate::{Grid, Integration};
 use carvallo::whipple::lean_rider::{
-    Joint, LeanRider, Limits, RunEnd, INPUT_NAMES, PITCH, STATE_NAMES,
+    Joint, LeanGains, LeanRider, Limits, RunEnd, INPUT_NAMES, PITCH, STATE_NAMES,
 };
 use serde_json::{json, Value};
 
 use super::simulate_inputs::{Input, Kind};
 
-/// The speeds `window` scans (m/s) and its number of steps.
+/// The speeds `window` scans by default (m/s; `--vmin`, `--vmax` change them) and its number
+/// of steps.
 pub const SCAN: (f64, f64, usize) = (0.0, 20.0, 400);
 
 fn header(model: &str, rider: &LeanRider) -> String {
@@ -38,26 +39,53 @@ fn header(model: &str, rider: &LeanRider) -> String {
     )
 }
 
-/// `carvallo eig` on the leaning rider.
+/// The gains that are not zero, `name=value` (for text) and as a JSON object.
+fn gains_shown(k: &LeanGains) -> (String, Value) {
+    let mut text = Vec::new();
+    let mut obj = serde_json::Map::new();
+    for (i, input) in LeanGains::INPUTS.iter().enumerate() {
+        for (j, state) in LeanGains::STATES.iter().enumerate() {
+            if k.0[i][j] != 0.0 {
+                let name = format!("k_{input}_{state}");
+                text.push(format!("{name}={}", k.0[i][j]));
+                obj.insert(name, json!(k.0[i][j]));
+            }
+        }
+    }
+    (text.join(", "), Value::Object(obj))
+}
+
+/// `carvallo eig` on the leaning rider (`--gain`: the closed loop $A - BK$).
 pub fn eig(
     model: &str,
     rider: &LeanRider,
+    k: &LeanGains,
     speeds: &[f64],
     as_json: bool,
 ) -> Result<String, String> {
     let mut values = Vec::new();
     let mut s = header(model, rider);
+    let closed = *k != LeanGains::default();
+    let (gains_text, gains_json) = gains_shown(k);
     for &v in speeds {
-        let ev = rider.eigenvalues(v);
+        let ev = rider.closed_loop_eigenvalues(v, k);
         let list: Vec<Value> = ev.iter().map(|e| json!({ "re": e.re, "im": e.im })).collect();
-        values.push(json!({
+        let mut value = json!({
             "model": model,
             "rider": Value::Null,
             "speed": v,
             "eigenvalues": list,
             "modes": [],
-        }));
-        s.push_str(&format!("eigenvalues of roll, steer and lean at {v} m/s:\n"));
+        });
+        if closed {
+            value["gains"] = gains_json.clone();
+            s.push_str(&format!(
+                "closed-loop eigenvalues of roll, steer and lean at {v} m/s, gains {gains_text}:\n"
+            ));
+        } else {
+            s.push_str(&format!("eigenvalues of roll, steer and lean at {v} m/s:\n"));
+        }
+        values.push(value);
         for e in &ev {
             s.push_str(&format!("{} {:+}i\n", e.re, e.im));
         }
@@ -69,15 +97,22 @@ pub fn eig(
     Ok(s)
 }
 
-/// `carvallo window` on the leaning rider.
-pub fn window(model: &str, rider: &LeanRider, as_json: bool) -> Result<String, String> {
-    let (lo, hi, steps) = SCAN;
-    let stable = rider.stable_speeds(lo, hi, steps);
+/// `carvallo window` on the leaning rider: the speeds of `scan` (m/s; 400 steps) where the
+/// loop closed by `k` (open for zero gains) is stable.
+pub fn window(
+    model: &str,
+    rider: &LeanRider,
+    k: &LeanGains,
+    scan: (f64, f64),
+    as_json: bool,
+) -> Result<String, String> {
+    let ((lo, hi), steps) = (scan, SCAN.2);
+    let stable = rider.closed_loop_stable_speeds(lo, hi, steps, k);
     // Why nothing is stable: the largest real part over the scan, where it is least.
     let least = (0..=steps)
-        .map(|k| {
-            let v = lo + (hi - lo) * k as f64 / steps as f64;
-            (v, rider.eigenvalues(v)[0])
+        .map(|i| {
+            let v = lo + (hi - lo) * i as f64 / steps as f64;
+            (v, rider.closed_loop_eigenvalues(v, k)[0])
         })
         .min_by(|a, b| a.1.re.total_cmp(&b.1.re))
         .expect("a scan");
@@ -88,10 +123,14 @@ pub fn window(model: &str, rider: &LeanRider, as_json: bool) -> Result<String, S
             "scan": [lo, hi],
             "stable": stable.iter().map(|(a, b)| json!([a, b])).collect::<Vec<_>>(),
             "least_growth": { "speed": least.0, "re": least.1.re, "im": least.1.im },
+            "gains": gains_shown(k).1,
         });
         return serde_json::to_string_pretty(&v).map_err(|e| e.to_string());
     }
     let mut s = header(model, rider);
+    if *k != LeanGains::default() {
+        s.push_str(&format!("closed loop, gains {}\n", gains_shown(k).0));
+    }
     if stable.is_empty() {
         s.push_str(&format!(
             "no stable speed from {lo} to {hi} m/s: the least growing mode still grows at \
@@ -99,7 +138,7 @@ pub fn window(model: &str, rider: &LeanRider, as_json: bool) -> Result<String, S
             least.1.re,
             least.1.im,
             least.0,
-            if least.1.im == 0.0 {
+            if least.1.im == 0.0 && k.0[2][2] == 0.0 && rider.params().get("k9") == Some(0.0) {
                 " (a real eigenvalue: with k9 = c9 = 0 the torso falls on its joint; give the \
                  lean joint stiffness k9 and damping c9)"
             } else {

@@ -174,6 +174,7 @@ impl InputArgs {
         if let Some(path) = &self.gain_table {
             inputs.feedback = Feedback::Table(crate::gains::read_gain_table(path)?);
         } else if !self.gain.is_empty() {
+            crate::gains::bicycle_only(&self.gain)?;
             inputs.feedback = Feedback::Constant(crate::gains::gains_of(&self.gain));
         }
         Ok(inputs)

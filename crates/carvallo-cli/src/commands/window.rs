@@ -72,7 +72,8 @@ pub struct Args {
 pub struct FeedbackOptions {
     /// A gain of the state feedback u = -K x, NAME = k_{roll|steer}_{roll|steer|roll_rate|steer_rate}
     /// (roll or steer torque from roll, steer or their rates; the others are zero): the
-    /// closed-loop stable speed range
+    /// closed-loop stable speed range; for the leaning rider also the lean torque and the
+    /// torso's lean, k_{roll|steer|lean}_{roll|steer|lean|roll_rate|steer_rate|lean_rate}
     #[arg(long, value_name = "NAME=VALUE", value_parser = crate::gains::parse_gain, allow_hyphen_values = true)]
     pub gain: Vec<GainValue>,
     /// Gains as functions of speed: a CSV file with the header `speed,k_...` and one row per
@@ -131,13 +132,18 @@ pub fn run(cmd: &Args) -> Result<String, String> {
         return carvallo_window(model).and_then(|w| render_carvallo(model, &w, *json));
     }
     if let Some(rider) = crate::args::lean_rider(model, data)? {
-        if feedback.any() {
+        if feedback.gain_table.is_some() || feedback.assist_down_to.is_some() {
             return Err(format!(
-                "the closed loop (--gain, --gain-table, --vmin, --vmax, --assist-down-to) is for \
-                 the bicycle, not yet for the leaning rider `{model}`"
+                "--gain-table and --assist-down-to are for the bicycle, not yet for the leaning \
+                 rider `{model}`"
             ));
         }
-        return super::lean_rider::window(model, &rider, *json);
+        let k = crate::gains::lean_gains_of(&feedback.gain)?;
+        let scan = (feedback.vmin.unwrap_or(0.0), feedback.vmax.unwrap_or(20.0));
+        if scan.1 <= scan.0 {
+            return Err(format!("invalid --vmax {}: must exceed --vmin {}", scan.1, scan.0));
+        }
+        return super::lean_rider::window(model, &rider, &k, scan, *json);
     }
     if feedback.any() {
         return closed_loop(model, data, feedback, *json);
@@ -205,6 +211,7 @@ fn closed_loop(
         );
     }
     let table = fb.gain_table.as_deref().map(crate::gains::read_gain_table).transpose()?;
+    crate::gains::bicycle_only(&fb.gain)?;
     let bike = Whipple::new(crate::args::bicycle(model, data)?);
     let mut gains = crate::gains::gains_of(&fb.gain);
     let assist = match fb.assist_down_to {
