@@ -9,13 +9,15 @@ use std::sync::atomic::Ordering;
 
 use carvallo::numerics::integrate::{Grid, Integration};
 use carvallo::whipple::lean_rider::{
-    Joint, LeanRider, LeanRiderParams, Limits, RunEnd, INPUT_NAMES, PITCH, STATE_NAMES,
+    Joint, LeanGains, LeanRider, LeanRiderParams, Limits, RunEnd, INPUT_NAMES, PITCH, STATE_NAMES,
 };
-use numpy::{Complex64, PyArray1, PyArray2, PyArrayMethods};
+use numpy::{
+    Complex64, PyArray1, PyArray2, PyArrayMethods, PyReadonlyArray2, PyUntypedArrayMethods,
+};
 use pyo3::prelude::*;
 use pyo3::types::{PyDict, PyList};
 
-use crate::common::{err, pairs, set_run};
+use crate::common::{err, pairs, set_run, OrBad};
 use crate::guard::{interruptible, read_text, within};
 
 /// The leaning rider's parameters when `params` is a mapping in Moore's names (it holds `mg`,
@@ -69,18 +71,75 @@ pub(crate) fn eigenvalues<'py>(
     rider: &LeanRider,
     speeds: &[f64],
 ) -> PyResult<Bound<'py, PyArray2<Complex64>>> {
+    eigenvalues_with(py, rider, &LeanGains::default(), speeds)
+}
+
+/// As [`eigenvalues`], of the loop closed by `k`.
+pub(crate) fn eigenvalues_with<'py>(
+    py: Python<'py>,
+    rider: &LeanRider,
+    k: &LeanGains,
+    speeds: &[f64],
+) -> PyResult<Bound<'py, PyArray2<Complex64>>> {
     within(&format!("{} speeds", speeds.len()), speeds.len() as f64, 6.0 * 16.0)?;
     let flat = interruptible(py, |stop| {
         let mut flat = Vec::with_capacity(6 * speeds.len());
-        for (k, v) in speeds.iter().enumerate() {
-            if k % 64 == 0 && stop.load(Ordering::Relaxed) {
+        for (i, v) in speeds.iter().enumerate() {
+            if i % 64 == 0 && stop.load(Ordering::Relaxed) {
                 break;
             }
-            flat.extend(rider.eigenvalues(*v).iter().map(|e| Complex64::new(e.re, e.im)));
+            let ev = rider.closed_loop_eigenvalues(*v, k);
+            flat.extend(ev.iter().map(|e| Complex64::new(e.re, e.im)));
         }
         flat
     })?;
     PyArray1::from_vec(py, flat).reshape([speeds.len(), 6])
+}
+
+/// The leaning rider's gains of `k`: a dict by name or a (3, 6) array (rows roll, steer, lean
+/// torque; columns roll, steer, lean and their rates), finite.
+pub(crate) fn gains_of(k: &Bound<'_, PyAny>) -> PyResult<LeanGains> {
+    let gains = if k.cast::<PyDict>().is_ok() {
+        let pairs = pairs(k, "K")?;
+        LeanGains::from_named(pairs.iter().map(|(n, v)| (n.as_str(), *v))).map_err(err)?
+    } else {
+        let bad = || {
+            err("K must be a (3, 6) array (rows roll, steer, lean torque) or a dict of gains by \
+                 name, for the leaning rider")
+        };
+        let arr = k.py().import("numpy")?.call_method1("asarray", (k, "float64")).or_bad(bad)?;
+        let arr: PyReadonlyArray2<f64> = arr.extract().or_bad(bad)?;
+        if arr.shape() != [3, 6] {
+            return Err(err(format!("K must have the shape (3, 6), not {:?}", arr.shape())));
+        }
+        let view = arr.as_array();
+        LeanGains(std::array::from_fn(|r| std::array::from_fn(|c| view[[r, c]])))
+    };
+    if let Some(x) = gains.0.iter().flatten().find(|x| !x.is_finite()) {
+        return Err(err(format!("a gain {x} is not finite")));
+    }
+    Ok(gains)
+}
+
+/// `closed_loop_window` on the leaning rider: the stable speeds of a scan from `vmin` (0) to
+/// `vmax` (20 m/s) in 400 steps, edges bisected to 1e-10 m/s.
+pub(crate) fn closed_loop_window<'py>(
+    py: Python<'py>,
+    rider: &LeanRider,
+    k: &LeanGains,
+    vmin: Option<f64>,
+    vmax: Option<f64>,
+) -> PyResult<Bound<'py, PyDict>> {
+    let (lo, hi) = (vmin.unwrap_or(0.0), vmax.unwrap_or(20.0));
+    if !(lo.is_finite() && hi.is_finite() && hi > lo) {
+        return Err(err(format!("invalid vmin {lo:?}, vmax {hi:?}: finite, vmax above vmin")));
+    }
+    let stable = interruptible(py, |_| rider.closed_loop_stable_speeds(lo, hi, 400, k))?;
+    let d = PyDict::new(py);
+    d.set_item("from", lo)?;
+    d.set_item("to", hi)?;
+    d.set_item("stable", PyList::new(py, stable)?)?;
+    Ok(d)
 }
 
 /// `(A, B)` at each speed, shapes (n, 12, 12) and (n, 12, 3): Moore's state

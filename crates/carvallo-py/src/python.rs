@@ -526,7 +526,9 @@ fn gains_of(k: &Bound<'_, PyAny>) -> PyResult<carvallo::whipple::feedback::Gains
 /// between `vmin` and `vmax` (default: every speed; `None` for an unbounded end). `K` may be a
 /// gain table (as `window --gain-table`): a dict with `speed` (increasing) and gains by name,
 /// each a sequence of the same length, linearly interpolated; `vmin` and `vmax` default to its
-/// speeds, and a range it does not cover is an error.
+/// speeds, and a range it does not cover is an error. For the leaning rider's params
+/// (`lean_rider()`): `K` as in `closed_loop_eigenvalues`, the window of a scan of `vmin` (0) to
+/// `vmax` (20) m/s, `{"from", "to", "stable"}`.
 #[pyfunction]
 #[pyo3(signature = (params, k, vmin = None, vmax = None, strict = false))]
 fn closed_loop_window<'py>(
@@ -537,6 +539,10 @@ fn closed_loop_window<'py>(
     #[pyo3(from_py_with = arg::vmax)] vmax: Option<f64>,
     strict: bool,
 ) -> PyResult<Bound<'py, PyDict>> {
+    if let Some(rider) = crate::lean_rider::rider_of(params)? {
+        let k = crate::lean_rider::gains_of(k)?;
+        return crate::lean_rider::closed_loop_window(py, &rider, &k, vmin, vmax);
+    }
     let bike = Whipple::new(params_of(params, strict)?);
     for (name, x) in [("vmin", vmin), ("vmax", vmax)] {
         match x {
@@ -578,7 +584,9 @@ fn closed_loop_window<'py>(
 
 /// The eigenvalues of the closed loop A - B K at each speed, shape (n, 4) complex, sorted by
 /// real then imaginary part; `K` as in [`closed_loop_window`] (a gain table is read at each
-/// speed, which it must cover).
+/// speed, which it must cover). For the leaning rider's params (`lean_rider()`): shape (n, 6),
+/// `K` a dict of gains `k_{roll|steer|lean}_{roll|steer|lean|roll_rate|steer_rate|lean_rate}`
+/// or a (3, 6) array.
 #[pyfunction]
 #[pyo3(signature = (params, k, speeds, strict = false))]
 fn closed_loop_eigenvalues<'py>(
@@ -588,6 +596,11 @@ fn closed_loop_eigenvalues<'py>(
     speeds: &Bound<'py, PyAny>,
     strict: bool,
 ) -> PyResult<Bound<'py, PyAny>> {
+    if let Some(rider) = crate::lean_rider::rider_of(params)? {
+        let k = crate::lean_rider::gains_of(k)?;
+        let speeds = speeds_of(speeds)?;
+        return Ok(crate::lean_rider::eigenvalues_with(py, &rider, &k, &speeds)?.into_any());
+    }
     let bike = Whipple::new(params_of(params, strict)?);
     let feedback = feedback_of(k)?;
     let speeds = speeds_of(speeds)?;

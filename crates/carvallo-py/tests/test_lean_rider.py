@@ -115,3 +115,25 @@ def test_the_guides_example_runs_as_written():
     w = carvallo.window(dict(ns["p"], k9=1e4, c9=100.0))
     assert [(round(a, 2), round(b, 2)) for a, b in w["stable"]] == [(4.99, 7.11)]
     assert ns["run"]["status"] == "torso fell" and abs(ns["run"]["lean"][-1]) == 1.2
+
+
+def test_lean_feedback_is_the_joints_spring_and_damper():
+    """K with k_lean_lean = 1e4 and k_lean_lean_rate = 100 (by name, or as a (3, 6) array)
+    closes the loop through B; the same spring and damper as k9, c9 are in the equations."""
+    p = carvallo.lean_rider()
+    k = {"k_lean_lean": 1e4, "k_lean_lean_rate": 100.0}
+    array = np.zeros((3, 6))
+    array[2, 2], array[2, 5] = 1e4, 100.0
+    speeds = [1.0, 4.0, 6.0, 9.0]
+    sprung = carvallo.eigenvalues(dict(p, k9=1e4, c9=100.0), speeds)
+    for gains in (k, array):
+        closed = carvallo.closed_loop_eigenvalues(p, gains, speeds)
+        assert closed.shape == (4, 6)
+        assert (np.abs(closed - sprung) / np.abs(sprung)).max() < 1e-10
+    w = carvallo.closed_loop_window(p, k)
+    [(lo, hi)] = w["stable"]
+    assert abs(lo - 4.990701769990846) < 1e-8 and abs(hi - 7.109479530388491) < 1e-8
+    with pytest.raises(carvallo.ParameterError, match="unknown gain `k_lean_yaw`"):
+        carvallo.closed_loop_eigenvalues(p, {"k_lean_yaw": 1.0}, [4.0])
+    with pytest.raises(carvallo.ParameterError, match=r"shape \(3, 6\), not \[2, 4\]"):
+        carvallo.closed_loop_eigenvalues(p, np.zeros((2, 4)), [4.0])
