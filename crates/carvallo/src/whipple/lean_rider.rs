@@ -39,7 +39,7 @@ use crate::numerics::integrate::{
 
 use carvallo_ir::dual::{self, Dual};
 use carvallo_ir::Program;
-use nalgebra::{Complex, SMatrix};
+use nalgebra::{Complex, DMatrix, SMatrix, SVector};
 
 crate::scene! {
     /// Kane's equations ($M$, $f$), the dependent rates and the rear contact's velocity: every
@@ -971,5 +971,109 @@ impl LeanRider {
             out.push((s, hi));
         }
         out
+    }
+}
+
+/// A transfer function of the leaning rider at one speed: from the roll, steer or lean torque
+/// (`input` 0, 1, 2: T4, T7, T9) to a lateral state (`output`, [`LeanGains::STATES`] order:
+/// roll, steer, the torso's lean and their rates), $G(s) = e^\top (sI - A)^{-1} b$ on the six
+/// lateral states.
+///
+/// The numerator $N(s) = e^\top \operatorname{adj}(sI - A)\, b$ comes from the
+/// Faddeev–LeVerrier recursion ($\operatorname{adj}(sI - A) = \sum_k M_k s^{5-k}$), its roots
+/// (the zeros) from the eigenvalues of its companion matrix, the poles are the open-loop
+/// eigenvalues; $G(i\omega)$ itself is a complex LU solve. The phase is the bicycle's: a
+/// function of $\omega$ alone, on the branch the zeros and poles choose
+/// ([`transfer`](super::transfer)'s module docs).
+#[derive(Clone, Debug)]
+pub struct LeanTransfer {
+    a: SMatrix<f64, 6, 6>,
+    b: SVector<f64, 6>,
+    output: usize,
+    /// The numerator's coefficients of $s^0, \dots, s^5$.
+    pub numerator: [f64; 6],
+    /// The zeros (roots of the numerator, of the degree its leading coefficient above
+    /// $10^{-12}$ of the largest gives).
+    pub zeros: Vec<Complex<f64>>,
+    /// The poles (the six eigenvalues).
+    pub poles: [Complex<f64>; 6],
+}
+
+impl LeanTransfer {
+    /// $G(i\omega)$: real and imaginary parts.
+    pub fn at(&self, omega: f64) -> (f64, f64) {
+        let m = SMatrix::<Complex<f64>, 6, 6>::from_fn(|i, j| {
+            let d = if i == j { Complex::new(0.0, omega) } else { Complex::new(0.0, 0.0) };
+            d - Complex::new(self.a[(i, j)], 0.0)
+        });
+        let rhs = SVector::<Complex<f64>, 6>::from_fn(|i, _| Complex::new(self.b[i], 0.0));
+        match m.lu().solve(&rhs) {
+            Some(x) => (x[self.output].re, x[self.output].im),
+            None => (f64::NAN, f64::NAN),
+        }
+    }
+
+    /// $|G(i\omega)|$ in decibels.
+    pub fn magnitude_db(&self, omega: f64) -> f64 {
+        let (re, im) = self.at(omega);
+        20.0 * re.hypot(im).log10()
+    }
+
+    /// The phase of $G(i\omega)$ [degrees], continuous in $\omega$, in $(-180°, 180°]$ as
+    /// $\omega \to 0^+$.
+    pub fn phase_deg(&self, omega: f64) -> f64 {
+        let lead = self.numerator[self.zeros.len()];
+        super::transfer::phase_on_branch(
+            self.at(omega),
+            &self.zeros,
+            &self.poles,
+            lead < 0.0,
+            omega,
+        )
+    }
+}
+
+impl LeanRider {
+    /// The transfer function from torque `input` (0 roll, 1 steer, 2 lean) to the lateral state
+    /// `output` (0–5: roll, steer, lean, their rates) at `speed` (m/s); `None` for an index out
+    /// of range.
+    pub fn transfer(&self, speed: f64, input: usize, output: usize) -> Option<LeanTransfer> {
+        if input >= 3 || output >= 6 {
+            return None;
+        }
+        let (a12, b12) = self.state_space(speed);
+        let a = SMatrix::<f64, 6, 6>::from_fn(|i, j| a12[(LATERAL[i], LATERAL[j])]);
+        let b = SVector::<f64, 6>::from_fn(|i, _| b12[(LATERAL[i], input)]);
+        // Faddeev–LeVerrier: M_1 = I, c_5 = -tr(A); M_k = A M_{k-1} + c_{6-k+1} I.
+        let mut numerator = [0.0; 6];
+        let mut m = SMatrix::<f64, 6, 6>::identity();
+        for k in 1..=6 {
+            numerator[6 - k] = (m.row(output) * b)[0];
+            let am = a * m;
+            let c = -am.trace() / k as f64;
+            m = am + SMatrix::<f64, 6, 6>::identity() * c;
+        }
+        let largest = numerator.iter().fold(0.0f64, |x, y| x.max(y.abs()));
+        let degree = (0..6).rev().find(|&k| numerator[k].abs() > 1e-12 * largest).unwrap_or(0);
+        let zeros = if degree == 0 {
+            Vec::new()
+        } else {
+            let companion = DMatrix::<f64>::from_fn(degree, degree, |i, j| {
+                if i == 0 {
+                    -numerator[degree - 1 - j] / numerator[degree]
+                } else if j + 1 == i {
+                    1.0
+                } else {
+                    0.0
+                }
+            });
+            companion.complex_eigenvalues().iter().copied().collect()
+        };
+        let poles = {
+            let mut p: Vec<Complex<f64>> = a.complex_eigenvalues().iter().copied().collect();
+            p.sort_by(|x, y| y.re.total_cmp(&x.re).then(y.im.total_cmp(&x.im)));
+            std::array::from_fn(|k| p[k])
+        };
+        Some(LeanTransfer { a, b, output, numerator, zeros, poles })
     }
 }

@@ -276,50 +276,14 @@ impl TransferFunction {
 
     /// [`Self::phase_deg`] with the zeros and poles computed once.
     fn phase_with(&self, zeros: &[Complex<f64>], poles: &[Complex<f64>], omega: f64) -> f64 {
-        let (re, im) = self.at(omega);
-        let principal = im.atan2(re).to_degrees();
-        let branch_sum = |w: f64| {
-            let factor = |r: &Complex<f64>| {
-                // arg(iω - r) on the branch continuous along the vertical line Re = -Re r.
-                let a = (w - r.im).atan2(-r.re).to_degrees();
-                if r.re > 0.0 && a < 0.0 {
-                    a + 360.0
-                } else {
-                    a
-                }
-            };
-            zeros.iter().map(factor).sum::<f64>() - poles.iter().map(factor).sum::<f64>()
-        };
         // The gain's sign; a rate's zero at the origin counts +90° as ω -> 0+.
         let lead = if zeros.len() > usize::from(self.output.is_rate()) {
             self.numerator[zeros.len() - usize::from(self.output.is_rate())]
         } else {
             self.numerator[0]
         };
-        let gain = if lead / self.denominator[4] < 0.0 { 180.0 } else { 0.0 };
-        // The limit as ω -> 0+: each factor at ω = 0 is its limit, except a root at the origin
-        // (iω - 0 has argument 90° for every ω > 0).
-        let at_zero = |rs: &[Complex<f64>]| -> f64 {
-            rs.iter()
-                .map(|r| {
-                    if r.re == 0.0 && r.im == 0.0 {
-                        90.0
-                    } else {
-                        let a = (-r.im).atan2(-r.re).to_degrees();
-                        if r.re > 0.0 && a < 0.0 {
-                            a + 360.0
-                        } else {
-                            a
-                        }
-                    }
-                })
-                .sum()
-        };
-        let limit = gain + at_zero(zeros) - at_zero(poles);
-        // The one multiple of 360° putting the limit in (-180°, 180°].
-        let shift = -360.0 * ((limit - 180.0) / 360.0).ceil();
-        let continuous = gain + branch_sum(omega) + shift;
-        principal + 360.0 * ((continuous - principal) / 360.0).round()
+        let negative = lead / self.denominator[4] < 0.0;
+        phase_on_branch(self.at(omega), zeros, poles, negative, omega)
     }
 
     /// The numerator's coefficients of $s^0, s^1, s^2, s^3$ including the factor $s$ of a rate
@@ -332,6 +296,58 @@ impl TransferFunction {
             [n[0], n[1], n[2], 0.0]
         }
     }
+}
+
+/// The phase of $G(i\omega) = $ `g` (real and imaginary parts) [degrees] for $\omega \ge 0$ on
+/// the branch that the zeros and poles choose (see the [module docs](self)): continuous in
+/// $\omega$, in $(-180°, 180°]$ as $\omega \to 0^+$; `negative` when the gain $K$ (the ratio of
+/// the leading coefficients) is negative. Shared by the bicycle's transfer functions and the
+/// leaning rider's ([`super::lean_rider`]).
+pub(crate) fn phase_on_branch(
+    g: (f64, f64),
+    zeros: &[Complex<f64>],
+    poles: &[Complex<f64>],
+    negative: bool,
+    omega: f64,
+) -> f64 {
+    let (re, im) = g;
+    let principal = im.atan2(re).to_degrees();
+    let branch_sum = |w: f64| {
+        let factor = |r: &Complex<f64>| {
+            // arg(iω - r) on the branch continuous along the vertical line Re = -Re r.
+            let a = (w - r.im).atan2(-r.re).to_degrees();
+            if r.re > 0.0 && a < 0.0 {
+                a + 360.0
+            } else {
+                a
+            }
+        };
+        zeros.iter().map(factor).sum::<f64>() - poles.iter().map(factor).sum::<f64>()
+    };
+    let gain = if negative { 180.0 } else { 0.0 };
+    // The limit as ω -> 0+: each factor at ω = 0 is its limit, except a root at the origin
+    // (iω - 0 has argument 90° for every ω > 0).
+    let at_zero = |rs: &[Complex<f64>]| -> f64 {
+        rs.iter()
+            .map(|r| {
+                if r.re == 0.0 && r.im == 0.0 {
+                    90.0
+                } else {
+                    let a = (-r.im).atan2(-r.re).to_degrees();
+                    if r.re > 0.0 && a < 0.0 {
+                        a + 360.0
+                    } else {
+                        a
+                    }
+                }
+            })
+            .sum()
+    };
+    let limit = gain + at_zero(zeros) - at_zero(poles);
+    // The one multiple of 360° putting the limit in (-180°, 180°].
+    let shift = -360.0 * ((limit - 180.0) / 360.0).ceil();
+    let continuous = gain + branch_sum(omega) + shift;
+    principal + 360.0 * ((continuous - principal) / 360.0).round()
 }
 
 /// One point of a frequency response.

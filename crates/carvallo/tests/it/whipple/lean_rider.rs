@@ -315,6 +315,61 @@ fn lean_feedback_is_the_joints_spring_and_damper() {
     assert_eq!(LeanGains::index("k_steer_lean_rate"), Some((1, 5)));
 }
 
+/// The transfer functions: $G(i\omega)$ by the complex solve equals the product form
+/// $K \prod (i\omega - z) / \prod (i\omega - p)$ of the Faddeev–LeVerrier numerator's zeros and
+/// the eigenvalues (so the zeros and the gain that choose the phase's branch are right); and a
+/// stiff lean joint's steer-to-roll and roll-to-steer responses, magnitude and phase, approach the
+/// hand-derived Whipple bicycle's with the torso locked ([`LeanRider::locked`],
+/// `generated/whipple.ir`'s transfer functions, a different formula: the adjugate of
+/// $M s^2 + v C_1 s + g K_0 + v^2 K_2$).
+#[test]
+fn transfer_functions_are_their_product_form_and_the_locked_bicycles() {
+    use carvallo::whipple::transfer::{Input, Output};
+    use carvallo::whipple::Whipple;
+    use nalgebra::Complex;
+    let rider = rider();
+    let mut worst = 0.0f64;
+    for (input, output) in [(0, 0), (1, 0), (2, 2), (1, 4), (2, 0), (0, 5)] {
+        let g = rider.transfer(4.0, input, output).expect("indices in range");
+        for omega in [0.1, 1.0, 3.0, 10.0, 100.0] {
+            let s = Complex::new(0.0, omega);
+            let mut product = Complex::new(g.numerator[g.zeros.len()], 0.0);
+            for z in &g.zeros {
+                product *= s - z;
+            }
+            for p in &g.poles {
+                product /= s - p;
+            }
+            let (re, im) = g.at(omega);
+            worst = worst.max((product - Complex::new(re, im)).norm() / product.norm());
+        }
+    }
+    eprintln!("transfer functions against their product form: {worst:e}");
+    assert!(worst < 1e-8, "{worst:e}");
+    assert!(rider.transfer(4.0, 3, 0).is_none() && rider.transfer(4.0, 0, 6).is_none());
+
+    let stiff = LeanRider::new(LeanRiderParams::browser_jason().with("k9", 1e7).unwrap()).unwrap();
+    let whipple = Whipple::new(rider.locked().unwrap().0);
+    let (mut worst_mag, mut worst_phase) = (0.0f64, 0.0f64);
+    for (input, output, i, o) in
+        [(1, 0, Input::Steer, Output::Roll), (0, 1, Input::Roll, Output::Steer)]
+    {
+        for v in [2.0, 5.0, 8.0] {
+            let ours = stiff.transfer(v, input, output).unwrap();
+            let theirs = whipple.transfer_function(v, i, o);
+            for omega in [0.3, 1.0, 3.0, 10.0] {
+                let (re, im) = ours.at(omega);
+                let (tre, tim) = theirs.at(omega);
+                worst_mag = worst_mag.max((re - tre).hypot(im - tim) / tre.hypot(tim));
+                worst_phase =
+                    worst_phase.max((ours.phase_deg(omega) - theirs.phase_deg(omega)).abs());
+            }
+        }
+    }
+    eprintln!("stiff joint (k9 = 1e7) against the locked bicycle: |ΔG|/|G| {worst_mag:e}, phase {worst_phase:e}°");
+    assert!(worst_mag < 1e-4 && worst_phase < 1e-2, "{worst_mag:e} {worst_phase:e}");
+}
+
 #[test]
 fn parameter_files_name_what_is_wrong() {
     let text = carvallo::whipple::lean_rider::BROWSER_JASON;
