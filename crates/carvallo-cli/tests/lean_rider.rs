@@ -127,8 +127,9 @@ fn window_is_empty_for_the_passive_torso_and_not_for_a_stiff_joint() {
 #[test]
 fn what_does_not_apply_is_an_error_naming_the_model() {
     for args in [
-        &["bode", "--model", "lean-rider", "--speed", "4", "--input", "steer", "--output", "roll"]
-            [..],
+        &["turn", "--model", "lean-rider", "--speed", "4"][..],
+        &["bode", "--model", "benchmark", "--speed", "5", "--input", "lean", "--output", "roll"],
+        &["bode", "--model", "benchmark", "--speed", "5", "--input", "roll", "--output", "lean"],
         &["simulate", "--model", "lean-rider", "--batch", "x.csv", "--duration", "1"],
         &[
             "simulate",
@@ -274,4 +275,35 @@ fn lean_feedback_equals_the_joints_spring_and_damper() {
         }
     }
     std::fs::remove_dir_all(&dir).ok();
+}
+
+/// `bode --model lean-rider`: the phase at a frequency is the same whatever the grid (the
+/// branch is chosen by the zeros and poles, not by unwrapping), and the lean torque reaches the
+/// roll (a finite, non-zero response).
+#[test]
+fn bode_phase_is_a_function_of_the_frequency() {
+    let base = [
+        "bode",
+        "--model",
+        "lean-rider",
+        "--speed",
+        "5",
+        "--input",
+        "lean",
+        "--output",
+        "roll",
+        "--json",
+    ];
+    let run = |extra: &[&str]| -> Value {
+        let (code, out, err) = carvallo(&[&base[..], extra].concat());
+        assert_eq!(code, 0, "{err}");
+        serde_json::from_str(&out).unwrap()
+    };
+    let alone = run(&["--omega", "3"]);
+    let grid = run(&["--omega-range", "0.3:30:3"]);
+    let (a, g) = (&alone["points"][0], &grid["points"][1]);
+    assert!((number(&g["omega"]) - 3.0).abs() < 1e-12, "{g}");
+    assert!((number(&a["phase_deg"]) - number(&g["phase_deg"])).abs() < 1e-9, "{a} {g}");
+    assert!(number(&a["magnitude_db"]).is_finite() && number(&a["magnitude_db"]) > -200.0, "{a}");
+    assert_eq!(alone["input"], "lean");
 }

@@ -11,6 +11,7 @@ use carvallo::numerics::integrate::{Grid, Integration};
 use carvallo::whipple::lean_rider::{
     Joint, LeanGains, LeanRider, LeanRiderParams, Limits, RunEnd, INPUT_NAMES, PITCH, STATE_NAMES,
 };
+use carvallo::whipple::transfer::FrequencyPoint;
 use numpy::{
     Complex64, PyArray1, PyArray2, PyArrayMethods, PyReadonlyArray2, PyUntypedArrayMethods,
 };
@@ -344,6 +345,49 @@ pub(crate) fn simulate<'py>(
     d.set_item("max_energy_drift", run.max_energy_drift)?;
     set_run(&d, how, &run.stats, None)?;
     Ok(d)
+}
+
+/// The leaning rider's torque `input` (roll, steer, lean: 0, 1, 2) and lateral state `output`
+/// (roll, steer, lean, roll-rate, steer-rate, lean-rate: 0–5) by name.
+pub(crate) fn signals(input: &str, output: &str) -> PyResult<(usize, usize)> {
+    const INPUTS: [&str; 3] = ["roll", "steer", "lean"];
+    const OUTPUTS: [&str; 6] = ["roll", "steer", "lean", "roll-rate", "steer-rate", "lean-rate"];
+    let i = INPUTS.iter().position(|n| *n == input).ok_or_else(|| {
+        err(format!("unknown input `{input}` for the leaning rider: expected roll, steer or lean"))
+    })?;
+    let o = OUTPUTS.iter().position(|n| *n == output).ok_or_else(|| {
+        err(format!(
+            "unknown output `{output}` for the leaning rider: expected one of {}",
+            OUTPUTS.join(", ")
+        ))
+    })?;
+    Ok((i, o))
+}
+
+/// The frequency response of the leaning rider at `speed` from torque `input` to the lateral
+/// state `output` at each of `omegas` (the CLI's `bode --model lean-rider`).
+pub(crate) fn frequency_response(
+    rider: &LeanRider,
+    speed: f64,
+    omegas: &[f64],
+    input: usize,
+    output: usize,
+) -> Vec<FrequencyPoint> {
+    let g = rider.transfer(speed, input, output).expect("indices checked by signals");
+    omegas
+        .iter()
+        .map(|&omega| {
+            let (re, im) = g.at(omega);
+            FrequencyPoint {
+                speed,
+                omega,
+                re,
+                im,
+                magnitude_db: 20.0 * re.hypot(im).log10(),
+                phase_deg: g.phase_deg(omega),
+            }
+        })
+        .collect()
 }
 
 /// Adds `lean_rider` to the module.

@@ -28,6 +28,7 @@ use crate::common::{
     cut_short, err, integration_of, pairs, params_of, set_run, uncertain_of, warn_all, Covariance,
     OrBad, ParameterError, PhysicsWarning,
 };
+use carvallo::whipple::transfer::FrequencyPoint;
 
 fn dict_of<'py>(py: Python<'py>, values: &[f64; 26]) -> PyResult<Bound<'py, PyDict>> {
     let d = PyDict::new(py);
@@ -443,7 +444,11 @@ fn frequency_response<'py>(
     strict: bool,
 ) -> PyResult<Bound<'py, PyDict>> {
     use carvallo::whipple::transfer::{Input, Output};
-    let bike = Whipple::new(params_of(params, strict)?);
+    let rider = crate::lean_rider::rider_of(params)?;
+    let bike = match rider {
+        None => Some(Whipple::new(params_of(params, strict)?)),
+        Some(_) => None,
+    };
     let speeds = speeds_of(speeds)?;
     let omegas = number_or_numbers(omegas, "omegas")?;
     if let Some(x) = omegas.iter().find(|x| !(x.is_finite() && **x >= 0.0)) {
@@ -456,12 +461,24 @@ fn frequency_response<'py>(
         speeds.len() as f64 * omegas.len() as f64,
         each as f64,
     )?;
-    let input: Input = input
-        .parse()
-        .map_err(|e: carvallo::whipple::transfer::UnknownSignal| err(e.to_string()))?;
-    let output: Output = output
-        .parse()
-        .map_err(|e: carvallo::whipple::transfer::UnknownSignal| err(e.to_string()))?;
+    // The plant's response at one speed to a block of frequencies.
+    type Respond<'a> = Box<dyn Fn(f64, &[f64]) -> Vec<FrequencyPoint> + Sync + 'a>;
+    let respond: Respond<'_> = match (&rider, &bike) {
+        (Some(rider), _) => {
+            let (i, o) = crate::lean_rider::signals(input, output)?;
+            Box::new(move |v, block| crate::lean_rider::frequency_response(rider, v, block, i, o))
+        }
+        (None, Some(bike)) => {
+            let input: Input = input
+                .parse()
+                .map_err(|e: carvallo::whipple::transfer::UnknownSignal| err(e.to_string()))?;
+            let output: Output = output
+                .parse()
+                .map_err(|e: carvallo::whipple::transfer::UnknownSignal| err(e.to_string()))?;
+            Box::new(move |v, block| bike.frequency_response(&[v], block, input, output))
+        }
+        (None, None) => unreachable!("a bicycle or the leaning rider"),
+    };
     // On a worker, so that Ctrl-C is seen during millions of points: the speeds one at a time
     // and their frequencies in blocks (each point depends only on its speed and frequency).
     let pts = interruptible(py, |stop| {
@@ -471,7 +488,7 @@ fn frequency_response<'py>(
                 if stop.load(std::sync::atomic::Ordering::Relaxed) {
                     return pts;
                 }
-                pts.extend(bike.frequency_response(&[*v], block, input, output));
+                pts.extend(respond(*v, block));
             }
         }
         pts

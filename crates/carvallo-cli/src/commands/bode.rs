@@ -16,7 +16,7 @@
 
 use carvallo::whipple::transfer::{log_space, FrequencyPoint, Input, Output};
 use carvallo::whipple::Whipple;
-use clap::builder::{PossibleValuesParser, TypedValueParser as _};
+use clap::builder::PossibleValuesParser;
 use serde_json::json;
 
 use crate::args::DataOptions;
@@ -34,15 +34,16 @@ pub struct Args {
     #[arg(long, value_name = "V", required = true, value_delimiter = ',',
           value_parser = crate::args::SPEED.parser(), allow_hyphen_values = true)]
     pub speed: Vec<f64>,
-    /// The input: the roll torque or the steer torque
+    /// The input: the roll torque or the steer torque (and for the leaning rider the lean
+    /// torque, `lean`)
     #[arg(long, value_name = "INPUT",
-          value_parser = PossibleValuesParser::new(["roll", "steer"]).try_map(|s| s.parse::<Input>()))]
-    pub input: Input,
-    /// The output: the lean (roll) or steer angle [rad] or its rate [rad/s]
+          value_parser = PossibleValuesParser::new(LEAN_INPUTS))]
+    pub input: String,
+    /// The output: the lean (roll) or steer angle [rad] or its rate [rad/s] (and for the
+    /// leaning rider the torso's lean on its joint, `lean`, `lean-rate`)
     #[arg(long, value_name = "OUTPUT",
-          value_parser = PossibleValuesParser::new(["roll", "steer", "roll-rate", "steer-rate"])
-              .try_map(|s| s.parse::<Output>()))]
-    pub output: Output,
+          value_parser = PossibleValuesParser::new(LEAN_OUTPUTS))]
+    pub output: String,
     /// The angular frequencies [rad/s], positive, separated by commas
     #[arg(long, value_name = "W", value_delimiter = ',', value_parser = positive,
           conflicts_with = "omega_range")]
@@ -58,6 +59,12 @@ pub struct Args {
     #[arg(long)]
     pub csv: bool,
 }
+
+/// The inputs of `--input`, the leaning rider's order (T4, T7, T9).
+const LEAN_INPUTS: [&str; 3] = ["roll", "steer", "lean"];
+
+/// The outputs of `--output`, the leaning rider's lateral states' order.
+const LEAN_OUTPUTS: [&str; 6] = ["roll", "steer", "lean", "roll-rate", "steer-rate", "lean-rate"];
 
 /// The frequencies of `--omega-range`.
 #[derive(Clone, Debug, PartialEq)]
@@ -91,8 +98,23 @@ pub(crate) fn omega_range(v: &str) -> Result<Frequencies, String> {
 pub fn run(cmd: &Args) -> Result<String, String> {
     let Args { model, data, speed, input, output, omega, omega_range, json, csv } = cmd;
     let omegas = if omega.is_empty() { &omega_range.0 } else { omega };
-    let bike = Whipple::new(crate::args::bicycle(model, data)?);
-    let points = bike.frequency_response(speed, omegas, *input, *output);
+    let points = if let Some(rider) = crate::args::lean_rider(model, data)? {
+        let i = LEAN_INPUTS.iter().position(|n| n == input).expect("a possible value");
+        let o = LEAN_OUTPUTS.iter().position(|n| n == output).expect("a possible value");
+        super::lean_rider::frequency_response(&rider, speed, omegas, i, o)
+    } else {
+        let lean_only = |name: &str| {
+            format!(
+                "invalid {name}: the torso's lean is the leaning rider's (--model lean-rider); \
+                 the bicycle's inputs are roll and steer, its outputs roll, steer and their rates"
+            )
+        };
+        let input: Input = input.parse().map_err(|_| lean_only(&format!("--input {input}")))?;
+        let output: Output =
+            output.parse().map_err(|_| lean_only(&format!("--output {output}")))?;
+        let bike = Whipple::new(crate::args::bicycle(model, data)?);
+        bike.frequency_response(speed, omegas, input, output)
+    };
     if *json {
         let pts: Vec<_> = points
             .iter()
@@ -104,7 +126,7 @@ pub fn run(cmd: &Args) -> Result<String, String> {
             })
             .collect();
         let v = json!({
-            "model": model, "rider": data.rider, "input": input.name(), "output": output.name(), "points": pts,
+            "model": model, "rider": data.rider, "input": input, "output": output, "points": pts,
         });
         return serde_json::to_string(&v).map_err(|e| e.to_string());
     }
@@ -119,8 +141,8 @@ pub fn run(cmd: &Args) -> Result<String, String> {
     let mut s = format!(
         "frequency response of {}: {} torque -> {}\n  speed [m/s]  omega [rad/s]  magnitude [dB]  phase [deg]\n",
         data.label(model),
-        input.name(),
-        output.name()
+        input,
+        output
     );
     for p in &points {
         s.push_str(&format!(
@@ -153,7 +175,7 @@ mod tests {
             "1,10",
         ])
         .expect("parses");
-        assert_eq!((a.input, a.output), (Input::Steer, Output::RollRate));
+        assert_eq!((a.input.as_str(), a.output.as_str()), ("steer", "roll-rate"));
         assert_eq!((a.speed, a.omega), (vec![2.0, 5.0], vec![1.0, 10.0]));
         assert_eq!(a.omega_range.0.len(), 61);
         let base = ["bode", "--model", "b", "--speed", "5", "--input", "roll", "--output", "roll"];

@@ -11,6 +11,9 @@
 //!   ($k_9 = c_9 = 0$) there is none, and the output says why (the torso's real eigenvalue).
 //! - `statespace`: $A$ ($12 \times 12$, state `q1 q2 q3 q4 q6 q7 q8 q9 u4 u6 u7 u9`) and $B$
 //!   ($12 \times 3$, inputs `T4 T7 T9`), JSON `{"speed", "state", "inputs", "A", "B"}`.
+//! - `bode`: the frequency response from the roll, steer or lean torque to roll, steer, the
+//!   torso's lean or their rates ([`carvallo::whipple::lean_rider::LeanTransfer`]), the phase
+//!   on the branch its zeros and poles choose, as for the bicycle.
 //! - `simulate`: the nonlinear equations from upright straight running at `--speed` with the
 //!   roll `--lean0` (rad), under `--torque roll|steer|lean=step:VALUE@TIME` terms, by the
 //!   integrator of `--method`, until `--duration`, a fall (the roll or the torso's lean on its
@@ -24,6 +27,7 @@ use carvallo::numerics::integrate::{Grid, Integration};
 use carvallo::whipple::lean_rider::{
     Joint, LeanGains, LeanRider, Limits, RunEnd, INPUT_NAMES, PITCH, STATE_NAMES,
 };
+use carvallo::whipple::transfer::FrequencyPoint;
 use serde_json::{json, Value};
 
 use super::simulate_inputs::{Input, Kind};
@@ -346,4 +350,31 @@ pub fn simulate(
         run.max_energy_drift
     ));
     Ok(s)
+}
+
+/// `carvallo bode` on the leaning rider: the points of the transfer function from torque
+/// `input` (0 roll, 1 steer, 2 lean) to the lateral state `output` at each speed and frequency.
+pub fn frequency_response(
+    rider: &LeanRider,
+    speeds: &[f64],
+    omegas: &[f64],
+    input: usize,
+    output: usize,
+) -> Vec<FrequencyPoint> {
+    let mut points = Vec::with_capacity(speeds.len() * omegas.len());
+    for &speed in speeds {
+        let g = rider.transfer(speed, input, output).expect("indices of the possible values");
+        for &omega in omegas {
+            let (re, im) = g.at(omega);
+            points.push(FrequencyPoint {
+                speed,
+                omega,
+                re,
+                im,
+                magnitude_db: 20.0 * re.hypot(im).log10(),
+                phase_deg: g.phase_deg(omega),
+            });
+        }
+    }
+    points
 }
