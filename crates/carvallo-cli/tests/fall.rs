@@ -4,7 +4,9 @@
 //! the steer lock (a slow fall, the fork turning across the frame) by every method alike; a
 //! start at or beyond the fall angle is refused by every method alike (exit 2 naming
 //! `--lean0`); SIGINT during a long `simulate`, `hoop` or `unicycle` ends it within a bound,
-//! with the samples so far and the line `interrupted at t = …` (exit 0, as a sweep).
+//! with the samples so far and the line `interrupted at t = …` (exit 0, as a sweep); SIGINT
+//! during a `simulate --batch` of long runs ends it within the same bound, with the runs that
+//! had ended, whole, and the line `interrupted after K of N simulations`.
 
 use std::process::{Command, Stdio};
 use std::time::{Duration, Instant};
@@ -214,6 +216,13 @@ fn unphysical_starts_are_refused_by_every_method() {
 /// Runs `args` (a long run printing JSON), sends SIGINT after 1.5 s and returns the seconds
 /// from the signal to the exit and the JSON printed.
 fn interrupted(args: &[&str]) -> (f64, Value) {
+    let (latency, out, _) = signalled(args);
+    (latency, serde_json::from_slice(out.as_bytes()).unwrap())
+}
+
+/// Runs `args` (a long run), sends SIGINT after 1.5 s, checks the exit code 0 and returns the
+/// seconds from the signal to the exit, the standard output and the standard error.
+fn signalled(args: &[&str]) -> (f64, String, String) {
     let mut child = Command::new(env!("CARGO_BIN_EXE_carvallo"))
         .args(args)
         .stdout(Stdio::piped())
@@ -236,8 +245,8 @@ fn interrupted(args: &[&str]) -> (f64, Value) {
     let latency = sent.elapsed().as_secs_f64();
     let out = child.wait_with_output().unwrap();
     let err = String::from_utf8(out.stderr).unwrap();
-    assert_eq!(out.status.code(), Some(0), "{err}");
-    (latency, serde_json::from_slice(&out.stdout).unwrap())
+    assert_eq!(out.status.code(), Some(0), "{args:?} {:?}: {err}", out.status);
+    (latency, String::from_utf8(out.stdout).unwrap(), err)
 }
 
 /// Checks an interrupted run's JSON: the line, and samples that end at or before it.
@@ -354,4 +363,55 @@ fn ctrl_c_ends_a_hoop_and_a_unicycle_run() {
     ]);
     check_interrupted(&v, 100000.0);
     eprintln!("SIGINT to exit: hoop {hoop:.3} s, unicycle {unicycle:.3} s");
+}
+
+#[test]
+fn ctrl_c_ends_a_batch_within_its_runs() {
+    // Row 0 falls (at the steer lock) within a second of simulated time; the six others run
+    // 10,000 s of stable running at 5 m/s (ten million RK4 steps each, about 40 s on the
+    // debug build): the runs under way at the signal are stopped inside their integration.
+    let dir =
+        Removed(std::env::temp_dir().join(format!("carvallo-batch-ctrlc-{}", std::process::id())));
+    let dir = &dir.0;
+    std::fs::create_dir_all(dir).unwrap();
+    let file = dir.join("starts.csv");
+    std::fs::write(&file, format!("speed,lean0\n1,0.5\n{}", "5,0.01\n".repeat(6))).unwrap();
+    let path = file.to_str().unwrap();
+    let batch = ["simulate", "--model", "benchmark", "--duration", "10000", "--batch", path];
+    let (csv_latency, csv, err) = signalled(&[&batch[..], &["--csv"]].concat());
+    // The rows of the runs that ended, whole; the line on standard error, as a sweep's CSV.
+    let lines: Vec<&str> = csv.lines().collect();
+    let header: Vec<&str> = lines[0].split(',').collect();
+    assert_eq!(header[0], "row", "{csv}");
+    let k = lines.len() - 1;
+    assert!(err.contains(&format!("interrupted after {k} of 7 simulations")), "{err}\n{csv}");
+    assert!((1..7).contains(&k), "{csv}");
+    let first: Vec<&str> = lines[1].split(',').collect();
+    assert_eq!(first.len(), header.len(), "{}", lines[1]);
+    assert_eq!((first[0], first[4], first[5]), ("0", "ok", "true"), "{}", lines[1]);
+    for line in &lines[1..] {
+        assert_eq!(line.split(',').count(), header.len(), "{line}");
+    }
+    let (latency, text, _) = signalled(&batch);
+    let last = text.lines().last().unwrap();
+    let k: usize = last
+        .strip_prefix("interrupted after ")
+        .and_then(|l| l.strip_suffix(" of 7 simulations"))
+        .unwrap_or_else(|| panic!("{text}"))
+        .parse()
+        .unwrap();
+    assert!((1..7).contains(&k), "{text}");
+    assert!(text.starts_with(&format!("{k} simulations of 10000 s (rk4 step 0.001 s)")), "{text}");
+    // Within the bound of a single simulation (`signalled`), shorter than one of the long runs:
+    // a batch that read the flag only between runs would exceed it.
+    eprintln!("SIGINT to exit: batch --csv {csv_latency:.3} s, batch summary {latency:.3} s");
+}
+
+/// A directory removed when the test ends, passed or failed.
+struct Removed(std::path::PathBuf);
+
+impl Drop for Removed {
+    fn drop(&mut self) {
+        let _ = std::fs::remove_dir_all(&self.0);
+    }
 }

@@ -21,7 +21,12 @@
 //! ([`WhippleNonlinear::simulate_many`]): a summary, or with `--csv` one row per simulation
 //! (the start, `status`, `fell`, the event, the final state, the counts, the diagnostics, the
 //! error of a failed run), each equal bit for bit to the single run; a progress bar is drawn on
-//! standard error when it is a terminal.
+//! standard error when it is a terminal. Ctrl-C stops a batch as it stops a sweep: the runs
+//! under way end within a step (every integration reads the flag,
+//! [`WhippleNonlinear::simulate_many_until`]), none is started after it, and the output is
+//! that of the runs that had ended, whole, with the line `interrupted after K of N
+//! simulations` (after the summary, or on standard error with `--csv`, whose rows are those K
+//! with their `row` numbers), exit code 0.
 //!
 //! `--torque`, `--torque-csv`, `--gain` and `--gain-table` drive the bicycle (roll and steer
 //! torques, state feedback): see [`super::simulate_inputs`].
@@ -40,6 +45,7 @@
 //! singularity at ±π/2, which a slow fall turns the fork into) ends the run the same way. Ctrl-C ends the run within a step: the samples so far and the
 //! line `interrupted at t = T s`, exit code 0 (as an interrupted sweep).
 
+use std::io::IsTerminal;
 use std::sync::atomic::{AtomicBool, AtomicUsize, Ordering};
 
 use carvallo::numerics::integrate::{Grid, Integration, Method};
@@ -193,26 +199,44 @@ fn batch(
     }
     // Only the end is kept: no sample inside the run (the integration does not depend on them).
     let grid = Grid { every: grid.n.max(1), ..*grid };
+    let stop = crate::perf::interrupt_flag();
     let clock = std::time::Instant::now();
     let (counter, finished) = (AtomicUsize::new(0), AtomicBool::new(false));
     let ends = std::thread::scope(|scope| {
-        scope.spawn(|| {
-            crate::perf::progress_bar_of(&counter, starts.len(), &finished, "simulations")
-        });
-        let ends = bike.simulate_many(&starts, &grid, how, stops, &counter);
+        if std::io::stderr().is_terminal() {
+            scope.spawn(|| {
+                crate::perf::progress_bar_of(&counter, starts.len(), &finished, "simulations")
+            });
+        }
+        let ends = bike.simulate_many_until(&starts, &grid, how, stops, &counter, stop);
         finished.store(true, Ordering::Relaxed);
         ends
     });
     let elapsed = clock.elapsed().as_secs_f64();
+    // The runs that ended on their own (completed, fell, stopped or failed), with their rows:
+    // after Ctrl-C the runs cut short and those never started are left out.
+    type End = Result<carvallo::whipple_nonlinear::Final, NonlinearError>;
+    let whole: Vec<(usize, &BatchRow, &End)> = rows
+        .iter()
+        .zip(&ends)
+        .enumerate()
+        .filter_map(|(k, (r, e))| match e {
+            Some(Ok(f)) if f.interrupted.is_some() => None,
+            Some(e) => Some((k, r, e)),
+            None => None,
+        })
+        .collect();
+    let interrupted = (whole.len() < rows.len())
+        .then(|| format!("interrupted after {} of {} simulations", whole.len(), rows.len()));
     // Fell: the fall angle or the steer lock reached, a stop condition met, or the contact lost.
-    let fell = |e: &Result<carvallo::whipple_nonlinear::Final, NonlinearError>| match e {
+    let fell = |e: &End| match e {
         Ok(f) => f.fall.is_some() || f.steer_lock.is_some() || f.event.is_some(),
         Err(NonlinearError::NoContact { .. }) => true,
         Err(_) => false,
     };
     if csv {
         let mut s = String::from("row,speed,lean0,steer_rate0,status,fell,stopped_by,event_t,t_end,lean,steer,yaw,x,y,lean_rate,steer_rate,rhs_evaluations,steps,rejected_steps,energy_drift,max_contact_residual,error\n");
-        for (k, (r, e)) in rows.iter().zip(&ends).enumerate() {
+        for &(k, r, e) in &whole {
             let head = format!("{k},{:?},{:?},{:?}", r.speed, r.lean0, r.steer_rate0);
             match e {
                 Ok(f) => {
@@ -243,19 +267,28 @@ fn batch(
                 }
             }
         }
+        // As a sweep's CSV: the rows on standard output, the note on standard error.
+        if let Some(line) = &interrupted {
+            eprintln!("{line}");
+        }
         return Ok(s);
     }
-    let failed = ends.iter().filter(|e| e.is_err()).count();
-    let fallen = ends.iter().filter(|e| fell(e)).count();
-    let evaluations: usize = ends.iter().flatten().map(|f| f.stats.rhs_evaluations).sum();
-    Ok(format!(
+    let failed = whole.iter().filter(|(_, _, e)| e.is_err()).count();
+    let fallen = whole.iter().filter(|(_, _, e)| fell(e)).count();
+    let evaluations: usize =
+        whole.iter().filter_map(|(_, _, e)| e.as_ref().ok()).map(|f| f.stats.rhs_evaluations).sum();
+    let text = format!(
         "{} simulations of {} s ({}{}) on {} threads in {elapsed:.3} s\n{fallen} fell (the fall angle or the steer lock reached, a stop condition met or the contact lost), {failed} failed, {evaluations} right-hand side evaluations\n",
-        rows.len(),
+        whole.len(),
         grid.end(),
         how.method.name(),
         if how.method.is_adaptive() { format!(" rtol {:e} atol {:e}", how.rtol, how.atol) } else { format!(" step {} s", grid.h) },
         rayon::current_num_threads()
-    ))
+    );
+    Ok(match interrupted {
+        Some(line) => format!("{text}{line}\n"),
+        None => text,
+    })
 }
 
 /// Reads a `--stop-when` condition.

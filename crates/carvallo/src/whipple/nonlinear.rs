@@ -962,7 +962,24 @@ impl WhippleNonlinear {
         how: &Integration,
         stops: &[Stop],
     ) -> Result<Final, NonlinearError> {
-        self.run(start, grid, how, stops, &mut |_, _, _| Ok(()), &AtomicBool::new(false))
+        self.simulate_final_until(start, grid, how, stops, &AtomicBool::new(false))
+    }
+
+    /// [`simulate_final`](Self::simulate_final) that also ends when `stop` is set (Ctrl-C),
+    /// read after every accepted step: the state of the last accepted step, its time in
+    /// [`Final::interrupted`].
+    ///
+    /// # Errors
+    /// As [`simulate_with`](Self::simulate_with).
+    pub fn simulate_final_until(
+        &self,
+        start: State,
+        grid: &Grid,
+        how: &Integration,
+        stops: &[Stop],
+        stop: &AtomicBool,
+    ) -> Result<Final, NonlinearError> {
+        self.run(start, grid, how, stops, &mut |_, _, _| Ok(()), stop)
     }
 
     /// [`simulate_final`](Self::simulate_final) from every start of `starts`, in parallel
@@ -976,14 +993,38 @@ impl WhippleNonlinear {
         stops: &[Stop],
         done: &std::sync::atomic::AtomicUsize,
     ) -> Vec<Result<Final, NonlinearError>> {
+        // The flag is never set: every run is `Some`.
+        self.simulate_many_until(starts, grid, how, stops, done, &AtomicBool::new(false))
+            .into_iter()
+            .flatten()
+            .collect()
+    }
+
+    /// [`simulate_many`](Self::simulate_many) that also ends when `stop` is set (Ctrl-C): the
+    /// runs under way end after their current step
+    /// ([`simulate_final_until`](Self::simulate_final_until), [`Final::interrupted`] set), and
+    /// the runs not yet started are `None`. The runs that ended before the flag are whole,
+    /// equal to the single run's bit for bit; `done` counts them and the interrupted ones.
+    pub fn simulate_many_until(
+        &self,
+        starts: &[State],
+        grid: &Grid,
+        how: &Integration,
+        stops: &[Stop],
+        done: &std::sync::atomic::AtomicUsize,
+        stop: &AtomicBool,
+    ) -> Vec<Option<Result<Final, NonlinearError>>> {
         use rayon::prelude::*;
         use std::sync::atomic::Ordering;
         starts
             .par_iter()
             .map(|s| {
-                let end = self.simulate_final(*s, grid, how, stops);
+                if stop.load(Ordering::Relaxed) {
+                    return None;
+                }
+                let end = self.simulate_final_until(*s, grid, how, stops, stop);
                 done.fetch_add(1, Ordering::Relaxed);
-                end
+                Some(end)
             })
             .collect()
     }
