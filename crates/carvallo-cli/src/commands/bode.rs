@@ -195,7 +195,7 @@ mod tests {
         ])
         .unwrap_err();
         assert!(e.contains("invalid value 'yaw' for '--input <INPUT>'"), "{e}");
-        assert!(e.contains("[possible values: roll, steer]"), "{e}");
+        assert!(e.contains("[possible values: roll, steer, lean]"), "{e}");
     }
 
     #[test]
