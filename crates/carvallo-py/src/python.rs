@@ -1333,17 +1333,14 @@ fn simulate_many<'py>(
         err(carvallo::ParameterError::InvalidParameter { name, value, reason }.to_string())
     })?;
     let done = AtomicUsize::new(0);
-    // A few runs at a time, so that Ctrl-C is seen between two groups.
-    let group = std::thread::available_parallelism().map_or(2, |n| n.get());
-    let ends = interruptible(py, |stop| {
-        let mut ends = Vec::with_capacity(n);
-        for chunk in starts.chunks(group) {
-            if stop.load(std::sync::atomic::Ordering::Relaxed) {
-                break;
-            }
-            ends.extend(bike.simulate_many(chunk, &grid, &how, &stops, &done));
-        }
-        ends
+    // Ctrl-C sets the flag every integration reads after each accepted step: a long run stops
+    // within a step (the runs cut short are dropped with the rest as KeyboardInterrupt rises;
+    // without it every run is there, in order).
+    let ends: Vec<_> = interruptible(py, |stop| {
+        bike.simulate_many_until(&starts, &grid, &how, &stops, &done, stop)
+            .into_iter()
+            .flatten()
+            .collect()
     })?;
     let d = PyDict::new(py);
     type Column = fn(&carvallo::whipple_nonlinear::Final) -> f64;

@@ -269,6 +269,9 @@ LONG = {
     "simulate": "carvallo.simulate(carvallo.benchmark(), 5.0, 0.01, 10000.0, every=10**6)",
     "simulate-dop853": "carvallo.simulate(carvallo.benchmark(), 4.29, 0.01, 100000.0, step=0.01, "
                        "every=10**6, method='dop853', rtol=1e-13)",
+    # One long run: Ctrl-C must reach inside it, not wait for it to end (it once did).
+    "simulate_many-one-long-run": "carvallo.simulate_many(carvallo.benchmark(), [4.29], [0.01], "
+                                  "100000.0, step=0.01, method='dop853', rtol=1e-13)",
     "simulate_hoop": "carvallo.simulate_hoop(0.1, 3.0, 1e4, every=10**6, "
                      "stop_when=['theta=±1.5', 's=1e3'])",
     "simulate_unicycle": "carvallo.simulate_unicycle(dict(mass=60.0, height=1.25, a=100.0, "
