@@ -75,6 +75,8 @@ const MODELS: &[&str] = &[
     "/nonexistent.toml",
     "TMS",
     "BROWSER",
+    "lean-rider",
+    "LEAN",
 ];
 /// `--rider` files: Jason's on Browser, and the bad ones.
 const RIDERS: &[&str] = &["JASON", "EMPTY", "BINARY", "nosuch", "BROWSER"];
@@ -101,7 +103,15 @@ const FIXED: &[&[&str]] = &[
     &["sweep", "--model", "benchmark", "--gain", "k_roll_roll=0:1:18446744073709551616"],
 ];
 /// Gain names of the state feedback (`--gain`), valid and not.
-const GAINS: &[&str] = &["k_steer_roll_rate", "k_roll_roll", "k_steer_steer", "k_yaw", ""];
+const GAINS: &[&str] = &[
+    "k_steer_roll_rate",
+    "k_roll_roll",
+    "k_steer_steer",
+    "k_yaw",
+    "",
+    "k_lean_lean",
+    "k_roll_lean_rate",
+];
 
 #[test]
 fn every_command_keeps_the_exit_code_contract() {
@@ -124,6 +134,7 @@ fn every_command_keeps_the_exit_code_contract() {
         "TMS" => format!("{data}/bicycles/Tms/Parameters/TmsBenchmark.txt"),
         "BROWSER" => format!("{data}/bicycles/Browser/Parameters/BrowserBenchmark.txt"),
         "JASON" => format!("{data}/riders/Jason/Parameters/JasonBrowserBenchmark.txt"),
+        "LEAN" => format!("{data}/../mooreriderlean2012/browser_jason.toml"),
         "TORQUES" => torques.display().to_string(),
         "DECREASING" => decreasing.display().to_string(),
         "GAINS" => gains.display().to_string(),

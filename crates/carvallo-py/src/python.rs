@@ -40,6 +40,13 @@ fn dict_of<'py>(py: Python<'py>, values: &[f64; 26]) -> PyResult<Bound<'py, PyDi
 
 /// A number or a 1-d sequence of numbers (`name`: the argument, in errors).
 fn number_or_numbers(x: &Bound<'_, PyAny>, name: &str) -> PyResult<Vec<f64>> {
+    // Bytes are a sequence of small integers to pyo3: b"\xff" would read as [255.0].
+    if x.is_instance_of::<pyo3::types::PyBytes>() || x.is_instance_of::<pyo3::types::PyString>() {
+        let shown = x.repr().map_or_else(|_| "?".to_string(), |r| r.to_string());
+        return Err(err(format!(
+            "invalid {name} {shown}: must be a number or a 1-d sequence of numbers"
+        )));
+    }
     match x.extract::<f64>() {
         Ok(v) => Ok(vec![v]),
         Err(e) if cut_short(&e) => Err(e),

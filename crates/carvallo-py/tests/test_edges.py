@@ -109,6 +109,12 @@ CHILD = textwrap.dedent(
             out += ["np.ones(10**7)", [1.0, 10**400], [float("nan")]]
         if arg in ("params", "sigma", "rider", "wheel", "k"):
             out += ["dict(B, c=-1.0)", "dict(B, c=10**400)", {}, {"c": "x"}]
+        if arg == "params":
+            # The leaning rider's parameters: where a bicycle's go, broken, and where they do
+            # not.
+            out += ["dict(carvallo.lean_rider(), mg=10**400)",
+                    "dict(carvallo.lean_rider(), k9=-1.0)", "dict(carvallo.lean_rider(), rf=1e6)",
+                    "carvallo.lean_rider()"]
         if arg == "designs":
             out += ["np.zeros((4 * 10**6, 26))", "np.ones((3, 25))"]
         if arg in ("path", "rider"):
@@ -116,7 +122,7 @@ CHILD = textwrap.dedent(
         return out
 
     def built(v):
-        if isinstance(v, str) and v.startswith(("np.", "dict(")):
+        if isinstance(v, str) and v.startswith(("np.", "dict(", "carvallo.")):
             return eval(v)
         return v
 

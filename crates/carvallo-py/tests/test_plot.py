@@ -139,6 +139,9 @@ def test_the_submodule_imports_and_a_bicycle_object_names_itself():
     # ValueError from the logarithmic axis.
     with pytest.raises(carvallo.ParameterError, match="invalid omega 0.0: the plot's log"):
         carvallo.plot_bode(carvallo.benchmark(), omegas=[0.0, 1.0])
+    # And bytes, which pyo3 reads as a sequence of integers (b"\xff" as [255.0]).
+    with pytest.raises(carvallo.ParameterError, match=r"invalid omegas b'\\xff': must be"):
+        carvallo.plot_bode(carvallo.benchmark(), omegas=b"\xff")
 
 
 def test_without_matplotlib_the_error_says_how_to_install_it(monkeypatch):
