@@ -10,8 +10,10 @@ const BUILT_ON_OTHER_MODELS: [(&str, &str); 2] = [
     ("bicycle_rest", "the geometry and kinematics of Part II"),
 ];
 
-/// Artifacts whose symbolic checks are not (yet) entries of the concordance.
-const NOT_IN_THE_CONCORDANCE: [&str; 1] = ["whipple_nonlinear"];
+/// Artifacts whose symbolic checks are not (yet) entries of the concordance: the nonlinear
+/// Carvallo–Whipple model, and Moore's (2012) leaning rider, which is not the memoir's (its
+/// n° 97–98, the rider's lateral displacement ε, is still to be derived and reported).
+const NOT_IN_THE_CONCORDANCE: [&str; 2] = ["whipple_nonlinear", "lean_rider"];
 
 #[test]
 fn one_report_per_model() {

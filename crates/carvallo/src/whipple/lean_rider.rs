@@ -473,8 +473,8 @@ pub enum RunEnd {
 
 /// Where a simulation ends as a fall (rad): the roll's or the torso's lean magnitude reaching
 /// `fall_angle`, the steer's reaching `steer_lock` (the bicycle's defaults,
-/// [`DEFAULT_FALL_ANGLE`](crate::whipple_nonlinear::DEFAULT_FALL_ANGLE) and
-/// [`DEFAULT_STEER_LOCK`](crate::whipple_nonlinear::DEFAULT_STEER_LOCK), in [`Limits::DEFAULT`]).
+/// [`DEFAULT_FALL_ANGLE`](super::nonlinear::DEFAULT_FALL_ANGLE) and
+/// [`DEFAULT_STEER_LOCK`](super::nonlinear::DEFAULT_STEER_LOCK), in [`Limits::DEFAULT`]).
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct Limits {
     /// The roll's and the torso's fall angle (rad).
@@ -486,8 +486,8 @@ pub struct Limits {
 impl Limits {
     /// The bicycle's: 1.2 rad and 1.4 rad.
     pub const DEFAULT: Limits = Limits {
-        fall_angle: crate::whipple_nonlinear::DEFAULT_FALL_ANGLE,
-        steer_lock: crate::whipple_nonlinear::DEFAULT_STEER_LOCK,
+        fall_angle: super::nonlinear::DEFAULT_FALL_ANGLE,
+        steer_lock: super::nonlinear::DEFAULT_STEER_LOCK,
     };
 }
 
