@@ -375,6 +375,48 @@ pub fn seat_on_bicycle(
     })
 }
 
+/// Where BicycleParameters' data layout keeps the other two files of a seating, given the
+/// rider's measurement file `<data>/riders/<R>/RawData/<R>YeadonMeas.txt` and the bicycle's
+/// parameter file `<data>/bicycles/<B>/Parameters/<B>Benchmark.txt`: the configuration
+/// `<data>/riders/<R>/RawData/<R><B>YeadonCFG.txt` and the measured geometry
+/// `<data>/bicycles/<B>/RawData/<B>Measured.txt` (the files `Bicycle.add_rider(R, reCalc=True)`
+/// reads). `None` when the names do not follow the layout; the files may not exist.
+pub fn bicycleparameters_files(
+    measurements: &std::path::Path,
+    bicycle: &std::path::Path,
+) -> Option<(std::path::PathBuf, std::path::PathBuf)> {
+    let stem = |p: &std::path::Path| p.file_stem().map(|s| s.to_string_lossy().into_owned());
+    let b = stem(bicycle)?.strip_suffix("Benchmark").filter(|b| !b.is_empty())?.to_string();
+    let r = stem(measurements)?.strip_suffix("YeadonMeas").filter(|r| !r.is_empty())?.to_string();
+    let cfg = measurements.with_file_name(format!("{r}{b}YeadonCFG.txt"));
+    let bike_dir = bicycle.parent()?.parent()?;
+    let measured = bike_dir.join("RawData").join(format!("{b}Measured.txt"));
+    Some((cfg, measured))
+}
+
+/// A one-line account of a seating, for the outputs that say what was done: the body's mass,
+/// the solved angles and the residual.
+pub fn describe(seated: &SeatedRider) -> String {
+    let c = &seated.configuration;
+    let deg = |n: &str| c.get(n).to_degrees();
+    format!(
+        "Yeadon body of {:.2} kg seated by BicycleParameters' equations (somersault {:.2}°, hip          {:.2}°, knee {:.2}°, shoulder {:.2}°/{:.2}°/{:.2}°, elbow {:.2}°; residual {:.1e} after          {} Newton iterations): mB = {:?}, xB = {:?}, zB = {:?}",
+        seated.rider.values[0],
+        deg("somersault"),
+        deg("PJ1extension"),
+        deg("J1J2flexion"),
+        deg("CA1extension"),
+        deg("CA1adduction"),
+        deg("CA1rotation"),
+        deg("A1A2extension"),
+        seated.residual,
+        seated.iterations,
+        seated.rider.values[0],
+        seated.rider.values[1],
+        seated.rider.values[3],
+    )
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;
@@ -414,6 +456,22 @@ mod tests {
         let half = 0.25 * g.whb * g.whb;
         assert!(((ay * ay + az * az + half).sqrt() - g.lhbf).abs() < 1e-14);
         assert!(((by * by + bz * bz + half).sqrt() - g.lhbr).abs() < 1e-14);
+    }
+
+    #[test]
+    fn the_layout_names_the_other_files() {
+        let (cfg, measured) = bicycleparameters_files(
+            std::path::Path::new("d/riders/Jason/RawData/JasonYeadonMeas.txt"),
+            std::path::Path::new("d/bicycles/Browser/Parameters/BrowserBenchmark.txt"),
+        )
+        .expect("the layout");
+        assert_eq!(cfg, std::path::Path::new("d/riders/Jason/RawData/JasonBrowserYeadonCFG.txt"));
+        assert_eq!(measured, std::path::Path::new("d/bicycles/Browser/RawData/BrowserMeasured.txt"));
+        assert!(bicycleparameters_files(
+            std::path::Path::new("jason.yaml"),
+            std::path::Path::new("BrowserBenchmark.txt")
+        )
+        .is_none());
     }
 
     #[test]
