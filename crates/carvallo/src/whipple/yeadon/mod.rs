@@ -29,7 +29,9 @@ use std::fmt;
 use crate::error::ParameterError;
 
 pub use human::{Human, MassProperties};
-pub use seated::{bicycleparameters_files, describe, seat_on_bicycle, SeatedRider, SeatingGeometry};
+pub use seated::{
+    bicycleparameters_files, describe, seat_on_bicycle, SeatedRider, SeatingGeometry,
+};
 
 /// Which computation of yeadon's solids and segments to use.
 #[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]

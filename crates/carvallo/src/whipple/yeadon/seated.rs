@@ -400,7 +400,9 @@ pub fn describe(seated: &SeatedRider) -> String {
     let c = &seated.configuration;
     let deg = |n: &str| c.get(n).to_degrees();
     format!(
-        "Yeadon body of {:.2} kg seated by BicycleParameters' equations (somersault {:.2}°, hip          {:.2}°, knee {:.2}°, shoulder {:.2}°/{:.2}°/{:.2}°, elbow {:.2}°; residual {:.1e} after          {} Newton iterations): mB = {:?}, xB = {:?}, zB = {:?}",
+        "Yeadon body of {:.2} kg seated by BicycleParameters' equations (somersault {:.2}°, \
+         hip {:.2}°, knee {:.2}°, shoulder {:.2}°/{:.2}°/{:.2}°, elbow {:.2}°; residual {:.1e} \
+         after {} Newton iterations): mB = {:?}, xB = {:?}, zB = {:?}",
         seated.rider.values[0],
         deg("somersault"),
         deg("PJ1extension"),
@@ -466,7 +468,10 @@ mod tests {
         )
         .expect("the layout");
         assert_eq!(cfg, std::path::Path::new("d/riders/Jason/RawData/JasonBrowserYeadonCFG.txt"));
-        assert_eq!(measured, std::path::Path::new("d/bicycles/Browser/RawData/BrowserMeasured.txt"));
+        assert_eq!(
+            measured,
+            std::path::Path::new("d/bicycles/Browser/RawData/BrowserMeasured.txt")
+        );
         assert!(bicycleparameters_files(
             std::path::Path::new("jason.yaml"),
             std::path::Path::new("BrowserBenchmark.txt")
