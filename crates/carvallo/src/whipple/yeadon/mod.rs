@@ -209,7 +209,8 @@ pub struct Measurements {
     /// The values in the order of [`MEASUREMENT_NAMES`] (m).
     pub values: [f64; 95],
     /// The measured total mass (kg, the file's `totalmass`): the densities are scaled to give
-    /// it. `None` leaves yeadon's densities as they are.
+    /// it. `None` (no `totalmass`, or one not positive: yeadon writes -1 for "not measured")
+    /// leaves yeadon's densities as they are.
     pub total_mass: Option<f64>,
 }
 
@@ -217,7 +218,7 @@ impl Measurements {
     /// Reads yeadon's measurement file (`<rider>YeadonMeas.txt`): `name: value` lines (YAML,
     /// `#` comments), the 95 names of [`MEASUREMENT_NAMES`] each once and positive,
     /// `measurementconversionfactor` (the unit in metres: `.01` for centimetres) and optionally
-    /// `totalmass` (kg).
+    /// `totalmass` (kg; not positive: not measured).
     ///
     /// # Errors
     /// [`YeadonError::Line`] naming the line (an unknown or repeated name, a value that is not
@@ -236,12 +237,8 @@ impl Measurements {
                     }
                     factor = Some(v);
                 }
-                "totalmass" => {
-                    if v <= 0.0 {
-                        return Err(bad(format!("{name}: {v:?} must be positive")));
-                    }
-                    total_mass = Some(v);
-                }
+                // yeadon's "not measured" is -1 (it scales only by a positive mass).
+                "totalmass" => total_mass = (v > 0.0).then_some(v),
                 _ => {
                     let k = MEASUREMENT_NAMES.iter().position(|n| *n == name).ok_or_else(|| {
                         bad(format!("`{name}` is not one of yeadon's 95 measurements"))
