@@ -159,7 +159,7 @@ fn build(
         semi_ellipsoid(d.head_neck, m(meas, "Ls7p"), h("Ls8L", Some("Ls7L"))),
     ];
     for (k, s) in torso.iter().enumerate() {
-        if !(s.height > 0.0) {
+        if s.height.is_nan() || s.height <= 0.0 {
             return Err(YeadonError::Parameter(crate::error::ParameterError::InvalidParameter {
                 name: ["Ls1L", "Ls2L", "Ls3L", "Ls4L", "Ls5L", "Ls6L", "Ls7L", "Ls8L"][k],
                 value: s.height,
@@ -263,7 +263,7 @@ fn build(
 }
 
 fn check_heights(heights: &[f64], name: &'static str) -> Result<(), YeadonError> {
-    match heights.iter().find(|h| !(**h > 0.0)) {
+    match heights.iter().find(|h| h.is_nan() || **h <= 0.0) {
         Some(h) => Err(YeadonError::Parameter(crate::error::ParameterError::InvalidParameter {
             name,
             value: *h,
