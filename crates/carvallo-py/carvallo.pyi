@@ -52,20 +52,47 @@ class PhysicsWarning(UserWarning):
     moments of inertia); the message names the parameter and the relative violation."""
 
 def load_parameters(
-    path: str, rider: str | None = None, strict: bool = False
+    path: str,
+    rider: str | None = None,
+    strict: bool = False,
+    configuration: Union[str, Mapping[str, float], None] = None,
+    measured: str | None = None,
 ) -> tuple[dict[str, float], dict[str, float]]:
     """(params, sigma) from a TOML file (anchors format) or a BicycleParameters text file, with
     the BicycleParameters rider file `rider` added to the rear frame; a broken triangle
-    inequality is a PhysicsWarning, or a ParameterError when `strict`."""
+    inequality is a PhysicsWarning, or a ParameterError when `strict`. `rider` may be a Yeadon
+    measurement file, seated as Bicycle.add_rider(reCalc=True) seats it with `configuration`
+    and `measured` (found by BicycleParameters' layout when not given)."""
 
 def add_rider(
     params: Params,
     rider: Union[str, Mapping[str, float]],
     sigma: Optional[Params] = None,
     strict: bool = False,
+    configuration: Union[str, Mapping[str, float], None] = None,
+    measured: str | None = None,
 ) -> tuple[dict[str, float], dict[str, float]]:
     """(params, sigma) with a rider (a BicycleParameters rider file, or a dict of mB, xB, yB, zB,
-    IBxx, IBxz, IByy, IBzz) added to the rear frame, as Bicycle.add_rider."""
+    IBxx, IBxz, IByy, IBzz, or a Yeadon measurement file seated with `configuration` and
+    `measured`) added to the rear frame, as Bicycle.add_rider."""
+
+def yeadon_human(
+    measurements: str,
+    configuration: Union[str, Mapping[str, float], None] = None,
+    corrected: bool = False,
+) -> dict[str, object]:
+    """Yeadon's body alone as yeadon.Human: mass, center_of_mass (3,), inertia (3, 3) in yeadon's
+    frame, density_scale, notes; `corrected=True` fixes yeadon 2.0.1's three errors."""
+
+def yeadon_rider(
+    params: Params,
+    measurements: str,
+    configuration: Union[str, Mapping[str, float]],
+    measured: str,
+    corrected: bool = False,
+) -> dict[str, object]:
+    """The Yeadon body seated on the bicycle as Bicycle.add_rider(reCalc=True): rider (the eight
+    values), configuration (21 angles), body, hands, residual, iterations, notes, description."""
 
 def geometry(
     params: Params, rider: Union[str, Mapping[str, float], None] = None, strict: bool = False

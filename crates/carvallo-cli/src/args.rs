@@ -117,9 +117,20 @@ pub fn lean_deg(v: &str) -> Result<f64, String> {
 #[derive(Clone, Debug, Default, PartialEq, clap::Args)]
 pub struct DataOptions {
     /// A BicycleParameters rider file (`name = value+/-sigma`) whose rider is added to the rear
-    /// frame
+    /// frame, or a Yeadon body measurement file (`<R>YeadonMeas.txt`) seated on the bicycle as
+    /// BicycleParameters' add_rider(reCalc=True) seats it
     #[arg(long, value_name = "FILE.txt")]
     pub rider: Option<String>,
+    /// With a Yeadon measurement file as --rider: yeadon's configuration file (its somersault
+    /// and the joint angles the seating does not solve) [default: `<R><B>YeadonCFG.txt` beside
+    /// the measurement file, BicycleParameters' layout]
+    #[arg(long, value_name = "FILE.txt", requires = "rider")]
+    pub rider_config: Option<String>,
+    /// With a Yeadon measurement file as --rider: the bicycle's measured geometry (seat, bottom
+    /// bracket, handlebar: hbb, lcs, lsp, lst, lamst, whb, LhbR, LhbF) [default:
+    /// `bicycles/<B>/RawData/<B>Measured.txt` of BicycleParameters' layout]
+    #[arg(long, value_name = "FILE.txt", requires = "rider")]
+    pub measured: Option<String>,
     /// A moment of inertia breaking a triangle inequality is an error instead of a warning
     #[arg(long)]
     pub strict: bool,
@@ -128,7 +139,10 @@ pub struct DataOptions {
 impl DataOptions {
     /// Whether any is given.
     pub fn any(&self) -> bool {
-        self.rider.is_some() || self.strict
+        self.rider.is_some()
+            || self.strict
+            || self.rider_config.is_some()
+            || self.measured.is_some()
     }
 
     /// The bicycle as outputs name it: `model`, or `model with rider RIDER` when a rider was
@@ -167,9 +181,12 @@ pub fn side_view(
     model: &str,
     data: &DataOptions,
 ) -> Result<carvallo::whipple::drawing::SideView, String> {
-    let bare = DataOptions { rider: None, strict: data.strict };
+    let bare = DataOptions { rider: None, strict: data.strict, ..DataOptions::default() };
     let (params, _) = read_bicycle(model, &bare)?;
-    let rider = data.rider.as_deref().map(rider_file).transpose()?;
+    let rider = match data.rider.as_deref() {
+        Some(path) => Some(rider_on(path, model, data, &params)?),
+        None => None,
+    };
     Ok(carvallo::whipple::drawing::SideView::new(&params.params, rider.as_ref()))
 }
 
@@ -242,9 +259,7 @@ fn read_bicycle(model: &str, data: &DataOptions) -> Result<(UncertainParams, Vec
     let loaded = match &data.rider {
         None => loaded,
         Some(path) => {
-            let text = read_text(path, "rider file")?;
-            let rider =
-                Rider::from_text(&text).map_err(|e| format!("invalid rider file `{path}`: {e}"))?;
+            let rider = rider_on(path, model, data, &loaded.params)?;
             add_rider(&loaded.params, &rider)
                 .map_err(|e| format!("invalid rider file `{path}` on `{model}`: {e}"))?
         }
@@ -313,10 +328,60 @@ pub fn file_stem_of(name: &str) -> String {
     }
 }
 
-/// The rider of a BicycleParameters rider file, for drawing it apart from the bicycle.
-pub fn rider_file(path: &str) -> Result<Rider, String> {
+/// The rider of the file `path` on the bicycle `params` of `model`: a BicycleParameters rider
+/// file as it is, or a Yeadon measurement file seated on the bicycle
+/// ([`carvallo::whipple::yeadon::seat_on_bicycle`], the Published variant that equals
+/// BicycleParameters' `add_rider(reCalc=True)`) with the configuration and measured geometry of
+/// `data` or of BicycleParameters' layout; what was done is said on standard error.
+pub fn rider_on(
+    path: &str,
+    model: &str,
+    data: &DataOptions,
+    params: &UncertainParams,
+) -> Result<Rider, String> {
+    use carvallo::whipple::yeadon as y;
     let text = read_text(path, "rider file")?;
-    Rider::from_text(&text).map_err(|e| format!("invalid rider file `{path}`: {e}"))
+    if !y::Measurements::looks_like(&text) {
+        return Rider::from_text(&text).map_err(|e| format!("invalid rider file `{path}`: {e}"));
+    }
+    let invalid = |e: &dyn std::fmt::Display| format!("invalid rider file `{path}`: {e}");
+    let meas = y::Measurements::from_text(&text).map_err(|e| invalid(&e))?;
+    let layout =
+        y::bicycleparameters_files(std::path::Path::new(path), std::path::Path::new(model));
+    let needs = |option: &str, what: &str| {
+        format!(
+            "invalid rider file `{path}`: a Yeadon measurement file needs {what} ({option} FILE; \
+             BicycleParameters' layout names none for `{model}`)"
+        )
+    };
+    let cfg_path = match (&data.rider_config, &layout) {
+        (Some(c), _) => c.clone(),
+        (None, Some((c, _))) => c.display().to_string(),
+        (None, None) => return Err(needs("--rider-config", "a configuration file")),
+    };
+    let measured_path = match (&data.measured, &layout) {
+        (Some(m), _) => m.clone(),
+        (None, Some((_, m))) => m.display().to_string(),
+        (None, None) => return Err(needs("--measured", "the bicycle's measured geometry")),
+    };
+    let cfg = y::Configuration::from_text(&read_text(&cfg_path, "rider file")?)
+        .map_err(|e| format!("invalid rider file `{cfg_path}` (Yeadon configuration): {e}"))?;
+    let g = y::SeatingGeometry::from_measured(
+        &read_text(&measured_path, "rider file")?,
+        &params.params,
+    )
+    .map_err(|e| format!("invalid rider file `{measured_path}` (measured geometry): {e}"))?;
+    let seated = y::seat_on_bicycle(&meas, &cfg, &g, y::Variant::Published)
+        .map_err(|e| format!("invalid rider file `{path}` on `{model}`: {e}"))?;
+    eprintln!(
+        "note: rider `{path}`: Yeadon body measurements, configuration `{cfg_path}`, bicycle \
+         geometry `{measured_path}`: {}",
+        y::describe(&seated)
+    );
+    for n in &seated.notes {
+        eprintln!("note: rider `{path}`: {n}");
+    }
+    Ok(seated.rider)
 }
 
 /// Whether `message` (an error of a command) is about the data of a file rather than the

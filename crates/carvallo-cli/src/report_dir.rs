@@ -518,7 +518,7 @@ mod tests {
         let data = concat!(env!("CARGO_MANIFEST_DIR"), "/../../data/bicycleparameters");
         let bike = format!("{data}/bicycles/Browser/Parameters/BrowserBenchmark.txt");
         let rider = format!("{data}/riders/Jason/Parameters/JasonBrowserBenchmark.txt");
-        let data = crate::args::DataOptions { rider: Some(rider.clone()), strict: false };
+        let data = crate::args::DataOptions { rider: Some(rider.clone()), ..Default::default() };
         let (params, _) = crate::args::uncertain_bicycle(&bike, &data).expect("read");
         let name = crate::args::bicycle_name(&bike, Some(&rider));
         let files = write_report(&dir, &params, &bike, &name).expect("report written");

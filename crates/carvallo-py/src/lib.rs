@@ -22,6 +22,8 @@ mod lean_rider;
 mod python;
 #[cfg(feature = "python")]
 mod rolling;
+#[cfg(feature = "python")]
+mod yeadon;
 
 /// The parameter name as written by the user: the benchmark's (`lambda`) or BicycleParameters'
 /// (`lam`) name of the steer axis tilt, the others as in [`PARAM_NAMES`].

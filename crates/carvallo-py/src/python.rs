@@ -108,13 +108,20 @@ fn design<'py>(
 /// IBzz`) added to the rear frame. Moments of inertia breaking a triangle inequality are a
 /// `carvallo.PhysicsWarning` (`warnings.warn`), or an error when `strict`. Returns
 /// `(params, sigma)`, two dicts.
+///
+/// `rider` may also be a Yeadon measurement file (`<rider>YeadonMeas.txt`): the body is seated
+/// on the bicycle as `Bicycle.add_rider(name, reCalc=True)` seats it (see `yeadon_rider`), with
+/// `configuration` (yeadon's configuration file or a dict) and `measured` (the bicycle's
+/// `<name>Measured.txt`), each found by BicycleParameters' data layout when not given.
 #[pyfunction]
-#[pyo3(signature = (path, rider=None, strict=false))]
+#[pyo3(signature = (path, rider=None, strict=false, configuration=None, measured=None))]
 fn load_parameters<'py>(
     py: Python<'py>,
     path: &str,
     rider: Option<&str>,
     strict: bool,
+    configuration: Option<&Bound<'py, PyAny>>,
+    measured: Option<&str>,
 ) -> PyResult<(Bound<'py, PyDict>, Bound<'py, PyDict>)> {
     let read = read_text;
     let text = read(path, "parameter")?;
@@ -130,8 +137,13 @@ fn load_parameters<'py>(
         UncertainParams::read(&text, strict).map_err(invalid)?
     };
     if let Some(r) = rider {
-        let rider = Rider::from_text(&read(r, "rider")?)
-            .map_err(|e| err(format!("invalid rider file `{r}`: {e}")))?;
+        let rider = if crate::yeadon::is_measurement_file(r) {
+            crate::yeadon::seat(&loaded.params, r, configuration, measured, Some(path), false)?
+                .rider
+        } else {
+            Rider::from_text(&read(r, "rider")?)
+                .map_err(|e| err(format!("invalid rider file `{r}`: {e}")))?
+        };
         loaded = carvallo::parameter_text::add_rider(&loaded.params, &rider)
             .map_err(|e| err(format!("invalid rider file `{r}` on `{path}`: {e}")))?;
         if strict {
@@ -151,17 +163,34 @@ fn load_parameters<'py>(
 /// `mB, xB, yB, zB, IBxx, IBxz, IByy, IBzz` (the rider's body in the bicycle's frame, inertia
 /// about its mass centre; no uncertainty). A broken triangle inequality of the combined frame is
 /// a `PhysicsWarning`, or an error when `strict`. Returns `(params, sigma)`.
+///
+/// `rider` may also be a Yeadon measurement file, seated on this bicycle with `configuration`
+/// (yeadon's configuration file or a dict) and `measured` (the bicycle's `<name>Measured.txt`)
+/// as `Bicycle.add_rider(name, reCalc=True)` seats it (see `yeadon_rider`).
 #[pyfunction]
-#[pyo3(signature = (params, rider, sigma = None, strict = false))]
+#[pyo3(signature = (params, rider, sigma = None, strict = false, configuration = None, measured = None))]
 fn add_rider<'py>(
     py: Python<'py>,
     params: &Bound<'py, PyAny>,
     rider: &Bound<'py, PyAny>,
     sigma: Option<&Bound<'py, PyAny>>,
     strict: bool,
+    configuration: Option<&Bound<'py, PyAny>>,
+    measured: Option<&str>,
 ) -> PyResult<(Bound<'py, PyDict>, Bound<'py, PyDict>)> {
     let u = uncertain_of(params, sigma, strict, false)?;
-    let (rider, what) = rider_of(rider)?;
+    let yeadon = rider
+        .extract::<std::path::PathBuf>()
+        .ok()
+        .map(|p| p.display().to_string())
+        .filter(|p| crate::yeadon::is_measurement_file(p));
+    let (rider, what) = match yeadon {
+        Some(path) => {
+            let seated = crate::yeadon::seat(&u, &path, configuration, measured, None, false)?;
+            (seated.rider, format!("Yeadon rider `{path}`"))
+        }
+        None => rider_of(rider)?,
+    };
     let loaded = carvallo::parameter_text::add_rider(&u, &rider)
         .map_err(|e| err(format!("invalid {what}: {e}")))?;
     if strict {
@@ -1557,6 +1586,7 @@ fn carvallo_module(m: &Bound<'_, PyModule>) -> PyResult<()> {
     m.add_function(wrap_pyfunction!(eigenvalue_bands, m)?)?;
     crate::rolling::register(m)?;
     crate::lean_rider::register(m)?;
+    crate::yeadon::register(m)?;
     register_plot(m)?;
     Ok(())
 }

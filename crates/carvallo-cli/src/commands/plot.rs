@@ -114,7 +114,11 @@ fn pairs(models: &[String], riders: &[String]) -> Result<Vec<(String, Option<Str
 /// Runs `carvallo plot`: the path written, or an error naming the bad value.
 pub fn run(args: &Args) -> Result<String, String> {
     let bikes = pairs(&args.model, &args.rider)?;
-    let data = |rider: &Option<String>| DataOptions { rider: rider.clone(), strict: args.strict };
+    let data = |rider: &Option<String>| DataOptions {
+        rider: rider.clone(),
+        strict: args.strict,
+        ..DataOptions::default()
+    };
     let names: Vec<String> = bikes.iter().map(|(b, r)| bicycle_name(b, r.as_deref())).collect();
     let svg = match args.figure {
         Figure::Geometry => {

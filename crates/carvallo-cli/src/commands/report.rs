@@ -84,7 +84,8 @@ impl Args {
 pub fn run(args: &Args) -> anyhow::Result<String> {
     match args.command() {
         Command::Write { dir, model, rider, strict, memoir } => {
-            let data = crate::args::DataOptions { rider: rider.clone(), strict };
+            let data =
+                crate::args::DataOptions { rider: rider.clone(), strict, ..Default::default() };
             let (params, warnings) =
                 crate::args::uncertain_bicycle(&model, &data).map_err(report_dir::BadInput)?;
             let path = std::path::Path::new(&dir);

@@ -42,6 +42,7 @@ pub mod sweep;
 pub mod transfer;
 pub mod uncertainty;
 pub mod window_lanes;
+pub mod yeadon;
 
 pub use self::design::{BicycleDesign, Body, Wheel, FIELD_PATHS};
 pub use self::matrices::{char_poly_scene, matrices_scene, state_matrix, Mat2, Matrices};

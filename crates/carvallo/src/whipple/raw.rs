@@ -94,6 +94,17 @@ impl std::fmt::Display for RawError {
 
 impl std::error::Error for RawError {}
 
+/// The nominal value of every measurement of a raw measurement file, `(name, value)` in the
+/// order of the file (comma-separated values averaged, uncertainties dropped, as
+/// BicycleParameters' `remove_uncertainties` does before seating a rider).
+///
+/// # Errors
+/// [`RawError::Line`] for a line that is not `name = value[+/-sigma][, ...]`.
+pub fn nominal_measurements(text: &str) -> Result<Vec<(String, f64)>, RawError> {
+    let m = Measurements::read(text)?;
+    Ok(m.entries.into_iter().map(|(n, d)| (n, d.value)).collect())
+}
+
 /// The benchmark parameters computed from raw measurements.
 #[derive(Clone, Debug)]
 pub struct Raw {
