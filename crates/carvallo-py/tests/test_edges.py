@@ -97,6 +97,18 @@ CHILD = textwrap.dedent(
         "simulate_hoop": dict(theta0=0.1, s0=3.0, duration=0.2, every=10),
         "lean_rider": dict(path=FIXTURE.replace(
             "benchmark-1pct.txt", "mooreriderlean2012/browser_jason.toml")),
+        "yeadon_human": dict(measurements=FIXTURE.replace(
+            "benchmark-1pct.txt", "bicycleparameters/riders/Jason/RawData/JasonYeadonMeas.txt")),
+        "yeadon_rider": dict(
+            params=B,
+            measurements=FIXTURE.replace(
+                "benchmark-1pct.txt", "bicycleparameters/riders/Jason/RawData/JasonYeadonMeas.txt"),
+            configuration=FIXTURE.replace(
+                "benchmark-1pct.txt",
+                "bicycleparameters/riders/Jason/RawData/JasonBrowserYeadonCFG.txt"),
+            measured=FIXTURE.replace(
+                "benchmark-1pct.txt",
+                "bicycleparameters/bicycles/Browser/RawData/BrowserMeasured.txt")),
         "simulate_unicycle": dict(rider=RIDER, wheel=WHEEL, radius=0.5, theta0=0.05, s0=3.0,
                                   duration=0.2, every=10),
     }

@@ -208,3 +208,22 @@ def test_a_yeadon_file_without_its_other_files_is_refused(tmp_path):
     lone.write_text(meas_file("Jason").read_text())
     with pytest.raises(carvallo.ParameterError, match="needs configuration="):
         quiet(carvallo.add_rider, carvallo.benchmark(), str(lone))
+
+
+# hypothesis on the new entry point: random configurations within yeadon's bounds (a third of
+# each joint's range around zero), every rider, against the peer.
+from hypothesis import given, settings, strategies as st  # noqa: E402
+
+BOUNDS = {k: (-0.6, 0.6) for k in CFG}
+BOUNDS.update({"J1J2flexion": (0.0, 1.5), "K1K2flexion": (0.0, 1.5), "PJ1extension": (-1.5, 0.3),
+               "PK1extension": (-1.5, 0.3), "A1A2extension": (-1.5, 0.0),
+               "B1B2extension": (-1.5, 0.0)})
+
+
+@settings(max_examples=25, deadline=None)
+@given(rider=st.sampled_from(RIDERS),
+       cfg=st.fixed_dictionaries({k: st.floats(lo, hi) for k, (lo, hi) in BOUNDS.items()}))
+def test_any_configuration_equals_yeadon(rider, cfg):
+    theirs = peer_human(meas_file(rider), cfg)
+    ours = carvallo.yeadon_human(str(meas_file(rider)), cfg)
+    assert human_relative_error(theirs, ours) < 1e-12
