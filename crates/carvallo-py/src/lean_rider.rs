@@ -9,7 +9,7 @@ use std::sync::atomic::Ordering;
 
 use carvallo::numerics::integrate::{Grid, Integration};
 use carvallo::whipple::lean_rider::{
-    Joint, LeanGains, LeanRider, LeanRiderParams, Limits, RunEnd, INPUT_NAMES, PITCH, STATE_NAMES,
+    Joint, LeanGains, LeanRider, LeanRiderParams, LeanRun, Limits, RunEnd, INPUT_NAMES, STATE_NAMES,
 };
 use carvallo::whipple::transfer::FrequencyPoint;
 use numpy::{
@@ -294,49 +294,11 @@ pub(crate) fn simulate<'py>(
         // interruptible raised KeyboardInterrupt already when the flag came from Ctrl-C.
         return Err(pyo3::exceptions::PyKeyboardInterrupt::new_err("interrupted"));
     }
-    let mut rows: Vec<(f64, [f64; 13])> =
-        run.times.iter().copied().zip(run.states.iter().copied()).collect();
-    let (status, line) = match run.end.0 {
-        RunEnd::Completed => {
-            let t = rows.last().map_or(0.0, |r| r.0);
-            ("completed", format!("completed at t = {t} s"))
-        }
-        RunEnd::Fell { t } => (
-            "fell",
-            format!("fell at t = {t} s: the roll reached the fall angle ±{fall_angle} rad"),
-        ),
-        RunEnd::TorsoFell { t } => (
-            "torso fell",
-            format!(
-                "torso fell at t = {t} s: the torso's lean on its joint reached ±{fall_angle} rad"
-            ),
-        ),
-        RunEnd::SteerLock { t } => {
-            ("steer lock", format!("steer lock at t = {t} s: the steer reached ±{steer_lock} rad"))
-        }
-        RunEnd::Interrupted { t } => ("interrupted", format!("interrupted at t = {t} s")),
-    };
-    if let RunEnd::Fell { t } | RunEnd::TorsoFell { t } | RunEnd::SteerLock { t } = run.end.0 {
-        if rows.last().is_none_or(|(s, _)| *s < t) {
-            rows.push((t, run.end.1));
-        }
-    }
+    let (status, line) = (run.end.0.status(), run.status_line(limits));
+    let table = run.table(rider);
     let d = PyDict::new(py);
-    type Column = fn(&LeanRider, f64, &[f64; 13]) -> f64;
-    let columns: [(&str, Column); 9] = [
-        ("t", |_, t, _| t),
-        ("roll", |_, _, x| x[3]),
-        ("steer", |_, _, x| x[5]),
-        ("lean", |_, _, x| x[7]),
-        ("yaw", |_, _, x| x[2]),
-        ("pitch", |_, _, x| x[PITCH]),
-        ("x", |_, _, x| x[0]),
-        ("y", |_, _, x| x[1]),
-        ("energy", |r, _, x| r.energy(x)),
-    ];
-    for (name, f) in columns {
-        let col: Vec<f64> = rows.iter().map(|(t, x)| f(rider, *t, x)).collect();
-        d.set_item(name, PyArray1::from_vec(py, col))?;
+    for (k, name) in LeanRun::COLUMNS.iter().enumerate() {
+        d.set_item(name, PyArray1::from_vec(py, table.iter().map(|r| r[k]).collect()))?;
     }
     d.set_item("status", status)?;
     d.set_item("status_line", line)?;
@@ -373,21 +335,7 @@ pub(crate) fn frequency_response(
     input: usize,
     output: usize,
 ) -> Vec<FrequencyPoint> {
-    let g = rider.transfer(speed, input, output).expect("indices checked by signals");
-    omegas
-        .iter()
-        .map(|&omega| {
-            let (re, im) = g.at(omega);
-            FrequencyPoint {
-                speed,
-                omega,
-                re,
-                im,
-                magnitude_db: 20.0 * re.hypot(im).log10(),
-                phase_deg: g.phase_deg(omega),
-            }
-        })
-        .collect()
+    rider.frequency_response(speed, omegas, input, output).expect("indices checked by signals")
 }
 
 /// Adds `lean_rider` to the module.

@@ -25,7 +25,7 @@
 
 use carvallo::numerics::integrate::{Grid, Integration};
 use carvallo::whipple::lean_rider::{
-    Joint, LeanGains, LeanRider, Limits, RunEnd, INPUT_NAMES, PITCH, STATE_NAMES,
+    Joint, LeanGains, LeanRider, LeanRun, Limits, INPUT_NAMES, STATE_NAMES,
 };
 use carvallo::whipple::transfer::FrequencyPoint;
 use serde_json::{json, Value};
@@ -268,46 +268,9 @@ pub fn simulate(
                 how.method.name()
             )
         })?;
-    let end_t = run.times.last().copied().unwrap_or(0.0);
-    let (status, line) = match run.end.0 {
-        RunEnd::Completed => ("completed", format!("completed at t = {end_t} s")),
-        RunEnd::Fell { t } => (
-            "fell",
-            format!(
-                "fell at t = {t} s: the roll reached the fall angle ±{} rad",
-                limits.fall_angle
-            ),
-        ),
-        RunEnd::TorsoFell { t } => (
-            "torso fell",
-            format!(
-                "torso fell at t = {t} s: the torso's lean on its joint reached ±{} rad",
-                limits.fall_angle
-            ),
-        ),
-        RunEnd::SteerLock { t } => (
-            "steer lock",
-            format!("steer lock at t = {t} s: the steer reached ±{} rad", limits.steer_lock),
-        ),
-        RunEnd::Interrupted { t } => ("interrupted", super::rolling::interrupted_line(t)),
-    };
-    // The samples, then the end when it is not one of them.
-    let mut rows: Vec<(f64, [f64; 13])> =
-        run.times.iter().copied().zip(run.states.iter().copied()).collect();
-    let end_time = match run.end.0 {
-        RunEnd::Fell { t } | RunEnd::TorsoFell { t } | RunEnd::SteerLock { t } => Some(t),
-        _ => None,
-    };
-    if let Some(t) = end_time {
-        if rows.last().is_none_or(|(s, _)| *s < t) {
-            rows.push((t, run.end.1));
-        }
-    }
-    const COLUMNS: [&str; 9] = ["t", "roll", "steer", "lean", "yaw", "pitch", "x", "y", "energy"];
-    let row = |t: f64, x: &[f64; 13]| -> [f64; 9] {
-        [t, x[3], x[5], x[7], x[2], x[PITCH], x[0], x[1], rider.energy(x)]
-    };
-    let table: Vec<[f64; 9]> = rows.iter().map(|(t, x)| row(*t, x)).collect();
+    let (status, line) = (run.end.0.status(), run.status_line(limits));
+    const COLUMNS: [&str; 9] = LeanRun::COLUMNS;
+    let table = run.table(rider);
     if cmd.json {
         let mut v = json!({
             "model": model,
@@ -361,20 +324,12 @@ pub fn frequency_response(
     input: usize,
     output: usize,
 ) -> Vec<FrequencyPoint> {
-    let mut points = Vec::with_capacity(speeds.len() * omegas.len());
-    for &speed in speeds {
-        let g = rider.transfer(speed, input, output).expect("indices of the possible values");
-        for &omega in omegas {
-            let (re, im) = g.at(omega);
-            points.push(FrequencyPoint {
-                speed,
-                omega,
-                re,
-                im,
-                magnitude_db: 20.0 * re.hypot(im).log10(),
-                phase_deg: g.phase_deg(omega),
-            });
-        }
-    }
-    points
+    speeds
+        .iter()
+        .flat_map(|&v| {
+            rider
+                .frequency_response(v, omegas, input, output)
+                .expect("indices of the possible values")
+        })
+        .collect()
 }

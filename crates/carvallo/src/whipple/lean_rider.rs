@@ -429,9 +429,9 @@ fn program() -> &'static Program {
 pub struct LeanRider {
     params: LeanRiderParams,
     lam: f64,
-    dynamics: [f64; dynamics_scene::Args::LEN],
-    contact: [f64; contact_scene::Args::LEN],
-    energy: [f64; energy_scene::Args::LEN],
+    dynamics: Filled<{ dynamics_scene::Args::LEN }>,
+    contact: Filled<{ contact_scene::Args::LEN }>,
+    energy: Filled<{ energy_scene::Args::LEN }>,
 }
 
 /// The lean joint in a simulation.
@@ -507,19 +507,108 @@ pub struct LeanRun {
     pub max_energy_drift: f64,
 }
 
-/// A scene's argument array with the parameters of `params` (and `lam`) and the inputs zero.
-fn filled<const N: usize>(params: &LeanRiderParams, lam: f64, names: &[&str]) -> [f64; N] {
-    std::array::from_fn(|i| match names.get(i) {
-        Some(&"lam") => lam,
-        Some(name) => params.get(name).unwrap_or(0.0),
-        None => 0.0,
-    })
+impl RunEnd {
+    /// The status word: `completed`, `fell`, `torso fell`, `steer lock`, `interrupted`.
+    pub fn status(&self) -> &'static str {
+        match self {
+            RunEnd::Completed => "completed",
+            RunEnd::Fell { .. } => "fell",
+            RunEnd::TorsoFell { .. } => "torso fell",
+            RunEnd::SteerLock { .. } => "steer lock",
+            RunEnd::Interrupted { .. } => "interrupted",
+        }
+    }
 }
 
-/// The position of input `name` in a scene's argument array (`usize::MAX` when it does not
-/// take it).
-fn slot(params: &[&str], inputs: &[&str], name: &str) -> usize {
-    inputs.iter().position(|n| *n == name).map_or(usize::MAX, |i| params.len() + i)
+impl LeanRun {
+    /// The columns of [`table`](Self::table).
+    pub const COLUMNS: [&'static str; 9] =
+        ["t", "roll", "steer", "lean", "yaw", "pitch", "x", "y", "energy"];
+
+    /// The line that says how the run ended, under the limits it ran with.
+    pub fn status_line(&self, limits: Limits) -> String {
+        let Limits { fall_angle, steer_lock } = limits;
+        match self.end.0 {
+            RunEnd::Completed => {
+                format!("completed at t = {} s", self.times.last().copied().unwrap_or(0.0))
+            }
+            RunEnd::Fell { t } => {
+                format!("fell at t = {t} s: the roll reached the fall angle ±{fall_angle} rad")
+            }
+            RunEnd::TorsoFell { t } => format!(
+                "torso fell at t = {t} s: the torso's lean on its joint reached ±{fall_angle} rad"
+            ),
+            RunEnd::SteerLock { t } => {
+                format!("steer lock at t = {t} s: the steer reached ±{steer_lock} rad")
+            }
+            RunEnd::Interrupted { t } => format!("interrupted at t = {t} s"),
+        }
+    }
+
+    /// The rows of [`COLUMNS`](Self::COLUMNS) (time, roll, steer, the torso's lean, yaw,
+    /// pitch, the rear contact, the energy of `rider`): the samples, then the fall's end when
+    /// it is not one of them.
+    pub fn table(&self, rider: &LeanRider) -> Vec<[f64; 9]> {
+        let mut rows: Vec<(f64, [f64; 13])> =
+            self.times.iter().copied().zip(self.states.iter().copied()).collect();
+        if let RunEnd::Fell { t } | RunEnd::TorsoFell { t } | RunEnd::SteerLock { t } = self.end.0 {
+            if rows.last().is_none_or(|(s, _)| *s < t) {
+                rows.push((t, self.end.1));
+            }
+        }
+        rows.iter()
+            .map(|(t, x)| [*t, x[3], x[5], x[7], x[2], x[PITCH], x[0], x[1], rider.energy(x)])
+            .collect()
+    }
+}
+
+/// The program's inputs, in the order [`input_values`] gives them.
+const INPUT_ORDER: [&str; 12] =
+    ["q4", "q5", "q7", "q9", "q4d", "q6d", "q7d", "q9d", "T4", "T6", "T7", "T9"];
+
+/// The values of [`INPUT_ORDER`] at the state `x` (Moore's twelve, then the pitch) under the
+/// torques `[T4, T6, T7, T9]`.
+fn input_values(x: &[f64; 13], torques: &[f64; 4]) -> [f64; 12] {
+    [
+        x[3], x[PITCH], x[5], x[7], x[8], x[9], x[10], x[11], torques[0], torques[1], torques[2],
+        torques[3],
+    ]
+}
+
+/// A scene's argument array with the parameters filled in once, and where each input of
+/// [`INPUT_ORDER`] goes (`usize::MAX` where the scene does not take it): an evaluation copies
+/// the array and writes the inputs, with no search by name.
+#[derive(Clone, Debug)]
+struct Filled<const N: usize> {
+    args: [f64; N],
+    slots: [usize; 12],
+}
+
+impl<const N: usize> Filled<N> {
+    /// The arguments of the scene whose parameters are `params` and inputs `inputs`.
+    fn new(values: &LeanRiderParams, lam: f64, params: &[&str], inputs: &[&str]) -> Filled<N> {
+        Filled {
+            args: std::array::from_fn(|i| match params.get(i) {
+                Some(&"lam") => lam,
+                Some(name) => values.get(name).unwrap_or(0.0),
+                None => 0.0,
+            }),
+            slots: INPUT_ORDER.map(|name| {
+                inputs.iter().position(|n| *n == name).map_or(usize::MAX, |i| params.len() + i)
+            }),
+        }
+    }
+
+    /// The argument array with the inputs `values` ([`INPUT_ORDER`]).
+    fn at(&self, values: &[f64; 12]) -> [f64; N] {
+        let mut a = self.args;
+        for (&slot, &v) in self.slots.iter().zip(values) {
+            if let Some(x) = a.get_mut(slot) {
+                *x = v;
+            }
+        }
+        a
+    }
 }
 
 impl LeanRider {
@@ -530,17 +619,17 @@ impl LeanRider {
     /// # Errors
     /// [`LeanRiderError::NoUpright`] when no pitch puts the front wheel on the ground.
     pub fn new(params: LeanRiderParams) -> Result<LeanRider, LeanRiderError> {
-        let contact = filled(&params, 0.0, contact_scene::PARAMS);
-        let mut rider = LeanRider {
-            dynamics: filled(&params, 0.0, dynamics_scene::PARAMS),
-            contact,
-            energy: filled(&params, 0.0, energy_scene::PARAMS),
-            params,
-            lam: 0.0,
+        let with_lam = |lam: f64| {
+            (
+                Filled::new(&params, lam, dynamics_scene::PARAMS, dynamics_scene::INPUTS),
+                Filled::new(&params, lam, energy_scene::PARAMS, energy_scene::INPUTS),
+            )
         };
+        let (dynamics, energy) = with_lam(0.0);
+        let contact = Filled::new(&params, 0.0, contact_scene::PARAMS, contact_scene::INPUTS);
+        let mut rider = LeanRider { dynamics, contact, energy, params: params.clone(), lam: 0.0 };
         rider.lam = rider.pitch_on_ground(0.0, 0.0).ok_or(LeanRiderError::NoUpright)?;
-        rider.dynamics = filled(&rider.params, rider.lam, dynamics_scene::PARAMS);
-        rider.energy = filled(&rider.params, rider.lam, energy_scene::PARAMS);
+        (rider.dynamics, rider.energy) = with_lam(rider.lam);
         Ok(rider)
     }
 
@@ -645,13 +734,9 @@ impl LeanRider {
     /// The front contact's height (m) and its derivative in pitch (m/rad) at roll `q4`,
     /// pitch `q5` and steer `q7`.
     pub fn contact(&self, q4: f64, q5: f64, q7: f64) -> (f64, f64) {
-        let mut a = self.contact;
-        for (name, v) in [("q4", q4), ("q5", q5), ("q7", q7)] {
-            if let Some(x) = a.get_mut(slot(contact_scene::PARAMS, contact_scene::INPUTS, name)) {
-                *x = v;
-            }
-        }
-        let o = contact_scene::eval_array(&a);
+        let mut values = [0.0; 12];
+        values[..3].copy_from_slice(&[q4, q5, q7]);
+        let o = contact_scene::eval_array(&self.contact.at(&values));
         (o[0], o[1])
     }
 
@@ -672,19 +757,7 @@ impl LeanRider {
                 }
             }
         }
-        let mut th = best?;
-        for _ in 0..50 {
-            let (h, dh) = self.contact(q4, th, q7);
-            let step = h / dh;
-            th -= step;
-            if !th.is_finite() {
-                return None;
-            }
-            if step.abs() < 1e-15 {
-                break;
-            }
-        }
-        Some(th)
+        self.pitch_near(q4, best?, q7)
     }
 
     /// The state derivative at the state `x` (Moore's twelve, then the pitch `q5`) under the
@@ -693,47 +766,16 @@ impl LeanRider {
         self.rate_with(x, torques, Joint::Free)
     }
 
-    /// The inputs of a scene at the state `x` and the torques, by name.
-    fn inputs_at(x: &[f64; 13], torques: &[f64; 4]) -> [(&'static str, f64); 12] {
-        [
-            ("q4", x[3]),
-            ("q5", x[PITCH]),
-            ("q7", x[5]),
-            ("q9", x[7]),
-            ("q4d", x[8]),
-            ("q6d", x[9]),
-            ("q7d", x[10]),
-            ("q9d", x[11]),
-            ("T4", torques[0]),
-            ("T6", torques[1]),
-            ("T7", torques[2]),
-            ("T9", torques[3]),
-        ]
-    }
-
     /// The total energy (J) at the state `x` (kinetic plus gravity's potential).
     pub fn energy(&self, x: &[f64; 13]) -> f64 {
-        let mut a = self.energy;
-        for (name, v) in Self::inputs_at(x, &[0.0; 4]) {
-            if let Some(s) = a.get_mut(slot(energy_scene::PARAMS, energy_scene::INPUTS, name)) {
-                *s = v;
-            }
-        }
-        energy_scene::eval_array(&a)[0]
+        energy_scene::eval_array(&self.energy.at(&input_values(x, &[0.0; 4])))[0]
     }
 
     /// As [`rate`](Self::rate), the lean joint free or locked ([`Joint`]); with it locked the
     /// lean rates $\dot q_9$, $\dot u_9$ are zero and the other three accelerations solve the
     /// $3 \times 3$ system of roll, rear wheel and steer.
     pub fn rate_with(&self, x: &[f64; 13], torques: &[f64; 4], joint: Joint) -> [f64; 13] {
-        let mut a = self.dynamics;
-        let (p, i) = (dynamics_scene::PARAMS, dynamics_scene::INPUTS);
-        for (name, v) in Self::inputs_at(x, torques) {
-            if let Some(s) = a.get_mut(slot(p, i, name)) {
-                *s = v;
-            }
-        }
-        let mut o = dynamics_scene::eval_array(&a);
+        let mut o = dynamics_scene::eval_array(&self.dynamics.at(&input_values(x, torques)));
         if joint == Joint::Locked {
             // The lean row replaced by u9' = 0: M's last row and column the unit vector.
             for k in [3, 6, 8] {
@@ -859,8 +901,23 @@ impl LeanRider {
         let prog = program();
         let x0 = self.upright(speed);
         let x: [Dual<N>; 12] = std::array::from_fn(|k| Dual::variable(x0[k], k));
-        let torques = [Dual::variable(0.0, 12), Dual::constant(0.0), Dual::variable(0.0, 13)];
-        let t9 = Dual::variable(0.0, 14);
+        // The inputs of INPUT_ORDER: the states, the pitch held upright, T4, T6 (held at zero:
+        // B is over BicycleParameters' inputs), T7, T9.
+        let (zero, var) = (Dual::constant(0.0), |k| Dual::variable(0.0, k));
+        let values = [
+            x[3],
+            Dual::constant(self.lam),
+            x[5],
+            x[7],
+            x[8],
+            x[9],
+            x[10],
+            x[11],
+            var(12),
+            zero,
+            var(13),
+            var(14),
+        ];
         let params: Vec<Dual<N>> = prog
             .params
             .iter()
@@ -872,24 +929,13 @@ impl LeanRider {
                 })
             })
             .collect();
-        let by_name = |name: &str| -> Dual<N> {
-            match name {
-                "q4" => x[3],
-                "q5" => Dual::constant(self.lam),
-                "q7" => x[5],
-                "q9" => x[7],
-                "q4d" => x[8],
-                "q6d" => x[9],
-                "q7d" => x[10],
-                "q9d" => x[11],
-                "T4" => torques[0],
-                "T6" => torques[1],
-                "T7" => torques[2],
-                "T9" => t9,
-                other => panic!("the program has an unexpected input {other}"),
-            }
-        };
-        let inputs: Vec<Dual<N>> = prog.inputs.iter().map(|n| by_name(n)).collect();
+        let inputs: Vec<Dual<N>> = prog
+            .inputs
+            .iter()
+            .map(|n| {
+                values[INPUT_ORDER.iter().position(|m| m == n).expect("an input of the model")]
+            })
+            .collect();
         let out = dual::eval(prog, &params, &inputs).expect("the committed program evaluates");
         let o: [Dual<N>; 19] = std::array::from_fn(|k| {
             let name = dynamics_scene::OUTPUTS[k];
@@ -1075,5 +1121,34 @@ impl LeanRider {
             std::array::from_fn(|k| p[k])
         };
         Some(LeanTransfer { a, b, output, numerator, zeros, poles })
+    }
+
+    /// The points of the transfer function from torque `input` to the lateral state `output`
+    /// ([`transfer`](Self::transfer)) at `speed` and each of `omegas`: magnitude in dB, phase in
+    /// degrees; `None` for an index out of range.
+    pub fn frequency_response(
+        &self,
+        speed: f64,
+        omegas: &[f64],
+        input: usize,
+        output: usize,
+    ) -> Option<Vec<super::transfer::FrequencyPoint>> {
+        let g = self.transfer(speed, input, output)?;
+        Some(
+            omegas
+                .iter()
+                .map(|&omega| {
+                    let (re, im) = g.at(omega);
+                    super::transfer::FrequencyPoint {
+                        speed,
+                        omega,
+                        re,
+                        im,
+                        magnitude_db: 20.0 * re.hypot(im).log10(),
+                        phase_deg: g.phase_deg(omega),
+                    }
+                })
+                .collect(),
+        )
     }
 }
