@@ -114,7 +114,8 @@ pub fn parse_torque(text: &str) -> Result<TorqueTerm, String> {
 pub struct InputArgs {
     /// A torque on the bicycle: INPUT=step:VALUE@TIME (VALUE N m from TIME s on) or
     /// INPUT=impulse:VALUE@TIME (VALUE N m s at TIME s, a multiple of --step), INPUT roll or
-    /// steer; may be repeated (the terms add up)
+    /// steer (or lean, the leaning rider's lean torque, steps only); may be repeated (the terms
+    /// add up)
     #[arg(long, value_name = "INPUT=KIND:VALUE@TIME", value_parser = parse_torque, allow_hyphen_values = true, conflicts_with = "batch")]
     pub torque: Vec<TorqueTerm>,
     /// Torques sampled in time: a CSV file with the columns t and T_phi and/or T_delta (N m),
