@@ -146,14 +146,12 @@ fn the_state_jacobian_equals_dual_numbers_of_a_second_right_hand_side() {
         for i in 0..LEN {
             let dv = (value[i] - want[i].value).abs() / want[i].value.abs().max(1.0);
             assert!(dv <= 1e-12, "state {k}: rate {i} {} vs dual {}", value[i], want[i].value);
-            for j in 0..LEN {
-                let err = (jac[i][j] - want[i].grad[j]).abs() / scale;
+            for (j, (got, dual)) in jac[i].iter().zip(want[i].grad).enumerate() {
+                let err = (got - dual).abs() / scale;
                 worst = worst.max(err);
                 assert!(
                     err <= 1e-12,
-                    "state {k}: d rate {i} / d y {j} = {} vs dual numbers {}",
-                    jac[i][j],
-                    want[i].grad[j]
+                    "state {k}: d rate {i} / d y {j} = {got} vs dual numbers {dual}"
                 );
             }
         }
