@@ -69,8 +69,8 @@ enum Command {
     /// The stability windows of many designs (a grid or random designs around the model), or
     /// the closed-loop windows of a grid of feedback gains (--gain), in parallel
     Sweep(perf::SweepArgs),
-    /// Accelerations of the nonlinear bicycle in Basu-Mandal's coordinates (the state as JSON
-    /// on stdin)
+    /// Accelerations of the nonlinear bicycle in Basu-Mandal's coordinates, or the derivative of
+    /// the simulations' state (the state as JSON on stdin)
     Accel(accel::Args),
     /// Simulate the nonlinear bicycle (time series, energy drift)
     Simulate(simulate::Args),
