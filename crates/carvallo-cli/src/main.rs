@@ -20,10 +20,12 @@ mod commands;
 mod figures;
 mod gain_sweep;
 mod gains;
+mod interrupt;
 mod perf;
 mod report_dir;
 mod report_html;
 mod staging;
+mod sweep_args;
 
 use commands::{
     accel, bode, eig, kinematics, parameters, plot, report, response, rest, rolling, simulate,
