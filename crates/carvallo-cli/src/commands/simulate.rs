@@ -199,7 +199,7 @@ fn batch(
     }
     // Only the end is kept: no sample inside the run (the integration does not depend on them).
     let grid = Grid { every: grid.n.max(1), ..*grid };
-    let stop = crate::perf::interrupt_flag();
+    let stop = crate::interrupt::interrupt_flag();
     let clock = std::time::Instant::now();
     let (counter, finished) = (AtomicUsize::new(0), AtomicBool::new(false));
     let ends = std::thread::scope(|scope| {
@@ -479,7 +479,7 @@ pub fn run(cmd: &Args) -> Result<String, String> {
     }
     // An error after the start is the integration leaving the state's domain (a step too long
     // for the rates): said so, with the options to change.
-    let tr = bike.simulate_until(start, &grid, &how, stops, crate::perf::interrupt_flag()).map_err(|e| {
+    let tr = bike.simulate_until(start, &grid, &how, stops, crate::interrupt::interrupt_flag()).map_err(|e| {
         format!(
             "the integration diverged: {e} (--method {}{}); take a smaller --step or an adaptive --method",
             how.method.name(),

@@ -44,6 +44,9 @@ use differential_equations::ode::{solve_ode, OrdinaryNumericalMethod, ODE};
 use differential_equations::solout::Solout;
 use differential_equations::solution::Solution;
 
+/// What an integration counted (defined beside [`Trajectory`], which carries it, so that
+/// this module depends on [`crate::numerics::ode`] and not the other way).
+pub use crate::numerics::ode::Stats;
 use crate::numerics::ode::{EnergyDrift, Trajectory};
 
 /// The crate's DOPRI5: order 5, 7 stages.
@@ -266,18 +269,6 @@ impl Grid {
     pub fn samples(&self) -> usize {
         self.n / self.every + 1 + usize::from(!self.n.is_multiple_of(self.every))
     }
-}
-
-/// What an integration counted.
-#[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
-pub struct Stats {
-    /// Evaluations of the right-hand side (the adaptive methods' initial step choice
-    /// included).
-    pub rhs_evaluations: usize,
-    /// Accepted steps.
-    pub steps: usize,
-    /// Rejected steps (zero for RK4).
-    pub rejected_steps: usize,
 }
 
 /// A terminal event: the first zero crossing of one of the event functions.
