@@ -16,6 +16,7 @@ mod bicycle_straight;
 mod common;
 mod emit;
 mod engine;
+mod engine_hoop;
 mod hoop_checks;
 mod hoop_discussion;
 mod hoop_formulas;
