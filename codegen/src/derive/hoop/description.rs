@@ -8,8 +8,8 @@
 //! not a bicycle (`docs/guide/src/contributing.md`).
 //!
 //! Frames: the yawed frame Y (heading ψ about the downward vertical) and the lean frame
-//! L = Y·Rx(φ), which carries the hoop's axle (its y axis). The hoop's centre is
-//! $C = P - R\,L_z$ from the contact P, which is the root point: the contact is on the ground by
+//! L = Y·Rx(φ), which carries the hoop's axle (its y axis). The hoop's centre (the memoir's S) is
+//! $S = P - R\,L_z$ from the contact P, which is the root point: the contact is on the ground by
 //! construction, so the only constraints are the two horizontal rolling rows. The heading's and
 //! the spin's rates are independent speeds (a rolling disc has three degrees of freedom of
 //! velocity), the contact's velocity is dependent.
@@ -54,7 +54,7 @@ pub fn hoop() -> Model {
             Frame { name: "L".into(), parent: "Y".into(), rotations: vec![rot(Axis::X, "phi")] },
         ],
         points: vec![Point {
-            name: "C".into(),
+            name: "S".into(),
             from: "P".into(),
             frame: "L".into(),
             offset: [Atom::num(0), Atom::num(0), -&r],
@@ -63,7 +63,7 @@ pub fn hoop() -> Model {
         wheels: vec![Wheel {
             name: "R".into(),
             carrier: "L".into(),
-            centre: "C".into(),
+            centre: "S".into(),
             axle: Axis::Y,
             spin: "thetaR".into(),
             radius: r.clone(),
