@@ -116,9 +116,22 @@ pub fn wheel_moments() -> [Atom; 3] {
     [simplify(&j.dot(&i)), simplify(&j.dot(&k_big)), simplify(&j.dot(&jj))]
 }
 
-/// Work of the weight for δp: $(\mu z + \mu_1 R)g\sin\theta$ (n° 22).
+/// The weight's potential $g(\mu\,h_G + \mu_1 h_S)$ from the heights above the ground of the
+/// rider's centroid $G = O + zk$ and the wheel's centre $S = O + Rk$: $h = (M - O)\cdot K$,
+/// with $k$ written on the fixed trihedron (I, J, K) (n° 20–22).
+pub fn weight_potential() -> Atom {
+    let up = Vector::unit(Trihedron::IJK, 2);
+    let height = |length: Atom| {
+        Vector::unit(Trihedron::Ijk, 2).scale(&length).to(Trihedron::IJK).dot(&up)
+    };
+    var("g") * (var("mu") * height(var("z")) + var("mu1") * height(var("R")))
+}
+
+/// Work of the weight for δp, minus the potential's θ-derivative: the memoir's
+/// $(\mu z + \mu_1 R)g\sin\theta$ (n° 22), here derived from the heights
+/// ([`weight_potential`]) rather than typed in.
 pub fn weight_work() -> Atom {
-    (var("mu") * var("z") + var("mu1") * var("R")) * var("g") * sin_t()
+    simplify(&(-hoop::lagrange::d_theta(&weight_potential())))
 }
 
 /// The equations of motion (p), (n), (s) of the full model, motor moment 0.
