@@ -198,12 +198,27 @@ pub(crate) fn point_like(v: &[f64; 26]) -> bool {
         .any(|&(a, yy, c, d)| v[a] * v[c] - v[d] * v[d] <= 0.0 || v[yy] == 0.0)
 }
 
+crate::scene! {
+    /// The mass matrix $M$ alone, for the validation of a parameter set: the parameters'
+    /// module evaluates it itself, so that it does not depend on the matrices' module, which
+    /// depends on it.
+    pub(crate) mod mass_scene {
+        model: whipple,
+        outputs: [m11, m12, m21, m22],
+    }
+}
+
 /// Whether the mass matrix $M$ of `v` is positive definite ($M_{11} > 0$, $\det M > 0$). It
 /// is when both frames have positive definite inertias (every lean and steer rate turns a frame
 /// with inertia); a frame of zero or singular inertia (a point mass, as the two-mass-skate's)
 /// leaves it to where the masses sit, so it is computed.
 fn mass_matrix_regular(v: &[f64; 26]) -> bool {
-    let m = super::matrices::matrices_of(v, &super::matrices::scene_index()).m;
+    let v = skate_limit(v);
+    let a = mass_scene::Args::from_fn(|name| {
+        PARAM_NAMES.iter().position(|n| *n == name).map_or(f64::NAN, |k| v[k])
+    });
+    let o = mass_scene::eval(&a);
+    let m = [[o.m11, o.m12], [o.m21, o.m22]];
     let det = m[0][0] * m[1][1] - m[0][1] * m[1][0];
     m[0][0] > 0.0 && det > 1e-12 * m[0][0] * m[1][1].abs()
 }
