@@ -34,6 +34,7 @@ use std::sync::atomic::AtomicUsize;
 use carvallo::ir::{hp, Interpreter, Op, Program, Value};
 use rayon::prelude::*;
 
+use carvallo::numerics::integrate::{self, Grid, Integration, Method as Integrator, Point};
 use carvallo::numerics::quartic;
 use carvallo::numerics::rng::SplitMix64;
 use carvallo::whipple::nonlinear::rate::{self, project_scene, state_rate_scene, StateRate};
@@ -988,6 +989,75 @@ fn scene_rows(cfg: &Config, rows: &mut Vec<Row>) {
                 t / kernel
             ),
         );
+        integrator_overhead_rows(mt, &wn, &f, t, rows);
+    }
+}
+
+/// The integrators' cost beyond the right-hand side: the bicycle at 4.6 m/s from a lean of
+/// 0.05 rad over 5 s (the problem of the section `simulation`), RK4 at 0.01 s and DOPRI5 and
+/// DOP853 at rtol $10^{-8}$ (atol $10^{-11}$), no samples but the end. Per attempted step, the
+/// time of a run minus its right-hand side evaluations at `rhs_ns` each (the whole right-hand
+/// side at the bench's state): first [`integrate::integrate`] alone on [`StateRate::eval`]
+/// (no events, no observer), then [`WhippleNonlinear::simulate_final`] (two events, the fall
+/// and the steer lock, and at every accepted step the energy and the contact residual).
+fn integrator_overhead_rows(
+    mt: f64,
+    wn: &WhippleNonlinear,
+    f: &StateRate,
+    rhs_ns: f64,
+    rows: &mut Vec<Row>,
+) {
+    let Ok(start) = wn.initial_state(4.6, 0.05) else { return };
+    let Ok(pitch) = wn.pitch(start.lean, start.steer, 0.0) else { return };
+    let y0 = rate::state_with_pitch(&start, pitch);
+    for (method, rtol) in
+        [(Integrator::Rk4, 0.0), (Integrator::Dopri5, 1e-8), (Integrator::Dop853, 1e-8)]
+    {
+        let how = if method == Integrator::Rk4 {
+            Integration::RK4
+        } else {
+            Integration::adaptive(method, rtol, 1e-3 * rtol)
+        };
+        let Ok(grid) = Grid::new(5.0, 0.01, 500) else { return };
+        let run = || {
+            let mut rhs = |_t: f64, y: &[f64; rate::LEN]| f.eval(y);
+            let mut observe = |_: Point, _: f64, _: &[f64; rate::LEN]| Ok(());
+            integrate::integrate(&how, &grid, y0, &mut rhs, &mut [], &mut observe)
+        };
+        let Ok(out) = run() else { continue };
+        let Ok(fin) = wn.simulate_final(start, &grid, &how, &[]) else { continue };
+        let bare = time_ns(mt, || run().map(|o| o.end));
+        let whole =
+            time_ns(mt, || wn.simulate_final(black_box(start), &grid, &how, &[]).map(|r| r.t));
+        let tol = if method == Integrator::Rk4 {
+            "step 0.01 s".into()
+        } else {
+            format!("rtol {rtol:.0e}")
+        };
+        for (kind, stats, ns) in
+            [("integrate", out.stats, bare), ("simulate_final", fin.stats, whole)]
+        {
+            let steps = (stats.steps + stats.rejected_steps).max(1);
+            let beyond = (ns - stats.rhs_evaluations as f64 * rhs_ns) / steps as f64;
+            rows.push(Row {
+                section: "scenes",
+                name: "bicycle (c) integrator overhead per step".into(),
+                method: format!("{method}, {kind}"),
+                ops: None,
+                ns: Some(beyond),
+                max_rel_err: None,
+                note: format!(
+                    "{tol}: {:.0} us per run, {} steps ({} rejected), {} evaluations ({:.2} per \
+                     step) at {rhs_ns:.0} ns: {:.0} % of the run beyond the evaluations",
+                    ns * 1e-3,
+                    stats.steps,
+                    stats.rejected_steps,
+                    stats.rhs_evaluations,
+                    stats.rhs_evaluations as f64 / steps as f64,
+                    100.0 * beyond * steps as f64 / ns
+                ),
+            });
+        }
     }
 }
 
