@@ -495,7 +495,8 @@ def integrators(a, model, num, x, p, xd) -> int:
                 cells.append("below")
             else:
                 cells.append("-")
-        print(f"| {method} | {tol:.0e} | {err:.1e} | {sec * 1e6:.0f} us | " + " | ".join(cells)
+        label = f"{tol:.2e}" if method == "rk4" else f"{tol:.0e}"
+        print(f"| {method} | {label} | {err:.1e} | {sec * 1e6:.0f} us | " + " | ".join(cells)
               + " |")
     for m in speer.OUR_METHODS + ["rk4"]:
         got = [s for s in speedups if s[1] == m]
