@@ -989,27 +989,25 @@ fn scene_rows(cfg: &Config, rows: &mut Vec<Row>) {
                 t / kernel
             ),
         );
-        integrator_overhead_rows(mt, &wn, &f, t, rows);
+        integrator_overhead_rows(mt, &wn, &f, rows);
     }
 }
 
 /// The integrators' cost beyond the right-hand side: the bicycle at 4.6 m/s from a lean of
 /// 0.05 rad over 5 s (the problem of the section `simulation`), RK4 at 0.01 s and DOPRI5 and
-/// DOP853 at rtol $10^{-8}$ (atol $10^{-11}$), no samples but the end. Per attempted step, the
-/// time of a run minus its right-hand side evaluations at `rhs_ns` each (the whole right-hand
-/// side at the bench's state): first [`integrate::integrate`] alone on [`StateRate::eval`]
-/// (no events, no observer), then [`WhippleNonlinear::simulate_final`] (two events, the fall
-/// and the steer lock, and at every accepted step the energy and the contact residual).
-fn integrator_overhead_rows(
-    mt: f64,
-    wn: &WhippleNonlinear,
-    f: &StateRate,
-    rhs_ns: f64,
-    rows: &mut Vec<Row>,
-) {
+/// DOP853 at rtol $10^{-8}$ (atol $10^{-11}$), no samples but the end. [`integrate::integrate`]
+/// alone on [`StateRate::eval`] (no events, no observer) is timed twice, as it is and with every
+/// evaluation done twice: the difference is the evaluations' time in place (same steps, same
+/// caches), so the work beyond them is $2T_1 - T_2$ whatever the machine's load does to the
+/// right-hand side's own row; per attempted step. [`WhippleNonlinear::simulate_final`] (two
+/// events, the fall and the steer lock, and at every accepted step the energy and the contact
+/// residual) adds its time beyond `integrate`'s. Each time is the least of four timings (at
+/// `--quick`, twenty runs of about a millisecond).
+fn integrator_overhead_rows(mt: f64, wn: &WhippleNonlinear, f: &StateRate, rows: &mut Vec<Row>) {
     let Ok(start) = wn.initial_state(4.6, 0.05) else { return };
     let Ok(pitch) = wn.pitch(start.lean, start.steer, 0.0) else { return };
     let y0 = rate::state_with_pitch(&start, pitch);
+    let least = |f: &mut dyn FnMut() -> f64| (0..4).map(|_| f()).fold(f64::INFINITY, f64::min);
     for (method, rtol) in
         [(Integrator::Rk4, 0.0), (Integrator::Dopri5, 1e-8), (Integrator::Dop853, 1e-8)]
     {
@@ -1019,46 +1017,122 @@ fn integrator_overhead_rows(
             Integration::adaptive(method, rtol, 1e-3 * rtol)
         };
         let Ok(grid) = Grid::new(5.0, 0.01, 500) else { return };
-        let run = || {
-            let mut rhs = |_t: f64, y: &[f64; rate::LEN]| f.eval(y);
+        let run = |twice: bool| {
+            let mut rhs = |_t: f64, y: &[f64; rate::LEN]| {
+                if twice {
+                    black_box(f.eval(black_box(y)))?;
+                }
+                f.eval(y)
+            };
             let mut observe = |_: Point, _: f64, _: &[f64; rate::LEN]| Ok(());
             integrate::integrate(&how, &grid, y0, &mut rhs, &mut [], &mut observe)
         };
-        let Ok(out) = run() else { continue };
-        let Ok(fin) = wn.simulate_final(start, &grid, &how, &[]) else { continue };
-        let bare = time_ns(mt, || run().map(|o| o.end));
-        let whole =
-            time_ns(mt, || wn.simulate_final(black_box(start), &grid, &how, &[]).map(|r| r.t));
+        let (Ok(out), Ok(fin)) = (run(false), wn.simulate_final(start, &grid, &how, &[])) else {
+            continue;
+        };
+        let once = least(&mut || time_ns(mt, || run(false).map(|o| o.end)));
+        let twice = least(&mut || time_ns(mt, || run(true).map(|o| o.end)));
+        let whole = least(&mut || {
+            time_ns(mt, || wn.simulate_final(black_box(start), &grid, &how, &[]).map(|r| r.t))
+        });
+        let stats = out.stats;
+        let steps = (stats.steps + stats.rejected_steps).max(1) as f64;
+        let evals = stats.rhs_evaluations as f64;
+        let per_eval = (twice - once) / evals;
+        let beyond = (2.0 * once - twice) / steps;
         let tol = if method == Integrator::Rk4 {
             "step 0.01 s".into()
         } else {
             format!("rtol {rtol:.0e}")
         };
-        for (kind, stats, ns) in
-            [("integrate", out.stats, bare), ("simulate_final", fin.stats, whole)]
-        {
-            let steps = (stats.steps + stats.rejected_steps).max(1);
-            let beyond = (ns - stats.rhs_evaluations as f64 * rhs_ns) / steps as f64;
+        let counts = format!(
+            "{tol}: {} steps ({} rejected), {} evaluations ({:.2} per step)",
+            stats.steps,
+            stats.rejected_steps,
+            stats.rhs_evaluations,
+            evals / steps
+        );
+        let mut push = |kind: &str, ns: f64, note: String| {
             rows.push(Row {
                 section: "scenes",
                 name: "bicycle (c) integrator overhead per step".into(),
                 method: format!("{method}, {kind}"),
                 ops: None,
-                ns: Some(beyond),
+                ns: Some(ns),
                 max_rel_err: None,
-                note: format!(
-                    "{tol}: {:.0} us per run, {} steps ({} rejected), {} evaluations ({:.2} per \
-                     step) at {rhs_ns:.0} ns: {:.0} % of the run beyond the evaluations",
-                    ns * 1e-3,
-                    stats.steps,
-                    stats.rejected_steps,
-                    stats.rhs_evaluations,
-                    stats.rhs_evaluations as f64 / steps as f64,
-                    100.0 * beyond * steps as f64 / ns
-                ),
-            });
+                note,
+            })
+        };
+        push(
+            "integrate",
+            beyond,
+            format!(
+                "{counts}; {:.0} us per run, the evaluations {per_eval:.0} ns each in place: \
+                 {:.0} % of the run beyond them",
+                once * 1e-3,
+                100.0 * beyond * steps / once
+            ),
+        );
+        let observer = (whole - once) / steps;
+        push(
+            "simulate_final",
+            beyond + observer,
+            format!(
+                "{counts} (the model's: {}); {:.0} us per run: integrate's {beyond:.0} ns per \
+                 step and {observer:.0} ns of events and the per-step energy and residual",
+                fin.stats.rhs_evaluations,
+                whole * 1e-3
+            ),
+        );
+    }
+}
+
+/// A basin map by [`WhippleNonlinear::simulate_many`]: the benchmark bicycle from a 16 x 16
+/// grid of starts — speeds 1 to 7 m/s, initial leans -0.3 to 0.3 rad, every other rate zero
+/// but the rear wheel's — for 5 s at DOPRI5's default tolerances (rtol $10^{-8}$), the fall and
+/// the steer lock ending a run, only the ends kept (as `simulate --batch`). Simulations per
+/// second, and per core (over rayon's threads); the row's `ns` is the wall time per
+/// simulation on all of them.
+fn basin_row(rows: &mut Vec<Row>) {
+    const SIDE: usize = 16;
+    let wn = WhippleNonlinear::new(WhippleParams::benchmark());
+    let mut starts = Vec::with_capacity(SIDE * SIDE);
+    for i in 0..SIDE {
+        for j in 0..SIDE {
+            let speed = 1.0 + 6.0 * i as f64 / (SIDE - 1) as f64;
+            let lean = -0.3 + 0.6 * j as f64 / (SIDE - 1) as f64;
+            let Ok(s) = wn.initial_state(speed, lean) else { return };
+            starts.push(s);
         }
     }
+    let Ok(grid) = Grid::new(5.0, 0.01, 500) else { return };
+    let how = Integration::with_defaults(Integrator::Dopri5, None, None);
+    let done = AtomicUsize::new(0);
+    let clock = std::time::Instant::now();
+    let ends = wn.simulate_many(&starts, &grid, &how, &[], &done);
+    let elapsed = clock.elapsed().as_secs_f64();
+    let fell = ends.iter().filter(|e| matches!(e, Ok(f) if f.fall.is_some())).count();
+    let failed = ends.iter().filter(|e| e.is_err()).count();
+    let evaluations: usize = ends.iter().flatten().map(|f| f.stats.rhs_evaluations).sum();
+    let threads = rayon::current_num_threads();
+    let rate = starts.len() as f64 / elapsed;
+    rows.push(Row {
+        section: "sweep",
+        name: format!("basin map, simulate_many, {SIDE} x {SIDE} starts"),
+        method: "dopri5".into(),
+        ops: None,
+        ns: Some(elapsed * 1e9 / starts.len() as f64),
+        max_rel_err: None,
+        note: format!(
+            "speeds 1..7 m/s x leans -0.3..0.3 rad, 5 s, rtol {:.0e}: {:.3} s, {rate:.0} \
+             simulations/s on {threads} threads, {:.0} per core; {fell} fell, {failed} failed; \
+             {evaluations} evaluations ({:.0} ns each on all threads)",
+            how.rtol,
+            elapsed,
+            rate / threads as f64,
+            elapsed * 1e9 / evaluations.max(1) as f64
+        ),
+    });
 }
 
 /// Table 7; returns the Hurwitz sweep's seconds per $10^6$ designs and the designs per second
@@ -1201,6 +1275,7 @@ pub fn run(cfg: &Config) -> Report {
     let distributions = distributions(cfg);
     scene_rows(cfg, &mut rows);
     let (per_million, grid_rate, random_rate) = sweep_rows(cfg, &mut rows);
+    basin_row(&mut rows);
     let mut targets: Targets = ratios
         .iter()
         .map(|(name, r)| Target {
