@@ -378,9 +378,10 @@ def main() -> int:
     print(f"| state -> state derivative | {best[labels['rhs']]:.0f} ns "
           f"({rhs.n_instructions()} SX instructions) | {whole:.0f} ns (StateRate::eval) | "
           f"{whole / best[labels['rhs']]:.2f} |")
-    jl = "ours, state Jacobian"
-    ratio = f"{best[jl] / best[labels['rhs_jacobian']]:.2f}" if jl in best else "-"
-    print(f"| state Jacobian (10 x 10 for CasADi; ours 11 x 11) | {best[labels['rhs_jacobian']]:.0f} ns "
+    # Our Jacobian's column: filled when `carvallo bench` has a row named like OUR_JACOBIAN.
+    jl, cj = "ours, state Jacobian", best[labels["rhs_jacobian"]]
+    ratio = f"{best[jl] / cj:.2f}" if jl in best else "-"
+    print(f"| state Jacobian (10 x 10 for CasADi; ours 11 x 11) | {cj:.0f} ns "
           f"({jac.n_instructions()} SX instructions) | {jacobian_column(best, jl)} | {ratio} |")
     print(f"| our kernel only (M3, f3, dependent rates) | | "
           f"{best[cpeer.OURS_RHS[1][0]]:.0f} ns | |")
@@ -495,7 +496,8 @@ def integrators(a, model, num, x, p, xd) -> int:
                 cells.append("below")
             else:
                 cells.append("-")
-        print(f"| {method} | {tol:.0e} | {err:.1e} | {sec * 1e6:.0f} us | " + " | ".join(cells)
+        label = f"{tol:.2e}" if method == "rk4" else f"{tol:.0e}"
+        print(f"| {method} | {label} | {err:.1e} | {sec * 1e6:.0f} us | " + " | ".join(cells)
               + " |")
     for m in speer.OUR_METHODS + ["rk4"]:
         got = [s for s in speedups if s[1] == m]

@@ -1,16 +1,21 @@
 """Tests of the small pure-Python pieces of the PyDy peers (scripts/pydy_whipple.py,
-scripts/pydy_scipy_peer.py): the parameter conversion, the operation count, the log-log
-interpolation. Not in the test command (they need SymPy); run in the peers' venv:
+scripts/pydy_scipy_peer.py, scripts/pydy_c_peer.py): the parameter conversion, the operation
+count, the log-log interpolation, the whole right-hand side's kinematic rates and its map to
+our state. Not in the test command (they need SymPy); run in the peers' venv:
 `$(scripts/pydy-peer-venv) -m pytest -q scripts/test_pydy_peers.py`."""
 
 import math
 import sys
 from pathlib import Path
 
+from types import SimpleNamespace
+
+import numpy as np
 import pytest
 import sympy as sm
 
 sys.path.insert(0, str(Path(__file__).resolve().parent))
+import pydy_c_peer as cpeer  # noqa: E402
 import pydy_scipy_peer as peer  # noqa: E402
 import pydy_whipple as pw  # noqa: E402
 
@@ -69,3 +74,38 @@ def test_speedup_summary_says_met_only_when_every_error_is():
     assert len(lines) == 2
     assert "19x to 25x over 2 errors, >= 20x at 1 -> NOT met; 1 more accurate" in lines[0]
     assert "30x to 30x over 1 errors, >= 20x at 1 -> met; 0 more accurate" in lines[1]
+
+
+def _moore_names():
+    t = sm.Symbol("t")
+    q = [sm.Function(n)(t) for n in ("q3", "q4", "q7", "q5")]
+    u = [sm.Function(n)(t) for n in ("u4", "u6", "u7", "u3", "u5", "u8")]
+    return SimpleNamespace(q=q, u=u, qdot=sm.Matrix([u[3], u[0], u[2], u[4]]))
+
+
+def test_kinematic_rates_in_c_read_the_speeds():
+    model = _moore_names()
+    # q3' = u3, q4' = u4, q7' = u7, q5' = u5, with the speeds after the four coordinates.
+    assert cpeer.kinematics_c(model) == "xd[0] = x[7]; xd[1] = x[4]; xd[2] = x[6]; xd[3] = x[8];"
+    model.qdot = sm.Matrix([2 * model.u[3]])
+    with pytest.raises(SystemExit, match="is not a speed"):
+        cpeer.kinematics_c(model)
+
+
+def test_the_lu_counts_its_arithmetic():
+    # Elimination: 5 + 4 + ... rows of 1 division, 2 per column left and 2 for the right-hand
+    # side; back substitution 2 per known unknown and a division: 155 + 36.
+    assert cpeer.LU6_OPS == 191
+
+
+def test_shared_derivatives_pair_moores_rates_with_ours():
+    model = _moore_names()
+    x = np.arange(10.0)  # q3 q4 q7 q5 u4 u6 u7 u3 u5 u8
+    xd = 100.0 + np.arange(10.0)  # q3' q4' q7' q5' u4' u6' u7' u3' u5' u8'
+    ours = [1000.0 + k for k in range(11)]
+    got = {name: (p, o) for name, p, o in cpeer.shared_derivatives(model, x, xd, ours)}
+    assert got["yaw rate"] == (100.0, 1002.0)
+    assert got["pitch rate"] == (103.0, 1010.0)
+    assert got["front wheel rate"] == (9.0, 1006.0)
+    assert got["rear wheel acceleration"] == (105.0, 1009.0)
+    assert len(got) == 9

@@ -34,6 +34,7 @@ use std::sync::atomic::AtomicUsize;
 use carvallo::ir::{hp, Interpreter, Op, Program, Value};
 use rayon::prelude::*;
 
+use carvallo::numerics::integrate::{self, Grid, Integration, Method as Integrator, Point};
 use carvallo::numerics::quartic;
 use carvallo::numerics::rng::SplitMix64;
 use carvallo::whipple::nonlinear::rate::{
@@ -911,6 +912,34 @@ fn scene_rows(cfg: &Config, rows: &mut Vec<Row>) {
         steer_rate: -0.1,
         rear_wheel_rate: -5.0 / 0.3,
     });
+    // The design sensitivities: the weave and capsize speeds' derivatives with respect to
+    // the 26 parameters, the matrices' derivatives by generated code or by dual numbers
+    // through the IR interpreter.
+    let p = WhippleParams::benchmark();
+    let generated = time_ns(mt, || {
+        uncertainty::speed_gradients_by(black_box(&p), uncertainty::Derivatives::Generated)
+    });
+    let interpreted = time_ns(mt, || {
+        uncertainty::speed_gradients_by(black_box(&p), uncertainty::Derivatives::Interpreted)
+    });
+    add(
+        "bicycle (a) speed derivatives, 26 parameters",
+        "generated",
+        uncertainty::matrices_jacobian_scene::OP_COUNT,
+        generated,
+        &format!(
+            "speed_gradients: the matrices' derivatives by scene! jacobian, then the window and \
+             the implicit function theorem; {:.1}x faster than dual numbers through the interpreter",
+            interpreted / generated
+        ),
+    );
+    add(
+        "bicycle (a) speed derivatives, 26 parameters",
+        "interpreted duals",
+        0,
+        interpreted,
+        "the reference route: Dual<26> through the IR interpreter on generated/whipple.ir",
+    );
     if let Ok(c) = config {
         let nl_args = |names: &[&str]| -> Vec<f64> {
             let b = WhippleParams::benchmark();
@@ -1012,35 +1041,150 @@ fn scene_rows(cfg: &Config, rows: &mut Vec<Row>) {
                 t / whole
             ),
         );
+        integrator_overhead_rows(mt, &wn, &f, rows);
     }
-    // The design sensitivities: the weave and capsize speeds' derivatives with respect to
-    // the 26 parameters, the matrices' derivatives by generated code or by dual numbers
-    // through the IR interpreter.
-    let p = WhippleParams::benchmark();
-    let generated = time_ns(mt, || {
-        uncertainty::speed_gradients_by(black_box(&p), uncertainty::Derivatives::Generated)
-    });
-    let interpreted = time_ns(mt, || {
-        uncertainty::speed_gradients_by(black_box(&p), uncertainty::Derivatives::Interpreted)
-    });
-    add(
-        "bicycle (a) speed derivatives, 26 parameters",
-        "generated",
-        uncertainty::matrices_jacobian_scene::OP_COUNT,
-        generated,
-        &format!(
-            "speed_gradients: the matrices' derivatives by scene! jacobian, then the window and \
-             the implicit function theorem; {:.1}x faster than dual numbers through the interpreter",
-            interpreted / generated
+}
+
+/// The integrators' cost beyond the right-hand side: the bicycle at 4.6 m/s from a lean of
+/// 0.05 rad over 5 s (the problem of the section `simulation`), RK4 at 0.01 s and DOPRI5 and
+/// DOP853 at rtol $10^{-8}$ (atol $10^{-11}$), no samples but the end. [`integrate::integrate`]
+/// alone on [`StateRate::eval`] (no events, no observer) is timed twice, as it is and with every
+/// evaluation done twice: the difference is the evaluations' time in place (same steps, same
+/// caches), so the work beyond them is $2T_1 - T_2$ whatever the machine's load does to the
+/// right-hand side's own row; per attempted step. [`WhippleNonlinear::simulate_final`] (two
+/// events, the fall and the steer lock, and at every accepted step the energy and the contact
+/// residual) adds its time beyond `integrate`'s. Each time is the least of four timings (at
+/// `--quick`, twenty runs of about a millisecond).
+fn integrator_overhead_rows(mt: f64, wn: &WhippleNonlinear, f: &StateRate, rows: &mut Vec<Row>) {
+    let Ok(start) = wn.initial_state(4.6, 0.05) else { return };
+    let Ok(pitch) = wn.pitch(start.lean, start.steer, 0.0) else { return };
+    let y0 = rate::state_with_pitch(&start, pitch);
+    let least = |f: &mut dyn FnMut() -> f64| (0..4).map(|_| f()).fold(f64::INFINITY, f64::min);
+    for (method, rtol) in
+        [(Integrator::Rk4, 0.0), (Integrator::Dopri5, 1e-8), (Integrator::Dop853, 1e-8)]
+    {
+        let how = if method == Integrator::Rk4 {
+            Integration::RK4
+        } else {
+            Integration::adaptive(method, rtol, 1e-3 * rtol)
+        };
+        let Ok(grid) = Grid::new(5.0, 0.01, 500) else { return };
+        let run = |twice: bool| {
+            let mut rhs = |_t: f64, y: &[f64; rate::LEN]| {
+                if twice {
+                    black_box(f.eval(black_box(y)))?;
+                }
+                f.eval(y)
+            };
+            let mut observe = |_: Point, _: f64, _: &[f64; rate::LEN]| Ok(());
+            integrate::integrate(&how, &grid, y0, &mut rhs, &mut [], &mut observe)
+        };
+        let (Ok(out), Ok(fin)) = (run(false), wn.simulate_final(start, &grid, &how, &[])) else {
+            continue;
+        };
+        let once = least(&mut || time_ns(mt, || run(false).map(|o| o.end)));
+        let twice = least(&mut || time_ns(mt, || run(true).map(|o| o.end)));
+        let whole = least(&mut || {
+            time_ns(mt, || wn.simulate_final(black_box(start), &grid, &how, &[]).map(|r| r.t))
+        });
+        let stats = out.stats;
+        let steps = (stats.steps + stats.rejected_steps).max(1) as f64;
+        let evals = stats.rhs_evaluations as f64;
+        let per_eval = (twice - once) / evals;
+        let beyond = (2.0 * once - twice) / steps;
+        let tol = if method == Integrator::Rk4 {
+            "step 0.01 s".into()
+        } else {
+            format!("rtol {rtol:.0e}")
+        };
+        let counts = format!(
+            "{tol}: {} steps ({} rejected), {} evaluations ({:.2} per step)",
+            stats.steps,
+            stats.rejected_steps,
+            stats.rhs_evaluations,
+            evals / steps
+        );
+        let mut push = |kind: &str, ns: f64, note: String| {
+            rows.push(Row {
+                section: "scenes",
+                name: "bicycle (c) integrator overhead per step".into(),
+                method: format!("{method}, {kind}"),
+                ops: None,
+                ns: Some(ns),
+                max_rel_err: None,
+                note,
+            })
+        };
+        push(
+            "integrate",
+            beyond,
+            format!(
+                "{counts}; {:.0} us per run, the evaluations {per_eval:.0} ns each in place: \
+                 {:.0} % of the run beyond them",
+                once * 1e-3,
+                100.0 * beyond * steps / once
+            ),
+        );
+        let observer = (whole - once) / steps;
+        push(
+            "simulate_final",
+            beyond + observer,
+            format!(
+                "{counts} (the model's: {}); {:.0} us per run: integrate's {beyond:.0} ns per \
+                 step and {observer:.0} ns of events and the per-step energy and residual",
+                fin.stats.rhs_evaluations,
+                whole * 1e-3
+            ),
+        );
+    }
+}
+
+/// A basin map by [`WhippleNonlinear::simulate_many`]: the benchmark bicycle from a 16 x 16
+/// grid of starts — speeds 1 to 7 m/s, initial leans -0.3 to 0.3 rad, every other rate zero
+/// but the rear wheel's — for 5 s at DOPRI5's default tolerances (rtol $10^{-8}$), the fall and
+/// the steer lock ending a run, only the ends kept (as `simulate --batch`). Simulations per
+/// second, and per core (over rayon's threads); the row's `ns` is the wall time per
+/// simulation on all of them.
+fn basin_row(rows: &mut Vec<Row>) {
+    const SIDE: usize = 16;
+    let wn = WhippleNonlinear::new(WhippleParams::benchmark());
+    let mut starts = Vec::with_capacity(SIDE * SIDE);
+    for i in 0..SIDE {
+        for j in 0..SIDE {
+            let speed = 1.0 + 6.0 * i as f64 / (SIDE - 1) as f64;
+            let lean = -0.3 + 0.6 * j as f64 / (SIDE - 1) as f64;
+            let Ok(s) = wn.initial_state(speed, lean) else { return };
+            starts.push(s);
+        }
+    }
+    let Ok(grid) = Grid::new(5.0, 0.01, 500) else { return };
+    let how = Integration::with_defaults(Integrator::Dopri5, None, None);
+    let done = AtomicUsize::new(0);
+    let clock = std::time::Instant::now();
+    let ends = wn.simulate_many(&starts, &grid, &how, &[], &done);
+    let elapsed = clock.elapsed().as_secs_f64();
+    let fell = ends.iter().filter(|e| matches!(e, Ok(f) if f.fall.is_some())).count();
+    let failed = ends.iter().filter(|e| e.is_err()).count();
+    let evaluations: usize = ends.iter().flatten().map(|f| f.stats.rhs_evaluations).sum();
+    let threads = rayon::current_num_threads();
+    let rate = starts.len() as f64 / elapsed;
+    rows.push(Row {
+        section: "sweep",
+        name: format!("basin map, simulate_many, {SIDE} x {SIDE} starts"),
+        method: "dopri5".into(),
+        ops: None,
+        ns: Some(elapsed * 1e9 / starts.len() as f64),
+        max_rel_err: None,
+        note: format!(
+            "speeds 1..7 m/s x leans -0.3..0.3 rad, 5 s, rtol {:.0e}: {:.3} s, {rate:.0} \
+             simulations/s on {threads} threads, {:.0} per core; {fell} fell, {failed} failed; \
+             {evaluations} evaluations ({:.0} ns each on all threads)",
+            how.rtol,
+            elapsed,
+            rate / threads as f64,
+            elapsed * 1e9 / evaluations.max(1) as f64
         ),
-    );
-    add(
-        "bicycle (a) speed derivatives, 26 parameters",
-        "interpreted duals",
-        0,
-        interpreted,
-        "the reference route: Dual<26> through the IR interpreter on generated/whipple.ir",
-    );
+    });
 }
 
 /// Table 7; returns the Hurwitz sweep's seconds per $10^6$ designs and the designs per second
@@ -1183,6 +1327,7 @@ pub fn run(cfg: &Config) -> Report {
     let distributions = distributions(cfg);
     scene_rows(cfg, &mut rows);
     let (per_million, grid_rate, random_rate) = sweep_rows(cfg, &mut rows);
+    basin_row(&mut rows);
     let mut targets: Targets = ratios
         .iter()
         .map(|(name, r)| Target {

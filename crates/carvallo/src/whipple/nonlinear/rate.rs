@@ -69,7 +69,7 @@ pub const PITCH: usize = 10;
 
 /// The positions of `phi`, `theta`, `delta`, `phid`, `deltad`, `thetaRd` in a scene's
 /// argument array (`usize::MAX` where the scene does not take the input).
-fn input_slots(params: &[&str], inputs: &[&str]) -> [usize; 6] {
+pub(crate) fn input_slots(params: &[&str], inputs: &[&str]) -> [usize; 6] {
     const NAMES: [&str; 6] = ["phi", "theta", "delta", "phid", "deltad", "thetaRd"];
     std::array::from_fn(|k| {
         inputs.iter().position(|n| *n == NAMES[k]).map_or(usize::MAX, |i| params.len() + i)
@@ -77,7 +77,7 @@ fn input_slots(params: &[&str], inputs: &[&str]) -> [usize; 6] {
 }
 
 /// A scene's argument array with the parameters filled in and the inputs zero.
-fn filled<const N: usize>(params: &WhippleParams, names: &[&str]) -> [f64; N] {
+pub(crate) fn filled<const N: usize>(params: &WhippleParams, names: &[&str]) -> [f64; N] {
     std::array::from_fn(|i| match names.get(i) {
         Some(name) => params.get(name).unwrap_or(f64::NAN),
         None => 0.0,
