@@ -228,6 +228,110 @@ impl Turns {
     }
 }
 
+/// Checks a speed (positive) and a lean (strictly inside ±π/2).
+pub(crate) fn check(speed: f64, lean: f64) -> Result<(), TurnError> {
+    if !speed.is_finite() {
+        return Err(invalid("speed", speed, "must be finite"));
+    }
+    if speed <= 0.0 {
+        return Err(invalid("speed", speed, "must be positive"));
+    }
+    if !lean.is_finite() {
+        return Err(invalid("lean", lean, "must be finite"));
+    }
+    if lean.abs() >= std::f64::consts::FRAC_PI_2 {
+        return Err(invalid("lean", lean, "must lie strictly between -pi/2 and pi/2 rad"));
+    }
+    Ok(())
+}
+
+/// The roots of a turn's equation $F(\delta) = 0$ over $(-\pi, \pi]$, by increasing steer:
+/// `value(steer, guess)` gives $F$ and the other unknowns solved beside it (the pitch, ...: the
+/// guess for the next point), `None` where they cannot be solved; `newton(steer, guess)` gives
+/// $F$, $dF/d\delta$ and those unknowns. A scan of [`SCAN_POINTS`] steers, each unknown
+/// continued from the neighbouring point outward from zero steer, brackets the sign changes;
+/// Newton's method safeguarded by bisection refines each, kept when $|F| \le$ `tolerance`
+/// at its end (a pole leaves $|F|$ large).
+pub(crate) fn steer_roots<G: Copy>(
+    value: &dyn Fn(f64, G) -> Option<(f64, G)>,
+    newton: &dyn Fn(f64, G) -> Option<(f64, f64, G)>,
+    start: G,
+    tolerance: f64,
+) -> Vec<(f64, G)> {
+    let pi = std::f64::consts::PI;
+    let n = SCAN_POINTS;
+    let steer_at = |k: usize| -pi + 2.0 * pi * k as f64 / n as f64;
+    // Values at k = 1..=n (steer in (-pi, pi]), continued outward from zero steer.
+    let mut values: Vec<Option<(f64, G)>> = vec![None; n + 1];
+    let half = n / 2;
+    for range in [(half..=n).collect::<Vec<_>>(), (1..half).rev().collect()] {
+        let mut guess = values[half].map_or(start, |v| v.1);
+        for k in range {
+            values[k] = value(steer_at(k), guess);
+            if let Some((_, g)) = values[k] {
+                guess = g;
+            }
+        }
+    }
+    let mut roots: Vec<(f64, G)> = Vec::new();
+    for k in 1..=n {
+        // The pair (k, k + 1), the last wrapping round to k = 1 at steer + 2 pi.
+        let (next, shift) = if k == n { (1, 2.0 * pi) } else { (k + 1, 0.0) };
+        let (Some((fa, ga)), Some((fb, _))) = (values[k], values[next]) else { continue };
+        if fa == 0.0 {
+            roots.push((steer_at(k), ga));
+        } else if fa * fb < 0.0 {
+            let (a, b) = (steer_at(k), steer_at(next) + shift);
+            if let Some((x, g)) = refine(newton, (a, fa), b, ga, tolerance) {
+                // Normalised to (-pi, pi]; a root at pi itself may land a rounding above.
+                let s = if x > pi + 1e-12 { x - 2.0 * pi } else { x.min(pi) };
+                roots.push((s, g));
+            }
+        }
+    }
+    roots.sort_by(|a, b| a.0.total_cmp(&b.0));
+    roots
+}
+
+/// The root of $F$ in the bracket `[a, b]` ($F(a) = $ `fa`) by Newton's method safeguarded by
+/// bisection; `None` when the bracket holds a pole, not a root.
+fn refine<G: Copy>(
+    newton: &dyn Fn(f64, G) -> Option<(f64, f64, G)>,
+    (mut a, mut fa): (f64, f64),
+    mut b: f64,
+    guess: G,
+    tolerance: f64,
+) -> Option<(f64, G)> {
+    let mut x = 0.5 * (a + b);
+    let mut guess = guess;
+    for _ in 0..200 {
+        let (f, df, g) = newton(x, guess)?;
+        guess = g;
+        if f == 0.0 {
+            break;
+        }
+        if (f < 0.0) == (fa < 0.0) {
+            a = x;
+            fa = f;
+        } else {
+            b = x;
+        }
+        let step_to = x - f / df;
+        let next = if step_to.is_finite() && step_to > a.min(b) && step_to < a.max(b) {
+            step_to
+        } else {
+            0.5 * (a + b)
+        };
+        let step = next - x;
+        x = next;
+        if step.abs() <= 1e-15 * (1.0 + x.abs()) || (b - a).abs() <= 1e-15 * (1.0 + x.abs()) {
+            break;
+        }
+    }
+    let (f, _, g) = newton(x, guess)?;
+    (f.abs() <= tolerance).then_some((x, g))
+}
+
 /// The programs the dual numbers run: the contact constraint, and the dynamics.
 struct Programs {
     contact: Program,
@@ -464,23 +568,6 @@ impl TurnSolver {
         f.is_finite().then_some((f, pitch))
     }
 
-    /// Checks a speed and a lean.
-    fn check(speed: f64, lean: f64) -> Result<(), TurnError> {
-        if !speed.is_finite() {
-            return Err(invalid("speed", speed, "must be finite"));
-        }
-        if speed <= 0.0 {
-            return Err(invalid("speed", speed, "must be positive"));
-        }
-        if !lean.is_finite() {
-            return Err(invalid("lean", lean, "must be finite"));
-        }
-        if lean.abs() >= std::f64::consts::FRAC_PI_2 {
-            return Err(invalid("lean", lean, "must lie strictly between -pi/2 and pi/2 rad"));
-        }
-        Ok(())
-    }
-
     /// Every steady turn at the rear contact's speed `speed` (m/s) and the lean `lean` (rad),
     /// by increasing steer.
     ///
@@ -489,84 +576,18 @@ impl TurnSolver {
     /// strictly inside ±π/2; [`TurnError::Solver`] when a turn is found but its stability
     /// cannot be computed.
     pub fn turns(&self, speed: f64, lean: f64) -> Result<Turns, TurnError> {
-        Self::check(speed, lean)?;
-        let pi = std::f64::consts::PI;
-        let n = SCAN_POINTS;
-        let steer_at = |k: usize| -pi + 2.0 * pi * k as f64 / n as f64;
-        // Values at k = 1..=n (steer in (-pi, pi]), the pitch continued outward from zero steer.
-        let mut values: Vec<Option<(f64, f64)>> = vec![None; n + 1];
-        let half = n / 2;
-        for range in [(half..=n).collect::<Vec<_>>(), (1..half).rev().collect()] {
-            let mut guess = values[half].map_or(0.0, |v| v.1);
-            for k in range {
-                values[k] = self.roll_value(speed, lean, steer_at(k), guess);
-                if let Some((_, p)) = values[k] {
-                    guess = p;
-                }
-            }
-        }
-        let mut roots: Vec<(f64, f64)> = Vec::new();
-        for k in 1..=n {
-            // The pair (k, k + 1), the last wrapping round to k = 1 at steer + 2 pi.
-            let (next, shift) = if k == n { (1, 2.0 * pi) } else { (k + 1, 0.0) };
-            let (Some((fa, pa)), Some((fb, _))) = (values[k], values[next]) else { continue };
-            if fa == 0.0 {
-                roots.push((steer_at(k), pa));
-            } else if fa * fb < 0.0 {
-                let (a, b) = (steer_at(k), steer_at(next) + shift);
-                if let Some(r) = self.refine(speed, lean, (a, fa), (b, fb), pa) {
-                    // Normalised to (-pi, pi]; a root at pi itself may land a rounding above.
-                    let s = if r.0 > pi + 1e-12 { r.0 - 2.0 * pi } else { r.0.min(pi) };
-                    roots.push((s, r.1));
-                }
-            }
-        }
-        roots.sort_by(|a, b| a.0.total_cmp(&b.0));
+        check(speed, lean)?;
+        let roots = steer_roots(
+            &|steer, pitch| self.roll_value(speed, lean, steer, pitch),
+            &|steer, pitch| self.roll_row(speed, lean, steer, pitch).ok(),
+            0.0,
+            ROOT_TOLERANCE * self.scale,
+        );
         let turns = roots
             .into_iter()
             .map(|(steer, pitch)| self.turn_at(speed, lean, steer, pitch))
             .collect::<Result<Vec<_>, _>>()?;
         Ok(Turns { speed, lean, turns })
-    }
-
-    /// The root of $F$ in the bracket `[a, b]` by Newton's method safeguarded by bisection;
-    /// `None` when the bracket holds a pole, not a root.
-    fn refine(
-        &self,
-        speed: f64,
-        lean: f64,
-        (mut a, mut fa): (f64, f64),
-        (mut b, _): (f64, f64),
-        pitch: f64,
-    ) -> Option<(f64, f64)> {
-        let mut x = 0.5 * (a + b);
-        let mut guess = pitch;
-        for _ in 0..200 {
-            let (f, df, p) = self.roll_row(speed, lean, x, guess).ok()?;
-            guess = p;
-            if f == 0.0 {
-                break;
-            }
-            if (f < 0.0) == (fa < 0.0) {
-                a = x;
-                fa = f;
-            } else {
-                b = x;
-            }
-            let newton = x - f / df;
-            let next = if newton.is_finite() && newton > a.min(b) && newton < a.max(b) {
-                newton
-            } else {
-                0.5 * (a + b)
-            };
-            let step = next - x;
-            x = next;
-            if step.abs() <= 1e-15 * (1.0 + x.abs()) || (b - a).abs() <= 1e-15 * (1.0 + x.abs()) {
-                break;
-            }
-        }
-        let (f, _, p) = self.roll_row(speed, lean, x, guess).ok()?;
-        (f.abs() <= ROOT_TOLERANCE * self.scale).then_some((x, p))
     }
 
     /// The turn at a root `(steer, pitch)` with everything measured.
