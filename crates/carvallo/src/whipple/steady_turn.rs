@@ -80,6 +80,8 @@ use super::nonlinear::{Configuration, NonlinearError, WhippleNonlinear};
 use super::WhippleParams;
 use crate::error::ParameterError;
 
+pub mod lean_rider;
+
 /// The number of steer angles of the bracketing scan over $(-\pi, \pi]$ (a half degree apart).
 pub const SCAN_POINTS: usize = 720;
 
@@ -161,11 +163,12 @@ impl ContactForces {
     }
 }
 
-/// The stability of a turn with the steer torque held constant.
+/// The stability of a turn with the steer torque held constant: `N` eigenvalues decide (four
+/// for the bicycle, six for the leaning rider).
 #[derive(Clone, Copy, Debug, PartialEq)]
-pub struct Stability {
-    /// The four eigenvalues that decide (1/s), by decreasing real part.
-    pub eigenvalues: [Complex<f64>; 4],
+pub struct Stability<const N: usize = 4> {
+    /// The eigenvalues that decide (1/s), by decreasing real part.
+    pub eigenvalues: [Complex<f64>; N],
     /// The eigenvalue set aside: the family of turns at the same steer torque (zero to
     /// rounding).
     pub family: Complex<f64>,

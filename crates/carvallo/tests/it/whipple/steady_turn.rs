@@ -266,3 +266,107 @@ fn a_lean_no_steer_can_hold_is_a_result_without_turns() {
     assert!(t.turns.is_empty(), "{:?}", t.turns);
     assert_eq!(t.status(), "no steady turn");
 }
+
+/// The leaning rider's turns ([`carvallo::whipple::steady_turn::lean_rider`]): upright
+/// running has the six eigenvalues of [`LeanRider::eigenvalues`] (the upright linearisation
+/// of the same program, the pitch held); a stiff torso joint tends to the bicycle with the torso
+/// locked ([`LeanRider::locked`], the benchmark's 26 parameters, solved by the bicycle's route)
+/// as $1/k_9$; the unstable torso departs at its eigenvalue in a simulation.
+mod rider {
+    use carvallo::numerics::integrate::{Grid, Integration};
+    use carvallo::whipple::lean_rider::{Joint, LeanRider, LeanRiderParams, Limits, PITCH};
+    use carvallo::whipple::steady_turn::lean_rider::{RiderTurn, RiderTurnSolver};
+    use carvallo::whipple::steady_turn::TurnSolver;
+    use std::sync::atomic::AtomicBool;
+
+    fn browser_jason() -> LeanRider {
+        LeanRider::new(LeanRiderParams::browser_jason()).expect("the rider")
+    }
+
+    fn forward(s: &RiderTurnSolver<'_>, speed: f64, lean: f64) -> RiderTurn {
+        let near: Vec<_> =
+            s.turns(speed, lean).expect("turns").turns.into_iter().filter(|t| t.steer.abs() < 0.5).collect();
+        assert_eq!(near.len(), 1, "{near:?}");
+        near[0]
+    }
+
+    #[test]
+    fn upright_running_has_the_riders_eigenvalues() {
+        let r = browser_jason();
+        let s = RiderTurnSolver::new(&r);
+        for speed in [2.0, 5.0, 8.0] {
+            let t = forward(&s, speed, 0.0);
+            assert_eq!((t.steer, t.torso_lean), (0.0, 0.0));
+            for (a, b) in t.stability.eigenvalues.iter().zip(r.eigenvalues(speed)) {
+                assert!((a - b).norm() <= 1e-10 * b.norm().max(1.0), "{speed} m/s: {a} vs {b}");
+            }
+        }
+    }
+
+    #[test]
+    fn a_stiff_torso_tends_to_the_locked_bicycle() {
+        let mut errors = Vec::new();
+        for k9 in [1e4, 1e5, 1e6] {
+            let p = LeanRiderParams::browser_jason().with("k9", k9).expect("k9");
+            let r = LeanRider::new(p).expect("the rider");
+            let t = forward(&RiderTurnSolver::new(&r), 5.0, 0.05);
+            let (locked, _) = r.locked().expect("the locked bicycle");
+            let b = TurnSolver::new(&locked).expect("wheels");
+            let near: Vec<_> =
+                b.turns(5.0, 0.05).expect("turns").turns.into_iter().filter(|t| t.steer.abs() < 0.5).collect();
+            let b = near[0];
+            errors.push([
+                ((t.steer - b.steer) / b.steer).abs(),
+                ((t.steer_torque - b.steer_torque) / b.steer_torque).abs(),
+                ((t.yaw_rate - b.yaw_rate) / b.yaw_rate).abs(),
+            ]);
+            assert!(t.torso_lean.abs() <= 1e-2 / k9, "{k9}: torso {}", t.torso_lean);
+        }
+        for w in errors.windows(2) {
+            for k in 0..3 {
+                let ratio = w[0][k] / w[1][k];
+                assert!((ratio - 10.0).abs() <= 1.0, "{errors:?}");
+            }
+        }
+        // Relative: 1.6e-8 (steer), 1.6e-7 (torque), 1.6e-8 (yaw rate) at k9 = 1e6 N m/rad.
+        assert!(errors[2].iter().all(|e| *e <= 1e-6), "{errors:?}");
+    }
+
+    #[test]
+    fn the_rows_vanish_and_the_torso_departs_at_its_eigenvalue() {
+        let r = browser_jason();
+        let s = RiderTurnSolver::new(&r);
+        let t = forward(&s, 5.0, 0.05);
+        for row in [t.roll_residual, t.torso_residual, t.rear_row_residual] {
+            assert!(row.abs() <= 1e-9, "{t:?}");
+        }
+        // The passive torso (k9 = 0) is an inverted pendulum: the largest eigenvalue, real.
+        let lambda = t.stability.eigenvalues[0];
+        assert!(lambda.re > 7.0 && lambda.im == 0.0, "{lambda}");
+        let mut x0 = [0.0; 13];
+        x0[3] = t.lean;
+        x0[5] = t.steer;
+        x0[7] = t.torso_lean + 1e-10;
+        x0[9] = t.rear_wheel_rate;
+        x0[PITCH] = t.pitch;
+        let torque = t.steer_torque;
+        let grid = Grid::new(2.0, 1e-4, 100).expect("grid");
+        let run = r
+            .simulate(
+                x0,
+                &move |_| [0.0, 0.0, torque, 0.0],
+                Joint::Free,
+                &grid,
+                &Integration::RK4,
+                Limits::DEFAULT,
+                &AtomicBool::new(false),
+            )
+            .expect("the run");
+        let rate_at = |time: f64| {
+            let k = run.times.iter().position(|x| (x - time).abs() < 1e-9).expect("a sample");
+            run.states[k][11]
+        };
+        let measured = (rate_at(2.0) / rate_at(1.0)).ln();
+        assert!((measured - lambda.re).abs() <= 1e-3 * lambda.re, "{measured} vs {lambda}");
+    }
+}
