@@ -3,7 +3,8 @@
 //! turns (the CLI adds nothing), upright running of a BicycleParameters file with a rider
 //! against `carvallo eig` of the same files (the linearised model, another derivation), a lean
 //! no steer holds as a result with exit code 0, `--steer` selecting the nearest turn, and bad
-//! input as an error naming the value with exit code 2.
+//! input as an error naming the value with exit code 2. `--model lean-rider`: the library's
+//! turns of Moore's leaning rider, and upright running with `carvallo eig`'s six eigenvalues.
 
 use std::process::Command;
 
@@ -139,5 +140,34 @@ fn bad_input_exits_2_naming_the_value() {
         let (code, out, err) = carvallo(&all);
         assert_eq!((code, out.as_str()), (2, ""), "{all:?}");
         assert!(err.starts_with(&format!("error: {message}")), "{all:?}: {err}");
+    }
+}
+
+#[test]
+fn the_leaning_rider_turns_as_the_library_and_has_eig_upright() {
+    use carvallo::whipple::lean_rider::{LeanRider, LeanRiderParams};
+    use carvallo::whipple::steady_turn::lean_rider::RiderTurnSolver;
+    let v = json(&["turn", "--model", "lean-rider", "--speed", "5", "--lean", "0.05", "--json"]);
+    let rider = LeanRider::new(LeanRiderParams::browser_jason()).unwrap();
+    let lib = RiderTurnSolver::new(&rider).turns(5.0, 0.05).unwrap();
+    let turns = v["turns"].as_array().unwrap();
+    assert_eq!(turns.len(), lib.turns.len());
+    for (j, t) in turns.iter().zip(&lib.turns) {
+        same(&j["steer"], t.steer);
+        same(&j["torso_lean"], t.torso_lean);
+        same(&j["steer_torque"], t.steer_torque);
+        same(&j["eigenvalues"][0]["re"], t.stability.eigenvalues[0].re);
+    }
+    let up = json(&[
+        "turn", "--model", "lean-rider", "--speed", "5", "--lean", "0", "--steer", "0", "--json",
+    ]);
+    let eig = json(&["eig", "--model", "lean-rider", "--speed", "5", "--json"]);
+    let ours = up["turns"][0]["eigenvalues"].as_array().unwrap().clone();
+    let theirs = eig["eigenvalues"].as_array().unwrap().clone();
+    assert_eq!((ours.len(), theirs.len()), (6, 6));
+    for (a, b) in ours.iter().zip(&theirs) {
+        let (x, y) = (a["re"].as_f64().unwrap(), b["re"].as_f64().unwrap());
+        let (p, q) = (a["im"].as_f64().unwrap(), b["im"].as_f64().unwrap());
+        assert!((x - y).abs() <= 1e-9 * y.abs().max(1.0) && (p - q).abs() <= 1e-9 * q.abs().max(1.0), "{a} {b}");
     }
 }

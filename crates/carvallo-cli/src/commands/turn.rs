@@ -16,6 +16,10 @@
 //! nearest. The JSON is `{model, rider, speed, lean, status, turns: [...]}`, `status` `turns`
 //! or `no steady turn`.
 //!
+//! `--model lean-rider|FILE` (Moore's leaning rider) gives the same with the torso's lean on its
+//! joint as one more unknown ([`carvallo::whipple::steady_turn::lean_rider`]; no contact
+//! forces), the lean being the roll $q_4$.
+//!
 //! Unknown, repeated or missing arguments, non-finite numbers, an out-of-range γ or lean, a
 //! negative speed (and a zero one for the nonlinear models), and a turn of Carvallo's bicycle
 //! that does not exist are errors naming the value, exit code 2. A speed and lean that no steer
@@ -23,6 +27,8 @@
 
 use carvallo::bicycle_straight::Constants;
 use carvallo::bicycle_turn::{Hold, LockedSteer, MAX_GAMMA};
+use carvallo::whipple::lean_rider::LeanRider;
+use carvallo::whipple::steady_turn::lean_rider::RiderTurnSolver;
 use carvallo::whipple::steady_turn::{SteadyTurn, TurnError, TurnSolver, Turns};
 use serde_json::{json, Value};
 
@@ -31,9 +37,10 @@ use crate::args::{finite, DataOptions};
 /// `carvallo turn`: steady turns with the handlebar held.
 #[derive(Clone, Debug, PartialEq, clap::Args)]
 pub struct Args {
-    /// The bicycle: `carvallo` (Carvallo's, the constants of n° 117, with --gamma), or the
-    /// nonlinear Carvallo–Whipple bicycle `benchmark` or a parameter file (the anchors' TOML or
-    /// BicycleParameters' text), with --lean
+    /// The bicycle: `carvallo` (Carvallo's, the constants of n° 117, with --gamma); or, with
+    /// --lean, the nonlinear Carvallo–Whipple bicycle `benchmark` or a parameter file (the
+    /// anchors' TOML or BicycleParameters' text), or Moore's leaning rider `lean-rider` (Browser
+    /// + Jason) or a file in Moore's names
     #[arg(long, value_name = "MODEL")]
     pub model: String,
     #[command(flatten)]
@@ -89,6 +96,9 @@ pub fn run(c: &Args) -> Result<String, String> {
         ));
     }
     let lean = c.lean.ok_or(format!("--model {} needs --lean <RAD>", c.model))?;
+    if let Some(rider) = crate::args::lean_rider(&c.model, &c.data)? {
+        return rider_turns(c, &rider, lean);
+    }
     let params = crate::args::bicycle(&c.model, &c.data)?;
     let failed = |e: TurnError| match e {
         TurnError::Parameter(p) => p.to_string(),
@@ -117,14 +127,104 @@ pub fn run(c: &Args) -> Result<String, String> {
 
 /// Keeps the turn whose steer is nearest `steer` (angles compared on the circle).
 fn keep_nearest(turns: &mut Turns, steer: f64) {
+    if let Some(best) = nearest(&turns.turns, steer, |t| t.steer) {
+        turns.turns = vec![best];
+    }
+}
+
+/// The item whose steer (`of`) is nearest `steer` on the circle.
+fn nearest<T: Copy>(items: &[T], steer: f64, of: impl Fn(&T) -> f64) -> Option<T> {
     let gap = |a: f64| {
         let d = (a - steer).rem_euclid(std::f64::consts::TAU);
         d.min(std::f64::consts::TAU - d)
     };
-    if let Some(best) = turns.turns.iter().copied().min_by(|a, b| gap(a.steer).total_cmp(&gap(b.steer)))
-    {
-        turns.turns = vec![best];
+    items.iter().copied().min_by(|a, b| gap(of(a)).total_cmp(&gap(of(b))))
+}
+
+/// The steady turns of the leaning rider `rider` ([`carvallo::whipple::steady_turn::lean_rider`]):
+/// the torso's lean beside the steer, no contact forces (see the module).
+fn rider_turns(c: &Args, rider: &LeanRider, lean: f64) -> Result<String, String> {
+    let solver = RiderTurnSolver::new(rider);
+    let mut turns = solver.turns(c.speed, lean).map_err(|e| e.to_string())?;
+    if let Some(steer) = c.steer {
+        if let Some(best) = nearest(&turns.turns, steer, |t| t.steer) {
+            turns.turns = vec![best];
+        }
     }
+    let ev = |e: &[nalgebra::Complex<f64>]| {
+        e.iter().map(|z| json!({ "re": z.re, "im": z.im })).collect::<Vec<_>>()
+    };
+    if c.json {
+        let list: Vec<Value> = turns
+            .turns
+            .iter()
+            .map(|t| {
+                json!({
+                    "steer": t.steer,
+                    "torso_lean": t.torso_lean,
+                    "pitch": t.pitch,
+                    "yaw_rate": t.yaw_rate,
+                    "radius": number(t.radius),
+                    "steer_torque": t.steer_torque,
+                    "rear_wheel_rate": t.rear_wheel_rate,
+                    "stable": t.stability.stable,
+                    "eigenvalues": ev(&t.stability.eigenvalues),
+                    "family_eigenvalue": ev(&[t.stability.family])[0],
+                    "residuals": {
+                        "roll_row": t.roll_residual,
+                        "lean_row": t.torso_residual,
+                        "rear_wheel_row": t.rear_row_residual,
+                    },
+                })
+            })
+            .collect();
+        let out = json!({
+            "model": c.model,
+            "rider": Value::Null,
+            "speed": c.speed,
+            "lean": lean,
+            "steer": c.steer,
+            "status": turns.status(),
+            "turns": list,
+        });
+        return serde_json::to_string_pretty(&out).map_err(|e| e.to_string());
+    }
+    let n = turns.turns.len();
+    let mut s = format!(
+        "model {} (the leaning rider), speed {} m/s, roll {} rad: {}\n",
+        c.model,
+        c.speed,
+        lean,
+        match n {
+            0 => "no steady turn (no steer holds this roll at this speed)".to_string(),
+            1 => "1 steady turn".to_string(),
+            _ => format!("{n} steady turns"),
+        }
+    );
+    for t in &turns.turns {
+        let radius = if t.radius.is_finite() {
+            format!("{:.6} m", t.radius)
+        } else {
+            "infinite (straight)".to_string()
+        };
+        s.push_str(&format!(
+            "steer {:.6} rad: torso lean {:.6} rad, pitch {:.6} rad, yaw rate {:.6} rad/s, \
+             radius {radius}, steer torque {:.6} N m\n",
+            t.steer,
+            t.torso_lean + 0.0,
+            t.pitch,
+            t.yaw_rate + 0.0,
+            t.steer_torque + 0.0
+        ));
+        let e: Vec<String> =
+            t.stability.eigenvalues.iter().map(|e| format!("{:.6} {:+.6}i", e.re, e.im)).collect();
+        s.push_str(&format!(
+            "  eigenvalues, steer torque held: {}: {}\n",
+            e.join(", "),
+            if t.stability.stable { "stable" } else { "unstable" }
+        ));
+    }
+    Ok(s)
 }
 
 /// A number for JSON: `null` when not finite (the radius of straight running).
