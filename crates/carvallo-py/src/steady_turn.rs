@@ -2,8 +2,9 @@
 //! n° 79–106): `steady_turn(params, speed, lean, steer=None)` returns every turn at the rear
 //! contact's speed and the lean as a list of dicts, the runtime's
 //! `carvallo::whipple::steady_turn` doing the work (the same numbers as `carvallo turn
-//! --model benchmark|FILE --json`).
+//! --model benchmark|FILE --json`), and those of the leaning rider for its params.
 
+use carvallo::whipple::steady_turn::lean_rider::{RiderTurn, RiderTurnSolver};
 use carvallo::whipple::steady_turn::{SteadyTurn, TurnError, TurnSolver};
 use numpy::Complex64;
 use pyo3::prelude::*;
@@ -42,10 +43,44 @@ fn turn_dict<'py>(py: Python<'py>, t: &SteadyTurn) -> PyResult<Bound<'py, PyDict
     Ok(d)
 }
 
+/// One turn of the leaning rider as a dict: as the bicycle's without the forces, with
+/// `torso_lean` and the lean joint's residual `lean_row`; six `eigenvalues`.
+fn rider_dict<'py>(py: Python<'py>, t: &RiderTurn) -> PyResult<Bound<'py, PyDict>> {
+    let d = PyDict::new(py);
+    d.set_item("speed", t.speed)?;
+    d.set_item("lean", t.lean)?;
+    d.set_item("steer", t.steer)?;
+    d.set_item("torso_lean", t.torso_lean)?;
+    d.set_item("pitch", t.pitch)?;
+    d.set_item("yaw_rate", t.yaw_rate)?;
+    d.set_item("radius", t.radius)?;
+    d.set_item("steer_torque", t.steer_torque)?;
+    d.set_item("rear_wheel_rate", t.rear_wheel_rate)?;
+    d.set_item("stable", t.stability.stable)?;
+    let c = |z: &Complex64| PyComplex::from_doubles(py, z.re, z.im);
+    d.set_item("eigenvalues", PyList::new(py, t.stability.eigenvalues.iter().map(c))?)?;
+    d.set_item("family_eigenvalue", c(&t.stability.family))?;
+    d.set_item("roll_row", t.roll_residual)?;
+    d.set_item("lean_row", t.torso_residual)?;
+    d.set_item("rear_wheel_row", t.rear_row_residual)?;
+    Ok(d)
+}
+
+/// The item whose steer (`of`) is nearest `steer` on the circle.
+fn nearest<T: Copy>(items: &[T], steer: f64, of: impl Fn(&T) -> f64) -> Option<T> {
+    let gap = |a: f64| {
+        let d = (a - steer).rem_euclid(std::f64::consts::TAU);
+        d.min(std::f64::consts::TAU - d)
+    };
+    items.iter().copied().min_by(|a, b| gap(of(a)).total_cmp(&gap(of(b))))
+}
+
 /// Every steady turn of the bicycle `params` at the rear contact's `speed` (m/s, positive) and
 /// the `lean` (rad, positive to the right, within ±π/2), by increasing steer; with `steer`
 /// (rad), only the turn whose steer is nearest (on the circle). An empty list when no steer
-/// holds that lean at that speed. See `carvallo turn --model benchmark --lean RAD`.
+/// holds that lean at that speed. See `carvallo turn --model benchmark --lean RAD`. For the
+/// leaning rider's params (`lean_rider()`), its turns with the torso's lean (`torso_lean`) on
+/// its joint, six eigenvalues and no forces.
 #[pyfunction]
 #[pyo3(signature = (params, speed, lean, steer = None, strict = false))]
 fn steady_turn<'py>(
@@ -56,32 +91,29 @@ fn steady_turn<'py>(
     #[pyo3(from_py_with = arg::steer)] steer: Option<f64>,
     strict: bool,
 ) -> PyResult<Bound<'py, PyList>> {
-    if crate::lean_rider::rider_of(params)?.is_some() {
-        return Err(err(
-            "steady_turn takes a bicycle's parameters; the leaning rider's steady turns are not \
-             computed yet",
-        ));
-    }
     if let Some(s) = steer {
         if !s.is_finite() {
             return Err(err(format!("invalid steer {s:?}: must be finite")));
         }
     }
+    if let Some(rider) = crate::lean_rider::rider_of(params)? {
+        let solver = RiderTurnSolver::new(&rider);
+        let turns = py.detach(|| solver.turns(speed, lean)).map_err(|e| err(e.to_string()))?;
+        let list = match steer {
+            Some(s) => nearest(&turns.turns, s, |t| t.steer).into_iter().collect(),
+            None => turns.turns,
+        };
+        let dicts = list.iter().map(|t| rider_dict(py, t)).collect::<PyResult<Vec<_>>>()?;
+        return PyList::new(py, dicts);
+    }
     let params = params_of(params, strict)?;
     let failed = |e: TurnError| err(e.to_string());
     let solver = TurnSolver::new(&params).map_err(failed)?;
     let turns = py.detach(|| solver.turns(speed, lean)).map_err(failed)?;
-    let mut list = turns.turns;
-    if let Some(s) = steer {
-        let gap = |a: f64| {
-            let d = (a - s).rem_euclid(std::f64::consts::TAU);
-            d.min(std::f64::consts::TAU - d)
-        };
-        if let Some(best) = list.iter().copied().min_by(|a, b| gap(a.steer).total_cmp(&gap(b.steer)))
-        {
-            list = vec![best];
-        }
-    }
+    let list = match steer {
+        Some(s) => nearest(&turns.turns, s, |t| t.steer).into_iter().collect(),
+        None => turns.turns,
+    };
     let dicts = list.iter().map(|t| turn_dict(py, t)).collect::<PyResult<Vec<_>>>()?;
     PyList::new(py, dicts)
 }

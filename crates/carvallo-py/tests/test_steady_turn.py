@@ -1,4 +1,5 @@
-"""`carvallo.steady_turn`: the steady turns of the nonlinear Carvallo–Whipple bicycle, checked
+"""`carvallo.steady_turn`: the steady turns of the nonlinear Carvallo–Whipple bicycle (and of the
+leaning rider: upright, `carvallo.eigenvalues` of its linearisation), checked
 by routes that do not use it: numpy's solution of the linear static equations
 (g K0 + v^2 K2)[phi, delta] = [0, T] from `carvallo.matrices` (the linearised model, another
 derivation) as the lean goes to zero, with the error falling as lean^2; `carvallo.eigenvalues`
@@ -94,3 +95,18 @@ def test_steer_keeps_the_nearest_and_a_lean_without_turns_is_empty():
 def test_bad_input_names_the_value(kwargs, message):
     with pytest.raises(carvallo.ParameterError, match="^" + message.replace(".", r"\.")):
         carvallo.steady_turn(B, **kwargs)
+
+
+def test_the_leaning_rider_upright_has_its_eigenvalues_and_a_turn_its_torso_lean():
+    rider = carvallo.lean_rider()
+    straight = carvallo.steady_turn(rider, 5.0, lean=0.0, steer=0.0)
+    assert len(straight) == 1 and straight[0]["torso_lean"] == 0.0
+    got = sorted(straight[0]["eigenvalues"], key=lambda z: (z.real, z.imag))
+    want = sorted(carvallo.eigenvalues(rider, [5.0])[0], key=lambda z: (z.real, z.imag))
+    assert len(got) == 6
+    for g, w in zip(got, want):
+        assert abs(g - w) <= 1e-9 * max(1.0, abs(w)), (got, want)
+    turn = carvallo.steady_turn(rider, 5.0, lean=0.05, steer=0.0)[0]
+    # The passive torso (k9 = 0) leans a little into the turn's field; its row vanishes.
+    assert abs(turn["torso_lean"]) < 1e-3 and abs(turn["lean_row"]) <= 1e-9
+    assert not turn["stable"] and "normal_force" not in turn
