@@ -80,6 +80,7 @@ use super::nonlinear::{Configuration, NonlinearError, WhippleNonlinear};
 use super::WhippleParams;
 use crate::error::ParameterError;
 
+pub mod hands_free;
 pub mod lean_rider;
 
 /// The number of steer angles of the bracketing scan over $(-\pi, \pi]$ (a half degree apart).

@@ -370,3 +370,83 @@ mod rider {
         assert!((measured - lambda.re).abs() <= 1e-3 * lambda.re, "{measured} vs {lambda}");
     }
 }
+
+/// Hands-free turns ([`carvallo::whipple::steady_turn::hands_free`]): the one branch point on
+/// upright straight running is the linear model's capsize speed; the reversed line's branch
+/// point is where a real eigenvalue of reversed upright running crosses zero; the points of the
+/// continued families are hands-free turns when solved again at their speed and lean by the
+/// steady-turn route (torque zero, the same steer and stability).
+mod hands_free {
+    use carvallo::whipple::steady_turn::hands_free::{End, HandsFree, Special};
+    use carvallo::whipple::steady_turn::TurnSolver;
+    use carvallo::whipple::{Whipple, WhippleParams};
+    use std::f64::consts::PI;
+
+    #[test]
+    fn the_forward_branch_point_is_the_capsize_speed() {
+        let p = WhippleParams::benchmark();
+        let s = TurnSolver::new(&p).expect("wheels");
+        let hf = HandsFree::new(&s);
+        let capsize = Whipple::new(p).stability_window().capsize_speed.expect("a capsize speed");
+        let found = hf.branch_speeds(0.0, 20.0);
+        assert_eq!(found.len(), 1, "{found:?}");
+        assert!((found[0] - capsize).abs() <= 1e-9 * capsize, "{} vs {capsize}", found[0]);
+    }
+
+    #[test]
+    fn the_reversed_branch_point_is_where_reversed_running_loses_an_eigenvalue() {
+        let s = TurnSolver::new(&WhippleParams::benchmark()).expect("wheels");
+        let hf = HandsFree::new(&s);
+        let found = hf.branch_speeds(PI, 20.0);
+        assert_eq!(found.len(), 1, "{found:?}");
+        let vb = found[0];
+        // Reversed upright running just below and just above: the real eigenvalue nearest zero
+        // changes sign (the determinant of the stiffness is the product of the eigenvalues
+        // times the mass matrix's determinant).
+        let nearest_real = |v: f64| {
+            let t = s.turns(v, 0.0).expect("turns");
+            let r = t.turns.iter().find(|t| (t.steer - PI).abs() < 1e-9).expect("reversed running");
+            r.stability
+                .eigenvalues
+                .iter()
+                .filter(|e| e.im == 0.0)
+                .map(|e| e.re)
+                .min_by(|a, b| a.abs().total_cmp(&b.abs()))
+                .expect("a real eigenvalue")
+        };
+        let (below, above) = (nearest_real(vb - 1e-3), nearest_real(vb + 1e-3));
+        assert!(below * above < 0.0 && below.abs() < 1e-2 && above.abs() < 1e-2, "{below} {above}");
+    }
+
+    #[test]
+    fn family_points_are_hands_free_turns() {
+        let s = TurnSolver::new(&WhippleParams::benchmark()).expect("wheels");
+        let hf = HandsFree::new(&s);
+        for line in [0.0, PI] {
+            let vb = hf.branch_speeds(line, 20.0)[0];
+            let f = hf.family(line, vb).expect("the family");
+            assert!(f.points.len() > 100 && f.end != End::Stuck, "{:?} {}", f.end, f.points.len());
+            for p in f.points.iter().skip(1).step_by(25) {
+                let turns = s.turns(p.speed, p.lean).expect("turns").turns;
+                let t = turns
+                    .iter()
+                    .find(|t| (t.steer - p.steer).abs() < 1e-6)
+                    .unwrap_or_else(|| panic!("{p:?} among {turns:?}"));
+                assert!(t.steer_torque.abs() <= 1e-8, "{p:?}: torque {}", t.steer_torque);
+                assert_eq!(t.stability.stable, p.stable, "{p:?}");
+            }
+            // The forward family: unstable everywhere, the lean turning back once; the reversed
+            // one: a stable section between two changes of stability.
+            let changes = f.special.iter().filter(|s| matches!(s, Special::StabilityChange(_))).count();
+            if line == 0.0 {
+                assert!(f.points.iter().skip(1).all(|p| !p.stable));
+                assert_eq!(changes, 0);
+            } else {
+                assert_eq!(changes, 2, "{:?}", f.special);
+                let stable: Vec<_> = f.points.iter().filter(|p| p.stable).collect();
+                let (lo, hi) = (stable[0].speed, stable[stable.len() - 1].speed);
+                assert!(lo > 4.5 && hi < 6.2 && hi - lo > 1.0, "stable from {lo} to {hi} m/s");
+            }
+        }
+    }
+}
