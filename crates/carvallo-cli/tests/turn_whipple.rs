@@ -5,6 +5,8 @@
 //! no steer holds as a result with exit code 0, `--steer` selecting the nearest turn, and bad
 //! input as an error naming the value with exit code 2. `--model lean-rider`: the library's
 //! turns of Moore's leaning rider, and upright running with `carvallo eig`'s six eigenvalues.
+//! `--hands-free`: the forward family branches from upright running at `carvallo window`'s
+//! capsize speed (the linearised model), for the benchmark and a file with a rider.
 
 use std::process::Command;
 
@@ -170,4 +172,30 @@ fn the_leaning_rider_turns_as_the_library_and_has_eig_upright() {
         let (p, q) = (a["im"].as_f64().unwrap(), b["im"].as_f64().unwrap());
         assert!((x - y).abs() <= 1e-9 * y.abs().max(1.0) && (p - q).abs() <= 1e-9 * q.abs().max(1.0), "{a} {b}");
     }
+}
+
+#[test]
+fn hands_free_families_branch_at_the_capsize_speed() {
+    let data = concat!(env!("CARGO_MANIFEST_DIR"), "/../../data/bicycleparameters");
+    let bike = format!("{data}/bicycles/Browser/Parameters/BrowserBenchmark.txt");
+    let rider = format!("{data}/riders/Jason/Parameters/JasonBrowserBenchmark.txt");
+    for model in [vec!["--model", "benchmark"], vec!["--model", &bike, "--rider", &rider]] {
+        let mut args = vec!["turn", "--hands-free", "--json"];
+        args.extend(&model);
+        let v = json(&args);
+        let mut args = vec!["window", "--json"];
+        args.extend(&model);
+        let w = json(&args);
+        let capsize = w["capsize_speed"].as_f64().unwrap();
+        let families = v["families"].as_array().unwrap();
+        let forward: Vec<_> = families.iter().filter(|f| f["line_steer"] == 0.0).collect();
+        assert_eq!(forward.len(), 1, "{model:?}");
+        let vb = forward[0]["branch_speed"].as_f64().unwrap();
+        assert!((vb - capsize).abs() <= 1e-9 * capsize, "{model:?}: {vb} vs {capsize}");
+        let points = forward[0]["points"].as_array().unwrap();
+        assert!(points.len() > 100 && points.iter().skip(1).all(|p| p["lean"].as_f64().unwrap() > 0.0));
+    }
+    let (code, _, err) = carvallo(&["turn", "--model", "lean-rider", "--hands-free"]);
+    assert_eq!(code, 2);
+    assert!(err.starts_with("error: --hands-free takes a bicycle"), "{err}");
 }

@@ -20,6 +20,11 @@
 //! joint as one more unknown ([`carvallo::whipple::steady_turn::lean_rider`]; no contact
 //! forces), the lean being the roll $q_4$.
 //!
+//! `--model benchmark|FILE --hands-free [--json]`: the hands-free turns (no steer torque) as
+//! families in speed and lean from their branch points on upright running, straight ahead
+//! (at the capsize speed) and with the handlebar reversed, with their folds and stable points
+//! ([`carvallo::whipple::steady_turn::hands_free`]); the JSON has every point.
+//!
 //! Unknown, repeated or missing arguments, non-finite numbers, an out-of-range γ or lean, a
 //! negative speed (and a zero one for the nonlinear models), and a turn of Carvallo's bicycle
 //! that does not exist are errors naming the value, exit code 2. A speed and lean that no steer
@@ -28,6 +33,7 @@
 use carvallo::bicycle_straight::Constants;
 use carvallo::bicycle_turn::{Hold, LockedSteer, MAX_GAMMA};
 use carvallo::whipple::lean_rider::LeanRider;
+use carvallo::whipple::steady_turn::hands_free::{self, CurvePoint, End, Family, HandsFree, Special};
 use carvallo::whipple::steady_turn::lean_rider::RiderTurnSolver;
 use carvallo::whipple::steady_turn::{SteadyTurn, TurnError, TurnSolver, Turns};
 use serde_json::{json, Value};
@@ -50,14 +56,20 @@ pub struct Args {
     #[arg(long = "gamma", value_name = "DEG", value_parser = gamma, allow_hyphen_values = true)]
     pub gamma_deg: Option<f64>,
     /// The rear contact's speed (Carvallo's rolling speed Rs) [m/s]
-    #[arg(long, value_name = "V", value_parser = crate::args::SPEED.parser(), allow_hyphen_values = true)]
-    pub speed: f64,
+    #[arg(long, value_name = "V", value_parser = crate::args::SPEED.parser(), allow_hyphen_values = true,
+          required_unless_present = "hands_free")]
+    pub speed: Option<f64>,
     /// With a nonlinear model: the lean φ [rad], positive to the right, strictly within ±π/2
     #[arg(long, value_name = "RAD", value_parser = finite, allow_hyphen_values = true)]
     pub lean: Option<f64>,
     /// With a nonlinear model: keep only the turn whose steer is nearest RAD
     #[arg(long, value_name = "RAD", value_parser = finite, allow_hyphen_values = true)]
     pub steer: Option<f64>,
+    /// With a bicycle (benchmark or a parameter file): the hands-free turns (no steer torque) as
+    /// families in speed and lean, followed from their branch points on upright running
+    /// (straight and with the handlebar reversed), with folds and stable sections
+    #[arg(long, conflicts_with_all = ["speed", "lean", "steer", "gamma_deg"])]
+    pub hands_free: bool,
     /// Print JSON instead of text
     #[arg(long)]
     pub json: bool,
@@ -78,6 +90,11 @@ pub const SOLVER_FAILURE: &str = "the steady turn solver failed";
 
 /// Runs `carvallo turn`: the text to print, or an error naming the bad value.
 pub fn run(c: &Args) -> Result<String, String> {
+    if c.hands_free {
+        return hands_free(c);
+    }
+    // clap requires the speed unless --hands-free.
+    let speed = c.speed.ok_or("--speed <V> is required".to_string())?;
     if c.model == "carvallo" {
         if c.lean.is_some() || c.steer.is_some() || c.data.any() {
             return Err("--model carvallo takes --gamma and --speed; --lean, --steer, --rider and \
@@ -87,7 +104,7 @@ pub fn run(c: &Args) -> Result<String, String> {
         let gamma = c
             .gamma_deg
             .ok_or("--model carvallo needs --gamma <DEG>, the handlebar angle".to_string())?;
-        return carvallo_turn(gamma, c.speed, c.json);
+        return carvallo_turn(gamma, speed, c.json);
     }
     if c.gamma_deg.is_some() {
         return Err(format!(
@@ -97,7 +114,7 @@ pub fn run(c: &Args) -> Result<String, String> {
     }
     let lean = c.lean.ok_or(format!("--model {} needs --lean <RAD>", c.model))?;
     if let Some(rider) = crate::args::lean_rider(&c.model, &c.data)? {
-        return rider_turns(c, &rider, lean);
+        return rider_turns(c, &rider, speed, lean);
     }
     let params = crate::args::bicycle(&c.model, &c.data)?;
     let failed = |e: TurnError| match e {
@@ -105,7 +122,7 @@ pub fn run(c: &Args) -> Result<String, String> {
         e @ TurnError::Solver { .. } => e.to_string(),
     };
     let solver = TurnSolver::new(&params).map_err(failed)?;
-    let mut turns = solver.turns(c.speed, lean).map_err(failed)?;
+    let mut turns = solver.turns(speed, lean).map_err(failed)?;
     if let Some(steer) = c.steer {
         keep_nearest(&mut turns, steer);
     }
@@ -114,7 +131,7 @@ pub fn run(c: &Args) -> Result<String, String> {
         let out = json!({
             "model": c.model,
             "rider": c.data.rider,
-            "speed": c.speed,
+            "speed": speed,
             "lean": lean,
             "steer": c.steer,
             "status": turns.status(),
@@ -143,9 +160,9 @@ fn nearest<T: Copy>(items: &[T], steer: f64, of: impl Fn(&T) -> f64) -> Option<T
 
 /// The steady turns of the leaning rider `rider` ([`carvallo::whipple::steady_turn::lean_rider`]):
 /// the torso's lean beside the steer, no contact forces (see the module).
-fn rider_turns(c: &Args, rider: &LeanRider, lean: f64) -> Result<String, String> {
+fn rider_turns(c: &Args, rider: &LeanRider, speed: f64, lean: f64) -> Result<String, String> {
     let solver = RiderTurnSolver::new(rider);
-    let mut turns = solver.turns(c.speed, lean).map_err(|e| e.to_string())?;
+    let mut turns = solver.turns(speed, lean).map_err(|e| e.to_string())?;
     if let Some(steer) = c.steer {
         if let Some(best) = nearest(&turns.turns, steer, |t| t.steer) {
             turns.turns = vec![best];
@@ -181,7 +198,7 @@ fn rider_turns(c: &Args, rider: &LeanRider, lean: f64) -> Result<String, String>
         let out = json!({
             "model": c.model,
             "rider": Value::Null,
-            "speed": c.speed,
+            "speed": speed,
             "lean": lean,
             "steer": c.steer,
             "status": turns.status(),
@@ -193,7 +210,7 @@ fn rider_turns(c: &Args, rider: &LeanRider, lean: f64) -> Result<String, String>
     let mut s = format!(
         "model {} (the leaning rider), speed {} m/s, roll {} rad: {}\n",
         c.model,
-        c.speed,
+        speed,
         lean,
         match n {
             0 => "no steady turn (no steer holds this roll at this speed)".to_string(),
@@ -311,6 +328,104 @@ fn turns_text(label: &str, turns: &Turns) -> String {
     s
 }
 
+/// `--hands-free`: the families of hands-free turns of a bicycle from the branch points of
+/// upright running, straight ahead and with the handlebar reversed
+/// ([`carvallo::whipple::steady_turn::hands_free`]).
+fn hands_free(c: &Args) -> Result<String, String> {
+    if c.model == "carvallo" || crate::args::lean_rider(&c.model, &c.data)?.is_some() {
+        return Err(format!(
+            "--hands-free takes a bicycle (benchmark or a parameter file), not `{}`",
+            c.model
+        ));
+    }
+    let params = crate::args::bicycle(&c.model, &c.data)?;
+    let solver = TurnSolver::new(&params).map_err(|e| e.to_string())?;
+    let hf = HandsFree::new(&solver);
+    let mut families = Vec::new();
+    for (line, name) in [(0.0, "straight ahead (steer 0)"), (std::f64::consts::PI, "handlebar reversed (steer pi)")] {
+        for vb in hf.branch_speeds(line, hands_free::MAX_SPEED) {
+            let f = hf.family(line, vb).map_err(|e| e.to_string())?;
+            families.push((name, f));
+        }
+    }
+    let label = c.data.label(&c.model);
+    let at = |f: &Family, k: usize| {
+        let p = &f.points[k.min(f.points.len() - 1)];
+        (p.speed, p.lean, p.steer)
+    };
+    if c.json {
+        let list: Vec<Value> = families
+            .iter()
+            .map(|(name, f)| {
+                let special: Vec<Value> = f
+                    .special
+                    .iter()
+                    .map(|s| {
+                        let (kind, k) = match *s {
+                            Special::SpeedFold(k) => ("speed fold", k),
+                            Special::LeanFold(k) => ("lean fold", k),
+                            Special::Branch(k) => ("branch point", k),
+                            Special::StabilityChange(k) => ("stability change", k),
+                        };
+                        let (v, l, d) = at(f, k);
+                        json!({ "kind": kind, "index": k, "speed": v, "lean": l, "steer": d })
+                    })
+                    .collect();
+                json!({
+                    "line": name,
+                    "line_steer": f.line_steer,
+                    "branch_speed": f.branch_speed,
+                    "end": format!("{:?}", f.end).to_lowercase(),
+                    "special": special,
+                    "points": f.points.iter().map(|p| json!({
+                        "speed": p.speed, "lean": p.lean, "steer": p.steer, "pitch": p.pitch,
+                        "stable": p.stable, "growth": p.growth,
+                    })).collect::<Vec<_>>(),
+                })
+            })
+            .collect();
+        let out = json!({ "model": c.model, "rider": c.data.rider, "families": list });
+        return serde_json::to_string_pretty(&out).map_err(|e| e.to_string());
+    }
+    let mut s = format!("model {label}, hands-free steady turns (no steer torque)\n");
+    if families.is_empty() {
+        s.push_str("no family branches from upright running below 20 m/s\n");
+    }
+    for (name, f) in &families {
+        let last = f.points.last().map_or(f.branch_speed, |p| p.speed);
+        s.push_str(&format!(
+            "{name}: a family branches at {:.6} m/s; {} points, followed to {last:.4} m/s ({})\n",
+            f.branch_speed,
+            f.points.len(),
+            match f.end {
+                End::Speed => "the speed's bound",
+                End::Lean => "the fall angle",
+                End::Stuck => "a singularity",
+                End::Steps => "the steps' bound",
+            }
+        ));
+        for sp in &f.special {
+            let (kind, k) = match *sp {
+                Special::SpeedFold(k) => ("speed fold", k),
+                Special::LeanFold(k) => ("lean fold", k),
+                Special::Branch(k) => ("branch point", k),
+                Special::StabilityChange(k) => ("stability changes", k),
+            };
+            let (v, l, d) = at(f, k);
+            s.push_str(&format!("  {kind} near {v:.4} m/s, lean {l:.4} rad, steer {d:.4} rad\n"));
+        }
+        let stable: Vec<&CurvePoint> = f.points.iter().filter(|p| p.stable).collect();
+        match (stable.first(), stable.last()) {
+            (Some(a), Some(b)) => s.push_str(&format!(
+                "  stable points from {:.4} m/s, lean {:.4} rad to {:.4} m/s, lean {:.4} rad\n",
+                a.speed, a.lean, b.speed, b.lean
+            )),
+            _ => s.push_str("  stable nowhere\n"),
+        }
+    }
+    Ok(s)
+}
+
 /// The turn of Carvallo's bicycle at the handlebar angle `gamma_deg` (degrees).
 fn carvallo_turn(gamma_deg: f64, speed: f64, as_json: bool) -> Result<String, String> {
     let err = |e: carvallo::bicycle_turn::TurnError| e.to_string();
@@ -374,7 +489,14 @@ mod tests {
     fn parses_and_rejects_by_value() {
         let turn = |words: &[&str]| parse::<Args>(&[&["turn"], words].concat());
         let a = turn(&["--model", "carvallo", "--gamma", "5", "--speed", "5.5"]).expect("parses");
-        assert_eq!((a.model.as_str(), a.gamma_deg, a.speed, a.lean), ("carvallo", Some(5.0), 5.5, None));
+        assert_eq!(
+            (a.model.as_str(), a.gamma_deg, a.speed, a.lean),
+            ("carvallo", Some(5.0), Some(5.5), None)
+        );
+        let a = turn(&["--model", "benchmark", "--hands-free"]).expect("parses");
+        assert!(a.hands_free && a.speed.is_none());
+        let e = turn(&["--model", "benchmark", "--hands-free", "--speed", "5"]).unwrap_err();
+        assert!(e.contains("'--hands-free' cannot be used with '--speed <V>'"), "{e}");
         let a = turn(&["--model", "benchmark", "--speed", "5", "--lean", "-0.1", "--steer", "0"])
             .expect("parses");
         assert_eq!((a.lean, a.steer, a.gamma_deg), (Some(-0.1), Some(0.0), None));
