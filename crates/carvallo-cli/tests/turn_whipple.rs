@@ -95,13 +95,17 @@ fn upright_running_of_a_file_has_the_linear_eigenvalues() {
     }
     for (a, b) in linear.iter().zip(&nonlinear) {
         let scale = a.0.hypot(a.1).max(1.0);
-        assert!((a.0 - b.0).abs() <= 1e-9 * scale && (a.1 - b.1).abs() <= 1e-9 * scale, "{a:?} {b:?}");
+        assert!(
+            (a.0 - b.0).abs() <= 1e-9 * scale && (a.1 - b.1).abs() <= 1e-9 * scale,
+            "{a:?} {b:?}"
+        );
     }
 }
 
 #[test]
 fn a_lean_no_steer_holds_is_a_result() {
-    let (code, out, err) = carvallo(&["turn", "--model", "benchmark", "--speed", "5", "--lean", "1.55"]);
+    let (code, out, err) =
+        carvallo(&["turn", "--model", "benchmark", "--speed", "5", "--lean", "1.55"]);
     assert_eq!((code, err.as_str()), (0, ""), "{out}");
     assert!(out.contains("no steady turn"), "{out}");
     let v = json(&["turn", "--model", "benchmark", "--speed", "5", "--lean", "1.55", "--json"]);
@@ -117,8 +121,16 @@ fn steer_keeps_the_nearest_turn() {
     // The reversed handlebar (near pi) is nearest to -pi + 0.01 across the cut of the circle.
     for (wanted, expect) in [(0.1, 2), (3.1316, 0), (-3.1316, 0), (1.5, 3)] {
         let v = json(&[
-            "turn", "--model", "benchmark", "--speed", "5", "--lean", "0.05", "--steer",
-            &wanted.to_string(), "--json",
+            "turn",
+            "--model",
+            "benchmark",
+            "--speed",
+            "5",
+            "--lean",
+            "0.05",
+            "--steer",
+            &wanted.to_string(),
+            "--json",
         ]);
         let t = v["turns"].as_array().unwrap();
         assert_eq!(t.len(), 1);
@@ -129,12 +141,30 @@ fn steer_keeps_the_nearest_turn() {
 #[test]
 fn bad_input_exits_2_naming_the_value() {
     for (args, message) in [
-        (vec!["--model", "benchmark", "--speed", "0", "--lean", "0.1"], "invalid speed 0.0: must be positive"),
-        (vec!["--model", "benchmark", "--speed", "-3", "--lean", "0.1"], "invalid speed -3.0: must be positive"),
-        (vec!["--model", "benchmark", "--speed", "5", "--lean", "NaN"], "invalid value 'NaN' for '--lean <RAD>'"),
-        (vec!["--model", "benchmark", "--speed", "nan", "--lean", "0.1"], "invalid value 'nan' for '--speed <V>'"),
-        (vec!["--model", "benchmark", "--speed", "5", "--lean", "1.6"], "invalid lean 1.6: must lie strictly"),
-        (vec!["--model", "bogus", "--speed", "5", "--lean", "0.1"], "cannot read model file `bogus`"),
+        (
+            vec!["--model", "benchmark", "--speed", "0", "--lean", "0.1"],
+            "invalid speed 0.0: must be positive",
+        ),
+        (
+            vec!["--model", "benchmark", "--speed", "-3", "--lean", "0.1"],
+            "invalid speed -3.0: must be positive",
+        ),
+        (
+            vec!["--model", "benchmark", "--speed", "5", "--lean", "NaN"],
+            "invalid value 'NaN' for '--lean <RAD>'",
+        ),
+        (
+            vec!["--model", "benchmark", "--speed", "nan", "--lean", "0.1"],
+            "invalid value 'nan' for '--speed <V>'",
+        ),
+        (
+            vec!["--model", "benchmark", "--speed", "5", "--lean", "1.6"],
+            "invalid lean 1.6: must lie strictly",
+        ),
+        (
+            vec!["--model", "bogus", "--speed", "5", "--lean", "0.1"],
+            "cannot read model file `bogus`",
+        ),
         (vec!["--model", "benchmark", "--speed", "5"], "--model benchmark needs --lean <RAD>"),
     ] {
         let mut all = vec!["turn"];
@@ -161,7 +191,16 @@ fn the_leaning_rider_turns_as_the_library_and_has_eig_upright() {
         same(&j["eigenvalues"][0]["re"], t.stability.eigenvalues[0].re);
     }
     let up = json(&[
-        "turn", "--model", "lean-rider", "--speed", "5", "--lean", "0", "--steer", "0", "--json",
+        "turn",
+        "--model",
+        "lean-rider",
+        "--speed",
+        "5",
+        "--lean",
+        "0",
+        "--steer",
+        "0",
+        "--json",
     ]);
     let eig = json(&["eig", "--model", "lean-rider", "--speed", "5", "--json"]);
     let ours = up["turns"][0]["eigenvalues"].as_array().unwrap().clone();
@@ -170,7 +209,10 @@ fn the_leaning_rider_turns_as_the_library_and_has_eig_upright() {
     for (a, b) in ours.iter().zip(&theirs) {
         let (x, y) = (a["re"].as_f64().unwrap(), b["re"].as_f64().unwrap());
         let (p, q) = (a["im"].as_f64().unwrap(), b["im"].as_f64().unwrap());
-        assert!((x - y).abs() <= 1e-9 * y.abs().max(1.0) && (p - q).abs() <= 1e-9 * q.abs().max(1.0), "{a} {b}");
+        assert!(
+            (x - y).abs() <= 1e-9 * y.abs().max(1.0) && (p - q).abs() <= 1e-9 * q.abs().max(1.0),
+            "{a} {b}"
+        );
     }
 }
 
@@ -193,7 +235,9 @@ fn hands_free_families_branch_at_the_capsize_speed() {
         let vb = forward[0]["branch_speed"].as_f64().unwrap();
         assert!((vb - capsize).abs() <= 1e-9 * capsize, "{model:?}: {vb} vs {capsize}");
         let points = forward[0]["points"].as_array().unwrap();
-        assert!(points.len() > 100 && points.iter().skip(1).all(|p| p["lean"].as_f64().unwrap() > 0.0));
+        assert!(
+            points.len() > 100 && points.iter().skip(1).all(|p| p["lean"].as_f64().unwrap() > 0.0)
+        );
     }
     let (code, _, err) = carvallo(&["turn", "--model", "lean-rider", "--hands-free"]);
     assert_eq!(code, 2);

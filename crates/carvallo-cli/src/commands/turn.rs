@@ -33,7 +33,9 @@
 use carvallo::bicycle_straight::Constants;
 use carvallo::bicycle_turn::{Hold, LockedSteer, MAX_GAMMA};
 use carvallo::whipple::lean_rider::LeanRider;
-use carvallo::whipple::steady_turn::hands_free::{self, CurvePoint, End, Family, HandsFree, Special};
+use carvallo::whipple::steady_turn::hands_free::{
+    self, CurvePoint, End, Family, HandsFree, Special,
+};
 use carvallo::whipple::steady_turn::lean_rider::RiderTurnSolver;
 use carvallo::whipple::steady_turn::{SteadyTurn, TurnError, TurnSolver, Turns};
 use serde_json::{json, Value};
@@ -97,9 +99,11 @@ pub fn run(c: &Args) -> Result<String, String> {
     let speed = c.speed.ok_or("--speed <V> is required".to_string())?;
     if c.model == "carvallo" {
         if c.lean.is_some() || c.steer.is_some() || c.data.any() {
-            return Err("--model carvallo takes --gamma and --speed; --lean, --steer, --rider and \
+            return Err(
+                "--model carvallo takes --gamma and --speed; --lean, --steer, --rider and \
                         --strict are for the nonlinear models (benchmark or a parameter file)"
-                .into());
+                    .into(),
+            );
         }
         let gamma = c
             .gamma_deg
@@ -342,7 +346,9 @@ fn hands_free(c: &Args) -> Result<String, String> {
     let solver = TurnSolver::new(&params).map_err(|e| e.to_string())?;
     let hf = HandsFree::new(&solver);
     let mut families = Vec::new();
-    for (line, name) in [(0.0, "straight ahead (steer 0)"), (std::f64::consts::PI, "handlebar reversed (steer pi)")] {
+    for (line, name) in
+        [(0.0, "straight ahead (steer 0)"), (std::f64::consts::PI, "handlebar reversed (steer pi)")]
+    {
         for vb in hf.branch_speeds(line, hands_free::MAX_SPEED) {
             let f = hf.family(line, vb).map_err(|e| e.to_string())?;
             families.push((name, f));
@@ -455,9 +461,8 @@ fn carvallo_turn(gamma_deg: f64, speed: f64, as_json: bool) -> Result<String, St
     }
     // Upright, the lean and the rates are signed zeros: print them as 0.
     let (lean, yaw) = (t.lean + 0.0, t.yaw_rate + 0.0);
-    let mut s = format!(
-        "model carvallo, handlebar held at gamma = {gamma_deg} deg, speed {speed} m/s\n"
-    );
+    let mut s =
+        format!("model carvallo, handlebar held at gamma = {gamma_deg} deg, speed {speed} m/s\n");
     s.push_str(&format!("lean theta0: {lean:.6} rad\n"));
     s.push_str(&format!("pitch: {:.6e} rad\n", t.pitch));
     s.push_str(&format!("turning rate n: {yaw:.6} 1/s\n"));

@@ -344,8 +344,19 @@ struct Programs {
 
 /// The outputs of [`Programs::dynamics`], in order.
 const DYNAMICS: [&str; 13] = [
-    "m3_11", "m3_12", "m3_13", "m3_22", "m3_23", "m3_33", "f3_1", "f3_2", "f3_3", "thetad",
-    "psid", "thetaFd", "rear_speed",
+    "m3_11",
+    "m3_12",
+    "m3_13",
+    "m3_22",
+    "m3_23",
+    "m3_33",
+    "f3_1",
+    "f3_2",
+    "f3_3",
+    "thetad",
+    "psid",
+    "thetaFd",
+    "rear_speed",
 ];
 
 fn programs() -> &'static Programs {
@@ -608,7 +619,8 @@ impl TurnSolver {
         let pitch = t.pitch.value;
         let [_, yaw_rate, front_wheel_rate, _] = t.rates.map(|d| d.value);
         let forcing = t.forcing.map(|d| d.value);
-        let forces = self.contact_forces(lean, pitch, steer, speed, yaw_rate, wheel, front_wheel_rate);
+        let forces =
+            self.contact_forces(lean, pitch, steer, speed, yaw_rate, wheel, front_wheel_rate);
         let mut y = [0.0; rate::LEN];
         y[3] = lean;
         y[4] = steer;
@@ -694,11 +706,8 @@ impl TurnSolver {
         let rear_axle = rb * Vector3::y();
         let front_axle = rh * Vector3::y();
         let nf = (1.0 - front_axle.z * front_axle.z).sqrt();
-        let down = Vector3::new(
-            -front_axle.z * front_axle.x / nf,
-            -front_axle.z * front_axle.y / nf,
-            nf,
-        );
+        let down =
+            Vector3::new(-front_axle.z * front_axle.x / nf, -front_axle.z * front_axle.y / nf, nf);
         let front_contact = front_centre + rf * down;
         let omega = Vector3::new(0.0, 0.0, yaw_rate);
         let frame = |i: Matrix3<f64>, r: Matrix3<f64>| r * i * r.transpose() * omega;
@@ -706,8 +715,10 @@ impl TurnSolver {
             let w = omega + spin * axle;
             ixx * w + (iyy - ixx) * w.dot(&axle) * axle
         };
-        let ib = Matrix3::new(p("IBxx"), 0.0, p("IBxz"), 0.0, p("IByy"), 0.0, p("IBxz"), 0.0, p("IBzz"));
-        let ih = Matrix3::new(p("IHxx"), 0.0, p("IHxz"), 0.0, p("IHyy"), 0.0, p("IHxz"), 0.0, p("IHzz"));
+        let ib =
+            Matrix3::new(p("IBxx"), 0.0, p("IBxz"), 0.0, p("IByy"), 0.0, p("IBxz"), 0.0, p("IBzz"));
+        let ih =
+            Matrix3::new(p("IHxx"), 0.0, p("IHxz"), 0.0, p("IHyy"), 0.0, p("IHxz"), 0.0, p("IHzz"));
         let bodies = [
             (p("mR"), rear_centre, wheel(p("IRxx"), p("IRyy"), rear_axle, rear_wheel_rate)),
             (p("mB"), frame_b, frame(ib, rb)),

@@ -120,7 +120,8 @@ impl<'a> HandsFree<'a> {
             Dual::variable(z[2], 2),
             [Dual::constant(0.0), Dual::constant(0.0), v.scale(-1.0 / self.rr)],
         );
-        let ok = t.forcing.iter().all(|f| f.value.is_finite() && f.grad.iter().all(|g| g.is_finite()));
+        let ok =
+            t.forcing.iter().all(|f| f.value.is_finite() && f.grad.iter().all(|g| g.is_finite()));
         ok.then_some(([t.forcing[0], t.forcing[1]], t.pitch.value))
     }
 
@@ -237,7 +238,9 @@ impl<'a> HandsFree<'a> {
     pub fn family(&self, line_steer: f64, branch_speed: f64) -> Result<Family, TurnError> {
         let fail = |reason| TurnError::Solver { reason, steer: line_steer };
         // The null vector of the stiffness in (lean, steer) at the branch point.
-        let (f, _) = self.rows([branch_speed, 0.0, line_steer], 0.0).ok_or(fail("no contact at the branch point"))?;
+        let (f, _) = self
+            .rows([branch_speed, 0.0, line_steer], 0.0)
+            .ok_or(fail("no contact at the branch point"))?;
         let (a, b) = (f[0].grad, f[1].grad);
         let null = if a[1].abs() + a[2].abs() >= b[1].abs() + b[2].abs() {
             (-a[2], a[1])
@@ -245,7 +248,11 @@ impl<'a> HandsFree<'a> {
             (-b[2], b[1])
         };
         let norm = null.0.hypot(null.1);
-        let (dl, ds) = if null.0 >= 0.0 { (null.0 / norm, null.1 / norm) } else { (-null.0 / norm, -null.1 / norm) };
+        let (dl, ds) = if null.0 >= 0.0 {
+            (null.0 / norm, null.1 / norm)
+        } else {
+            (-null.0 / norm, -null.1 / norm)
+        };
         // The first point: the lean fixed a little off the line, Newton on (speed, steer).
         let eps = 1e-3;
         let lean = eps * dl;
@@ -273,16 +280,21 @@ impl<'a> HandsFree<'a> {
         if !found {
             return Err(fail("no first point off the upright line"));
         }
-        let start = self.point([branch_speed, 0.0, line_steer], 0.0).ok_or(fail("no stability at the branch point"))?;
+        let start = self
+            .point([branch_speed, 0.0, line_steer], 0.0)
+            .ok_or(fail("no stability at the branch point"))?;
         let mut points = vec![start];
         let mut special = Vec::new();
         let mut z = Vector3::new(v, lean, steer);
-        let (f, _) = self.rows([v, lean, steer], pitch).ok_or(fail("the first point has no contact"))?;
+        let (f, _) =
+            self.rows([v, lean, steer], pitch).ok_or(fail("the first point has no contact"))?;
         let raw = Self::cross(&f);
         // Oriented towards growing lean.
         let mut sign = if raw[1] >= 0.0 { 1.0 } else { -1.0 };
         let mut t = sign * raw.normalize();
-        points.push(self.point([v, lean, steer], pitch).ok_or(fail("no stability at the first point"))?);
+        points.push(
+            self.point([v, lean, steer], pitch).ok_or(fail("no stability at the first point"))?,
+        );
         let (h_min, h_max) = (1e-6, 0.05);
         let mut h = 0.01;
         let mut end = End::Steps;
@@ -319,7 +331,8 @@ impl<'a> HandsFree<'a> {
             if tn[1] * t[1] < 0.0 {
                 special.push(Special::LeanFold(k));
             }
-            let pt = self.point([zn[0], zn[1], zn[2]], p).ok_or(fail("no stability on the family"))?;
+            let pt =
+                self.point([zn[0], zn[1], zn[2]], p).ok_or(fail("no stability on the family"))?;
             if pt.stable != points[k - 1].stable {
                 special.push(Special::StabilityChange(k));
             }

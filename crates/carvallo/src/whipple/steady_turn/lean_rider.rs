@@ -187,15 +187,36 @@ impl<'a> RiderTurnSolver<'a> {
         wheel: f64,
     ) -> [Dual<N>; 12] {
         let c = Dual::constant;
-        [c(lean), c(pitch), steer, torso, c(0.0), c(wheel), c(0.0), c(0.0), c(0.0), c(0.0), c(0.0), c(0.0)]
+        [
+            c(lean),
+            c(pitch),
+            steer,
+            torso,
+            c(0.0),
+            c(wheel),
+            c(0.0),
+            c(0.0),
+            c(0.0),
+            c(0.0),
+            c(0.0),
+            c(0.0),
+        ]
     }
 
     /// The torso's lean in equilibrium at `(lean, pitch, steer)` by Newton from `guess`, and the
     /// roll row there; `None` when Newton does not converge within ±π/2.
-    fn torso(&self, lean: f64, pitch: f64, steer: f64, guess: f64, wheel: f64) -> Option<(f64, f64)> {
+    fn torso(
+        &self,
+        lean: f64,
+        pitch: f64,
+        steer: f64,
+        guess: f64,
+        wheel: f64,
+    ) -> Option<(f64, f64)> {
         let mut q9 = guess;
         for _ in 0..50 {
-            let x = self.inputs(lean, pitch, Dual::<1>::constant(steer), Dual::variable(q9, 0), wheel);
+            let x =
+                self.inputs(lean, pitch, Dual::<1>::constant(steer), Dual::variable(q9, 0), wheel);
             let (o, _) = self.outputs(x);
             let step = o[13].value / o[13].grad[0];
             if !step.is_finite() {
@@ -213,10 +234,17 @@ impl<'a> RiderTurnSolver<'a> {
     }
 
     /// $F$, $dF/dq_7$ and the pitch and torso lean at `steer`, from the guesses `g`.
-    fn newton(&self, lean: f64, wheel: f64, steer: f64, g: (f64, f64)) -> Option<(f64, f64, (f64, f64))> {
+    fn newton(
+        &self,
+        lean: f64,
+        wheel: f64,
+        steer: f64,
+        g: (f64, f64),
+    ) -> Option<(f64, f64, (f64, f64))> {
         let pitch = self.rider.pitch_near(lean, g.0, steer)?;
         let (q9, _) = self.torso(lean, pitch, steer, g.1, wheel)?;
-        let x = self.inputs(lean, pitch, Dual::<2>::variable(steer, 0), Dual::variable(q9, 1), wheel);
+        let x =
+            self.inputs(lean, pitch, Dual::<2>::variable(steer, 0), Dual::variable(q9, 1), wheel);
         let (o, pitch) = self.outputs(x);
         let (f, h) = (o[10], o[13]);
         let df = f.grad[0] - f.grad[1] * h.grad[0] / h.grad[1];
@@ -268,9 +296,10 @@ impl<'a> RiderTurnSolver<'a> {
         x[7] = torso;
         x[9] = wheel;
         x[PITCH] = pitch;
-        let stability = self
-            .stability(&x, steer_torque)
-            .ok_or(TurnError::Solver { reason: "the eigenvalues of the linearisation did not converge", steer })?;
+        let stability = self.stability(&x, steer_torque).ok_or(TurnError::Solver {
+            reason: "the eigenvalues of the linearisation did not converge",
+            steer,
+        })?;
         Ok(RiderTurn {
             speed,
             lean,
@@ -295,8 +324,18 @@ impl<'a> RiderTurnSolver<'a> {
         let y: [Dual<13>; 13] = std::array::from_fn(|k| Dual::variable(x[k], k));
         let c = Dual::constant;
         let inputs = [
-            y[3], y[PITCH], y[5], y[7], y[8], y[9], y[10], y[11], c(torques[0]), c(torques[1]),
-            c(torques[2]), c(torques[3]),
+            y[3],
+            y[PITCH],
+            y[5],
+            y[7],
+            y[8],
+            y[9],
+            y[10],
+            y[11],
+            c(torques[0]),
+            c(torques[1]),
+            c(torques[2]),
+            c(torques[3]),
         ];
         let (o, _) = self.outputs(inputs);
         let y12: [Dual<13>; 12] = std::array::from_fn(|k| y[k]);

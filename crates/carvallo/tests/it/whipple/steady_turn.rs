@@ -96,7 +96,12 @@ fn linearisation_about_upright_is_the_benchmark_state_matrix() {
             let scale = (0..4).map(|c| a[(r, c)].abs()).fold(1.0, f64::max);
             for c in 0..4 {
                 let d = (j[(r, c)] - a[(r, c)]).abs();
-                assert!(d <= 1e-12 * scale, "{speed} m/s ({r}, {c}): {} vs {}", j[(r, c)], a[(r, c)]);
+                assert!(
+                    d <= 1e-12 * scale,
+                    "{speed} m/s ({r}, {c}): {} vs {}",
+                    j[(r, c)],
+                    a[(r, c)]
+                );
             }
             assert!(j[(r, 4)].abs() <= 1e-12 * scale, "{speed} m/s: wheel rate drives row {r}");
             assert!(j[(4, r)].abs() <= 1e-12, "{speed} m/s: the wheel rate is driven by {r}");
@@ -166,10 +171,8 @@ fn an_unstable_turn_departs_at_its_eigenvalue() {
     let mut start = start_of(&t);
     start.lean += 1e-7;
     let grid = Grid::new(8.0, 1e-3, 1000).expect("grid");
-    let run = s
-        .bike()
-        .simulate_forced(start, &grid, &Integration::RK4, &[], &held(&t))
-        .expect("the run");
+    let run =
+        s.bike().simulate_forced(start, &grid, &Integration::RK4, &[], &held(&t)).expect("the run");
     let rate_at = |time: f64| {
         let k = run.times.iter().position(|x| (x - time).abs() < 1e-9).expect("a sample");
         run.samples[k].sample.state.lean_rate
@@ -284,8 +287,13 @@ mod rider {
     }
 
     fn forward(s: &RiderTurnSolver<'_>, speed: f64, lean: f64) -> RiderTurn {
-        let near: Vec<_> =
-            s.turns(speed, lean).expect("turns").turns.into_iter().filter(|t| t.steer.abs() < 0.5).collect();
+        let near: Vec<_> = s
+            .turns(speed, lean)
+            .expect("turns")
+            .turns
+            .into_iter()
+            .filter(|t| t.steer.abs() < 0.5)
+            .collect();
         assert_eq!(near.len(), 1, "{near:?}");
         near[0]
     }
@@ -312,8 +320,13 @@ mod rider {
             let t = forward(&RiderTurnSolver::new(&r), 5.0, 0.05);
             let (locked, _) = r.locked().expect("the locked bicycle");
             let b = TurnSolver::new(&locked).expect("wheels");
-            let near: Vec<_> =
-                b.turns(5.0, 0.05).expect("turns").turns.into_iter().filter(|t| t.steer.abs() < 0.5).collect();
+            let near: Vec<_> = b
+                .turns(5.0, 0.05)
+                .expect("turns")
+                .turns
+                .into_iter()
+                .filter(|t| t.steer.abs() < 0.5)
+                .collect();
             let b = near[0];
             errors.push([
                 ((t.steer - b.steer) / b.steer).abs(),
@@ -437,7 +450,8 @@ mod hands_free {
             }
             // The forward family: unstable everywhere, the lean turning back once; the reversed
             // one: a stable section between two changes of stability.
-            let changes = f.special.iter().filter(|s| matches!(s, Special::StabilityChange(_))).count();
+            let changes =
+                f.special.iter().filter(|s| matches!(s, Special::StabilityChange(_))).count();
             if line == 0.0 {
                 assert!(f.points.iter().skip(1).all(|p| !p.stable));
                 assert_eq!(changes, 0);
