@@ -112,7 +112,7 @@ fn programs() -> &'static Programs {
                 .select_outputs(&["F_contact_height", "F_contact_height_dq5"])
                 .expect("the program has the contact constraint"),
             dynamics: p
-                .select_outputs(&dynamics_scene::OUTPUTS)
+                .select_outputs(dynamics_scene::OUTPUTS)
                 .expect("the program has the dynamics"),
         }
     })

@@ -336,9 +336,8 @@ mod rider {
             assert!(t.torso_lean.abs() <= 1e-2 / k9, "{k9}: torso {}", t.torso_lean);
         }
         for w in errors.windows(2) {
-            for k in 0..3 {
-                let ratio = w[0][k] / w[1][k];
-                assert!((ratio - 10.0).abs() <= 1.0, "{errors:?}");
+            for (a, b) in w[0].iter().zip(&w[1]) {
+                assert!((a / b - 10.0).abs() <= 1.0, "{errors:?}");
             }
         }
         // Relative: 1.6e-8 (steer), 1.6e-7 (torque), 1.6e-8 (yaw rate) at k9 = 1e6 N m/rad.
