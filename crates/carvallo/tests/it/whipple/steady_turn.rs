@@ -8,7 +8,9 @@
 //!   to φ² (the turn is odd in φ): halving φ divides the error by 4 ± 0.1, at 3, 5 and 8 m/s.
 //! * Linearisation: the dual-number Jacobian about upright straight running equals the
 //!   benchmark state matrix to 1e-12 per entry (relative to the largest entry of the row), and
-//!   the rear wheel rate neither drives nor is driven at first order.
+//!   the rear wheel rate neither drives nor is driven at first order; away from upright (a turn
+//!   of 0.3 rad with its torque, rates added) it equals central differences of the generated
+//!   right-hand side to 1e-6 of each row's largest entry.
 //! * Simulation: the nonlinear simulation (RK4, 1 ms, the steer torque held constant from the
 //!   start) started on the stable forward turn of the benchmark at 5 m/s and lean 0.05 rad stays
 //!   on it: lean, steer, lean and steer rates and speed within 1e-9 over 5 s; started 1e-7 rad
@@ -105,6 +107,45 @@ fn linearisation_about_upright_is_the_benchmark_state_matrix() {
             }
             assert!(j[(r, 4)].abs() <= 1e-12 * scale, "{speed} m/s: wheel rate drives row {r}");
             assert!(j[(4, r)].abs() <= 1e-12, "{speed} m/s: the wheel rate is driven by {r}");
+        }
+    }
+}
+
+#[test]
+fn the_jacobian_away_from_upright_is_the_generated_right_hand_sides_derivative() {
+    use carvallo::whipple::nonlinear::rate::StateRate;
+    // The dual-number Jacobian (the IR interpreter) against central differences of the
+    // generated right-hand side (another evaluator, the same projection) at a turn of 0.3 rad
+    // with its steer torque, perturbed off the turn in every rate.
+    let p = WhippleParams::benchmark();
+    let s = benchmark();
+    let t = forward(&s, 10.0, 0.3);
+    let mut y = [0.0; 11];
+    (y[3], y[4], y[7], y[8], y[9], y[10]) =
+        (t.lean, t.steer, 0.2, -0.3, t.rear_wheel_rate, t.pitch);
+    y[2] = 0.7;
+    let rate = StateRate::new(&p);
+    // Keep the pitch on the constraint at the perturbed state.
+    y[10] = rate.project(y[3], y[10], y[4]).expect("contact");
+    let torque = [0.0, t.steer_torque];
+    let j = s.state_jacobian(&y, torque);
+    let f = |y: &[f64; 11]| {
+        rate.rates_with(y, &mut |_| Ok(torque)).expect("the right-hand side").derivative
+    };
+    for c in 0..11 {
+        let h = 1e-6 * (1.0 + y[c].abs());
+        let (mut up, mut down) = (y, y);
+        up[c] += h;
+        down[c] -= h;
+        let (fu, fd) = (f(&up), f(&down));
+        for r in 0..11 {
+            let fdiff = (fu[r] - fd[r]) / (2.0 * h);
+            let scale = j[r].iter().fold(1.0f64, |m, x| m.max(x.abs()));
+            assert!(
+                (j[r][c] - fdiff).abs() <= 1e-6 * scale,
+                "({r}, {c}): dual {} vs difference {fdiff}",
+                j[r][c]
+            );
         }
     }
 }
