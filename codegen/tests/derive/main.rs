@@ -16,6 +16,8 @@ mod bicycle_straight;
 mod common;
 mod emit;
 mod engine;
+mod engine_hoop;
+mod engine_unicycle;
 mod hoop_checks;
 mod hoop_discussion;
 mod hoop_formulas;

@@ -30,7 +30,7 @@ use rayon::prelude::*;
 use serde_json::{json, Value};
 
 use crate::gains::GainAxis;
-use crate::perf::{MethodArg, SweepArgs};
+use crate::sweep_args::{MethodArg, SweepArgs};
 
 /// The grid points of the eigenvalue method.
 const EIGEN_POINTS: usize = 200;
@@ -76,7 +76,7 @@ pub fn run_to<W: Write>(args: &SweepArgs, out: W) -> Result<String, String> {
         }
         (values, g)
     };
-    let stop = crate::perf::interrupt_flag();
+    let stop = crate::interrupt::interrupt_flag();
     let start = Instant::now();
     let (mut done, mut stable, mut failed) = (0usize, 0usize, 0usize);
     let mut range: Option<(f64, f64)> = None;

@@ -20,10 +20,12 @@ mod commands;
 mod figures;
 mod gain_sweep;
 mod gains;
+mod interrupt;
 mod perf;
 mod report_dir;
 mod report_html;
 mod staging;
+mod sweep_args;
 
 use commands::{
     accel, bode, eig, kinematics, parameters, plot, report, response, rest, rolling, simulate,
@@ -69,8 +71,8 @@ enum Command {
     /// The stability windows of many designs (a grid or random designs around the model), or
     /// the closed-loop windows of a grid of feedback gains (--gain), in parallel
     Sweep(perf::SweepArgs),
-    /// Accelerations of the nonlinear bicycle in Basu-Mandal's coordinates (the state as JSON
-    /// on stdin)
+    /// Accelerations of the nonlinear bicycle in Basu-Mandal's coordinates, or the derivative of
+    /// the simulations' state (the state as JSON on stdin)
     Accel(accel::Args),
     /// Simulate the nonlinear bicycle (time series, energy drift)
     Simulate(simulate::Args),

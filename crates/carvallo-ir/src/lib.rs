@@ -54,6 +54,8 @@
 //! * [`opt`]: constant folding, [`Program::fix_params`], [`Program::select_outputs`], dead-code
 //!   elimination and argument pruning.
 //! * [`interp`]: the allocation-free `f64` [`Interpreter`] and [`Program::eval_f64`].
+//! * [`diff`]: derivatives as programs ([`Program::with_jacobian`]), forward mode by source
+//!   transformation with structural zeros skipped.
 //! * [`hp`]: high-precision reference evaluation with `astro-float`.
 //!
 //! # Example
@@ -70,6 +72,7 @@
 
 pub mod build;
 pub mod count;
+pub mod diff;
 pub mod dual;
 pub mod error;
 pub mod hp;

@@ -51,6 +51,8 @@ pub enum EntryValue {
     MaxFnOps(LitInt),
     /// `lanes: N`.
     Lanes(LitInt),
+    /// `jacobian: [NAME, ...]`.
+    Jacobian(Vec<Ident>),
 }
 
 /// One `NAME: VALUE` pair of `fixed`; the value is any expression here and must turn out to be
@@ -63,7 +65,7 @@ pub struct FixedEntry {
 }
 
 /// The keys a scene accepts, for error messages.
-pub const KEYS: &str = "`model`, `path`, `fixed`, `outputs`, `max_fn_ops`, `lanes`";
+pub const KEYS: &str = "`model`, `path`, `fixed`, `outputs`, `max_fn_ops`, `lanes`, `jacobian`";
 
 impl Parse for SceneInput {
     fn parse(input: ParseStream) -> syn::Result<Self> {
@@ -106,15 +108,8 @@ impl Parse for Entry {
                 let items = Punctuated::<FixedEntry, Token![,]>::parse_terminated(&content)?;
                 EntryValue::Fixed(items.into_iter().collect())
             }
-            "outputs" => {
-                let content;
-                bracketed!(content in input);
-                let items = Punctuated::<Ident, Token![,]>::parse_terminated_with(
-                    &content,
-                    Ident::parse_any,
-                )?;
-                EntryValue::Outputs(items.into_iter().collect())
-            }
+            "outputs" => EntryValue::Outputs(names(input)?),
+            "jacobian" => EntryValue::Jacobian(names(input)?),
             "max_fn_ops" => EntryValue::MaxFnOps(input.parse()?),
             "lanes" => EntryValue::Lanes(input.parse()?),
             other => {
@@ -126,6 +121,14 @@ impl Parse for Entry {
         };
         Ok(Entry { key, value })
     }
+}
+
+/// `[NAME, ...]`: a bracketed list of names (keywords allowed).
+fn names(input: ParseStream) -> syn::Result<Vec<Ident>> {
+    let content;
+    bracketed!(content in input);
+    let items = Punctuated::<Ident, Token![,]>::parse_terminated_with(&content, Ident::parse_any)?;
+    Ok(items.into_iter().collect())
 }
 
 impl Parse for FixedEntry {

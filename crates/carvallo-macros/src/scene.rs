@@ -36,6 +36,11 @@ pub const RESERVED: &[&str] = &[
     "eval_lanes_portable",
     "eval_lanes_avx2",
     "LANES",
+    "JACOBIAN_OF",
+    "JACOBIAN_WRT",
+    "JACOBIAN_NONZEROS",
+    "jacobian",
+    "jacobian_array",
     // Locals of the generated functions.
     "live",
     "args",
@@ -83,6 +88,18 @@ pub struct Scene {
     pub max_fn_ops: usize,
     /// `lanes: N`: also emit `eval_lanes` over `N` points per call.
     pub lanes: Option<usize>,
+    /// `jacobian: [...]`: the derivatives the program computes beside its values.
+    pub jacobian: Option<Jacobian>,
+}
+
+/// The Jacobian a scene asked for: $\partial\,\text{of}_i/\partial\,\text{wrt}_j$.
+pub struct Jacobian {
+    /// The outputs differentiated (the scene's value outputs), the rows.
+    pub of: Vec<String>,
+    /// The variables, the columns, in the order written.
+    pub wrt: Vec<String>,
+    /// The index in the program's outputs of each entry, `None` for a structural zero.
+    pub entries: Vec<Vec<Option<usize>>>,
 }
 
 /// Where the expansion finds its files.

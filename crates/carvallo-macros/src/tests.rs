@@ -375,7 +375,7 @@ fn malformed_scene_is_one_error() {
     assert_one_error(quote!(mod a { model demo }), "expected `:`");
     assert_one_error(
         quote!(mod a { model: demo, colour: red }),
-        "unknown scene key `colour`; expected one of `model`, `path`, `fixed`, `outputs`, `max_fn_ops`, `lanes`",
+        "unknown scene key `colour`; expected one of `model`, `path`, `fixed`, `outputs`, `max_fn_ops`, `lanes`, `jacobian`",
     );
 }
 

@@ -6,7 +6,9 @@
 //! parameters and the selected names against its outputs, and finally specialises the program
 //! with the `carvallo_ir` transformations: `fix_params` (fixed parameters become constants,
 //! which are folded), `select_outputs` (dead-code elimination, unused parameters and inputs
-//! dropped), then one more round of constant folding and dead-code elimination.
+//! dropped), then one more round of constant folding and dead-code elimination; with
+//! `jacobian: [...]`, `with_jacobian` then adds the derivatives of the selected outputs with
+//! respect to the listed inputs and parameters (structural zeros left out).
 //!
 //! Every problem becomes a `syn::Error` spanned on the offending token; problems are collected
 //! and combined so that the user sees them all at once. Nothing here panics on user input.
@@ -19,7 +21,7 @@ use syn::ext::IdentExt;
 use syn::{Expr, Ident, Lit, LitStr, UnOp};
 
 use crate::parse::{EntryValue, FixedEntry, SceneDecl};
-use crate::scene::{rust_ident, Context, Scene, DEFAULT_MAX_FN_OPS, LANE_COUNTS};
+use crate::scene::{rust_ident, Context, Jacobian, Scene, DEFAULT_MAX_FN_OPS, LANE_COUNTS};
 
 /// A list of errors that are combined into one `syn::Error`.
 #[derive(Default)]
@@ -63,6 +65,7 @@ struct Entries {
     outputs: Option<(Ident, Vec<Ident>)>,
     max_fn_ops: Option<syn::LitInt>,
     lanes: Option<syn::LitInt>,
+    jacobian: Option<(Ident, Vec<Ident>)>,
 }
 
 /// Validates one scene declaration against its IR file; see the module docs.
@@ -80,6 +83,7 @@ pub fn validate(decl: SceneDecl, ctx: &Context) -> syn::Result<Scene> {
             EntryValue::Outputs(v) => set(&mut e.outputs, (key.clone(), v)),
             EntryValue::MaxFnOps(v) => set(&mut e.max_fn_ops, v),
             EntryValue::Lanes(v) => set(&mut e.lanes, v),
+            EntryValue::Jacobian(v) => set(&mut e.jacobian, (key.clone(), v)),
         };
         if taken {
             errors.push(syn::Error::new_spanned(&key, format!("duplicate key `{key}`")));
@@ -120,6 +124,33 @@ pub fn validate(decl: SceneDecl, ctx: &Context) -> syn::Result<Scene> {
                 ));
             } else {
                 outputs.push(o);
+            }
+        }
+    }
+    let mut wrt: Vec<&Ident> = Vec::new();
+    if let Some((key, list)) = &e.jacobian {
+        if list.is_empty() {
+            errors.push(syn::Error::new_spanned(
+                key,
+                "`jacobian` is empty; list the inputs or parameters to differentiate with respect to",
+            ));
+        }
+        for x in list {
+            if wrt.iter().any(|p| p.unraw() == x.unraw()) {
+                errors.push(syn::Error::new_spanned(
+                    x,
+                    format!("`{}` is listed twice in `jacobian`", x.unraw()),
+                ));
+            } else if fixed.iter().any(|(f, _)| f.unraw() == x.unraw()) {
+                errors.push(syn::Error::new_spanned(
+                    x,
+                    format!(
+                        "cannot differentiate with respect to `{}`: the scene fixes it",
+                        x.unraw()
+                    ),
+                ));
+            } else {
+                wrt.push(x);
             }
         }
     }
@@ -237,6 +268,19 @@ pub fn validate(decl: SceneDecl, ctx: &Context) -> syn::Result<Scene> {
             ));
         }
     }
+    for x in &wrt {
+        let n = x.unraw().to_string();
+        if !program.inputs.contains(&n) && !program.params.contains(&n) {
+            errors.push(syn::Error::new_spanned(
+                x,
+                format!(
+                    "cannot differentiate with respect to `{n}`: model `{model_name}` has no such input or parameter (inputs: {}; parameters: {})",
+                    list(&program.inputs),
+                    list(&program.params)
+                ),
+            ));
+        }
+    }
     errors.check()?;
     let mut errors = Errors::default();
 
@@ -255,6 +299,27 @@ pub fn validate(decl: SceneDecl, ctx: &Context) -> syn::Result<Scene> {
         .fix_params(&fixed_refs)
         .and_then(|p| p.select_outputs(&selected))
         .map(|p| p.fold_constants().eliminate_dead_code());
+    // The derivatives: with respect to the variables the selected outputs still depend on
+    // (the others are structural zeros everywhere).
+    let wrt: Vec<String> = wrt.iter().map(|x| x.unraw().to_string()).collect();
+    let mut jacobian = None;
+    let specialised = specialised.and_then(|p| {
+        if wrt.is_empty() {
+            return Ok(p);
+        }
+        let live: Vec<&str> = wrt
+            .iter()
+            .filter(|x| p.inputs.contains(x) || p.params.contains(x))
+            .map(String::as_str)
+            .collect();
+        let of: Vec<String> = p.outputs.iter().map(|o| o.name.clone()).collect();
+        let d = p.with_jacobian(&live)?;
+        let of_refs: Vec<&str> = of.iter().map(String::as_str).collect();
+        let wrt_refs: Vec<&str> = wrt.iter().map(String::as_str).collect();
+        let entries = d.jacobian_entries(&of_refs, &wrt_refs);
+        jacobian = Some(Jacobian { of, wrt: wrt.clone(), entries });
+        Ok(d)
+    });
     let program = match specialised {
         Ok(p) => p,
         Err(err) => {
@@ -290,6 +355,7 @@ pub fn validate(decl: SceneDecl, ctx: &Context) -> syn::Result<Scene> {
         program,
         max_fn_ops,
         lanes,
+        jacobian,
     })
 }
 

@@ -11,6 +11,7 @@
 //! reduced modulo $\sin^2\theta + \cos^2\theta - 1$ (see [`crate::cas::reduce_trig`]).
 
 pub mod body;
+pub mod description;
 pub mod discussion;
 pub mod lagrange;
 pub mod memoir;

@@ -21,6 +21,7 @@
 //! only, L = 0, the wheel kept only through its term $(B_1 - \mu_1R^2)ps\cos\theta$); n° 78
 //! drops the (s) equation (s held constant by the pedals) and keeps L.
 
+pub mod description;
 pub mod memoir;
 
 use anyhow::{ensure, Result};

@@ -1,7 +1,8 @@
 //! What every table of `carvallo bench` shares: how much to measure ([`Config`]), the rows,
 //! distributions and targets it reports, the timer ([`time_ns`]) and the random designs and
 //! relative errors the sections compute with. It sits below [`super::tables`],
-//! [`super::quartic`] and [`super::certified`], which use it and not each other.
+//! [`super::quartic`], [`super::certified`] and [`super::simulation`], which use it and not
+//! each other; the rows of the simulations are defined here, with the report that holds them.
 
 use std::hint::black_box;
 use std::time::Instant;
@@ -118,9 +119,59 @@ pub struct Report {
     /// The targets.
     pub targets: Vec<Target>,
     /// The work-precision rows of the simulations ([`super::simulation`]).
-    pub simulation: Vec<super::simulation::SimulationRow>,
+    pub simulation: Vec<SimulationRow>,
     /// The simulations' reference solutions and their independent checks.
-    pub simulation_references: Vec<super::simulation::SimulationReference>,
+    pub simulation_references: Vec<SimulationReference>,
+}
+
+/// One work-precision row of the section `simulation` ([`super::simulation`]).
+#[derive(Clone, Debug, PartialEq, Serialize)]
+pub struct SimulationRow {
+    /// The simulated motion.
+    pub problem: String,
+    /// `rk4`, `dopri5`, `dop853` or `vern9`.
+    pub method: &'static str,
+    /// The relative tolerance (adaptive methods; atol is 1e-3 of it).
+    pub rtol: Option<f64>,
+    /// The step (RK4).
+    pub step: Option<f64>,
+    /// Right-hand side evaluations.
+    pub rhs_evaluations: usize,
+    /// Accepted steps.
+    pub steps: usize,
+    /// Rejected steps.
+    pub rejected_steps: usize,
+    /// Wall time of one simulation (ns): for the bicycle without computing its samples
+    /// (`simulate_final`), for the hoop and the unicycle with them.
+    pub ns: f64,
+    /// Error of the final state against the reference.
+    pub error_final: f64,
+    /// Largest error over the samples against the reference's.
+    pub error_dense: f64,
+    /// Largest energy drift over the accepted steps (J).
+    pub energy_drift: f64,
+    /// Largest contact constraint residual (m, bicycle only).
+    pub constraint_residual: Option<f64>,
+    /// The event's time error (s, the fall only).
+    pub event_time_error: Option<f64>,
+}
+
+/// A reference solution and its check by a second method.
+#[derive(Clone, Debug, PartialEq, Serialize)]
+pub struct SimulationReference {
+    /// The simulated motion.
+    pub problem: String,
+    /// How the reference is computed.
+    pub reference: String,
+    /// The independent check.
+    pub check: String,
+    /// The largest error (as the rows') between the two over the samples.
+    pub agreement: f64,
+    /// The same against DOPRI5 at rtol 1e-14 (same crate, another pair): over long runs RK4's
+    /// hundreds of thousands of additions onto the growing wheel angles limit its agreement.
+    pub agreement_dopri5: f64,
+    /// The event time of the reference (the fall only).
+    pub event_time: Option<f64>,
 }
 
 /// The targets as a list (see [`Report::targets`]).

@@ -36,10 +36,14 @@ use rayon::prelude::*;
 
 use carvallo::numerics::quartic;
 use carvallo::numerics::rng::SplitMix64;
-use carvallo::whipple::nonlinear::rate::{self, project_scene, state_rate_scene, StateRate};
+use carvallo::whipple::nonlinear::rate::{
+    self, project_jacobian_scene, project_scene, state_rate_jacobian_scene, state_rate_scene,
+    StateRate,
+};
 use carvallo::whipple::nonlinear::{dynamics_scene, Configuration, WhippleNonlinear};
 use carvallo::whipple::stability::{self, reference_speeds, EigenGrid};
 use carvallo::whipple::sweep::{self, Method};
+use carvallo::whipple::uncertainty;
 use carvallo::whipple::window_lanes;
 use carvallo::whipple::{matrices_scene, Matrices, Whipple, WhippleParams, PARAM_NAMES};
 
@@ -988,7 +992,55 @@ fn scene_rows(cfg: &Config, rows: &mut Vec<Row>) {
                 t / kernel
             ),
         );
+        // Its full state Jacobian (11 x 11) from the generated derivative code, against the
+        // whole right-hand side (target <= 3x).
+        let whole = t;
+        let t = time_ns(mt, || f.jacobian(black_box(&y)));
+        add(
+            "bicycle (c) state Jacobian",
+            "generated",
+            state_rate_jacobian_scene::OP_COUNT + project_jacobian_scene::OP_COUNT,
+            t,
+            &format!(
+                "StateRate::jacobian: scene! jacobian kernels ({} + {} ops, {} + {} non-zero \
+                 derivatives), chain rule through the projection, the solve and the kinematic \
+                 rates: {:.2}x the whole right-hand side (target <= 3x)",
+                state_rate_jacobian_scene::OP_COUNT,
+                project_jacobian_scene::OP_COUNT,
+                state_rate_jacobian_scene::JACOBIAN_NONZEROS,
+                project_jacobian_scene::JACOBIAN_NONZEROS,
+                t / whole
+            ),
+        );
     }
+    // The design sensitivities: the weave and capsize speeds' derivatives with respect to
+    // the 26 parameters, the matrices' derivatives by generated code or by dual numbers
+    // through the IR interpreter.
+    let p = WhippleParams::benchmark();
+    let generated = time_ns(mt, || {
+        uncertainty::speed_gradients_by(black_box(&p), uncertainty::Derivatives::Generated)
+    });
+    let interpreted = time_ns(mt, || {
+        uncertainty::speed_gradients_by(black_box(&p), uncertainty::Derivatives::Interpreted)
+    });
+    add(
+        "bicycle (a) speed derivatives, 26 parameters",
+        "generated",
+        uncertainty::matrices_jacobian_scene::OP_COUNT,
+        generated,
+        &format!(
+            "speed_gradients: the matrices' derivatives by scene! jacobian, then the window and \
+             the implicit function theorem; {:.1}x faster than dual numbers through the interpreter",
+            interpreted / generated
+        ),
+    );
+    add(
+        "bicycle (a) speed derivatives, 26 parameters",
+        "interpreted duals",
+        0,
+        interpreted,
+        "the reference route: Dual<26> through the IR interpreter on generated/whipple.ir",
+    );
 }
 
 /// Table 7; returns the Hurwitz sweep's seconds per $10^6$ designs and the designs per second

@@ -260,7 +260,7 @@ pub fn simulate(
     let mut x0 = rider.upright(speed);
     x0[3] = lean0;
     let run = rider
-        .simulate(x0, &torques, Joint::Free, &grid, how, limits, crate::perf::interrupt_flag())
+        .simulate(x0, &torques, Joint::Free, &grid, how, limits, crate::interrupt::interrupt_flag())
         .map_err(|e| {
             format!(
                 "the integration diverged: {e:?} (--method {}); take a smaller --step or an \

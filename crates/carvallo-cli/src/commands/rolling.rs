@@ -196,7 +196,7 @@ pub struct HoopArgs {
 pub fn hoop(c: &HoopArgs) -> Result<String, String> {
     let hoop = Hoop::new(c.radius, c.mass, c.g).map_err(|e| e.to_string())?;
     let (how, grid) = c.run.plan()?;
-    let stop = crate::perf::interrupt_flag();
+    let stop = crate::interrupt::interrupt_flag();
     let tr = hoop
         .simulate_until(c.run.start(), &grid, &how, &c.run.stop_when, stop)
         .map_err(|e| e.to_string())?;
@@ -251,7 +251,7 @@ pub fn unicycle(c: &UnicycleArgs) -> Result<String, String> {
     let u = Unicycle::new(c.radius, c.g, rider, Wheel::hoop(c.wheel_mass, c.radius))
         .map_err(|e| e.to_string())?;
     let (how, grid) = c.run.plan()?;
-    let stop = crate::perf::interrupt_flag();
+    let stop = crate::interrupt::interrupt_flag();
     let tr = u
         .simulate_until(c.run.start(), &grid, &how, &c.run.stop_when, stop)
         .map_err(|e| e.to_string())?;

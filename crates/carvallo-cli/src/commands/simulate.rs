@@ -60,7 +60,7 @@ use crate::args::{finite, DataOptions};
 #[derive(Clone, Debug, Default, PartialEq, clap::Args)]
 pub struct ToleranceArgs {
     /// The integrator: fixed-step RK4, or Dormand–Prince 5(4), DOP853 or Verner's 9(8) with
-    /// error control and dense output
+    /// error control and dense output, or the implicit Radau IIA 5 for stiff variants
     #[arg(long, value_enum, default_value_t)]
     pub method: MethodArg,
     /// The relative tolerance of an adaptive method [default: 1e-8]
@@ -94,6 +94,9 @@ pub enum MethodArg {
     Dop853,
     /// Verner's efficient 9(8) pair, error-controlled, dense output of order 9
     Vern9,
+    /// Radau IIA of order 5, implicit, for stiff variants (Newton on the generated state
+    /// Jacobian of the nonlinear bicycle, forward differences elsewhere)
+    Radau5,
 }
 
 impl ToleranceArgs {
@@ -104,6 +107,7 @@ impl ToleranceArgs {
             MethodArg::Dopri5 => Method::Dopri5,
             MethodArg::Dop853 => Method::Dop853,
             MethodArg::Vern9 => Method::Vern9,
+            MethodArg::Radau5 => Method::Radau5,
         };
         if method == Method::Rk4 {
             if let Some(r) = self.rtol {
@@ -199,7 +203,7 @@ fn batch(
     }
     // Only the end is kept: no sample inside the run (the integration does not depend on them).
     let grid = Grid { every: grid.n.max(1), ..*grid };
-    let stop = crate::perf::interrupt_flag();
+    let stop = crate::interrupt::interrupt_flag();
     let clock = std::time::Instant::now();
     let (counter, finished) = (AtomicUsize::new(0), AtomicBool::new(false));
     let ends = std::thread::scope(|scope| {
@@ -479,7 +483,7 @@ pub fn run(cmd: &Args) -> Result<String, String> {
     }
     // An error after the start is the integration leaving the state's domain (a step too long
     // for the rates): said so, with the options to change.
-    let tr = bike.simulate_until(start, &grid, &how, stops, crate::perf::interrupt_flag()).map_err(|e| {
+    let tr = bike.simulate_until(start, &grid, &how, stops, crate::interrupt::interrupt_flag()).map_err(|e| {
         format!(
             "the integration diverged: {e} (--method {}{}); take a smaller --step or an adaptive --method",
             how.method.name(),

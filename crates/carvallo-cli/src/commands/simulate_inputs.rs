@@ -298,7 +298,7 @@ pub fn run(
     let (model, speed, lean0, every) = header;
     let inputs = args.inputs()?;
     let tr = bike
-        .simulate_forced_until(start, grid, how, stops, &inputs, crate::perf::interrupt_flag())
+        .simulate_forced_until(start, grid, how, stops, &inputs, crate::interrupt::interrupt_flag())
         .map_err(|e| e.to_string())?;
     let events: Vec<(String, f64)> = tr.event.iter().map(|&(k, t)| (stops[k].text(), t)).collect();
     let end = tr.times.last().copied().unwrap_or(0.0);

@@ -1,9 +1,20 @@
-//! The classical fourth-order Runge–Kutta step, for any fixed state size, and the
-//! [`Trajectory`] every model's simulation returns.
+//! The classical fourth-order Runge–Kutta step, for any fixed state size, the
+//! [`Trajectory`] every model's simulation returns and the counts it carries ([`Stats`]).
+//! [`crate::numerics::integrate`] builds on these; this module uses nothing of it.
 
 use std::ops::Deref;
 
-use crate::numerics::integrate::Stats;
+/// What an integration counted.
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
+pub struct Stats {
+    /// Evaluations of the right-hand side (the adaptive methods' initial step choice
+    /// included).
+    pub rhs_evaluations: usize,
+    /// Accepted steps.
+    pub steps: usize,
+    /// Rejected steps (zero for RK4).
+    pub rejected_steps: usize,
+}
 
 /// One classical Runge–Kutta step of $x' = f(x)$ from `x` with step `dt`.
 pub fn rk4_step<const N: usize>(

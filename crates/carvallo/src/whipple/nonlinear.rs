@@ -1098,11 +1098,14 @@ impl WhippleNonlinear {
                 }
                 Ok(())
             };
-        let outcome = integrate::integrate_until(
+        // The implicit method's Newton iterations use the generated state Jacobian.
+        let mut jacobian = |_t: f64, y: &[f64; rate::LEN]| f.jacobian(y);
+        let outcome = integrate::integrate_with_jacobian(
             how,
             grid,
             rate::state_with_pitch(&start, pitch0),
             &mut rhs,
+            Some(&mut jacobian),
             &mut events[..conditions],
             &mut observe,
             stop_flag,

@@ -8,6 +8,7 @@
 mod basu_mandal;
 mod bicycleparameters;
 mod design;
+mod jacobian;
 mod lean_rider;
 mod nonlinear;
 mod params;

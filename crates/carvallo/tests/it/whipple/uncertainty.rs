@@ -151,3 +151,83 @@ fn eigenvalue_bands_contain_the_nominal_curve() {
     assert_eq!(z.lower, z.nominal);
     assert_eq!(z.upper, z.nominal);
 }
+
+/// The speeds' derivatives from the generated derivative code equal those of dual numbers
+/// run through the IR interpreter (no source transformation), on the benchmark and on every
+/// shipped bicycle with a rider, parameter by parameter, to 1e-12 of the largest.
+#[test]
+fn generated_speed_derivatives_equal_the_interpreted_dual_numbers() {
+    use carvallo::whipple::uncertainty::{speed_gradients_by, Derivatives};
+    let mut designs = vec![("benchmark".to_string(), WhippleParams::benchmark())];
+    let mut rng = carvallo::numerics::rng::SplitMix64(354);
+    for k in 0..40 {
+        // Designs within ±10 % of the benchmark (g kept), the valid ones.
+        let mut v = *WhippleParams::benchmark().values();
+        for (i, x) in v.iter_mut().enumerate() {
+            if PARAM_NAMES[i] != "g" {
+                *x *= rng.uniform(0.9, 1.1);
+            }
+        }
+        if let Ok(p) = WhippleParams::from_values(v) {
+            designs.push((format!("random design {k}"), p));
+        }
+    }
+    assert!(designs.len() >= 8, "too few valid random designs: {}", designs.len());
+    let mut worst: f64 = 0.0;
+    for (name, p) in &designs {
+        let a = speed_gradients_by(p, Derivatives::Generated);
+        let b = speed_gradients_by(p, Derivatives::Interpreted);
+        for (which, x, y) in [("weave", &a.weave, &b.weave), ("capsize", &a.capsize, &b.capsize)] {
+            let (Some(x), Some(y)) = (x, y) else {
+                assert_eq!(
+                    x.is_some(),
+                    y.is_some(),
+                    "{name}: {which} speed exists by one route only"
+                );
+                continue;
+            };
+            assert_eq!(x.speed.to_bits(), y.speed.to_bits(), "{name}: {which} speed");
+            let scale = y.grad.iter().fold(0.0f64, |m, g| m.max(g.abs()));
+            for (k, (gx, gy)) in x.grad.iter().zip(&y.grad).enumerate() {
+                let err = (gx - gy).abs() / scale;
+                worst = worst.max(err);
+                assert!(err <= 1e-12, "{name}: d {which} / d {}: {gx} vs {gy}", PARAM_NAMES[k]);
+            }
+        }
+    }
+    eprintln!(
+        "generated vs interpreted speed derivatives over {} designs: worst {worst:.2e}",
+        designs.len()
+    );
+}
+
+/// The generated derivatives of the matrices equal 256-bit central differences of
+/// `generated/whipple.ir` (step 2^-100 relative), every entry and parameter.
+#[test]
+fn generated_matrix_derivatives_equal_256_bit_differences() {
+    use carvallo::whipple::uncertainty::{matrices_jacobian_scene as scene, WHIPPLE_IR};
+    let p = WhippleParams::benchmark();
+    let at = |name: &str| p.get(name).expect("a parameter");
+    let out = scene::eval(&scene::Args::from_fn(at));
+    let jac = scene::jacobian(&out);
+    let program = carvallo_ir::Program::parse(WHIPPLE_IR)
+        .expect("parses")
+        .select_outputs(&scene::JACOBIAN_OF)
+        .expect("the matrices");
+    let params: Vec<f64> = program.params.iter().map(|n| at(n)).collect();
+    let inputs = vec![0.0; program.inputs.len()];
+    let mut worst: f64 = 0.0;
+    for (c, x) in scene::JACOBIAN_WRT.iter().enumerate() {
+        let fd = if program.params.iter().any(|n| n == x) {
+            carvallo_ir::hp::derivative(&program, &params, &inputs, x, 256).expect("difference")
+        } else {
+            vec![0.0; scene::JACOBIAN_OF.len()]
+        };
+        for (r, o) in scene::JACOBIAN_OF.iter().enumerate() {
+            let err = (jac[r][c] - fd[r]).abs() / fd[r].abs().max(1e-3);
+            worst = worst.max(err);
+            assert!(err <= 1e-13, "d {o} / d {x}: {} vs 256-bit {}", jac[r][c], fd[r]);
+        }
+    }
+    eprintln!("matrix derivatives vs 256-bit differences: worst {worst:.2e}");
+}

@@ -1,0 +1,80 @@
+//! The rolling hoop as a description for the mechanics engine ([`crate::mechanics::engine`]):
+//! the memoir's hoop (n° 1–7: a homogeneous circle of radius $R$ and mass $\mu$ rolling without
+//! slipping on a horizontal plane) written as frames and one wheel, with nothing of the memoir's
+//! own derivation in it: no trihedron (I, j, k), no $p, n, s$, no moments of the inertia forces.
+//! The engine derives it by Kane's method and by the modified Lagrange equations; the test
+//! `codegen/tests/derive/engine_hoop.rs` compares both with the hand derivation of [`super`]
+//! (`generated/hoop.ir`) at 256 bits. It is also the guide's worked example of a model that is
+//! not a bicycle (`docs/guide/src/contributing.md`).
+//!
+//! Frames: the yawed frame Y (heading ψ about the downward vertical) and the lean frame
+//! L = Y·Rx(φ), which carries the hoop's axle (its y axis). The hoop's centre (the memoir's S) is
+//! $S = P - R\,L_z$ from the contact P, which is the root point: the contact is on the ground by
+//! construction, so the only constraints are the two horizontal rolling rows. The heading's and
+//! the spin's rates are independent speeds (a rolling disc has three degrees of freedom of
+//! velocity), the contact's velocity is dependent.
+
+use symbolica::atom::Atom;
+
+use super::PARAMS;
+use crate::mechanics::engine::{
+    sym, Angle, Axis, Coordinate, Frame, Kind, Model, Point, Rotation, Wheel,
+};
+
+/// The rolling hoop's description.
+pub fn hoop() -> Model {
+    let (r, mu) = (sym("R"), sym("mu"));
+    let coordinate = |name: &str, description: &str, kind: Kind| Coordinate {
+        name: name.into(),
+        description: description.into(),
+        kind,
+    };
+    let rot = |axis: Axis, c: &str| Rotation { axis, angle: Angle::Coordinate(c.into()) };
+    Model {
+        name: "hoop_engine".into(),
+        params: PARAMS.iter().map(|s| s.to_string()).collect(),
+        inputs: Vec::new(),
+        coordinates: vec![
+            coordinate("psi", "heading (rad)", Kind::Ignorable { dependent_rate: false }),
+            coordinate(
+                "phi",
+                "lean of the hoop's plane from the vertical (rad)",
+                Kind::Independent,
+            ),
+            coordinate(
+                "thetaR",
+                "rotation of the hoop about its axle, relative to L (rad)",
+                Kind::Ignorable { dependent_rate: false },
+            ),
+        ],
+        heading: Some("psi".into()),
+        root: "P".into(),
+        frames: vec![
+            Frame { name: "Y".into(), parent: "N".into(), rotations: vec![rot(Axis::Z, "psi")] },
+            Frame { name: "L".into(), parent: "Y".into(), rotations: vec![rot(Axis::X, "phi")] },
+        ],
+        points: vec![Point {
+            name: "S".into(),
+            from: "P".into(),
+            frame: "L".into(),
+            offset: [Atom::num(0), Atom::num(0), -&r],
+        }],
+        bodies: Vec::new(),
+        wheels: vec![Wheel {
+            name: "R".into(),
+            carrier: "L".into(),
+            centre: "S".into(),
+            axle: Axis::Y,
+            spin: "thetaR".into(),
+            radius: r.clone(),
+            mass: mu.clone(),
+            // A homogeneous circle: mu R^2 / 2 about a diameter, mu R^2 about the axle.
+            diametral: &mu * &r * &r / Atom::num(2),
+            axial: &mu * &r * &r,
+            down: Some(("L".into(), Axis::Z)),
+            at_root: true,
+        }],
+        torques: Vec::new(),
+        gravity: sym("g"),
+    }
+}
