@@ -53,9 +53,10 @@
 //!
 //! The turn's stability with the steer torque held constant is read from the eigenvalues of the
 //! linearisation of the eleven-state right-hand side ([`StateRate`]) about it.
-//! [`state_jacobian`] computes that Jacobian by dual numbers through the same program and the
-//! same one-step projection of the pitch as [`StateRate::eval`] (exact to rounding, no finite
-//! differences); it is the one place the Jacobian comes from, to be replaced by a generated one.
+//! [`TurnSolver::state_jacobian`] is the one place that Jacobian comes from: the generated
+//! [`StateRate::jacobian_with`]; [`TurnSolver::state_jacobian_dual`], dual numbers through the
+//! same program and the same one-step projection of the pitch (the IR interpreter, no
+//! generated derivative), is its reference (equal to 1e-12, `tests/it/whipple/steady_turn.rs`).
 //! Its structural zero eigenvalues: the rear contact's position $(x, y)$, the yaw and the two
 //! wheel angles are ignorable (no equation depends on them; the yaw enters only the rates of
 //! $x$ and $y$), five zeros; the pitch is dependent (the right-hand side projects it onto the
@@ -73,9 +74,7 @@ use carvallo_ir::dual::{self, Dual};
 use carvallo_ir::Program;
 use nalgebra::{Complex, Matrix3, SMatrix, SVector, Vector3};
 
-use super::nonlinear::rate;
-#[cfg(doc)]
-use super::nonlinear::rate::StateRate;
+use super::nonlinear::rate::{self, StateRate};
 use super::nonlinear::{Configuration, NonlinearError, WhippleNonlinear};
 use super::WhippleParams;
 use crate::error::ParameterError;
@@ -429,6 +428,7 @@ fn solve_symmetric<const N: usize>(m: [Dual<N>; 6], f: [Dual<N>; 3]) -> [Dual<N>
 /// The steady turns of one bicycle.
 pub struct TurnSolver {
     bike: WhippleNonlinear,
+    rate: StateRate,
     contact: DualProgram,
     dynamics: DualProgram,
     /// Weight times wheelbase (N m), the scale of the roll row.
@@ -469,6 +469,7 @@ impl TurnSolver {
         let get = |n: &str| params.get(n).unwrap_or(f64::NAN);
         let mass = get("mR") + get("mB") + get("mH") + get("mF");
         Ok(TurnSolver {
+            rate: StateRate::new(params),
             contact: DualProgram::new(&p.contact, params),
             dynamics: DualProgram::new(&p.dynamics, params),
             scale: mass * get("g") * get("w"),
@@ -534,15 +535,29 @@ impl TurnSolver {
     }
 
     /// The Jacobian $\partial\dot y/\partial y$ of [`StateRate::rates_with`] at `y` (its state
-    /// order) with the constant roll and steer torques `torque` $(T_\varphi, T_\delta)$ (N m),
-    /// by forward-mode dual numbers through `generated/whipple_nonlinear.ir`: exact to
-    /// rounding. The torques enter through $M_3^{-1}$: $\partial(M_3^{-1}(f_3 + \tau))/\partial y$
-    /// depends on τ wherever $M_3$ depends on the configuration. `y`'s pitch must lie on the
-    /// contact constraint (the right-hand side's projection is then one Newton step).
+    /// order) with the constant roll and steer torques `torque` $(T_\varphi, T_\delta)$ (N m):
+    /// the generated one, [`StateRate::jacobian_with`] (`scene!` Jacobians of $M_3$, $f_3$, the
+    /// dependent rates and the contact constraint, the chain rule through the pitch's projection
+    /// and the solve). The torques enter through $M_3^{-1}$:
+    /// $\partial(M_3^{-1}(f_3 + \tau))/\partial y$ depends on τ wherever $M_3$ depends on the
+    /// configuration. This is the one function the steady turns take their linearisation
+    /// from; [`state_jacobian_dual`](Self::state_jacobian_dual) is its reference.
     ///
-    /// This is the one function the steady turns take their linearisation from; a generated
-    /// Jacobian of the same right-hand side replaces it without other change.
+    /// # Errors
+    /// [`NonlinearError`] as [`StateRate::rates_with`] (no contact, a singular mass matrix).
     pub fn state_jacobian(
+        &self,
+        y: &[f64; rate::LEN],
+        torque: [f64; 2],
+    ) -> Result<[[f64; rate::LEN]; rate::LEN], NonlinearError> {
+        self.rate.jacobian_with(y, torque)
+    }
+
+    /// [`state_jacobian`](Self::state_jacobian) by forward-mode dual numbers through
+    /// `generated/whipple_nonlinear.ir` (the IR interpreter, no generated derivative) and the
+    /// same one-step projection of the pitch: exact to rounding, the reference the generated
+    /// Jacobian is checked against. `y`'s pitch must lie on the contact constraint.
+    pub fn state_jacobian_dual(
         &self,
         y: &[f64; rate::LEN],
         torque: [f64; 2],
@@ -649,15 +664,22 @@ impl TurnSolver {
 
     /// The $5\times5$ block of [`state_jacobian`](Self::state_jacobian) at `y` over
     /// [`REDUCED`] (lean, steer, lean rate, steer rate, rear wheel rate).
-    pub fn reduced_jacobian(&self, y: &[f64; rate::LEN], torque: [f64; 2]) -> SMatrix<f64, 5, 5> {
-        let j = self.state_jacobian(y, torque);
-        SMatrix::from_fn(|r, c| j[REDUCED[r]][REDUCED[c]])
+    ///
+    /// # Errors
+    /// As [`state_jacobian`](Self::state_jacobian).
+    pub fn reduced_jacobian(
+        &self,
+        y: &[f64; rate::LEN],
+        torque: [f64; 2],
+    ) -> Result<SMatrix<f64, 5, 5>, NonlinearError> {
+        let j = self.state_jacobian(y, torque)?;
+        Ok(SMatrix::from_fn(|r, c| j[REDUCED[r]][REDUCED[c]]))
     }
 
     /// The stability at the turn state `y` held by the steer torque `steer_torque`; `None` when
     /// the Schur iteration does not converge.
     fn stability(&self, y: &[f64; rate::LEN], steer_torque: f64) -> Option<Stability> {
-        let a = self.reduced_jacobian(y, [0.0, steer_torque]);
+        let a = self.reduced_jacobian(y, [0.0, steer_torque]).ok()?;
         let schur = nalgebra::Schur::try_new(a, 1e-15, 10_000)?;
         let mut ev: Vec<Complex<f64>> = schur.complex_eigenvalues().iter().copied().collect();
         let k = (0..ev.len()).min_by(|&i, &j| ev[i].norm().total_cmp(&ev[j].norm()))?;

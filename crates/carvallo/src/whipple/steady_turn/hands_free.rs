@@ -175,7 +175,7 @@ impl<'a> HandsFree<'a> {
         y[4] = z[2];
         y[9] = -z[0] / self.rr;
         y[super::rate::PITCH] = pitch;
-        let a = self.solver.reduced_jacobian(&y, [0.0, 0.0]);
+        let a = self.solver.reduced_jacobian(&y, [0.0, 0.0]).ok()?;
         let schur = nalgebra::Schur::try_new(a, 1e-15, 10_000)?;
         let mut ev: Vec<_> = schur.complex_eigenvalues().iter().copied().collect();
         let k = (0..ev.len()).min_by(|&i, &j| ev[i].norm().total_cmp(&ev[j].norm()))?;

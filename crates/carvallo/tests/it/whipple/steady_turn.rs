@@ -10,7 +10,9 @@
 //!   benchmark state matrix to 1e-12 per entry (relative to the largest entry of the row), and
 //!   the rear wheel rate neither drives nor is driven at first order; away from upright (a turn
 //!   of 0.3 rad with its torque, rates added) it equals central differences of the generated
-//!   right-hand side to 1e-6 of each row's largest entry.
+//!   right-hand side to 1e-6 of each row's largest entry. The generated Jacobian the stability
+//!   uses (`StateRate::jacobian_with`) equals the dual-number one at every turn of five speeds
+//!   and leans to 1e-12 of each row's largest entry.
 //! * Simulation: the nonlinear simulation (RK4, 1 ms, the steer torque held constant from the
 //!   start) started on the stable forward turn of the benchmark at 5 m/s and lean 0.05 rad stays
 //!   on it: lean, steer, lean and steer rates and speed within 1e-9 over 5 s; started 1e-7 rad
@@ -92,7 +94,7 @@ fn linearisation_about_upright_is_the_benchmark_state_matrix() {
     for speed in [2.0, 5.0, 8.0] {
         let mut y = [0.0; 11];
         y[9] = -speed / rr;
-        let j = s.reduced_jacobian(&y, [0.0, 0.0]);
+        let j = s.reduced_jacobian(&y, [0.0, 0.0]).expect("the Jacobian");
         let a = state_matrix(&m, g, speed);
         for r in 0..4 {
             let scale = (0..4).map(|c| a[(r, c)].abs()).fold(1.0, f64::max);
@@ -128,7 +130,7 @@ fn the_jacobian_away_from_upright_is_the_generated_right_hand_sides_derivative()
     // Keep the pitch on the constraint at the perturbed state.
     y[10] = rate.project(y[3], y[10], y[4]).expect("contact");
     let torque = [0.0, t.steer_torque];
-    let j = s.state_jacobian(&y, torque);
+    let j = s.state_jacobian_dual(&y, torque);
     let f = |y: &[f64; 11]| {
         rate.rates_with(y, &mut |_| Ok(torque)).expect("the right-hand side").derivative
     };
@@ -148,6 +150,31 @@ fn the_jacobian_away_from_upright_is_the_generated_right_hand_sides_derivative()
             );
         }
     }
+}
+
+#[test]
+fn the_generated_jacobian_is_the_dual_number_one_at_turns() {
+    // The generated Jacobian (scene! jacobian, what the stability uses) against dual numbers
+    // through the IR interpreter, at turns of every kind (forward, reversed, near the fork's
+    // pole) and upright, with their steer torques: relative 1e-12 of each row's largest entry.
+    let s = benchmark();
+    let mut worst = 0.0f64;
+    for (speed, lean) in [(5.0, 0.0), (5.0, 0.05), (3.0, 0.2), (10.0, 0.3), (6.0, -0.4)] {
+        for t in s.turns(speed, lean).expect("turns").turns {
+            let mut y = [0.0; 11];
+            (y[3], y[4], y[9], y[10]) = (t.lean, t.steer, t.rear_wheel_rate, t.pitch);
+            let torque = [0.0, t.steer_torque];
+            let generated = s.state_jacobian(&y, torque).expect("the generated Jacobian");
+            let dual = s.state_jacobian_dual(&y, torque);
+            for (g, d) in generated.iter().zip(&dual) {
+                let scale = d.iter().fold(1.0f64, |m, x| m.max(x.abs()));
+                for (a, b) in g.iter().zip(d) {
+                    worst = worst.max((a - b).abs() / scale);
+                }
+            }
+        }
+    }
+    assert!(worst <= 1e-12, "largest difference {worst:e}");
 }
 
 /// The state of `t` as a simulation start.
