@@ -78,10 +78,12 @@ enum Command {
     Simulate(simulate::Args),
     /// Steady turns with the handlebar held (memoir n° 79-106): Carvallo's bicycle, or every
     /// turn of the nonlinear bicycle at a speed and lean, with its stability
-    #[command(override_usage = "carvallo turn --model carvallo --gamma <DEG> --speed <V> [--json]\n       \
+    #[command(
+        override_usage = "carvallo turn --model carvallo --gamma <DEG> --speed <V> [--json]\n       \
         carvallo turn --model <MODEL> --speed <V> --lean <RAD> [--steer <RAD>] [RIDER] [--json]\n       \
         carvallo turn --model <MODEL> --hands-free [RIDER] [--json]\n\
-        RIDER: [--rider <FILE.txt> [--rider-config <FILE.txt>] [--measured <FILE.txt>]] [--strict]")]
+        RIDER: [--rider <FILE.txt> [--rider-config <FILE.txt>] [--measured <FILE.txt>]] [--strict]"
+    )]
     Turn(turn::Args),
     /// The handlebar's rest position at a lean (memoir n° 67)
     Rest(rest::Args),
