@@ -1,7 +1,9 @@
 //! Steady turns of the nonlinear Carvallo–Whipple bicycle with the handlebar held by a constant
 //! torque: the memoir's chapter IV (n° 79–106, the conversions; n° 99–105 the handlebar held)
 //! for any parameter set of the 2007 benchmark, not only Carvallo's own bicycle
-//! ([`crate::bicycle::turn`]).
+//! ([`crate::bicycle::turn`]). Beside it: [`lean_rider`], the same for Moore's leaning rider
+//! (the torso's lean one more unknown), and [`hands_free`], the turns without steer torque as
+//! families followed from their branch points on upright running.
 //!
 //! # The turn
 //!

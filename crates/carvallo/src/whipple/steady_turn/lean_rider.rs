@@ -15,7 +15,7 @@
 //! the torso's lean solves $f_{q_9} = 0$ (Newton from the neighbouring steer's, so the torso
 //! stays on the branch that starts upright); the roll row
 //! $F(q_7) = f_{q_4}(q_4, q_5(q_7), q_7, q_9(q_7))$ is then scanned and refined as the
-//! bicycle's ([`super::steer_roots`]), with
+//! bicycle's (a scan of the steer and a safeguarded Newton), with
 //! $dF/dq_7 = \partial_7 f_{q_4} - \partial_9 f_{q_4}\,\partial_7 f_{q_9}/\partial_9 f_{q_9}$
 //! (the implicit function theorem on the torso's equation, the pitch's derivative by the same
 //! theorem on the constraint) from forward-mode dual numbers through the program.
