@@ -197,6 +197,11 @@ def closed_loop_eigenvalues(
 def eigenvalues(params: Params, speeds: Speeds, strict: bool = False) -> npt.NDArray[np.complex128]:
     """Eigenvalues at each speed, shape (n, 4), sorted by real then imaginary part."""
 
+def steady_turn(
+    params: Params, speed: float, lean: float, steer: float | None = None, strict: bool = False
+) -> list[dict[str, object]]:
+    """Every steady turn at the rear contact's speed and the lean, by increasing steer."""
+
 def window(params: Params, strict: bool = False) -> dict[str, object]:
     """{"weave_speed", "capsize_speed", "stable": [(from, to), ...]} in m/s (None if none)."""
 

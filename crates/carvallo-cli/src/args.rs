@@ -195,7 +195,7 @@ pub fn side_view(
 pub const LEAN_RIDER: &str = "lean-rider";
 
 /// The commands that take the leaning rider, for the error of the others.
-pub const LEAN_RIDER_COMMANDS: &str = "eig, window, statespace, bode and simulate";
+pub const LEAN_RIDER_COMMANDS: &str = "eig, window, statespace, bode, simulate and turn";
 
 /// The leaning rider when `model` names it: `lean-rider`, or a parameter file in Moore's names
 /// ([`LeanRiderParams::looks_like`]); `None` for any other model. `--rider` and `--strict`

@@ -76,7 +76,14 @@ enum Command {
     Accel(accel::Args),
     /// Simulate the nonlinear bicycle (time series, energy drift)
     Simulate(simulate::Args),
-    /// A steady turn with the handlebar held (memoir n° 99-105)
+    /// Steady turns with the handlebar held (memoir n° 79-106): Carvallo's bicycle, or every
+    /// turn of the nonlinear bicycle at a speed and lean, with its stability
+    #[command(
+        override_usage = "carvallo turn --model carvallo --gamma <DEG> --speed <V> [--json]\n       \
+        carvallo turn --model <MODEL> --speed <V> --lean <RAD> [--steer <RAD>] [RIDER] [--json]\n       \
+        carvallo turn --model <MODEL> --hands-free [RIDER] [--json]\n\
+        RIDER: [--rider <FILE.txt> [--rider-config <FILE.txt>] [--measured <FILE.txt>]] [--strict]"
+    )]
     Turn(turn::Args),
     /// The handlebar's rest position at a lean (memoir n° 67)
     Rest(rest::Args),
@@ -149,6 +156,11 @@ impl Command {
         match out {
             Ok(text) => print(&text),
             // A bad file is named in one message; the usage is for a bad command line.
+            // A solver that failed is not the user's error.
+            Err(err) if err.starts_with(turn::SOLVER_FAILURE) => {
+                error(&err);
+                ExitCode::FAILURE
+            }
             Err(err) if args::is_data_error(&err) => {
                 error(&err);
                 ExitCode::from(2)

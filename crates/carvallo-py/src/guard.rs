@@ -195,6 +195,8 @@ pub(crate) mod arg {
     named! {
         speed: f64 = real;
         lean0: f64 = real;
+        lean: f64 = real;
+        steer: Option<f64> = optional_real;
         fall_angle: f64 = real;
         steer_lock: f64 = real;
         duration: f64 = real;

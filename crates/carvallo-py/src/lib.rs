@@ -23,6 +23,8 @@ mod python;
 #[cfg(feature = "python")]
 mod rolling;
 #[cfg(feature = "python")]
+mod steady_turn;
+#[cfg(feature = "python")]
 mod yeadon;
 
 /// The parameter name as written by the user: the benchmark's (`lambda`) or BicycleParameters'

@@ -1585,6 +1585,7 @@ fn carvallo_module(m: &Bound<'_, PyModule>) -> PyResult<()> {
     m.add_function(wrap_pyfunction!(monte_carlo, m)?)?;
     m.add_function(wrap_pyfunction!(eigenvalue_bands, m)?)?;
     crate::rolling::register(m)?;
+    crate::steady_turn::register(m)?;
     crate::lean_rider::register(m)?;
     crate::yeadon::register(m)?;
     register_plot(m)?;

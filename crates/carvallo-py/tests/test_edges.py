@@ -87,6 +87,7 @@ CHILD = textwrap.dedent(
         "sweep": dict(params=B, name="w", start=0.9, stop=1.1, count=100),
         "simulate": dict(params=B, speed=5.0, lean0=0.01, duration=0.2, every=10, fall_angle=1.2,
                          steer_lock=1.4),
+        "steady_turn": dict(params=B, speed=5.0, lean=0.05),
         "simulate_many": dict(params=B, speeds=[5.0, 4.0], lean0s=[0.01, 0.02], duration=0.2),
         "report": {},
         "speed_gradients": dict(params=B),

@@ -338,7 +338,7 @@ impl LeanGains {
 
 /// The arithmetic the right-hand side is written in: `f64` for evaluation, [`Dual`] for the
 /// linearisation.
-trait Real:
+pub(crate) trait Real:
     Copy + Add<Output = Self> + Sub<Output = Self> + Mul<Output = Self> + Div<Output = Self>
 {
     fn sin(self) -> Self;
@@ -388,7 +388,7 @@ fn solve4<T: Real>(mut m: [[T; 4]; 4], mut f: [T; 4]) -> [T; 4] {
 
 /// The state derivative from the outputs of [`dynamics_scene`] (its `OUTPUTS` order) at the
 /// state `x` (12 components, Moore's order).
-fn assemble<T: Real>(o: &[T; 19], x: &[T; 12]) -> [T; 13] {
+pub(crate) fn assemble<T: Real>(o: &[T; 19], x: &[T; 12]) -> [T; 13] {
     let m = [
         [o[0], o[1], o[2], o[3]],
         [o[1], o[4], o[5], o[6]],
@@ -416,7 +416,7 @@ fn assemble<T: Real>(o: &[T; 19], x: &[T; 12]) -> [T; 13] {
 }
 
 /// The program `generated/lean_rider.ir`, parsed once.
-fn program() -> &'static Program {
+pub(crate) fn program() -> &'static Program {
     static PROGRAM: OnceLock<Program> = OnceLock::new();
     PROGRAM.get_or_init(|| {
         Program::parse(crate::artifacts::LEAN_RIDER.ir).expect("the committed program parses")

@@ -18,7 +18,8 @@
 //! parameter uncertainties), [`parameter_text`] (BicycleParameters' text format), [`plant`]
 //! (the state space with roll and steer torques as inputs), [`transfer`] (its transfer
 //! functions and frequency responses) and [`feedback`] (state feedback: closed-loop
-//! eigenvalues and stable speed ranges) and [`drawing`] (the points of a side view).
+//! eigenvalues and stable speed ranges), [`steady_turn`] (the steady turns of the nonlinear
+//! model with their contact forces and stability) and [`drawing`] (the points of a side view).
 
 mod design;
 mod matrices;
@@ -38,6 +39,7 @@ pub mod plant;
 pub mod raw;
 pub mod response;
 pub mod stability;
+pub mod steady_turn;
 pub mod sweep;
 pub mod transfer;
 pub mod uncertainty;

@@ -2,7 +2,8 @@
 //! name ([`design`]), the stability
 //! windows and sweeps ([`stability`]), the uncertainty bands ([`uncertainty`]) and the
 //! nonlinear equations against the linearisation ([`nonlinear`]) and against Basu-Mandal et
-//! al.'s circular motion ([`basu_mandal`]).
+//! al.'s circular motion ([`basu_mandal`]), and the steady turns of the nonlinear model against
+//! the linear static solution, simulations and Carvallo's own bicycle ([`steady_turn`]).
 
 mod basu_mandal;
 mod bicycleparameters;
@@ -13,4 +14,5 @@ mod nonlinear;
 mod params;
 mod reader_fuzz;
 mod stability;
+mod steady_turn;
 mod uncertainty;

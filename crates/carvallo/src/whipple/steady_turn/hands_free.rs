@@ -1,0 +1,347 @@
+//! Hands-free steady turns (memoir n° 97: «sans les mains»): the turns that need no steer
+//! torque, $f_{3,1} = f_{3,2} = 0$ (rows lean and steer, [`super`]), two equations in the
+//! speed, the lean and the steer, so curves in $(v, \varphi, \delta)$, the pitch solved from the
+//! front contact at every point.
+//!
+//! Upright running, straight ahead ($\varphi = \delta = 0$) or with the handlebar reversed
+//! ($\delta = \pi$), solves both equations at every speed: two lines of solutions. The curved
+//! families branch from them where the Jacobian of the two rows in (lean, steer) is singular;
+//! on the forward line that Jacobian is $-(gK_0 + v^2K_2)$ (the linearised model's static
+//! stiffness), whose determinant, the characteristic polynomial's constant term, is affine in
+//! $v^2$ ($K_2$'s first column is zero): one branch point, at the capsize speed.
+//! [`HandsFree::branch_speeds`] finds the branch points of a line by a scan of that
+//! determinant (dual-number Jacobian of the nonlinear rows, not the linear matrices) and
+//! bisection.
+//!
+//! A family is followed from a branch point by pseudo-arclength continuation
+//! ([`HandsFree::family`]): a first point off the line along the null vector of the stiffness
+//! (the lean fixed, Newton on speed and steer), then predictor steps along the unit tangent
+//! $t$ (the cross product of the two rows' gradients, oriented as the step before) and Newton
+//! corrections on $F = 0$, $t\cdot(z - z_0) = h$ in $z = (v, \varphi, \delta)$, the step $h$
+//! halved when Newton fails and grown after easy steps. Along the curve: folds in speed or in
+//! lean (the tangent's speed or lean component changing sign) and branch points (the
+//! unoriented tangent $\nabla F_1 \times \nabla F_2$ turning against the oriented one: the
+//! cross product passes through zero there). Every point carries its stability with no steer
+//! torque (the eigenvalues of [`super::TurnSolver::reduced_jacobian`], the family's zero set
+//! aside).
+
+use carvallo_ir::dual::Dual;
+use nalgebra::{Matrix3, Vector3};
+
+use super::{TurnError, TurnSolver};
+
+/// One point of a hands-free family.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct CurvePoint {
+    /// The rear contact's speed (m/s).
+    pub speed: f64,
+    /// Lean (rad).
+    pub lean: f64,
+    /// Steer (rad, in $(-\pi, \pi]$).
+    pub steer: f64,
+    /// Pitch (rad).
+    pub pitch: f64,
+    /// Whether the turn is stable with no steer torque.
+    pub stable: bool,
+    /// The largest real part of its four eigenvalues (1/s).
+    pub growth: f64,
+}
+
+/// A special point of a family: its index in [`Family::points`] (the point after it).
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum Special {
+    /// The speed turns back.
+    SpeedFold(usize),
+    /// The lean turns back.
+    LeanFold(usize),
+    /// Another family crosses.
+    Branch(usize),
+    /// The stability changes.
+    StabilityChange(usize),
+}
+
+/// Why a family's continuation stopped.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum End {
+    /// The next point's speed would leave $(0,$ [`MAX_SPEED`]$]$.
+    Speed,
+    /// The next point's lean would reach [`MAX_LEAN`].
+    Lean,
+    /// The step fell below its least size (a pole of the equations, the fork across the frame,
+    /// or the front contact lost).
+    Stuck,
+    /// The number of steps was reached.
+    Steps,
+}
+
+/// A family of hands-free turns followed from a branch point.
+#[derive(Clone, Debug, PartialEq)]
+pub struct Family {
+    /// The speed of the branch point on the upright line (m/s).
+    pub branch_speed: f64,
+    /// The steer of the upright line (0 or π).
+    pub line_steer: f64,
+    /// The points, from the branch point on.
+    pub points: Vec<CurvePoint>,
+    /// Folds, branch points and changes of stability along it.
+    pub special: Vec<Special>,
+    /// Why it stopped.
+    pub end: End,
+}
+
+/// The largest speed a family is followed to (m/s).
+pub const MAX_SPEED: f64 = 20.0;
+/// The lean at which a family stops (rad): the nonlinear model's fall angle.
+pub const MAX_LEAN: f64 = 1.2;
+/// The most continuation steps of a family.
+pub const MAX_STEPS: usize = 2000;
+
+/// The hands-free turns of one bicycle.
+#[derive(Debug)]
+pub struct HandsFree<'a> {
+    solver: &'a TurnSolver,
+    rr: f64,
+}
+
+impl<'a> HandsFree<'a> {
+    /// The hands-free turns of the bicycle of `solver`.
+    pub fn new(solver: &'a TurnSolver) -> HandsFree<'a> {
+        HandsFree { solver, rr: solver.param("rR") }
+    }
+
+    /// The two rows $(f_{3,1}, f_{3,2})$ at $z = (v, \varphi, \delta)$ with their gradients
+    /// in $z$, and the pitch (solved by Newton from `guess`).
+    fn rows(&self, z: [f64; 3], guess: f64) -> Option<([Dual<3>; 2], f64)> {
+        let pitch = self.solver.bike().pitch(z[1], z[2], guess).ok()?;
+        let v = Dual::<3>::variable(z[0], 0);
+        let t = self.solver.terms(
+            Dual::variable(z[1], 1),
+            Dual::constant(pitch),
+            Dual::variable(z[2], 2),
+            [Dual::constant(0.0), Dual::constant(0.0), v.scale(-1.0 / self.rr)],
+        );
+        let ok =
+            t.forcing.iter().all(|f| f.value.is_finite() && f.grad.iter().all(|g| g.is_finite()));
+        ok.then_some(([t.forcing[0], t.forcing[1]], t.pitch.value))
+    }
+
+    /// The determinant of the rows' Jacobian in (lean, steer) on the upright line of steer
+    /// `line_steer` at `speed`.
+    pub fn line_determinant(&self, speed: f64, line_steer: f64) -> Option<f64> {
+        let (f, _) = self.rows([speed, 0.0, line_steer], 0.0)?;
+        Some(f[0].grad[1] * f[1].grad[2] - f[0].grad[2] * f[1].grad[1])
+    }
+
+    /// The speeds in `(0, max]` (m/s) where a family branches from the upright line of steer
+    /// `line_steer` (0: straight ahead, π: the handlebar reversed): the sign changes of
+    /// [`line_determinant`](Self::line_determinant) on 2000 steps of speed, bisected to
+    /// $10^{-14}$ relative.
+    pub fn branch_speeds(&self, line_steer: f64, max: f64) -> Vec<f64> {
+        let n = 2000;
+        let at = |k: usize| max * k as f64 / n as f64;
+        let det = |v: f64| self.line_determinant(v, line_steer);
+        let mut out = Vec::new();
+        let mut prev = det(at(1)).map(|d| (at(1), d));
+        for k in 2..=n {
+            let here = det(at(k)).map(|d| (at(k), d));
+            if let (Some((a, da)), Some((b, db))) = (prev, here) {
+                if da == 0.0 {
+                    out.push(a);
+                } else if da * db < 0.0 {
+                    let (mut lo, mut hi, mut dlo) = (a, b, da);
+                    while hi - lo > 1e-14 * hi {
+                        let mid = 0.5 * (lo + hi);
+                        match det(mid) {
+                            Some(d) if (d < 0.0) == (dlo < 0.0) => {
+                                lo = mid;
+                                dlo = d;
+                            }
+                            Some(_) => hi = mid,
+                            None => break,
+                        }
+                    }
+                    out.push(0.5 * (lo + hi));
+                }
+            }
+            prev = here;
+        }
+        out
+    }
+
+    /// The point at `z` with its stability with no steer torque.
+    fn point(&self, z: [f64; 3], pitch: f64) -> Option<CurvePoint> {
+        let mut y = [0.0; super::rate::LEN];
+        y[3] = z[1];
+        y[4] = z[2];
+        y[9] = -z[0] / self.rr;
+        y[super::rate::PITCH] = pitch;
+        let a = self.solver.reduced_jacobian(&y, [0.0, 0.0]).ok()?;
+        let schur = nalgebra::Schur::try_new(a, 1e-15, 10_000)?;
+        let mut ev: Vec<_> = schur.complex_eigenvalues().iter().copied().collect();
+        let k = (0..ev.len()).min_by(|&i, &j| ev[i].norm().total_cmp(&ev[j].norm()))?;
+        ev.remove(k);
+        let growth = ev.iter().map(|e| e.re).fold(f64::NEG_INFINITY, f64::max);
+        // The steer in (-pi, pi] (the continuation carries it unwrapped).
+        let pi = std::f64::consts::PI;
+        let mut steer = z[2];
+        while steer > pi {
+            steer -= 2.0 * pi;
+        }
+        while steer <= -pi {
+            steer += 2.0 * pi;
+        }
+        Some(CurvePoint { speed: z[0], lean: z[1], steer, pitch, stable: growth < 0.0, growth })
+    }
+
+    /// The unoriented tangent $\nabla F_1\times\nabla F_2$ at `f`.
+    fn cross(f: &[Dual<3>; 2]) -> Vector3<f64> {
+        Vector3::from(f[0].grad).cross(&Vector3::from(f[1].grad))
+    }
+
+    /// Newton on $F(z) = 0$, $t\cdot(z - z_0) = h$ from `z`; the point, its rows and pitch.
+    fn correct(
+        &self,
+        z0: Vector3<f64>,
+        t: Vector3<f64>,
+        h: f64,
+        guess: f64,
+    ) -> Option<(Vector3<f64>, [Dual<3>; 2], f64)> {
+        let mut z = z0 + h * t;
+        let mut pitch = guess;
+        let scale = self.solver.scale;
+        for _ in 0..12 {
+            let (f, p) = self.rows([z[0], z[1], z[2]], pitch)?;
+            pitch = p;
+            let g = Vector3::new(f[0].value, f[1].value, t.dot(&(z - z0)) - h);
+            let j = Matrix3::from_rows(&[
+                Vector3::from(f[0].grad).transpose(),
+                Vector3::from(f[1].grad).transpose(),
+                t.transpose(),
+            ]);
+            let dz = j.lu().solve(&(-g))?;
+            z += dz;
+            if dz.norm() <= 1e-13 * (1.0 + z.norm()) {
+                let (f, p) = self.rows([z[0], z[1], z[2]], pitch)?;
+                let small = f.iter().all(|r| r.value.abs() <= super::ROOT_TOLERANCE * scale);
+                return small.then_some((z, f, p));
+            }
+        }
+        None
+    }
+
+    /// The family that branches from the upright line of steer `line_steer` at the speed
+    /// `branch_speed` (a root of [`branch_speeds`](Self::branch_speeds)), followed towards
+    /// positive lean.
+    ///
+    /// # Errors
+    /// [`TurnError::Solver`] when no first point off the line can be found.
+    pub fn family(&self, line_steer: f64, branch_speed: f64) -> Result<Family, TurnError> {
+        let fail = |reason| TurnError::Solver { reason, steer: line_steer };
+        // The null vector of the stiffness in (lean, steer) at the branch point.
+        let (f, _) = self
+            .rows([branch_speed, 0.0, line_steer], 0.0)
+            .ok_or(fail("no contact at the branch point"))?;
+        let (a, b) = (f[0].grad, f[1].grad);
+        let null = if a[1].abs() + a[2].abs() >= b[1].abs() + b[2].abs() {
+            (-a[2], a[1])
+        } else {
+            (-b[2], b[1])
+        };
+        let norm = null.0.hypot(null.1);
+        let (dl, ds) = if null.0 >= 0.0 {
+            (null.0 / norm, null.1 / norm)
+        } else {
+            (-null.0 / norm, -null.1 / norm)
+        };
+        // The first point: the lean fixed a little off the line, Newton on (speed, steer).
+        let eps = 1e-3;
+        let lean = eps * dl;
+        let mut v = branch_speed;
+        let mut steer = line_steer + eps * ds;
+        let mut pitch = 0.0;
+        let mut found = false;
+        for _ in 0..30 {
+            let Some((f, p)) = self.rows([v, lean, steer], pitch) else { break };
+            pitch = p;
+            let (j11, j12, j21, j22) = (f[0].grad[0], f[0].grad[2], f[1].grad[0], f[1].grad[2]);
+            let det = j11 * j22 - j12 * j21;
+            let dv = -(j22 * f[0].value - j12 * f[1].value) / det;
+            let dst = -(-j21 * f[0].value + j11 * f[1].value) / det;
+            if !(dv.is_finite() && dst.is_finite()) {
+                break;
+            }
+            v += dv;
+            steer += dst;
+            if dv.abs() + dst.abs() <= 1e-13 * (1.0 + v.abs()) {
+                found = true;
+                break;
+            }
+        }
+        if !found {
+            return Err(fail("no first point off the upright line"));
+        }
+        let start = self
+            .point([branch_speed, 0.0, line_steer], 0.0)
+            .ok_or(fail("no stability at the branch point"))?;
+        let mut points = vec![start];
+        let mut special = Vec::new();
+        let mut z = Vector3::new(v, lean, steer);
+        let (f, _) =
+            self.rows([v, lean, steer], pitch).ok_or(fail("the first point has no contact"))?;
+        let raw = Self::cross(&f);
+        // Oriented towards growing lean.
+        let mut sign = if raw[1] >= 0.0 { 1.0 } else { -1.0 };
+        let mut t = sign * raw.normalize();
+        points.push(
+            self.point([v, lean, steer], pitch).ok_or(fail("no stability at the first point"))?,
+        );
+        let (h_min, h_max) = (1e-6, 0.05);
+        let mut h = 0.01;
+        let mut end = End::Steps;
+        for _ in 0..MAX_STEPS {
+            let step = self.correct(z, t, h, pitch);
+            let Some((zn, f, p)) = step else {
+                h *= 0.5;
+                if h < h_min {
+                    end = End::Stuck;
+                    break;
+                }
+                continue;
+            };
+            if zn[0] <= 0.0 || zn[0] > MAX_SPEED {
+                end = End::Speed;
+                break;
+            }
+            if zn[1].abs() >= MAX_LEAN {
+                end = End::Lean;
+                break;
+            }
+            let raw = Self::cross(&f);
+            let oriented = if raw.dot(&t) >= 0.0 { 1.0 } else { -1.0 };
+            let tn = oriented * raw.normalize();
+            let k = points.len();
+            if oriented * sign < 0.0 {
+                // The cross product turned against the curve's direction: it passed zero.
+                special.push(Special::Branch(k));
+            }
+            sign = oriented;
+            if tn[0] * t[0] < 0.0 {
+                special.push(Special::SpeedFold(k));
+            }
+            if tn[1] * t[1] < 0.0 {
+                special.push(Special::LeanFold(k));
+            }
+            let pt =
+                self.point([zn[0], zn[1], zn[2]], p).ok_or(fail("no stability on the family"))?;
+            if pt.stable != points[k - 1].stable {
+                special.push(Special::StabilityChange(k));
+            }
+            points.push(pt);
+            z = zn;
+            t = tn;
+            pitch = p;
+            h = (h * 1.5).min(h_max);
+        }
+        Ok(Family { branch_speed, line_steer, points, special, end })
+    }
+}
