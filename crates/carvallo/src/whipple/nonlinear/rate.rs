@@ -270,17 +270,18 @@ impl StateRate {
             let out = project_jacobian_scene::eval_array(&a);
             (out[0], out[1], project_jacobian_scene::jacobian_array(&out))
         };
-        let pitch = self.project(lean, y[PITCH], steer)?;
         let (h, dh, hd) = h_at(y[PITCH]);
-        // d theta* / d (lean, pitch, steer).
-        let dproj: [f64; 3] = if (h / dh).abs() <= 1e-7 {
-            std::array::from_fn(|k| {
+        // The projected pitch (as `project` computes it) and d theta* / d (lean, pitch, steer).
+        let (pitch, dproj) = if (h / dh).abs() <= 1e-7 {
+            let d: [f64; 3] = std::array::from_fn(|k| {
                 let own = if k == 1 { 1.0 } else { 0.0 };
                 own - (hd[0][k] * dh - h * hd[1][k]) / (dh * dh)
-            })
+            });
+            (y[PITCH] - h / dh, d)
         } else {
+            let pitch = self.project(lean, y[PITCH], steer)?;
             let (_, dh, hd) = h_at(pitch);
-            [-hd[0][0] / dh, 0.0, -hd[0][2] / dh]
+            (pitch, [-hd[0][0] / dh, 0.0, -hd[0][2] / dh])
         };
         // The kernel and its derivatives with respect to z = (lean, pitch, steer, u).
         let u = [y[7], y[8], y[9]];
