@@ -345,15 +345,19 @@ fn hands_free(c: &Args) -> Result<String, String> {
     let params = crate::args::bicycle(&c.model, &c.data)?;
     let solver = TurnSolver::new(&params).map_err(|e| e.to_string())?;
     let hf = HandsFree::new(&solver);
-    let mut families = Vec::new();
-    for (line, name) in
-        [(0.0, "straight ahead (steer 0)"), (std::f64::consts::PI, "handlebar reversed (steer pi)")]
-    {
-        for vb in hf.branch_speeds(line, hands_free::MAX_SPEED) {
-            let f = hf.family(line, vb).map_err(|e| e.to_string())?;
-            families.push((name, f));
-        }
-    }
+    let families: Vec<(&str, Family)> = hf
+        .families()
+        .map_err(|e| e.to_string())?
+        .into_iter()
+        .map(|f| {
+            let name = if f.line_steer == hands_free::LINES[0] {
+                "straight ahead (steer 0)"
+            } else {
+                "handlebar reversed (steer pi)"
+            };
+            (name, f)
+        })
+        .collect();
     let label = c.data.label(&c.model);
     let at = |f: &Family, k: usize| {
         let p = &f.points[k.min(f.points.len() - 1)];

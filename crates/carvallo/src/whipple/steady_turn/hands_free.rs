@@ -95,6 +95,8 @@ pub const MAX_SPEED: f64 = 20.0;
 pub const MAX_LEAN: f64 = 1.2;
 /// The most continuation steps of a family.
 pub const MAX_STEPS: usize = 2000;
+/// The steer of the two upright lines: straight ahead (0) and the handlebar reversed (π).
+pub const LINES: [f64; 2] = [0.0, std::f64::consts::PI];
 
 /// The hands-free turns of one bicycle.
 #[derive(Debug)]
@@ -166,6 +168,21 @@ impl<'a> HandsFree<'a> {
             prev = here;
         }
         out
+    }
+
+    /// Every family that branches from the upright [`LINES`] below [`MAX_SPEED`], in the
+    /// order of the lines and, on each, of the branch speeds.
+    ///
+    /// # Errors
+    /// [`TurnError::Solver`] when a family has no first point off its line.
+    pub fn families(&self) -> Result<Vec<Family>, TurnError> {
+        let mut out = Vec::new();
+        for line in LINES {
+            for vb in self.branch_speeds(line, MAX_SPEED) {
+                out.push(self.family(line, vb)?);
+            }
+        }
+        Ok(out)
     }
 
     /// The point at `z` with its stability with no steer torque.
