@@ -436,19 +436,22 @@ mod tests {
     }
 }
 
-/// The name of an upright line of [`hands_free::LINES`] for the legend.
-fn line_name(line_steer: f64) -> &'static str {
-    if line_steer == hands_free::LINES[0] {
-        "handlebar forward"
+/// The name of a family for the legend: its upright line of [`hands_free::LINES`], or, for the
+/// `k`-th family meeting neither, `isolated k`.
+fn line_name(f: &hands_free::Family, k: usize) -> String {
+    if f.is_isolated() {
+        format!("isolated {k}")
+    } else if f.line_steer == hands_free::LINES[0] {
+        "handlebar forward".to_string()
     } else {
-        "handlebar reversed"
+        "handlebar reversed".to_string()
     }
 }
 
 /// The hands-free steady turns of the bicycle `p` named `name` in the speed–lean plane
 /// ([`HandsFree::families`]: every family followed from its branch point on upright running,
-/// straight ahead and with the handlebar reversed, towards positive lean; the families are
-/// symmetric in the lean): each family in its colour, solid where the turn is stable with no
+/// straight ahead and with the handlebar reversed, towards positive lean, and those meeting
+/// neither line, found by a scan; the families are symmetric in the lean): each family in its colour, solid where the turn is stable with no
 /// steer torque, dashed where it is not, its branch point named with its speed, and its folds
 /// in speed or lean and its branch points along it marked.
 pub(super) fn fig_hands_free(p: &WhippleParams, name: &str) -> Result<String> {
@@ -469,7 +472,7 @@ pub(super) fn fig_hands_free(p: &WhippleParams, name: &str) -> Result<String> {
         c.label_at((0.05 * v_max, 0.5 * lean_max), "no family branches below 20 m/s", (0, 0));
     }
     for (i, f) in families.iter().enumerate() {
-        let line = line_name(f.line_steer);
+        let line = line_name(f, 1 + families[..i].iter().filter(|g| g.is_isolated()).count());
         let (mut stable_named, mut unstable_named) = (false, false);
         let mut k = 0;
         while k < f.points.len() {
@@ -494,11 +497,13 @@ pub(super) fn fig_hands_free(p: &WhippleParams, name: &str) -> Result<String> {
             c.add(Curve::new(label, run, color(i), stroke));
             k = end + 1;
         }
-        c.mark_at(
-            (f.branch_speed, 0.0),
-            format!("{} m/s", trim_to(f.branch_speed, 3)),
-            if i % 2 == 0 { (-40, -22) } else { (6, -22) },
-        );
+        if !f.is_isolated() {
+            c.mark_at(
+                (f.branch_speed, 0.0),
+                format!("{} m/s", trim_to(f.branch_speed, 3)),
+                if i % 2 == 0 { (-40, -22) } else { (6, -22) },
+            );
+        }
         // Folds and branch points, one mark for points closer than 2 % of the axes.
         let mut marked: Vec<(f64, f64)> = Vec::new();
         for s in &f.special {

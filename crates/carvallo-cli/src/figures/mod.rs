@@ -134,10 +134,15 @@ mod tests {
         ] {
             assert!(texts.iter().any(|x| x == t), "{t} not in {texts:?}");
         }
-        // The forward family is stable nowhere; four folds are marked (one on the forward
-        // family, three on the reversed one after merging the two at 4.58 m/s).
+        // The forward family is stable nowhere; six folds are marked (one on the forward
+        // family, three on the reversed one after merging the two at 4.58 m/s, two on the
+        // first isolated one); the isolated families have no branch point.
         assert!(!texts.iter().any(|x| x == "handlebar forward, stable"), "{texts:?}");
-        assert_eq!(texts.iter().filter(|x| *x == "fold").count(), 4, "{texts:?}");
+        assert_eq!(texts.iter().filter(|x| *x == "fold").count(), 6, "{texts:?}");
+        for t in ["isolated 1, stable", "isolated 1, unstable", "isolated 2, unstable"] {
+            assert!(texts.iter().any(|x| x == t), "{t} not in {texts:?}");
+        }
+        assert_eq!(texts.iter().filter(|x| x.ends_with(" m/s")).count(), 2, "{texts:?}");
     }
 
     #[test]
