@@ -24,6 +24,11 @@
 //! cross product passes through zero there). Every point carries its stability with no steer
 //! torque (the eigenvalues of [`super::TurnSolver::reduced_jacobian`], the family's zero set
 //! aside).
+//!
+//! Families that meet neither upright line at a positive speed are found by
+//! [`HandsFree::isolated`]: a scan of the steer torque of the turns at one lean
+//! ([`SCAN_LEAN`]) over the speed, each sign change off the known families seeding a
+//! continuation followed both ways ([`HandsFree::through`]).
 
 use carvallo_ir::dual::Dual;
 use nalgebra::{Matrix3, Vector3};
