@@ -13,7 +13,8 @@
 //!
 //! The README's main command `report --out report` is among the examples; the directory it
 //! wrote is then checked (report sections, every linked figure an SVG with text, and the
-//! README's picture `docs/fig04bis_hoop_walking.svg` identical to the one written now).
+//! README's picture `docs/fig04bis_hoop_walking.svg` and the guide's hands-free figure
+//! `docs/guide/src/img/benchmark_hands_free.svg` identical to the ones written now).
 
 use std::path::{Path, PathBuf};
 use std::process::Command;
@@ -263,6 +264,14 @@ fn check_report_dir(out: &Path) {
     assert!(
         std::fs::read(&guide).unwrap() == std::fs::read(&docs).unwrap(),
         "docs/guide/src/img/fig04bis_hoop_walking.svg differs from docs/fig04bis_hoop_walking.svg"
+    );
+    // The guide's hands-free figure (docs/guide/src/bicycle-steady.md) is the report's.
+    let hands_free = docs.with_file_name("guide/src/img/benchmark_hands_free.svg");
+    assert!(
+        std::fs::read(&hands_free).unwrap()
+            == std::fs::read(out.join("benchmark_hands_free.svg")).unwrap(),
+        "docs/guide/src/img/benchmark_hands_free.svg differs from what `carvallo report --out` \
+         writes now: copy report/benchmark_hands_free.svg over it"
     );
 }
 

@@ -22,8 +22,10 @@
 //!
 //! `--model benchmark|FILE --hands-free [--json]`: the hands-free turns (no steer torque) as
 //! families in speed and lean from their branch points on upright running, straight ahead
-//! (at the capsize speed) and with the handlebar reversed, with their folds and stable points
-//! ([`carvallo::whipple::steady_turn::hands_free`]); the JSON has every point.
+//! (at the capsize speed) and with the handlebar reversed, and the families meeting neither
+//! (`isolated`, found by a scan of the turns at one lean; their `branch_speed` is null and
+//! `line_steer` the steer of the seed they were followed through), with their folds and
+//! stable points ([`carvallo::whipple::steady_turn::hands_free`]); the JSON has every point.
 //!
 //! Unknown, repeated or missing arguments, non-finite numbers, an out-of-range γ or lean, a
 //! negative speed (and a zero one for the nonlinear models), and a turn of Carvallo's bicycle
@@ -345,15 +347,21 @@ fn hands_free(c: &Args) -> Result<String, String> {
     let params = crate::args::bicycle(&c.model, &c.data)?;
     let solver = TurnSolver::new(&params).map_err(|e| e.to_string())?;
     let hf = HandsFree::new(&solver);
-    let mut families = Vec::new();
-    for (line, name) in
-        [(0.0, "straight ahead (steer 0)"), (std::f64::consts::PI, "handlebar reversed (steer pi)")]
-    {
-        for vb in hf.branch_speeds(line, hands_free::MAX_SPEED) {
-            let f = hf.family(line, vb).map_err(|e| e.to_string())?;
-            families.push((name, f));
-        }
-    }
+    let families: Vec<(&str, Family)> = hf
+        .families()
+        .map_err(|e| e.to_string())?
+        .into_iter()
+        .map(|f| {
+            let name = if f.is_isolated() {
+                "meeting no upright line"
+            } else if f.line_steer == hands_free::LINES[0] {
+                "straight ahead (steer 0)"
+            } else {
+                "handlebar reversed (steer pi)"
+            };
+            (name, f)
+        })
+        .collect();
     let label = c.data.label(&c.model);
     let at = |f: &Family, k: usize| {
         let p = &f.points[k.min(f.points.len() - 1)];
@@ -379,8 +387,9 @@ fn hands_free(c: &Args) -> Result<String, String> {
                     .collect();
                 json!({
                     "line": name,
+                    "isolated": f.is_isolated(),
                     "line_steer": f.line_steer,
-                    "branch_speed": f.branch_speed,
+                    "branch_speed": number(f.branch_speed),
                     "end": format!("{:?}", f.end).to_lowercase(),
                     "special": special,
                     "points": f.points.iter().map(|p| json!({
@@ -399,9 +408,19 @@ fn hands_free(c: &Args) -> Result<String, String> {
     }
     for (name, f) in &families {
         let last = f.points.last().map_or(f.branch_speed, |p| p.speed);
+        let from = match f.points.first() {
+            Some(p) if f.is_isolated() => format!(
+                "a family found by a scan at lean {} rad, from {:.4} m/s, lean {:.4} rad, steer \
+                 {:.4} rad",
+                hands_free::SCAN_LEAN,
+                p.speed,
+                p.lean,
+                p.steer
+            ),
+            _ => format!("a family branches at {:.6} m/s", f.branch_speed),
+        };
         s.push_str(&format!(
-            "{name}: a family branches at {:.6} m/s; {} points, followed to {last:.4} m/s ({})\n",
-            f.branch_speed,
+            "{name}: {from}; {} points, followed to {last:.4} m/s ({})\n",
             f.points.len(),
             match f.end {
                 End::Speed => "the speed's bound",

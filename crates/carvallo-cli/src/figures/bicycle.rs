@@ -3,12 +3,15 @@
 //! ([`carvallo::whipple::drawing::SideView`]), the eigenvalues against speed with each mode
 //! labelled as `carvallo::whipple::modes` labels it (weave, capsize, caster), and the Bode
 //! diagram (magnitude and phase, one panel each, on a logarithmic frequency axis labelled by
-//! decades) of several bicycles or riders at one or more speeds. `carvallo plot` draws them,
-//! and the report draws the geometry and the eigenvalues of its bicycle.
+//! decades) of several bicycles or riders at one or more speeds, and the hands-free steady
+//! turns in the speed–lean plane ([`fig_hands_free`]). `carvallo plot` draws the first three,
+//! and the report draws the geometry, the eigenvalues and the hands-free turns of its bicycle.
 
 use anyhow::{anyhow, Result};
 use carvallo::whipple::drawing::SideView;
 use carvallo::whipple::modes::ModeLabel;
+use carvallo::whipple::steady_turn::hands_free::{self, HandsFree, Special};
+use carvallo::whipple::steady_turn::TurnSolver;
 use carvallo::whipple::transfer::{FrequencyPoint, Input, Output};
 use carvallo::whipple::{Whipple, WhippleParams};
 use plotters::prelude::*;
@@ -313,6 +316,103 @@ pub fn fig_bode(
         c.label.clear();
     }
     Chart::render_stacked(&[magnitude, phase], 560)
+}
+
+/// The name of a family for the legend: its upright line of [`hands_free::LINES`], or, for the
+/// `k`-th family meeting neither, `isolated k`.
+fn line_name(f: &hands_free::Family, k: usize) -> String {
+    if f.is_isolated() {
+        format!("isolated {k}")
+    } else if f.line_steer == hands_free::LINES[0] {
+        "handlebar forward".to_string()
+    } else {
+        "handlebar reversed".to_string()
+    }
+}
+
+/// The hands-free steady turns of the bicycle `p` named `name` in the speed–lean plane
+/// ([`HandsFree::families`]: every family followed from its branch point on upright running,
+/// straight ahead and with the handlebar reversed, towards positive lean, and those meeting
+/// neither line, found by a scan; the families are symmetric in the lean): each family in its colour, solid where the turn is stable with no
+/// steer torque, dashed where it is not, its branch point named with its speed, and its folds
+/// in speed or lean and its branch points along it marked.
+pub(super) fn fig_hands_free(p: &WhippleParams, name: &str) -> Result<String> {
+    let solver = TurnSolver::new(p)?;
+    let families = HandsFree::new(&solver).families()?;
+    let points = || families.iter().flat_map(|f| f.points.iter());
+    let v_max = points().map(|q| q.speed).fold(1.0, f64::max).ceil();
+    let lean_max = (points().map(|q| q.lean).fold(0.1, f64::max) * 1.15).min(1.4);
+    let mut c = Chart::new(
+        &format!("{name}: hands-free steady turns (n° 97)"),
+        "rear contact's speed v (m/s)",
+        "lean φ (rad)",
+        0.0..v_max,
+        0.0..lean_max,
+    );
+    c.add(Curve::new("", vec![(0.0, 0.0), (v_max, 0.0)], BLACK, Stroke::Solid));
+    if families.is_empty() {
+        c.label_at((0.05 * v_max, 0.5 * lean_max), "no family branches below 20 m/s", (0, 0));
+    }
+    for (i, f) in families.iter().enumerate() {
+        let line = line_name(f, 1 + families[..i].iter().filter(|g| g.is_isolated()).count());
+        let (mut stable_named, mut unstable_named) = (false, false);
+        let mut k = 0;
+        while k < f.points.len() {
+            let stable = f.points[k].stable;
+            let mut end = k;
+            while end + 1 < f.points.len() && f.points[end + 1].stable == stable {
+                end += 1;
+            }
+            // Each run joined to the next one's first point, so that the curve is unbroken.
+            let run: Vec<(f64, f64)> = f.points[k..=(end + 1).min(f.points.len() - 1)]
+                .iter()
+                .map(|q| (q.speed, q.lean))
+                .collect();
+            let named = if stable { &mut stable_named } else { &mut unstable_named };
+            let label = if *named {
+                String::new()
+            } else {
+                format!("{line}, {}", if stable { "stable" } else { "unstable" })
+            };
+            *named = true;
+            let stroke = if stable { Stroke::Solid } else { Stroke::Dashed };
+            c.add(Curve::new(label, run, color(i), stroke));
+            k = end + 1;
+        }
+        if !f.is_isolated() {
+            c.mark_at(
+                (f.branch_speed, 0.0),
+                format!("{} m/s", trim_to(f.branch_speed, 3)),
+                if i % 2 == 0 { (-40, -22) } else { (6, -22) },
+            );
+        }
+        // Folds and branch points, one mark for points closer than 2 % of the axes.
+        let mut marked: Vec<(f64, f64)> = Vec::new();
+        for s in &f.special {
+            let (k, text) = match *s {
+                Special::SpeedFold(k) | Special::LeanFold(k) => (k, "fold"),
+                Special::Branch(k) => (k, "branch point"),
+                Special::StabilityChange(_) => continue,
+            };
+            let q = &f.points[k.min(f.points.len() - 1)];
+            let at = (q.speed, q.lean);
+            let near = |m: &(f64, f64)| {
+                (m.0 - at.0).abs() < 0.02 * v_max && (m.1 - at.1).abs() < 0.02 * lean_max
+            };
+            if marked.iter().any(near) {
+                continue;
+            }
+            marked.push(at);
+            c.mark_at(at, text, (6, -18));
+        }
+    }
+    c.legend = SeriesLabelPosition::UpperLeft;
+    c.render()
+}
+
+/// `x` with `digits` decimals.
+fn trim_to(x: f64, digits: usize) -> String {
+    format!("{x:.digits$}")
 }
 
 #[cfg(test)]

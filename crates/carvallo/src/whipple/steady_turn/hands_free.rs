@@ -24,6 +24,11 @@
 //! cross product passes through zero there). Every point carries its stability with no steer
 //! torque (the eigenvalues of [`super::TurnSolver::reduced_jacobian`], the family's zero set
 //! aside).
+//!
+//! Families that meet neither upright line at a positive speed are found by
+//! [`HandsFree::isolated`]: a scan of the steer torque of the turns at one lean
+//! ([`SCAN_LEAN`]) over the speed, each sign change off the known families seeding a
+//! continuation followed both ways ([`HandsFree::through`]).
 
 use carvallo_ir::dual::Dual;
 use nalgebra::{Matrix3, Vector3};
@@ -60,6 +65,25 @@ pub enum Special {
     StabilityChange(usize),
 }
 
+impl Special {
+    /// The same special point at the index `f(k)`.
+    fn map(self, f: impl Fn(usize) -> usize) -> Special {
+        match self {
+            Special::SpeedFold(k) => Special::SpeedFold(f(k)),
+            Special::LeanFold(k) => Special::LeanFold(f(k)),
+            Special::Branch(k) => Special::Branch(f(k)),
+            Special::StabilityChange(k) => Special::StabilityChange(f(k)),
+        }
+    }
+}
+
+impl Family {
+    /// Whether it was followed through a seed, not from a branch point on an upright line.
+    pub fn is_isolated(&self) -> bool {
+        self.branch_speed.is_nan()
+    }
+}
+
 /// Why a family's continuation stopped.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
 pub enum End {
@@ -74,12 +98,15 @@ pub enum End {
     Steps,
 }
 
-/// A family of hands-free turns followed from a branch point.
+/// A family of hands-free turns followed from a branch point, or through a seed
+/// ([`HandsFree::through`]).
 #[derive(Clone, Debug, PartialEq)]
 pub struct Family {
-    /// The speed of the branch point on the upright line (m/s).
+    /// The speed of the branch point on the upright line (m/s); NaN for a family followed
+    /// through a seed.
     pub branch_speed: f64,
-    /// The steer of the upright line (0 or π).
+    /// The steer of the upright line (0 or π); the seed's steer for a family followed through
+    /// a seed.
     pub line_steer: f64,
     /// The points, from the branch point on.
     pub points: Vec<CurvePoint>,
@@ -95,6 +122,32 @@ pub const MAX_SPEED: f64 = 20.0;
 pub const MAX_LEAN: f64 = 1.2;
 /// The most continuation steps of a family.
 pub const MAX_STEPS: usize = 2000;
+/// The lean of the scan of [`HandsFree::isolated`] (rad).
+pub const SCAN_LEAN: f64 = 0.3;
+/// The speed step of the scan of [`HandsFree::isolated`] (m/s).
+pub const SCAN_SPEED_STEP: f64 = 0.1;
+
+/// Whether `z` $= (v, \varphi, \delta)$ lies on `family`: within $10^{-2}$ of a segment
+/// between two consecutive points (the steer compared on the circle).
+fn on_family(family: &Family, z: [f64; 3]) -> bool {
+    let pi = std::f64::consts::PI;
+    let wrap = |a: f64| (a + pi).rem_euclid(2.0 * pi) - pi;
+    family.points.windows(2).any(|w| {
+        let a = [w[0].speed, w[0].lean, w[0].steer];
+        let d = [w[1].speed - a[0], w[1].lean - a[1], wrap(w[1].steer - a[2])];
+        let r = [z[0] - a[0], z[1] - a[1], wrap(z[2] - a[2])];
+        let dd: f64 = d.iter().map(|x| x * x).sum();
+        let t = if dd > 0.0 {
+            (r.iter().zip(&d).map(|(x, y)| x * y).sum::<f64>() / dd).clamp(0.0, 1.0)
+        } else {
+            0.0
+        };
+        r.iter().zip(&d).map(|(x, y)| (x - t * y).powi(2)).sum::<f64>() <= 1e-4
+    })
+}
+
+/// The steer of the two upright lines: straight ahead (0) and the handlebar reversed (π).
+pub const LINES: [f64; 2] = [0.0, std::f64::consts::PI];
 
 /// The hands-free turns of one bicycle.
 #[derive(Debug)]
@@ -166,6 +219,75 @@ impl<'a> HandsFree<'a> {
             prev = here;
         }
         out
+    }
+
+    /// Every family that branches from the upright [`LINES`] below [`MAX_SPEED`], in the
+    /// order of the lines and, on each, of the branch speeds, then the families that meet
+    /// neither line found by [`isolated`](Self::isolated).
+    ///
+    /// # Errors
+    /// [`TurnError`] when a family has no first point off its line or the scan fails.
+    pub fn families(&self) -> Result<Vec<Family>, TurnError> {
+        let mut out = Vec::new();
+        for line in LINES {
+            for vb in self.branch_speeds(line, MAX_SPEED) {
+                out.push(self.family(line, vb)?);
+            }
+        }
+        let isolated = self.isolated(&out)?;
+        out.extend(isolated);
+        Ok(out)
+    }
+
+    /// The families that meet no upright line at a positive speed, found from the hands-free
+    /// turns at the lean [`SCAN_LEAN`]: every turn of [`TurnSolver::turns`] at the speeds
+    /// [`SCAN_SPEED_STEP`], 2 [`SCAN_SPEED_STEP`], … up to [`MAX_SPEED`] / 2, each matched to
+    /// the turn of nearest steer (within 0.15 rad) at the next speed; where the steer torque
+    /// changes sign between the two, a hands-free turn lies between them. One that lies on
+    /// none of `known` (nor on a family found before it) seeds [`through`](Self::through).
+    ///
+    /// # Errors
+    /// [`TurnError`] when the turns at a speed of the scan cannot be found or a seed does not
+    /// converge.
+    pub fn isolated(&self, known: &[Family]) -> Result<Vec<Family>, TurnError> {
+        let pi = std::f64::consts::PI;
+        let wrap = |a: f64| (a + pi).rem_euclid(2.0 * pi) - pi;
+        let mut found: Vec<Family> = Vec::new();
+        let mut prev: Option<(f64, Vec<(f64, f64)>)> = None;
+        let n = (0.5 * MAX_SPEED / SCAN_SPEED_STEP).round() as usize;
+        for k in 1..=n {
+            let v = SCAN_SPEED_STEP * k as f64;
+            let here: Vec<(f64, f64)> = self
+                .solver
+                .turns(v, SCAN_LEAN)?
+                .turns
+                .iter()
+                .map(|t| (t.steer, t.steer_torque))
+                .collect();
+            if let Some((v0, before)) = &prev {
+                for &(s1, t1) in &here {
+                    let Some(&(s0, t0)) = before
+                        .iter()
+                        .min_by(|a, b| wrap(a.0 - s1).abs().total_cmp(&wrap(b.0 - s1).abs()))
+                    else {
+                        continue;
+                    };
+                    if wrap(s0 - s1).abs() > 0.15 || t0 * t1 >= 0.0 {
+                        continue;
+                    }
+                    let f = t0 / (t0 - t1);
+                    let seed = [v0 + f * (v - v0), SCAN_LEAN, s0 + f * wrap(s1 - s0)];
+                    let Some((z, _)) = self.refine(seed) else { continue };
+                    let on = |fam: &Family| on_family(fam, z);
+                    if known.iter().any(on) || found.iter().any(on) {
+                        continue;
+                    }
+                    found.push(self.through(z)?);
+                }
+            }
+            prev = Some((v, here));
+        }
+        Ok(found)
     }
 
     /// The point at `z` with its stability with no steer torque.
@@ -283,18 +405,34 @@ impl<'a> HandsFree<'a> {
         let start = self
             .point([branch_speed, 0.0, line_steer], 0.0)
             .ok_or(fail("no stability at the branch point"))?;
-        let mut points = vec![start];
-        let mut special = Vec::new();
-        let mut z = Vector3::new(v, lean, steer);
         let (f, _) =
             self.rows([v, lean, steer], pitch).ok_or(fail("the first point has no contact"))?;
         let raw = Self::cross(&f);
         // Oriented towards growing lean.
-        let mut sign = if raw[1] >= 0.0 { 1.0 } else { -1.0 };
-        let mut t = sign * raw.normalize();
-        points.push(
-            self.point([v, lean, steer], pitch).ok_or(fail("no stability at the first point"))?,
-        );
+        let sign = if raw[1] >= 0.0 { 1.0 } else { -1.0 };
+        let first =
+            self.point([v, lean, steer], pitch).ok_or(fail("no stability at the first point"))?;
+        let (points, special, end) =
+            self.follow(Vector3::new(v, lean, steer), pitch, sign, vec![start, first])?;
+        Ok(Family { branch_speed, line_steer, points, special, end })
+    }
+
+    /// Follows a family from `z` (a hands-free point with its `pitch`, the last of `points`)
+    /// along the tangent $\nabla F_1\times\nabla F_2$ times `sign`: the points, the special
+    /// points and why it stopped.
+    fn follow(
+        &self,
+        z: Vector3<f64>,
+        pitch: f64,
+        sign: f64,
+        mut points: Vec<CurvePoint>,
+    ) -> Result<(Vec<CurvePoint>, Vec<Special>, End), TurnError> {
+        let fail = |reason| TurnError::Solver { reason, steer: z[2] };
+        let (f, _) =
+            self.rows([z[0], z[1], z[2]], pitch).ok_or(fail("the first point has no contact"))?;
+        let (mut z, mut pitch, mut sign) = (z, pitch, sign);
+        let mut t = sign * Self::cross(&f).normalize();
+        let mut special = Vec::new();
         let (h_min, h_max) = (1e-6, 0.05);
         let mut h = 0.01;
         let mut end = End::Steps;
@@ -342,6 +480,59 @@ impl<'a> HandsFree<'a> {
             pitch = p;
             h = (h * 1.5).min(h_max);
         }
-        Ok(Family { branch_speed, line_steer, points, special, end })
+        Ok((points, special, end))
+    }
+
+    /// The hands-free point nearest `seed` $= (v, \varphi, \delta)$ at its lean: Newton on
+    /// (speed, steer) with the lean fixed; the point and its pitch, `None` when Newton does
+    /// not converge in 30 steps.
+    pub fn refine(&self, seed: [f64; 3]) -> Option<([f64; 3], f64)> {
+        let [mut v, lean, mut steer] = seed;
+        let mut pitch = 0.0;
+        for _ in 0..30 {
+            let (f, p) = self.rows([v, lean, steer], pitch)?;
+            pitch = p;
+            let (j11, j12, j21, j22) = (f[0].grad[0], f[0].grad[2], f[1].grad[0], f[1].grad[2]);
+            let det = j11 * j22 - j12 * j21;
+            let dv = -(j22 * f[0].value - j12 * f[1].value) / det;
+            let dst = -(-j21 * f[0].value + j11 * f[1].value) / det;
+            if !(dv.is_finite() && dst.is_finite()) {
+                return None;
+            }
+            v += dv;
+            steer += dst;
+            if dv.abs() + dst.abs() <= 1e-13 * (1.0 + v.abs()) {
+                return (v > 0.0).then_some(([v, lean, steer], pitch));
+            }
+        }
+        None
+    }
+
+    /// The family through the hands-free point nearest `seed` (see [`refine`](Self::refine)),
+    /// followed both ways from it: towards falling lean first (the points returned in the
+    /// other order, so that the family runs towards growing lean through the seed), then
+    /// towards growing lean. [`Family::branch_speed`] is NaN (no branch point) and
+    /// [`Family::line_steer`] the seed's steer; [`Family::end`] is why the second half stopped.
+    ///
+    /// # Errors
+    /// [`TurnError::Solver`] when Newton from `seed` does not converge.
+    pub fn through(&self, seed: [f64; 3]) -> Result<Family, TurnError> {
+        let fail = |reason| TurnError::Solver { reason, steer: seed[2] };
+        let (z, pitch) = self.refine(seed).ok_or(fail("no hands-free turn near the seed"))?;
+        let first = self.point(z, pitch).ok_or(fail("no stability at the seed"))?;
+        let zv = Vector3::from(z);
+        let (f, _) = self.rows(z, pitch).ok_or(fail("the seed has no contact"))?;
+        let up = if Self::cross(&f)[1] >= 0.0 { 1.0 } else { -1.0 };
+        let (mut back, back_special, _) = self.follow(zv, pitch, -up, vec![first])?;
+        let (ahead, ahead_special, end) = self.follow(zv, pitch, up, vec![first])?;
+        let n = back.len();
+        back.reverse();
+        // Indices of the backward half count from its far end; each special point marks the
+        // point after it in the direction of growing lean.
+        let mut special: Vec<Special> = back_special.iter().map(|s| s.map(|k| n - k)).collect();
+        special.reverse();
+        special.extend(ahead_special.iter().map(|s| s.map(|k| k + n - 1)));
+        back.extend_from_slice(&ahead[1..]);
+        Ok(Family { branch_speed: f64::NAN, line_steer: z[2], points: back, special, end })
     }
 }

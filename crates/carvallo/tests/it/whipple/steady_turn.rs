@@ -530,4 +530,39 @@ mod hands_free {
             }
         }
     }
+
+    /// The families that meet neither upright line (Basu-Mandal et al. 2007 report one such
+    /// family for the benchmark): found by the scan at lean 0.3 rad, two for the benchmark,
+    /// their points hands-free turns by the steady-turn route, lean zero only as the speed
+    /// goes to zero, and one with a short stable section.
+    #[test]
+    fn the_isolated_families_are_hands_free_turns_off_the_upright_lines() {
+        let s = TurnSolver::new(&WhippleParams::benchmark()).expect("wheels");
+        let hf = HandsFree::new(&s);
+        let all = hf.families().expect("families");
+        let isolated: Vec<_> = all.iter().filter(|f| f.is_isolated()).collect();
+        assert_eq!((all.len(), isolated.len()), (4, 2));
+        for f in &isolated {
+            assert!(f.points.len() > 100, "{}", f.points.len());
+            for p in f.points.iter().step_by(20) {
+                let turns = s.turns(p.speed, p.lean).expect("turns").turns;
+                let t = turns
+                    .iter()
+                    .find(|t| (t.steer - p.steer).abs() < 1e-6)
+                    .unwrap_or_else(|| panic!("{p:?} among {turns:?}"));
+                assert!(t.steer_torque.abs() <= 1e-8, "{p:?}: torque {}", t.steer_torque);
+                assert_eq!(t.stability.stable, p.stable, "{p:?}");
+                // Neither family comes near upright running but as the speed goes to zero
+                // (there the lean is about 0.12 and 0.17 times the speed in s/m).
+                assert!(p.speed < 0.4 || p.lean > 0.04, "{p:?}");
+            }
+        }
+        // The first: steer between -pi/2 and -pi for lean positive, stable from about 3.30 to
+        // 3.39 m/s; the second: unstable everywhere.
+        let stable: Vec<_> = isolated[0].points.iter().filter(|p| p.stable).collect();
+        let (lo, hi) = (stable[0].speed, stable[stable.len() - 1].speed);
+        assert!(lo > 3.2 && hi < 3.4 && stable.len() >= 3, "stable from {lo} to {hi} m/s");
+        assert!(stable.iter().all(|p| p.steer < -2.5 && (0.45..0.5).contains(&p.lean)));
+        assert!(isolated[1].points.iter().all(|p| !p.stable && p.steer > 0.0));
+    }
 }
