@@ -90,7 +90,6 @@ const NOT_YET_FALSIFIED: &[&str] = &[
     "hoop-stable-along-ae",
     "hoop-stable-fall-stops",
     "hoop-steady-state-persists",
-    "hoop-stick-neglected-term",
     "hoop-threshold-grows-sqrt-r",
     "hoop-trajectory-radius",
     "hoop-turns-toward-lean",

@@ -152,15 +152,21 @@ fn violations(entries: &[Entry]) -> String {
             // 2e-3 relative; a finding only beyond 2e-3 (the printed unit itself, which the
             // stored number can hide, is bounded above by the shortest decimal form).
             Memoir::Number(m) => {
-                let near = value(&e.derived)
-                    .is_some_and(|d| (d - m).abs() <= repr_unit(*m) * (1.0 + UNIT_SLACK));
+                // A difference of terms that cancel: within 2e-3 of the largest term.
+                let terms = e.note.split_once("terms up to ").and_then(|(_, r)| {
+                    r.split_whitespace().next().and_then(|x| x.parse::<f64>().ok())
+                });
+                let near = value(&e.derived).is_some_and(|d| {
+                    (d - m).abs() <= repr_unit(*m) * (1.0 + UNIT_SLACK)
+                        || terms.is_some_and(|t| (d - m).abs() <= SLIDE_RULE * t)
+                });
                 if v == Verdict::Rounding && !(rel <= SLIDE_RULE || near) {
                     say(e, &format!("rule 3: rounding at {rel:e}, beyond a unit and 2e-3"));
                 }
                 if v == Verdict::Rounding && rel <= AGREEMENT {
                     say(e, "rule 3: exact but rounding");
                 }
-                if finding && rel <= SLIDE_RULE {
+                if finding && (rel <= SLIDE_RULE || terms.is_some_and(|_| near)) {
                     say(e, &format!("rule 3: a finding at {rel:e}, within a slide rule"));
                 }
                 if v == Verdict::Agrees && rel > AGREEMENT && !numeric_route {
