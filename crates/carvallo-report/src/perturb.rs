@@ -139,11 +139,39 @@ pub fn normalised(name: &str, theta: f64, s: f64, n: f64) -> f64 {
     })
 }
 
+/// Every output of the generated `unicycle` program at `point` (missing names NaN): the
+/// perturbed program's values when a perturbation of it is active, otherwise
+/// [`carvallo::unicycle_discussion::eval`].
+pub fn unicycle_eval(point: &carvallo::unicycle_discussion::Point) -> BTreeMap<&'static str, f64> {
+    let mut map = carvallo::unicycle_discussion::eval(point);
+    ACTIVE.with(|a| {
+        let a = a.borrow();
+        let Some(active) = a.as_ref().filter(|a| a.model == "unicycle") else { return };
+        let p = &active.program;
+        let get = |n: &String| point.get(n.as_str()).copied().unwrap_or(f64::NAN);
+        let params: Vec<f64> = p.params.iter().map(get).collect();
+        let inputs: Vec<f64> = p.inputs.iter().map(get).collect();
+        if let Ok(values) = p.eval_f64(&params, &inputs) {
+            for (o, v) in p.outputs.iter().zip(values) {
+                if let Some(slot) = map.get_mut(o.name.as_str()) {
+                    *slot = v;
+                }
+            }
+        }
+    });
+    map
+}
+
+/// The output `name` of [`unicycle_eval`].
+pub fn unicycle_out(point: &carvallo::unicycle_discussion::Point, name: &str) -> f64 {
+    unicycle_eval(point)[name]
+}
+
 /// The words stating a perturbation, with the constant's value.
 pub fn describe(pert: &Perturbation, value: f64) -> String {
     let rel = pert.factor - 1.0;
     format!(
-        "constant n° {} ({}) of the generated `{}` output of generated/{}.ir scaled by 1 {} {:e} (a copy of the output's instructions; the memoir's transcribed outputs keep theirs)",
+        "constant n° {} ({}) of the generated `{}` output of generated/{}.ir scaled by 1 {} {:.0e} (in a copy of the output's instructions: the memoir's transcribed outputs keep theirs)",
         pert.constant + 1,
         crate::render::text::format_significant(value, 6),
         pert.output,

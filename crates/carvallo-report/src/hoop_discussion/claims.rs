@@ -13,6 +13,7 @@ use super::e_roots;
 use crate::claims::{Assertion, Claim, Status};
 use crate::entry::Verdict;
 use crate::hoop_simulation::{perturb, unit_hoop};
+use crate::perturb::Perturbation;
 use crate::policy::{self, rel_diff, unit_of};
 
 /// The two y roots of the generated (S) at x, as [`carvallo::hoop_discussion::curve_s_roots`]
@@ -37,7 +38,101 @@ pub(super) fn claims() -> Vec<Claim> {
     crate::claims::once_in_memoir_order(&CLAIMS, compute)
 }
 
-pub(crate) fn compute() -> Vec<Claim> {
+/// A constant of the hoop's generated normalised (E) of n° 12 (its 4/3, first in the cone)
+/// scaled by 1 + 1e-3.
+const E_SCALED: Perturbation =
+    Perturbation { model: "hoop", output: "equilibrium_n12", constant: 0, factor: 1.0 + 1e-3 };
+/// The first constant of the generated normalised (S) of n° 12 (its 2/3) scaled by 1 + 1e-3.
+const S_SCALED: Perturbation =
+    Perturbation { model: "hoop", output: "stability_n12", constant: 0, factor: 1.0 + 1e-3 };
+/// The first constant of the generated (S1) (its 4) scaled by 1 + 1e-3.
+const S1_SCALED: Perturbation = Perturbation {
+    model: "hoop_discussion",
+    output: "curve_s1_y",
+    constant: 0,
+    factor: 1.0 + 1e-3,
+};
+/// The first constant of the generated (N) (its 4) scaled by 1 + 1e-3.
+const N_SCALED: Perturbation = Perturbation {
+    model: "hoop_discussion",
+    output: "curve_n_s2",
+    constant: 0,
+    factor: 1.0 + 1e-3,
+};
+
+/// The first constant of the generated (ℰ) s² (`reality_s2`) scaled by 1 + 1e-3.
+const E_CURVE_SCALED: Perturbation = Perturbation {
+    model: "hoop_discussion",
+    output: "reality_s2",
+    constant: 0,
+    factor: 1.0 + 1e-3,
+};
+/// The first constant of the generated (ℰ) y(x) (`reality_y`) scaled by 1 + 1e-3.
+const E_Y_SCALED: Perturbation =
+    Perturbation { model: "hoop_discussion", output: "reality_y", constant: 0, factor: 1.0 + 1e-3 };
+
+/// The first constant of the generated skid D(n) (`skid_of_n`) scaled by 1 + 1e-3.
+const D_SCALED: Perturbation =
+    Perturbation { model: "hoop_discussion", output: "skid_of_n", constant: 0, factor: 1.0 + 1e-3 };
+
+/// The claims with the falsification of those whose check a perturbation of the generated
+/// programs breaks: the checks run again with the perturbation active
+/// ([`crate::perturb::with`]), only the functions giving the claims named.
+fn compute() -> Vec<Claim> {
+    let checks = compute_checks();
+    let table: [(&Perturbation, fn() -> Vec<Claim>, &[&str]); 7] = [
+        (
+            &E_SCALED,
+            || {
+                let mut v = vec![which_root_stable()];
+                v.extend(skid_16());
+                v.extend(marche_17());
+                v.extend(h_17_bis());
+                v.extend(practical_18());
+                v
+            },
+            &[
+                "hoop-which-root-stable",
+                "hoop-n1-skid-region",
+                "hoop-n2-walking-root",
+                "hoop-h-is-n2",
+                "hoop-practical-threshold",
+            ],
+        ),
+        (
+            &S_SCALED,
+            || {
+                let mut v = vec![stable_along_ae()];
+                v.extend(marche_17());
+                v
+            },
+            &["hoop-stable-along-ae", "hoop-n2-acceptable-region"],
+        ),
+        (&S1_SCALED, || vec![s_in_triangle()], &["hoop-s-in-triangle-afd"]),
+        (&N_SCALED, marche_17, &["hoop-n-above-e"]),
+        (&E_CURVE_SCALED, discussion_15, &["hoop-d-half-touches-e", "hoop-n0-separates-roots"]),
+        (&E_Y_SCALED, || vec![reality_curve_shape()], &["hoop-reality-curve-shape"]),
+        (&D_SCALED, discussion_15, &["hoop-variation-table", "hoop-d-minus-half-n1"]),
+    ];
+    let mut out = checks;
+    for (pert, run, ids) in table {
+        let Some((perturbed, value)) = crate::perturb::with(pert, run) else { continue };
+        let what = crate::perturb::describe(pert, value);
+        out = out
+            .into_iter()
+            .map(|c| {
+                match perturbed.iter().find(|p| p.id == c.id && ids.contains(&c.id.as_str())) {
+                    Some(p) => c.falsified_by(&what, p.clone()),
+                    None => c,
+                }
+            })
+            .collect();
+    }
+    out
+}
+
+/// The checks of n° 13–19, as derived.
+fn compute_checks() -> Vec<Claim> {
     let mut out = vec![
         reality_curve_shape(),
         reality_sides(),
