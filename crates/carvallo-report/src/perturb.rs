@@ -13,7 +13,7 @@
 use std::cell::RefCell;
 use std::collections::{BTreeMap, BTreeSet};
 
-use carvallo::ir::{Inst, Op, Program, Value};
+use carvallo::ir::{Inst, Interpreter, Op, Program, Value};
 
 /// One coefficient of one output of a generated program scaled.
 #[derive(Clone, Copy, Debug, PartialEq)]
@@ -28,10 +28,24 @@ pub struct Perturbation {
     pub factor: f64,
 }
 
-/// The perturbed program, compiled, with its value names.
+/// The perturbed program, compiled once for the interpreter.
 struct Active {
     model: &'static str,
     program: Program,
+    interp: Interpreter,
+}
+
+impl Active {
+    /// Every output at the named arguments (`missing` for a name not given).
+    fn eval(&self, get: impl Fn(&str) -> Option<f64>, missing: f64) -> Option<Vec<f64>> {
+        let p = &self.program;
+        let params: Vec<f64> = p.params.iter().map(|n| get(n).unwrap_or(missing)).collect();
+        let inputs: Vec<f64> = p.inputs.iter().map(|n| get(n).unwrap_or(missing)).collect();
+        let mut scratch = vec![0.0; self.interp.scratch_len()];
+        let mut out = vec![0.0; self.interp.n_outputs()];
+        self.interp.eval(&params, &inputs, &mut scratch, &mut out).ok()?;
+        Some(out)
+    }
 }
 
 thread_local! {
@@ -96,7 +110,8 @@ fn ir_of(model: &str) -> Option<&'static str> {
 pub fn with<T>(pert: &Perturbation, f: impl FnOnce() -> T) -> Option<(T, f64)> {
     let program = Program::parse(ir_of(pert.model)?).ok()?;
     let (program, value) = perturbed_program(&program, pert)?;
-    ACTIVE.with(|a| *a.borrow_mut() = Some(Active { model: pert.model, program }));
+    let interp = Interpreter::new(&program).ok()?;
+    ACTIVE.with(|a| *a.borrow_mut() = Some(Active { model: pert.model, program, interp }));
     let out = f();
     ACTIVE.with(|a| *a.borrow_mut() = None);
     Some((out, value))
@@ -108,12 +123,9 @@ fn active_output(model: &str, name: &str, args: &[(&str, f64)]) -> Option<f64> {
     ACTIVE.with(|a| {
         let a = a.borrow();
         let active = a.as_ref().filter(|a| a.model == model)?;
-        let p = &active.program;
-        let get = |n: &String| args.iter().find(|(k, _)| k == n).map_or(0.0, |(_, v)| *v);
-        let params: Vec<f64> = p.params.iter().map(get).collect();
-        let inputs: Vec<f64> = p.inputs.iter().map(get).collect();
-        let k = p.outputs.iter().position(|o| o.name == name)?;
-        p.eval_f64(&params, &inputs).ok().map(|v| v[k])
+        let k = active.program.outputs.iter().position(|o| o.name == name)?;
+        let get = |n: &str| args.iter().find(|(k, _)| *k == n).map(|(_, v)| *v);
+        active.eval(get, 0.0).map(|v| v[k])
     })
 }
 
@@ -147,12 +159,9 @@ pub fn unicycle_eval(point: &carvallo::unicycle_discussion::Point) -> BTreeMap<&
     ACTIVE.with(|a| {
         let a = a.borrow();
         let Some(active) = a.as_ref().filter(|a| a.model == "unicycle") else { return };
-        let p = &active.program;
-        let get = |n: &String| point.get(n.as_str()).copied().unwrap_or(f64::NAN);
-        let params: Vec<f64> = p.params.iter().map(get).collect();
-        let inputs: Vec<f64> = p.inputs.iter().map(get).collect();
-        if let Ok(values) = p.eval_f64(&params, &inputs) {
-            for (o, v) in p.outputs.iter().zip(values) {
+        let get = |n: &str| point.get(n).copied();
+        if let Some(values) = active.eval(get, f64::NAN) {
+            for (o, v) in active.program.outputs.iter().zip(values) {
                 if let Some(slot) = map.get_mut(o.name.as_str()) {
                     *slot = v;
                 }
@@ -165,6 +174,89 @@ pub fn unicycle_eval(point: &carvallo::unicycle_discussion::Point) -> BTreeMap<&
 /// The output `name` of [`unicycle_eval`].
 pub fn unicycle_out(point: &carvallo::unicycle_discussion::Point, name: &str) -> f64 {
     unicycle_eval(point)[name]
+}
+
+/// The outputs `names` of the active perturbed program of `model` at the named arguments, or
+/// `None` when no perturbation of that model is active.
+fn active_outputs<const N: usize>(
+    model: &str,
+    names: [&str; N],
+    args: &[(&str, f64)],
+) -> Option<[f64; N]> {
+    ACTIVE.with(|a| {
+        let a = a.borrow();
+        let active = a.as_ref().filter(|a| a.model == model)?;
+        let get = |n: &str| args.iter().find(|(k, _)| *k == n).map(|(_, v)| *v);
+        let v = active.eval(get, 0.0)?;
+        let mut out = [f64::NAN; N];
+        for (slot, name) in out.iter_mut().zip(names) {
+            *slot = v[active.program.outputs.iter().position(|o| o.name == name)?];
+        }
+        Some(out)
+    })
+}
+
+fn hoop_args(
+    hoop: &carvallo::hoop::Hoop,
+    theta: f64,
+    p: f64,
+    n: f64,
+    s: f64,
+) -> [(&'static str, f64); 7] {
+    [
+        ("R", hoop.radius()),
+        ("g", hoop.g()),
+        ("mu", hoop.mass()),
+        ("theta", theta),
+        ("p", p),
+        ("n", n),
+        ("s", s),
+    ]
+}
+
+/// [`carvallo::hoop::Hoop::rhs_pns`], from the perturbed `hoop` program when one is active.
+pub fn hoop_rhs_pns(hoop: &carvallo::hoop::Hoop, state: [f64; 4]) -> [f64; 4] {
+    let [theta, p, n, s] = state;
+    match active_outputs("hoop", ["pns_dp", "pns_dn", "pns_ds"], &hoop_args(hoop, theta, p, n, s)) {
+        Some([dp, dn, ds]) => [p, dp, dn, ds],
+        None => hoop.rhs_pns(state),
+    }
+}
+
+/// [`carvallo::hoop::Hoop::equilibrium`], from the perturbed `hoop` program when one is active.
+pub fn hoop_equilibrium(hoop: &carvallo::hoop::Hoop, theta: f64, s: f64, n: f64) -> f64 {
+    active_outputs("hoop", ["equilibrium"], &hoop_args(hoop, theta, 0.0, n, s))
+        .map_or_else(|| hoop.equilibrium(theta, s, n), |[v]| v)
+}
+
+/// [`carvallo::hoop::Hoop::stability`], from the perturbed `hoop` program when one is active.
+pub fn hoop_stability(hoop: &carvallo::hoop::Hoop, theta: f64, s: f64, n: f64) -> f64 {
+    active_outputs("hoop", ["stability"], &hoop_args(hoop, theta, 0.0, n, s))
+        .map_or_else(|| hoop.stability(theta, s, n), |[v]| v)
+}
+
+/// One row of a falsification table: the perturbation, the claim functions to run under it,
+/// and the ids of the claims whose falsification it is.
+pub type Row = (&'static Perturbation, fn() -> Vec<crate::claims::Claim>, &'static [&'static str]);
+
+/// `claims` with, for each row of `table`, the claims it names recorded with the verdict the
+/// same check gives with the row's perturbation active ([`with`]).
+pub fn falsify(claims: Vec<crate::claims::Claim>, table: &[Row]) -> Vec<crate::claims::Claim> {
+    let mut out = claims;
+    for (pert, run, ids) in table {
+        let Some((perturbed, value)) = with(pert, run) else { continue };
+        let what = describe(pert, value);
+        out = out
+            .into_iter()
+            .map(|c| {
+                match perturbed.iter().find(|p| p.id == c.id && ids.contains(&c.id.as_str())) {
+                    Some(p) => c.falsified_by(&what, p.clone()),
+                    None => c,
+                }
+            })
+            .collect();
+    }
+    out
 }
 
 /// The words stating a perturbation, with the constant's value.

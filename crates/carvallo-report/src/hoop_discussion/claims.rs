@@ -80,7 +80,7 @@ const D_SCALED: Perturbation =
 /// ([`crate::perturb::with`]), only the functions giving the claims named.
 fn compute() -> Vec<Claim> {
     let checks = compute_checks();
-    let table: [(&Perturbation, fn() -> Vec<Claim>, &[&str]); 7] = [
+    let table: [crate::perturb::Row; 7] = [
         (
             &E_SCALED,
             || {
@@ -114,21 +114,7 @@ fn compute() -> Vec<Claim> {
         (&E_Y_SCALED, || vec![reality_curve_shape()], &["hoop-reality-curve-shape"]),
         (&D_SCALED, discussion_15, &["hoop-variation-table", "hoop-d-minus-half-n1"]),
     ];
-    let mut out = checks;
-    for (pert, run, ids) in table {
-        let Some((perturbed, value)) = crate::perturb::with(pert, run) else { continue };
-        let what = crate::perturb::describe(pert, value);
-        out = out
-            .into_iter()
-            .map(|c| {
-                match perturbed.iter().find(|p| p.id == c.id && ids.contains(&c.id.as_str())) {
-                    Some(p) => c.falsified_by(&what, p.clone()),
-                    None => c,
-                }
-            })
-            .collect();
-    }
-    out
+    crate::perturb::falsify(checks, &table)
 }
 
 /// The checks of n° 13–19, as derived.
