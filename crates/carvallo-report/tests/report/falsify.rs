@@ -164,7 +164,8 @@ fn every_stated_perturbation_breaks_its_check() {
         );
         broken += 1;
     }
-    assert!(broken >= 5, "only {broken} claims state a perturbation");
+    // 37 claims state one (issue 38, branch claims2): the count may only rise.
+    assert!(broken >= 37, "only {broken} claims state a perturbation");
 }
 
 #[test]
