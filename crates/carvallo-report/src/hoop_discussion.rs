@@ -353,7 +353,7 @@ pub fn entries() -> Vec<Entry> {
 /// absolute value (both are negative for s > 0); `None` when they are not real. (E) is a
 /// quadratic in n with leading coefficient 1, so three evaluations fix it.
 fn e_roots(theta: f64, s: f64) -> Option<(f64, f64)> {
-    let e = |n: f64| carvallo::hoop::normalised::equilibrium(theta, s, n);
+    let e = |n: f64| crate::perturb::normalised("equilibrium_n12", theta, s, n);
     let c = e(0.0);
     let a = 0.5 * (e(1.0) + e(-1.0)) - c;
     let b = 0.5 * (e(1.0) - e(-1.0));

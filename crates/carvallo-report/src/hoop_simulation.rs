@@ -42,7 +42,7 @@ pub(crate) fn perturb(
     dt: f64,
     t_end: f64,
 ) -> Perturbed {
-    let k = hoop.stability(theta_e, s, n);
+    let k = crate::perturb::hoop_stability(hoop, theta_e, s, n);
     let mut x = [theta_e + delta, delta, n, s];
     let (mut t, mut max_dev, mut diverged) = (0.0, 0.0f64, false);
     let mut crossings: Vec<f64> = Vec::new();
@@ -51,7 +51,7 @@ pub(crate) fn perturb(
     let (mut t_lo, mut t_hi) = (f64::NAN, f64::NAN);
     let (lo, hi) = (1e4 * delta, 1e6 * delta);
     while t < t_end {
-        let next = rk4_step(|y| hoop.rhs_pns(y), x, dt);
+        let next = rk4_step(|y| crate::perturb::hoop_rhs_pns(hoop, y), x, dt);
         let (d0, d1) = ((x[0] - theta_e).abs(), (next[0] - theta_e).abs());
         let cross_at = |level: f64| t + dt * (level / d0).ln() / (d1 / d0).ln();
         if t_lo.is_nan() && d1 > lo && d0 > 0.0 {
@@ -95,7 +95,8 @@ pub(crate) fn stability_sample(hoop: &Hoop) -> Vec<(f64, f64, f64)> {
         for s in [0.2, 0.3, 0.4, 0.45, 0.6, 0.8, 1.0, 1.5] {
             let Some(roots) = hoop.steady_turning_rates(theta, s) else { continue };
             for n in roots {
-                if n.abs() <= 8.0 && hoop.stability(theta, s, n).abs() >= 0.15 {
+                if n.abs() <= 8.0 && crate::perturb::hoop_stability(hoop, theta, s, n).abs() >= 0.15
+                {
                     out.push((theta, s, n));
                 }
             }
@@ -114,7 +115,7 @@ pub(crate) fn states_at_p_zeros(
     t_max: f64,
     count: usize,
 ) -> Option<Vec<(f64, [f64; 4])>> {
-    let step = |x: [f64; 4], h: f64| rk4_step(|y| hoop.rhs_pns(y), x, h);
+    let step = |x: [f64; 4], h: f64| rk4_step(|y| crate::perturb::hoop_rhs_pns(hoop, y), x, h);
     let (mut x, mut t) = (x0, 0.0);
     let mut out = Vec::new();
     while out.len() < count {

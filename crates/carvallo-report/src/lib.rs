@@ -33,6 +33,7 @@ pub mod hoop;
 pub mod hoop_discussion;
 mod hoop_simulation;
 pub mod outline;
+pub mod perturb;
 pub mod policy;
 pub mod render;
 pub mod sample;

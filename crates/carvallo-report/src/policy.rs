@@ -16,7 +16,10 @@
 //!   of the last printed digit (with a slack of [`UNIT_SLACK`] for the binary representation
 //!   of decimal numbers) or within [`SLIDE_RULE`] relative (a slide rule's three significant
 //!   digits); otherwise the attributed finding (`memoir-error` when the formulas the number
-//!   comes from agree, so the slip is in his arithmetic), or `derivation-differs`.
+//!   comes from agree, so the slip is in his arithmetic), or `derivation-differs`. A number
+//!   he obtained as a difference of terms that cancel ([`printed_difference`]) carries the
+//!   slide rule's three digits on its terms, not on the difference: `rounding` also when the
+//!   difference is within [`SLIDE_RULE`] of the largest term.
 //! * [`approx`]: an approximation the memoir declares (first order, "negligible", "à peu
 //!   près"): `agrees` only when it is exact within [`AGREEMENT_TOLERANCE`]; `rounding` when the
 //!   difference is within the size of what the memoir declares it neglects (for a first-order
@@ -71,7 +74,7 @@ pub const NUMERIC_TOLERANCE_MAX: f64 = 1e-4;
 pub const PREAMBLE: &str = "How the verdicts are decided (one policy for every entry):\n\n\
 - Formulas are compared at seeded sample points by the relative difference |d − m| / max(|d|, |m|, 1e-9); they **agree** when the largest difference is at most 1e-12 (a few hundred units in the last place of `f64`). Otherwise the verdict is the finding the note explains (`memoir-error`, `ocr`) or `derivation-differs`; a formula is never `rounding`.\n\
 - A derived value checked against an independent numerical route (finite differences, Newton, an eigenvalue solver) **agrees** within that route's stated error, at most 1e-4 relative.\n\
-- A number the memoir prints is judged by the digits it prints: it **agrees** when equal within 1e-12, is **rounding** when the derived value is within one unit of its last printed digit or within 2e-3 relative (a slide rule's three significant digits), and beyond that is a `memoir-error` when the formulas it comes from agree with the memoir (the slip is in Carvallo's arithmetic), otherwise the finding the note names or `derivation-differs`.\n\
+- A number the memoir prints is judged by the digits it prints: it **agrees** when equal within 1e-12, is **rounding** when the derived value is within one unit of its last printed digit or within 2e-3 relative (a slide rule's three significant digits; for a number Carvallo obtained as a difference of terms that cancel, within 2e-3 of the largest of those terms), and beyond that is a `memoir-error` when the formulas it comes from agree with the memoir (the slip is in Carvallo's arithmetic), otherwise the finding the note names or `derivation-differs`.\n\
 - An approximation the memoir declares (first order, \"negligible\", \"à peu près\") **agrees** only when it is exact; it is **rounding** when the difference is within the order the memoir declares it neglects (for a first-order theory the second-order terms, θ0² + γ²), and beyond that a finding or `derivation-differs`.\n\
 - A qualitative claim (a sign, real roots, an inequality) **agrees** when the derivation shows it.\n\
 - An entry whose verdict is the report's attribution alone (an OCR misreading or a slip the note names, confirmed by the derivation where it can be) carries that verdict; it never `agrees`.\n\
@@ -130,6 +133,29 @@ pub fn printed(derived: f64, memoir: f64, unit: f64, otherwise: Verdict) -> Verd
         Verdict::Rounding
     } else {
         attributed(otherwise)
+    }
+}
+
+/// A number the memoir prints that Carvallo obtained as a difference of terms that cancel, the
+/// largest of size `terms`: as [`printed`], and also `rounding` when the difference is within
+/// [`SLIDE_RULE`] of `terms` (his slide rule carries three digits of each term, so a
+/// cancellation leaves fewer in the difference).
+pub fn printed_difference(
+    derived: f64,
+    memoir: f64,
+    unit: f64,
+    terms: f64,
+    otherwise: Verdict,
+) -> Verdict {
+    match printed(derived, memoir, unit, otherwise) {
+        v @ (Verdict::Agrees | Verdict::Rounding) => v,
+        v => {
+            if (derived - memoir).abs() <= SLIDE_RULE * terms.abs() {
+                Verdict::Rounding
+            } else {
+                v
+            }
+        }
     }
 }
 
@@ -336,6 +362,29 @@ mod tests {
         assert_eq!(formula(f64::NAN, Verdict::Ocr), Verdict::Ocr);
         assert_eq!(formula(1e-6, Verdict::Rounding), Verdict::DerivationDiffers);
         assert_eq!(formula(1e-6, Verdict::Agrees), Verdict::DerivationDiffers);
+    }
+
+    #[test]
+    fn a_difference_is_judged_against_the_terms_that_cancel() {
+        // n° 41 at 60°: -0.30681 for the printed -0.308, 3.9e-3 of the difference but 6e-4 of
+        // the largest term 2.0 (1/cos 60°).
+        assert_eq!(
+            printed(-0.30681, -0.308, unit_of(3), Verdict::MemoirError),
+            Verdict::MemoirError
+        );
+        assert_eq!(
+            printed_difference(-0.30681, -0.308, unit_of(3), 2.0, Verdict::MemoirError),
+            Verdict::Rounding
+        );
+        // Beyond 2e-3 of the terms it stays the finding (n° 41 at 10°: 2.6e-3 against 1.015).
+        assert_eq!(
+            printed_difference(0.40041, 0.403, unit_of(3), 1.0154, Verdict::MemoirError),
+            Verdict::MemoirError
+        );
+        assert_eq!(
+            printed_difference(0.403, 0.403, unit_of(3), 1.0, Verdict::MemoirError),
+            Verdict::Agrees
+        );
     }
 
     #[test]

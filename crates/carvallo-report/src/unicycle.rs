@@ -513,14 +513,28 @@ fn numbers() -> Vec<Entry> {
         (60.0, -0.308),
         (70.0, 1.149),
     ] {
-        e.push(number(
+        // A difference of the terms 1/cos, (h/R) sin^2 cos and 2 sqrt(ac), which cancel: his
+        // slide rule's precision is that of the largest (policy::printed_difference).
+        let (a, _, c) = trinomial(th);
+        let (ct, st) = (th.to_radians().cos(), th.to_radians().sin());
+        let terms = (1.0 / ct).max(H_OVER_R * st * st * ct).max(2.0 * (a * c).sqrt());
+        let derived = first_member_41(th);
+        let mut en = number(
             "41",
             &format!("first member of n° 41 at theta = {th}°"),
             pr,
             3,
-            first_member_41(th),
-            "-b - 2 sqrt(ac) from the coefficients of the generated trinomial S(n^2)",
-        ));
+            derived,
+            &format!("-b - 2 sqrt(ac) from the coefficients of the generated trinomial S(n^2); a difference of terms up to {terms:.4} (1/cos, (h/R) sin^2 cos, 2 sqrt(ac)), judged within 2e-3 of that size"),
+        );
+        en.verdict = policy::printed_difference(
+            derived,
+            pr,
+            policy::unit_of(3),
+            terms,
+            Verdict::MemoirError,
+        );
+        e.push(en);
     }
     let r1 = bisect(first_member_41, 5.0, 30.0);
     let r2 = bisect(first_member_41, 50.0, 70.0);

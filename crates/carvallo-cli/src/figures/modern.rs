@@ -574,7 +574,57 @@ mod tests {
             aberth_compensated(&eq.quartic(s)).iter().map(|z| s * z.re).fold(f64::MIN, f64::max)
         };
         assert!(max_re(0.5 * (lo + hi)) < 0.0, "unstable inside the window");
-        assert!(max_re(0.99 * lo) > 0.0 && max_re(1.01 * hi) > 0.0, "stable outside it");
+        // At 1e-6 relative from each edge (the real parts there are 1e-7 or more, Aberth's
+        // compensated roots about 1e-15): the old 1 % bracket accepted edges 1e4 times worse.
+        let d = 1e-6;
+        assert!(max_re(lo * (1.0 - d)) > 0.0 && max_re(hi * (1.0 + d)) > 0.0, "stable outside it");
+        assert!(max_re(lo * (1.0 + d)) < 0.0 && max_re(hi * (1.0 - d)) < 0.0, "unstable inside it");
+    }
+
+    /// The largest real part of the roots of n° 118's equations at `s`, by a route shared
+    /// with neither the Hurwitz window nor the quartic: the 4x4 state matrix
+    /// $[[0, I], [-M^{-1} K(s), -M^{-1} C]]$ built from the 2x2 coefficient matrices, its
+    /// eigenvalues by nalgebra's Schur decomposition.
+    fn max_re_state_matrix(eq: &Equations, s: f64) -> f64 {
+        let m = nalgebra::Matrix2::from_fn(|r, c| eq.m[r][c]);
+        let k = nalgebra::Matrix2::from_fn(|r, c| eq.k0[r][c] / (s * s) + eq.k2[r][c]);
+        let c = nalgebra::Matrix2::from_fn(|r, c| eq.c[r][c]);
+        let mi = m.try_inverse().expect("M invertible");
+        let (mk, mc) = (-mi * k, -mi * c);
+        let a = nalgebra::Matrix4::from_fn(|r, col| match (r, col) {
+            (0, 2) | (1, 3) => 1.0,
+            (2 | 3, 0 | 1) => mk[(r - 2, col)],
+            (2 | 3, 2 | 3) => mc[(r - 2, col - 2)],
+            _ => 0.0,
+        });
+        a.complex_eigenvalues().iter().map(|z| z.re).fold(f64::MIN, f64::max)
+    }
+
+    #[test]
+    fn the_hurwitz_edges_are_where_the_state_matrix_eigenvalues_cross() {
+        // Budget: the edges are bisected on the Hurwitz determinants to about 1e-15 relative;
+        // the eigenvalues' real parts carry about 1e-15 |λ| (|λ| < 20) of rounding, while
+        // moving 1e-6 relative off an edge moves the crossing root's real part by about
+        // 1e-6 s |dRe/ds| (measured: 1.5e-7 to 9.5e-7, the two sides equal to 5 digits), so
+        // ±1e-6 relative brackets each edge with a hundredfold margin over 1e-9; the old ±1 %
+        // would accept an edge 1e4 times worse.
+        let designs = [
+            ("n° 117's bicycle", Equations::via_whipple(&Constants::MEMOIR).unwrap()),
+            ("the new bicycle", Equations::via_whipple(&Constants::MEMOIR_NEW).unwrap()),
+            ("n° 118's printed numbers", Equations::MEMOIR_118),
+        ];
+        for (name, eq) in designs {
+            let w = window(&|s| eq.quartic(s));
+            let (lo, hi) = w.stable_s[0];
+            let at = |s: f64| max_re_state_matrix(&eq, s);
+            let (below, above) = (at(lo * (1.0 - 1e-6)), at(lo * (1.0 + 1e-6)));
+            assert!(below > 1e-9 && above < -1e-9, "{name}: lower edge {lo}: {below}, {above}");
+            let (inside, outside) = (at(hi * (1.0 - 1e-6)), at(hi * (1.0 + 1e-6)));
+            assert!(
+                inside < -1e-9 && outside > 1e-9,
+                "{name}: upper edge {hi}: {inside}, {outside}"
+            );
+        }
     }
 
     #[test]

@@ -400,8 +400,41 @@ fn fine_steers() -> impl Iterator<Item = f64> {
 /// The memoir's claims checked in this report ([`crate::claims`]): the old bicycle of n° 52,
 /// exact contact ([`Geometry::solve`]).
 pub fn claims() -> Vec<crate::claims::Claim> {
+    let nominal = claims_of(&Geometry::old_model());
+    // Perturbations of the derived side: the same checks on a geometry with one ingredient
+    // changed, the bicycle of n° 52 otherwise.
+    let perturbed = |offset: f64, sigma0_deg: f64| {
+        Geometry::new(0.38, 1.10, offset, sigma0_deg.to_radians())
+            .map(|g| claims_of(&g))
+            .unwrap_or_default()
+    };
+    let cases: [(&str, &str, Vec<crate::claims::Claim>); 2] = [
+        (
+            "geometry-axis-crosses-contact-radius",
+            "the fork offset c moved from 0.08 m to 0.20 m (beyond R sin(sigma0) = 0.161 m: a negative trail)",
+            perturbed(0.20, 25.0),
+        ),
+        (
+            "geometry-sigma1-barely-moves-mu",
+            "the steering axis tilted 40° instead of 25° from the vertical (sigma0)",
+            perturbed(0.08, 40.0),
+        ),
+    ];
+    nominal
+        .into_iter()
+        .map(|c| match cases.iter().find(|(id, _, _)| *id == c.id) {
+            Some((_, what, claims)) => match claims.iter().find(|p| p.id == c.id) {
+                Some(p) => c.falsified_by(what, p.clone()),
+                None => c,
+            },
+            None => c,
+        })
+        .collect()
+}
+
+/// The claims of [`claims`] on the geometry `g`.
+fn claims_of(g: &Geometry) -> Vec<crate::claims::Claim> {
     use crate::claims::Claim;
-    let g = Geometry::old_model();
     let (r, c, s0) = (g.radius(), g.offset(), g.sigma0());
     let mut out = Vec::new();
     // n° 43: the steering axis crosses the vertical radius CM (positive trail).

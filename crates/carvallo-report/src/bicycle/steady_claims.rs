@@ -28,6 +28,71 @@ pub const POINTS_85: usize = 48;
 pub const TURNS: [(f64, f64); 6] =
     [(5.0, 20.0), (10.0, 20.0), (5.0, 10.0), (-5.0, 20.0), (-10.0, 20.0), (-5.0, 10.0)];
 
+/// A perturbation of the derived side at run time (issue 38): the named rows of the generated
+/// `bicycle_steady` program (or of the generated relations (I)) scaled by `factor`, the fall
+/// equation then recomputed from its six rows. `None` is the model as derived.
+#[derive(Clone, Copy, Debug)]
+struct Scaled {
+    rows: &'static [&'static str],
+    factor: f64,
+}
+
+/// The centrifugal (inertia) rows of the fall equation, n° 81-83.
+const CENTRIFUGAL: &[&str] = &["fall_rear", "fall_front", "fall_frame"];
+
+/// The rows of the fall equation (n° 84): inertia rows minus gravity rows.
+const FALL_ROWS: [(&str, f64); 6] = [
+    ("fall_rear", 1.0),
+    ("fall_front", 1.0),
+    ("fall_frame", 1.0),
+    ("fall_grav_rear", -1.0),
+    ("fall_grav_front", -1.0),
+    ("fall_grav_frame", -1.0),
+];
+
+/// The output `name` of the generated program at `x`, under the perturbation `scaled`.
+fn output(
+    bike: &BicycleSteady,
+    x: &SteadyState,
+    name: &str,
+    scaled: Option<Scaled>,
+) -> Option<f64> {
+    let Some(sc) = scaled else {
+        return bike.output(x, name);
+    };
+    if name == "fall_equilibrium" {
+        return FALL_ROWS
+            .iter()
+            .map(|(row, sign)| output(bike, x, row, scaled).map(|v| sign * v))
+            .sum();
+    }
+    let v = bike.output(x, name)?;
+    Some(if sc.rows.contains(&name) { v * sc.factor } else { v })
+}
+
+/// A generated quantity `value` named `name` under the perturbation `scaled`.
+fn scaled_value(name: &str, value: f64, scaled: Option<Scaled>) -> f64 {
+    match scaled {
+        Some(sc) if sc.rows.contains(&name) => value * sc.factor,
+        _ => value,
+    }
+}
+
+/// `claims` with, for each of `ids`, the same check on the perturbed derived side (the claim
+/// of the same id in `perturbed`) recorded as its falsification.
+fn falsified(claims: Vec<Claim>, perturbed: &[Claim], ids: &[(&str, &str)]) -> Vec<Claim> {
+    claims
+        .into_iter()
+        .map(|c| match ids.iter().find(|(id, _)| *id == c.id) {
+            Some((_, what)) => match perturbed.iter().find(|p| p.id == c.id) {
+                Some(p) => c.falsified_by(what, p.clone()),
+                None => c,
+            },
+            None => c,
+        })
+        .collect()
+}
+
 /// The exact steady state of the generated `bicycle_steady` program at lean `theta`, steer
 /// `gamma` and rolling rate `s`, the geometry and kinematics of n° 43–66 solved for the old
 /// bicycle of n° 52.
@@ -225,7 +290,7 @@ fn inertia_claims() -> Vec<Claim> {
 }
 
 /// n° 85: the bicycle's equilibrium equation reduces to the hoop's and to the unicycle's.
-fn reduction_claim() -> Claim {
+fn reduction_claim(scaled: Option<Scaled>) -> Claim {
     let mut rng = Rng(SEED_85);
     let (mut hoop_d, mut uni_d, mut hoop_m, mut uni_m) = (0.0f64, 0.0f64, 0.0f64, 0.0f64);
     for _ in 0..POINTS_85 {
@@ -268,7 +333,7 @@ fn reduction_claim() -> Claim {
             dnu: 0.0,
             ..SteadyState::default()
         };
-        let o = |name: &str| bike.output(&x, name).unwrap_or(f64::NAN);
+        let o = |name: &str| output(&bike, &x, name, scaled).unwrap_or(f64::NAN);
         let (Ok(hoop), Ok(uni)) = (
             Hoop::new(p.radius, p.wheel_mass, p.g),
             Unicycle::new(
@@ -521,7 +586,7 @@ fn turn_claims() -> Vec<Claim> {
 }
 
 /// n° 79, 86 bis, 87, 88: the handlebar's and the pedals' actions.
-fn action_claims() -> Vec<Claim> {
+fn action_claims(scaled: Option<Scaled>) -> Vec<Claim> {
     let mut out = Vec::new();
     let Ok(bike) = BicycleSteady::new(BicycleParams::memoir()) else {
         return out;
@@ -531,7 +596,7 @@ fn action_claims() -> Vec<Claim> {
     let gamma = 10f64.to_radians();
     let f = |s: f64| {
         exact_state(0.0, gamma, s)
-            .and_then(|x| bike.output(&x, "fall_equilibrium"))
+            .and_then(|x| output(&bike, &x, "fall_equilibrium", scaled))
             .unwrap_or(f64::NAN)
     };
     let (f0, f1, f2) = (f(0.0), f(s20), f(2.0 * s20));
@@ -545,7 +610,7 @@ fn action_claims() -> Vec<Claim> {
     let lean = 5f64.to_radians();
     let fall = |g: f64, s: f64| {
         exact_state(lean, g, s)
-            .and_then(|x| bike.output(&x, "fall_equilibrium"))
+            .and_then(|x| output(&bike, &x, "fall_equilibrium", scaled))
             .unwrap_or(f64::NAN)
     };
     let holding_angle = |s: f64| {
@@ -611,7 +676,7 @@ fn action_claims() -> Vec<Claim> {
         "steady-gravity-quadrupled-at-half-speed",
         "88",
         "'Pour une vitesse moitié moindre, 10 km à l'heure, l'influence de la pesanteur est quadruplée.'",
-        "generated ratio_88 = tan(alpha)/tan(theta) along (3)' at 10 and 20 km/h (memoir's constants)",
+        "generated ratio_88 = tan(alpha)/tan(theta) along (3)' at 10 and 20 km/h (memoir's constants). Holds by construction because the generated ratio_88 is the closed form -g l/(R s)^2 of n° 88, whose ratio at half the speed is 4 whatever the constants: the check shows that the derivation gives n° 88's s^-2 law, which the claim restates",
         &[("ratio_10_over_20", q)],
         policy::claim((q - 4.0).abs() <= 1e-12, Verdict::DerivationDiffers),
         "holds (the ratio is -g l/(R s)^2); the values themselves are ten times the printed ones (entries of n° 88)",
@@ -621,9 +686,13 @@ fn action_claims() -> Vec<Claim> {
     let turn = LockedSteer::new(Constants::MEMOIR)
         .ok()
         .and_then(|b| b.steady_turn(5f64.to_radians(), 20.0 / 3.6).ok());
-    let (deta_t, deta_g) = turn
-        .and_then(|t| kin.relations(t.lean, t.gamma).ok())
-        .map_or((f64::NAN, f64::NAN), |r| (r.d_eta_d_theta, r.d_eta_d_gamma));
+    let (deta_t, deta_g) =
+        turn.and_then(|t| kin.relations(t.lean, t.gamma).ok()).map_or((f64::NAN, f64::NAN), |r| {
+            (
+                scaled_value("d_eta_d_theta", r.d_eta_d_theta, scaled),
+                scaled_value("d_eta_d_gamma", r.d_eta_d_gamma, scaled),
+            )
+        });
     let upright =
         kin.relations(0.0, 0.0).map_or(f64::NAN, |r| r.d_eta_d_theta.abs() + r.d_eta_d_gamma.abs());
     out.push(Claim::new(
@@ -643,7 +712,7 @@ fn action_claims() -> Vec<Claim> {
 }
 
 /// n° 86: the leading inertia term.
-fn leading_term_claim() -> Option<Claim> {
+fn leading_term_claim(scaled: Option<Scaled>) -> Option<Claim> {
     let bike = BicycleSteady::new(BicycleParams::memoir()).ok()?;
     let p = bike.params();
     let t = LockedSteer::new(Constants::MEMOIR)
@@ -651,7 +720,7 @@ fn leading_term_claim() -> Option<Claim> {
         .steady_turn(5f64.to_radians(), 20.0 / 3.6)
         .ok()?;
     let x = exact_state(t.lean, t.gamma, t.speed / p.radius)?;
-    let o = |name: &str| bike.output(&x, name).unwrap_or(f64::NAN);
+    let o = |name: &str| output(&bike, &x, name, scaled).unwrap_or(f64::NAN);
     let lead = p.mass * p.radius * p.h * x.s * x.n * x.theta.cos();
     let centrifugal = o("fall_rear") + o("fall_front") + o("fall_frame");
     let rest = centrifugal - lead;
@@ -673,7 +742,7 @@ fn leading_term_claim() -> Option<Claim> {
 }
 
 /// n° 86: « cette quantité [y/l] est diminuée quand le cadre prend une inclinaison θ ».
-fn y_with_lean_claim() -> Claim {
+fn y_with_lean_claim(turn_side: f64) -> Claim {
     let geo = Geometry::old_model();
     let l = geo.wheelbase();
     let y = |theta: f64, gamma: f64| {
@@ -692,7 +761,7 @@ fn y_with_lean_claim() -> Claim {
         ev.push((format!("y/l at θ = 0, γ = {gdeg}°"), upright));
         for tdeg in [-20.0f64, -10.0, -5.0, 5.0, 10.0, 20.0] {
             let v = y(tdeg.to_radians(), g);
-            if tdeg < 0.0 {
+            if tdeg * turn_side > 0.0 {
                 turn_cases += 1;
                 turn_smaller += usize::from(v.abs() < upright.abs());
             } else {
@@ -718,14 +787,48 @@ fn y_with_lean_claim() -> Claim {
 
 /// The claims of n° 79–100.
 pub fn claims() -> Vec<Claim> {
+    const FLIPPED: &str = "the centrifugal rows of the generated fall equation (fall_rear, fall_front, fall_frame) scaled by -1, the fall equation recomputed from its rows";
+    let flipped = action_claims(Some(Scaled { rows: CENTRIFUGAL, factor: -1.0 }));
+    let sigma_alone =
+        action_claims(Some(Scaled { rows: &["d_eta_d_theta", "d_eta_d_gamma"], factor: 0.0 }));
+    let actions = falsified(
+        action_claims(None),
+        &flipped,
+        &[
+            ("steady-handlebar-action-grows-with-speed", FLIPPED),
+            ("steady-abrupt-handlebar-throws-outward", FLIPPED),
+        ],
+    );
+    let actions = falsified(
+        actions,
+        &sigma_alone,
+        &[(
+            "steady-pedals-enter-the-rolling-equation-only",
+            "d eta/d theta and d eta/d gamma of the generated relations (I) scaled by 0: the rear wheel turning by delta sigma alone relative to the frame, as the memoir's statement assumes",
+        )],
+    );
     let (pedals, actions): (Vec<Claim>, Vec<Claim>) =
-        action_claims().into_iter().partition(|c| c.section == "79");
+        actions.into_iter().partition(|c| c.section == "79");
     let mut c = pedals;
     c.extend(inertia_claims());
-    c.push(reduction_claim());
-    c.extend(leading_term_claim());
+    c.push(reduction_claim(None).falsified_by(
+        "the generated rear wheel's centrifugal row fall_rear scaled by 1 + 1e-9",
+        reduction_claim(Some(Scaled { rows: &["fall_rear"], factor: 1.0 + 1e-9 })),
+    ));
+    if let (Some(nominal), Some(heavy_front)) = (
+        leading_term_claim(None),
+        leading_term_claim(Some(Scaled { rows: &["fall_front"], factor: 20.0 })),
+    ) {
+        c.push(nominal.falsified_by(
+            "the generated front wheel's centrifugal row fall_front scaled by 20",
+            heavy_front,
+        ));
+    }
     c.extend(order_claims());
-    c.push(y_with_lean_claim());
+    c.push(y_with_lean_claim(-1.0).falsified_by(
+        "the steady turn's lean taken on the side of gamma (its sign flipped)",
+        y_with_lean_claim(1.0),
+    ));
     c.extend(actions);
     c.extend(turn_claims());
     c.extend(lateral_shift_claims());

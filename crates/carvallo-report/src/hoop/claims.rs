@@ -36,7 +36,66 @@ pub(super) fn claims() -> Vec<Claim> {
     crate::claims::once_in_memoir_order(&CLAIMS, compute)
 }
 
+/// The first constant of the generated stability first member (S) of n° 9 (its 2/3) scaled by
+/// 1 + 1e-3.
+const S_SCALED: crate::perturb::Perturbation = crate::perturb::Perturbation {
+    model: "hoop",
+    output: "stability",
+    constant: 0,
+    factor: 1.0 + 1e-3,
+};
+/// The first constant of the generated equilibrium (E) of n° 8 (its 4/3) scaled by 1 + 1e-3.
+const E_SCALED: crate::perturb::Perturbation = crate::perturb::Perturbation {
+    model: "hoop",
+    output: "equilibrium",
+    constant: 0,
+    factor: 1.0 + 1e-3,
+};
+
+/// The first constant of the generated p' of system (2) (`pns_dp`, its 4/3) scaled by 1 + 1e-3.
+const DP_SCALED: crate::perturb::Perturbation = crate::perturb::Perturbation {
+    model: "hoop",
+    output: "pns_dp",
+    constant: 0,
+    factor: 1.0 + 1e-3,
+};
+
+/// The checks with the falsification of those that a perturbation of the generated `hoop`
+/// program breaks ([`crate::perturb::falsify`]).
 fn compute() -> Vec<Claim> {
+    let table: [crate::perturb::Row; 3] = [
+        (
+            &S_SCALED,
+            || {
+                let mut v = vec![p_second_derivative()];
+                v.extend(fall_laws());
+                v
+            },
+            &["hoop-p2-has-factor-p", "hoop-fall-law-uniform"],
+        ),
+        (
+            &E_SCALED,
+            || {
+                let mut v = recursion();
+                v.push(e_limits());
+                v
+            },
+            &["hoop-recursion-7", "hoop-e-limits"],
+        ),
+        (
+            &DP_SCALED,
+            || {
+                let runs = stability_runs();
+                vec![stability_condition(&runs), characteristic_roots(&runs)]
+            },
+            &["hoop-stability-condition", "hoop-characteristic-roots"],
+        ),
+    ];
+    crate::perturb::falsify(compute_checks(), &table)
+}
+
+/// The checks of n° 1–12 and 71–78, as derived.
+fn compute_checks() -> Vec<Claim> {
     let mut out = vec![principal_axes(), virtual_work()];
     out.push(p_second_derivative());
     out.push(odd_in_time());
@@ -105,12 +164,14 @@ fn p_second_derivative() -> Claim {
         let s = q - n * theta.sin();
         for p in [0.5 * nu, -1.5 * nu] {
             let x = [theta, p, n, s];
-            let dx = hoop.rhs_pns(x);
+            let dx = crate::perturb::hoop_rhs_pns(&hoop, x);
             let h = 1e-6 / nu;
             let fwd: [f64; 4] = std::array::from_fn(|i| x[i] + h * dx[i]);
             let bwd: [f64; 4] = std::array::from_fn(|i| x[i] - h * dx[i]);
-            let p2 = (hoop.rhs_pns(fwd)[1] - hoop.rhs_pns(bwd)[1]) / (2.0 * h);
-            let f1 = -hoop.stability(theta, s, n);
+            let p2 = (crate::perturb::hoop_rhs_pns(&hoop, fwd)[1]
+                - crate::perturb::hoop_rhs_pns(&hoop, bwd)[1])
+                / (2.0 * h);
+            let f1 = -crate::perturb::hoop_stability(&hoop, theta, s, n);
             max_f1 = max_f1.max((p2 / p - f1).abs() / f1.abs().max(nu * nu));
         }
     }
@@ -135,8 +196,8 @@ fn odd_in_time() -> Claim {
     let (mut fwd, mut bwd) = (x0, x0);
     let mut worst = 0.0f64;
     for _ in 0..steps {
-        fwd = rk4_step(|y| hoop.rhs_pns(y), fwd, dt);
-        bwd = rk4_step(|y| hoop.rhs_pns(y), bwd, -dt);
+        fwd = rk4_step(|y| crate::perturb::hoop_rhs_pns(&hoop, y), fwd, dt);
+        bwd = rk4_step(|y| crate::perturb::hoop_rhs_pns(&hoop, y), bwd, -dt);
         worst = worst
             .max((fwd[0] - bwd[0]).abs())
             .max((fwd[1] + bwd[1]).abs() / nu)
@@ -161,15 +222,15 @@ fn recursion() -> Vec<Claim> {
     let hoop = unit_hoop();
     let (theta_e, s) = (0.3, 1.0);
     let n = hoop.steady_turning_rates(theta_e, s).map_or(f64::NAN, |r| r[1]);
-    let f1_at = |th: f64, n: f64, s: f64| -hoop.stability(th, s, n);
+    let f1_at = |th: f64, n: f64, s: f64| -crate::perturb::hoop_stability(&hoop, th, s, n);
     let mut rows = Vec::new();
     for delta in [0.1, 0.05] {
         let theta0 = theta_e + delta;
         let x0 = [theta0, 0.0, n, s];
-        let f = hoop.equilibrium(theta0, s, n);
+        let f = crate::perturb::hoop_equilibrium(&hoop, theta0, s, n);
         let f1 = f1_at(theta0, n, s);
         // f2 = D f1: derivative along the flow with p treated as 1 (n'/p, s'/p from system (2)).
-        let [_, _, dn, ds] = hoop.rhs_pns([theta0, 1.0, n, s]);
+        let [_, _, dn, ds] = crate::perturb::hoop_rhs_pns(&hoop, [theta0, 1.0, n, s]);
         let h = 1e-5;
         let d = |g: &dyn Fn(f64) -> f64| (g(h) - g(-h)) / (2.0 * h);
         let f2 = d(&|e| f1_at(theta0 + e, n, s))
@@ -182,7 +243,7 @@ fn recursion() -> Vec<Claim> {
         let mut x = x0;
         let mut samples = Vec::with_capacity(steps);
         for i in 1..=steps {
-            x = rk4_step(|y| hoop.rhs_pns(y), x, dt);
+            x = rk4_step(|y| crate::perturb::hoop_rhs_pns(&hoop, y), x, dt);
             samples.push((dt * i as f64, x[1]));
         }
         let c = odd_fit(&samples, 6);
@@ -232,14 +293,14 @@ fn steady_state_persists() -> Claim {
     for (theta, s) in [(0.2, 1.0), (0.5, 1.2), (0.8, 2.0)] {
         let Some(roots) = hoop.steady_turning_rates(theta, s * nu) else { continue };
         for n in roots {
-            if hoop.stability(theta, s * nu, n) <= 0.0 {
+            if crate::perturb::hoop_stability(&hoop, theta, s * nu, n) <= 0.0 {
                 continue;
             }
             cases += 1;
             let x0 = [theta, 0.0, n, s * nu];
             let mut x = x0;
             for _ in 0..5000 {
-                x = rk4_step(|y| hoop.rhs_pns(y), x, 1e-3);
+                x = rk4_step(|y| crate::perturb::hoop_rhs_pns(&hoop, y), x, 1e-3);
                 worst = worst
                     .max((x[0] - x0[0]).abs())
                     .max(x[1].abs() / nu)
@@ -283,7 +344,8 @@ fn trajectory_radius() -> Claim {
                 }
                 z = rk4_step(
                     |y: [f64; 7]| {
-                        let [a, b, c, d] = hoop.rhs_pns([y[0], y[1], y[2], y[3]]);
+                        let [a, b, c, d] =
+                            crate::perturb::hoop_rhs_pns(&hoop, [y[0], y[1], y[2], y[3]]);
                         [a, b, c, d, y[2], r * y[3] * y[4].cos(), r * y[3] * y[4].sin()]
                     },
                     z,
@@ -317,7 +379,7 @@ fn stable_fall_rate_vanishes() -> Claim {
     let nu = hoop.rate_unit();
     let (theta, s) = (0.3, 1.0 * nu);
     let n = hoop.steady_turning_rates(theta, s).map_or(f64::NAN, |r| r[1]);
-    let k = hoop.stability(theta, s, n);
+    let k = crate::perturb::hoop_stability(&hoop, theta, s, n);
     let half = std::f64::consts::PI / k.sqrt();
     let zero = states_at_p_zeros(&hoop, [theta, 0.2 * nu, n, s], 1e-4, 2.0 * half, 1)
         .map_or(f64::NAN, |z| z[0].0);
@@ -348,7 +410,7 @@ fn fall_laws() -> Vec<Claim> {
         let mut x = [theta_e + delta, 0.0, n, s];
         let (mut err, mut size) = (0.0f64, 0.0f64);
         for i in 1..=steps {
-            x = rk4_step(|y| hoop.rhs_pns(y), x, dt);
+            x = rk4_step(|y| crate::perturb::hoop_rhs_pns(&hoop, y), x, dt);
             let cf = law.theta(dt * i as f64);
             err = err.max((x[0] - cf).abs());
             size = size.max((cf - law.theta0).abs());
@@ -360,8 +422,12 @@ fn fall_laws() -> Vec<Claim> {
     let uniform_window = |l: &FallLaw| (20.0 * l.theta0 / l.f).abs().sqrt();
     // Uniform: s with (S) = 0 exactly at the release θ0 = δ (upright, n = 0).
     let uniform_s = |delta: f64| {
-        carvallo::numerics::poly::bisect(|s| hoop.stability(delta, s, 0.0), 0.1 * nu, nu)
-            .unwrap_or(f64::NAN)
+        carvallo::numerics::poly::bisect(
+            |s| crate::perturb::hoop_stability(&hoop, delta, s, 0.0),
+            0.1 * nu,
+            nu,
+        )
+        .unwrap_or(f64::NAN)
     };
     let mut out = Vec::new();
     let cases: [(&str, &str, &str, FallRegime); 3] = [
@@ -435,7 +501,7 @@ fn fall_laws() -> Vec<Claim> {
         let mut x = [law.theta0, 0.0, n, s];
         let mut acc = 0.5 * x[0];
         for i in 1..=steps {
-            x = rk4_step(|y| hoop.rhs_pns(y), x, dt);
+            x = rk4_step(|y| crate::perturb::hoop_rhs_pns(&hoop, y), x, dt);
             acc += if i == steps { 0.5 * x[0] } else { x[0] };
         }
         let sim_mean = acc / steps as f64;
@@ -542,10 +608,12 @@ fn e_symmetry() -> Claim {
         let theta = rng.uniform(-1.3, 1.3);
         let (p, n, s) =
             (nu * rng.uniform(-3.0, 3.0), nu * rng.uniform(-3.0, 3.0), nu * rng.uniform(0.0, 3.0));
-        e_diff =
-            e_diff.max(rel_diff(hoop.equilibrium(-theta, s, -n), -hoop.equilibrium(theta, s, n)));
-        let a = hoop.rhs_pns([theta, p, n, s]);
-        let b = hoop.rhs_pns([-theta, -p, -n, s]);
+        e_diff = e_diff.max(rel_diff(
+            crate::perturb::hoop_equilibrium(&hoop, -theta, s, -n),
+            -crate::perturb::hoop_equilibrium(&hoop, theta, s, n),
+        ));
+        let a = crate::perturb::hoop_rhs_pns(&hoop, [theta, p, n, s]);
+        let b = crate::perturb::hoop_rhs_pns(&hoop, [-theta, -p, -n, s]);
         for (x, y) in [(a[0], -b[0]), (a[1], -b[1]), (a[2], -b[2]), (a[3], b[3])] {
             f_diff = f_diff.max(rel_diff(x, y));
         }
@@ -602,9 +670,12 @@ fn e_limits() -> Claim {
     let (mut at_half_pi, mut upright) = (0.0f64, 0.0f64);
     for _ in 0..64 {
         let (s, n) = (nu * rng.uniform(0.0, 3.0), nu * rng.uniform(-3.0, 3.0));
-        at_half_pi =
-            at_half_pi.max(rel_diff(hoop.equilibrium(std::f64::consts::FRAC_PI_2, s, n), g_term));
-        upright = upright.max(rel_diff(hoop.equilibrium(0.0, s, n), 4.0 / 3.0 * s * n));
+        at_half_pi = at_half_pi.max(rel_diff(
+            crate::perturb::hoop_equilibrium(&hoop, std::f64::consts::FRAC_PI_2, s, n),
+            g_term,
+        ));
+        upright = upright
+            .max(rel_diff(crate::perturb::hoop_equilibrium(&hoop, 0.0, s, n), 4.0 / 3.0 * s * n));
     }
     Claim::new(
         "hoop-e-limits",

@@ -8,12 +8,12 @@
 use std::collections::BTreeMap;
 use std::f64::consts::PI;
 
+use crate::perturb::{unicycle_eval as eval, unicycle_out as out};
 use carvallo::hoop::Hoop;
 use carvallo::unicycle::variants::Pitch;
 use carvallo::unicycle::{Rider, Unicycle, Wheel};
 use carvallo::unicycle_discussion::{
-    bisect, curve_n_s, eval, minimum_on_e, n32, out, s_on_e, stability_limit, trinomial, Point,
-    H_OVER_R,
+    bisect, curve_n_s, minimum_on_e, n32, s_on_e, stability_limit, trinomial, Point, H_OVER_R,
 };
 
 use crate::claims::{Assertion, Claim, Status};
@@ -1889,7 +1889,38 @@ fn big_wheel_remark() -> Claim {
 }
 
 /// The unicycle's claims, n° by n°.
+/// The first constant of the generated stability first member of n° 34 (`stability`) scaled
+/// by 1 + 1e-3.
+const STABILITY_SCALED: crate::perturb::Perturbation = crate::perturb::Perturbation {
+    model: "unicycle",
+    output: "stability",
+    constant: 0,
+    factor: 1.0 + 1e-3,
+};
+/// The first constant of the generated (S) of n° 40 (`stability_n40`) scaled by 1 + 1e-3.
+const S40_SCALED: crate::perturb::Perturbation = crate::perturb::Perturbation {
+    model: "unicycle",
+    output: "stability_n40",
+    constant: 0,
+    factor: 1.0 + 1e-3,
+};
+
+/// The memoir's claims of the unicycle, with the falsification of those that a perturbation
+/// of the generated `unicycle` program breaks ([`crate::perturb::falsify`]).
 pub fn claims() -> Vec<Claim> {
+    let table: [crate::perturb::Row; 2] = [
+        (&STABILITY_SCALED, || vec![stability_recipe()], &["unicycle-stability-recipe"]),
+        (
+            &S40_SCALED,
+            || vec![small_lean(), s_misses_e()],
+            &["unicycle-small-lean-outside-interval", "unicycle-s-curve-misses-e"],
+        ),
+    ];
+    crate::perturb::falsify(claims_as_derived(), &table)
+}
+
+/// The claims as derived.
+fn claims_as_derived() -> Vec<Claim> {
     let (slope, slope_sign) = slope_moment();
     let (increase, larger) = abrupt_turn();
     vec![

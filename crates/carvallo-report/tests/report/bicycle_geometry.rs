@@ -62,20 +62,52 @@ fn text_report_snapshot() {
     });
 }
 
-/// The claims of this report ([`carvallo_report::claims`]): the expected verdict of each.
-fn expected_claims() -> BTreeMap<&'static str, Verdict> {
-    BTreeMap::from([
-        ("geometry-axis-crosses-contact-radius", Verdict::Agrees),
-        ("geometry-right-angle-turn-lowers-frame", Verdict::Agrees),
-        ("geometry-sigma1-barely-moves-mu", Verdict::Agrees),
-        ("geometry-lowest-frame-where-e-touches", Verdict::Agrees),
-    ])
-}
-
+/// The claims of this report ([`carvallo_report::claims`]): the verdict of each and the
+/// evidence that carries it, with the thresholds of the memoir's statement written here.
 #[test]
 fn claims_have_the_expected_verdicts() {
+    use common::Ev::*;
     let claims = carvallo_report::bicycle::geometry::claims();
-    common::assert_claim_verdicts(&claims, &expected_claims());
+    common::assert_claim_evidence(
+        &claims,
+        &[
+            // n° 43: the axis meets CM (R = 0.38 m) when c / sin(sigma0) < R; trail positive.
+            (
+                "geometry-axis-crosses-contact-radius",
+                Verdict::Agrees,
+                &[
+                    Below("crossing_below_C_m", 0.38),
+                    Near("radius_m", 0.38, 0.0),
+                    Above("trail_m", 0.0),
+                ],
+            ),
+            // n° 44: at gamma = 90° the contact angle is zero and the frame lower than at rest.
+            (
+                "geometry-right-angle-turn-lowers-frame",
+                Verdict::Agrees,
+                &[Near("mu_rad", 0.0, 1e-12), Below("sigma_minus_sigma0_deg", 0.0)],
+            ),
+            // n° 52: mu0 off mu by "a few tenths of a degree", largest near the lowest frame.
+            (
+                "geometry-sigma1-barely-moves-mu",
+                Verdict::Agrees,
+                &[
+                    Near("largest_mu_minus_mu0_deg", 0.3, 0.05),
+                    Near("steer_of_largest_minus_sigma1_deg", 60.0, 5.0),
+                ],
+            ),
+            // n° 53: the minimum of sigma is where E touches (61.856°), to the search's 1e-3°.
+            (
+                "geometry-lowest-frame-where-e-touches",
+                Verdict::Agrees,
+                &[
+                    Equal("gamma_of_min_sigma_deg", "gamma_with_e_on_ground_deg", 1e-3),
+                    Near("gamma_with_e_on_ground_deg", 61.855_887_779, 1e-8),
+                    Near("sigma_min_minus_sigma_e_rad", 0.0, 1e-12),
+                ],
+            ),
+        ],
+    );
 }
 
 #[test]

@@ -42,18 +42,40 @@ fn text_report_snapshot() {
     });
 }
 
-/// The claims of this report ([`carvallo_report::claims`]): the expected verdict of each.
-fn expected_claims() -> BTreeMap<&'static str, Verdict> {
-    BTreeMap::from([
-        ("kinematics-upright-rest-unstable", Verdict::Agrees),
-        ("kinematics-rider-low-and-forward", Verdict::Agrees),
-    ])
-}
-
+/// The claims of this report ([`carvallo_report::claims`]): the verdict of each and the
+/// evidence that carries it, with the thresholds written here.
 #[test]
 fn claims_have_the_expected_verdicts() {
+    use common::Ev::*;
     let claims = carvallo_report::bicycle::kinematics::claims();
-    common::assert_claim_verdicts(&claims, &expected_claims());
+    common::assert_claim_evidence(
+        &claims,
+        &[
+            // n° 69: upright rest is a maximum of the height (d2Z/dtheta2 = -Z < 0), eta fixed;
+            // second differences of step 1e-3 agree with -Z to their truncation, 1e-5.
+            (
+                "kinematics-upright-rest-unstable",
+                Verdict::Agrees,
+                &[
+                    Below("d2z_dtheta2", 0.0),
+                    Equal("d2z_dtheta2", "minus_z", 1e-5),
+                    Near("eta_drift_at_0_3_rad", 0.0, 1e-12),
+                ],
+            ),
+            // n° 69: lowering or moving the rider forward raises d2Z (less unstable); at M
+            // (Z = 0) it is positive, at the illustrative centre negative.
+            (
+                "kinematics-rider-low-and-forward",
+                Verdict::Agrees,
+                &[
+                    Exceeds("d2z_lower", "d2z_illustrative"),
+                    Exceeds("d2z_forward", "d2z_illustrative"),
+                    Above("d2z_at_m", 0.0),
+                    Below("d2z_illustrative", 0.0),
+                ],
+            ),
+        ],
+    );
 }
 
 #[test]

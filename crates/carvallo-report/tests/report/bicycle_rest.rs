@@ -4,8 +4,6 @@
 //! in the full report, and a snapshot of the text table with numbers normalised to 4
 //! significant digits.
 
-use std::collections::BTreeMap;
-
 use carvallo_report::bicycle::rest::{entries, LEANS, NEGLIGIBLE_DEG};
 use carvallo_report::{render_text_normalised, Derived, Verdict};
 
@@ -46,15 +44,26 @@ fn text_report_snapshot() {
     });
 }
 
-/// The claims of this report ([`carvallo_report::claims`]): the expected verdict of each.
-fn expected_claims() -> BTreeMap<&'static str, Verdict> {
-    BTreeMap::from([("rest-light-front-wheel-rests-at-lowest-frame", Verdict::Agrees)])
-}
-
+/// The claims of this report: the verdict and the evidence that carries it (thresholds here).
 #[test]
 fn claims_have_the_expected_verdicts() {
+    use crate::common::Ev::*;
     let claims = carvallo_report::bicycle::rest::claims();
-    crate::common::assert_claim_verdicts(&claims, &expected_claims());
+    crate::common::assert_claim_evidence(
+        &claims,
+        &[(
+            "rest-light-front-wheel-rests-at-lowest-frame",
+            Verdict::Agrees,
+            // The shift vanishes with the wheel's mass: below 0.1° at 0.05 kg, proportional
+            // to the mass (a factor 10 per decade within 1).
+            &[
+                Above("shift_deg_mu1_0_05kg", 0.0),
+                Below("shift_deg_mu1_0_05kg", 0.1),
+                Near("shift_ratio_per_decade", 10.0, 1.0),
+                Exceeds("shift_deg_mu1_5kg", "shift_deg_mu1_0_5kg"),
+            ],
+        )],
+    );
 }
 
 #[test]

@@ -56,21 +56,53 @@ pub fn assert_formulas_agree_within_tolerance(entries: &[Entry]) {
     }
 }
 
-/// Every claim of a report has the verdict `expected` gives its id, and `expected` names no
-/// other claim.
-pub fn assert_claim_verdicts(
+/// A condition a claim's evidence must meet for its verdict, with the threshold written in
+/// the test (not imported from the code under test).
+#[derive(Clone, Copy, Debug)]
+pub enum Ev {
+    /// `evidence[key] < bound`.
+    Below(&'static str, f64),
+    /// `evidence[key] > bound`.
+    Above(&'static str, f64),
+    /// `|evidence[key] - target| <= tol`.
+    Near(&'static str, f64, f64),
+    /// `evidence[a] > evidence[b]`.
+    Exceeds(&'static str, &'static str),
+    /// `|evidence[a] - evidence[b]| <= tol`.
+    Equal(&'static str, &'static str, f64),
+}
+
+/// Every claim has the verdict listed with its id and evidence meeting every listed
+/// condition; the list names every claim and no other. All mismatches are reported at once.
+pub fn assert_claim_evidence(
     claims: &[carvallo_report::Claim],
-    expected: &BTreeMap<&'static str, Verdict>,
+    expected: &[(&str, Verdict, &[Ev])],
 ) {
     let ids: Vec<&str> = claims.iter().map(|c| c.id.as_str()).collect();
-    assert_eq!(claims.len(), expected.len(), "claims: {ids:?}");
-    for c in claims {
-        assert_eq!(
-            expected.get(c.id.as_str()),
-            Some(&c.verdict),
-            "{}: {}",
-            c.id,
-            c.evidence_text()
-        );
+    let listed: Vec<&str> = expected.iter().map(|e| e.0).collect();
+    let (mut a, mut b) = (ids.clone(), listed.clone());
+    a.sort_unstable();
+    b.sort_unstable();
+    assert_eq!(a, b, "claims against the list");
+    let mut wrong = String::new();
+    for (id, verdict, conditions) in expected {
+        let c = claims.iter().find(|c| c.id == *id).expect("listed");
+        if c.verdict != *verdict {
+            wrong.push_str(&format!("{id}: {} not {}\n", c.verdict.as_str(), verdict.as_str()));
+        }
+        let get = |k: &str| c.evidence.get(k).copied().unwrap_or(f64::NAN);
+        for cond in *conditions {
+            let ok = match *cond {
+                Ev::Below(k, x) => get(k) < x,
+                Ev::Above(k, x) => get(k) > x,
+                Ev::Near(k, x, tol) => (get(k) - x).abs() <= tol,
+                Ev::Exceeds(p, q) => get(p) > get(q),
+                Ev::Equal(p, q, tol) => (get(p) - get(q)).abs() <= tol,
+            };
+            if !ok {
+                wrong.push_str(&format!("{id}: {cond:?} fails on {}\n", c.evidence_text()));
+            }
+        }
     }
+    assert!(wrong.is_empty(), "claims whose evidence does not carry the verdict:\n{wrong}");
 }

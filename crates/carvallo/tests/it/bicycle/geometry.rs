@@ -93,6 +93,30 @@ fn first_order_method_against_the_exact_solution() {
     assert!(worst < 1e-4, "worst first-order error {worst} rad");
 }
 
+/// The front wheel's plane normal CN, its horizontal axis i1 and its axis k1, written by hand
+/// from n° 46–47 (not from the generated code): the frame's vectors on I, J, K with the rear
+/// plane's normal n = J cos θ + K sin θ, k = −J sin θ + K cos θ, H = I cos σ + k sin σ,
+/// G = −I sin σ + k cos σ (the steering axis), H1 = H cos γ + n sin γ; the front plane holds G
+/// and H1, so CN = H1 × G (unit: G ⊥ H1), i1 = K × CN / |K × CN| and k1 = CN × i1.
+fn front_axes_by_hand(theta: f64, gamma: f64, sigma: f64) -> [[f64; 3]; 3] {
+    let (st, ct) = theta.sin_cos();
+    let (ss, cs) = sigma.sin_cos();
+    let (sg, cg) = gamma.sin_cos();
+    let n = [0.0, ct, st];
+    let k = [0.0, -st, ct];
+    let h: [f64; 3] = std::array::from_fn(|i| [1.0, 0.0, 0.0][i] * cs + k[i] * ss);
+    let g: [f64; 3] = std::array::from_fn(|i| -[1.0, 0.0, 0.0][i] * ss + k[i] * cs);
+    let h1: [f64; 3] = std::array::from_fn(|i| h[i] * cg + n[i] * sg);
+    let cross = |a: [f64; 3], b: [f64; 3]| {
+        [a[1] * b[2] - a[2] * b[1], a[2] * b[0] - a[0] * b[2], a[0] * b[1] - a[1] * b[0]]
+    };
+    let cn = cross(h1, g);
+    let kxn = cross([0.0, 0.0, 1.0], cn);
+    let norm = (kxn[0] * kxn[0] + kxn[1] * kxn[1]).sqrt();
+    let i1 = [kxn[0] / norm, kxn[1] / norm, 0.0];
+    [cn, i1, cross(cn, i1)]
+}
+
 #[test]
 fn accessory_angles_and_front_axes() {
     let g = Geometry::old_model();
@@ -102,26 +126,25 @@ fn accessory_angles_and_front_axes() {
         let f = g.front_wheel(theta, 0.0, c.sigma, c.mu);
         assert!((f.beta + theta).abs() <= 1e-14 && f.alpha.abs() <= 1e-14, "theta {theta}");
     }
+    // Against the axes by hand at the solved (σ, μ): the same formulas in another order, so
+    // a few ulps (measured below 1e-15); 1e-14 absolute on unit vectors and on the angles
+    // (|α|, |β| < π/2, away from the poles of asin and atan2 at these positions).
     for (theta, gamma) in positions().into_iter().take(50) {
         let c = g.solve(theta, gamma).unwrap();
         let f = g.front_wheel(theta, gamma, c.sigma, c.mu);
-        let n = f.normal;
-        let dot = |a: [f64; 3], b: [f64; 3]| a[0] * b[0] + a[1] * b[1] + a[2] * b[2];
-        let i1 = [f.i1[0], f.i1[1], 0.0];
-        assert!((dot(n, n) - 1.0).abs() <= 1e-14);
-        assert!(
-            dot(i1, n).abs() <= 1e-14
-                && dot(f.k1, n).abs() <= 1e-14
-                && dot(i1, f.k1).abs() <= 1e-14
-        );
-        assert!((dot(f.k1, f.k1) - 1.0).abs() <= 1e-14 && f.k1[2] >= 0.0);
-        // n° 57 (1): CN = I cos b sin a - J cos b cos a + K sin b.
-        let (sa, ca) = f.alpha.sin_cos();
-        let (sb, cb) = f.beta.sin_cos();
-        let expect = [cb * sa, -cb * ca, sb];
+        let [cn, i1, k1] = front_axes_by_hand(theta, gamma, c.sigma);
         for i in 0..3 {
-            assert!((expect[i] - n[i]).abs() <= 1e-14);
+            assert!((cn[i] - f.normal[i]).abs() <= 1e-14, "CN {cn:?} vs {:?}", f.normal);
+            assert!((k1[i] - f.k1[i]).abs() <= 1e-14, "k1 {k1:?} vs {:?}", f.k1);
         }
+        for i in 0..2 {
+            assert!((i1[i] - f.i1[i]).abs() <= 1e-14, "i1 {i1:?} vs {:?}", f.i1);
+        }
+        // n° 57 (1): CN = I cos b sin a - J cos b cos a + K sin b, solved for a and b.
+        let beta = cn[2].asin();
+        let alpha = cn[0].atan2(-cn[1]);
+        assert!((beta - f.beta).abs() <= 1e-14, "beta {beta} vs {}", f.beta);
+        assert!((alpha - f.alpha).abs() <= 1e-14, "alpha {alpha} vs {}", f.alpha);
     }
 }
 

@@ -69,7 +69,9 @@ fn toml_value() -> impl Strategy<Value = String> {
 fn arbitrary_text_never_panics() {
     runner(1)
         .run(&any::<String>(), |text| {
-            // Either read, with every parameter finite, or rejected with a message.
+            // Either read, a valid bicycle (every parameter finite, and the values accepted
+            // again by the validating constructor), or rejected by a message that names what
+            // is wrong: the reader's syntax message, or a key (and value) found in the text.
             for t in [text.clone(), format!("[parameters]\n{text}")] {
                 match WhippleParams::from_toml_str(&t) {
                     Ok(p) => {
@@ -77,8 +79,47 @@ fn arbitrary_text_never_panics() {
                             let x = p.get(key).unwrap_or(f64::NAN);
                             prop_assert!(x.is_finite(), "{key} read as {x} from {t:?}");
                         }
+                        prop_assert_eq!(WhippleParams::from_values(*p.values()).ok(), Some(p));
                     }
-                    Err(e) => prop_assert!(!e.to_string().is_empty(), "empty error for {t:?}"),
+                    Err(e) => {
+                        let msg = e.to_string();
+                        match &e {
+                            WhippleError::Syntax { message } => prop_assert!(
+                                !message.is_empty()
+                                    && msg == format!("invalid parameter file: {message}"),
+                                "{msg}"
+                            ),
+                            WhippleError::MissingKey { key } => {
+                                prop_assert!(
+                                    PARAM_NAMES.contains(key) && msg.contains(key),
+                                    "{msg}"
+                                )
+                            }
+                            WhippleError::UnknownKey { key } => {
+                                prop_assert!(
+                                    t.contains(key.as_str()) && msg.contains(key.as_str()),
+                                    "{msg}"
+                                )
+                            }
+                            WhippleError::NotANumber { key, value } => prop_assert!(
+                                t.contains(key.as_str())
+                                    && msg.contains(key.as_str())
+                                    && msg.contains(value.as_str()),
+                                "{msg}"
+                            ),
+                            WhippleError::Parameter(ParameterError::InvalidParameter {
+                                name,
+                                value,
+                                ..
+                            }) => {
+                                prop_assert!(
+                                    PARAM_NAMES.contains(name) && msg.contains(name),
+                                    "{msg}"
+                                );
+                                prop_assert!(msg.contains(&format!("{value:?}")), "{msg}");
+                            }
+                        }
+                    }
                 }
             }
             Ok(())

@@ -1,0 +1,315 @@
+//! Perturbations of the derived side at the IR level (issue 38): a claim's check is run again
+//! on a generated program with one coefficient of one output scaled by a stated relative
+//! amount, and the verdict it then gives is recorded beside its own
+//! ([`crate::claims::Falsification`]). The printed side is never touched: the constant is
+//! changed in a copy of the output's own instructions (its cone), so an output of the memoir's
+//! transcribed formulas that shares the constant keeps it.
+//!
+//! A perturbation is active on the current thread while [`with`] runs its closure; the
+//! claims read the generated outputs through [`discussion_output`], which evaluates the
+//! perturbed program with the interpreter of `carvallo_ir` when one is active and the compiled
+//! evaluator otherwise.
+
+use std::cell::RefCell;
+use std::collections::{BTreeMap, BTreeSet};
+
+use carvallo::ir::{Inst, Interpreter, Op, Program, Value};
+
+/// One coefficient of one output of a generated program scaled.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct Perturbation {
+    /// The model whose program is perturbed (`hoop_discussion`).
+    pub model: &'static str,
+    /// The output whose cone holds the constant.
+    pub output: &'static str,
+    /// Which constant of the cone, in program order (0 is the first).
+    pub constant: usize,
+    /// The factor it is multiplied by.
+    pub factor: f64,
+}
+
+/// The perturbed program, compiled once for the interpreter.
+struct Active {
+    model: &'static str,
+    program: Program,
+    interp: Interpreter,
+}
+
+impl Active {
+    /// Every output at the named arguments (`missing` for a name not given).
+    fn eval(&self, get: impl Fn(&str) -> Option<f64>, missing: f64) -> Option<Vec<f64>> {
+        let p = &self.program;
+        let params: Vec<f64> = p.params.iter().map(|n| get(n).unwrap_or(missing)).collect();
+        let inputs: Vec<f64> = p.inputs.iter().map(|n| get(n).unwrap_or(missing)).collect();
+        let mut scratch = vec![0.0; self.interp.scratch_len()];
+        let mut out = vec![0.0; self.interp.n_outputs()];
+        self.interp.eval(&params, &inputs, &mut scratch, &mut out).ok()?;
+        Some(out)
+    }
+}
+
+thread_local! {
+    static ACTIVE: RefCell<Option<Active>> = const { RefCell::new(None) };
+}
+
+/// The instructions the output `name` depends on, in program order.
+fn cone(p: &Program, name: &str) -> Option<Vec<usize>> {
+    let out = p.output(name)?;
+    let mut seen = BTreeSet::new();
+    let mut stack = vec![out.value];
+    while let Some(v) = stack.pop() {
+        if let Value::Inst(i) = v {
+            if seen.insert(i as usize) {
+                stack.extend(p.insts[i as usize].op.operands());
+            }
+        }
+    }
+    Some(seen.into_iter().collect())
+}
+
+/// The program of `p` with the perturbation applied: the cone of the output copied after the
+/// program's instructions, the chosen constant of the copy scaled, the output redirected to
+/// the copy. Also returns the constant's value before scaling. `None` when the output or the
+/// constant does not exist.
+pub fn perturbed_program(p: &Program, pert: &Perturbation) -> Option<(Program, f64)> {
+    let members = cone(p, pert.output)?;
+    let consts: Vec<usize> =
+        members.iter().copied().filter(|&i| matches!(p.insts[i].op, Op::Const(_))).collect();
+    let target = *consts.get(pert.constant)?;
+    let Op::Const(value) = p.insts[target].op else { return None };
+    let mut q = p.clone();
+    let base = q.insts.len() as u32;
+    let index: BTreeMap<usize, u32> =
+        members.iter().enumerate().map(|(k, &i)| (i, base + k as u32)).collect();
+    for &i in &members {
+        let inst = &p.insts[i];
+        let op = if i == target {
+            Op::Const(value * pert.factor)
+        } else {
+            inst.op.map_operands(|v| match v {
+                Value::Inst(j) => Value::Inst(index.get(&(j as usize)).copied().unwrap_or(j)),
+                other => other,
+            })
+        };
+        q.insts.push(Inst { name: format!("{}__perturbed", inst.name), op });
+    }
+    let out = q.outputs.iter_mut().find(|o| o.name == pert.output)?;
+    if let Value::Inst(j) = out.value {
+        out.value = Value::Inst(index[&(j as usize)]);
+    }
+    Some((q, value))
+}
+
+/// The IR text of a model's generated program.
+fn ir_of(model: &str) -> Option<&'static str> {
+    carvallo::artifacts::artifact(model).map(|a| a.ir)
+}
+
+/// Runs `f` with the perturbation active on this thread; `None` (and `f` not run) when the
+/// model, output or constant does not exist. Also returns the constant's value before scaling.
+pub fn with<T>(pert: &Perturbation, f: impl FnOnce() -> T) -> Option<(T, f64)> {
+    let program = Program::parse(ir_of(pert.model)?).ok()?;
+    let (program, value) = perturbed_program(&program, pert)?;
+    let interp = Interpreter::new(&program).ok()?;
+    ACTIVE.with(|a| *a.borrow_mut() = Some(Active { model: pert.model, program, interp }));
+    let out = f();
+    ACTIVE.with(|a| *a.borrow_mut() = None);
+    Some((out, value))
+}
+
+/// The output `name` of the active perturbed program of `model` at the named arguments
+/// (missing names are 0), or `None` when no perturbation of that model is active.
+fn active_output(model: &str, name: &str, args: &[(&str, f64)]) -> Option<f64> {
+    ACTIVE.with(|a| {
+        let a = a.borrow();
+        let active = a.as_ref().filter(|a| a.model == model)?;
+        let k = active.program.outputs.iter().position(|o| o.name == name)?;
+        let get = |n: &str| args.iter().find(|(k, _)| *k == n).map(|(_, v)| *v);
+        active.eval(get, 0.0).map(|v| v[k])
+    })
+}
+
+/// The output `name` of the generated `hoop_discussion` program: the perturbed one when a
+/// perturbation of it is active, otherwise [`carvallo::hoop_discussion::output`].
+pub fn discussion_output(name: &str, args: &[(&str, f64)]) -> f64 {
+    active_output("hoop_discussion", name, args)
+        .unwrap_or_else(|| carvallo::hoop_discussion::output(name, args))
+}
+
+/// The normalised (E), (S) or (D) of n° 12 (`equilibrium_n12`, `stability_n12`, `skid_n12` of
+/// the generated `hoop` program) at (θ, s, n): the perturbed program when a perturbation of it
+/// is active, otherwise [`carvallo::hoop::normalised`]; NaN for another name.
+pub fn normalised(name: &str, theta: f64, s: f64, n: f64) -> f64 {
+    use carvallo::hoop::normalised as h;
+    active_output("hoop", name, &[("theta", theta), ("s", s), ("n", n)]).unwrap_or_else(|| {
+        match name {
+            "equilibrium_n12" => h::equilibrium(theta, s, n),
+            "stability_n12" => h::stability(theta, s, n),
+            "skid_n12" => h::skid(theta, s, n),
+            _ => f64::NAN,
+        }
+    })
+}
+
+/// Every output of the generated `unicycle` program at `point` (missing names NaN): the
+/// perturbed program's values when a perturbation of it is active, otherwise
+/// [`carvallo::unicycle_discussion::eval`].
+pub fn unicycle_eval(point: &carvallo::unicycle_discussion::Point) -> BTreeMap<&'static str, f64> {
+    let mut map = carvallo::unicycle_discussion::eval(point);
+    ACTIVE.with(|a| {
+        let a = a.borrow();
+        let Some(active) = a.as_ref().filter(|a| a.model == "unicycle") else { return };
+        let get = |n: &str| point.get(n).copied();
+        if let Some(values) = active.eval(get, f64::NAN) {
+            for (o, v) in active.program.outputs.iter().zip(values) {
+                if let Some(slot) = map.get_mut(o.name.as_str()) {
+                    *slot = v;
+                }
+            }
+        }
+    });
+    map
+}
+
+/// The output `name` of [`unicycle_eval`].
+pub fn unicycle_out(point: &carvallo::unicycle_discussion::Point, name: &str) -> f64 {
+    unicycle_eval(point)[name]
+}
+
+/// The outputs `names` of the active perturbed program of `model` at the named arguments, or
+/// `None` when no perturbation of that model is active.
+fn active_outputs<const N: usize>(
+    model: &str,
+    names: [&str; N],
+    args: &[(&str, f64)],
+) -> Option<[f64; N]> {
+    ACTIVE.with(|a| {
+        let a = a.borrow();
+        let active = a.as_ref().filter(|a| a.model == model)?;
+        let get = |n: &str| args.iter().find(|(k, _)| *k == n).map(|(_, v)| *v);
+        let v = active.eval(get, 0.0)?;
+        let mut out = [f64::NAN; N];
+        for (slot, name) in out.iter_mut().zip(names) {
+            *slot = v[active.program.outputs.iter().position(|o| o.name == name)?];
+        }
+        Some(out)
+    })
+}
+
+fn hoop_args(
+    hoop: &carvallo::hoop::Hoop,
+    theta: f64,
+    p: f64,
+    n: f64,
+    s: f64,
+) -> [(&'static str, f64); 7] {
+    [
+        ("R", hoop.radius()),
+        ("g", hoop.g()),
+        ("mu", hoop.mass()),
+        ("theta", theta),
+        ("p", p),
+        ("n", n),
+        ("s", s),
+    ]
+}
+
+/// [`carvallo::hoop::Hoop::rhs_pns`], from the perturbed `hoop` program when one is active.
+pub fn hoop_rhs_pns(hoop: &carvallo::hoop::Hoop, state: [f64; 4]) -> [f64; 4] {
+    let [theta, p, n, s] = state;
+    match active_outputs("hoop", ["pns_dp", "pns_dn", "pns_ds"], &hoop_args(hoop, theta, p, n, s)) {
+        Some([dp, dn, ds]) => [p, dp, dn, ds],
+        None => hoop.rhs_pns(state),
+    }
+}
+
+/// [`carvallo::hoop::Hoop::equilibrium`], from the perturbed `hoop` program when one is active.
+pub fn hoop_equilibrium(hoop: &carvallo::hoop::Hoop, theta: f64, s: f64, n: f64) -> f64 {
+    active_outputs("hoop", ["equilibrium"], &hoop_args(hoop, theta, 0.0, n, s))
+        .map_or_else(|| hoop.equilibrium(theta, s, n), |[v]| v)
+}
+
+/// [`carvallo::hoop::Hoop::stability`], from the perturbed `hoop` program when one is active.
+pub fn hoop_stability(hoop: &carvallo::hoop::Hoop, theta: f64, s: f64, n: f64) -> f64 {
+    active_outputs("hoop", ["stability"], &hoop_args(hoop, theta, 0.0, n, s))
+        .map_or_else(|| hoop.stability(theta, s, n), |[v]| v)
+}
+
+/// One row of a falsification table: the perturbation, the claim functions to run under it,
+/// and the ids of the claims whose falsification it is.
+pub type Row = (&'static Perturbation, fn() -> Vec<crate::claims::Claim>, &'static [&'static str]);
+
+/// `claims` with, for each row of `table`, the claims it names recorded with the verdict the
+/// same check gives with the row's perturbation active ([`with`]).
+pub fn falsify(claims: Vec<crate::claims::Claim>, table: &[Row]) -> Vec<crate::claims::Claim> {
+    let mut out = claims;
+    for (pert, run, ids) in table {
+        let Some((perturbed, value)) = with(pert, run) else { continue };
+        let what = describe(pert, value);
+        out = out
+            .into_iter()
+            .map(|c| {
+                match perturbed.iter().find(|p| p.id == c.id && ids.contains(&c.id.as_str())) {
+                    Some(p) => c.falsified_by(&what, p.clone()),
+                    None => c,
+                }
+            })
+            .collect();
+    }
+    out
+}
+
+/// The words stating a perturbation, with the constant's value.
+pub fn describe(pert: &Perturbation, value: f64) -> String {
+    let rel = pert.factor - 1.0;
+    format!(
+        "constant n° {} ({}) of the generated `{}` output of generated/{}.ir scaled by 1 {} {:.0e} (in a copy of the output's instructions: the memoir's transcribed outputs keep theirs)",
+        pert.constant + 1,
+        crate::render::text::format_significant(value, 6),
+        pert.output,
+        pert.model,
+        if rel < 0.0 { "-" } else { "+" },
+        rel.abs()
+    )
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn a_perturbed_output_moves_and_the_others_do_not() {
+        let p = Program::parse(ir_of("hoop_discussion").unwrap()).unwrap();
+        let pert = Perturbation {
+            model: "hoop_discussion",
+            output: "quartic_f",
+            constant: 0,
+            factor: 1.01,
+        };
+        let (q, value) = perturbed_program(&p, &pert).unwrap();
+        assert!(value.is_finite());
+        let args = |p: &Program| {
+            let inputs: Vec<f64> =
+                p.inputs.iter().map(|n| if n == "t" { 0.3 } else { 0.2 }).collect();
+            (vec![1.0; p.params.len()], inputs)
+        };
+        let (pa, ia) = args(&p);
+        let before = p.eval_f64(&pa, &ia).unwrap();
+        let after = q.eval_f64(&pa, &ia).unwrap();
+        let k = |name: &str| p.outputs.iter().position(|o| o.name == name).unwrap();
+        // quartic_f moves; memoir_quartic_f is the same instruction in the generated program
+        // and keeps its value: only the copy was perturbed.
+        assert_ne!(before[k("quartic_f")], after[k("quartic_f")]);
+        assert_eq!(before[k("memoir_quartic_f")], after[k("memoir_quartic_f")]);
+        for (i, o) in p.outputs.iter().enumerate() {
+            if o.name != "quartic_f" {
+                assert_eq!(before[i].to_bits(), after[i].to_bits(), "{}", o.name);
+            }
+        }
+        // Unperturbed (factor 1) the copy gives the same value bit for bit.
+        let same = Perturbation { factor: 1.0, ..pert };
+        let (r, _) = perturbed_program(&p, &same).unwrap();
+        assert_eq!(r.eval_f64(&pa, &ia).unwrap()[k("quartic_f")], before[k("quartic_f")]);
+        assert!(perturbed_program(&p, &Perturbation { constant: 10_000, ..pert }).is_none());
+    }
+}
