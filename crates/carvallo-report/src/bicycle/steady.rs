@@ -400,7 +400,7 @@ pub const INVENTORY: &[crate::claims::Assertion] = &[
     Assertion { section: "97", says: "theta1 has the sign of theta: both wheels lean to the same side in a turn", status: Status::Checked("steady-wheels-lean-alike") },
     Assertion { section: "97", says: "but theta1 < theta by (1) of n° 96", status: Status::Value("theta1/theta of the handlebar equation") },
     Assertion { section: "97", says: "whereas the geometry imposes theta1 > theta (gamma negative when theta positive)", status: Status::Value("theta1/theta imposed by the geometry") },
-    Assertion { section: "97", says: "so the normal position is the only equilibrium without hands: 'il serait impossible d'effectuer une conversion sans les mains'", status: Status::Value("speed of a steady turn without hands") },
+    Assertion { section: "97", says: "so the normal position is the only equilibrium without hands: 'il serait impossible d'effectuer une conversion sans les mains'", status: Status::Checked("steady-no-hands-turn-impossible") },
     Assertion { section: "97", says: "the rider must shift his body laterally to change the steady state and to keep it", status: Status::Value("speed of a steady turn without hands") },
     Assertion { section: "98", says: "a lateral shift of the body does not change the centrifugal moment sensibly", status: Status::Checked("steady-shift-centrifugal-moment") },
     Assertion { section: "98", says: "with the lateral shift the gravity moment becomes mu g h sin(theta + epsilon)", status: Status::Checked("steady-shift-gravity-moment") },

@@ -12,6 +12,8 @@ use carvallo::bicycle_straight::Constants;
 use carvallo::bicycle_turn::LockedSteer;
 use carvallo::hoop::Hoop;
 use carvallo::unicycle::{Rider, Unicycle, Wheel};
+use carvallo::whipple::steady_turn::{hands_free::HandsFree, TurnSolver};
+use carvallo::whipple::Whipple;
 
 use super::inertia_terms::{frame_terms, wheel_terms, RING, STATES};
 use crate::claims::Claim;
@@ -785,6 +787,57 @@ fn y_with_lean_claim(turn_side: f64) -> Claim {
     )
 }
 
+/// n° 97: « il serait impossible d'effectuer une conversion sans les mains » (the rider's
+/// centre of gravity kept in the frame's plane), judged on the nonlinear Carvallo–Whipple
+/// bicycle with the memoir's constants: its hands-free steady turns (steer torque zero) branch
+/// from upright running where $\det(gK_0 + v^2K_2) = 0$.
+fn no_hands_claim() -> Option<Claim> {
+    let bike = LockedSteer::new(Constants::MEMOIR).ok()?;
+    let params = bike.model().params().clone();
+    let solver = TurnSolver::new(&params).ok()?;
+    let hf = HandsFree::new(&solver);
+    let branches = hf.branch_speeds(0.0, 20.0);
+    let linear = Whipple::new(params).capsize_speed();
+    // One hands-free turn at 0.1 rad of lean on the forward family followed from the branch
+    // point, re-solved as a steady turn at its speed and lean (its steer torque must vanish).
+    let family = branches.first().and_then(|&vb| hf.family(0.0, vb).ok());
+    let seed = family.as_ref().and_then(|f| {
+        f.points.windows(2).find(|w| (w[0].lean - 0.1) * (w[1].lean - 0.1) <= 0.0).map(|w| {
+            [w[0].speed, 0.1, w[0].steer]
+        })
+    });
+    let turn = seed.and_then(|z| hf.refine(z));
+    let (v1, steer1) = turn.map_or((f64::NAN, f64::NAN), |(z, _)| (z[0], z[2]));
+    let torque1 = solver
+        .turns(v1, 0.1)
+        .ok()
+        .and_then(|t| {
+            t.turns
+                .iter()
+                .filter(|t| (t.steer - steer1).abs() < 1e-6)
+                .map(|t| t.steer_torque)
+                .next()
+        })
+        .unwrap_or(f64::NAN);
+    let vb = branches.first().copied().unwrap_or(f64::NAN);
+    let exists = turn.is_some() && torque1.abs() <= 1e-9;
+    Some(Claim::new(
+        "steady-no-hands-turn-impossible",
+        "97",
+        "With the centre of gravity kept in the frame's plane, 'il serait impossible d'effectuer une conversion sans les mains': the upright position is the only equilibrium without hands.",
+        "the nonlinear Carvallo-Whipple bicycle with the memoir's constants (carvallo::bicycle_turn::LockedSteer, constants of n° 117, as Whipple parameters): the branch points of its hands-free steady turns on upright running (the sign changes of the lean and steer rows' determinant, carvallo::whipple::steady_turn::hands_free, 2000 speed steps to 20 m/s, bisected), beside the same bicycle's capsize speed by the linear model's Hurwitz route (generated/whipple.ir); then one hands-free turn at a lean of 0.1 rad by Newton from the branch point, re-solved by the steady-turn route at its speed and lean, whose steer torque must vanish (1e-9 N m). Holds if no hands-free turn exists",
+        &[
+            ("forward_branch_speed", vb),
+            ("linear_capsize_speed", linear.unwrap_or(f64::NAN)),
+            ("turn_speed_at_lean_0_1", v1),
+            ("turn_steer_at_lean_0_1", steer1),
+            ("turn_steer_torque_at_lean_0_1", torque1),
+        ],
+        policy::claim(!exists, Verdict::MemoirError),
+        "does not hold exactly: the nonlinear bicycle turns without hands, its forward hands-free family branching from upright running at the linear model's capsize speed and reaching a lean of 0.1 rad at the speed and steer given. Within the memoir's approximation the conclusion comes from its printed ratio theta1/theta < 1 of n° 96, which drops a factor sin(omega) (see the n° 97 entries): with the factor kept its own first-order equations also give a hands-free speed (the n° 97 entry 'speed of a steady turn without hands', for the steady-state chapter's constants)",
+    ))
+}
+
 /// The claims of n° 79–100.
 pub fn claims() -> Vec<Claim> {
     const FLIPPED: &str = "the centrifugal rows of the generated fall equation (fall_rear, fall_front, fall_frame) scaled by -1, the fall equation recomputed from its rows";
@@ -831,6 +884,7 @@ pub fn claims() -> Vec<Claim> {
     ));
     c.extend(actions);
     c.extend(turn_claims());
+    c.extend(no_hands_claim());
     c.extend(lateral_shift_claims());
     c
 }

@@ -291,6 +291,21 @@ fn claims_have_the_expected_verdicts() {
                     Below("lean_at_gamma_plus5_20kmh", 0.0),
                 ],
             ),
+            // n° 97: the nonlinear bicycle with the memoir's constants turns without hands: its
+            // forward hands-free family branches from upright running at the capsize speed
+            // (3.488 m/s, the same by the linear Hurwitz route) and reaches 0.1 rad of lean at
+            // 3.41 m/s, where the steady-turn route finds no steer torque.
+            (
+                "steady-no-hands-turn-impossible",
+                Verdict::MemoirError,
+                &[
+                    Near("forward_branch_speed", 3.488, 5e-4),
+                    Near("linear_capsize_speed", 3.488, 5e-4),
+                    Near("turn_speed_at_lean_0_1", 3.411, 5e-3),
+                    Near("turn_steer_torque_at_lean_0_1", 0.0, 1e-9),
+                    Above("turn_steer_at_lean_0_1", 0.0),
+                ],
+            ),
             // n° 89: the neglected term exceeds the memoir's bound 0.01455 at 10 km/h.
             (
                 "steady-neglected-term-bound",

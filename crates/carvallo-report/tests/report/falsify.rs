@@ -89,6 +89,7 @@ const NOT_YET_FALSIFIED: &[&str] = &[
     "steady-frame-six-terms-unsteady",
     "steady-front-wheel-terms",
     "steady-neglected-term-bound",
+    "steady-no-hands-turn-impossible",
     "steady-omega-below-eta",
     "steady-orders-fall",
     "steady-orders-handlebar",
