@@ -791,8 +791,8 @@ fn y_with_lean_claim(turn_side: f64) -> Claim {
 /// centre of gravity kept in the frame's plane), judged on the nonlinear Carvallo–Whipple
 /// bicycle with the memoir's constants: its hands-free steady turns (steer torque zero) branch
 /// from upright running where $\det(gK_0 + v^2K_2) = 0$.
-fn no_hands_claim() -> Option<Claim> {
-    let bike = LockedSteer::new(Constants::MEMOIR).ok()?;
+fn no_hands_claim(constants: Constants) -> Option<Claim> {
+    let bike = LockedSteer::new(constants).ok()?;
     let params = bike.model().params().clone();
     let solver = TurnSolver::new(&params).ok()?;
     let hf = HandsFree::new(&solver);
@@ -884,7 +884,14 @@ pub fn claims() -> Vec<Claim> {
     ));
     c.extend(actions);
     c.extend(turn_claims());
-    c.extend(no_hands_claim());
+    let negative_trail = Constants { c1: -Constants::MEMOIR.c1, ..Constants::MEMOIR };
+    match (no_hands_claim(Constants::MEMOIR), no_hands_claim(negative_trail)) {
+        (Some(nominal), Some(perturbed)) => c.push(nominal.falsified_by(
+            "the front contact's distance from the steering axis c1 = R sin(eta) - c negated (the trail reversed, a model ingredient changed): no branch point on upright running, no hands-free turn",
+            perturbed,
+        )),
+        (nominal, _) => c.extend(nominal),
+    }
     c.extend(lateral_shift_claims());
     c
 }
