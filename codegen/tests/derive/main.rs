@@ -17,6 +17,7 @@ mod common;
 mod emit;
 mod engine;
 mod engine_hoop;
+mod engine_memoir;
 mod engine_unicycle;
 mod hoop_checks;
 mod hoop_discussion;

@@ -121,9 +121,8 @@ pub fn wheel_moments() -> [Atom; 3] {
 /// with $k$ written on the fixed trihedron (I, J, K) (n° 20–22).
 pub fn weight_potential() -> Atom {
     let up = Vector::unit(Trihedron::IJK, 2);
-    let height = |length: Atom| {
-        Vector::unit(Trihedron::Ijk, 2).scale(&length).to(Trihedron::IJK).dot(&up)
-    };
+    let height =
+        |length: Atom| Vector::unit(Trihedron::Ijk, 2).scale(&length).to(Trihedron::IJK).dot(&up);
     var("g") * (var("mu") * height(var("z")) + var("mu1") * height(var("R")))
 }
 
