@@ -343,22 +343,8 @@ struct Programs {
     dynamics: Program,
 }
 
-/// The outputs of [`Programs::dynamics`], in order.
-const DYNAMICS: [&str; 13] = [
-    "m3_11",
-    "m3_12",
-    "m3_13",
-    "m3_22",
-    "m3_23",
-    "m3_33",
-    "f3_1",
-    "f3_2",
-    "f3_3",
-    "thetad",
-    "psid",
-    "thetaFd",
-    "rear_speed",
-];
+/// The outputs of [`Programs::dynamics`], in order: those of the right-hand side's kernel.
+const DYNAMICS: &[&str] = rate::state_rate_scene::OUTPUTS;
 
 fn programs() -> &'static Programs {
     static P: OnceLock<Programs> = OnceLock::new();
@@ -369,7 +355,7 @@ fn programs() -> &'static Programs {
             contact: p
                 .select_outputs(&["contact_height", "contact_height_dtheta"])
                 .expect("the program has the contact constraint"),
-            dynamics: p.select_outputs(&DYNAMICS).expect("the program has the dynamics"),
+            dynamics: p.select_outputs(DYNAMICS).expect("the program has the dynamics"),
         }
     })
 }
@@ -407,24 +393,6 @@ impl DualProgram {
         }
         dual::eval(self.program, &params, &inputs).expect("the committed program evaluates")
     }
-}
-
-/// $M x = f$ for the symmetric $3\times3$ `m` = `[m11, m12, m13, m22, m23, m33]`, by the
-/// adjugate over the determinant (as [`rate::solve_symmetric`]), in dual numbers.
-fn solve_symmetric<const N: usize>(m: [Dual<N>; 6], f: [Dual<N>; 3]) -> [Dual<N>; 3] {
-    let [a, b, c, d, e, g] = m;
-    let c11 = d * g - e * e;
-    let c12 = c * e - b * g;
-    let c13 = b * e - c * d;
-    let c22 = a * g - c * c;
-    let c23 = b * c - a * e;
-    let c33 = a * d - b * b;
-    let det = a * c11 + b * c12 + c * c13;
-    [
-        (c11 * f[0] + c12 * f[1] + c13 * f[2]) / det,
-        (c12 * f[0] + c22 * f[1] + c23 * f[2]) / det,
-        (c13 * f[0] + c23 * f[1] + c33 * f[2]) / det,
-    ]
 }
 
 /// The steady turns of one bicycle.
@@ -519,7 +487,7 @@ impl TurnSolver {
         let t = self.terms(y[3], y[rate::PITCH], y[4], [y[7], y[8], y[9]]);
         let [f1, f2, f3] = t.forcing;
         let forcing = [f1 + Dual::constant(torque[0]), f2 + Dual::constant(torque[1]), f3];
-        let ud = solve_symmetric(t.mass, forcing);
+        let ud = rate::solve_symmetric_in(t.mass, forcing);
         let [thetad, psid, thetafd, speed] = t.rates;
         [
             speed * y[2].cos(),

@@ -369,6 +369,22 @@ pub fn state_of(y: &[f64; LEN]) -> State {
 /// adjugate over its determinant; `None` when the solution is not finite.
 #[inline]
 pub fn solve_symmetric(m: [f64; 6], f: [f64; 3]) -> Option<[f64; 3]> {
+    let x = solve_symmetric_in(m, f);
+    x.iter().all(|v| v.is_finite()).then_some(x)
+}
+
+/// [`solve_symmetric`] in any arithmetic with `f64` constants (`f64` itself, or dual numbers
+/// for derivatives), without the finiteness check.
+#[inline]
+pub fn solve_symmetric_in<T>(m: [T; 6], f: [T; 3]) -> [T; 3]
+where
+    T: Copy
+        + From<f64>
+        + std::ops::Add<Output = T>
+        + std::ops::Sub<Output = T>
+        + std::ops::Mul<Output = T>
+        + std::ops::Div<Output = T>,
+{
     let [a, b, c, d, e, g] = m;
     // Cofactors of the symmetric matrix [[a, b, c], [b, d, e], [c, e, g]].
     let c11 = d * g - e * e;
@@ -378,11 +394,10 @@ pub fn solve_symmetric(m: [f64; 6], f: [f64; 3]) -> Option<[f64; 3]> {
     let c23 = b * c - a * e;
     let c33 = a * d - b * b;
     let det = a * c11 + b * c12 + c * c13;
-    let r = 1.0 / det;
-    let x = [
+    let r = T::from(1.0) / det;
+    [
         (c11 * f[0] + c12 * f[1] + c13 * f[2]) * r,
         (c12 * f[0] + c22 * f[1] + c23 * f[2]) * r,
         (c13 * f[0] + c23 * f[1] + c33 * f[2]) * r,
-    ];
-    x.iter().all(|v| v.is_finite()).then_some(x)
+    ]
 }
