@@ -1,6 +1,6 @@
 //! The generated Carvallo–Whipple linearisation against the published benchmark of Meijaard,
 //! Papadopoulos, Ruina and Schwab (2007), read at test time from
-//! `../shared/anchors/whipple-benchmark.toml` (relative to the workspace root).
+//! `data/anchors/whipple-benchmark.toml` (a copy of `../shared/anchors`) (relative to the workspace root).
 //!
 //! Tolerances: matrix entries relative 1e-13 (published zeros: absolute 1e-13); characteristic
 //! speeds relative 1e-12 (the published values carry 14 decimals); eigenvalues absolute 1e-12
@@ -19,7 +19,7 @@ const EIG_TOL: f64 = 1e-12;
 
 fn anchors() -> (toml::Table, String) {
     let path = PathBuf::from(env!("CARGO_MANIFEST_DIR"))
-        .join("../../shared/anchors/whipple-benchmark.toml");
+        .join("../data/anchors/whipple-benchmark.toml");
     let text = std::fs::read_to_string(&path).unwrap_or_else(|e| {
         panic!("anchors file {} is missing or unreadable: {e}", path.display())
     });
@@ -185,4 +185,17 @@ fn report_published_values_equal_the_anchors() {
             e.note
         );
     }
+}
+
+/// The repository's copy of the anchors file is the shared file, byte for byte, whenever the
+/// shared file is beside the clone (a fresh clone elsewhere has only the copy).
+#[test]
+fn the_anchors_copy_is_the_shared_file() {
+    let shared = PathBuf::from(env!("CARGO_MANIFEST_DIR"))
+        .join("../../shared/anchors/whipple-benchmark.toml");
+    let Ok(shared) = std::fs::read_to_string(&shared) else {
+        eprintln!("no ../shared beside this clone: only the copy is read");
+        return;
+    };
+    assert_eq!(anchors().1, shared, "data/anchors/whipple-benchmark.toml differs from ../shared");
 }

@@ -1,5 +1,5 @@
 //! The derived linearisation of the Carvallo–Whipple bicycle against the published benchmark
-//! (Meijaard et al. 2007, read from `../shared/anchors/whipple-benchmark.toml`): every symbolic
+//! (Meijaard et al. 2007, read from `data/anchors/whipple-benchmark.toml` (a copy of `../shared/anchors`)): every symbolic
 //! check of the derivation holds, and the emitted IR evaluated at the benchmark parameters
 //! reproduces the published M, C1, K0, K2 (relative 1e-13; exact zeros absolute 1e-13) and the
 //! characteristic polynomial equals det(M s^2 + v C1 s + g K0 + v^2 K2) computed from the
@@ -18,7 +18,7 @@ const ABS_TOL: f64 = 1e-13;
 
 fn anchors() -> String {
     let path = PathBuf::from(env!("CARGO_MANIFEST_DIR"))
-        .join("../../shared/anchors/whipple-benchmark.toml");
+        .join("../data/anchors/whipple-benchmark.toml");
     std::fs::read_to_string(&path)
         .unwrap_or_else(|e| panic!("anchors file {} unreadable: {e}", path.display()))
 }

@@ -259,7 +259,7 @@ fn every_rejection_names_the_key_and_the_value() {
     assert_eq!(err.to_string(), "invalid parameter file: no [parameters] table");
     // The anchors file itself reads (its other tables are ignored).
     let path = std::path::Path::new(env!("CARGO_MANIFEST_DIR"))
-        .join("../../../shared/anchors/whipple-benchmark.toml");
+        .join("../../data/anchors/whipple-benchmark.toml");
     let anchors = std::fs::read_to_string(&path).unwrap();
     let read = WhippleParams::from_toml_str(&anchors).unwrap();
     let bench = WhippleParams::benchmark();
