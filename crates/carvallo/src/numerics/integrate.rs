@@ -777,7 +777,6 @@ struct System<'a, const N: usize, E> {
     fsal: bool,
     failure: RefCell<Option<E>>,
     evaluations: Cell<usize>,
-    jacobian_evaluations: Cell<usize>,
     failures_in_a_row: Cell<usize>,
     /// The last evaluations (t, x, f(x)), newest at `newest`: the slopes at the ends of a
     /// step are found here (DOP853 evaluates three dense-output stages after the end's).
@@ -808,7 +807,6 @@ impl<'a, const N: usize, E> System<'a, N, E> {
             fsal,
             failure: RefCell::new(None),
             evaluations: Cell::new(0),
-            jacobian_evaluations: Cell::new(0),
             failures_in_a_row: Cell::new(0),
             recent: RefCell::new([(f64::NAN, [f64::NAN; N], [f64::NAN; N]); RECENT]),
             newest: Cell::new(0),
@@ -869,7 +867,6 @@ impl<const N: usize, E> ODE<f64, [f64; N]> for System<'_, N, E> {
             }
             return;
         };
-        self.jacobian_evaluations.set(self.jacobian_evaluations.get() + 1);
         let rows = match (jac.borrow_mut())(t, y) {
             Ok(rows) => rows,
             Err(e) => {
