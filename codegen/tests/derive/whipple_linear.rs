@@ -17,8 +17,8 @@ const REL_TOL: f64 = 1e-13;
 const ABS_TOL: f64 = 1e-13;
 
 fn anchors() -> String {
-    let path = PathBuf::from(env!("CARGO_MANIFEST_DIR"))
-        .join("../data/anchors/whipple-benchmark.toml");
+    let path =
+        PathBuf::from(env!("CARGO_MANIFEST_DIR")).join("../data/anchors/whipple-benchmark.toml");
     std::fs::read_to_string(&path)
         .unwrap_or_else(|e| panic!("anchors file {} unreadable: {e}", path.display()))
 }

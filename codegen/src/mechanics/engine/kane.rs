@@ -113,6 +113,148 @@ fn wheel_inertia(axis: usize, diametral: &Atom, axial: &Atom) -> M3 {
     i
 }
 
+/// A wheel's spin inside an assembly.
+struct Spin {
+    /// The spin's speed (`<coordinate>d`).
+    speed: String,
+    /// The axle, an axis of the assembly's frame.
+    axis: super::Axis,
+    /// The moment of inertia about the axle.
+    axial: Atom,
+}
+
+/// One term of Kane's sums: a body with the wheels it carries, or a wheel alone.
+struct Assembly {
+    /// Its name (`T_<body or wheel>`).
+    name: String,
+    /// The frame its parts are fixed in (the body's, the wheels' carrier).
+    frame: String,
+    /// The point the parts' offsets start from.
+    from: String,
+    /// Each part's mass, inertia about its own mass centre and offset from `from`, in `frame`'s
+    /// axes.
+    parts: Vec<(Atom, M3, V3)>,
+    /// The wheels' spins.
+    spins: Vec<Spin>,
+}
+
+/// The offset from point `x` to point `p` when the chain from `x` to `p` is made of offsets
+/// fixed in `frame` (their sum, in its axes); `None` otherwise.
+fn offset_from(m: &Model, x: &str, p: &str, frame: &str) -> Option<V3> {
+    let mut sum = zero3();
+    let mut at = p.to_string();
+    while at != x {
+        let q = m.points.iter().find(|q| q.name == at)?;
+        if q.frame != frame {
+            return None;
+        }
+        sum = add(&sum, &q.offset);
+        at = q.from.clone();
+    }
+    Some(sum)
+}
+
+/// The assemblies of Kane's sums: each body with the most wheels its frame carries at offsets
+/// fixed in it from one point of the body's chain (the nearest such point), then each wheel
+/// left over on its own.
+fn assemblies(m: &Model) -> Vec<Assembly> {
+    let mut claimed = vec![false; m.wheels.len()];
+    let mut out = Vec::new();
+    let wheel_part = |wh: &super::Wheel, o: V3| -> (Atom, M3, V3) {
+        (wh.mass.clone(), wheel_inertia(wh.axle.index(), &wh.diametral, &wh.axial), o)
+    };
+    let spin = |wh: &super::Wheel| Spin {
+        speed: format!("{}d", wh.spin),
+        axis: wh.axle,
+        axial: wh.axial.clone(),
+    };
+    for b in &m.bodies {
+        // The body's centre and the points its chain passes through in its own frame.
+        let mut best: Option<(String, Vec<usize>)> = None;
+        let mut x = b.centre.clone();
+        loop {
+            if offset_from(m, &x, &b.centre, &b.frame).is_none() {
+                break;
+            }
+            let here: Vec<usize> = (0..m.wheels.len())
+                .filter(|&k| {
+                    !claimed[k]
+                        && m.wheels[k].carrier == b.frame
+                        && offset_from(m, &x, &m.wheels[k].centre, &b.frame).is_some()
+                })
+                .collect();
+            if best.as_ref().is_none_or(|(_, w)| here.len() > w.len()) {
+                best = Some((x.clone(), here));
+            }
+            match m.points.iter().find(|q| q.name == x) {
+                Some(q) => x = q.from.clone(),
+                None => break,
+            }
+        }
+        let (from, wheels) = best.expect("the body's centre is its own reference");
+        let mut parts = vec![(
+            b.mass.clone(),
+            b.inertia.clone(),
+            offset_from(m, &from, &b.centre, &b.frame).expect("checked"),
+        )];
+        let mut spins = Vec::new();
+        for &k in &wheels {
+            claimed[k] = true;
+            let wh = &m.wheels[k];
+            parts.push(wheel_part(
+                wh,
+                offset_from(m, &from, &wh.centre, &b.frame).expect("checked"),
+            ));
+            spins.push(spin(wh));
+        }
+        out.push(Assembly {
+            name: format!("T_{}", b.name),
+            frame: b.frame.clone(),
+            from,
+            parts,
+            spins,
+        });
+    }
+    for (k, wh) in m.wheels.iter().enumerate() {
+        if !claimed[k] {
+            out.push(Assembly {
+                name: format!("T_{}", wh.name),
+                frame: wh.carrier.clone(),
+                from: wh.centre.clone(),
+                parts: vec![wheel_part(wh, zero3())],
+                spins: vec![spin(wh)],
+            });
+        }
+    }
+    out
+}
+
+/// A spin's partial rates (1 for its own independent speed, its constraint coefficients for a
+/// dependent one) and its acceleration at zero independent accelerations.
+fn spin_rates(
+    speed: &str,
+    independent: &[String],
+    a: &BTreeMap<String, Vec<Atom>>,
+    w: &BTreeMap<String, Atom>,
+) -> (Vec<Atom>, Atom) {
+    match a.get(speed) {
+        Some(coefs) => (coefs.clone(), w[speed].clone()),
+        None => {
+            (independent.iter().map(|u| Atom::num(i64::from(u == speed))).collect(), Atom::num(0))
+        }
+    }
+}
+
+/// A body's angular velocity in its frame's components (a wheel's in its carrier's, with its
+/// spin about the axle).
+fn body_omega(kin: &Kinematics, m: &Model, b: &MassBody) -> V3 {
+    let omega = kin.local[&b.frame].omega.clone();
+    match m.wheels.iter().find(|w| w.name == b.name) {
+        Some(wh) => expand3(&add(&omega, &scale(&var(&format!("{}d", wh.spin)), &wh.axle.unit()))),
+        None => omega,
+    }
+}
+
 /// Derives Kane's equations of `m`, recording every quantity in `st`.
 pub fn derive(m: &Model, st: &mut Store) -> Result<Kane, DescriptionError> {
     m.validate()?;
@@ -161,6 +303,21 @@ pub fn derive(m: &Model, st: &mut Store) -> Result<Kane, DescriptionError> {
         let centre = kin.points[&wh.centre].clone();
         let rd = scale(&wh.radius, &down);
         let contact = kin.rigid(&centre, &motion, &rd);
+        // The rows' time derivatives at constant speeds. Row k is e_k . v_c, the material
+        // contact point's velocity v_c = v_C + omega x (r d) (working-frame components), so
+        // its derivative is e_k' . v_c + e_k . (v_c' - Omega_W x v_c): every term but
+        // e_k . (dv_c/dt) carries v_c, which vanishes wherever the dependent speeds satisfy
+        // the rows, as their formulas make them do. The inertial derivative is built from
+        // named factors, dv_c/dt = a_C + alpha x (r d) + omega x (r d'), with d' = (d's
+        // components)' + Omega_W x d, instead of differentiating the expanded rows (which took
+        // a quarter of the operations of M and f). Taken now, before the dependent speeds get
+        // formulas: at constant speeds.
+        let omega_w = kin.frames[&kin.working].omega.clone();
+        let d_rate = add(&down.clone().map(|x| st.dt(&x)), &cross(&omega_w, &down));
+        let contact_rate = expand3(&add(
+            &add(&centre.acceleration, &cross(&motion.alpha, &rd)),
+            &cross(&motion.omega, &scale(&wh.radius, &d_rate)),
+        ));
         if !wh.at_root {
             let h = st.name(
                 &format!("{}_contact_height", wh.name),
@@ -186,8 +343,7 @@ pub fn derive(m: &Model, st: &mut Store) -> Result<Kane, DescriptionError> {
                     coef.insert(s.clone(), c);
                 }
             }
-            // Taken now, before the dependent speeds get formulas: at constant speeds.
-            let rate = st.dt(&row);
+            let rate = dot(&dir, &contact_rate);
             rows.push(Row { label: format!("{} {label}", wh.name), coef, rate, dir });
         }
         bodies.push(MassBody {
@@ -366,7 +522,9 @@ pub fn derive(m: &Model, st: &mut Store) -> Result<Kane, DescriptionError> {
         }
         out
     };
-    let mut potential = Atom::num(0);
+    // Every body's own partial velocities, for the modified Lagrange equations (Kane's sums
+    // below run over assemblies): the mass centre's in working-frame components, the angular
+    // ones in the body's frame's components (a wheel's: its carrier's, with its spin).
     let mut partials = Vec::new();
     for b in &bodies {
         let x = &b.name;
@@ -379,32 +537,153 @@ pub fn derive(m: &Model, st: &mut Store) -> Result<Kane, DescriptionError> {
                 )
             })
             .collect();
-        let wt_w: Vec<V3> = (0..n).map(|i| partial(&b.motion.omega, i)).collect();
+        let omega = body_omega(&kin, m, b);
         let wt: Vec<V3> = (0..n)
-            .map(|i| kin.down(st, &wt_w[i], &b.frame, &format!("wt_{x}_{}", independent[i])))
+            .map(|i| {
+                st.name3(
+                    &format!("wt_{x}_{}", independent[i]),
+                    &format!(
+                        "partial angular velocity of {x} for {} ({}'s components)",
+                        independent[i], b.frame
+                    ),
+                    &partial(&omega, i),
+                )
+            })
+            .collect();
+        partials.push((vt, wt));
+    }
+
+    // Kane's sums run over *assemblies*: each rigid body with the wheels its frame carries whose
+    // centres are fixed relative to its mass centre (a chain of offsets in that frame from a
+    // common point), as one body of their total mass at their common mass centre T, with the
+    // inertia about T of the parts (each wheel diag(I_d, I_d, I_a) about its axle in the
+    // frame's axes, by symmetry) plus the parallel-axis terms sum m_k (|d_k|^2 1 - d_k d_k^T)
+    // of the parts' offsets d_k from T; a wheel no body carries is an assembly of its own.
+    // Kane's sums over the parts equal the assembly's because sum m_k d_k = 0. A wheel's spin
+    // about its axle e adds, with s_i its partial rate and sigma its acceleration at zero
+    // independent accelerations (zero for an independent spin),
+    // I_a (s_i wt_j.e + s_j wt_i.e + s_i s_j) to M_ij, its spin momentum's rate
+    // I_a (sigma e + omega x spin e) to the Euler torque, and -s_i I_a (alpha0.e + sigma) to f_i
+    // (the wheel's Euler torque along its axle; omega x I omega has no axial component).
+    let mut potential = Atom::num(0);
+    for t in assemblies(m) {
+        let x = &t.name;
+        let total: Atom =
+            t.parts.iter().map(|(mass, _, _)| mass.clone()).fold(Atom::num(0), |acc, q| acc + q);
+        let total = st.name(&format!("m_{x}"), &format!("mass of assembly {x}"), total);
+        let mut e = zero3();
+        for (mass, _, o) in &t.parts {
+            e = add(&e, &scale(&(mass / &total), o));
+        }
+        let e = st.name3(
+            &format!("e_{x}"),
+            &format!("from point {} to assembly {x}'s mass centre ({}'s axes)", t.from, t.frame),
+            &e,
+        );
+        let mut inertia: M3 = [zero3(), zero3(), zero3()];
+        for (mass, own, o) in &t.parts {
+            let dk = sub(o, &e);
+            let dd = dot(&dk, &dk);
+            for r in 0..3 {
+                for c in 0..3 {
+                    let kron = if r == c { dd.clone() } else { Atom::num(0) };
+                    inertia[r][c] = &inertia[r][c] + &own[r][c] + mass * (kron - &dk[r] * &dk[c]);
+                }
+            }
+        }
+        let axes = ["x", "y", "z"];
+        for r in 0..3 {
+            for c in r..3 {
+                let v = st.name(
+                    &format!("I_{x}_{}{}", axes[r], axes[c]),
+                    &format!(
+                        "entry {}{} of assembly {x}'s inertia about its mass centre ({}'s axes)",
+                        axes[r], axes[c], t.frame
+                    ),
+                    inertia[r][c].clone(),
+                );
+                inertia[r][c] = v.clone();
+                inertia[c][r] = v;
+            }
+        }
+        let rho = kin.up(st, &e, &t.frame, &format!("r_{x}"));
+        let centre = kin.rigid(&kin.points[&t.from], &kin.frames[&t.frame], &rho);
+        let vt: Vec<V3> = (0..n)
+            .map(|i| {
+                st.name3(
+                    &format!("vt_{x}_{}", independent[i]),
+                    &format!(
+                        "partial velocity of assembly {x}'s mass centre for {}",
+                        independent[i]
+                    ),
+                    &partial(&centre.velocity, i),
+                )
+            })
             .collect();
         let a0 = st.name3(
             &format!("a0_{x}"),
-            &format!("acceleration of {x}'s mass centre at zero independent accelerations"),
-            &expand3(&add(&b.centre.acceleration, &velocity_part(&b.centre.velocity))),
+            &format!(
+                "acceleration of assembly {x}'s mass centre at zero independent accelerations"
+            ),
+            &expand3(&add(&centre.acceleration, &velocity_part(&centre.velocity))),
         );
-        let alpha0_w = expand3(&add(&b.motion.alpha, &velocity_part(&b.motion.omega)));
-        let alpha0 = kin.down(st, &alpha0_w, &b.frame, &format!("al0_{x}"));
-        let omega = kin.down(st, &b.motion.omega, &b.frame, &format!("om_{x}"));
-        let iw = mv(&b.inertia, &omega);
-        let torque = add(&mv(&b.inertia, &alpha0), &cross(&omega, &iw));
+        let local = kin.local[&t.frame].clone();
+        let wt: Vec<V3> = (0..n)
+            .map(|i| {
+                st.name3(
+                    &format!("wt_{x}_{}", independent[i]),
+                    &format!(
+                        "partial angular velocity of {} for {} (its own components)",
+                        t.frame, independent[i]
+                    ),
+                    &partial(&local.omega, i),
+                )
+            })
+            .collect();
+        let omega = st.name3(
+            &format!("om_{x}"),
+            &format!("angular velocity of {} (its own components)", t.frame),
+            &local.omega,
+        );
+        let alpha0 = st.name3(
+            &format!("al0_{x}"),
+            &format!(
+                "angular acceleration of {} at zero independent accelerations (its own components)",
+                t.frame
+            ),
+            &expand3(&add(&local.alpha, &velocity_part(&local.omega))),
+        );
+        let mut torque = add(&mv(&inertia, &alpha0), &cross(&omega, &mv(&inertia, &omega)));
+        for sp in &t.spins {
+            let (s, sigma) = spin_rates(&sp.speed, &independent, &a, &w);
+            let axle = sp.axis.unit();
+            let rate = var(&sp.speed);
+            torque = add(
+                &torque,
+                &add(
+                    &scale(&(&sigma * &sp.axial), &axle),
+                    &cross(&omega, &scale(&(&rate * &sp.axial), &axle)),
+                ),
+            );
+            let k = sp.axis.index();
+            for i in 0..n {
+                for j in i..n {
+                    mm[i][j] = &mm[i][j]
+                        + &sp.axial * (&s[i] * &wt[j][k] + &s[j] * &wt[i][k] + &s[i] * &s[j]);
+                }
+                f[i] = &f[i] - &s[i] * &sp.axial * (&alpha0[k] + &sigma);
+            }
+        }
         let force =
-            sub(&scale(&g, &[Atom::num(0), Atom::num(0), b.mass.clone()]), &scale(&b.mass, &a0));
+            sub(&scale(&g, &[Atom::num(0), Atom::num(0), total.clone()]), &scale(&total, &a0));
         for i in 0..n {
             for j in i..n {
-                mm[i][j] = &mm[i][j]
-                    + &b.mass * dot(&vt[i], &vt[j])
-                    + dot(&wt[i], &mv(&b.inertia, &wt[j]));
+                mm[i][j] =
+                    &mm[i][j] + &total * dot(&vt[i], &vt[j]) + dot(&wt[i], &mv(&inertia, &wt[j]));
             }
             f[i] = &f[i] + dot(&force, &vt[i]) - dot(&torque, &wt[i]);
         }
-        potential -= &b.mass * &g * &b.centre.position[2];
-        partials.push((vt, wt));
+        potential -= &total * &g * &centre.position[2];
     }
     let mut torque_forces = vec![Atom::num(0); n];
     // A torque acts between frames or wheels; a wheel's axes are its carrier's.

@@ -77,6 +77,9 @@ pub struct Kinematics {
     pub working: String,
     /// Each frame's motion (the ground `N` and the working frame included).
     pub frames: BTreeMap<String, FrameMotion>,
+    /// Each frame's motion in its own components (the derivatives of its angular velocity's
+    /// components are those of its angular acceleration: $\omega\times\omega = 0$), unnamed.
+    pub local: BTreeMap<String, FrameMotion>,
     /// Each point's motion (the root included).
     pub points: BTreeMap<String, PointMotion>,
 }
@@ -111,6 +114,7 @@ impl Kinematics {
             steps: BTreeMap::new(),
             working: working.clone(),
             frames: BTreeMap::new(),
+            local: BTreeMap::new(),
             points: BTreeMap::new(),
         };
         let zero = [Atom::num(0), Atom::num(0), Atom::num(0)];
@@ -121,6 +125,8 @@ impl Kinematics {
         let w_motion =
             FrameMotion { omega: [Atom::num(0), Atom::num(0), heading_rate], alpha: zero.clone() };
         k.frames.insert("N".into(), FrameMotion { omega: zero.clone(), alpha: zero.clone() });
+        k.local.insert("N".into(), FrameMotion { omega: zero.clone(), alpha: zero.clone() });
+        k.local.insert(working.clone(), w_motion.clone());
         k.frames.insert(working.clone(), w_motion);
         // Sines and cosines, named once per angle.
         let mut trig: BTreeMap<String, (Atom, Atom)> = BTreeMap::new();
@@ -178,6 +184,24 @@ impl Kinematics {
             let omega = super::store::expand3(&omega);
             let alpha = super::store::expand3(&alpha);
             k.frames.insert(f.name.clone(), FrameMotion { omega, alpha });
+            // In the frame's own components, rotation by rotation: a simple rotation about e
+            // turns the components by its matrix's transpose and adds rate e to the angular
+            // velocity and rate (omega_before x e) to the acceleration (e is the same in the
+            // components before and after it).
+            let lm = k.local[&parent].clone();
+            let (mut omega, mut alpha) = (lm.omega, lm.alpha);
+            for step in &steps {
+                omega = mtv(&step.matrix(), &omega);
+                alpha = mtv(&step.matrix(), &alpha);
+                if let Some(rate) = &step.rate {
+                    let e = step.axis.unit();
+                    alpha = add(&alpha, &scale(rate, &cross(&omega, &e)));
+                    omega = add(&omega, &scale(rate, &e));
+                }
+            }
+            let omega = super::store::expand3(&omega);
+            let alpha = super::store::expand3(&alpha);
+            k.local.insert(f.name.clone(), FrameMotion { omega, alpha });
         }
         // The root: on the ground, moving with the speeds (root_u, root_v) along W's axes.
         let v_root = [var(&format!("{}_u", m.root)), var(&format!("{}_v", m.root)), Atom::num(0)];
