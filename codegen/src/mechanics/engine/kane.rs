@@ -314,10 +314,15 @@ pub fn derive(m: &Model, st: &mut Store) -> Result<Kane, DescriptionError> {
         // formulas: at constant speeds.
         let omega_w = kin.frames[&kin.working].omega.clone();
         let d_rate = add(&down.clone().map(|x| st.dt(&x)), &cross(&omega_w, &down));
-        let contact_rate = expand3(&add(
+        let contact_rate = add(
             &add(&centre.acceleration, &cross(&motion.alpha, &rd)),
             &cross(&motion.omega, &scale(&wh.radius, &d_rate)),
-        ));
+        );
+        let contact_rate = st.name3(
+                &format!("vc_{}_dt", wh.name),
+                &format!("inertial derivative at constant speeds of wheel {}'s material contact point's velocity", wh.name),
+                &contact_rate,
+            );
         if !wh.at_root {
             let h = st.name(
                 &format!("{}_contact_height", wh.name),
@@ -512,7 +517,7 @@ pub fn derive(m: &Model, st: &mut Store) -> Result<Kane, DescriptionError> {
             let dv = [0, 1, 2].map(|c| d(&v[c], dep));
             out = add(&out, &scale(&a[dep][i], &dv));
         }
-        expand3(&out)
+        out
     };
     let velocity_part = |v: &V3| -> V3 {
         let mut out = zero3();
@@ -625,7 +630,7 @@ pub fn derive(m: &Model, st: &mut Store) -> Result<Kane, DescriptionError> {
             &format!(
                 "acceleration of assembly {x}'s mass centre at zero independent accelerations"
             ),
-            &expand3(&add(&centre.acceleration, &velocity_part(&centre.velocity))),
+            &(&add(&centre.acceleration, &velocity_part(&centre.velocity))),
         );
         let local = kin.local[&t.frame].clone();
         let wt: Vec<V3> = (0..n)
@@ -651,7 +656,7 @@ pub fn derive(m: &Model, st: &mut Store) -> Result<Kane, DescriptionError> {
                 "angular acceleration of {} at zero independent accelerations (its own components)",
                 t.frame
             ),
-            &expand3(&add(&local.alpha, &velocity_part(&local.omega))),
+            &(&add(&local.alpha, &velocity_part(&local.omega))),
         );
         let mut torque = add(&mv(&inertia, &alpha0), &cross(&omega, &mv(&inertia, &omega)));
         for sp in &t.spins {

@@ -224,11 +224,11 @@ impl Kinematics {
         let wr = cross(&fm.omega, rho);
         PointMotion {
             position: super::store::expand3(&add(&from.position, rho)),
-            velocity: super::store::expand3(&add(&from.velocity, &wr)),
-            acceleration: super::store::expand3(&add(
+            velocity: add(&from.velocity, &wr),
+            acceleration: add(
                 &add(&from.acceleration, &cross(&fm.alpha, rho)),
                 &cross(&fm.omega, &wr),
-            )),
+            ),
         }
     }
 
