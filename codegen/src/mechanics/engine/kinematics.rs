@@ -14,7 +14,7 @@
 
 use std::collections::BTreeMap;
 
-use symbolica::atom::Atom;
+use symbolica::atom::{Atom, AtomCore};
 
 use super::store::{add, cross, mtv, mv, scale, Store, M3, V3};
 use super::{Angle, Axis, DescriptionError, Model};
@@ -77,6 +77,8 @@ pub struct Kinematics {
     pub working: String,
     /// Each frame's motion (the ground `N` and the working frame included).
     pub frames: BTreeMap<String, FrameMotion>,
+    /// The named product of the rotations of each frame that has more than one.
+    rotations: BTreeMap<String, M3>,
     /// Each frame's motion in its own components (the derivatives of its angular velocity's
     /// components are those of its angular acceleration: $\omega\times\omega = 0$), unnamed.
     pub local: BTreeMap<String, FrameMotion>,
@@ -115,6 +117,7 @@ impl Kinematics {
             working: working.clone(),
             frames: BTreeMap::new(),
             local: BTreeMap::new(),
+            rotations: BTreeMap::new(),
             points: BTreeMap::new(),
         };
         let zero = [Atom::num(0), Atom::num(0), Atom::num(0)];
@@ -189,18 +192,39 @@ impl Kinematics {
             // velocity and rate (omega_before x e) to the acceleration (e is the same in the
             // components before and after it).
             let lm = k.local[&parent].clone();
-            let (mut omega, mut alpha) = (lm.omega, lm.alpha);
-            for step in &steps {
-                omega = mtv(&step.matrix(), &omega);
-                alpha = mtv(&step.matrix(), &alpha);
-                if let Some(rate) = &step.rate {
-                    let e = step.axis.unit();
-                    alpha = add(&alpha, &scale(rate, &cross(&omega, &e)));
-                    omega = add(&omega, &scale(rate, &e));
+            let (omega, alpha) = if steps.len() < 2 {
+                let (mut omega, mut alpha) = (lm.omega, lm.alpha);
+                for step in &steps {
+                    omega = mtv(&step.matrix(), &omega);
+                    alpha = mtv(&step.matrix(), &alpha);
+                    if let Some(rate) = &step.rate {
+                        let e = step.axis.unit();
+                        alpha = add(&alpha, &scale(rate, &cross(&omega, &e)));
+                        omega = add(&omega, &scale(rate, &e));
+                    }
                 }
-            }
-            let omega = super::store::expand3(&omega);
-            let alpha = super::store::expand3(&alpha);
+                (omega, alpha)
+            } else {
+                // Several rotations: their product R (parent components = R frame components)
+                // is named entry by entry (a steer rotation R_y(l) R_z(d) R_y(-l) multiplied out
+                // into every vector costs hundreds of operations), and each rotation's terms are
+                // written in the frame's components: its axis e_k as L_k^T e_k, L_k the product
+                // of the rotations after it (rotations keep cross products).
+                let r = k.rotation(st, &f.name);
+                let mut omega = mtv(&r, &lm.omega);
+                let mut alpha = mtv(&r, &lm.alpha);
+                for (i, step) in steps.iter().enumerate() {
+                    if let Some(rate) = &step.rate {
+                        let mut e = step.axis.unit();
+                        for later in &steps[i + 1..] {
+                            e = mtv(&later.matrix(), &e);
+                        }
+                        alpha = add(&alpha, &scale(rate, &cross(&omega, &e)));
+                        omega = add(&omega, &scale(rate, &e));
+                    }
+                }
+                (omega, alpha)
+            };
             k.local.insert(f.name.clone(), FrameMotion { omega, alpha });
         }
         // The root: on the ground, moving with the speeds (root_u, root_v) along W's axes.
@@ -217,6 +241,35 @@ impl Kinematics {
             k.points.insert(p.name.clone(), k.rigid(&from, &fm, &rho));
         }
         Ok(k)
+    }
+
+    /// The product of `frame`'s rotations (parent components = R frame components), its
+    /// entries named `R_<frame>_<row><column>` (numbers, symbols and their multiples unnamed).
+    fn rotation(&mut self, st: &mut Store, frame: &str) -> M3 {
+        if let Some(r) = self.rotations.get(frame) {
+            return r.clone();
+        }
+        let steps = &self.steps[frame].1;
+        let mut r = steps[0].matrix();
+        for step in &steps[1..] {
+            let m = step.matrix();
+            r = [0, 1, 2].map(|i| {
+                [0, 1, 2].map(|j| {
+                    (&r[i][0] * &m[0][j] + &r[i][1] * &m[1][j] + &r[i][2] * &m[2][j]).expand()
+                })
+            });
+        }
+        let named: M3 = [0, 1, 2].map(|i| {
+            [0, 1, 2].map(|j| {
+                st.name(
+                    &format!("R_{frame}_{}{}", i + 1, j + 1),
+                    &format!("entry ({}, {}) of the product of {frame}'s rotations", i + 1, j + 1),
+                    r[i][j].clone(),
+                )
+            })
+        });
+        self.rotations.insert(frame.to_string(), named.clone());
+        named
     }
 
     /// The motion of the point `from + rho`, `rho` fixed in a frame of motion `fm`.
@@ -247,8 +300,13 @@ impl Kinematics {
         let mut k = k;
         let mut level = 0;
         while let Some((parent, steps)) = self.steps.get(&frame) {
-            for step in steps[..k].iter().rev() {
-                v = mv(&step.matrix(), &v);
+            match self.rotations.get(&frame) {
+                Some(r) if k == steps.len() => v = mv(r, &v),
+                _ => {
+                    for step in steps[..k].iter().rev() {
+                        v = mv(&step.matrix(), &v);
+                    }
+                }
             }
             level += 1;
             v = st.name3(&format!("{name}_{level}"), &format!("{name} at level {level}"), &v);
