@@ -679,8 +679,19 @@ pub fn derive(m: &Model, st: &mut Store) -> Result<Kane, DescriptionError> {
                 f[i] = &f[i] - &s[i] * &sp.axial * (&alpha0[k] + &sigma);
             }
         }
-        let force =
-            sub(&scale(&g, &[Atom::num(0), Atom::num(0), total.clone()]), &scale(&total, &a0));
+        let force = st.name3(
+            &format!("F_{x}"),
+            &format!("gravity less the inertia force m a0 of assembly {x} (working frame)"),
+            &sub(&scale(&g, &[Atom::num(0), Atom::num(0), total.clone()]), &scale(&total, &a0)),
+        );
+        let torque = st.name3(
+            &format!("N_{x}"),
+            &format!(
+                "rate of assembly {x}'s angular momentum about its mass centre at zero independent accelerations ({}'s components)",
+                t.frame
+            ),
+            &torque,
+        );
         for i in 0..n {
             for j in i..n {
                 mm[i][j] =
@@ -719,7 +730,7 @@ pub fn derive(m: &Model, st: &mut Store) -> Result<Kane, DescriptionError> {
             let s = st.put(
                 &format!("M_{}_{}", independent[i], independent[j]),
                 &format!("mass matrix entry for ({}, {})", independent[i], independent[j]),
-                mm[i][j].expand(),
+                mm[i][j].clone(),
             );
             msym[i][j] = s.clone();
             msym[j][i] = s;
@@ -730,7 +741,7 @@ pub fn derive(m: &Model, st: &mut Store) -> Result<Kane, DescriptionError> {
             st.put(
                 &format!("f_{}", independent[i]),
                 &format!("forcing of the {} equation: M u' = f", independent[i]),
-                f[i].expand(),
+                f[i].clone(),
             )
         })
         .collect();
