@@ -1222,19 +1222,27 @@ pub fn conservative<const N: usize>(
     energy: impl Fn([f64; N]) -> f64,
     stops: &[Threshold],
 ) -> Result<Trajectory<[f64; N], EnergyDrift>, IntegrateError<Infallible>> {
-    conservative_until(how, grid, x0, rhs, energy, stops, &AtomicBool::new(false))
+    conservative_until(how, grid, x0, rhs, None, energy, stops, &AtomicBool::new(false))
 }
 
+/// The state Jacobian $\partial f/\partial x$ of an autonomous right-hand side, for
+/// [`conservative_until`].
+pub type StateJacobian<'a, const N: usize> = &'a dyn Fn([f64; N]) -> [[f64; N]; N];
+
 /// [`conservative`] that also ends when `stop` is set ([`integrate_until`]): the samples up to
-/// the last accepted step, with its time in [`Trajectory::interrupted`].
+/// the last accepted step, with its time in [`Trajectory::interrupted`]. With `jacobian`, the
+/// implicit method's Newton iterations use it instead of forward differences
+/// ([`integrate_with_jacobian`]).
 ///
 /// # Errors
 /// As [`conservative`].
+#[allow(clippy::too_many_arguments)]
 pub fn conservative_until<const N: usize>(
     how: &Integration,
     grid: &Grid,
     x0: [f64; N],
     rhs: impl Fn([f64; N]) -> [f64; N],
+    jacobian: Option<StateJacobian<'_, N>>,
     energy: impl Fn([f64; N]) -> f64,
     stops: &[Threshold],
     stop: &AtomicBool,
@@ -1273,7 +1281,18 @@ pub fn conservative_until<const N: usize>(
         }
         Ok(())
     };
-    let outcome = integrate_until(how, grid, x0, &mut f, &mut events[..count], &mut observe, stop)?;
+    let mut jac = jacobian
+        .map(|j| move |_t: f64, x: &[f64; N]| -> Result<[[f64; N]; N], Infallible> { Ok(j(*x)) });
+    let outcome = integrate_with_jacobian(
+        how,
+        grid,
+        x0,
+        &mut f,
+        jac.as_mut().map(|j| j as &mut JacobianFn<'_, N, Infallible>),
+        &mut events[..count],
+        &mut observe,
+        stop,
+    )?;
     trajectory.diagnostics.max_energy_drift = max_drift;
     trajectory.stats = outcome.stats;
     trajectory.event = outcome.event.map(|c| (c.index, c.t));
