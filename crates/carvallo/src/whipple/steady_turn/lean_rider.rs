@@ -22,7 +22,8 @@
 //!
 //! The stability with the steer torque held: the eigenvalues of the Jacobian of the thirteen-
 //! component right-hand side of [`LeanRider::rate`] (the pitch projected onto the constraint
-//! as its simulation does) on roll, steer, torso lean and their rates and the rear wheel's
+//! as its simulation does; the generated [`LeanRider::jacobian`], dual numbers through the
+//! interpreter as its reference) on roll, steer, torso lean and their rates and the rear wheel's
 //! rate, seven components; the zero of the family of turns at the same torque set aside, six
 //! remain. The positions, the yaw, the wheel angles are ignorable and the pitch dependent, as
 //! for the bicycle. The contact forces are not computed for the rider: the momentum balance
@@ -35,7 +36,7 @@ use nalgebra::{Complex, SMatrix};
 use std::sync::OnceLock;
 
 use super::{check, steer_roots, Stability, TurnError, ROOT_TOLERANCE};
-use crate::whipple::lean_rider::{self as rider, dynamics_scene, LeanRider, PITCH};
+use crate::whipple::lean_rider::{self as rider, dynamics_scene, Joint, LeanRider, PITCH};
 
 /// The state indices of the block whose eigenvalues decide: roll $q_4$, steer $q_7$, torso
 /// lean $q_9$, their rates $u_4$, $u_7$, $u_9$ and the rear wheel's rate $u_6$ (Moore's order).
@@ -318,9 +319,18 @@ impl<'a> RiderTurnSolver<'a> {
     }
 
     /// The Jacobian of [`LeanRider::rate`] at `x` (thirteen components, the pitch last and on
-    /// the constraint) under the constant torques `torques` $(T_4, T_6, T_7, T_9)$, by dual
-    /// numbers through the program with the pitch projected as the simulation projects it.
+    /// the constraint) under the constant torques `torques` $(T_4, T_6, T_7, T_9)$, with the
+    /// pitch projected as the simulation projects it: the generated
+    /// [`LeanRider::jacobian`], what the stability is computed from;
+    /// [`state_jacobian_dual`](Self::state_jacobian_dual) is its reference.
     pub fn state_jacobian(&self, x: &[f64; 13], torques: [f64; 4]) -> [[f64; 13]; 13] {
+        self.rider.jacobian(x, &torques, Joint::Free)
+    }
+
+    /// [`state_jacobian`](Self::state_jacobian) by forward-mode dual numbers through the IR
+    /// interpreter ([`carvallo_ir::dual`]) and the solve in dual arithmetic: no generated
+    /// derivative, no chain rule written by hand.
+    pub fn state_jacobian_dual(&self, x: &[f64; 13], torques: [f64; 4]) -> [[f64; 13]; 13] {
         let y: [Dual<13>; 13] = std::array::from_fn(|k| Dual::variable(x[k], k));
         let c = Dual::constant;
         let inputs = [
