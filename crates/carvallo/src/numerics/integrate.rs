@@ -1690,7 +1690,8 @@ mod tests {
         };
         let x0: [f64; 11] = std::array::from_fn(|i| if i % 2 == 0 && i < 10 { 1.0 } else { 0.0 });
         let mut end_of = |how: &Integration| {
-            let mut observe = |_: Point, _: f64, _: &[f64; 11]| -> Result<(), Infallible> { Ok(()) };
+            let mut observe =
+                |_: Point, _: f64, _: &[f64; 11]| -> Result<(), Infallible> { Ok(()) };
             let out = integrate(how, &grid, x0, &mut f, &mut [], &mut observe).expect("run");
             (out.end.1, out.stats)
         };

@@ -24,8 +24,7 @@ use carvallo_ir::{hp, Program};
 
 fn program(model: &str) -> Program {
     let path = format!("{}/../../generated/{model}.ir", env!("CARGO_MANIFEST_DIR"));
-    Program::parse(&std::fs::read_to_string(&path).expect("the generated program"))
-        .expect("parses")
+    Program::parse(&std::fs::read_to_string(&path).expect("the generated program")).expect("parses")
 }
 
 /// The outputs `names` of `p` in dual numbers, every parameter and input given by `at`.
@@ -99,7 +98,9 @@ fn characteristic(j: &[[f64; 4]; 4]) -> [f64; 4] {
     for k in 1..=4 {
         let am = mul(j, &m);
         c[k - 1] = -trace(&am) / k as f64;
-        m = std::array::from_fn(|r| std::array::from_fn(|s| am[r][s] + c[k - 1] * f64::from(r == s)));
+        m = std::array::from_fn(|r| {
+            std::array::from_fn(|s| am[r][s] + c[k - 1] * f64::from(r == s))
+        });
     }
     c
 }
@@ -126,13 +127,15 @@ fn the_hoops_state_jacobian_equals_duals_and_256_bit_differences() {
         let at = |name: &str| match name {
             "R" => Dual::constant(h.radius()),
             "g" => Dual::constant(h.g()),
-            n => names.iter().position(|m| *m == n).map_or(Dual::constant(0.0), |i| {
-                Dual::variable(x[i], i)
-            }),
+            n => names
+                .iter()
+                .position(|m| *m == n)
+                .map_or(Dual::constant(0.0), |i| Dual::variable(x[i], i)),
         };
         let o = dual_outputs::<4>(&p, &["pns_dp", "pns_dn", "pns_ds"], &at);
         let want = [Dual::variable(x[1], 1), o[0], o[1], o[2]];
-        dual_worst = dual_worst.max(against_duals(&got, &h.rhs_pns(x), &want, &format!("hoop {k}")));
+        dual_worst =
+            dual_worst.max(against_duals(&got, &h.rhs_pns(x), &want, &format!("hoop {k}")));
         let args = |name: &str| match name {
             "R" => h.radius(),
             "g" => h.g(),

@@ -119,6 +119,30 @@ fn programs() -> &'static Programs {
     })
 }
 
+/// Whether the mass matrix $M$ (the first ten of [`dynamics_scene`]'s outputs `o`) is
+/// singular to working precision: a pivot of its Gaussian elimination not above $10^{-10}$ of
+/// its largest diagonal entry (a coordinate without inertia, e.g. a torso whose mass centre
+/// lies on its lean axis with no moment about it). The accelerations are then not defined, and
+/// the rounding errors of $M^{-1}$ would reach the eigenvalues.
+fn mass_matrix_is_singular(o: &[f64; 19]) -> bool {
+    const AT: [[usize; 4]; 4] = [[0, 1, 2, 3], [1, 4, 5, 6], [2, 5, 7, 8], [3, 6, 8, 9]];
+    let mut m = AT.map(|row| row.map(|k| o[k]));
+    let largest = (0..4).map(|k| m[k][k].abs()).fold(0.0, f64::max);
+    for k in 0..4 {
+        let pivot = m[k][k];
+        if !(pivot > 1e-10 * largest) {
+            return true;
+        }
+        for i in k + 1..4 {
+            let r = m[i][k] / pivot;
+            for j in k..4 {
+                m[i][j] -= r * m[k][j];
+            }
+        }
+    }
+    false
+}
+
 /// The steady turns of one leaning rider.
 pub struct RiderTurnSolver<'a> {
     rider: &'a LeanRider,
@@ -257,7 +281,8 @@ impl<'a> RiderTurnSolver<'a> {
     /// # Errors
     /// [`TurnError::Parameter`] naming a speed that is not positive and finite or a roll not
     /// strictly inside ±π/2; [`TurnError::Solver`] when the stability of a turn found cannot be
-    /// computed.
+    /// computed (its mass matrix singular to working precision, or the eigenvalues not
+    /// converging).
     pub fn turns(&self, speed: f64, lean: f64) -> Result<RiderTurns, TurnError> {
         check(speed, lean)?;
         let wheel = -speed / self.rr;
@@ -291,6 +316,14 @@ impl<'a> RiderTurnSolver<'a> {
         let pitch = pitch.value;
         let yaw_rate = o[14];
         let steer_torque = -o[12];
+        if mass_matrix_is_singular(&o) {
+            return Err(TurnError::Solver {
+                reason: "the mass matrix is singular at the turn (a pivot below 1e-10 of its \
+                         largest diagonal entry): the accelerations, hence the stability, are \
+                         not defined",
+                steer,
+            });
+        }
         let mut x = [0.0; 13];
         x[3] = lean;
         x[5] = steer;

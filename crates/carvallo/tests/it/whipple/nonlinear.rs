@@ -314,7 +314,10 @@ fn adaptive_runs_reach_a_cross_checked_reference() {
         let end = final_error(&tr, &reference);
         let scaled = 0.1 * rtol.powf(2.0 / 3.0);
         eprintln!("radau5 rtol {rtol:e}: error {e:.2e}, at the end {end:.2e} (scaled tolerance {scaled:.1e}), {:?}, residual {:.1e}", tr.stats, tr.max_contact_residual);
-        assert!(end <= rtol && e <= 100.0 * rtol, "radau5 rtol {rtol}: error {e}, at the end {end}");
+        assert!(
+            end <= rtol && e <= 100.0 * rtol,
+            "radau5 rtol {rtol}: error {e}, at the end {end}"
+        );
         assert!(tr.max_contact_residual <= 1e-14, "{}", tr.max_contact_residual);
         radau.push((e, end));
     }
