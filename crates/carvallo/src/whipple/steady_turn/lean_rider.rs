@@ -130,13 +130,15 @@ fn mass_matrix_is_singular(o: &[f64; 19]) -> bool {
     let largest = (0..4).map(|k| m[k][k].abs()).fold(0.0, f64::max);
     for k in 0..4 {
         let pivot = m[k][k];
-        if !(pivot > 1e-10 * largest) {
+        // Not above the bound, or NaN.
+        if pivot.is_nan() || pivot <= 1e-10 * largest {
             return true;
         }
-        for i in k + 1..4 {
-            let r = m[i][k] / pivot;
-            for j in k..4 {
-                m[i][j] -= r * m[k][j];
+        let row = m[k];
+        for other in m.iter_mut().skip(k + 1) {
+            let r = other[k] / pivot;
+            for (x, p) in other.iter_mut().zip(row).skip(k) {
+                *x -= r * p;
             }
         }
     }
