@@ -468,6 +468,15 @@ fn the_riders_generated_kernel_derivatives_equal_256_bit_differences() {
         ));
     }
     eprintln!("rider: generated kernel derivatives vs 256-bit differences: worst {worst:.2e}");
+    eprintln!(
+        "rider: values {} + {} ops; with derivatives {} + {} ops, {} + {} non-zero derivatives",
+        dynamics_scene::OP_COUNT,
+        carvallo::whipple::lean_rider::contact_scene::OP_COUNT,
+        dynamics_jacobian_scene::OP_COUNT,
+        contact_jacobian_scene::OP_COUNT,
+        dynamics_jacobian_scene::JACOBIAN_NONZEROS,
+        contact_jacobian_scene::JACOBIAN_NONZEROS
+    );
 }
 
 #[test]
