@@ -402,8 +402,9 @@ fn parameter_files_name_what_is_wrong() {
 /// held by a stiff, heavily damped joint ($k_9 = 10^4$ N m/rad, $c_9 = 10^4$ N m s/rad; a
 /// decay near $-c_9/I \approx -1800\ \mathrm{s^{-1}}$ beside the bicycle's few per second).
 /// Radau5 at rtol 1e-6, its Newton iterations on [`LeanRider::jacobian`], reaches DOP853 at
-/// 1e-12 to 1e-5 in far fewer evaluations than DOPRI5 at the same tolerance, whose step is
-/// held by its stability bound.
+/// 1e-12 to 1e-5 in fifty times fewer evaluations than DOPRI5 at the same tolerance, whose
+/// step is held by its stability bound (2026-12-06: 21 steps and 129 evaluations against 2,948
+/// steps and 20,620, errors 6.0e-7 and 6.5e-7).
 #[test]
 fn radau5_with_the_generated_jacobian_runs_a_stiff_torso_in_few_steps() {
     use carvallo::numerics::integrate::{Grid, Integration, Method};
@@ -438,7 +439,7 @@ fn radau5_with_the_generated_jacobian_runs_a_stiff_torso_in_few_steps() {
     );
     assert!(err(&radau) <= 1e-5, "radau5 error {}", err(&radau));
     assert!(
-        5 * radau.stats.rhs_evaluations < dopri.stats.rhs_evaluations,
+        50 * radau.stats.rhs_evaluations < dopri.stats.rhs_evaluations,
         "radau5 {:?} against dopri5 {:?}",
         radau.stats,
         dopri.stats
