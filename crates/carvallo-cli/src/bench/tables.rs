@@ -1041,6 +1041,24 @@ fn scene_rows(cfg: &Config, rows: &mut Vec<Row>) {
                 t / whole
             ),
         );
+        // Where the Jacobian's time goes: its two generated kernels alone (the rest is the
+        // chain rule through the projection, the solve and the kinematic rates).
+        let a = nl_arr!(state_rate_jacobian_scene);
+        let kernel = time_ns(mt, || state_rate_jacobian_scene::eval_array(black_box(&a)));
+        let b = nl_arr!(project_jacobian_scene);
+        let projection = time_ns(mt, || project_jacobian_scene::eval_array(black_box(&b)));
+        add(
+            "bicycle (c) state Jacobian",
+            "kernels only",
+            state_rate_jacobian_scene::OP_COUNT + project_jacobian_scene::OP_COUNT,
+            kernel + projection,
+            &format!(
+                "state_rate_jacobian_scene {kernel:.1} ns + project_jacobian_scene \
+                 {projection:.1} ns: {:.0} % of StateRate::jacobian; the values' kernel alone is \
+                 the row `kernel only` above",
+                100.0 * (kernel + projection) / t
+            ),
+        );
         lean_rider_rows(mt, rows);
         integrator_overhead_rows(mt, &wn, &f, rows);
     }
