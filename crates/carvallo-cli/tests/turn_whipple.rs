@@ -3,7 +3,8 @@
 //! turns (the CLI adds nothing), upright running of a BicycleParameters file with a rider
 //! against `carvallo eig` of the same files (the linearised model, another derivation), a lean
 //! no steer holds as a result with exit code 0, `--steer` selecting the nearest turn, and bad
-//! input as an error naming the value with exit code 2. `--model lean-rider`: the library's
+//! input as an error naming the value with exit code 2, a solver failure (a rider whose mass
+//! matrix is singular) with exit code 1 and its reason. `--model lean-rider`: the library's
 //! turns of Moore's leaning rider, and upright running with `carvallo eig`'s six eigenvalues.
 //! `--hands-free`: the forward family branches from upright running at `carvallo window`'s
 //! capsize speed (the linearised model), for the benchmark and a file with a rider.
@@ -136,6 +137,52 @@ fn steer_keeps_the_nearest_turn() {
         assert_eq!(t.len(), 1);
         same(&t[0]["steer"], steers[expect]);
     }
+}
+
+#[test]
+fn a_solver_failure_exits_1_with_its_reason() {
+    // Browser + Jason with the torso's mass centre on its lean axis (l6 = 0) and no moment
+    // about it (ig11 = ig31 = 0), held by a spring (k9): the torso's lean has no inertia, the
+    // mass matrix is singular and no turn has a linearisation. Every (speed, lean) with a turn
+    // is then a solver failure (exit 1, the reason on stderr), one with none is still a result
+    // (exit 0), and a bad value is still exit 2 naming it.
+    let moore =
+        concat!(env!("CARGO_MANIFEST_DIR"), "/../../data/mooreriderlean2012/browser_jason.toml");
+    let text: String = std::fs::read_to_string(moore)
+        .unwrap()
+        .lines()
+        .map(|line| match line.split(" = ").next() {
+            Some(name @ ("l6" | "ig11" | "ig31")) => format!("{name} = 0.0\n"),
+            Some("k9") => "k9 = 100.0\n".to_string(),
+            _ => format!("{line}\n"),
+        })
+        .collect();
+    let dir = std::env::temp_dir().join(format!("carvallo-turn-{}", std::process::id()));
+    std::fs::create_dir_all(&dir).unwrap();
+    let file = dir.join("torso_on_its_axis.toml");
+    std::fs::write(&file, text).unwrap();
+    let model = file.to_str().unwrap();
+    for lean in ["0", "0.1", "-0.3"] {
+        let (code, out, err) =
+            carvallo(&["turn", "--model", model, "--speed", "5", "--lean", lean]);
+        assert_eq!((code, out.as_str()), (1, ""), "lean {lean}: {err}");
+        assert!(
+            err.starts_with("error: the steady turn solver failed at steer ")
+                && err.contains("the mass matrix is singular at the turn"),
+            "lean {lean}: {err}"
+        );
+    }
+    let (code, out, err) = carvallo(&["turn", "--model", model, "--speed", "5", "--lean", "1.55"]);
+    assert_eq!((code, err.as_str()), (0, ""), "{out}");
+    assert!(out.contains("no steady turn"), "{out}");
+    let (code, out, err) = carvallo(&["turn", "--model", model, "--speed", "-5", "--lean", "0.1"]);
+    assert_eq!((code, out.as_str()), (2, ""), "{err}");
+    assert!(err.starts_with("error: invalid speed -5.0: must be positive"), "{err}");
+    // The same rider with its torso off the axis turns (exit 0): the failure is the file's.
+    let (code, _, err) =
+        carvallo(&["turn", "--model", "lean-rider", "--speed", "5", "--lean", "0.1"]);
+    assert_eq!((code, err.as_str()), (0, ""));
+    std::fs::remove_dir_all(&dir).unwrap();
 }
 
 #[test]

@@ -1041,8 +1041,79 @@ fn scene_rows(cfg: &Config, rows: &mut Vec<Row>) {
                 t / whole
             ),
         );
+        // Where the Jacobian's time goes: its two generated kernels alone (the rest is the
+        // chain rule through the projection, the solve and the kinematic rates).
+        let a = nl_arr!(state_rate_jacobian_scene);
+        let kernel = time_ns(mt, || state_rate_jacobian_scene::eval_array(black_box(&a)));
+        let b = nl_arr!(project_jacobian_scene);
+        let projection = time_ns(mt, || project_jacobian_scene::eval_array(black_box(&b)));
+        add(
+            "bicycle (c) state Jacobian",
+            "kernels only",
+            state_rate_jacobian_scene::OP_COUNT + project_jacobian_scene::OP_COUNT,
+            kernel + projection,
+            &format!(
+                "state_rate_jacobian_scene {kernel:.1} ns + project_jacobian_scene \
+                 {projection:.1} ns: {:.0} % of StateRate::jacobian; the values' kernel alone is \
+                 the row `kernel only` above",
+                100.0 * (kernel + projection) / t
+            ),
+        );
+        lean_rider_rows(mt, rows);
         integrator_overhead_rows(mt, &wn, &f, rows);
     }
+}
+
+/// The leaning rider's right-hand side as its simulation calls it
+/// ([`LeanRider::projected_rate`](carvallo::whipple::lean_rider::LeanRider::projected_rate):
+/// the pitch projected by one Newton step, Kane's equations, the 4 x 4 solve, the kinematic
+/// rates) and its state Jacobian from generated code
+/// ([`LeanRider::jacobian`](carvallo::whipple::lean_rider::LeanRider::jacobian), 13 x 13), at a
+/// leaning, steering, turning state of Browser + Jason at 5 m/s.
+fn lean_rider_rows(mt: f64, rows: &mut Vec<Row>) {
+    use carvallo::whipple::lean_rider::{
+        contact_jacobian_scene, contact_scene, dynamics_jacobian_scene, dynamics_scene, Joint,
+        LeanRider, LeanRiderParams, PITCH,
+    };
+    let Ok(rider) = LeanRider::new(LeanRiderParams::browser_jason()) else { return };
+    let mut x = rider.upright(5.0);
+    (x[3], x[5], x[7], x[8], x[10], x[11]) = (0.1, 0.05, 0.02, 0.2, -0.1, 0.05);
+    let Some(pitch) = rider.pitch_near(x[3], x[PITCH], x[5]) else { return };
+    x[PITCH] = pitch;
+    let torques = [0.0; 4];
+    let row = |name: &str, ops: usize, ns: f64, note: &str| Row {
+        section: "scenes",
+        name: name.into(),
+        method: "generated".into(),
+        ops: Some(ops as u64),
+        ns: Some(ns),
+        max_rel_err: None,
+        note: note.into(),
+    };
+    let whole = time_ns(mt, || rider.projected_rate(black_box(&x), &torques, Joint::Free));
+    rows.push(row(
+        "leaning rider state -> state derivative",
+        dynamics_scene::OP_COUNT + contact_scene::OP_COUNT,
+        whole,
+        "LeanRider::projected_rate: pitch projected by one Newton step, M, f, dependent rates, \
+         4x4 solve, kinematic rates (13 components)",
+    ));
+    let t = time_ns(mt, || rider.jacobian(black_box(&x), &torques, Joint::Free));
+    rows.push(row(
+        "leaning rider state Jacobian",
+        dynamics_jacobian_scene::OP_COUNT + contact_jacobian_scene::OP_COUNT,
+        t,
+        &format!(
+            "LeanRider::jacobian: scene! jacobian kernels ({} + {} ops, {} + {} non-zero \
+             derivatives), chain rule through the projection, the solve and the kinematic \
+             rates: {:.2}x the whole right-hand side",
+            dynamics_jacobian_scene::OP_COUNT,
+            contact_jacobian_scene::OP_COUNT,
+            dynamics_jacobian_scene::JACOBIAN_NONZEROS,
+            contact_jacobian_scene::JACOBIAN_NONZEROS,
+            t / whole
+        ),
+    ));
 }
 
 /// The integrators' cost beyond the right-hand side: the bicycle at 4.6 m/s from a lean of

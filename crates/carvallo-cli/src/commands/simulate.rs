@@ -94,8 +94,8 @@ pub enum MethodArg {
     Dop853,
     /// Verner's efficient 9(8) pair, error-controlled, dense output of order 9
     Vern9,
-    /// Radau IIA of order 5, implicit, for stiff variants (Newton on the generated state
-    /// Jacobian of the nonlinear bicycle, forward differences elsewhere)
+    /// Radau IIA of order 5, implicit, for stiff variants (Newton on the model's generated
+    /// state Jacobian; forward differences for the bicycle driven by torques or feedback)
     Radau5,
 }
 

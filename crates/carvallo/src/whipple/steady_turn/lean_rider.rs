@@ -22,7 +22,8 @@
 //!
 //! The stability with the steer torque held: the eigenvalues of the Jacobian of the thirteen-
 //! component right-hand side of [`LeanRider::rate`] (the pitch projected onto the constraint
-//! as its simulation does) on roll, steer, torso lean and their rates and the rear wheel's
+//! as its simulation does; the generated [`LeanRider::jacobian`], dual numbers through the
+//! interpreter as its reference) on roll, steer, torso lean and their rates and the rear wheel's
 //! rate, seven components; the zero of the family of turns at the same torque set aside, six
 //! remain. The positions, the yaw, the wheel angles are ignorable and the pitch dependent, as
 //! for the bicycle. The contact forces are not computed for the rider: the momentum balance
@@ -35,7 +36,7 @@ use nalgebra::{Complex, SMatrix};
 use std::sync::OnceLock;
 
 use super::{check, steer_roots, Stability, TurnError, ROOT_TOLERANCE};
-use crate::whipple::lean_rider::{self as rider, dynamics_scene, LeanRider, PITCH};
+use crate::whipple::lean_rider::{self as rider, dynamics_scene, Joint, LeanRider, PITCH};
 
 /// The state indices of the block whose eigenvalues decide: roll $q_4$, steer $q_7$, torso
 /// lean $q_9$, their rates $u_4$, $u_7$, $u_9$ and the rear wheel's rate $u_6$ (Moore's order).
@@ -116,6 +117,32 @@ fn programs() -> &'static Programs {
                 .expect("the program has the dynamics"),
         }
     })
+}
+
+/// Whether the mass matrix $M$ (the first ten of [`dynamics_scene`]'s outputs `o`) is
+/// singular to working precision: a pivot of its Gaussian elimination not above $10^{-10}$ of
+/// its largest diagonal entry (a coordinate without inertia, e.g. a torso whose mass centre
+/// lies on its lean axis with no moment about it). The accelerations are then not defined, and
+/// the rounding errors of $M^{-1}$ would reach the eigenvalues.
+fn mass_matrix_is_singular(o: &[f64; 19]) -> bool {
+    const AT: [[usize; 4]; 4] = [[0, 1, 2, 3], [1, 4, 5, 6], [2, 5, 7, 8], [3, 6, 8, 9]];
+    let mut m = AT.map(|row| row.map(|k| o[k]));
+    let largest = (0..4).map(|k| m[k][k].abs()).fold(0.0, f64::max);
+    for k in 0..4 {
+        let pivot = m[k][k];
+        // Not above the bound, or NaN.
+        if pivot.is_nan() || pivot <= 1e-10 * largest {
+            return true;
+        }
+        let row = m[k];
+        for other in m.iter_mut().skip(k + 1) {
+            let r = other[k] / pivot;
+            for (x, p) in other.iter_mut().zip(row).skip(k) {
+                *x -= r * p;
+            }
+        }
+    }
+    false
 }
 
 /// The steady turns of one leaning rider.
@@ -256,7 +283,8 @@ impl<'a> RiderTurnSolver<'a> {
     /// # Errors
     /// [`TurnError::Parameter`] naming a speed that is not positive and finite or a roll not
     /// strictly inside ±π/2; [`TurnError::Solver`] when the stability of a turn found cannot be
-    /// computed.
+    /// computed (its mass matrix singular to working precision, or the eigenvalues not
+    /// converging).
     pub fn turns(&self, speed: f64, lean: f64) -> Result<RiderTurns, TurnError> {
         check(speed, lean)?;
         let wheel = -speed / self.rr;
@@ -290,6 +318,14 @@ impl<'a> RiderTurnSolver<'a> {
         let pitch = pitch.value;
         let yaw_rate = o[14];
         let steer_torque = -o[12];
+        if mass_matrix_is_singular(&o) {
+            return Err(TurnError::Solver {
+                reason: "the mass matrix is singular at the turn (a pivot below 1e-10 of its \
+                         largest diagonal entry): the accelerations, hence the stability, are \
+                         not defined",
+                steer,
+            });
+        }
         let mut x = [0.0; 13];
         x[3] = lean;
         x[5] = steer;
@@ -318,9 +354,18 @@ impl<'a> RiderTurnSolver<'a> {
     }
 
     /// The Jacobian of [`LeanRider::rate`] at `x` (thirteen components, the pitch last and on
-    /// the constraint) under the constant torques `torques` $(T_4, T_6, T_7, T_9)$, by dual
-    /// numbers through the program with the pitch projected as the simulation projects it.
+    /// the constraint) under the constant torques `torques` $(T_4, T_6, T_7, T_9)$, with the
+    /// pitch projected as the simulation projects it: the generated
+    /// [`LeanRider::jacobian`], what the stability is computed from;
+    /// [`state_jacobian_dual`](Self::state_jacobian_dual) is its reference.
     pub fn state_jacobian(&self, x: &[f64; 13], torques: [f64; 4]) -> [[f64; 13]; 13] {
+        self.rider.jacobian(x, &torques, Joint::Free)
+    }
+
+    /// [`state_jacobian`](Self::state_jacobian) by forward-mode dual numbers through the IR
+    /// interpreter ([`carvallo_ir::dual`]) and the solve in dual arithmetic: no generated
+    /// derivative, no chain rule written by hand.
+    pub fn state_jacobian_dual(&self, x: &[f64; 13], torques: [f64; 4]) -> [[f64; 13]; 13] {
         let y: [Dual<13>; 13] = std::array::from_fn(|k| Dual::variable(x[k], k));
         let c = Dual::constant;
         let inputs = [

@@ -301,18 +301,28 @@ fn adaptive_runs_reach_a_cross_checked_reference() {
         }
     }
     // The implicit Radau5, its Newton iterations on the generated state Jacobian: meant for
-    // stiff variants, not this bicycle. On it the crate's Radau5 takes 43 steps and errs by
-    // about 5e-6 at every tolerance from 1e-8 to 1e-12 (on the oscillator of the integrate
-    // module's tests its error falls with the tolerance as 0.1 rtol^(2/3)): a defect to find,
-    // recorded here so that a fix shows.
+    // stiff variants, not this bicycle. Its error falls with the tolerance (1.3e-8, 6.1e-10,
+    // 3.0e-11 over the samples; 3.5e-10, 8.9e-12, 1.3e-13 at the end). It used not to: given
+    // as scalars, the tolerances were transformed by the crate once per component (see
+    // `integrate_with_jacobian`), to about 1e-3 whatever the rtol, and the error stalled near
+    // 5e-6 in 43 steps at every rtol from 1e-8 to 1e-12. The samples come from Radau5's
+    // collocation polynomial, of order 3: between its steps it errs more.
+    let mut radau = Vec::new();
     for rtol in [1e-8, 1e-10, 1e-12] {
         let tr = run(&Integration::adaptive(Method::Radau5, rtol, 1e-3 * rtol), 5.0, 0.01, 1, &[]);
         let e = error(&tr, &reference);
         let end = final_error(&tr, &reference);
         let scaled = 0.1 * rtol.powf(2.0 / 3.0);
         eprintln!("radau5 rtol {rtol:e}: error {e:.2e}, at the end {end:.2e} (scaled tolerance {scaled:.1e}), {:?}, residual {:.1e}", tr.stats, tr.max_contact_residual);
-        assert!(end <= 1e-5 && e <= 5e-5, "radau5 rtol {rtol}: error {e}, at the end {end}");
+        assert!(
+            end <= rtol && e <= 100.0 * rtol,
+            "radau5 rtol {rtol}: error {e}, at the end {end}"
+        );
         assert!(tr.max_contact_residual <= 1e-14, "{}", tr.max_contact_residual);
+        radau.push((e, end));
+    }
+    for w in radau.windows(2) {
+        assert!(w[1].0 <= w[0].0 / 10.0 && w[1].1 <= w[0].1 / 10.0, "radau5 errors {radau:?}");
     }
 }
 

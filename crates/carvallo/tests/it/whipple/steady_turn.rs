@@ -380,6 +380,36 @@ mod rider {
     }
 
     #[test]
+    fn the_generated_jacobian_is_the_dual_number_one_at_turns() {
+        // The generated Jacobian (what the stability uses) against dual numbers through the
+        // IR interpreter at the rider's turns, forward and reversed, with their steer torques:
+        // relative 1e-12 of each row's largest entry.
+        let r = browser_jason();
+        let s = RiderTurnSolver::new(&r);
+        let mut worst = 0.0f64;
+        let mut count = 0;
+        for (speed, lean) in [(5.0, 0.0), (5.0, 0.05), (3.0, 0.2), (8.0, -0.3)] {
+            for t in s.turns(speed, lean).expect("turns").turns {
+                let mut x = [0.0; 13];
+                (x[3], x[5], x[7], x[9], x[PITCH]) =
+                    (t.lean, t.steer, t.torso_lean, t.rear_wheel_rate, t.pitch);
+                let torques = [0.0, 0.0, t.steer_torque, 0.0];
+                let generated = s.state_jacobian(&x, torques);
+                let dual = s.state_jacobian_dual(&x, torques);
+                for (g, d) in generated.iter().zip(&dual) {
+                    let scale = d.iter().fold(1.0f64, |m, x| m.max(x.abs()));
+                    for (a, b) in g.iter().zip(d) {
+                        worst = worst.max((a - b).abs() / scale);
+                    }
+                }
+                count += 1;
+            }
+        }
+        eprintln!("rider turns: generated vs dual Jacobian {worst:.2e} at {count} turns");
+        assert!(count >= 6 && worst <= 1e-12, "{count} turns, largest difference {worst:e}");
+    }
+
+    #[test]
     fn a_stiff_torso_tends_to_the_locked_bicycle() {
         let mut errors = Vec::new();
         for k9 in [1e4, 1e5, 1e6] {
