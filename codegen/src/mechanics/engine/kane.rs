@@ -318,6 +318,16 @@ pub fn derive(m: &Model, st: &mut Store) -> Result<Kane, DescriptionError> {
             &add(&centre.acceleration, &cross(&motion.alpha, &rd)),
             &cross(&motion.omega, &scale(&wh.radius, &d_rate)),
         );
+        // Expanded when that is shorter: at a wheel whose contact is the root point, terms of
+        // omega_L x rho and omega_R x (r d) cancel (rho = -r d) only expanded.
+        let contact_rate = contact_rate.map(|c| {
+            let e = c.expand();
+            if super::store::tree_ops(&e) < super::store::tree_ops(&c) {
+                e
+            } else {
+                c
+            }
+        });
         let contact_rate = st.name3(
                 &format!("vc_{}_dt", wh.name),
                 &format!("inertial derivative at constant speeds of wheel {}'s material contact point's velocity", wh.name),

@@ -48,6 +48,28 @@ pub fn d(e: &Atom, name: &str) -> Atom {
     }
 }
 
+/// The operations of an expression's tree as written (no sharing): a rough measure to choose
+/// between a formula as built and expanded.
+pub fn tree_ops(e: &Atom) -> usize {
+    fn walk(v: AtomView<'_>) -> usize {
+        match v {
+            AtomView::Num(_) | AtomView::Var(_) => 0,
+            AtomView::Fun(f) => 1 + f.iter().map(walk).sum::<usize>(),
+            AtomView::Pow(p) => {
+                let (b, e) = p.get_base_exp();
+                1 + walk(b) + walk(e)
+            }
+            AtomView::Mul(m) => {
+                m.iter().count().saturating_sub(1) + m.iter().map(walk).sum::<usize>()
+            }
+            AtomView::Add(a) => {
+                a.iter().count().saturating_sub(1) + a.iter().map(walk).sum::<usize>()
+            }
+        }
+    }
+    walk(e.as_view())
+}
+
 /// The formulas handed over, with what each name stands for and the rules of differentiation.
 pub struct Store {
     /// Memoir section or model label of the formulas.
@@ -102,7 +124,8 @@ impl Store {
     /// Records `expr` as the formula `name` (prefixed) and returns the symbol standing for it; a
     /// number, a symbol or a number times a symbol (once expanded) is returned as it is,
     /// unnamed. The formula is kept as built, not expanded: products of sums (a cross product of
-    /// an angular velocity with a named vector) cost fewer operations factored.
+    /// an angular velocity with a named vector) cost fewer operations factored (choosing per
+    /// formula the form with fewer [`tree_ops`] cost 20 more in the Whipple bicycle's M and f).
     pub fn name(&mut self, name: &str, description: &str, expr: Atom) -> Atom {
         let expanded = expr.expand();
         if is_trivial(&expanded) {
