@@ -38,8 +38,8 @@ use carvallo::numerics::integrate::{self, Grid, Integration, Method as Integrato
 use carvallo::numerics::quartic;
 use carvallo::numerics::rng::SplitMix64;
 use carvallo::whipple::nonlinear::rate::{
-    self, project_jacobian_scene, project_scene, state_rate_jacobian_scene, state_rate_scene,
-    StateRate,
+    self, project_jacobian_scene, project_scene, projected_rate_scene, state_rate_jacobian_scene,
+    state_rate_scene, StateRate,
 };
 use carvallo::whipple::nonlinear::{dynamics_scene, Configuration, WhippleNonlinear};
 use carvallo::whipple::stability::{self, reference_speeds, EigenGrid};
@@ -993,8 +993,9 @@ fn scene_rows(cfg: &Config, rows: &mut Vec<Row>) {
             "WhippleNonlinear::accelerations (M3, f3, dependent rates and accelerations, LU)",
         );
         // What an integrator calls: state in, state derivative out (the pitch a state,
-        // projected by one Newton step; M3, f3 and the dependent rates; the closed-form solve;
-        // the kinematic rates), against the kernel it evaluates.
+        // projected by one Newton step fused with M3, f3 and the dependent rates at the
+        // projected pitch; the closed-form solve; the kinematic rates), against the kernel
+        // it evaluates.
         let f = StateRate::new(&WhippleParams::benchmark());
         let y: [f64; rate::LEN] =
             [0.0, 0.0, 0.0, lean, steer, 0.0, 0.0, 0.2, -0.1, -5.0 / 0.3, c.pitch];
@@ -1007,17 +1008,33 @@ fn scene_rows(cfg: &Config, rows: &mut Vec<Row>) {
             kernel,
             "M3, f3, dependent rates, rear contact speed: the kernel the right-hand side evaluates",
         );
+        let a = nl_arr!(projected_rate_scene);
+        let fused = time_ns(mt, || projected_rate_scene::eval_array(black_box(&a)));
+        add(
+            "bicycle (c) state -> state derivative",
+            "kernel with the pitch's Newton step",
+            projected_rate_scene::OP_COUNT,
+            fused,
+            &format!(
+                "one program (scene! newton): the contact constraint's Newton step on the pitch, \
+                 then the kernel at the corrected pitch, sharing the lean's and steer's \
+                 trigonometry, the corrected pitch's sine and cosine by angle addition: {} ops \
+                 beyond the kernel (the contact kernel alone: {}); {:.2}x the kernel",
+                projected_rate_scene::OP_COUNT - state_rate_scene::OP_COUNT,
+                project_scene::OP_COUNT,
+                fused / kernel
+            ),
+        );
         let t = time_ns(mt, || f.eval(black_box(&y)));
         add(
             "bicycle (c) state -> state derivative",
             "whole",
-            state_rate_scene::OP_COUNT + project_scene::OP_COUNT,
+            projected_rate_scene::OP_COUNT,
             t,
             &format!(
-                "StateRate::eval: pitch projected by one Newton step ({} ops), the kernel, closed-form \
-                 3x3 solve, kinematic rates: {:.2}x the kernel (target <= 1.3x); compare PyDy's \
-                 M, F + 6x6 LU + kinematic rates in scripts/pydy-c-peer",
-                project_scene::OP_COUNT,
+                "StateRate::eval: the kernel with the pitch's Newton step, closed-form 3x3 solve, \
+                 kinematic rates: {:.2}x the kernel (target <= 1.3x); compare PyDy's M, F + 6x6 \
+                 LU + kinematic rates in scripts/pydy-c-peer",
                 t / kernel
             ),
         );
