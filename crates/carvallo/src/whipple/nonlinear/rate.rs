@@ -48,6 +48,7 @@ crate::scene! {
         outputs: [m3_11, m3_12, m3_13, m3_22, m3_23, m3_33, f3_1, f3_2, f3_3,
                   thetad, psid, thetaFd, rear_speed],
         newton: { input: theta, residual: contact_height, derivative: contact_height_dtheta },
+        lanes: 4,
     }
 }
 
@@ -234,7 +235,7 @@ impl StateRate {
         y: &[f64; LEN],
         torque: &mut dyn FnMut(f64) -> Result<[f64; 2], NonlinearError>,
     ) -> Result<Rates, NonlinearError> {
-        let (lean, steer, yaw) = (y[3], y[4], y[2]);
+        let (lean, steer) = (y[3], y[4]);
         let u = [y[7], y[8], y[9]];
         // One Newton step and the kernel at the corrected pitch, in one program; when the
         // step is too long for one to be enough, Newton to convergence and the kernel alone.
@@ -250,29 +251,7 @@ impl StateRate {
         };
         let speed = o[12];
         let tau = torque(speed)?;
-        let ud = solve_symmetric(
-            [o[0], o[1], o[2], o[3], o[4], o[5]],
-            [o[6] + tau[0], o[7] + tau[1], o[8]],
-        )
-        .ok_or(NonlinearError::SingularMassMatrix { lean, steer })?;
-        let (sy, cy) = yaw.sin_cos();
-        Ok(Rates {
-            derivative: [
-                speed * cy,
-                speed * sy,
-                o[10],
-                u[0],
-                u[1],
-                u[2],
-                o[11],
-                ud[0],
-                ud[1],
-                ud[2],
-                o[9],
-            ],
-            pitch,
-            speed,
-        })
+        Ok(Rates { derivative: derivative(y, &o, tau)?, pitch, speed })
     }
 
     /// The state derivative at `y`, undriven.
@@ -283,6 +262,50 @@ impl StateRate {
     pub fn eval(&self, y: &[f64; LEN]) -> Result<[f64; LEN], NonlinearError> {
         Ok(self.rates_with(y, &mut |_| Ok([0.0, 0.0]))?.derivative)
     }
+
+    /// The state derivatives at [`LANES`] states in one call, undriven: the Newton step and
+    /// the kernel for all of them at once ([`projected_rate_scene`]'s `eval_lanes`, vector
+    /// instructions across the states), then the solve and the kinematic rates state by
+    /// state. Each result equals [`eval`](Self::eval) at its state bit for bit (a state whose
+    /// pitch needs more than one Newton step is evaluated by `eval`).
+    ///
+    /// # Errors
+    /// Each state's as [`eval`](Self::eval)'s.
+    pub fn eval_lanes(
+        &self,
+        y: &[[f64; LEN]; LANES],
+    ) -> [Result<[f64; LEN], NonlinearError>; LANES] {
+        let mut args = self.projected.map(|v| [v; LANES]);
+        for (slot, k) in self.projected_slots.iter().zip([3, PITCH, 4, 7, 8, 9]) {
+            if let Some(a) = args.get_mut(*slot) {
+                *a = std::array::from_fn(|j| y[j][k]);
+            }
+        }
+        let o = projected_rate_scene::eval_lanes(&args);
+        std::array::from_fn(|j| {
+            if o[13][j].abs() <= ONE_STEP {
+                derivative(&y[j], &std::array::from_fn(|i| o[i][j]), [0.0, 0.0])
+            } else {
+                self.eval(&y[j])
+            }
+        })
+    }
+}
+
+/// The number of states [`StateRate::eval_lanes`] evaluates per call.
+pub const LANES: usize = projected_rate_scene::LANES;
+
+/// The state derivative at `y` from the kernel's outputs `o` ([`state_rate_scene`]'s, at the
+/// projected pitch) and the torques `tau` $(T_\varphi, T_\delta)$: the accelerations by the
+/// closed-form solve, the kinematic rates.
+#[inline]
+fn derivative(y: &[f64; LEN], o: &[f64; 13], tau: [f64; 2]) -> Result<[f64; LEN], NonlinearError> {
+    let ud =
+        solve_symmetric([o[0], o[1], o[2], o[3], o[4], o[5]], [o[6] + tau[0], o[7] + tau[1], o[8]])
+            .ok_or(NonlinearError::SingularMassMatrix { lean: y[3], steer: y[4] })?;
+    let speed = o[12];
+    let (sy, cy) = y[2].sin_cos();
+    Ok([speed * cy, speed * sy, o[10], y[7], y[8], y[9], o[11], ud[0], ud[1], ud[2], o[9]])
 }
 
 impl StateRate {

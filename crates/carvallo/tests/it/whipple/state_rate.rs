@@ -11,7 +11,7 @@
 
 use carvallo::numerics::rng::SplitMix64;
 use carvallo::whipple::nonlinear::rate::{
-    solve_symmetric, state_rate_scene, StateRate, LEN, PITCH,
+    solve_symmetric, state_rate_scene, StateRate, LANES, LEN, PITCH,
 };
 use carvallo::whipple::WhippleParams;
 
@@ -78,4 +78,37 @@ fn one_program_equals_the_two_it_replaced_to_rounding() {
         }
     }
     eprintln!("largest difference {worst:.1e}");
+}
+
+/// [`StateRate::eval_lanes`] equals [`StateRate::eval`] bit for bit in every lane, a lane
+/// whose pitch needs Newton to convergence (the fallback) and one with no contact included.
+#[test]
+fn lanes_equal_the_scalar_right_hand_side_bit_for_bit() {
+    let params = WhippleParams::benchmark();
+    let f = StateRate::new(&params);
+    let mut rng = SplitMix64(37);
+    for round in 0..50 {
+        let ys: [[f64; LEN]; LANES] = std::array::from_fn(|j| {
+            let mut y = [0.0; LEN];
+            y[2] = rng.uniform(-3.0, 3.0);
+            y[3] = rng.uniform(-1.0, 1.0);
+            y[4] = rng.uniform(-1.2, 1.2);
+            y[7] = rng.uniform(-3.0, 3.0);
+            y[8] = rng.uniform(-7.0, 7.0);
+            y[9] = rng.uniform(-25.0, -2.0);
+            let offset = [0.0, 5e-8, -1e-5, 0.0][j];
+            y[PITCH] = f.project(y[3], 0.31, y[4]).expect("pitch") + offset;
+            if round == 7 && j == 3 {
+                y[PITCH] = f64::NAN;
+            }
+            y
+        });
+        for (lane, y) in f.eval_lanes(&ys).iter().zip(&ys) {
+            match (lane, f.eval(y)) {
+                (Ok(a), Ok(b)) => assert_eq!(a.map(f64::to_bits), b.map(f64::to_bits), "at {y:?}"),
+                (Err(a), Err(b)) => assert_eq!(*a, b),
+                (a, b) => panic!("lanes {a:?} but scalar {b:?} at {y:?}"),
+            }
+        }
+    }
 }
