@@ -11,7 +11,7 @@ and 36, item 4). Run by scripts/casadi-peer, which installs the pinned peers.
    `jacobian(xd, x)` (algorithmic differentiation of the same graph).
 2. Generates C for both with CasADi's `CodeGenerator`, compiles each with a timing `main` like
    scripts/pydy_c_peer.py's (the call `noinline`, compiler barriers, the smallest of five means
-   over slices of at least `--min-time / 5` s) at `cc -O2`, and checks them at the bench's state
+   over slices of at least `--min-time / 5` s: scripts/c_timing.py) at `cc -O2`, and checks them at the bench's state
    (lean 0.1, steer 0.05, lean rate 0.2, steer rate -0.1, rear wheel rate -5/0.3, the pitch
    from the constraint): the right-hand side against `carvallo accel --state` on the nine
    derivatives both states share, the Jacobian against CasADi's own evaluation and against
@@ -49,6 +49,7 @@ import numpy as np
 import sympy as sm
 
 sys.path.insert(0, str(Path(__file__).resolve().parent))
+import c_timing as ct  # noqa: E402
 import pydy_c_peer as cpeer  # noqa: E402
 import pydy_scipy_peer as speer  # noqa: E402
 import pydy_whipple as pw  # noqa: E402
@@ -67,11 +68,7 @@ DRIVER = r"""
 #define CAT2(a, b) a##b
 #define CAT(a, b) CAT2(a, b)
 
-static double now(void) {
-    struct timespec ts;
-    clock_gettime(CLOCK_MONOTONIC, &ts);
-    return (double)ts.tv_sec + 1e-9 * (double)ts.tv_nsec;
-}
+@NOW@
 
 __attribute__((noinline)) static int call(const casadi_real **arg, casadi_real **res,
                                           casadi_int *iw, casadi_real *w) {
@@ -101,31 +98,12 @@ int main(void) {
     res[0] = out;
     if (call(arg, res, iw, w)) return 3;
     for (casadi_int k = 0; k < nnz; k++) printf("%.17g\n", out[k]);
-    double slice = min_time / 5.0, best = INFINITY;
-    long n = 1;
-    int rounds = 0;
-    while (rounds < 5) {
-        double t0 = now();
-        for (long r = 0; r < n; r++) {
-            __asm__ volatile("" : : "r"(x), "r"(c), "r"(out) : "memory");
-            call(arg, res, iw, w);
-            __asm__ volatile("" : : "r"(x), "r"(c), "r"(out) : "memory");
-        }
-        double dt = now() - t0;
-        if (dt >= slice) {
-            if (dt * 1e9 / (double)n < best) best = dt * 1e9 / (double)n;
-            rounds++;
-        } else if (dt <= 0.0) {
-            n *= 16;
-        } else {
-            double g = 1.2 * slice / dt;
-            n = (long)((double)n * (g < 16.0 ? g : 16.0)) + 1;
-        }
-    }
+@TIMING_LOOP@
     printf("ns %.3f\n", best);
     return 0;
 }
-"""
+""".replace("@NOW@", ct.NOW).replace(
+    "@TIMING_LOOP@", ct.timing_loop("call(arg, res, iw, w);", ["x", "c", "out"]))
 
 
 def to_casadi(exprs, symbols: dict):

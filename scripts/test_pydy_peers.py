@@ -109,3 +109,27 @@ def test_shared_derivatives_pair_moores_rates_with_ours():
     assert got["front wheel rate"] == (9.0, 1006.0)
     assert got["rear wheel acceleration"] == (105.0, 1009.0)
     assert len(got) == 9
+
+
+def test_the_shared_timing_loop_compiles_and_times(tmp_path):
+    import shutil
+    import subprocess
+
+    import c_timing
+
+    cc = shutil.which("cc")
+    if cc is None:
+        pytest.skip("no C compiler")
+    src = ("#include <math.h>\n#include <stdio.h>\n#include <time.h>\n" + c_timing.NOW
+           + "int main(void) {\n    double x[1] = {0.0}, min_time = 1e-4;\n"
+           + c_timing.timing_loop("x[0] += 1.0;", ["x"])
+           + '    printf("%.3f %g\\n", best, x[0]);\n    return 0;\n}\n')
+    (tmp_path / "t.c").write_text(src)
+    subprocess.run([cc, "-O2", "-o", str(tmp_path / "t"), str(tmp_path / "t.c")], check=True)
+    ns, calls = map(float, subprocess.run([str(tmp_path / "t")], capture_output=True, text=True,
+                                          check=True).stdout.split())
+    # Five slices of at least 2e-5 s each ran the call; one call takes well under a microsecond.
+    assert 0.0 < ns < 1e3
+    assert calls * ns * 1e-9 >= 5 * 2e-5 * 0.99
+    with pytest.raises(ValueError):
+        c_timing.timing_loop("x[0] += 1.0;", [])

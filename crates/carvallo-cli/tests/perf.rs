@@ -81,6 +81,21 @@ fn quick_bench_reports_times_beside_correct_errors() {
             _ => {}
         }
     }
+    // The whole right-hand side of the nonlinear bicycle on four states per call equals the
+    // scalar one lane by lane.
+    let lanes = rows(&v, "scenes")
+        .into_iter()
+        .find(|r| {
+            r["name"] == "bicycle (c) state -> state derivative" && r["method"] == "whole, 4 lanes"
+        })
+        .unwrap();
+    assert!(
+        lanes["note"]
+            .as_str()
+            .unwrap()
+            .contains("lanes equal the scalar right-hand side bit for bit"),
+        "{lanes}"
+    );
     let d = v["distributions"].as_array().unwrap();
     assert_eq!(d.len(), 5);
     for x in d {

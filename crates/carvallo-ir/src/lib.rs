@@ -56,6 +56,8 @@
 //! * [`interp`]: the allocation-free `f64` [`Interpreter`] and [`Program::eval_f64`].
 //! * [`diff`]: derivatives as programs ([`Program::with_jacobian`]), forward mode by source
 //!   transformation with structural zeros skipped.
+//! * [`newton`]: one Newton step on an input fused with the program evaluated at the
+//!   corrected input ([`Program::with_newton_step`]), sharing what does not depend on it.
 //! * [`hp`]: high-precision reference evaluation with `astro-float`.
 //!
 //! # Example
@@ -77,6 +79,7 @@ pub mod dual;
 pub mod error;
 pub mod hp;
 pub mod interp;
+pub mod newton;
 pub mod opt;
 pub mod parse;
 pub mod print;

@@ -47,6 +47,14 @@
 //!   that is not zero by the program's structure is one more output,
 //!   `d_OUTPUT__NAME`, evaluated by `eval` (and `eval_lanes`) with the values, sharing their
 //!   subexpressions. A name that is fixed, unknown or listed twice is an error on that name.
+//! * `newton: { input: X, residual: H, derivative: D }` evaluates the scene after one Newton
+//!   step on the input `X` for the root of the output `H`, whose derivative with respect to
+//!   `X` is the output `D` (`carvallo_ir::Program::with_newton_step`): every output at
+//!   $x^* = x - h/h_x$, with $h$ and $h_x$ at the given $x$, sharing every value that does
+//!   not depend on `X` with the step and taking $\sin x^*$, $\cos x^*$ from $\sin x$, $\cos x$
+//!   by angle addition (exact to rounding while the step is at most
+//!   `carvallo_ir::newton::EXACT_STEP`). Two outputs follow the selected ones: the step
+//!   `X_newton_step` $= h/h_x$ and the corrected input `X_newton`.
 //!
 //! # What a scene module contains
 //!

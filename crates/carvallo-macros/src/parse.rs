@@ -53,6 +53,19 @@ pub enum EntryValue {
     Lanes(LitInt),
     /// `jacobian: [NAME, ...]`.
     Jacobian(Vec<Ident>),
+    /// `newton: { input: NAME, residual: NAME, derivative: NAME }`.
+    Newton(Newton),
+}
+
+/// The value of `newton`: one Newton step on `input` for the root of the output `residual`,
+/// whose derivative with respect to `input` is the output `derivative`.
+pub struct Newton {
+    /// The input stepped.
+    pub input: Ident,
+    /// The output whose root is sought.
+    pub residual: Ident,
+    /// The output that is its derivative with respect to the input.
+    pub derivative: Ident,
 }
 
 /// One `NAME: VALUE` pair of `fixed`; the value is any expression here and must turn out to be
@@ -65,7 +78,8 @@ pub struct FixedEntry {
 }
 
 /// The keys a scene accepts, for error messages.
-pub const KEYS: &str = "`model`, `path`, `fixed`, `outputs`, `max_fn_ops`, `lanes`, `jacobian`";
+pub const KEYS: &str =
+    "`model`, `path`, `fixed`, `outputs`, `max_fn_ops`, `lanes`, `jacobian`, `newton`";
 
 impl Parse for SceneInput {
     fn parse(input: ParseStream) -> syn::Result<Self> {
@@ -112,6 +126,7 @@ impl Parse for Entry {
             "jacobian" => EntryValue::Jacobian(names(input)?),
             "max_fn_ops" => EntryValue::MaxFnOps(input.parse()?),
             "lanes" => EntryValue::Lanes(input.parse()?),
+            "newton" => EntryValue::Newton(input.parse()?),
             other => {
                 return Err(syn::Error::new_spanned(
                     &key,
@@ -129,6 +144,42 @@ fn names(input: ParseStream) -> syn::Result<Vec<Ident>> {
     bracketed!(content in input);
     let items = Punctuated::<Ident, Token![,]>::parse_terminated_with(&content, Ident::parse_any)?;
     Ok(items.into_iter().collect())
+}
+
+impl Parse for Newton {
+    /// `{ input: NAME, residual: NAME, derivative: NAME }`, in this order (names may be
+    /// keywords), with an optional trailing comma.
+    fn parse(input: ParseStream) -> syn::Result<Self> {
+        let content;
+        braced!(content in input);
+        let field = |want: &str, first: bool| -> syn::Result<Ident> {
+            if !first {
+                content.parse::<Token![,]>()?;
+            }
+            let key = Ident::parse_any(&content)?;
+            if key != want {
+                return Err(syn::Error::new_spanned(
+                    &key,
+                    format!(
+                        "expected `{want}` in `newton: {{ input: NAME, residual: NAME, \
+                         derivative: NAME }}`, found `{key}`"
+                    ),
+                ));
+            }
+            content.parse::<Token![:]>()?;
+            Ident::parse_any(&content)
+        };
+        let input = field("input", true)?;
+        let residual = field("residual", false)?;
+        let derivative = field("derivative", false)?;
+        if content.peek(Token![,]) {
+            content.parse::<Token![,]>()?;
+        }
+        if !content.is_empty() {
+            return Err(content.error("unexpected tokens after `derivative` in `newton`"));
+        }
+        Ok(Newton { input, residual, derivative })
+    }
 }
 
 impl Parse for FixedEntry {
@@ -207,6 +258,15 @@ mod tests {
             (quote!(mod a { outputs: { x } }), "expected square brackets"),
             (quote!(mod a { fixed: [R: 1.0] }), "expected curly braces"),
             (quote!(mod a { model: hoop } junk), "expected `mod`"),
+            (
+                quote!(mod a { newton: { residual: h, input: x, derivative: d } }),
+                "expected `input` in `newton",
+            ),
+            (quote!(mod a { newton: { input: x, residual: h } }), "expected `,`"),
+            (
+                quote!(mod a { newton: { input: x, residual: h, derivative: d, more: y } }),
+                "unexpected tokens after `derivative`",
+            ),
         ];
         for (ts, want) in cases {
             let text = ts.to_string();

@@ -270,6 +270,13 @@ fn the_default_generated_dir_is_the_workspace_one() {
 
 #[test]
 fn unknown_and_misused_names() {
+    assert_eq!(
+        errors(quote!(mod a { model: demo, newton: { input: R, residual: poly, derivative: nope } })),
+        [
+            "`newton` steps an input, and `R` is not one of model `demo` (inputs: `x`, `y`, `z`, `w`)",
+            "unknown output `nope` of model `demo` (outputs: `poly`, `trig`, `root`, `scaled`)",
+        ]
+    );
     assert_one_error(
         quote!(mod a { model: demo, fixed: { Q: 1.0 } }),
         "unknown parameter `Q` of model `demo` (parameters: `R`, `g`, `mu`)",
@@ -375,7 +382,7 @@ fn malformed_scene_is_one_error() {
     assert_one_error(quote!(mod a { model demo }), "expected `:`");
     assert_one_error(
         quote!(mod a { model: demo, colour: red }),
-        "unknown scene key `colour`; expected one of `model`, `path`, `fixed`, `outputs`, `max_fn_ops`, `lanes`, `jacobian`",
+        "unknown scene key `colour`; expected one of `model`, `path`, `fixed`, `outputs`, `max_fn_ops`, `lanes`, `jacobian`, `newton`",
     );
 }
 

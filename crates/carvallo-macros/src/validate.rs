@@ -5,7 +5,9 @@
 //! twice), loads and parses the IR file, checks the fixed names against the program's
 //! parameters and the selected names against its outputs, and finally specialises the program
 //! with the `carvallo_ir` transformations: `fix_params` (fixed parameters become constants,
-//! which are folded), `select_outputs` (dead-code elimination, unused parameters and inputs
+//! which are folded), with `newton: {...}` `with_newton_step` (the program at the input
+//! corrected by one Newton step, the step and the corrected input appended to the selected
+//! outputs), `select_outputs` (dead-code elimination, unused parameters and inputs
 //! dropped), then one more round of constant folding and dead-code elimination; with
 //! `jacobian: [...]`, `with_jacobian` then adds the derivatives of the selected outputs with
 //! respect to the listed inputs and parameters (structural zeros left out).
@@ -20,7 +22,7 @@ use proc_macro2::Span;
 use syn::ext::IdentExt;
 use syn::{Expr, Ident, Lit, LitStr, UnOp};
 
-use crate::parse::{EntryValue, FixedEntry, SceneDecl};
+use crate::parse::{EntryValue, FixedEntry, Newton, SceneDecl};
 use crate::scene::{rust_ident, Context, Jacobian, Scene, DEFAULT_MAX_FN_OPS, LANE_COUNTS};
 
 /// A list of errors that are combined into one `syn::Error`.
@@ -66,6 +68,7 @@ struct Entries {
     max_fn_ops: Option<syn::LitInt>,
     lanes: Option<syn::LitInt>,
     jacobian: Option<(Ident, Vec<Ident>)>,
+    newton: Option<Newton>,
 }
 
 /// Validates one scene declaration against its IR file; see the module docs.
@@ -84,6 +87,7 @@ pub fn validate(decl: SceneDecl, ctx: &Context) -> syn::Result<Scene> {
             EntryValue::MaxFnOps(v) => set(&mut e.max_fn_ops, v),
             EntryValue::Lanes(v) => set(&mut e.lanes, v),
             EntryValue::Jacobian(v) => set(&mut e.jacobian, (key.clone(), v)),
+            EntryValue::Newton(v) => set(&mut e.newton, v),
         };
         if taken {
             errors.push(syn::Error::new_spanned(&key, format!("duplicate key `{key}`")));
@@ -281,6 +285,30 @@ pub fn validate(decl: SceneDecl, ctx: &Context) -> syn::Result<Scene> {
             ));
         }
     }
+    if let Some(n) = &e.newton {
+        let x = n.input.unraw().to_string();
+        if !program.inputs.contains(&x) {
+            errors.push(syn::Error::new_spanned(
+                &n.input,
+                format!(
+                    "`newton` steps an input, and `{x}` is not one of model `{model_name}` (inputs: {})",
+                    list(&program.inputs)
+                ),
+            ));
+        }
+        for o in [&n.residual, &n.derivative] {
+            let name = o.unraw().to_string();
+            if !names.contains(&name) {
+                errors.push(syn::Error::new_spanned(
+                    o,
+                    format!(
+                        "unknown output `{name}` of model `{model_name}` (outputs: {})",
+                        list(&names)
+                    ),
+                ));
+            }
+        }
+    }
     errors.check()?;
     let mut errors = Errors::default();
 
@@ -294,9 +322,25 @@ pub fn validate(decl: SceneDecl, ctx: &Context) -> syn::Result<Scene> {
     } else {
         names
     };
+    // With `newton`, the program at the corrected input, and its step and corrected input
+    // as two more outputs.
+    let newton = e.newton.as_ref().map(|n| {
+        let x = n.input.unraw().to_string();
+        let appended =
+            [carvallo_ir::newton::step_name(&x), carvallo_ir::newton::corrected_name(&x)];
+        (x, n.residual.unraw().to_string(), n.derivative.unraw().to_string(), appended)
+    });
+    let selected: Vec<String> = match &newton {
+        Some((.., appended)) => selected.into_iter().chain(appended.iter().cloned()).collect(),
+        None => selected,
+    };
     let selected: Vec<&str> = selected.iter().map(String::as_str).collect();
     let specialised = program
         .fix_params(&fixed_refs)
+        .and_then(|p| match &newton {
+            Some((x, h, dh, _)) => p.with_newton_step(x, h, dh),
+            None => Ok(p),
+        })
         .and_then(|p| p.select_outputs(&selected))
         .map(|p| p.fold_constants().eliminate_dead_code());
     // The derivatives: with respect to the variables the selected outputs still depend on

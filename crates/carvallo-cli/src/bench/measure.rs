@@ -203,6 +203,25 @@ pub fn time_ns<R>(min_time: f64, mut f: impl FnMut() -> R) -> f64 {
     best
 }
 
+/// [`time_ns`] of several functions, interleaved: `rounds` rounds, each timing every function
+/// in turn over `min_time` seconds; each function's least time over the rounds. Functions
+/// compared with each other are then timed under the same load, which other work on a shared
+/// machine changes from one moment to the next (timed one after the other, a ratio moved by
+/// up to 2x between runs on the loaded 2-core machine).
+pub fn time_ns_interleaved<const K: usize>(
+    min_time: f64,
+    rounds: usize,
+    mut fs: [&mut dyn FnMut(); K],
+) -> [f64; K] {
+    let mut best = [f64::INFINITY; K];
+    for _ in 0..rounds.max(1) {
+        for (b, f) in best.iter_mut().zip(fs.iter_mut()) {
+            *b = b.min(time_ns(min_time, &mut **f));
+        }
+    }
+    best
+}
+
 /// A valid random bicycle: the benchmark with every parameter scaled by a factor in
 /// [0.8, 1.2] ([`WhippleParams::perturbed`]).
 pub fn random_design(rng: &mut SplitMix64) -> WhippleParams {

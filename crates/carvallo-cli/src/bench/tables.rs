@@ -38,8 +38,8 @@ use carvallo::numerics::integrate::{self, Grid, Integration, Method as Integrato
 use carvallo::numerics::quartic;
 use carvallo::numerics::rng::SplitMix64;
 use carvallo::whipple::nonlinear::rate::{
-    self, project_jacobian_scene, project_scene, state_rate_jacobian_scene, state_rate_scene,
-    StateRate,
+    self, project_jacobian_scene, project_scene, projected_rate_scene, state_rate_jacobian_scene,
+    state_rate_scene, StateRate,
 };
 use carvallo::whipple::nonlinear::{dynamics_scene, Configuration, WhippleNonlinear};
 use carvallo::whipple::stability::{self, reference_speeds, EigenGrid};
@@ -49,8 +49,8 @@ use carvallo::whipple::window_lanes;
 use carvallo::whipple::{matrices_scene, Matrices, Whipple, WhippleParams, PARAM_NAMES};
 
 use super::measure::{
-    matrices_of, random_design, rel, time_ns, Config, Distribution, Report, Row, Target, Targets,
-    REFERENCE_BITS,
+    matrices_of, random_design, rel, time_ns, time_ns_interleaved, Config, Distribution, Report,
+    Row, Target, Targets, REFERENCE_BITS,
 };
 use nalgebra::{Matrix3, Vector3};
 
@@ -993,32 +993,93 @@ fn scene_rows(cfg: &Config, rows: &mut Vec<Row>) {
             "WhippleNonlinear::accelerations (M3, f3, dependent rates and accelerations, LU)",
         );
         // What an integrator calls: state in, state derivative out (the pitch a state,
-        // projected by one Newton step; M3, f3 and the dependent rates; the closed-form solve;
-        // the kinematic rates), against the kernel it evaluates.
+        // projected by one Newton step fused with M3, f3 and the dependent rates at the
+        // projected pitch; the closed-form solve; the kinematic rates), against the kernel
+        // it evaluates.
         let f = StateRate::new(&WhippleParams::benchmark());
         let y: [f64; rate::LEN] =
             [0.0, 0.0, 0.0, lean, steer, 0.0, 0.0, 0.2, -0.1, -5.0 / 0.3, c.pitch];
+        // The same on four states per call (lean and steer moved, the pitch on the contact).
+        let ys: [[f64; rate::LEN]; rate::LANES] = std::array::from_fn(|j| {
+            let mut z = y;
+            z[3] += 0.01 * j as f64;
+            z[4] -= 0.005 * j as f64;
+            z[rate::PITCH] = f.project(z[3], y[rate::PITCH], z[4]).unwrap_or(f64::NAN);
+            z
+        });
+        let same = f.eval_lanes(&ys).iter().zip(&ys).all(|(l, z)| {
+            matches!((l, f.eval(z)), (Ok(a), Ok(b)) if a.map(f64::to_bits) == b.map(f64::to_bits))
+        });
+        // Timed interleaved (eight rounds of a quarter of the usual time each), so that the
+        // ratios to the kernel are taken under one load.
         let a = nl_arr!(state_rate_scene);
-        let kernel = time_ns(mt, || state_rate_scene::eval_array(black_box(&a)));
+        let b = nl_arr!(projected_rate_scene);
+        let [kernel, fused, t, lanes] = time_ns_interleaved(
+            mt / 4.0,
+            8,
+            [
+                &mut || {
+                    black_box(state_rate_scene::eval_array(black_box(&a)));
+                },
+                &mut || {
+                    black_box(projected_rate_scene::eval_array(black_box(&b)));
+                },
+                &mut || {
+                    let _ = black_box(f.eval(black_box(&y)));
+                },
+                &mut || {
+                    let _ = black_box(f.eval_lanes(black_box(&ys)));
+                },
+            ],
+        );
+        let lanes = lanes / rate::LANES as f64;
+        let name = "bicycle (c) state -> state derivative";
         add(
-            "bicycle (c) state -> state derivative",
+            name,
             "kernel only",
             state_rate_scene::OP_COUNT,
             kernel,
-            "M3, f3, dependent rates, rear contact speed: the kernel the right-hand side evaluates",
+            "M3, f3, dependent rates, rear contact speed: the kernel the right-hand side evaluates \
+             (this row and the next three timed interleaved, eight rounds, each its least)",
         );
-        let t = time_ns(mt, || f.eval(black_box(&y)));
         add(
-            "bicycle (c) state -> state derivative",
+            name,
+            "kernel with the pitch's Newton step",
+            projected_rate_scene::OP_COUNT,
+            fused,
+            &format!(
+                "one program (scene! newton): the contact constraint's Newton step on the pitch, \
+                 then the kernel at the corrected pitch, sharing the lean's and steer's \
+                 trigonometry, the corrected pitch's sine and cosine by angle addition: {} ops \
+                 beyond the kernel (the contact kernel alone: {}); {:.2}x the kernel",
+                projected_rate_scene::OP_COUNT - state_rate_scene::OP_COUNT,
+                project_scene::OP_COUNT,
+                fused / kernel
+            ),
+        );
+        add(
+            name,
             "whole",
-            state_rate_scene::OP_COUNT + project_scene::OP_COUNT,
+            projected_rate_scene::OP_COUNT,
             t,
             &format!(
-                "StateRate::eval: pitch projected by one Newton step ({} ops), the kernel, closed-form \
-                 3x3 solve, kinematic rates: {:.2}x the kernel (target <= 1.3x); compare PyDy's \
-                 M, F + 6x6 LU + kinematic rates in scripts/pydy-c-peer",
-                project_scene::OP_COUNT,
+                "StateRate::eval: the kernel with the pitch's Newton step, closed-form 3x3 solve, \
+                 kinematic rates: {:.2}x the kernel (target <= 1.3x); compare PyDy's M, F + 6x6 \
+                 LU + kinematic rates in scripts/pydy-c-peer",
                 t / kernel
+            ),
+        );
+        add(
+            name,
+            "whole, 4 lanes",
+            projected_rate_scene::OP_COUNT,
+            lanes,
+            &format!(
+                "StateRate::eval_lanes / 4, per evaluation: {:.2}x the scalar whole, {:.2}x the \
+                 scalar kernel; lanes {} the scalar right-hand side bit for bit",
+                lanes / t,
+                lanes / kernel,
+                if same { "equal" } else { "DIFFER FROM" }
             ),
         );
         // Its full state Jacobian (11 x 11) from the generated derivative code, against the

@@ -108,13 +108,8 @@ impl Energy {
 
     /// The total energy at `c` (J).
     fn at(&self, c: &Configuration) -> f64 {
-        let mut a = self.args;
         let values = [c.lean, c.pitch, c.steer, c.lean_rate, c.steer_rate, c.rear_wheel_rate];
-        for (slot, v) in self.slots.iter().zip(values) {
-            if let Some(x) = a.get_mut(*slot) {
-                *x = v;
-            }
-        }
+        let a = rate::fill(self.args, &self.slots, values);
         observe_scene::eval(&observe_scene::Args::from_array(a)).energy
     }
 }

@@ -12,11 +12,15 @@
 //! equations at $\theta^*$: the right-hand side is a function of the state alone, smooth, and
 //! nothing is carried from one call to the next.
 //!
-//! Per evaluation: the generated contact constraint and its pitch derivative (one small
-//! kernel), then one generated kernel for $M_3$, $f_3$ and the dependent rates, then the
-//! symmetric $3 \times 3$ system solved in closed form (its adjugate over its determinant)
-//! and the kinematic rates. The parameters are copied into the kernels' argument arrays
-//! once, when the right-hand side is built; a call allocates nothing.
+//! Per evaluation: one generated program ([`projected_rate_scene`]) for the Newton step and
+//! $M_3$, $f_3$ and the dependent rates at $\theta^*$ — the contact constraint and its pitch
+//! derivative share the lean's and the steer's trigonometry with the rest, and
+//! $\sin\theta^*$, $\cos\theta^*$ come from $\sin\theta$, $\cos\theta$ by angle addition
+//! (`scene!`'s `newton`) — then the symmetric $3 \times 3$ system solved in closed form (its
+//! adjugate over its determinant) and the kinematic rates. A step longer than $10^{-7}$ rad
+//! goes on to convergence and evaluates the kernel alone ([`state_rate_scene`]) at the
+//! converged pitch. The parameters are copied into the kernels' argument arrays once, when
+//! the right-hand side is built; a call allocates nothing.
 
 use super::{NonlinearError, State, WhippleParams};
 
@@ -27,6 +31,24 @@ crate::scene! {
         model: whipple_nonlinear,
         outputs: [m3_11, m3_12, m3_13, m3_22, m3_23, m3_33, f3_1, f3_2, f3_3,
                   thetad, psid, thetaFd, rear_speed],
+    }
+}
+
+crate::scene! {
+    /// [`state_rate_scene`]'s outputs after one Newton step on the pitch for the contact
+    /// constraint, in one program: $M_3$, $f_3$, the dependent rates and the rear contact's
+    /// speed at $\theta^* = \theta - h/h_\theta$, then the step $h/h_\theta$
+    /// (`theta_newton_step`) and $\theta^*$ (`theta_newton`). What does not depend on the
+    /// pitch (the lean's and the steer's sines and cosines, and everything made of them) is
+    /// computed once for the step and the kernel, and $\sin\theta^*$, $\cos\theta^*$ come
+    /// from $\sin\theta$, $\cos\theta$ by angle addition (exact to rounding for steps up to
+    /// $10^{-4}$ rad; [`StateRate`] uses it for steps up to $10^{-7}$).
+    pub mod projected_rate_scene {
+        model: whipple_nonlinear,
+        outputs: [m3_11, m3_12, m3_13, m3_22, m3_23, m3_33, f3_1, f3_2, f3_3,
+                  thetad, psid, thetaFd, rear_speed],
+        newton: { input: theta, residual: contact_height, derivative: contact_height_dtheta },
+        lanes: 4,
     }
 }
 
@@ -76,6 +98,28 @@ pub(crate) fn input_slots(params: &[&str], inputs: &[&str]) -> [usize; 6] {
     })
 }
 
+/// `args` with the values `v` in the slots `slots` (those of [`input_slots`]: a slot out of
+/// range, an input the scene does not take, is skipped).
+#[inline]
+pub(crate) fn fill<const N: usize, const K: usize>(
+    mut args: [f64; N],
+    slots: &[usize],
+    v: [f64; K],
+) -> [f64; N] {
+    for (slot, v) in slots.iter().zip(v) {
+        if let Some(x) = args.get_mut(*slot) {
+            *x = v;
+        }
+    }
+    args
+}
+
+/// The longest first Newton step of the pitch (rad) after which [`StateRate`] takes the pitch
+/// as projected (the residual left is of the order of the step squared); longer steps, a loose
+/// tolerance's drift, go on to convergence (dopri5 at rtol $10^{-3}$ moved the pitch by more,
+/// and one step then left $1.9 \cdot 10^{-11}$ m).
+pub(crate) const ONE_STEP: f64 = 1e-7;
+
 /// A scene's argument array with the parameters filled in and the inputs zero.
 pub(crate) fn filled<const N: usize>(params: &WhippleParams, names: &[&str]) -> [f64; N] {
     std::array::from_fn(|i| match names.get(i) {
@@ -87,6 +131,8 @@ pub(crate) fn filled<const N: usize>(params: &WhippleParams, names: &[&str]) -> 
 /// The right-hand side of one bicycle: the kernels' argument arrays with its parameters.
 #[derive(Clone, Debug)]
 pub struct StateRate {
+    projected: [f64; projected_rate_scene::Args::LEN],
+    projected_slots: [usize; 6],
     project: [f64; project_scene::Args::LEN],
     project_slots: [usize; 6],
     rate: [f64; state_rate_scene::Args::LEN],
@@ -117,6 +163,11 @@ impl StateRate {
     /// The right-hand side of the bicycle with the parameters `params`.
     pub fn new(params: &WhippleParams) -> StateRate {
         StateRate {
+            projected: filled(params, projected_rate_scene::PARAMS),
+            projected_slots: input_slots(
+                projected_rate_scene::PARAMS,
+                projected_rate_scene::INPUTS,
+            ),
             project: filled(params, project_scene::PARAMS),
             project_slots: input_slots(project_scene::PARAMS, project_scene::INPUTS),
             rate: filled(params, state_rate_scene::PARAMS),
@@ -136,13 +187,11 @@ impl StateRate {
 
     /// The contact constraint $h$ (m) and $\partial h/\partial\theta$ (m/rad).
     pub fn contact(&self, lean: f64, pitch: f64, steer: f64) -> (f64, f64) {
-        let mut a = self.project;
-        for (slot, v) in self.project_slots.iter().zip([lean, pitch, steer]) {
-            if let Some(x) = a.get_mut(*slot) {
-                *x = v;
-            }
-        }
-        let o = project_scene::eval_array(&a);
+        let o = project_scene::eval_array(&fill(
+            self.project,
+            &self.project_slots,
+            [lean, pitch, steer],
+        ));
         (o[0], o[1])
     }
 
@@ -156,7 +205,7 @@ impl StateRate {
         let (h, dh) = self.contact(lean, pitch, steer);
         let step = h / dh;
         let mut th = pitch - step;
-        if step.abs() <= 1e-7 {
+        if step.abs() <= ONE_STEP {
             return Ok(th);
         }
         for _ in 0..50 {
@@ -186,41 +235,23 @@ impl StateRate {
         y: &[f64; LEN],
         torque: &mut dyn FnMut(f64) -> Result<[f64; 2], NonlinearError>,
     ) -> Result<Rates, NonlinearError> {
-        let (lean, steer, yaw) = (y[3], y[4], y[2]);
+        let (lean, steer) = (y[3], y[4]);
         let u = [y[7], y[8], y[9]];
-        let pitch = self.project(lean, y[PITCH], steer)?;
-        let mut a = self.rate;
-        for (slot, v) in self.rate_slots.iter().zip([lean, pitch, steer, u[0], u[1], u[2]]) {
-            if let Some(x) = a.get_mut(*slot) {
-                *x = v;
-            }
-        }
-        let o = state_rate_scene::eval_array(&a);
+        // One Newton step and the kernel at the corrected pitch, in one program; when the
+        // step is too long for one to be enough, Newton to convergence and the kernel alone.
+        let o =
+            fill(self.projected, &self.projected_slots, [lean, y[PITCH], steer, u[0], u[1], u[2]]);
+        let o = projected_rate_scene::eval_array(&o);
+        let (o, pitch) = if o[13].abs() <= ONE_STEP {
+            (std::array::from_fn::<f64, 13, _>(|i| o[i]), o[14])
+        } else {
+            let pitch = self.project(lean, y[PITCH], steer)?;
+            let a = fill(self.rate, &self.rate_slots, [lean, pitch, steer, u[0], u[1], u[2]]);
+            (state_rate_scene::eval_array(&a), pitch)
+        };
         let speed = o[12];
         let tau = torque(speed)?;
-        let ud = solve_symmetric(
-            [o[0], o[1], o[2], o[3], o[4], o[5]],
-            [o[6] + tau[0], o[7] + tau[1], o[8]],
-        )
-        .ok_or(NonlinearError::SingularMassMatrix { lean, steer })?;
-        let (sy, cy) = yaw.sin_cos();
-        Ok(Rates {
-            derivative: [
-                speed * cy,
-                speed * sy,
-                o[10],
-                u[0],
-                u[1],
-                u[2],
-                o[11],
-                ud[0],
-                ud[1],
-                ud[2],
-                o[9],
-            ],
-            pitch,
-            speed,
-        })
+        Ok(Rates { derivative: derivative(y, &o, tau)?, pitch, speed })
     }
 
     /// The state derivative at `y`, undriven.
@@ -231,6 +262,50 @@ impl StateRate {
     pub fn eval(&self, y: &[f64; LEN]) -> Result<[f64; LEN], NonlinearError> {
         Ok(self.rates_with(y, &mut |_| Ok([0.0, 0.0]))?.derivative)
     }
+
+    /// The state derivatives at [`LANES`] states in one call, undriven: the Newton step and
+    /// the kernel for all of them at once ([`projected_rate_scene`]'s `eval_lanes`, vector
+    /// instructions across the states), then the solve and the kinematic rates state by
+    /// state. Each result equals [`eval`](Self::eval) at its state bit for bit (a state whose
+    /// pitch needs more than one Newton step is evaluated by `eval`).
+    ///
+    /// # Errors
+    /// Each state's as [`eval`](Self::eval)'s.
+    pub fn eval_lanes(
+        &self,
+        y: &[[f64; LEN]; LANES],
+    ) -> [Result<[f64; LEN], NonlinearError>; LANES] {
+        let mut args = self.projected.map(|v| [v; LANES]);
+        for (slot, k) in self.projected_slots.iter().zip([3, PITCH, 4, 7, 8, 9]) {
+            if let Some(a) = args.get_mut(*slot) {
+                *a = std::array::from_fn(|j| y[j][k]);
+            }
+        }
+        let o = projected_rate_scene::eval_lanes(&args);
+        std::array::from_fn(|j| {
+            if o[13][j].abs() <= ONE_STEP {
+                derivative(&y[j], &std::array::from_fn(|i| o[i][j]), [0.0, 0.0])
+            } else {
+                self.eval(&y[j])
+            }
+        })
+    }
+}
+
+/// The number of states [`StateRate::eval_lanes`] evaluates per call.
+pub const LANES: usize = projected_rate_scene::LANES;
+
+/// The state derivative at `y` from the kernel's outputs `o` ([`state_rate_scene`]'s, at the
+/// projected pitch) and the torques `tau` $(T_\varphi, T_\delta)$: the accelerations by the
+/// closed-form solve, the kinematic rates.
+#[inline]
+fn derivative(y: &[f64; LEN], o: &[f64; 13], tau: [f64; 2]) -> Result<[f64; LEN], NonlinearError> {
+    let ud =
+        solve_symmetric([o[0], o[1], o[2], o[3], o[4], o[5]], [o[6] + tau[0], o[7] + tau[1], o[8]])
+            .ok_or(NonlinearError::SingularMassMatrix { lean: y[3], steer: y[4] })?;
+    let speed = o[12];
+    let (sy, cy) = y[2].sin_cos();
+    Ok([speed * cy, speed * sy, o[10], y[7], y[8], y[9], o[11], ud[0], ud[1], ud[2], o[9]])
 }
 
 impl StateRate {
@@ -261,18 +336,13 @@ impl StateRate {
         let (lean, steer, yaw) = (y[3], y[4], y[2]);
         // The projection and its derivatives with respect to lean, pitch, steer.
         let h_at = |pitch: f64| {
-            let mut a = self.project_jac;
-            for (slot, v) in self.project_jac_slots.iter().zip([lean, pitch, steer]) {
-                if let Some(x) = a.get_mut(*slot) {
-                    *x = v;
-                }
-            }
+            let a = fill(self.project_jac, &self.project_jac_slots, [lean, pitch, steer]);
             let out = project_jacobian_scene::eval_array(&a);
             (out[0], out[1], project_jacobian_scene::jacobian_array(&out))
         };
         let (h, dh, hd) = h_at(y[PITCH]);
         // The projected pitch (as `project` computes it) and d theta* / d (lean, pitch, steer).
-        let (pitch, dproj) = if (h / dh).abs() <= 1e-7 {
+        let (pitch, dproj) = if (h / dh).abs() <= ONE_STEP {
             let d: [f64; 3] = std::array::from_fn(|k| {
                 let own = if k == 1 { 1.0 } else { 0.0 };
                 own - (hd[0][k] * dh - h * hd[1][k]) / (dh * dh)
@@ -285,12 +355,7 @@ impl StateRate {
         };
         // The kernel and its derivatives with respect to z = (lean, pitch, steer, u).
         let u = [y[7], y[8], y[9]];
-        let mut a = self.rate_jac;
-        for (slot, v) in self.rate_jac_slots.iter().zip([lean, pitch, steer, u[0], u[1], u[2]]) {
-            if let Some(x) = a.get_mut(*slot) {
-                *x = v;
-            }
-        }
+        let a = fill(self.rate_jac, &self.rate_jac_slots, [lean, pitch, steer, u[0], u[1], u[2]]);
         let o = state_rate_jacobian_scene::eval_array(&a);
         let dz = state_rate_jacobian_scene::jacobian_array(&o);
         // Through z = (y3, theta*(y3, y10, y4), y4, y7, y8, y9) to the state.

@@ -14,5 +14,6 @@ mod nonlinear;
 mod params;
 mod reader_fuzz;
 mod stability;
+mod state_rate;
 mod steady_turn;
 mod uncertainty;
