@@ -540,31 +540,28 @@ pub fn derive(m: &Model, st: &mut Store) -> Result<Kane, DescriptionError> {
     // Every body's own partial velocities, for the modified Lagrange equations (Kane's sums
     // below run over assemblies): the mass centre's in working-frame components, the angular
     // ones in the body's frame's components (a wheel's: its carrier's, with its spin).
+    // The partials of `v` for each independent speed, named `<name>_<speed>` and described as
+    // "<what> for <speed><after>".
+    let named_partials = |st: &mut Store, name: &str, what: &str, after: &str, v: &V3| -> Vec<V3> {
+        (0..n)
+            .map(|i| {
+                st.name3(
+                    &format!("{name}_{}", independent[i]),
+                    &format!("{what} for {}{after}", independent[i]),
+                    &partial(v, i),
+                )
+            })
+            .collect()
+    };
     let mut partials = Vec::new();
     for b in &bodies {
         let x = &b.name;
-        let vt: Vec<V3> = (0..n)
-            .map(|i| {
-                st.name3(
-                    &format!("vt_{x}_{}", independent[i]),
-                    &format!("partial velocity of {x}'s mass centre for {}", independent[i]),
-                    &partial(&b.centre.velocity, i),
-                )
-            })
-            .collect();
+        let what = format!("partial velocity of {x}'s mass centre");
+        let vt = named_partials(st, &format!("vt_{x}"), &what, "", &b.centre.velocity);
         let omega = body_omega(&kin, m, b);
-        let wt: Vec<V3> = (0..n)
-            .map(|i| {
-                st.name3(
-                    &format!("wt_{x}_{}", independent[i]),
-                    &format!(
-                        "partial angular velocity of {x} for {} ({}'s components)",
-                        independent[i], b.frame
-                    ),
-                    &partial(&omega, i),
-                )
-            })
-            .collect();
+        let (what, after) =
+            (format!("partial angular velocity of {x}"), format!(" ({}'s components)", b.frame));
+        let wt = named_partials(st, &format!("wt_{x}"), &what, &after, &omega);
         partials.push((vt, wt));
     }
 
@@ -623,18 +620,8 @@ pub fn derive(m: &Model, st: &mut Store) -> Result<Kane, DescriptionError> {
         }
         let rho = kin.up(st, &e, &t.frame, &format!("r_{x}"));
         let centre = kin.rigid(&kin.points[&t.from], &kin.frames[&t.frame], &rho);
-        let vt: Vec<V3> = (0..n)
-            .map(|i| {
-                st.name3(
-                    &format!("vt_{x}_{}", independent[i]),
-                    &format!(
-                        "partial velocity of assembly {x}'s mass centre for {}",
-                        independent[i]
-                    ),
-                    &partial(&centre.velocity, i),
-                )
-            })
-            .collect();
+        let what = format!("partial velocity of assembly {x}'s mass centre");
+        let vt = named_partials(st, &format!("vt_{x}"), &what, "", &centre.velocity);
         let a0 = st.name3(
             &format!("a0_{x}"),
             &format!(
@@ -643,18 +630,9 @@ pub fn derive(m: &Model, st: &mut Store) -> Result<Kane, DescriptionError> {
             &(&add(&centre.acceleration, &velocity_part(&centre.velocity))),
         );
         let local = kin.local[&t.frame].clone();
-        let wt: Vec<V3> = (0..n)
-            .map(|i| {
-                st.name3(
-                    &format!("wt_{x}_{}", independent[i]),
-                    &format!(
-                        "partial angular velocity of {} for {} (its own components)",
-                        t.frame, independent[i]
-                    ),
-                    &partial(&local.omega, i),
-                )
-            })
-            .collect();
+        let what = format!("partial angular velocity of {}", t.frame);
+        let wt =
+            named_partials(st, &format!("wt_{x}"), &what, " (its own components)", &local.omega);
         let omega = st.name3(
             &format!("om_{x}"),
             &format!("angular velocity of {} (its own components)", t.frame),

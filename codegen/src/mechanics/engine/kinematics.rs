@@ -77,7 +77,7 @@ pub struct Kinematics {
     pub working: String,
     /// Each frame's motion (the ground `N` and the working frame included).
     pub frames: BTreeMap<String, FrameMotion>,
-    /// The named product of the rotations of each frame that has more than one.
+    /// The product of each frame's rotations, its entries named where they are not trivial.
     rotations: BTreeMap<String, M3>,
     /// Each frame's motion in its own components (the derivatives of its angular velocity's
     /// components are those of its angular acceleration: $\omega\times\omega = 0$), unnamed.
@@ -187,44 +187,27 @@ impl Kinematics {
             let omega = super::store::expand3(&omega);
             let alpha = super::store::expand3(&alpha);
             k.frames.insert(f.name.clone(), FrameMotion { omega, alpha });
-            // In the frame's own components, rotation by rotation: a simple rotation about e
-            // turns the components by its matrix's transpose and adds rate e to the angular
-            // velocity and rate (omega_before x e) to the acceleration (e is the same in the
-            // components before and after it).
+            // In the frame's own components. The product R of the frame's rotations (parent components = R frame components)
+            // is named entry by entry when there are several (a steer rotation
+            // R_y(l) R_z(d) R_y(-l) multiplied out into every vector costs hundreds of
+            // operations), and each rotation's terms are written in the frame's components: its
+            // axis e_k as L_k^T e_k, L_k the product of the rotations after it (rotations keep
+            // cross products); a rotation adds rate e to the angular velocity and
+            // rate (omega_before x e) to the acceleration.
             let lm = k.local[&parent].clone();
-            let (omega, alpha) = if steps.len() < 2 {
-                let (mut omega, mut alpha) = (lm.omega, lm.alpha);
-                for step in &steps {
-                    omega = mtv(&step.matrix(), &omega);
-                    alpha = mtv(&step.matrix(), &alpha);
-                    if let Some(rate) = &step.rate {
-                        let e = step.axis.unit();
-                        alpha = add(&alpha, &scale(rate, &cross(&omega, &e)));
-                        omega = add(&omega, &scale(rate, &e));
+            let r = k.rotation(st, &f.name);
+            let mut omega = mtv(&r, &lm.omega);
+            let mut alpha = mtv(&r, &lm.alpha);
+            for (i, step) in steps.iter().enumerate() {
+                if let Some(rate) = &step.rate {
+                    let mut e = step.axis.unit();
+                    for later in &steps[i + 1..] {
+                        e = mtv(&later.matrix(), &e);
                     }
+                    alpha = add(&alpha, &scale(rate, &cross(&omega, &e)));
+                    omega = add(&omega, &scale(rate, &e));
                 }
-                (omega, alpha)
-            } else {
-                // Several rotations: their product R (parent components = R frame components)
-                // is named entry by entry (a steer rotation R_y(l) R_z(d) R_y(-l) multiplied out
-                // into every vector costs hundreds of operations), and each rotation's terms are
-                // written in the frame's components: its axis e_k as L_k^T e_k, L_k the product
-                // of the rotations after it (rotations keep cross products).
-                let r = k.rotation(st, &f.name);
-                let mut omega = mtv(&r, &lm.omega);
-                let mut alpha = mtv(&r, &lm.alpha);
-                for (i, step) in steps.iter().enumerate() {
-                    if let Some(rate) = &step.rate {
-                        let mut e = step.axis.unit();
-                        for later in &steps[i + 1..] {
-                            e = mtv(&later.matrix(), &e);
-                        }
-                        alpha = add(&alpha, &scale(rate, &cross(&omega, &e)));
-                        omega = add(&omega, &scale(rate, &e));
-                    }
-                }
-                (omega, alpha)
-            };
+            }
             k.local.insert(f.name.clone(), FrameMotion { omega, alpha });
         }
         // The root: on the ground, moving with the speeds (root_u, root_v) along W's axes.
@@ -250,8 +233,13 @@ impl Kinematics {
             return r.clone();
         }
         let steps = &self.steps[frame].1;
-        let mut r = steps[0].matrix();
-        for step in &steps[1..] {
+        let (o, z) = (Atom::num(1), Atom::num(0));
+        let mut r: M3 = [
+            [o.clone(), z.clone(), z.clone()],
+            [z.clone(), o.clone(), z.clone()],
+            [z.clone(), z, o],
+        ];
+        for step in steps {
             let m = step.matrix();
             r = [0, 1, 2].map(|i| {
                 [0, 1, 2].map(|j| {
