@@ -138,6 +138,33 @@ fn check_nonnegative(name: &'static str, value: f64) -> Result<f64, ParameterErr
     }
 }
 
+/// The arguments of a scene over the unicycle's parameters and the state $(\theta, p, n, s)$
+/// (the value scene and its Jacobian take the same ones).
+macro_rules! motion_args {
+    ($scene:ident, $unicycle:expr, $state:expr) => {{
+        let [theta, p, n, s] = $state;
+        let (r, w) = (&$unicycle.rider, &$unicycle.wheel);
+        $scene::Args {
+            R: $unicycle.radius,
+            g: $unicycle.g,
+            mu: r.mass,
+            z: r.height,
+            A: r.a,
+            B: r.b,
+            C: r.c,
+            L: r.l,
+            mu1: w.mass,
+            A1: w.a1,
+            B1: w.b1,
+            C1: w.c1,
+            theta,
+            p,
+            n,
+            s,
+        }
+    }};
+}
+
 impl Unicycle {
     /// A unicycle of wheel radius `radius` (m) under gravity `g` (m/s²).
     ///
@@ -218,26 +245,7 @@ impl Unicycle {
     /// p, n, s)$ (row $i$, column $j$: derivative of component $i$ with respect to component
     /// $j$ of the state), from generated code ([`motion_jacobian_scene`]).
     pub fn jacobian(&self, state: [f64; 4]) -> [[f64; 4]; 4] {
-        let [theta, p, n, s] = state;
-        let (r, w) = (&self.rider, &self.wheel);
-        let out = motion_jacobian_scene::eval(&motion_jacobian_scene::Args {
-            R: self.radius,
-            g: self.g,
-            mu: r.mass,
-            z: r.height,
-            A: r.a,
-            B: r.b,
-            C: r.c,
-            L: r.l,
-            mu1: w.mass,
-            A1: w.a1,
-            B1: w.b1,
-            C1: w.c1,
-            theta,
-            p,
-            n,
-            s,
-        });
+        let out = motion_jacobian_scene::eval(&motion_args!(motion_jacobian_scene, self, state));
         let d = motion_jacobian_scene::jacobian(&out);
         [[0.0, 1.0, 0.0, 0.0], d[0], d[1], d[2]]
     }
@@ -249,26 +257,7 @@ impl Unicycle {
 
     /// The generated motion outputs (accelerations, energy) in the state $(\theta, p, n, s)$.
     fn motion(&self, state: [f64; 4]) -> motion_scene::Out {
-        let [theta, p, n, s] = state;
-        let (r, w) = (&self.rider, &self.wheel);
-        motion_scene::eval(&motion_scene::Args {
-            R: self.radius,
-            g: self.g,
-            mu: r.mass,
-            z: r.height,
-            A: r.a,
-            B: r.b,
-            C: r.c,
-            L: r.l,
-            mu1: w.mass,
-            A1: w.a1,
-            B1: w.b1,
-            C1: w.c1,
-            theta,
-            p,
-            n,
-            s,
-        })
+        motion_scene::eval(&motion_args!(motion_scene, self, state))
     }
 
     fn steady(&self, theta: f64, s: f64, n: f64) -> steady_scene::Out {

@@ -105,6 +105,33 @@ fn characteristic(j: &[[f64; 4]; 4]) -> [f64; 4] {
     c
 }
 
+/// At each steady state (θ, s, n), the characteristic polynomial of the state Jacobian is
+/// λ⁴ + (stability member) λ² to 1e-12 of the Jacobian's largest entry squared.
+fn stability_member_is_the_characteristic_polynomial(
+    model: &str,
+    member_name: &str,
+    states: &[(f64, f64, f64)],
+    jacobian: impl Fn(f64, f64, f64) -> [[f64; 4]; 4],
+    member: impl Fn(f64, f64, f64) -> f64,
+) {
+    let mut worst: f64 = 0.0;
+    for &(theta, s, n) in states {
+        let j = jacobian(theta, s, n);
+        let c = characteristic(&j);
+        let k = member(theta, s, n);
+        let scale = j.iter().flatten().fold(1.0f64, |m, v| m.max(v.abs())).powi(2);
+        let errs = [c[0], c[1] - k, c[2], c[3]].map(|e| e.abs() / scale);
+        worst = errs.iter().fold(worst, |m, e| m.max(*e));
+        assert!(
+            errs.iter().all(|e| *e <= 1e-12),
+            "{model}: theta {theta}, s {s}, n {n}: characteristic {c:?}, {member_name} = {k}"
+        );
+    }
+    eprintln!(
+        "{model}: characteristic polynomial vs lambda^4 + {member_name} lambda^2: {worst:.2e}"
+    );
+}
+
 fn hoop() -> Hoop {
     Hoop::new(0.5, 2.0, 9.81).expect("hoop")
 }
@@ -171,20 +198,9 @@ fn the_hoops_linearisation_about_steady_states_has_the_symbolic_stability_member
         states.push((theta, s * nu, n1));
         states.push((theta, s * nu, n2));
     }
-    let mut worst: f64 = 0.0;
-    for (theta, s, n) in states {
-        let j = h.jacobian_pns([theta, 0.0, n, s]);
-        let c = characteristic(&j);
-        let stab = h.stability(theta, s, n);
-        let scale = j.iter().flatten().fold(1.0f64, |m, v| m.max(v.abs())).powi(2);
-        let errs = [c[0], c[1] - stab, c[2], c[3]].map(|e| e.abs() / scale);
-        worst = errs.iter().fold(worst, |m, e| m.max(*e));
-        assert!(
-            errs.iter().all(|e| *e <= 1e-12),
-            "theta {theta}, s {s}, n {n}: characteristic {c:?}, S = {stab}"
-        );
-    }
-    eprintln!("hoop: characteristic polynomial vs lambda^4 + S lambda^2: {worst:.2e}");
+    let jacobian = |theta, s, n| h.jacobian_pns([theta, 0.0, n, s]);
+    let member = |theta, s, n| h.stability(theta, s, n);
+    stability_member_is_the_characteristic_polynomial("hoop", "S", &states, jacobian, member);
 }
 
 fn unicycle(l: f64) -> Unicycle {
@@ -273,20 +289,9 @@ fn the_unicycles_linearisation_about_steady_states_has_the_symbolic_stability_me
         assert!(u.equilibrium(theta, s, n).abs() <= 1e-9 * e0.abs().max(1.0), "(E) affine in s");
         states.push((theta, s, n));
     }
-    let mut worst: f64 = 0.0;
-    for (theta, s, n) in states {
-        let j = u.jacobian([theta, 0.0, n, s]);
-        let c = characteristic(&j);
-        let k = u.stability(theta, s, n);
-        let scale = j.iter().flatten().fold(1.0f64, |m, v| m.max(v.abs())).powi(2);
-        let errs = [c[0], c[1] - k, c[2], c[3]].map(|e| e.abs() / scale);
-        worst = errs.iter().fold(worst, |m, e| m.max(*e));
-        assert!(
-            errs.iter().all(|e| *e <= 1e-12),
-            "theta {theta}, s {s}, n {n}: characteristic {c:?}, K = {k}"
-        );
-    }
-    eprintln!("unicycle: characteristic polynomial vs lambda^4 + K lambda^2: {worst:.2e}");
+    let jacobian = |theta, s, n| u.jacobian([theta, 0.0, n, s]);
+    let member = |theta, s, n| u.stability(theta, s, n);
+    stability_member_is_the_characteristic_polynomial("unicycle", "K", &states, jacobian, member);
 }
 
 fn rider() -> LeanRider {
