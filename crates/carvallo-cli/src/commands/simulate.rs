@@ -50,8 +50,7 @@ use std::sync::atomic::{AtomicBool, AtomicUsize, Ordering};
 
 use carvallo::numerics::integrate::{Grid, Integration, Method};
 use carvallo::whipple_nonlinear::{
-    NonlinearError, Stop, WhippleNonlinear, DEFAULT_FALL_ANGLE, DEFAULT_STEER_LOCK, PIVOTS,
-    SINGULAR_PIVOT,
+    NonlinearError, Stop, WhippleNonlinear, DEFAULT_FALL_ANGLE, DEFAULT_STEER_LOCK, SINGULAR_PIVOT,
 };
 use serde_json::json;
 
@@ -399,21 +398,6 @@ pub(crate) fn reached(
     (fall, lock, singular.map(|t| (t, last)))
 }
 
-/// The line of a run that ended near a singular configuration at time `t` and the
-/// configuration `[lean, pitch, steer]`: which pivot of the constraint solve fell, and what
-/// the bicycle does there.
-pub(crate) fn singular_line(bike: &WhippleNonlinear, t: f64, at: [f64; 3]) -> String {
-    let [lean, pitch, steer] = at;
-    let ratios = bike.pivot_ratios(lean, pitch, steer);
-    let k = (0..3).min_by(|&a, &b| ratios[a].total_cmp(&ratios[b])).unwrap_or(1);
-    let (name, where_) = PIVOTS[k];
-    format!(
-        "singular at t = {t} s: {where_} (lean {lean} rad, steer {steer} rad), the {name}'s \
-         pivot at {SINGULAR_PIVOT} of its upright value; the equations are singular where it \
-         vanishes"
-    )
-}
-
 /// How a run of the bicycle ended: its status (`completed`, `stopped`, `fell`, `steer lock`,
 /// `singular`, `interrupted`) and the line that says so (`fell at t = 2.34 s: the lean reached
 /// ...`), from the stop condition met (its text and time), the limits reached
@@ -427,7 +411,7 @@ pub(crate) fn ending(
 ) -> (&'static str, String) {
     let (fall, lock, singular) = limits;
     if let Some((t, at)) = singular {
-        ("singular", singular_line(bike, t, at))
+        ("singular", bike.singular_line(t, at[0], at[1], at[2]))
     } else if let Some(t) = fall {
         let a = bike.fall_angle();
         ("fell", format!("fell at t = {t} s: the lean reached the fall angle ±{a} rad"))

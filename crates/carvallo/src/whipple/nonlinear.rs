@@ -706,6 +706,20 @@ impl WhippleNonlinear {
         StateRate::new(&self.params).pivot_ratios(lean, pitch, steer)
     }
 
+    /// The status line of a run that ended near the singular configuration at time `t` (s)
+    /// and (`lean`, `pitch`, `steer`) (rad): `singular at t = T s: ` what the bicycle does
+    /// where the smallest pivot vanishes ([`PIVOTS`]), the lean and steer, and which pivot.
+    pub fn singular_line(&self, t: f64, lean: f64, pitch: f64, steer: f64) -> String {
+        let ratios = self.pivot_ratios(lean, pitch, steer);
+        let k = (0..3).min_by(|&a, &b| ratios[a].total_cmp(&ratios[b])).unwrap_or(1);
+        let (name, where_) = PIVOTS[k];
+        format!(
+            "singular at t = {t} s: {where_} (lean {lean} rad, steer {steer} rad), the \
+             {name}'s pivot at {SINGULAR_PIVOT} of its upright value; the equations are \
+             singular where it vanishes"
+        )
+    }
+
     /// Checks that `start` is a physical start and returns its pitch: a lean inside the fall
     /// angle, a steer inside the steer lock and a pitch that puts the front wheel on the
     /// ground (Newton from 0). Every method of [`simulate_with`](Self::simulate_with) makes
