@@ -39,11 +39,16 @@
 //! A fall is a result: the run ends when the lean's magnitude reaches `--fall-angle` (1.2 rad
 //! by default, [`carvallo::whipple_nonlinear::DEFAULT_FALL_ANGLE`]), located on the
 //! interpolant like a stop condition; the text says `fell at t = T s: ...` and the JSON has
-//! `status` (`completed`, `stopped`, `fell`, `steer lock` or `interrupted`), `status_line`,
-//! `fall_angle`, `fall_t`, `steer_lock`, `steer_lock_t` and `interrupted`. The steer reaching
-//! `--steer-lock` (1.4 rad by default: the handlebar against the frame, short of the equations'
-//! singularity at ±π/2, which a slow fall turns the fork into) ends the run the same way. Ctrl-C ends the run within a step: the samples so far and the
-//! line `interrupted at t = T s`, exit code 0 (as an interrupted sweep).
+//! `status` (`completed`, `stopped`, `fell`, `steer lock`, `singular` or `interrupted`),
+//! `status_line`, `fall_angle`, `fall_t`, `steer_lock`, `steer_lock_t`, `singular_pivot`,
+//! `singular_t` and `interrupted`. The steer reaching `--steer-lock` (1.4 rad by default: the
+//! handlebar against the frame, short of the equations' singularity at ±π/2, which a slow fall
+//! turns the fork into) ends the run the same way, and so does the neighbourhood of the
+//! equations' singular configuration, status `singular` (a pivot of the constraint solve at
+//! 1 % of its upright value: the front wheel broadside to the line of contacts, which a leaning
+//! bicycle meets inside the steer lock; [`carvallo::whipple_nonlinear::SINGULAR_PIVOT`]); a
+//! batch counts those runs as `singular`. Ctrl-C ends the run within a step: the samples so
+//! far and the line `interrupted at t = T s`, exit code 0 (as an interrupted sweep).
 
 use std::io::IsTerminal;
 use std::sync::atomic::{AtomicBool, AtomicUsize, Ordering};
