@@ -749,7 +749,7 @@ impl WhippleNonlinear {
             ))
         })?;
         let margin = StateRate::new(&self.params).pivot_margin(start.lean, pitch, start.steer);
-        if !(margin > SINGULAR_PIVOT) {
+        if margin.is_nan() || margin <= SINGULAR_PIVOT {
             return Err(invalid((
                 "steer",
                 start.steer,
