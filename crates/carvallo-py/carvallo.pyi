@@ -253,7 +253,10 @@ def simulate(
     ("fell at t = 1.94 s: ..."), fall_angle and fall_t (None unless it fell). The run ends too
     when |steer| reaches steer_lock (rad, in (0, pi/2); default 1.4, the handlebar against the
     frame, short of the equations' singularity at pi/2): status "steer lock", steer_lock and
-    steer_lock_t. A start at or
+    steer_lock_t; and when a pivot of the rolling constraints' solve falls to singular_pivot
+    (0.01) of its upright value, near the equations' singular configuration (the front wheel
+    broadside to the line of contacts, which a leaning bicycle meets inside the steer lock):
+    status "singular", singular_t. A start at or
     beyond fall_angle, or where no pitch puts the front wheel on the ground, raises
     ParameterError naming lean0, whatever the method. Ctrl-C raises KeyboardInterrupt within
     a step.
@@ -280,7 +283,8 @@ def simulate_many(
 ) -> dict[str, object]:
     """Many simulations in parallel (GIL released), keeping the ends: arrays t_end, lean, steer,
     yaw, x, y, lean_rate, steer_rate, event_t, fall_t (the lean reaching 1.2 rad; NaN when
-    not), steer_lock_t (the steer reaching 1.4 rad; NaN when not), stopped_by, fell, ok, rhs_evaluations and the list errors; each equals `simulate`'s end bit for bit, and a chunk of a batch (any slice,
+    not), steer_lock_t (the steer reaching 1.4 rad; NaN when not), singular_t (near the
+    equations' singular configuration; NaN when not), stopped_by, fell, ok, rhs_evaluations and the list errors; each equals `simulate`'s end bit for bit, and a chunk of a batch (any slice,
     any memory layout) gives the batch's rows for it bit for bit, so chunks can run on Dask
     workers (docs/examples/basin_dask.py)."""
 

@@ -1027,8 +1027,9 @@ fn sweep<'py>(
 /// `max_contact_residual`, the `method`, `rtol` and `atol` (None for rk4), the counts
 /// `rhs_evaluations`, `steps`, `rejected_steps` and `events` (a list of dicts `when`, `t`),
 /// and how the run ended ([`set_status`]): the run ends, fallen, when the lean's magnitude
-/// reaches `fall_angle` (default 1.2 rad; a start at or beyond it is refused), or when the
-/// steer's reaches `steer_lock` (default 1.4 rad, the handlebar against the frame). Ctrl-C raises
+/// reaches `fall_angle` (default 1.2 rad; a start at or beyond it is refused), when the
+/// steer's reaches `steer_lock` (default 1.4 rad, the handlebar against the frame), or, status
+/// `singular`, near the equations' singular configuration (`singular_t`). Ctrl-C raises
 /// `KeyboardInterrupt` within a step.
 ///
 /// Driven (as `simulate --torque ... --gain ...`): `torque_t` with `torque_roll` and/or
@@ -1150,24 +1151,29 @@ fn simulate<'py>(
     d.set_item("max_contact_residual", tr.max_contact_residual)?;
     let event = tr.event.map(|(k, t)| (stops[k].text(), t));
     let end = tr.times.last().copied().unwrap_or(0.0);
-    set_status(&d, &bike, event.as_ref(), (tr.fall, tr.steer_lock), end)?;
+    let last = tr.samples.last().map_or([f64::NAN; 3], |p| [p.state.lean, p.pitch, p.state.steer]);
+    let singular = tr.singular.map(|t| (t, last));
+    set_status(&d, &bike, event.as_ref(), (tr.fall, tr.steer_lock, singular), end)?;
     set_run(&d, &how, &tr.stats, event)?;
     Ok(d)
 }
 
 /// How a run of `simulate` ended: `status` (`"completed"`, `"stopped"` by a condition of
 /// `stop_when`, `"fell"`: the lean reached `fall_angle`, `"steer lock"`: the steer reached
-/// `steer_lock`), `status_line` (`"fell at t = 1.94 s: ..."`), `fall_angle`, `fall_t`,
-/// `steer_lock` and `steer_lock_t` (None unless reached). An interrupted run raises
-/// `KeyboardInterrupt` instead.
+/// `steer_lock`, `"singular"`: a pivot of the constraint solve fell to `singular_pivot` of its
+/// upright value, the equations near their singularity), `status_line` (`"fell at t = 1.94 s:
+/// ..."`), `fall_angle`, `fall_t`, `steer_lock`, `steer_lock_t`, `singular_pivot` and
+/// `singular_t` (None unless reached). An interrupted run raises `KeyboardInterrupt` instead.
 fn set_status(
     d: &Bound<'_, PyDict>,
     bike: &WhippleNonlinear,
     event: Option<&(String, f64)>,
-    (fall, lock): (Option<f64>, Option<f64>),
+    (fall, lock, singular): (Option<f64>, Option<f64>, Option<(f64, [f64; 3])>),
     end: f64,
 ) -> PyResult<()> {
-    let (status, line) = if let Some(t) = fall {
+    let (status, line) = if let Some((t, [lean, pitch, steer])) = singular {
+        ("singular", bike.singular_line(t, lean, pitch, steer))
+    } else if let Some(t) = fall {
         (
             "fell",
             format!(
@@ -1193,7 +1199,9 @@ fn set_status(
     d.set_item("fall_angle", bike.fall_angle())?;
     d.set_item("fall_t", fall)?;
     d.set_item("steer_lock", bike.steer_lock())?;
-    d.set_item("steer_lock_t", lock)
+    d.set_item("steer_lock_t", lock)?;
+    d.set_item("singular_pivot", carvallo::whipple_nonlinear::SINGULAR_PIVOT)?;
+    d.set_item("singular_t", singular.map(|(t, _)| t))
 }
 
 /// The inputs of `simulate`: the sampled torques (`torque_t` with `torque_roll` and/or
@@ -1277,7 +1285,12 @@ fn simulate_driven<'py>(
     d.set_item("max_contact_residual", diag.max_contact_residual)?;
     let event = tr.event.map(|(k, t)| (stops[k].text(), t));
     let end = tr.times.last().copied().unwrap_or(0.0);
-    set_status(&d, bike, event.as_ref(), (tr.fall, tr.steer_lock), end)?;
+    let last = tr
+        .samples
+        .last()
+        .map_or([f64::NAN; 3], |p| [p.sample.state.lean, p.sample.pitch, p.sample.state.steer]);
+    let singular = tr.singular.map(|t| (t, last));
+    set_status(&d, bike, event.as_ref(), (tr.fall, tr.steer_lock, singular), end)?;
     set_run(&d, how, &tr.stats, event)?;
     Ok(d)
 }
@@ -1307,6 +1320,8 @@ fn column_of(x: &Bound<'_, PyAny>, what: &str) -> PyResult<Vec<f64>> {
 /// `steer_rate` (NaN for a failed run), `event_t` (NaN when no stop condition was met),
 /// `fall_t` (when the lean reached the fall angle, 1.2 rad; NaN when it did not),
 /// `steer_lock_t` (when the steer reached the steer lock, 1.4 rad; NaN when it did not),
+/// `singular_t` (when a pivot of the constraint solve fell to 1% of its upright value, the
+/// equations near their singularity; NaN when none did),
 /// `stopped_by` (the index of the condition met, -1 for none), `fell` (the fall angle or the
 /// steer lock reached, a condition met or the contact lost), `ok`, `rhs_evaluations`, and `errors` (a list, None for a run that did not
 /// fail). Each run equals `simulate`'s bit for bit, and a chunk (any slice of the batch, read
@@ -1334,12 +1349,12 @@ fn simulate_many<'py>(
     let speeds = column_of(speeds, "speeds")?;
     let lean0s = column_of(lean0s, "lean0s")?;
     let n = speeds.len();
-    // The starts, the ends and fourteen columns.
+    // The starts, the ends and fifteen columns.
     let each = std::mem::size_of::<carvallo::whipple_nonlinear::State>()
         + std::mem::size_of::<
             Result<carvallo::whipple_nonlinear::Final, carvallo::whipple_nonlinear::NonlinearError>,
         >()
-        + 14 * 8;
+        + 15 * 8;
     within(&format!("{n} speeds"), n as f64, each as f64)?;
     if lean0s.len() != n {
         return Err(err(format!("lean0s has {} values for {n} speeds", lean0s.len())));
@@ -1380,7 +1395,7 @@ fn simulate_many<'py>(
     })?;
     let d = PyDict::new(py);
     type Column = fn(&carvallo::whipple_nonlinear::Final) -> f64;
-    let columns: [(&str, Column); 11] = [
+    let columns: [(&str, Column); 12] = [
         ("t_end", |f| f.t),
         ("lean", |f| f.state.lean),
         ("steer", |f| f.state.steer),
@@ -1392,6 +1407,7 @@ fn simulate_many<'py>(
         ("event_t", |f| f.event.map_or(f64::NAN, |e| e.1)),
         ("fall_t", |f| f.fall.unwrap_or(f64::NAN)),
         ("steer_lock_t", |f| f.steer_lock.unwrap_or(f64::NAN)),
+        ("singular_t", |f| f.singular.unwrap_or(f64::NAN)),
     ];
     for (name, f) in columns {
         let v: Vec<f64> = ends.iter().map(|e| e.as_ref().map_or(f64::NAN, f)).collect();

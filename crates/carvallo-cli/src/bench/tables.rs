@@ -1183,9 +1183,9 @@ fn lean_rider_rows(mt: f64, rows: &mut Vec<Row>) {
 /// alone on [`StateRate::eval`] (no events, no observer) is timed twice, as it is and with every
 /// evaluation done twice: the difference is the evaluations' time in place (same steps, same
 /// caches), so the work beyond them is $2T_1 - T_2$ whatever the machine's load does to the
-/// right-hand side's own row; per attempted step. [`WhippleNonlinear::simulate_final`] (two
-/// events, the fall and the steer lock, and at every accepted step the energy and the contact
-/// residual) adds its time beyond `integrate`'s. Each time is the least of four timings (at
+/// right-hand side's own row; per attempted step. [`WhippleNonlinear::simulate_final`] (three
+/// events, the fall, the steer lock and the singular configuration, and at every accepted step
+/// the energy and the contact residual) adds its time beyond `integrate`'s. Each time is the least of four timings (at
 /// `--quick`, twenty runs of about a millisecond).
 fn integrator_overhead_rows(mt: f64, wn: &WhippleNonlinear, f: &StateRate, rows: &mut Vec<Row>) {
     let Ok(start) = wn.initial_state(4.6, 0.05) else { return };
@@ -1273,8 +1273,9 @@ fn integrator_overhead_rows(mt: f64, wn: &WhippleNonlinear, f: &StateRate, rows:
 
 /// A basin map by [`WhippleNonlinear::simulate_many`]: the benchmark bicycle from a 16 x 16
 /// grid of starts — speeds 1 to 7 m/s, initial leans -0.3 to 0.3 rad, every other rate zero
-/// but the rear wheel's — for 5 s at DOPRI5's default tolerances (rtol $10^{-8}$), the fall and
-/// the steer lock ending a run, only the ends kept (as `simulate --batch`). Simulations per
+/// but the rear wheel's — for 5 s at DOPRI5's default tolerances (rtol $10^{-8}$), the fall,
+/// the steer lock and the singular configuration ending a run, only the ends kept (as
+/// `simulate --batch`). Simulations per
 /// second, and per core (over rayon's threads); the row's `ns` is the wall time per
 /// simulation on all of them.
 fn basin_row(rows: &mut Vec<Row>) {
@@ -1296,6 +1297,8 @@ fn basin_row(rows: &mut Vec<Row>) {
     let ends = wn.simulate_many(&starts, &grid, &how, &[], &done);
     let elapsed = clock.elapsed().as_secs_f64();
     let fell = ends.iter().filter(|e| matches!(e, Ok(f) if f.fall.is_some())).count();
+    let lock = ends.iter().filter(|e| matches!(e, Ok(f) if f.steer_lock.is_some())).count();
+    let singular = ends.iter().filter(|e| matches!(e, Ok(f) if f.singular.is_some())).count();
     let failed = ends.iter().filter(|e| e.is_err()).count();
     let evaluations: usize = ends.iter().flatten().map(|f| f.stats.rhs_evaluations).sum();
     let threads = rayon::current_num_threads();
@@ -1309,7 +1312,8 @@ fn basin_row(rows: &mut Vec<Row>) {
         max_rel_err: None,
         note: format!(
             "speeds 1..7 m/s x leans -0.3..0.3 rad, 5 s, rtol {:.0e}: {:.3} s, {rate:.0} \
-             simulations/s on {threads} threads, {:.0} per core; {fell} fell, {failed} failed; \
+             simulations/s on {threads} threads, {:.0} per core; {fell} fell, {lock} at the steer \
+             lock, {singular} singular, {failed} failed; \
              {evaluations} evaluations ({:.0} ns each on all threads)",
             how.rtol,
             elapsed,

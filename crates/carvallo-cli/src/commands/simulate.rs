@@ -39,18 +39,23 @@
 //! A fall is a result: the run ends when the lean's magnitude reaches `--fall-angle` (1.2 rad
 //! by default, [`carvallo::whipple_nonlinear::DEFAULT_FALL_ANGLE`]), located on the
 //! interpolant like a stop condition; the text says `fell at t = T s: ...` and the JSON has
-//! `status` (`completed`, `stopped`, `fell`, `steer lock` or `interrupted`), `status_line`,
-//! `fall_angle`, `fall_t`, `steer_lock`, `steer_lock_t` and `interrupted`. The steer reaching
-//! `--steer-lock` (1.4 rad by default: the handlebar against the frame, short of the equations'
-//! singularity at ±π/2, which a slow fall turns the fork into) ends the run the same way. Ctrl-C ends the run within a step: the samples so far and the
-//! line `interrupted at t = T s`, exit code 0 (as an interrupted sweep).
+//! `status` (`completed`, `stopped`, `fell`, `steer lock`, `singular` or `interrupted`),
+//! `status_line`, `fall_angle`, `fall_t`, `steer_lock`, `steer_lock_t`, `singular_pivot`,
+//! `singular_t` and `interrupted`. The steer reaching `--steer-lock` (1.4 rad by default: the
+//! handlebar against the frame, short of the equations' singularity at ±π/2, which a slow fall
+//! turns the fork into) ends the run the same way, and so does the neighbourhood of the
+//! equations' singular configuration, status `singular` (a pivot of the constraint solve at
+//! 1 % of its upright value: the front wheel broadside to the line of contacts, which a leaning
+//! bicycle meets inside the steer lock; [`carvallo::whipple_nonlinear::SINGULAR_PIVOT`]); a
+//! batch counts those runs as `singular`. Ctrl-C ends the run within a step: the samples so
+//! far and the line `interrupted at t = T s`, exit code 0 (as an interrupted sweep).
 
 use std::io::IsTerminal;
 use std::sync::atomic::{AtomicBool, AtomicUsize, Ordering};
 
 use carvallo::numerics::integrate::{Grid, Integration, Method};
 use carvallo::whipple_nonlinear::{
-    NonlinearError, Stop, WhippleNonlinear, DEFAULT_FALL_ANGLE, DEFAULT_STEER_LOCK,
+    NonlinearError, Stop, WhippleNonlinear, DEFAULT_FALL_ANGLE, DEFAULT_STEER_LOCK, SINGULAR_PIVOT,
 };
 use serde_json::json;
 
@@ -238,6 +243,8 @@ fn batch(
         Err(NonlinearError::NoContact { .. }) => true,
         Err(_) => false,
     };
+    // Ended near a singular configuration of the equations (neither fell nor failed).
+    let singular = |e: &End| matches!(e, Ok(f) if f.singular.is_some());
     if csv {
         let mut s = String::from("row,speed,lean0,steer_rate0,status,fell,stopped_by,event_t,t_end,lean,steer,yaw,x,y,lean_rate,steer_rate,rhs_evaluations,steps,rejected_steps,energy_drift,max_contact_residual,error\n");
         for &(k, r, e) in &whole {
@@ -245,11 +252,12 @@ fn batch(
             match e {
                 Ok(f) => {
                     let st = f.state;
-                    let (by, te) = match (f.event, f.fall, f.steer_lock) {
-                        (Some((j, t)), _, _) => (stops[j].text(), format!("{t:?}")),
-                        (None, Some(t), _) => ("fall angle".to_string(), format!("{t:?}")),
-                        (None, None, Some(t)) => ("steer lock".to_string(), format!("{t:?}")),
-                        (None, None, None) => (String::new(), String::new()),
+                    let (by, te) = match (f.event, f.fall, f.steer_lock, f.singular) {
+                        (Some((j, t)), ..) => (stops[j].text(), format!("{t:?}")),
+                        (None, Some(t), ..) => ("fall angle".to_string(), format!("{t:?}")),
+                        (None, None, Some(t), _) => ("steer lock".to_string(), format!("{t:?}")),
+                        (None, None, None, Some(t)) => ("singular".to_string(), format!("{t:?}")),
+                        (None, None, None, None) => (String::new(), String::new()),
                     };
                     let values =
                         [f.t, st.lean, st.steer, st.yaw, st.x, st.y, st.lean_rate, st.steer_rate]
@@ -279,10 +287,11 @@ fn batch(
     }
     let failed = whole.iter().filter(|(_, _, e)| e.is_err()).count();
     let fallen = whole.iter().filter(|(_, _, e)| fell(e)).count();
+    let singular = whole.iter().filter(|(_, _, e)| singular(e)).count();
     let evaluations: usize =
         whole.iter().filter_map(|(_, _, e)| e.as_ref().ok()).map(|f| f.stats.rhs_evaluations).sum();
     let text = format!(
-        "{} simulations of {} s ({}{}) on {} threads in {elapsed:.3} s\n{fallen} fell (the fall angle or the steer lock reached, a stop condition met or the contact lost), {failed} failed, {evaluations} right-hand side evaluations\n",
+        "{} simulations of {} s ({}{}) on {} threads in {elapsed:.3} s\n{fallen} fell (the fall angle or the steer lock reached, a stop condition met or the contact lost), {singular} singular, {failed} failed, {evaluations} right-hand side evaluations\n",
         whole.len(),
         grid.end(),
         how.method.name(),
@@ -379,19 +388,36 @@ fn steer_lock(v: &str) -> Result<f64, String> {
     }
 }
 
+/// The model's limits a run reached: the times of the fall and of the steer lock, and of the
+/// singular configuration with the lean, pitch and steer there.
+pub(crate) type Reached = (Option<f64>, Option<f64>, Option<(f64, [f64; 3])>);
+
+/// The limits `end` of a run reached, with the configuration of its last state (lean, pitch,
+/// steer) for the singular one.
+pub(crate) fn reached(
+    fall: Option<f64>,
+    lock: Option<f64>,
+    singular: Option<f64>,
+    last: [f64; 3],
+) -> Reached {
+    (fall, lock, singular.map(|t| (t, last)))
+}
+
 /// How a run of the bicycle ended: its status (`completed`, `stopped`, `fell`, `steer lock`,
-/// `interrupted`) and the line that says so (`fell at t = 2.34 s: the lean reached ...`), from
-/// the stop condition met (its text and time), the times of the fall, of the steer lock and
-/// of the interruption, the bicycle (its limits) and the run's end.
+/// `singular`, `interrupted`) and the line that says so (`fell at t = 2.34 s: the lean reached
+/// ...`), from the stop condition met (its text and time), the limits reached
+/// ([`reached`]), the time of the interruption, the bicycle (its limits) and the run's end.
 pub(crate) fn ending(
     event: Option<&(String, f64)>,
-    limits: (Option<f64>, Option<f64>),
+    limits: Reached,
     interrupted: Option<f64>,
     bike: &WhippleNonlinear,
     end: f64,
 ) -> (&'static str, String) {
-    let (fall, lock) = limits;
-    if let Some(t) = fall {
+    let (fall, lock, singular) = limits;
+    if let Some((t, at)) = singular {
+        ("singular", bike.singular_line(t, at[0], at[1], at[2]))
+    } else if let Some(t) = fall {
         let a = bike.fall_angle();
         ("fell", format!("fell at t = {t} s: the lean reached the fall angle ±{a} rad"))
     } else if let Some(t) = lock {
@@ -409,17 +435,16 @@ pub(crate) fn ending(
     }
 }
 
-/// The JSON keys of the limits: `fall_angle`, `fall_t`, `steer_lock`, `steer_lock_t`.
-pub(crate) fn limits_json(
-    v: &mut serde_json::Value,
-    bike: &WhippleNonlinear,
-    fall: Option<f64>,
-    lock: Option<f64>,
-) {
+/// The JSON keys of the limits: `fall_angle`, `fall_t`, `steer_lock`, `steer_lock_t`,
+/// `singular_pivot` and `singular_t`.
+pub(crate) fn limits_json(v: &mut serde_json::Value, bike: &WhippleNonlinear, limits: Reached) {
+    let (fall, lock, singular) = limits;
     v["fall_angle"] = json!(bike.fall_angle());
     v["fall_t"] = json!(fall);
     v["steer_lock"] = json!(bike.steer_lock());
     v["steer_lock_t"] = json!(lock);
+    v["singular_pivot"] = json!(SINGULAR_PIVOT);
+    v["singular_t"] = json!(singular.map(|(t, _)| t));
 }
 
 /// The message of a start that [`WhippleNonlinear::check_start`] refuses, naming `--lean0`.
@@ -492,8 +517,9 @@ pub fn run(cmd: &Args) -> Result<String, String> {
     })?;
     let events: Vec<(String, f64)> = tr.event.iter().map(|&(k, t)| (stops[k].text(), t)).collect();
     let end = tr.times.last().copied().unwrap_or(0.0);
-    let (status, line) =
-        ending(events.first(), (tr.fall, tr.steer_lock), tr.interrupted, &bike, end);
+    let last = tr.samples.last().map_or([f64::NAN; 3], |p| [p.state.lean, p.pitch, p.state.steer]);
+    let limits = reached(tr.fall, tr.steer_lock, tr.singular, last);
+    let (status, line) = ending(events.first(), limits, tr.interrupted, &bike, end);
     if *json {
         let col = |f: &dyn Fn(&carvallo::whipple_nonlinear::Sample) -> f64| -> Vec<f64> {
             tr.samples.iter().map(f).collect()
@@ -528,7 +554,7 @@ pub fn run(cmd: &Args) -> Result<String, String> {
             "energy": col(&|s| s.energy),
         });
         let mut v = v;
-        limits_json(&mut v, &bike, tr.fall, tr.steer_lock);
+        limits_json(&mut v, &bike, limits);
         serde_json::to_string(&v).map_err(|e| e.to_string())
     } else {
         let integrator = if how.method.is_adaptive() {

@@ -302,13 +302,12 @@ pub fn run(
         .map_err(|e| e.to_string())?;
     let events: Vec<(String, f64)> = tr.event.iter().map(|&(k, t)| (stops[k].text(), t)).collect();
     let end = tr.times.last().copied().unwrap_or(0.0);
-    let (status, line) = super::simulate::ending(
-        events.first(),
-        (tr.fall, tr.steer_lock),
-        tr.interrupted,
-        bike,
-        end,
-    );
+    let last = tr
+        .samples
+        .last()
+        .map_or([f64::NAN; 3], |p| [p.sample.state.lean, p.sample.pitch, p.sample.state.steer]);
+    let limits = super::simulate::reached(tr.fall, tr.steer_lock, tr.singular, last);
+    let (status, line) = super::simulate::ending(events.first(), limits, tr.interrupted, bike, end);
     let d = tr.diagnostics;
     if json {
         let col =
@@ -349,7 +348,7 @@ pub fn run(
             "work_t": col(&|s| s.work),
         });
         let mut v = v;
-        super::simulate::limits_json(&mut v, bike, tr.fall, tr.steer_lock);
+        super::simulate::limits_json(&mut v, bike, limits);
         return serde_json::to_string(&v).map_err(|e| e.to_string());
     }
     let integrator = if how.method.is_adaptive() {

@@ -553,7 +553,7 @@ pub fn integrate_with_jacobian<'e, const N: usize, E: Clone>(
 }
 
 /// The most event functions of one run.
-pub const MAX_EVENTS: usize = 10;
+pub const MAX_EVENTS: usize = 11;
 
 /// The signs of the event functions since the start (the last nonzero value of each).
 struct Watch {

@@ -64,6 +64,10 @@ pub struct Trajectory<S, D = ()> {
     /// lock: [`WhippleNonlinear::steer_lock`](crate::whipple::nonlinear::WhippleNonlinear::steer_lock)),
     /// the time of the last sample; `None` otherwise.
     pub steer_lock: Option<f64>,
+    /// When the model reached the neighbourhood of a configuration where its equations are
+    /// singular (the nonlinear bicycle's pivots: [`SINGULAR_PIVOT`](crate::whipple::nonlinear::SINGULAR_PIVOT)),
+    /// the time of the last sample; `None` otherwise.
+    pub singular: Option<f64>,
     /// When a stop flag ended the run early (Ctrl-C), the time it reached (its last accepted
     /// step; the samples are those of the grid up to it); `None` otherwise.
     pub interrupted: Option<f64>,
@@ -81,6 +85,7 @@ impl<S, D> Trajectory<S, D> {
             event: None,
             fall: None,
             steer_lock: None,
+            singular: None,
             interrupted: None,
         }
     }

@@ -74,7 +74,7 @@ use nalgebra::{Matrix3, Vector3};
 
 use super::rate::{self, StateRate};
 use super::{
-    check_run, dynamics_scene, Configuration, NonlinearError, Sample, State, Stop, Watched,
+    check_run, dynamics_scene, Configuration, NonlinearError, Sample, State, Stop, Watch,
     WhippleNonlinear,
 };
 use crate::numerics::integrate::{self, Grid, Integration, Point, Stats};
@@ -576,7 +576,6 @@ impl WhippleNonlinear {
         let run = Run {
             bike: self,
             inputs,
-            stops,
             how,
             grid,
             e0,
@@ -584,7 +583,7 @@ impl WhippleNonlinear {
             mid: Cell::new(0.0),
             diagnostics: Cell::new(ForcedDiagnostics::default()),
             stats: Cell::new(Stats::default()),
-            limits: self.limits(),
+            watches: self.watches(stops),
             stop,
         };
         let mut y = y_of(&start, pitch0, 0.0);
@@ -598,7 +597,8 @@ impl WhippleNonlinear {
                 if let Some((index, t)) = crossed {
                     match index.checked_sub(stops.len()) {
                         Some(0) => trajectory.fall = Some(t),
-                        Some(_) => trajectory.steer_lock = Some(t),
+                        Some(1) => trajectory.steer_lock = Some(t),
+                        Some(_) => trajectory.singular = Some(t),
                         None => event = crossed,
                     }
                     break;
@@ -629,7 +629,6 @@ type SegmentEnd = (Y, Option<(usize, f64)>, Option<f64>);
 struct Run<'a> {
     bike: &'a WhippleNonlinear,
     inputs: &'a Inputs,
-    stops: &'a [Stop],
     how: &'a Integration,
     grid: &'a Grid,
     e0: f64,
@@ -639,8 +638,8 @@ struct Run<'a> {
     mid: Cell<f64>,
     diagnostics: Cell<ForcedDiagnostics>,
     stats: Cell<Stats>,
-    /// The fall and the steer lock (the events after the stops).
-    limits: [Stop; 2],
+    /// The events: the stops, then the fall, the steer lock and the singular configuration.
+    watches: [Option<Watch>; integrate::MAX_EVENTS],
     /// The flag that ends the run early.
     stop: &'a AtomicBool,
 }
@@ -727,8 +726,8 @@ impl Run<'_> {
     /// Integrates `y0` over the grid points `k0..=k1` of the run's grid, keeping its samples
     /// there (the one at `k1` only at the grid's end: otherwise the run is split there and
     /// the sample is the state after the split). Returns the end state, the event, if any (the
-    /// fall's index is the number of stop conditions, the steer lock's the next), and the time
-    /// the stop flag ended it.
+    /// fall's index is the number of stop conditions, the steer lock's and the singular
+    /// configuration's the next two), and the time the stop flag ended it.
     fn segment(
         &self,
         k0: usize,
@@ -745,25 +744,9 @@ impl Run<'_> {
         let offset = grid.time(k0);
         self.mid.set((grid.time(k0) + grid.time(k1)) / 2.0);
         let mut rhs = |t: f64, y: &Y| -> Result<Y, NonlinearError> { self.rhs(offset + t, y) };
-        let mut watchers: [_; integrate::MAX_EVENTS] = std::array::from_fn(|j| {
-            let stop = match j.checked_sub(self.stops.len()) {
-                Some(k) => self.limits.get(k).copied(),
-                None => self.stops.get(j).copied(),
-            };
+        let mut watchers = self.watches.map(|watch| {
             move |y: &Y| -> Result<f64, NonlinearError> {
-                let Some(stop) = stop else { return Ok(f64::NAN) };
-                let s = state_of(y);
-                let v = match stop.quantity {
-                    Watched::Lean => s.lean,
-                    Watched::Steer => s.steer,
-                    Watched::Yaw => s.yaw,
-                    Watched::Pitch => self.f.project(s.lean, y[rate::PITCH], s.steer)?,
-                    Watched::LeanRate => s.lean_rate,
-                    Watched::SteerRate => s.steer_rate,
-                    Watched::X => s.x,
-                    Watched::Y => s.y,
-                };
-                Ok(if stop.magnitude { v.abs() - stop.value } else { v - stop.value })
+                watch.map_or(Ok(f64::NAN), |w| w.value(&self.f, y))
             }
         });
         let mut events: [&mut integrate::EventFn<'_, 12, NonlinearError>; integrate::MAX_EVENTS] =
@@ -794,7 +777,7 @@ impl Run<'_> {
             &local,
             y0,
             &mut rhs,
-            &mut events[..self.stops.len() + self.limits.len()],
+            &mut events[..self.watches.iter().flatten().count()],
             &mut observe,
             self.stop,
         )?;

@@ -82,6 +82,19 @@ crate::scene! {
     }
 }
 
+crate::scene! {
+    /// The pivots of the front contact's constraint rows, solved one after the other for the
+    /// dependent speeds: the pitch rate's coefficient in the vertical row (`b1_thetad`, the
+    /// contact height's pitch derivative up to sign), the yaw rate's in the row along the
+    /// axle's horizontal projection (`b2_psid`, $n_F$ times the line of contacts' component
+    /// along the front wheel's heading) and the front wheel rate's in the row across it
+    /// (`b3_thetaFd`). The equations are singular where one of them vanishes.
+    pub mod pivot_scene {
+        model: whipple_nonlinear,
+        outputs: [b1_thetad, b2_psid, b3_thetaFd],
+    }
+}
+
 /// Number of components of the state a [`StateRate`] differentiates: the ten of [`State`]
 /// (its `to_array` order), then the pitch.
 pub const LEN: usize = 11;
@@ -141,6 +154,11 @@ pub struct StateRate {
     project_jac_slots: [usize; 6],
     rate_jac: [f64; state_rate_jacobian_scene::Args::LEN],
     rate_jac_slots: [usize; 6],
+    pivot: [f64; pivot_scene::Args::LEN],
+    pivot_slots: [usize; 6],
+    /// The pivots upright (lean and steer zero, the pitch on the constraint), NaN when no
+    /// pitch puts the front wheel on the ground there.
+    pivot_upright: [f64; 3],
 }
 
 /// The state Jacobian $\partial \dot y/\partial y$ of a [`StateRate`]: row `i`, column `j` is
@@ -182,7 +200,45 @@ impl StateRate {
                 state_rate_jacobian_scene::PARAMS,
                 state_rate_jacobian_scene::INPUTS,
             ),
+            pivot: filled(params, pivot_scene::PARAMS),
+            pivot_slots: input_slots(pivot_scene::PARAMS, pivot_scene::INPUTS),
+            pivot_upright: [f64::NAN; 3],
         }
+        .with_upright_pivots()
+    }
+
+    fn with_upright_pivots(self) -> StateRate {
+        let pivot_upright = match self.project(0.0, 0.0, 0.0) {
+            Ok(pitch) => self.pivots(0.0, pitch, 0.0),
+            Err(_) => [f64::NAN; 3],
+        };
+        StateRate { pivot_upright, ..self }
+    }
+
+    /// The pivots of the constraint solve at (`lean`, `pitch`, `steer`): the coefficients of
+    /// the pitch rate, the yaw rate and the front wheel rate in the front contact's three
+    /// rows ([`pivot_scene`]; m/rad). The dependent speeds are the rows' other terms divided
+    /// by them.
+    pub fn pivots(&self, lean: f64, pitch: f64, steer: f64) -> [f64; 3] {
+        let a = fill(self.pivot, &self.pivot_slots, [lean, pitch, steer]);
+        pivot_scene::eval_array(&a)
+    }
+
+    /// The [`pivots`](Self::pivots) relative to their upright values (lean and steer zero,
+    /// the pitch on the constraint): 1 upright, 0 where the equations are singular
+    /// ([`super::SINGULAR_PIVOT`]).
+    pub fn pivot_ratios(&self, lean: f64, pitch: f64, steer: f64) -> [f64; 3] {
+        let p = self.pivots(lean, pitch, steer);
+        std::array::from_fn(|k| p[k] / self.pivot_upright[k])
+    }
+
+    /// The smallest of the [`pivot_ratios`](Self::pivot_ratios) (NaN when one is NaN).
+    pub fn pivot_margin(&self, lean: f64, pitch: f64, steer: f64) -> f64 {
+        let r = self.pivot_ratios(lean, pitch, steer);
+        if r.iter().any(|v| v.is_nan()) {
+            return f64::NAN;
+        }
+        r[0].min(r[1]).min(r[2])
     }
 
     /// The contact constraint $h$ (m) and $\partial h/\partial\theta$ (m/rad).

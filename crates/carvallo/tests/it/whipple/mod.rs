@@ -3,7 +3,8 @@
 //! windows and sweeps ([`stability`]), the uncertainty bands ([`uncertainty`]) and the
 //! nonlinear equations against the linearisation ([`nonlinear`]) and against Basu-Mandal et
 //! al.'s circular motion ([`basu_mandal`]), and the steady turns of the nonlinear model against
-//! the linear static solution, simulations and Carvallo's own bicycle ([`steady_turn`]).
+//! the linear static solution, simulations and Carvallo's own bicycle ([`steady_turn`]), and
+//! the nonlinear model's singular configuration as the end of a run ([`singular`]).
 
 mod basu_mandal;
 mod bicycleparameters;
@@ -13,6 +14,7 @@ mod lean_rider;
 mod nonlinear;
 mod params;
 mod reader_fuzz;
+mod singular;
 mod stability;
 mod state_rate;
 mod steady_turn;
