@@ -134,7 +134,8 @@ fn engine_whipple_mass_matrix_and_forcing_within_todays_operations() {
         let (d, kane_len, _) = engine::derivation(&model, file!()).expect("derives");
         let kane_only =
             carvallo_codegen::Derivation { formulas: d.formulas[..kane_len].to_vec(), ..d.clone() };
-        let (prog, _) = carvallo_codegen::emit::choose(&kane_only).expect("lowers");
+        let (prog, lowering) = carvallo_codegen::emit::choose(&kane_only).expect("lowers");
+        eprintln!("{}", lowering.join("\n"));
         let names: Vec<String> = prog
             .outputs
             .iter()
