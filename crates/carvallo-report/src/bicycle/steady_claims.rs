@@ -802,9 +802,10 @@ fn no_hands_claim(constants: Constants) -> Option<Claim> {
     // point, re-solved as a steady turn at its speed and lean (its steer torque must vanish).
     let family = branches.first().and_then(|&vb| hf.family(0.0, vb).ok());
     let seed = family.as_ref().and_then(|f| {
-        f.points.windows(2).find(|w| (w[0].lean - 0.1) * (w[1].lean - 0.1) <= 0.0).map(|w| {
-            [w[0].speed, 0.1, w[0].steer]
-        })
+        f.points
+            .windows(2)
+            .find(|w| (w[0].lean - 0.1) * (w[1].lean - 0.1) <= 0.0)
+            .map(|w| [w[0].speed, 0.1, w[0].steer])
     });
     let turn = seed.and_then(|z| hf.refine(z));
     let (v1, steer1) = turn.map_or((f64::NAN, f64::NAN), |(z, _)| (z[0], z[2]));

@@ -8,7 +8,7 @@
 use std::collections::BTreeMap;
 use std::f64::consts::PI;
 
-use crate::perturb::{unicycle_eval as eval, unicycle_out as out};
+use crate::perturb::{unicycle_eval as eval, unicycle_out as out, Perturbation, Target};
 use carvallo::hoop::Hoop;
 use carvallo::unicycle::variants::Pitch;
 use carvallo::unicycle::{Rider, Unicycle, Wheel};
@@ -549,7 +549,7 @@ fn steady_n_identity() -> Claim {
         "unicycle-steady-n-identity",
         "29",
         "In a steady state (s' = n' = p = p' = 0) the turning equation (n) reduces to an identity.",
-        "The generated (n) first member (rider + wheel, any L) at p = p' = n' = s' = 0 at 16 seeded states, relative to (A + B + C + B1) g/R.",
+        "The generated (n) first member (rider + wheel, any L) at p = p' = n' = s' = 0 at 16 seeded states, relative to (A + B + C + B1) g/R. Holds by construction because every term of the generated rider's and wheel's shares of (n) carries one of p, p', n', s' (no moment about the vertical acts on the model): each share vanishes by itself at rest of those rates, so no change of a coefficient or of a parameter in one share breaks the identity (the rider's mass scaled by 1 + 1e-2 in its share, tried, leaves it at 0); only a moment about the vertical that the model does not have (a pivoting friction) would",
         &[("points", 16.0), ("max_rel_n_first_member", worst)],
         policy::claim(worst <= 1e-12, Verdict::DerivationDiffers),
         "Every term of (n) carries p, p', n' or s' (with the wheel's too), so steady states are fixed by (p) alone, which is (E).",
@@ -578,7 +578,7 @@ fn equilibrium_hoop_form() -> Claim {
         "unicycle-equilibrium-hoop-form",
         "29",
         "The equilibrium equation (E) has the same form as the hoop's: (B - C) n^2 sin cos + mu R z s n cos + mu g z sin = 0.",
-        "The generated (E) of the full model (rider and wheel apart) at 16 seeded unicycles: its three coefficients read at theta = 0.5 and tested at 8 seeded (theta, s, n) each against a n^2 sin cos + b s n cos + c sin.",
+        "The generated (E) of the full model (rider and wheel apart) at 16 seeded unicycles: its three coefficients read at theta = 0.5 and tested at 8 seeded (theta, s, n) each against a n^2 sin cos + b s n cos + c sin. Holds by construction because every term the derivation gives (E) for a rider whose centre lies in the wheel's plane, with (E) free of the product of inertia L, is of one of the three forms: a change of a mass, height, moment or coefficient changes a, b, c but not the form; only a term of another form (a centre off the plane), which the generated program's parameters cannot express, would break it",
         &[("points", 128.0), ("max_rel_diff", worst)],
         policy::claim(worst <= 1e-9, Verdict::DerivationDiffers),
         "The form holds for the full model too, with a = B - C + B1 - C1, b = mu R z + B1, c = (mu z + mu1 R) g: the hoop's three terms.",
@@ -1894,21 +1894,70 @@ fn big_wheel_remark() -> Claim {
 const STABILITY_SCALED: crate::perturb::Perturbation = crate::perturb::Perturbation {
     model: "unicycle",
     output: "stability",
-    constant: 0,
+    target: crate::perturb::Target::Constant(0),
     factor: 1.0 + 1e-3,
 };
 /// The first constant of the generated (S) of n° 40 (`stability_n40`) scaled by 1 + 1e-3.
 const S40_SCALED: crate::perturb::Perturbation = crate::perturb::Perturbation {
     model: "unicycle",
     output: "stability_n40",
-    constant: 0,
+    target: crate::perturb::Target::Constant(0),
     factor: 1.0 + 1e-3,
 };
+
+/// Every use of the named argument in one output of the generated `unicycle` program scaled
+/// by `factor` (a model ingredient changed in that output only).
+const fn scaled(output: &'static str, argument: &'static str, factor: f64) -> Perturbation {
+    Perturbation { model: "unicycle", output, target: Target::Argument(argument), factor }
+}
+
+/// The rider's height z in the generated (E) of n° 29 scaled by 1 + 1e-2.
+const E_Z: Perturbation = scaled("equilibrium", "z", 1.0 + 1e-2);
+/// The rolling rate s in the generated (E) of n° 29 negated (its rolling terms turned against
+/// the lean).
+const E_S_FLIPPED: Perturbation = scaled("equilibrium", "s", -1.0);
+/// The rider's height z in the generated skid D of n° 30 scaled by 1 + 1e-2.
+const SKID_Z: Perturbation = scaled("skid", "z", 1.0 + 1e-2);
+/// The fall acceleration p' in the generated full skid D of n° 31 scaled by 1 - 1e-2.
+const SKID_FULL_DP: Perturbation = scaled("skid_full", "dp", 1.0 - 1e-2);
+/// The rider's height z in the generated normalised (E) of n° 32 scaled by 1 + 1e-2.
+const E32_Z: Perturbation = scaled("equilibrium_n32", "z", 1.0 + 1e-2);
+/// The rider's height z in the generated normalised D of n° 32 scaled by 1 + 1e-2.
+const SKID32_Z: Perturbation = scaled("skid_n32", "z", 1.0 + 1e-2);
+/// The rider's product of inertia L in the generated rider's share of the p equation (n° 33)
+/// scaled by 1 + 1e-2.
+const RIDER_P_L: Perturbation = scaled("rider_p", "L", 1.0 + 1e-2);
+/// The rider's height z in the generated constant term of n° 78's characteristic equation
+/// scaled by 1 + 1e-2.
+const CHAR78_C0_Z: Perturbation = scaled("char78_c0", "z", 1.0 + 1e-2);
 
 /// The memoir's claims of the unicycle, with the falsification of those that a perturbation
 /// of the generated `unicycle` program breaks ([`crate::perturb::falsify`]).
 pub fn claims() -> Vec<Claim> {
-    let table: [crate::perturb::Row; 2] = [
+    let table: [crate::perturb::Row; 10] = [
+        (&E_Z, || vec![straight_running_steady()], &["unicycle-straight-running-steady"]),
+        (&E_S_FLIPPED, || vec![turns_toward_lean()], &["unicycle-turns-toward-lean"]),
+        (&SKID_Z, || vec![skid_reduces_to_hoop()], &["unicycle-skid-reduces-to-hoop"]),
+        (
+            &SKID_FULL_DP,
+            || {
+                let (a, b) = abrupt_turn();
+                vec![a, b]
+            },
+            &["unicycle-abrupt-turn-pprime-larger"],
+        ),
+        (
+            &E32_Z,
+            || vec![regions(), light_root_n1()],
+            &["unicycle-walking-pivoting-regions", "unicycle-light-stable-root-n1"],
+        ),
+        (&SKID32_Z, || vec![skid_is_tan_on_e()], &["unicycle-skid-is-tan-on-e"]),
+        (&RIDER_P_L, || vec![l_terms_vanish()], &["unicycle-l-terms-vanish-at-steady"]),
+        (
+            &CHAR78_C0_Z,
+            || vec![threshold_independent(), product_is_36()],
+            &["unicycle-straight-threshold-independent", "unicycle-78-product-is-36"],
+        ),
         (&STABILITY_SCALED, || vec![stability_recipe()], &["unicycle-stability-recipe"]),
         (
             &S40_SCALED,
