@@ -39,8 +39,31 @@ const FD: f64 = 1e-6;
 /// The n° 36 example: a rider of 60 kg with its centre of gravity at h = 2.5 R on a hoop wheel
 /// of 5 kg and R = 0.5 m, C0 = 0.77 kg m², A = B = 100 kg m² (as the report's n° 36 entries).
 fn example(radius: f64, wheel_mass: f64, height: f64, c0: f64, l: f64) -> Option<Unicycle> {
+    example_spin(radius, wheel_mass, height, c0, l, HOOP_SPIN)
+}
+
+/// The hoop wheel's moment about its axle, B1 = 2 mu1 R^2, in the unit mu1 R^2.
+const HOOP_SPIN: f64 = 2.0;
+
+/// The wheel's moment about its axle B1 = mu1 R^2 only: its spin carries no moment of
+/// momentum beyond its rolling translation's (the perturbation of the claims that the wheel's
+/// spin stabilises).
+const FLAT_SPIN: f64 = 1.0;
+
+/// [`example`] with the wheel's moment about its axle `spin` mu1 R^2 ([`HOOP_SPIN`] for the
+/// hoop wheel, whose other moments it keeps).
+fn example_spin(
+    radius: f64,
+    wheel_mass: f64,
+    height: f64,
+    c0: f64,
+    l: f64,
+    spin: f64,
+) -> Option<Unicycle> {
     let rider = Rider { mass: 60.0, height, a: 100.0, b: 100.0, c: c0, l };
-    Unicycle::new(radius, 9.81, rider, Wheel::hoop(wheel_mass, radius)).ok()
+    let m = wheel_mass * radius * radius;
+    let wheel = Wheel { mass: wheel_mass, a1: 1.5 * m, b1: spin * m, c1: 0.5 * m };
+    Unicycle::new(radius, 9.81, rider, wheel).ok()
 }
 
 /// The full unicycle at a seeded point `base` (its R, g, rider mu, z, A, B, C and a hoop wheel
@@ -1081,13 +1104,19 @@ fn light_rider_hoop() -> Claim {
 }
 
 fn light_wheel() -> Claim {
+    light_wheel_check(HOOP_SPIN)
+}
+
+/// The check of [`light_wheel`] with the wheel's moment about its axle `spin` mu1 R^2.
+fn light_wheel_check(spin: f64) -> Claim {
     let masses = [5.0, 0.5, 0.05, 0.005];
     let s2: Vec<f64> = masses
         .iter()
-        .map(|&m| threshold_units(&example(0.5, m, 1.25, 0.77, 0.0)).powi(2))
+        .map(|&m| threshold_units(&example_spin(0.5, m, 1.25, 0.77, 0.0, spin)).powi(2))
         .collect();
     let scaled: Vec<f64> = s2.iter().zip(masses).map(|(s, m)| s * m).collect();
-    let none = example(0.5, 0.0, 1.25, 0.77, 0.0).and_then(|u| u.straight_running_threshold());
+    let none =
+        example_spin(0.5, 0.0, 1.25, 0.77, 0.0, spin).and_then(|u| u.straight_running_threshold());
     let holds = none.is_none()
         && s2.windows(2).all(|w| w[1] > 5.0 * w[0])
         && rel_diff(scaled[3], scaled[2]) < 2e-2;
@@ -1103,9 +1132,14 @@ fn light_wheel() -> Claim {
 }
 
 fn stability_decreases() -> Claim {
+    stability_decreases_check(HOOP_SPIN)
+}
+
+/// The check of [`stability_decreases`] with the wheel's moment about its axle `spin` mu1 R^2.
+fn stability_decreases_check(spin: f64) -> Claim {
     let mut speeds = Vec::new();
     for m in [50.0, 20.0, 10.0, 5.0, 2.0, 1.0, 0.5] {
-        speeds.push(threshold_speed(&example(0.5, m, 1.25, 0.77, 0.0)));
+        speeds.push(threshold_speed(&example_spin(0.5, m, 1.25, 0.77, 0.0, spin)));
     }
     let monotone = speeds.windows(2).all(|w| w[1] > w[0]);
     Claim::new(
@@ -1273,7 +1307,12 @@ fn three_accelerations() -> Claim {
 }
 
 fn straight_oscillates() -> Claim {
-    let u = example(0.5, 5.0, 1.25, 0.77, 0.0);
+    straight_oscillates_check(HOOP_SPIN)
+}
+
+/// The check of [`straight_oscillates`] with the wheel's moment about its axle `spin` mu1 R^2.
+fn straight_oscillates_check(spin: f64) -> Claim {
+    let u = example_spin(0.5, 5.0, 1.25, 0.77, 0.0, spin);
     let (mut fast_max, mut fast_changes, mut slow_max, mut drift) =
         (f64::NAN, 0usize, f64::NAN, f64::NAN);
     if let Some(u) = u {
@@ -1931,10 +1970,23 @@ const RIDER_P_L: Perturbation = scaled("rider_p", "L", 1.0 + 1e-2);
 /// scaled by 1 + 1e-2.
 const CHAR78_C0_Z: Perturbation = scaled("char78_c0", "z", 1.0 + 1e-2);
 
+/// The rider's height z in the generated light-rider (S) of n° 39 scaled by 1.5.
+const S39_Z: Perturbation = scaled("stability_n39", "z", 1.5);
+/// The turning rate n in the generated light-rider (S) of n° 39 negated.
+const S39_N_FLIPPED: Perturbation = scaled("stability_n39", "n", -1.0);
+/// The rider's moment A in the generated leading coefficient of n° 78 negated.
+const CHAR78_C2_A_FLIPPED: Perturbation = scaled("char78_c2", "A", -1.0);
+/// The rider's product of inertia L in the generated middle coefficient of n° 78 negated.
+const CHAR78_C1_L_FLIPPED: Perturbation = scaled("char78_c1", "L", -1.0);
+
 /// The memoir's claims of the unicycle, with the falsification of those that a perturbation
 /// of the generated `unicycle` program breaks ([`crate::perturb::falsify`]).
 pub fn claims() -> Vec<Claim> {
-    let table: [crate::perturb::Row; 10] = [
+    let table: [crate::perturb::Row; 14] = [
+        (&S39_Z, || vec![light_only_turning()], &["unicycle-light-stable-only-turning"]),
+        (&S39_N_FLIPPED, || vec![light_turning_radius()], &["unicycle-light-turning-radius"]),
+        (&CHAR78_C2_A_FLIPPED, || vec![leading_positive()], &["unicycle-78-leading-positive"]),
+        (&CHAR78_C1_L_FLIPPED, || vec![big_wheel_remark()], &["unicycle-78-big-wheel-remark"]),
         (&E_Z, || vec![straight_running_steady()], &["unicycle-straight-running-steady"]),
         (&E_S_FLIPPED, || vec![turns_toward_lean()], &["unicycle-turns-toward-lean"]),
         (&SKID_Z, || vec![skid_reduces_to_hoop()], &["unicycle-skid-reduces-to-hoop"]),
@@ -1965,7 +2017,20 @@ pub fn claims() -> Vec<Claim> {
             &["unicycle-small-lean-outside-interval", "unicycle-s-curve-misses-e"],
         ),
     ];
+    const FLAT: &str = "the wheel's moment about its axle B1 = mu1 R^2 instead of the hoop's 2 mu1 R^2 (its spin carrying no moment of momentum beyond its rolling translation's), the n° 36 unicycle otherwise";
     crate::perturb::falsify(claims_as_derived(), &table)
+        .into_iter()
+        .map(|c| match c.id.as_str() {
+            "unicycle-light-wheel-unstable" => c.falsified_by(FLAT, light_wheel_check(FLAT_SPIN)),
+            "unicycle-stability-decreases-with-wheel" => {
+                c.falsified_by(FLAT, stability_decreases_check(FLAT_SPIN))
+            }
+            "unicycle-straight-running-oscillates" => {
+                c.falsified_by(FLAT, straight_oscillates_check(FLAT_SPIN))
+            }
+            _ => c,
+        })
+        .collect()
 }
 
 /// The claims as derived.
