@@ -20,7 +20,7 @@ use carvallo::ir::{Inst, Interpreter, Op, Program, Value};
 pub struct Perturbation {
     /// The model whose program is perturbed (`hoop_discussion`).
     pub model: &'static str,
-    /// The output whose cone holds the constant.
+    /// The output whose cone (the instructions it depends on) is perturbed.
     pub output: &'static str,
     /// What is scaled in the copy of the output's cone.
     pub target: Target,
