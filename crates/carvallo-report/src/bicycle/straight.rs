@@ -897,7 +897,7 @@ fn quartic_claims() -> Vec<Claim> {
         "bicycle-straight-permanences-necessary",
         "120",
         "Whether the quartic has zero, one or two imaginary pairs, if the real roots and the real parts of the imaginary ones are negative the equation shows only permanences (all coefficients of one sign): a necessary character of stability.",
-        "3000 quartics built from seeded random roots (SplitMix64, seed 0x18970120), 1000 in each of the memoir's three cases (four real roots; two real and a pair; two pairs), real parts uniform in (-3, -0.001), imaginary parts in (0.001, 3); the coefficients of the product counted positive",
+        "3000 quartics built from seeded random roots (SplitMix64, seed 0x18970120), 1000 in each of the memoir's three cases (four real roots; two real and a pair; two pairs), real parts uniform in (-3, -0.001), imaginary parts in (0.001, 3); the coefficients of the product counted positive. Holds by construction because it is a statement about polynomials (a product of factors λ - r with Re r < 0 has positive coefficients), checked on polynomials built from their roots: no model ingredient enters, so no perturbation of the derived side can break it",
         &[("quartics", tried as f64), ("with every coefficient positive", positive as f64)],
         positive == tried,
         Verdict::DerivationDiffers,

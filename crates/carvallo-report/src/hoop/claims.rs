@@ -929,7 +929,7 @@ fn quadratic_criterion() -> Claim {
         "hoop-method-quadratic-criterion",
         "78",
         "For a characteristic equation a λ^2 + b λ + c = 0 with a > 0: the product of the roots must be positive and their sum negative or zero; \"ces conditions remplies ... si les racines sont réelles, elles sont toutes deux négatives; si elles sont imaginaires conjuguées, leur partie réelle est encore négative\" (or zero): stability.",
-        "20000 seeded quadratics (a in (0,1; 3), b, c in (-3, 3), b = 0 one time in ten): c/a > 0 and -b/a ≤ 0 against the largest real part of the roots being ≤ 0 (with c ≠ 0)",
+        "20000 seeded quadratics (a in (0,1; 3), b, c in (-3, 3), b = 0 one time in ten): c/a > 0 and -b/a ≤ 0 against the largest real part of the roots being ≤ 0 (with c ≠ 0). Holds by construction because it is a statement about quadratics, checked against their roots by the quadratic formula: no model ingredient enters, so no perturbation of the derived side can break it (its application to the hoop is hoop-characteristic-roots, which a perturbation breaks)",
         &[("cases", cases as f64), ("disagreements", wrong as f64)],
         policy::claim(wrong == 0, Verdict::DerivationDiffers),
         "the method's part of n° 78 (its application to the unicycle is in the unicycle report); with a zero sum the roots are imaginary, real part zero, which the memoir counts as stable",

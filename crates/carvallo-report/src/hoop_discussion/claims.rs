@@ -137,12 +137,30 @@ const D_FLIPPED: Perturbation = Perturbation {
     factor: -1.0,
 };
 
+/// The third constant of the generated cubic of H (`h_cubic`, its 14) negated.
+const H_CUBIC_FLIPPED: Perturbation = Perturbation {
+    model: "hoop_discussion",
+    output: "h_cubic",
+    target: crate::perturb::Target::Constant(2),
+    factor: -1.0,
+};
+/// The first constant of the generated vertical tangent of (S) (`vertical_t`, the 2 under the
+/// square root of (2 + 3 sqrt 2)/7) scaled by 1 + 1e-3.
+const VERTICAL_T_SCALED: Perturbation = Perturbation {
+    model: "hoop_discussion",
+    output: "vertical_t",
+    target: crate::perturb::Target::Constant(0),
+    factor: 1.0 + 1e-3,
+};
+
 /// The claims with the falsification of those whose check a perturbation of the generated
 /// programs breaks: the checks run again with the perturbation active
 /// ([`crate::perturb::with`]), only the functions giving the claims named.
 fn compute() -> Vec<Claim> {
     let checks = compute_checks();
-    let table: [crate::perturb::Row; 13] = [
+    let table: [crate::perturb::Row; 15] = [
+        (&H_CUBIC_FLIPPED, h_17_bis, &["hoop-h-cubic-one-root"]),
+        (&VERTICAL_T_SCALED, || vec![u_smallest()], &["hoop-u-smallest-root"]),
         (
             &E_SCALED_1E2,
             || vec![reality_sides(), roots_on_ac()],
@@ -490,7 +508,8 @@ fn u_roots() -> Claim {
 }
 
 fn u_smallest() -> Claim {
-    let root = carvallo_root();
+    // The root sought: the vertical tangent of (S), t = (2 + 3 sqrt 2)/7 (generated vertical_t).
+    let exact_u = crate::perturb::discussion_output("vertical_t", &[]) - 1.0;
     let roots = u_equation_roots();
     let smallest = roots.iter().copied().fold(f64::NEG_INFINITY, f64::max);
     let next = roots.iter().copied().filter(|&u| u < smallest).fold(f64::NEG_INFINITY, f64::max);
@@ -499,8 +518,8 @@ fn u_smallest() -> Claim {
         "14",
         "\"C'est certainement la plus petite racine négative qui convient\": with u = 1/v, the root sought is the v of largest modulus.",
         "the roots of the equation in u (hoop-u-no-positive-root) against the root of the vertical tangent (generated vertical_t - 1)",
-        &[("root_sought", root.exact_u), ("smallest_modulus_root", smallest), ("next_root", next)],
-        policy::claim(rel_diff(smallest, root.exact_u) < 1e-12 && smallest.abs() < next.abs(), Verdict::DerivationDiffers),
+        &[("root_sought", exact_u), ("smallest_modulus_root", smallest), ("next_root", next)],
+        policy::claim(rel_diff(smallest, exact_u) < 1e-12 && smallest.abs() < next.abs(), Verdict::DerivationDiffers),
         "the root in (-0,2; 0) is the one of smallest modulus (the others are -1/2, double, and -1,32), so 1/u has the largest modulus",
     )
 }

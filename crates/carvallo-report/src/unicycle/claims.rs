@@ -306,7 +306,7 @@ fn steady_needs_no_motor() -> Claim {
         "unicycle-steady-needs-no-motor",
         "25",
         "In a steady state (s' = n' = p = 0) the rolling equation (s) gives a motor moment 0, as the theorem of vis viva says.",
-        "The generated (s) first member (rider + wheel) at p = p' = n' = s' = 0 at 16 seeded states (relative to (mu R^2 + B1) g/R); and the energy drift of 2 s of RK4 (dt = 1 ms) of the generated full model with no motor moment, for 4 seeded unicycles with hoop wheels and L = 0, from a lean of 0.02 rad at three times the straight-running threshold.",
+        "The generated (s) first member (rider + wheel) at p = p' = n' = s' = 0 at 16 seeded states (relative to (mu R^2 + B1) g/R); and the energy drift of 2 s of RK4 (dt = 1 ms) of the generated full model with no motor moment, for 4 seeded unicycles with hoop wheels and L = 0, from a lean of 0.02 rad at three times the straight-running threshold. Holds by construction because every term of the generated rider's and wheel's shares of (s) carries one of p, p', n', s' and the model has no dissipation, so its energy is conserved whatever its constants: no change of a coefficient or parameter breaks either part (the rider's mass scaled by 1 + 1e-2 in its share of (s), tried, leaves it at 0); only a passive resistance, which the model leaves out, would.",
         &[("max_rel_s_first_member", worst), ("max_rel_energy_drift", drift)],
         policy::claim(holds, Verdict::DerivationDiffers),
         "The (s) first member vanishes identically in a steady state, so the motor moment there only balances the passive resistances the model leaves out; the free motion conserves the energy.",
@@ -375,9 +375,16 @@ fn slope_moment() -> (Claim, Claim) {
 // n° 26, 26 bis ------------------------------------------------------------------------------
 
 fn pedal_paradox() -> Claim {
+    pedal_paradox_check(1.0)
+}
+
+/// The check of [`pedal_paradox`] with the cranks `crank_scale` times as long (1 as built: the
+/// pedals within the rim; 2, the falsification: cranks up to 1.9 R, the lowest pedals below
+/// the ground line).
+fn pedal_paradox_check(crank_scale: f64) -> Claim {
     let mut largest = f64::NEG_INFINITY;
     let mut cases = 0;
-    for ratio in grid(0.05, 0.95, 19) {
+    for ratio in grid(0.05 * crank_scale, 0.95 * crank_scale, 19) {
         for alpha in grid(0.0, 2.0 * PI, 24) {
             // Wheel of radius 1 rolling forward by sigma (clockwise), crank ratio at angle alpha
             // from the bottom: pedal x = sigma - ratio sin(alpha + sigma).
@@ -419,9 +426,15 @@ impl StringBike {
     }
 
     fn work(&self, zeta: f64) -> f64 {
+        self.work_with(zeta, true)
+    }
+
+    /// [`StringBike::work`] with the pulley S carried by the frame (`pulley_moves`, as built)
+    /// or held fixed on the ground (the falsification).
+    fn work_with(&self, zeta: f64, pulley_moves: bool) -> f64 {
         let u = (-zeta.sin(), zeta.cos());
         let f = |d: f64| {
-            let s = (self.advance * d, self.axle);
+            let s = (if pulley_moves { self.advance * d } else { 0.0 }, self.axle);
             let p = self.pedal(d);
             u.0 * s.0 + u.1 * s.1 - ((p.0 - s.0).powi(2) + (p.1 - s.1).powi(2)).sqrt()
         };
@@ -466,11 +479,18 @@ fn bikes() -> Vec<StringBike> {
 }
 
 fn string_angle() -> Claim {
+    string_angle_check(true)
+}
+
+/// The check of [`string_angle`] with the pulley carried by the frame (`pulley_moves`) or
+/// held fixed on the ground (the falsification).
+fn string_angle_check(pulley_moves: bool) -> Claim {
     let (mut worst, mut order_ok, mut lo, mut hi) = (0.0f64, true, f64::INFINITY, 0.0f64);
     let all = bikes();
     for b in &all {
-        order_ok &= b.work(PI / 2.0) < 0.0 && b.work(0.0) > 0.0 && b.work(-PI / 4.0) > 0.0;
-        let zeta = bisect(|z| b.work(z), 0.0, PI / 2.0);
+        let work = |z: f64| b.work_with(z, pulley_moves);
+        order_ok &= work(PI / 2.0) < 0.0 && work(0.0) > 0.0 && work(-PI / 4.0) > 0.0;
+        let zeta = bisect(work, 0.0, PI / 2.0);
         let p = b.pedal(0.0);
         let (dx, dy) = (p.0, p.1 - b.axle);
         let sin_zp = dx.abs() / (dx * dx + dy * dy).sqrt();
@@ -1970,6 +1990,14 @@ const RIDER_P_L: Perturbation = scaled("rider_p", "L", 1.0 + 1e-2);
 /// scaled by 1 + 1e-2.
 const CHAR78_C0_Z: Perturbation = scaled("char78_c0", "z", 1.0 + 1e-2);
 
+/// The first constant of the generated (S) of n° 40 (`stability_n40`) scaled by 1 + 1e-2.
+const S40_SCALED_1E2: Perturbation = Perturbation {
+    model: "unicycle",
+    output: "stability_n40",
+    target: Target::Constant(0),
+    factor: 1.0 + 1e-2,
+};
+
 /// The rider's height z in the generated light-rider (S) of n° 39 scaled by 1.5.
 const S39_Z: Perturbation = scaled("stability_n39", "z", 1.5);
 /// The turning rate n in the generated light-rider (S) of n° 39 negated.
@@ -1982,7 +2010,8 @@ const CHAR78_C1_L_FLIPPED: Perturbation = scaled("char78_c1", "L", -1.0);
 /// The memoir's claims of the unicycle, with the falsification of those that a perturbation
 /// of the generated `unicycle` program breaks ([`crate::perturb::falsify`]).
 pub fn claims() -> Vec<Claim> {
-    let table: [crate::perturb::Row; 14] = [
+    let table: [crate::perturb::Row; 15] = [
+        (&S40_SCALED_1E2, || vec![stable_between_roots()], &["unicycle-stable-between-roots"]),
         (&S39_Z, || vec![light_only_turning()], &["unicycle-light-stable-only-turning"]),
         (&S39_N_FLIPPED, || vec![light_turning_radius()], &["unicycle-light-turning-radius"]),
         (&CHAR78_C2_A_FLIPPED, || vec![leading_positive()], &["unicycle-78-leading-positive"]),
@@ -2028,6 +2057,14 @@ pub fn claims() -> Vec<Claim> {
             "unicycle-straight-running-oscillates" => {
                 c.falsified_by(FLAT, straight_oscillates_check(FLAT_SPIN))
             }
+            "unicycle-pedal-paradox" => c.falsified_by(
+                "the cranks twice as long (0.1 R to 1.9 R: the lowest pedal below the ground line for cranks beyond R)",
+                pedal_paradox_check(2.0),
+            ),
+            "unicycle-string-neutral-angle" => c.falsified_by(
+                "the pulley S under the rear axle held fixed on the ground instead of carried by the frame",
+                string_angle_check(false),
+            ),
             _ => c,
         })
         .collect()
