@@ -425,12 +425,8 @@ impl StringBike {
         (self.ahead + self.advance * d - self.crank * d.sin(), self.bracket - self.crank * d.cos())
     }
 
-    fn work(&self, zeta: f64) -> f64 {
-        self.work_with(zeta, true)
-    }
-
-    /// [`StringBike::work`] with the pulley S carried by the frame (`pulley_moves`, as built)
-    /// or held fixed on the ground (the falsification).
+    /// The work rate at the zenith distance `zeta` with the pulley S carried by the frame
+    /// (`pulley_moves`, as built) or held fixed on the ground (the falsification).
     fn work_with(&self, zeta: f64, pulley_moves: bool) -> f64 {
         let u = (-zeta.sin(), zeta.cos());
         let f = |d: f64| {
