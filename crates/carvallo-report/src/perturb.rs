@@ -15,17 +15,27 @@ use std::collections::{BTreeMap, BTreeSet};
 
 use carvallo::ir::{Inst, Interpreter, Op, Program, Value};
 
-/// One coefficient of one output of a generated program scaled.
+/// One coefficient, or one model ingredient, of one output of a generated program scaled.
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct Perturbation {
     /// The model whose program is perturbed (`hoop_discussion`).
     pub model: &'static str,
-    /// The output whose cone holds the constant.
+    /// The output whose cone (the instructions it depends on) is perturbed.
     pub output: &'static str,
-    /// Which constant of the cone, in program order (0 is the first).
-    pub constant: usize,
+    /// What is scaled in the copy of the output's cone.
+    pub target: Target,
     /// The factor it is multiplied by.
     pub factor: f64,
+}
+
+/// What a [`Perturbation`] scales in the copy of an output's instructions.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub enum Target {
+    /// The constant of the cone with this index, in program order (0 is the first).
+    Constant(usize),
+    /// Every use of the named parameter or input in the cone (a model ingredient, such as the
+    /// rider's mass, changed in that output only).
+    Argument(&'static str),
 }
 
 /// The perturbed program, compiled once for the interpreter.
@@ -68,27 +78,56 @@ fn cone(p: &Program, name: &str) -> Option<Vec<usize>> {
 }
 
 /// The program of `p` with the perturbation applied: the cone of the output copied after the
-/// program's instructions, the chosen constant of the copy scaled, the output redirected to
-/// the copy. Also returns the constant's value before scaling. `None` when the output or the
-/// constant does not exist.
+/// program's instructions, the chosen constant of the copy scaled (or every use of the chosen
+/// argument replaced by the argument times the factor), the output redirected to the copy.
+/// Also returns the constant's value before scaling (NaN for an argument). `None` when the
+/// output, the constant or the argument's use in the cone does not exist.
 pub fn perturbed_program(p: &Program, pert: &Perturbation) -> Option<(Program, f64)> {
     let members = cone(p, pert.output)?;
-    let consts: Vec<usize> =
-        members.iter().copied().filter(|&i| matches!(p.insts[i].op, Op::Const(_))).collect();
-    let target = *consts.get(pert.constant)?;
-    let Op::Const(value) = p.insts[target].op else { return None };
     let mut q = p.clone();
+    // The scaled argument, `mul arg factor`, ahead of the copies.
+    let (target, value, argument) = match pert.target {
+        Target::Constant(k) => {
+            let consts: Vec<usize> = members
+                .iter()
+                .copied()
+                .filter(|&i| matches!(p.insts[i].op, Op::Const(_)))
+                .collect();
+            let target = *consts.get(k)?;
+            let Op::Const(value) = p.insts[target].op else { return None };
+            (Some(target), value, None)
+        }
+        Target::Argument(name) => {
+            let arg = match p.params.iter().position(|n| n == name) {
+                Some(i) => Value::Param(i as u32),
+                None => Value::Input(p.inputs.iter().position(|n| n == name)? as u32),
+            };
+            if !members.iter().any(|&i| p.insts[i].op.operands().into_iter().any(|v| v == arg)) {
+                return None;
+            }
+            let factor = q.insts.len() as u32;
+            q.insts.push(Inst { name: format!("{name}__factor"), op: Op::Const(pert.factor) });
+            q.insts.push(Inst {
+                name: format!("{name}__perturbed"),
+                op: Op::Mul(arg, Value::Inst(factor)),
+            });
+            (None, f64::NAN, Some((arg, Value::Inst(factor + 1))))
+        }
+    };
     let base = q.insts.len() as u32;
     let index: BTreeMap<usize, u32> =
         members.iter().enumerate().map(|(k, &i)| (i, base + k as u32)).collect();
     for &i in &members {
         let inst = &p.insts[i];
-        let op = if i == target {
+        let op = if Some(i) == target {
             Op::Const(value * pert.factor)
         } else {
             inst.op.map_operands(|v| match v {
                 Value::Inst(j) => Value::Inst(index.get(&(j as usize)).copied().unwrap_or(j)),
-                other => other,
+                other => match argument {
+                    Some((arg, scaled)) if other == arg => scaled,
+                    _ => other,
+                },
             })
         };
         q.insts.push(Inst { name: format!("{}__perturbed", inst.name), op });
@@ -235,6 +274,35 @@ pub fn hoop_stability(hoop: &carvallo::hoop::Hoop, theta: f64, s: f64, n: f64) -
         .map_or_else(|| hoop.stability(theta, s, n), |[v]| v)
 }
 
+/// [`carvallo::hoop::Hoop::steady_turning_rates`] (the roots $n_1 \le n_2$ of (E) of n° 8, a
+/// quadratic in $n$ whose coefficients are read off (E) at $n = 0, \pm\sqrt{g/R}$), from the
+/// perturbed `hoop` program's `equilibrium` when one is active.
+pub fn hoop_steady_turning_rates(
+    hoop: &carvallo::hoop::Hoop,
+    theta: f64,
+    s: f64,
+) -> Option<[f64; 2]> {
+    let active = ACTIVE.with(|a| a.borrow().as_ref().is_some_and(|a| a.model == "hoop"));
+    if !active {
+        return hoop.steady_turning_rates(theta, s);
+    }
+    let nu = hoop.rate_unit();
+    let e = |n: f64| hoop_equilibrium(hoop, theta, s, n);
+    let (c, plus, minus) = (e(0.0), e(nu), e(-nu));
+    let (a, b) = ((plus + minus - 2.0 * c) / (2.0 * nu * nu), (plus - minus) / (2.0 * nu));
+    if !(a.is_finite() && b.is_finite() && c.is_finite()) || a == 0.0 {
+        return None;
+    }
+    let disc = b * b - 4.0 * a * c;
+    if disc < 0.0 {
+        return None;
+    }
+    // The cancellation-free form q = -(b + sign(b) sqrt(disc))/2, n = q/a, c/q.
+    let q = -0.5 * (b + b.signum() * disc.sqrt());
+    let (x, y) = if q == 0.0 { (0.0, 0.0) } else { (q / a, c / q) };
+    Some([x.min(y), x.max(y)])
+}
+
 /// One row of a falsification table: the perturbation, the claim functions to run under it,
 /// and the ids of the claims whose falsification it is.
 pub type Row = (&'static Perturbation, fn() -> Vec<crate::claims::Claim>, &'static [&'static str]);
@@ -262,14 +330,20 @@ pub fn falsify(claims: Vec<crate::claims::Claim>, table: &[Row]) -> Vec<crate::c
 /// The words stating a perturbation, with the constant's value.
 pub fn describe(pert: &Perturbation, value: f64) -> String {
     let rel = pert.factor - 1.0;
+    let change = if pert.factor == -1.0 {
+        "negated".to_string()
+    } else {
+        format!("scaled by 1 {} {:.0e}", if rel < 0.0 { "-" } else { "+" }, rel.abs())
+    };
+    let what = match pert.target {
+        Target::Constant(k) => {
+            format!("constant n° {} ({})", k + 1, crate::render::text::format_significant(value, 6))
+        }
+        Target::Argument(name) => format!("every use of `{name}`"),
+    };
     format!(
-        "constant n° {} ({}) of the generated `{}` output of generated/{}.ir scaled by 1 {} {:.0e} (in a copy of the output's instructions: the memoir's transcribed outputs keep theirs)",
-        pert.constant + 1,
-        crate::render::text::format_significant(value, 6),
-        pert.output,
-        pert.model,
-        if rel < 0.0 { "-" } else { "+" },
-        rel.abs()
+        "{what} of the generated `{}` output of generated/{}.ir {change} (in a copy of the output's instructions: the memoir's transcribed outputs keep theirs)",
+        pert.output, pert.model,
     )
 }
 
@@ -283,7 +357,7 @@ mod tests {
         let pert = Perturbation {
             model: "hoop_discussion",
             output: "quartic_f",
-            constant: 0,
+            target: crate::perturb::Target::Constant(0),
             factor: 1.01,
         };
         let (q, value) = perturbed_program(&p, &pert).unwrap();
@@ -310,6 +384,53 @@ mod tests {
         let same = Perturbation { factor: 1.0, ..pert };
         let (r, _) = perturbed_program(&p, &same).unwrap();
         assert_eq!(r.eval_f64(&pa, &ia).unwrap()[k("quartic_f")], before[k("quartic_f")]);
-        assert!(perturbed_program(&p, &Perturbation { constant: 10_000, ..pert }).is_none());
+        assert!(perturbed_program(&p, &Perturbation { target: Target::Constant(10_000), ..pert })
+            .is_none());
+    }
+
+    #[test]
+    fn a_scaled_argument_is_the_output_at_the_scaled_argument() {
+        let p = Program::parse(ir_of("unicycle").unwrap()).unwrap();
+        let pert = Perturbation {
+            model: "unicycle",
+            output: "equilibrium",
+            target: Target::Argument("z"),
+            factor: 1.01,
+        };
+        let (q, value) = perturbed_program(&p, &pert).unwrap();
+        assert!(value.is_nan());
+        let args = |z: f64| -> (Vec<f64>, Vec<f64>) {
+            let params = p
+                .params
+                .iter()
+                .map(|n| match n.as_str() {
+                    "z" => z,
+                    "R" => 0.5,
+                    "g" => 9.81,
+                    _ => 3.0,
+                })
+                .collect();
+            (params, p.inputs.iter().map(|n| if n == "theta" { 0.3 } else { 1.7 }).collect())
+        };
+        let k = |name: &str| p.outputs.iter().position(|o| o.name == name).unwrap();
+        let (pa, ia) = args(1.25);
+        let after = q.eval_f64(&pa, &ia).unwrap();
+        let before = p.eval_f64(&pa, &ia).unwrap();
+        // (E) with z scaled in its copy is the unperturbed (E) at 1.01 z, bit for bit (the same
+        // product z * 1.01); every other output keeps its value, (E)'s memoir form too.
+        let (pz, iz) = args(1.25 * 1.01);
+        let at_scaled = p.eval_f64(&pz, &iz).unwrap();
+        assert_eq!(after[k("equilibrium")].to_bits(), at_scaled[k("equilibrium")].to_bits());
+        assert_ne!(after[k("equilibrium")], before[k("equilibrium")]);
+        for (i, o) in p.outputs.iter().enumerate() {
+            if o.name != "equilibrium" {
+                assert_eq!(before[i].to_bits(), after[i].to_bits(), "{}", o.name);
+            }
+        }
+        // An argument the output does not read, or no argument of that name: no perturbation.
+        let unread = Perturbation { target: Target::Argument("L"), ..pert };
+        assert!(perturbed_program(&p, &unread).is_none());
+        let unknown = Perturbation { target: Target::Argument("zz"), ..pert };
+        assert!(perturbed_program(&p, &unknown).is_none());
     }
 }

@@ -388,10 +388,10 @@ fn failed_reduction() -> Claim {
     )
 }
 
-/// n° 86 and 95: the orders of the kinematic coefficients, by halving the angles.
-fn order_claims() -> Vec<Claim> {
-    let kin = Kinematics::old_model();
-    let geo = Geometry::old_model();
+/// n° 86 and 95: the orders of the kinematic coefficients, by halving the angles, for the
+/// geometry `geo` (the old bicycle of n° 52 in the report).
+fn order_claims(geo: Geometry) -> Vec<Claim> {
+    let kin = Kinematics::new(geo);
     let eps = 0.02;
     // a steady-turn-like position: gamma opposite to theta (n° 97)
     let at = |k: f64| kin.relations(k * eps, -k * eps).ok();
@@ -451,9 +451,10 @@ fn order_claims() -> Vec<Claim> {
     vec![c86, c95]
 }
 
-/// Steady turns of the nonlinear model at [`TURNS`]: (gamma, speed m/s, lean, yaw rate).
-fn turns() -> Option<Vec<(f64, f64, f64, f64)>> {
-    let bike = LockedSteer::new(Constants::MEMOIR).ok()?;
+/// Steady turns of the nonlinear model of constants `k` at [`TURNS`]: (gamma, speed m/s,
+/// lean, yaw rate).
+fn turns(k: Constants) -> Option<Vec<(f64, f64, f64, f64)>> {
+    let bike = LockedSteer::new(k).ok()?;
     TURNS
         .iter()
         .map(|&(gdeg, kmh)| {
@@ -463,11 +464,12 @@ fn turns() -> Option<Vec<(f64, f64, f64, f64)>> {
         .collect()
 }
 
-/// n° 86 bis, 87, 88, 89, 96, 97: signs and sizes of the steady turn.
-fn turn_claims() -> Vec<Claim> {
+/// n° 86 bis, 87, 88, 89, 96, 97: signs and sizes of the steady turn, for the geometry `geo`
+/// and the constants `k` of the nonlinear model (the old bicycle of n° 52 and n° 117's
+/// constants in the report).
+fn turn_claims(geo: Geometry, k: Constants) -> Vec<Claim> {
     let mut out = Vec::new();
-    let geo = Geometry::old_model();
-    let Some(ts) = turns() else {
+    let Some(ts) = turns(k) else {
         return out;
     };
     // n° 86 bis: alpha and n opposite to theta; lean left, handlebar left, turn left.
@@ -802,9 +804,10 @@ fn no_hands_claim(constants: Constants) -> Option<Claim> {
     // point, re-solved as a steady turn at its speed and lean (its steer torque must vanish).
     let family = branches.first().and_then(|&vb| hf.family(0.0, vb).ok());
     let seed = family.as_ref().and_then(|f| {
-        f.points.windows(2).find(|w| (w[0].lean - 0.1) * (w[1].lean - 0.1) <= 0.0).map(|w| {
-            [w[0].speed, 0.1, w[0].steer]
-        })
+        f.points
+            .windows(2)
+            .find(|w| (w[0].lean - 0.1) * (w[1].lean - 0.1) <= 0.0)
+            .map(|w| [w[0].speed, 0.1, w[0].steer])
     });
     let turn = seed.and_then(|z| hf.refine(z));
     let (v1, steer1) = turn.map_or((f64::NAN, f64::NAN), |(z, _)| (z[0], z[2]));
@@ -877,13 +880,29 @@ pub fn claims() -> Vec<Claim> {
             heavy_front,
         ));
     }
-    c.extend(order_claims());
+    // The old bicycle of n° 52 with the fork offset c = R sin(sigma0) = 0.1606 m instead of
+    // 0.08 m: zero trail, the factor (R sin(omega) - c)/l of n° 86 zero upright.
+    const ZERO_TRAIL: &str = "the fork offset c = R sin(sigma0) = 0.1606 m instead of 0.08 m (zero trail: the factor (R sin(omega) - c)/l of y vanishes upright), the old bicycle of n° 52 otherwise";
+    let zero_trail = Geometry::new(0.38, 1.10, 0.38 * 25f64.to_radians().sin(), 25f64.to_radians());
+    let (order_zero, turn_zero) = match zero_trail {
+        Ok(g) => (order_claims(g), turn_claims(g, Constants::MEMOIR)),
+        Err(_) => (Vec::new(), Vec::new()),
+    };
+    c.extend(falsified(
+        order_claims(Geometry::old_model()),
+        &order_zero,
+        &[("steady-orders-fall", ZERO_TRAIL), ("steady-orders-handlebar", ZERO_TRAIL)],
+    ));
     c.push(y_with_lean_claim(-1.0).falsified_by(
         "the steady turn's lean taken on the side of gamma (its sign flipped)",
         y_with_lean_claim(1.0),
     ));
     c.extend(actions);
-    c.extend(turn_claims());
+    c.extend(falsified(
+        turn_claims(Geometry::old_model(), Constants::MEMOIR),
+        &turn_zero,
+        &[("steady-neglected-term-bound", ZERO_TRAIL)],
+    ));
     let negative_trail = Constants { c1: -Constants::MEMOIR.c1, ..Constants::MEMOIR };
     match (no_hands_claim(Constants::MEMOIR), no_hands_claim(negative_trail)) {
         (Some(nominal), Some(perturbed)) => c.push(nominal.falsified_by(

@@ -839,6 +839,41 @@ pub fn claims() -> Vec<Claim> {
     out.extend(design_claims(&k));
     out.extend(friction_claims(&k));
     out.push(slope_claim(&k));
+    // Perturbations of the derived side: the same checks on the bicycle of n° 117 with one
+    // constant changed (each run, each changing the verdict of the claims it names).
+    let cases: [(&str, Constants, &[&str]); 4] = [
+        (
+            "the front contact's distance from the steering axis c1 = 0.16 m instead of 0.08 m (twice)",
+            Constants { c1: 2.0 * k.c1, ..k },
+            &["bicycle-straight-half-trail-rule"],
+        ),
+        (
+            "the trail reversed: c1 = -0.08 m instead of 0.08 m (no stable window left, so no sensitivity of its limits)",
+            Constants { c1: -k.c1, ..k },
+            &["bicycle-straight-design-rule"],
+        ),
+        (
+            "each wheel's mass mu1 = 20 kg instead of 5 (four times)",
+            Constants { mu1: 4.0 * k.mu1, ..k },
+            &["bicycle-straight-middle-factor-dominates"],
+        ),
+        (
+            "the mounted frame's centre of gravity at h = 0.5 m instead of 1 m",
+            Constants { h: 0.5 * k.h, ..k },
+            &["bicycle-straight-friction-widens-window", "bicycle-straight-friction-damps-weave"],
+        ),
+    ];
+    for (what, perturbed, ids) in cases {
+        let mut redone = design_claims(&perturbed);
+        redone.extend(friction_claims(&perturbed));
+        out = out
+            .into_iter()
+            .map(|c| match redone.iter().find(|p| p.id == c.id && ids.contains(&c.id.as_str())) {
+                Some(p) => c.falsified_by(what, p.clone()),
+                None => c,
+            })
+            .collect();
+    }
     out
 }
 
@@ -897,7 +932,7 @@ fn quartic_claims() -> Vec<Claim> {
         "bicycle-straight-permanences-necessary",
         "120",
         "Whether the quartic has zero, one or two imaginary pairs, if the real roots and the real parts of the imaginary ones are negative the equation shows only permanences (all coefficients of one sign): a necessary character of stability.",
-        "3000 quartics built from seeded random roots (SplitMix64, seed 0x18970120), 1000 in each of the memoir's three cases (four real roots; two real and a pair; two pairs), real parts uniform in (-3, -0.001), imaginary parts in (0.001, 3); the coefficients of the product counted positive",
+        "3000 quartics built from seeded random roots (SplitMix64, seed 0x18970120), 1000 in each of the memoir's three cases (four real roots; two real and a pair; two pairs), real parts uniform in (-3, -0.001), imaginary parts in (0.001, 3); the coefficients of the product counted positive. Holds by construction because it is a statement about polynomials (a product of factors λ - r with Re r < 0 has positive coefficients), checked on polynomials built from their roots: no model ingredient enters, so no perturbation of the derived side can break it",
         &[("quartics", tried as f64), ("with every coefficient positive", positive as f64)],
         positive == tried,
         Verdict::DerivationDiffers,

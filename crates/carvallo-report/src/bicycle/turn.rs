@@ -486,9 +486,10 @@ impl GridPoint {
     }
 }
 
-/// (C) across [`CLAIM_GAMMA`] × [`CLAIM_KMH`] for the bicycle of n° 117, s held.
-fn claim_grid() -> Result<Vec<GridPoint>, String> {
-    let bike = LockedSteer::new(Constants::MEMOIR).map_err(|x| x.to_string())?;
+/// (C) across [`CLAIM_GAMMA`] × [`CLAIM_KMH`] for the bicycle of constants `k` (n° 117's in
+/// the report), s held.
+fn claim_grid(k: &Constants) -> Result<Vec<GridPoint>, String> {
+    let bike = LockedSteer::new(*k).map_err(|x| x.to_string())?;
     let mut out = Vec::new();
     for gdeg in CLAIM_GAMMA {
         let gamma = gdeg.to_radians();
@@ -533,9 +534,56 @@ fn trail_factor_check(eta_deg: f64) -> crate::claims::Claim {
 
 /// The memoir's claims checked in this report ([`crate::claims`]).
 pub fn claims() -> Vec<crate::claims::Claim> {
+    let m = Constants::MEMOIR;
+    // Perturbations of the derived side: the same checks on the bicycle of n° 117 with one
+    // constant changed (each run, each changing the verdict of the claims it names).
+    let cases: [(&str, Constants, &[&str]); 4] = [
+        (
+            "the mounted frame's centre of gravity at h = 0.2 m instead of 1 m (n° 117's other constants kept)",
+            Constants { h: 0.2 * m.h, ..m },
+            &[
+                "bicycle-turn-centrifugal-second-order",
+                "bicycle-turn-extremes-independent-of-speed",
+                "bicycle-turn-instability-as-at-rest",
+            ],
+        ),
+        (
+            "the trail reversed: c1 = -0.08 m instead of 0.08 m",
+            Constants { c1: -m.c1, ..m },
+            &["bicycle-turn-steer-into-the-fall"],
+        ),
+        (
+            "the mounted frame's product of inertia L = 70 kg m^2 instead of 14 (five times)",
+            Constants { ll: 5.0 * m.ll, ..m },
+            &["bicycle-turn-l-below-a"],
+        ),
+        (
+            "the mounted frame's mass mu = 350 kg instead of 70 (five times)",
+            Constants { mu: 5.0 * m.mu, ..m },
+            &["bicycle-turn-mu-r2-below-half-a"],
+        ),
+    ];
+    let mut out = claims_for(&m);
+    for (what, k, ids) in cases {
+        let perturbed = claims_for(&k);
+        out = out
+            .into_iter()
+            .map(|c| {
+                match perturbed.iter().find(|p| p.id == c.id && ids.contains(&c.id.as_str())) {
+                    Some(p) => c.falsified_by(what, p.clone()),
+                    None => c,
+                }
+            })
+            .collect();
+    }
+    out
+}
+
+/// The claims of [`claims`] on the bicycle of constants `k`.
+fn claims_for(k: &Constants) -> Vec<crate::claims::Claim> {
     use crate::claims::Claim;
     let mut out = Vec::new();
-    let grid = match claim_grid() {
+    let grid = match claim_grid(k) {
         Ok(g) => g,
         Err(err) => {
             out.push(Claim::new(
@@ -573,7 +621,6 @@ pub fn claims() -> Vec<crate::claims::Claim> {
     ));
 
     // n° 102: the factor (R sin omega - c)/l < 0.073 and mu R^2 < A/2.
-    let k = Constants::MEMOIR;
     out.push(trail_factor_check(25.0).falsified_by(
         "the steering axis of the memoir's bicycle tilted 26° instead of 25° (R sin(η) - c moved by +0.0063 m)",
         trail_factor_check(26.0),
@@ -617,7 +664,7 @@ pub fn claims() -> Vec<crate::claims::Claim> {
         "bicycle-turn-y-terms-cancel",
         "104",
         "In y = sin θ {-2c sin²(γ/2) sin η + (c - R sin ω) tan θ sin γ + c sin η (1 - cos γ) + (c - R sin ω) cos θ sin γ / sin θ} (n° 89) « le premier et le troisième termes du crochet se détruisent ».",
-        "the first and third terms evaluated at 200 seeded points (SplitMix64, seed 0x01040104; c in (0, 0.2) m, |γ| in (0.1, 0.6) of either sign, η in (0.1, 0.8) rad): the largest |first + third| / max(|first|, |third|); holds within 1e-12 (the identity 2 sin²(γ/2) = 1 - cos γ, exact up to rounding; below |γ| = 0.1 the f64 evaluation of 1 - cos γ alone loses eps/γ²)",
+        "the first and third terms evaluated at 200 seeded points (SplitMix64, seed 0x01040104; c in (0, 0.2) m, |γ| in (0.1, 0.6) of either sign, η in (0.1, 0.8) rad): the largest |first + third| / max(|first|, |third|); holds within 1e-12 (the identity 2 sin²(γ/2) = 1 - cos γ, exact up to rounding; below |γ| = 0.1 the f64 evaluation of 1 - cos γ alone loses eps/γ²). Holds by construction because the two terms cancel by that trigonometric identity whatever c, γ and η: no constant of the bicycle can break it, and the check tests only the memoir's algebra",
         &[("largest relative remainder", worst_cancel)],
         policy::formula(worst_cancel, Verdict::DerivationDiffers),
         "",
@@ -766,7 +813,7 @@ pub fn claims() -> Vec<crate::claims::Claim> {
     ));
 
     // n° 106: steering into the fall raises the frame.
-    match Equations::via_whipple(&k) {
+    match Equations::via_whipple(k) {
         Ok(lin) => {
             // Fall equation: ... + (k0_01 + k2_01 s^2) gamma; in a steady turn gamma has the
             // sign opposite to theta (n° 86 bis, whose heading the memoir's text garbles as « n° 36 bis »), so steering toward the fall (gamma = -|g| sgn

@@ -41,29 +41,47 @@ pub(super) fn claims() -> Vec<Claim> {
 const S_SCALED: crate::perturb::Perturbation = crate::perturb::Perturbation {
     model: "hoop",
     output: "stability",
-    constant: 0,
+    target: crate::perturb::Target::Constant(0),
     factor: 1.0 + 1e-3,
 };
 /// The first constant of the generated equilibrium (E) of n° 8 (its 4/3) scaled by 1 + 1e-3.
 const E_SCALED: crate::perturb::Perturbation = crate::perturb::Perturbation {
     model: "hoop",
     output: "equilibrium",
-    constant: 0,
+    target: crate::perturb::Target::Constant(0),
     factor: 1.0 + 1e-3,
+};
+
+/// The first constant of the generated (E) of n° 8 (its 4/3, the term in $sn$) negated: the
+/// rolling's gyroscopic and centrifugal moment turned against the lean.
+const E_FLIPPED: crate::perturb::Perturbation = crate::perturb::Perturbation {
+    model: "hoop",
+    output: "equilibrium",
+    target: crate::perturb::Target::Constant(0),
+    factor: -1.0,
+};
+
+/// The second constant of the generated p' of system (2) (`pns_dp`, the 2/3 of the weight's
+/// moment $\tfrac23 (g/R)\sin\theta$) scaled by 1 + 1e-2.
+const DP_WEIGHT_SCALED: crate::perturb::Perturbation = crate::perturb::Perturbation {
+    model: "hoop",
+    output: "pns_dp",
+    target: crate::perturb::Target::Constant(1),
+    factor: 1.0 + 1e-2,
 };
 
 /// The first constant of the generated p' of system (2) (`pns_dp`, its 4/3) scaled by 1 + 1e-3.
 const DP_SCALED: crate::perturb::Perturbation = crate::perturb::Perturbation {
     model: "hoop",
     output: "pns_dp",
-    constant: 0,
+    target: crate::perturb::Target::Constant(0),
     factor: 1.0 + 1e-3,
 };
 
 /// The checks with the falsification of those that a perturbation of the generated `hoop`
 /// program breaks ([`crate::perturb::falsify`]).
 fn compute() -> Vec<Claim> {
-    let table: [crate::perturb::Row; 3] = [
+    let table: [crate::perturb::Row; 5] = [
         (
             &S_SCALED,
             || {
@@ -78,9 +96,32 @@ fn compute() -> Vec<Claim> {
             || {
                 let mut v = recursion();
                 v.push(e_limits());
+                v.push(steady_state_persists());
+                v.push(trajectory_radius());
                 v
             },
-            &["hoop-recursion-7", "hoop-e-limits"],
+            &[
+                "hoop-recursion-7",
+                "hoop-e-limits",
+                "hoop-steady-state-persists",
+                "hoop-trajectory-radius",
+            ],
+        ),
+        (&E_FLIPPED, || vec![turns_toward_lean()], &["hoop-turns-toward-lean"]),
+        (
+            &DP_WEIGHT_SCALED,
+            || {
+                let mut v = recursion();
+                v.extend(fall_laws());
+                v
+            },
+            &[
+                "hoop-recursion-first-order",
+                "hoop-fall-law-pendular",
+                "hoop-fall-law-exponential",
+                "hoop-fall-mean-position",
+                "hoop-fall-mean-shift-sign",
+            ],
         ),
         (
             &DP_SCALED,
@@ -91,7 +132,16 @@ fn compute() -> Vec<Claim> {
             &["hoop-stability-condition", "hoop-characteristic-roots"],
         ),
     ];
-    crate::perturb::falsify(compute_checks(), &table)
+    let mut out = crate::perturb::falsify(compute_checks(), &table);
+    for c in &mut out {
+        if c.id == "hoop-parameters-not-coordinates" {
+            *c = c.clone().falsified_by(
+                "the rolling direction I of O' = R s I (n° 6) held at its initial direction whatever the heading (a holonomic rolling constraint: the contact point a function of σ alone)",
+                parameters_check(false),
+            );
+        }
+    }
+    out
 }
 
 /// The checks of n° 1–12 and 71–78, as derived.
@@ -208,7 +258,7 @@ fn odd_in_time() -> Claim {
         "hoop-fall-rate-odd-in-time",
         "8",
         "With p0 = 0 the derivatives of even order vanish at t = 0: \"p est une fonction impaire du temps\".",
-        "RK4 integration of the generated system (2) (R = 0,5 m, g = 9,81) from θ = 0,3 rad, p = 0, n = -0,4, s = 1,2 sqrt(g/R) forward and backward in time (1500 steps of ±1 ms); θ, n, s at t and -t compared, p(t) with -p(-t); tolerance 1e-9 (rad, and sqrt(g/R) for rates)",
+        "RK4 integration of the generated system (2) (R = 0,5 m, g = 9,81) from θ = 0,3 rad, p = 0, n = -0,4, s = 1,2 sqrt(g/R) forward and backward in time (1500 steps of ±1 ms); θ, n, s at t and -t compared, p(t) with -p(-t); tolerance 1e-9 (rad, and sqrt(g/R) for rates). Holds by construction because every term of the generated p' of system (2) is even in p and every term of n' and s' odd (the model has no dissipation): no scaling or sign flip of a coefficient of system (2) changes a term's parity, and only a term of the other parity (a friction, which the model does not have) would break the check",
         &[("max_abs_diff", worst), ("duration_s", dt * steps as f64)],
         policy::claim(worst < 1e-9, Verdict::DerivationDiffers),
         "system (2) is reversible ((t, p) to (-t, -p) leaves it unchanged), so a motion through p = 0 is symmetric about that instant: θ, n, s even, p odd; the difference is exactly 0 because the generated right-hand side is odd in p in floating point too, so the reversed RK4 steps repeat the mirrored arithmetic",
@@ -291,7 +341,9 @@ fn steady_state_persists() -> Claim {
     let mut worst = 0.0f64;
     let mut cases = 0;
     for (theta, s) in [(0.2, 1.0), (0.5, 1.2), (0.8, 2.0)] {
-        let Some(roots) = hoop.steady_turning_rates(theta, s * nu) else { continue };
+        let Some(roots) = crate::perturb::hoop_steady_turning_rates(&hoop, theta, s * nu) else {
+            continue;
+        };
         for n in roots {
             if crate::perturb::hoop_stability(&hoop, theta, s * nu, n) <= 0.0 {
                 continue;
@@ -328,7 +380,9 @@ fn trajectory_radius() -> Claim {
     let mut worst = 0.0f64;
     let mut cases = 0;
     for (theta, s) in [(0.2, 1.0), (0.5, 1.2)] {
-        let Some(roots) = hoop.steady_turning_rates(theta, s * nu) else { continue };
+        let Some(roots) = crate::perturb::hoop_steady_turning_rates(&hoop, theta, s * nu) else {
+            continue;
+        };
         for n in roots {
             cases += 1;
             // Heading ψ' = n, contact point O' = R s (cos ψ, sin ψ) (n° 6: dO/dt = I s R),
@@ -555,7 +609,7 @@ fn s_n_periodic() -> Claim {
         "hoop-s-n-periodic",
         "9",
         "\"Il est bien clair qu'on trouve pour s et n des valeurs périodiques\" (in the stable case).",
-        "R = 0,5 m, g = 9,81; the steady state θ = 0,3 rad, s = sqrt(g/R), n = n2 released at θ0 = 0,35 rad (p0 = 0) and integrated by RK4 (0,1 ms steps) of the generated system (2) over three periods, each zero of p located by bisection of the last step; at every second zero (θ back at θ0) θ, n and s are compared with their initial values; tolerance 1e-9 (rad, sqrt(g/R))",
+        "R = 0,5 m, g = 9,81; the steady state θ = 0,3 rad, s = sqrt(g/R), n = n2 released at θ0 = 0,35 rad (p0 = 0) and integrated by RK4 (0,1 ms steps) of the generated system (2) over three periods, each zero of p located by bisection of the last step; at every second zero (θ back at θ0) θ, n and s are compared with their initial values; tolerance 1e-9 (rad, sqrt(g/R)). Holds by construction because every term of the generated n' and s' carries the factor p, so n and s are functions of θ along any motion whatever the coefficients: no scaling or sign flip of a coefficient of system (2) breaks the return, and the check fails only when the motion stops oscillating (with the 2 of n' negated the state is unstable and p has no second zero, tried)",
         &[("max_return_diff", worst), ("n_excursion_per_sqrt_g_over_R", n_swing / nu)],
         policy::claim(worst < 1e-9 && n_swing > 1e-3 * nu, Verdict::DerivationDiffers),
         "exact for the nonlinear motion: n' and s' are p times functions of θ, n, s, so n and s are functions of θ along a motion and return with it",
@@ -623,7 +677,7 @@ fn e_symmetry() -> Claim {
         "hoop-e-symmetry",
         "12",
         "\"L'équation (E) ne change pas quand on remplace n par -n et, en même temps, θ par -θ\": the symmetry of the phenomenon about the vertical plane OIK, so θ may be taken from 0 to π/2 only.",
-        "at 64 seeded states (|θ| ≤ 1,3 rad, rates up to 3 sqrt(g/R), R = 0,5 m, g = 9,81): the generated (E) of n° 8 at (-θ, s, -n) against minus its value at (θ, s, n) (the n° 8 form carries the factor sin θ cos θ that n° 12 divides out), and the generated system (2) at (-θ, -p, -n, s) against its mirror image; tolerance 1e-12 relative",
+        "at 64 seeded states (|θ| ≤ 1,3 rad, rates up to 3 sqrt(g/R), R = 0,5 m, g = 9,81): the generated (E) of n° 8 at (-θ, s, -n) against minus its value at (θ, s, n) (the n° 8 form carries the factor sin θ cos θ that n° 12 divides out), and the generated system (2) at (-θ, -p, -n, s) against its mirror image; tolerance 1e-12 relative. Holds by construction because every term the derivation gives (E) and system (2) for a hoop symmetric about its own plane is odd in (θ, n, p) (even for s'): no scaling or sign flip of a coefficient changes a term's parity; only a hoop without that mirror symmetry (its centre off its plane), which the generated program's parameters cannot express, would break it",
         &[("max_rel_diff_E", e_diff), ("max_rel_diff_system_2", f_diff), ("points", points as f64)],
         policy::claim(ok, Verdict::DerivationDiffers),
         "the n° 12 form (E)/(sin θ cos θ) is unchanged, the n° 8 form changes sign; the whole motion, not only (E), is symmetric",
@@ -639,7 +693,11 @@ fn turns_toward_lean() -> Claim {
         for k in 0..20 {
             let s = s_min * (1.0 + 1e-6) + 0.25 * k as f64;
             for sign in [1.0, -1.0] {
-                let Some([n1, n2]) = hoop.steady_turning_rates(sign * theta, s) else { continue };
+                let Some([n1, n2]) =
+                    crate::perturb::hoop_steady_turning_rates(&hoop, sign * theta, s)
+                else {
+                    continue;
+                };
                 cases += 1;
                 // Centre of the turn O + (sR/n) J and projection of the centre S1 = O - R sin θ J.
                 for n in [n1, n2] {
@@ -689,6 +747,14 @@ fn e_limits() -> Claim {
 }
 
 fn parameters_not_coordinates() -> Claim {
+    parameters_check(true)
+}
+
+/// The check of n° 71 with the contact point's velocity $O' = R s I$ (n° 6) along the rolling
+/// direction $I$, which turns with the heading when `heading_turns` (the model), or along the
+/// initial $I$ whatever the heading (the perturbation: a holonomic rolling constraint, under
+/// which the contact point is a function of $\sigma$ alone).
+fn parameters_check(heading_turns: bool) -> Claim {
     // Two histories ending at the same θ = 0, ν = π/2, σ = 1: roll then pivot, pivot then roll,
     // with the contact point moving as O' = R s I (n° 6) and I turning at the rate n.
     let r = 0.5;
@@ -702,7 +768,9 @@ fn parameters_not_coordinates() -> Claim {
                 let dt = 1.0 / steps as f64;
                 x += r * s * psi.cos() * dt;
                 y += r * s * psi.sin() * dt;
-                psi += n * dt;
+                if heading_turns {
+                    psi += n * dt;
+                }
             }
         }
         (x, y)
@@ -861,7 +929,7 @@ fn quadratic_criterion() -> Claim {
         "hoop-method-quadratic-criterion",
         "78",
         "For a characteristic equation a λ^2 + b λ + c = 0 with a > 0: the product of the roots must be positive and their sum negative or zero; \"ces conditions remplies ... si les racines sont réelles, elles sont toutes deux négatives; si elles sont imaginaires conjuguées, leur partie réelle est encore négative\" (or zero): stability.",
-        "20000 seeded quadratics (a in (0,1; 3), b, c in (-3, 3), b = 0 one time in ten): c/a > 0 and -b/a ≤ 0 against the largest real part of the roots being ≤ 0 (with c ≠ 0)",
+        "20000 seeded quadratics (a in (0,1; 3), b, c in (-3, 3), b = 0 one time in ten): c/a > 0 and -b/a ≤ 0 against the largest real part of the roots being ≤ 0 (with c ≠ 0). Holds by construction because it is a statement about quadratics, checked against their roots by the quadratic formula: no model ingredient enters, so no perturbation of the derived side can break it (its application to the hoop is hoop-characteristic-roots, which a perturbation breaks)",
         &[("cases", cases as f64), ("disagreements", wrong as f64)],
         policy::claim(wrong == 0, Verdict::DerivationDiffers),
         "the method's part of n° 78 (its application to the unicycle is in the unicycle report); with a zero sum the roots are imaginary, real part zero, which the memoir counts as stable",

@@ -40,23 +40,31 @@ pub(super) fn claims() -> Vec<Claim> {
 
 /// A constant of the hoop's generated normalised (E) of n° 12 (its 4/3, first in the cone)
 /// scaled by 1 + 1e-3.
-const E_SCALED: Perturbation =
-    Perturbation { model: "hoop", output: "equilibrium_n12", constant: 0, factor: 1.0 + 1e-3 };
+const E_SCALED: Perturbation = Perturbation {
+    model: "hoop",
+    output: "equilibrium_n12",
+    target: crate::perturb::Target::Constant(0),
+    factor: 1.0 + 1e-3,
+};
 /// The first constant of the generated normalised (S) of n° 12 (its 2/3) scaled by 1 + 1e-3.
-const S_SCALED: Perturbation =
-    Perturbation { model: "hoop", output: "stability_n12", constant: 0, factor: 1.0 + 1e-3 };
+const S_SCALED: Perturbation = Perturbation {
+    model: "hoop",
+    output: "stability_n12",
+    target: crate::perturb::Target::Constant(0),
+    factor: 1.0 + 1e-3,
+};
 /// The first constant of the generated (S1) (its 4) scaled by 1 + 1e-3.
 const S1_SCALED: Perturbation = Perturbation {
     model: "hoop_discussion",
     output: "curve_s1_y",
-    constant: 0,
+    target: crate::perturb::Target::Constant(0),
     factor: 1.0 + 1e-3,
 };
 /// The first constant of the generated (N) (its 4) scaled by 1 + 1e-3.
 const N_SCALED: Perturbation = Perturbation {
     model: "hoop_discussion",
     output: "curve_n_s2",
-    constant: 0,
+    target: crate::perturb::Target::Constant(0),
     factor: 1.0 + 1e-3,
 };
 
@@ -64,23 +72,121 @@ const N_SCALED: Perturbation = Perturbation {
 const E_CURVE_SCALED: Perturbation = Perturbation {
     model: "hoop_discussion",
     output: "reality_s2",
-    constant: 0,
+    target: crate::perturb::Target::Constant(0),
     factor: 1.0 + 1e-3,
 };
 /// The first constant of the generated (ℰ) y(x) (`reality_y`) scaled by 1 + 1e-3.
-const E_Y_SCALED: Perturbation =
-    Perturbation { model: "hoop_discussion", output: "reality_y", constant: 0, factor: 1.0 + 1e-3 };
+const E_Y_SCALED: Perturbation = Perturbation {
+    model: "hoop_discussion",
+    output: "reality_y",
+    target: crate::perturb::Target::Constant(0),
+    factor: 1.0 + 1e-3,
+};
 
 /// The first constant of the generated skid D(n) (`skid_of_n`) scaled by 1 + 1e-3.
-const D_SCALED: Perturbation =
-    Perturbation { model: "hoop_discussion", output: "skid_of_n", constant: 0, factor: 1.0 + 1e-3 };
+const D_SCALED: Perturbation = Perturbation {
+    model: "hoop_discussion",
+    output: "skid_of_n",
+    target: crate::perturb::Target::Constant(0),
+    factor: 1.0 + 1e-3,
+};
+
+/// The first constant of the hoop's generated normalised (E) of n° 12 (its 4/3) scaled by
+/// 1 + 1e-2.
+const E_SCALED_1E2: Perturbation = Perturbation {
+    model: "hoop",
+    output: "equilibrium_n12",
+    target: crate::perturb::Target::Constant(0),
+    factor: 1.0 + 1e-2,
+};
+/// The first constant of the hoop's generated normalised (E) of n° 12 (its 4/3, the term in
+/// $sn$) negated.
+const E_FLIPPED: Perturbation = Perturbation {
+    model: "hoop",
+    output: "equilibrium_n12",
+    target: crate::perturb::Target::Constant(0),
+    factor: -1.0,
+};
+/// The constant of the hoop's generated n' of system (2) (`pns_dn`, its 2) scaled by 1 + 1e-1.
+const DN_SCALED: Perturbation = Perturbation {
+    model: "hoop",
+    output: "pns_dn",
+    target: crate::perturb::Target::Constant(0),
+    factor: 1.0 + 1e-1,
+};
+/// The first constant of the hoop's generated physical (S) of n° 9 (its 2/3) scaled by
+/// 1 + 1e-3.
+const S_PHYSICAL_SCALED: Perturbation = Perturbation {
+    model: "hoop",
+    output: "stability",
+    target: crate::perturb::Target::Constant(0),
+    factor: 1.0 + 1e-3,
+};
+/// The fifth constant of the generated F(t) (`quartic_f`, the 15 of $15t^2$) negated.
+const QUARTIC_FLIPPED: Perturbation = Perturbation {
+    model: "hoop_discussion",
+    output: "quartic_f",
+    target: crate::perturb::Target::Constant(4),
+    factor: -1.0,
+};
+/// The first constant of the generated skid D(n) (`skid_of_n`, its 4) negated.
+const D_FLIPPED: Perturbation = Perturbation {
+    model: "hoop_discussion",
+    output: "skid_of_n",
+    target: crate::perturb::Target::Constant(0),
+    factor: -1.0,
+};
+
+/// The third constant of the generated cubic of H (`h_cubic`, its 14) negated.
+const H_CUBIC_FLIPPED: Perturbation = Perturbation {
+    model: "hoop_discussion",
+    output: "h_cubic",
+    target: crate::perturb::Target::Constant(2),
+    factor: -1.0,
+};
+/// The first constant of the generated vertical tangent of (S) (`vertical_t`, the 2 under the
+/// square root of (2 + 3 sqrt 2)/7) scaled by 1 + 1e-3.
+const VERTICAL_T_SCALED: Perturbation = Perturbation {
+    model: "hoop_discussion",
+    output: "vertical_t",
+    target: crate::perturb::Target::Constant(0),
+    factor: 1.0 + 1e-3,
+};
 
 /// The claims with the falsification of those whose check a perturbation of the generated
 /// programs breaks: the checks run again with the perturbation active
 /// ([`crate::perturb::with`]), only the functions giving the claims named.
 fn compute() -> Vec<Claim> {
     let checks = compute_checks();
-    let table: [crate::perturb::Row; 7] = [
+    let table: [crate::perturb::Row; 15] = [
+        (&H_CUBIC_FLIPPED, h_17_bis, &["hoop-h-cubic-one-root"]),
+        (&VERTICAL_T_SCALED, || vec![u_smallest()], &["hoop-u-smallest-root"]),
+        (
+            &E_SCALED_1E2,
+            || vec![reality_sides(), roots_on_ac()],
+            &["hoop-reality-sides", "hoop-roots-on-ac"],
+        ),
+        (&E_FLIPPED, marche_17, &["hoop-e-minus-s-sign"]),
+        (&DN_SCALED, || vec![upright_threshold()], &["hoop-upright-threshold"]),
+        (&S_PHYSICAL_SCALED, practical_18, &["hoop-threshold-grows-sqrt-r"]),
+        (
+            &QUARTIC_FLIPPED,
+            || {
+                let mut v = vec![quartic_bracket(), u_roots()];
+                v.extend(tables());
+                v
+            },
+            &["hoop-quartic-root-bracket", "hoop-u-no-positive-root", "hoop-horner-tableau-cells"],
+        ),
+        (
+            &D_FLIPPED,
+            || {
+                let mut v = discussion_15();
+                v.extend(marche_17());
+                v
+            },
+            &["hoop-d-half-three-cases", "hoop-no-skid-normal-play"],
+        ),
         (
             &E_SCALED,
             || {
@@ -384,10 +490,11 @@ fn u_equation_roots() -> Vec<f64> {
 }
 
 fn u_roots() -> Claim {
-    let root = carvallo_root();
-    let min_coeff = root.shifted.iter().copied().fold(f64::INFINITY, f64::min);
+    // The equation in u: the Horner shift t = 1 + u of the generated F(t).
+    let (shifted, _) = carvallo::numerics::graeffe::horner_shift(&quartic_f_coefficients(), 1.0);
+    let min_coeff = shifted.iter().copied().fold(f64::INFINITY, f64::min);
     let roots = u_equation_roots();
-    let residual = roots.iter().map(|&u| poly_eval(&root.shifted, u).abs()).fold(0.0, f64::max);
+    let residual = roots.iter().map(|&u| poly_eval(&shifted, u).abs()).fold(0.0, f64::max);
     let largest = roots.iter().copied().fold(f64::NEG_INFINITY, f64::max);
     Claim::new(
         "hoop-u-no-positive-root",
@@ -401,7 +508,8 @@ fn u_roots() -> Claim {
 }
 
 fn u_smallest() -> Claim {
-    let root = carvallo_root();
+    // The root sought: the vertical tangent of (S), t = (2 + 3 sqrt 2)/7 (generated vertical_t).
+    let exact_u = crate::perturb::discussion_output("vertical_t", &[]) - 1.0;
     let roots = u_equation_roots();
     let smallest = roots.iter().copied().fold(f64::NEG_INFINITY, f64::max);
     let next = roots.iter().copied().filter(|&u| u < smallest).fold(f64::NEG_INFINITY, f64::max);
@@ -410,8 +518,8 @@ fn u_smallest() -> Claim {
         "14",
         "\"C'est certainement la plus petite racine négative qui convient\": with u = 1/v, the root sought is the v of largest modulus.",
         "the roots of the equation in u (hoop-u-no-positive-root) against the root of the vertical tangent (generated vertical_t - 1)",
-        &[("root_sought", root.exact_u), ("smallest_modulus_root", smallest), ("next_root", next)],
-        policy::claim(rel_diff(smallest, root.exact_u) < 1e-12 && smallest.abs() < next.abs(), Verdict::DerivationDiffers),
+        &[("root_sought", exact_u), ("smallest_modulus_root", smallest), ("next_root", next)],
+        policy::claim(rel_diff(smallest, exact_u) < 1e-12 && smallest.abs() < next.abs(), Verdict::DerivationDiffers),
         "the root in (-0,2; 0) is the one of smallest modulus (the others are -1/2, double, and -1,32), so 1/u has the largest modulus",
     )
 }
@@ -460,13 +568,15 @@ fn tables() -> Vec<Claim> {
         &[28.0],
         &[28.0],
     ];
-    let mut derived: Vec<Vec<f64>> = vec![quartic_f_coefficients()];
-    for row in &root.horner_rows {
+    let coefficients = quartic_f_coefficients();
+    let (shifted, horner_rows) = carvallo::numerics::graeffe::horner_shift(&coefficients, 1.0);
+    let mut derived: Vec<Vec<f64>> = vec![coefficients];
+    for row in &horner_rows {
         derived.push(row[..row.len() - 1].to_vec());
         derived.push(row.clone());
     }
-    derived.push(vec![root.shifted[0]]);
-    derived.push(vec![root.shifted[0]]);
+    derived.push(vec![shifted[0]]);
+    derived.push(vec![shifted[0]]);
     let (mut cells, mut differ) = (0usize, 0usize);
     for (p, d) in printed_horner.iter().zip(&derived) {
         for (a, b) in p.iter().zip(d) {
@@ -1106,7 +1216,8 @@ fn practical_18() -> Vec<Claim> {
     let mut ratio_spread = (f64::INFINITY, 0.0f64);
     for r in [0.25, 0.5, 1.0, 2.0] {
         let Ok(h) = carvallo::hoop::Hoop::new(r, 1.0, 9.81) else { continue };
-        let s = bisect(|s| h.stability(0.0, s, 0.0), 0.01, 100.0).unwrap_or(f64::NAN);
+        let s = bisect(|s| crate::perturb::hoop_stability(&h, 0.0, s, 0.0), 0.01, 100.0)
+            .unwrap_or(f64::NAN);
         let v = s * r / r.sqrt();
         ratio_spread = (ratio_spread.0.min(v), ratio_spread.1.max(v));
     }
@@ -1147,7 +1258,7 @@ fn practical_18() -> Vec<Claim> {
             "hoop-fall-slower-for-large-r",
             "18",
             "Reduced to its two first terms the fall equation is θ'' = 2g sin θ/(3R), of the pendulum's form: \"quand R est grand, les vitesses de chute sont lentes et peuvent être corrigées par le jeu de la baguette\".",
-            "the generated system (2) at rest (n = s = 0) for R = 0,25 m and 1 m (g = 9,81), RK4 (0,1 ms steps) from θ = 0,05 to 0,5 rad: the ratio of the fall times, sqrt(1/0,25) = 2 for a time scale sqrt(R/g)",
+            "the generated system (2) at rest (n = s = 0) for R = 0,25 m and 1 m (g = 9,81), RK4 (0,1 ms steps) from θ = 0,05 to 0,5 rad: the ratio of the fall times, sqrt(1/0,25) = 2 for a time scale sqrt(R/g). Holds by construction because at n = s = 0 the generated p' is a coefficient times (g/R) sin θ: whatever the coefficient the fall time scales as sqrt(R/g), so the ratio 2 is dimensional analysis, which no change of a coefficient breaks (the threshold's value is falsified in hoop-threshold-grows-sqrt-r)",
             &[("fall_time_R_0.25_s", fall.first().copied().unwrap_or(f64::NAN)), ("fall_time_R_1_s", fall.get(1).copied().unwrap_or(f64::NAN)), ("ratio", fall_ratio)],
             policy::claim((fall_ratio - 2.0).abs() < 1e-3, Verdict::DerivationDiffers),
             "the time scale of the fall is sqrt(3R/(2g)); the ratio is 2 within the step of the time count",
@@ -1298,7 +1409,7 @@ fn heavier_hoop_18() -> Claim {
         "hoop-heavier-less-disturbed",
         "18",
         "« Ajoutons que la masse du cerceau étant plus grande, les causes perturbatrices ont moins d'influence sur lui. »",
-        "n° 19's disturbing moments: a push of 1 N at the back of the rim (right cheek) gives the moments -F R about OI and OK, which enter n° 19's (2) divided by the hoop's moments of inertia A = 3/2 μ R² and C = 1/2 μ R² (carvallo::hoop::Hoop::inertia); R = 0.5 m, g = 9.81, s = 2 sqrt(g/R), from rest upright, at t = 1/h: the lean θ and turning rate n for μ = 1 and 2 kg, by n° 19's closed forms (6)-(7) (generated stick_theta, stick_n) and by the full equations (2) with s held (generated stick_full_dp, stick_full_dn, RK4, 2000 steps). Holds if doubling the mass halves the response: the ratio 1/2 within 1e-12 for the linear forms, within 1e-3 for the full equations (a response of a few thousandths of a radian: the nonlinear terms are of the relative order θ², about 1e-5)",
+        "n° 19's disturbing moments: a push of 1 N at the back of the rim (right cheek) gives the moments -F R about OI and OK, which enter n° 19's (2) divided by the hoop's moments of inertia A = 3/2 μ R² and C = 1/2 μ R² (carvallo::hoop::Hoop::inertia); R = 0.5 m, g = 9.81, s = 2 sqrt(g/R), from rest upright, at t = 1/h: the lean θ and turning rate n for μ = 1 and 2 kg, by n° 19's closed forms (6)-(7) (generated stick_theta, stick_n) and by the full equations (2) with s held (generated stick_full_dp, stick_full_dn, RK4, 2000 steps). Holds if doubling the mass halves the response: the ratio 1/2 within 1e-12 for the linear forms, within 1e-3 for the full equations (a response of a few thousandths of a radian: the nonlinear terms are of the relative order θ², about 1e-5). Holds by construction because the hoop's moments of inertia carry its mass as a factor (A = 3/2 μ R², C = 1/2 μ R²) and the push enters n° 19's equations only as F R/A and F R/C, while the equations' own coefficients do not contain μ: no change of a coefficient of the generated programs moves the ratio from 1/2 (beyond the full equations' θ² terms); only inertias not proportional to the mass would",
         &[
             ("θ(2 kg) / θ(1 kg), closed forms", lin.0),
             ("n(2 kg) / n(1 kg), closed forms", lin.1),

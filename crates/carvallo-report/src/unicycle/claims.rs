@@ -8,7 +8,7 @@
 use std::collections::BTreeMap;
 use std::f64::consts::PI;
 
-use crate::perturb::{unicycle_eval as eval, unicycle_out as out};
+use crate::perturb::{unicycle_eval as eval, unicycle_out as out, Perturbation, Target};
 use carvallo::hoop::Hoop;
 use carvallo::unicycle::variants::Pitch;
 use carvallo::unicycle::{Rider, Unicycle, Wheel};
@@ -39,8 +39,31 @@ const FD: f64 = 1e-6;
 /// The n° 36 example: a rider of 60 kg with its centre of gravity at h = 2.5 R on a hoop wheel
 /// of 5 kg and R = 0.5 m, C0 = 0.77 kg m², A = B = 100 kg m² (as the report's n° 36 entries).
 fn example(radius: f64, wheel_mass: f64, height: f64, c0: f64, l: f64) -> Option<Unicycle> {
+    example_spin(radius, wheel_mass, height, c0, l, HOOP_SPIN)
+}
+
+/// The hoop wheel's moment about its axle, B1 = 2 mu1 R^2, in the unit mu1 R^2.
+const HOOP_SPIN: f64 = 2.0;
+
+/// The wheel's moment about its axle B1 = mu1 R^2 only: its spin carries no moment of
+/// momentum beyond its rolling translation's (the perturbation of the claims that the wheel's
+/// spin stabilises).
+const FLAT_SPIN: f64 = 1.0;
+
+/// [`example`] with the wheel's moment about its axle `spin` mu1 R^2 ([`HOOP_SPIN`] for the
+/// hoop wheel, whose other moments it keeps).
+fn example_spin(
+    radius: f64,
+    wheel_mass: f64,
+    height: f64,
+    c0: f64,
+    l: f64,
+    spin: f64,
+) -> Option<Unicycle> {
     let rider = Rider { mass: 60.0, height, a: 100.0, b: 100.0, c: c0, l };
-    Unicycle::new(radius, 9.81, rider, Wheel::hoop(wheel_mass, radius)).ok()
+    let m = wheel_mass * radius * radius;
+    let wheel = Wheel { mass: wheel_mass, a1: 1.5 * m, b1: spin * m, c1: 0.5 * m };
+    Unicycle::new(radius, 9.81, rider, wheel).ok()
 }
 
 /// The full unicycle at a seeded point `base` (its R, g, rider mu, z, A, B, C and a hoop wheel
@@ -283,7 +306,7 @@ fn steady_needs_no_motor() -> Claim {
         "unicycle-steady-needs-no-motor",
         "25",
         "In a steady state (s' = n' = p = 0) the rolling equation (s) gives a motor moment 0, as the theorem of vis viva says.",
-        "The generated (s) first member (rider + wheel) at p = p' = n' = s' = 0 at 16 seeded states (relative to (mu R^2 + B1) g/R); and the energy drift of 2 s of RK4 (dt = 1 ms) of the generated full model with no motor moment, for 4 seeded unicycles with hoop wheels and L = 0, from a lean of 0.02 rad at three times the straight-running threshold.",
+        "The generated (s) first member (rider + wheel) at p = p' = n' = s' = 0 at 16 seeded states (relative to (mu R^2 + B1) g/R); and the energy drift of 2 s of RK4 (dt = 1 ms) of the generated full model with no motor moment, for 4 seeded unicycles with hoop wheels and L = 0, from a lean of 0.02 rad at three times the straight-running threshold. Holds by construction because every term of the generated rider's and wheel's shares of (s) carries one of p, p', n', s' and the model has no dissipation, so its energy is conserved whatever its constants: no change of a coefficient or parameter breaks either part (the rider's mass scaled by 1 + 1e-2 in its share of (s), tried, leaves it at 0); only a passive resistance, which the model leaves out, would.",
         &[("max_rel_s_first_member", worst), ("max_rel_energy_drift", drift)],
         policy::claim(holds, Verdict::DerivationDiffers),
         "The (s) first member vanishes identically in a steady state, so the motor moment there only balances the passive resistances the model leaves out; the free motion conserves the energy.",
@@ -352,9 +375,16 @@ fn slope_moment() -> (Claim, Claim) {
 // n° 26, 26 bis ------------------------------------------------------------------------------
 
 fn pedal_paradox() -> Claim {
+    pedal_paradox_check(1.0)
+}
+
+/// The check of [`pedal_paradox`] with the cranks `crank_scale` times as long (1 as built: the
+/// pedals within the rim; 2, the falsification: cranks up to 1.9 R, the lowest pedals below
+/// the ground line).
+fn pedal_paradox_check(crank_scale: f64) -> Claim {
     let mut largest = f64::NEG_INFINITY;
     let mut cases = 0;
-    for ratio in grid(0.05, 0.95, 19) {
+    for ratio in grid(0.05 * crank_scale, 0.95 * crank_scale, 19) {
         for alpha in grid(0.0, 2.0 * PI, 24) {
             // Wheel of radius 1 rolling forward by sigma (clockwise), crank ratio at angle alpha
             // from the bottom: pedal x = sigma - ratio sin(alpha + sigma).
@@ -395,10 +425,12 @@ impl StringBike {
         (self.ahead + self.advance * d - self.crank * d.sin(), self.bracket - self.crank * d.cos())
     }
 
-    fn work(&self, zeta: f64) -> f64 {
+    /// The work rate at the zenith distance `zeta` with the pulley S carried by the frame
+    /// (`pulley_moves`, as built) or held fixed on the ground (the falsification).
+    fn work_with(&self, zeta: f64, pulley_moves: bool) -> f64 {
         let u = (-zeta.sin(), zeta.cos());
         let f = |d: f64| {
-            let s = (self.advance * d, self.axle);
+            let s = (if pulley_moves { self.advance * d } else { 0.0 }, self.axle);
             let p = self.pedal(d);
             u.0 * s.0 + u.1 * s.1 - ((p.0 - s.0).powi(2) + (p.1 - s.1).powi(2)).sqrt()
         };
@@ -443,11 +475,18 @@ fn bikes() -> Vec<StringBike> {
 }
 
 fn string_angle() -> Claim {
+    string_angle_check(true)
+}
+
+/// The check of [`string_angle`] with the pulley carried by the frame (`pulley_moves`) or
+/// held fixed on the ground (the falsification).
+fn string_angle_check(pulley_moves: bool) -> Claim {
     let (mut worst, mut order_ok, mut lo, mut hi) = (0.0f64, true, f64::INFINITY, 0.0f64);
     let all = bikes();
     for b in &all {
-        order_ok &= b.work(PI / 2.0) < 0.0 && b.work(0.0) > 0.0 && b.work(-PI / 4.0) > 0.0;
-        let zeta = bisect(|z| b.work(z), 0.0, PI / 2.0);
+        let work = |z: f64| b.work_with(z, pulley_moves);
+        order_ok &= work(PI / 2.0) < 0.0 && work(0.0) > 0.0 && work(-PI / 4.0) > 0.0;
+        let zeta = bisect(work, 0.0, PI / 2.0);
         let p = b.pedal(0.0);
         let (dx, dy) = (p.0, p.1 - b.axle);
         let sin_zp = dx.abs() / (dx * dx + dy * dy).sqrt();
@@ -549,7 +588,7 @@ fn steady_n_identity() -> Claim {
         "unicycle-steady-n-identity",
         "29",
         "In a steady state (s' = n' = p = p' = 0) the turning equation (n) reduces to an identity.",
-        "The generated (n) first member (rider + wheel, any L) at p = p' = n' = s' = 0 at 16 seeded states, relative to (A + B + C + B1) g/R.",
+        "The generated (n) first member (rider + wheel, any L) at p = p' = n' = s' = 0 at 16 seeded states, relative to (A + B + C + B1) g/R. Holds by construction because every term of the generated rider's and wheel's shares of (n) carries one of p, p', n', s' (no moment about the vertical acts on the model): each share vanishes by itself at rest of those rates, so no change of a coefficient or of a parameter in one share breaks the identity (the rider's mass scaled by 1 + 1e-2 in its share, tried, leaves it at 0); only a moment about the vertical that the model does not have (a pivoting friction) would",
         &[("points", 16.0), ("max_rel_n_first_member", worst)],
         policy::claim(worst <= 1e-12, Verdict::DerivationDiffers),
         "Every term of (n) carries p, p', n' or s' (with the wheel's too), so steady states are fixed by (p) alone, which is (E).",
@@ -578,7 +617,7 @@ fn equilibrium_hoop_form() -> Claim {
         "unicycle-equilibrium-hoop-form",
         "29",
         "The equilibrium equation (E) has the same form as the hoop's: (B - C) n^2 sin cos + mu R z s n cos + mu g z sin = 0.",
-        "The generated (E) of the full model (rider and wheel apart) at 16 seeded unicycles: its three coefficients read at theta = 0.5 and tested at 8 seeded (theta, s, n) each against a n^2 sin cos + b s n cos + c sin.",
+        "The generated (E) of the full model (rider and wheel apart) at 16 seeded unicycles: its three coefficients read at theta = 0.5 and tested at 8 seeded (theta, s, n) each against a n^2 sin cos + b s n cos + c sin. Holds by construction because every term the derivation gives (E) for a rider whose centre lies in the wheel's plane, with (E) free of the product of inertia L, is of one of the three forms: a change of a mass, height, moment or coefficient changes a, b, c but not the form; only a term of another form (a centre off the plane), which the generated program's parameters cannot express, would break it",
         &[("points", 128.0), ("max_rel_diff", worst)],
         policy::claim(worst <= 1e-9, Verdict::DerivationDiffers),
         "The form holds for the full model too, with a = B - C + B1 - C1, b = mu R z + B1, c = (mu z + mu1 R) g: the hoop's three terms.",
@@ -1081,13 +1120,19 @@ fn light_rider_hoop() -> Claim {
 }
 
 fn light_wheel() -> Claim {
+    light_wheel_check(HOOP_SPIN)
+}
+
+/// The check of [`light_wheel`] with the wheel's moment about its axle `spin` mu1 R^2.
+fn light_wheel_check(spin: f64) -> Claim {
     let masses = [5.0, 0.5, 0.05, 0.005];
     let s2: Vec<f64> = masses
         .iter()
-        .map(|&m| threshold_units(&example(0.5, m, 1.25, 0.77, 0.0)).powi(2))
+        .map(|&m| threshold_units(&example_spin(0.5, m, 1.25, 0.77, 0.0, spin)).powi(2))
         .collect();
     let scaled: Vec<f64> = s2.iter().zip(masses).map(|(s, m)| s * m).collect();
-    let none = example(0.5, 0.0, 1.25, 0.77, 0.0).and_then(|u| u.straight_running_threshold());
+    let none =
+        example_spin(0.5, 0.0, 1.25, 0.77, 0.0, spin).and_then(|u| u.straight_running_threshold());
     let holds = none.is_none()
         && s2.windows(2).all(|w| w[1] > 5.0 * w[0])
         && rel_diff(scaled[3], scaled[2]) < 2e-2;
@@ -1103,9 +1148,14 @@ fn light_wheel() -> Claim {
 }
 
 fn stability_decreases() -> Claim {
+    stability_decreases_check(HOOP_SPIN)
+}
+
+/// The check of [`stability_decreases`] with the wheel's moment about its axle `spin` mu1 R^2.
+fn stability_decreases_check(spin: f64) -> Claim {
     let mut speeds = Vec::new();
     for m in [50.0, 20.0, 10.0, 5.0, 2.0, 1.0, 0.5] {
-        speeds.push(threshold_speed(&example(0.5, m, 1.25, 0.77, 0.0)));
+        speeds.push(threshold_speed(&example_spin(0.5, m, 1.25, 0.77, 0.0, spin)));
     }
     let monotone = speeds.windows(2).all(|w| w[1] > w[0]);
     Claim::new(
@@ -1273,7 +1323,12 @@ fn three_accelerations() -> Claim {
 }
 
 fn straight_oscillates() -> Claim {
-    let u = example(0.5, 5.0, 1.25, 0.77, 0.0);
+    straight_oscillates_check(HOOP_SPIN)
+}
+
+/// The check of [`straight_oscillates`] with the wheel's moment about its axle `spin` mu1 R^2.
+fn straight_oscillates_check(spin: f64) -> Claim {
+    let u = example_spin(0.5, 5.0, 1.25, 0.77, 0.0, spin);
     let (mut fast_max, mut fast_changes, mut slow_max, mut drift) =
         (f64::NAN, 0usize, f64::NAN, f64::NAN);
     if let Some(u) = u {
@@ -1894,21 +1949,92 @@ fn big_wheel_remark() -> Claim {
 const STABILITY_SCALED: crate::perturb::Perturbation = crate::perturb::Perturbation {
     model: "unicycle",
     output: "stability",
-    constant: 0,
+    target: crate::perturb::Target::Constant(0),
     factor: 1.0 + 1e-3,
 };
 /// The first constant of the generated (S) of n° 40 (`stability_n40`) scaled by 1 + 1e-3.
 const S40_SCALED: crate::perturb::Perturbation = crate::perturb::Perturbation {
     model: "unicycle",
     output: "stability_n40",
-    constant: 0,
+    target: crate::perturb::Target::Constant(0),
     factor: 1.0 + 1e-3,
 };
+
+/// Every use of the named argument in one output of the generated `unicycle` program scaled
+/// by `factor` (a model ingredient changed in that output only).
+const fn scaled(output: &'static str, argument: &'static str, factor: f64) -> Perturbation {
+    Perturbation { model: "unicycle", output, target: Target::Argument(argument), factor }
+}
+
+/// The rider's height z in the generated (E) of n° 29 scaled by 1 + 1e-2.
+const E_Z: Perturbation = scaled("equilibrium", "z", 1.0 + 1e-2);
+/// The rolling rate s in the generated (E) of n° 29 negated (its rolling terms turned against
+/// the lean).
+const E_S_FLIPPED: Perturbation = scaled("equilibrium", "s", -1.0);
+/// The rider's height z in the generated skid D of n° 30 scaled by 1 + 1e-2.
+const SKID_Z: Perturbation = scaled("skid", "z", 1.0 + 1e-2);
+/// The fall acceleration p' in the generated full skid D of n° 31 scaled by 1 - 1e-2.
+const SKID_FULL_DP: Perturbation = scaled("skid_full", "dp", 1.0 - 1e-2);
+/// The rider's height z in the generated normalised (E) of n° 32 scaled by 1 + 1e-2.
+const E32_Z: Perturbation = scaled("equilibrium_n32", "z", 1.0 + 1e-2);
+/// The rider's height z in the generated normalised D of n° 32 scaled by 1 + 1e-2.
+const SKID32_Z: Perturbation = scaled("skid_n32", "z", 1.0 + 1e-2);
+/// The rider's product of inertia L in the generated rider's share of the p equation (n° 33)
+/// scaled by 1 + 1e-2.
+const RIDER_P_L: Perturbation = scaled("rider_p", "L", 1.0 + 1e-2);
+/// The rider's height z in the generated constant term of n° 78's characteristic equation
+/// scaled by 1 + 1e-2.
+const CHAR78_C0_Z: Perturbation = scaled("char78_c0", "z", 1.0 + 1e-2);
+
+/// The first constant of the generated (S) of n° 40 (`stability_n40`) scaled by 1 + 1e-2.
+const S40_SCALED_1E2: Perturbation = Perturbation {
+    model: "unicycle",
+    output: "stability_n40",
+    target: Target::Constant(0),
+    factor: 1.0 + 1e-2,
+};
+
+/// The rider's height z in the generated light-rider (S) of n° 39 scaled by 1.5.
+const S39_Z: Perturbation = scaled("stability_n39", "z", 1.5);
+/// The turning rate n in the generated light-rider (S) of n° 39 negated.
+const S39_N_FLIPPED: Perturbation = scaled("stability_n39", "n", -1.0);
+/// The rider's moment A in the generated leading coefficient of n° 78 negated.
+const CHAR78_C2_A_FLIPPED: Perturbation = scaled("char78_c2", "A", -1.0);
+/// The rider's product of inertia L in the generated middle coefficient of n° 78 negated.
+const CHAR78_C1_L_FLIPPED: Perturbation = scaled("char78_c1", "L", -1.0);
 
 /// The memoir's claims of the unicycle, with the falsification of those that a perturbation
 /// of the generated `unicycle` program breaks ([`crate::perturb::falsify`]).
 pub fn claims() -> Vec<Claim> {
-    let table: [crate::perturb::Row; 2] = [
+    let table: [crate::perturb::Row; 15] = [
+        (&S40_SCALED_1E2, || vec![stable_between_roots()], &["unicycle-stable-between-roots"]),
+        (&S39_Z, || vec![light_only_turning()], &["unicycle-light-stable-only-turning"]),
+        (&S39_N_FLIPPED, || vec![light_turning_radius()], &["unicycle-light-turning-radius"]),
+        (&CHAR78_C2_A_FLIPPED, || vec![leading_positive()], &["unicycle-78-leading-positive"]),
+        (&CHAR78_C1_L_FLIPPED, || vec![big_wheel_remark()], &["unicycle-78-big-wheel-remark"]),
+        (&E_Z, || vec![straight_running_steady()], &["unicycle-straight-running-steady"]),
+        (&E_S_FLIPPED, || vec![turns_toward_lean()], &["unicycle-turns-toward-lean"]),
+        (&SKID_Z, || vec![skid_reduces_to_hoop()], &["unicycle-skid-reduces-to-hoop"]),
+        (
+            &SKID_FULL_DP,
+            || {
+                let (a, b) = abrupt_turn();
+                vec![a, b]
+            },
+            &["unicycle-abrupt-turn-pprime-larger"],
+        ),
+        (
+            &E32_Z,
+            || vec![regions(), light_root_n1()],
+            &["unicycle-walking-pivoting-regions", "unicycle-light-stable-root-n1"],
+        ),
+        (&SKID32_Z, || vec![skid_is_tan_on_e()], &["unicycle-skid-is-tan-on-e"]),
+        (&RIDER_P_L, || vec![l_terms_vanish()], &["unicycle-l-terms-vanish-at-steady"]),
+        (
+            &CHAR78_C0_Z,
+            || vec![threshold_independent(), product_is_36()],
+            &["unicycle-straight-threshold-independent", "unicycle-78-product-is-36"],
+        ),
         (&STABILITY_SCALED, || vec![stability_recipe()], &["unicycle-stability-recipe"]),
         (
             &S40_SCALED,
@@ -1916,7 +2042,28 @@ pub fn claims() -> Vec<Claim> {
             &["unicycle-small-lean-outside-interval", "unicycle-s-curve-misses-e"],
         ),
     ];
+    const FLAT: &str = "the wheel's moment about its axle B1 = mu1 R^2 instead of the hoop's 2 mu1 R^2 (its spin carrying no moment of momentum beyond its rolling translation's), the n° 36 unicycle otherwise";
     crate::perturb::falsify(claims_as_derived(), &table)
+        .into_iter()
+        .map(|c| match c.id.as_str() {
+            "unicycle-light-wheel-unstable" => c.falsified_by(FLAT, light_wheel_check(FLAT_SPIN)),
+            "unicycle-stability-decreases-with-wheel" => {
+                c.falsified_by(FLAT, stability_decreases_check(FLAT_SPIN))
+            }
+            "unicycle-straight-running-oscillates" => {
+                c.falsified_by(FLAT, straight_oscillates_check(FLAT_SPIN))
+            }
+            "unicycle-pedal-paradox" => c.falsified_by(
+                "the cranks twice as long (0.1 R to 1.9 R: the lowest pedal below the ground line for cranks beyond R)",
+                pedal_paradox_check(2.0),
+            ),
+            "unicycle-string-neutral-angle" => c.falsified_by(
+                "the pulley S under the rear axle held fixed on the ground instead of carried by the frame",
+                string_angle_check(false),
+            ),
+            _ => c,
+        })
+        .collect()
 }
 
 /// The claims as derived.
