@@ -308,6 +308,11 @@ pub(crate) fn simulate<'py>(
     d.set_item("fall_angle", fall_angle)?;
     d.set_item("steer_lock", steer_lock)?;
     d.set_item("singular_pivot", carvallo::whipple_nonlinear::SINGULAR_PIVOT)?;
+    let singular_t = match run.end.0 {
+        RunEnd::Singular { t, .. } => Some(t),
+        _ => None,
+    };
+    d.set_item("singular_t", singular_t)?;
     d.set_item("max_energy_drift", run.max_energy_drift)?;
     set_run(&d, how, &run.stats, None)?;
     Ok(d)

@@ -1043,7 +1043,8 @@ fn sweep<'py>(
 /// `torque_t`) the lean torque T9 beside `torque_roll` and `torque_steer`; the dict holds `t`,
 /// `roll`, `steer`, `lean` (the torso on its joint), `yaw`, `pitch`, `x`, `y`, `energy`, the
 /// counts, `max_energy_drift` and `status` (`completed`, `fell`, `torso fell`, `steer lock`,
-/// `singular`: a pivot of the constraint solve fell to `singular_pivot` of its upright value)
+/// `singular`: a pivot of the constraint solve fell to `singular_pivot` of its upright value,
+/// at `singular_t`, None otherwise)
 /// with `status_line` naming the pivot (as `carvallo simulate --model lean-rider --json`); a
 /// start at or beyond the singular configuration raises ParameterError naming the pivot.
 #[pyfunction]

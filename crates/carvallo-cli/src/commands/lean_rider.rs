@@ -25,7 +25,7 @@
 
 use carvallo::numerics::integrate::{Grid, IntegrateError, Integration};
 use carvallo::whipple::lean_rider::{
-    Joint, LeanGains, LeanRider, LeanRun, Limits, INPUT_NAMES, STATE_NAMES,
+    Joint, LeanGains, LeanRider, LeanRun, Limits, RunEnd, INPUT_NAMES, STATE_NAMES,
 };
 use carvallo::whipple::transfer::FrequencyPoint;
 use carvallo::whipple_nonlinear::SINGULAR_PIVOT;
@@ -286,6 +286,10 @@ pub fn simulate(
             "fall_angle": limits.fall_angle,
             "steer_lock": limits.steer_lock,
             "singular_pivot": SINGULAR_PIVOT,
+            "singular_t": match run.end.0 {
+                RunEnd::Singular { t, .. } => Some(t),
+                _ => None,
+            },
             "rhs_evaluations": run.stats.rhs_evaluations,
             "steps": run.stats.steps,
             "rejected_steps": run.stats.rejected_steps,
