@@ -29,22 +29,23 @@
 //! empty ([`LeanRider::stable_speeds`] says so); joint stiffness or lean feedback makes one.
 //!
 //! # The singular configuration
-//! The dependent rates come from the front contact's three constraint rows solved one after
-//! the other, as the bicycle's do ([its singular
+//! The dependent rates come from the front contact's three constraint rows solved one after the
+//! other, as the bicycle's do ([its singular
 //! configurations](super::nonlinear#the-singular-configurations)): every `A_q5d_*` formula of
 //! the generated program divides by the pitch rate's coefficient in the vertical row
 //! (`b_F_vertical_q5d`), every `A_q3d_*` by the yaw rate's in the lateral row
 //! (`b_F_lateral_q3d`) and every `A_q8d_*` by the front wheel rate's in the longitudinal row
-//! (`b_F_longitudinal_q8d`) ([`pivot_scene`]); the one other division, $\cos q_4$ in
-//! `A_q3d_q6d`, vanishes only at a roll of ±π/2, beyond any fall angle. The torso does not
-//! enter them: they are the bicycle's three pivots ([`PIVOTS`](super::nonlinear::PIVOTS)) of
-//! the same geometry, and with the joint locked the rider is the bicycle of
-//! [`LeanRider::locked`]. A simulation therefore ends, [`RunEnd::Singular`] (status
-//! *singular*, with the pivot), when the smallest of [`LeanRider::pivot_ratios`] (each pivot
-//! over its upright value) falls to [`SINGULAR_PIVOT`](super::nonlinear::SINGULAR_PIVOT) =
-//! 1 %: an event on the signed ratio, located on the interpolant like the falls, so that a step
-//! jumping across the pole registers too; a start at or beyond it is refused
-//! ([`LeanRiderError::SingularStart`], naming the pivot and its ratio).
+//! (`b_F_longitudinal_q8d`) ([`pivot_scene`]). The program's other divisions are by $\cos q_4$
+//! (zero only at a roll of ±π/2) and by `n_F`, the length of the vertical's projection on the
+//! front wheel's plane (zero only where the front wheel lies flat). The torso does not enter
+//! them: they are the bicycle's three pivots ([`PIVOTS`](super::nonlinear::PIVOTS)) of the same
+//! geometry, and with the joint locked the rider is the bicycle of [`LeanRider::locked`]. A
+//! simulation therefore ends, [`RunEnd::Singular`] (status *singular*, with the pivot), when
+//! the smallest of [`LeanRider::pivot_ratios`] (each pivot over its upright value) falls to
+//! [`SINGULAR_PIVOT`](super::nonlinear::SINGULAR_PIVOT) = 1 %: an event on the signed ratio,
+//! located on the interpolant like the falls, so that a step jumping across the pole registers
+//! too; a start at or beyond it is refused ([`LeanRiderError::SingularStart`], naming the pivot
+//! and its ratio).
 
 use std::fmt;
 use std::ops::{Add, Div, Mul, Sub};
@@ -1052,10 +1053,11 @@ impl LeanRider {
     /// `limits.steer_lock` ([`RunEnd::SteerLock`]), the smallest of the
     /// [`pivot_ratios`](Self::pivot_ratios) falling to
     /// [`SINGULAR_PIVOT`](super::nonlinear::SINGULAR_PIVOT) ([`RunEnd::Singular`]: an event on
-    /// the signed ratio, so a step across the pole registers too) or `stop` being set. At every evaluation the
-    /// pitch is put back on the constraint by one Newton step from the carried value, as the
-    /// bicycle's right-hand side does ([`projected_rate`](Self::projected_rate)); the energy
-    /// drift is measured at every accepted step. The implicit method's Newton iterations use
+    /// the signed ratio, so a step across the pole registers too) or `stop` being set. At
+    /// every evaluation the pitch is put back on the constraint by one Newton step from the
+    /// carried value, as the bicycle's right-hand side does
+    /// ([`projected_rate`](Self::projected_rate)); the energy drift is measured at every
+    /// accepted step. The implicit method's Newton iterations use
     /// the generated state Jacobian ([`jacobian`](Self::jacobian)).
     ///
     /// # Errors
