@@ -307,3 +307,57 @@ fn bode_phase_is_a_function_of_the_frequency() {
     assert!(number(&a["magnitude_db"]).is_finite() && number(&a["magnitude_db"]) > -200.0, "{a}");
     assert_eq!(alone["input"], "lean");
 }
+
+/// `simulate --model lean-rider` from 3 m/s and a roll of 0.5 rad ends near the equations'
+/// singular configuration (the front wheel broadside to the line of contacts, the yaw rate's
+/// pivot at 1 % of its upright value), status `singular`, at the time the library's test
+/// (crates/carvallo/tests/it/whipple/lean_rider_singular.rs) finds with DOP853 and Verner's
+/// pair at rtol 1e-12, by RK4 at the default 1 ms and DOPRI5 alike; a start beyond a singular
+/// configuration (the roll 1.565 rad under a fall angle of 1.57 rad, where the pitch rate's
+/// pivot is at 0.0058) is refused naming the pivot and its ratio (exit 2).
+#[test]
+fn a_fall_into_the_singular_configuration_ends_singular() {
+    const REFERENCE: f64 = 0.4680928871162773;
+    for (method, within) in [("rk4", 1e-7), ("dopri5", 1e-9)] {
+        let args = ["simulate", "--model", "lean-rider", "--speed", "3", "--lean0", "0.5"];
+        let (code, out, err) =
+            carvallo(&[&args[..], &["--duration", "1", "--method", method, "--json"]].concat());
+        assert_eq!(code, 0, "{err}");
+        let v: Value = serde_json::from_str(&out).unwrap();
+        let line = v["status_line"].as_str().unwrap();
+        assert_eq!(v["status"], "singular", "{method}: {line}");
+        assert_eq!(v["singular_pivot"].as_f64(), Some(0.01));
+        let t = v["singular_t"].as_f64().unwrap();
+        assert!((t - REFERENCE).abs() < within, "{method}: {t} against {REFERENCE}");
+        assert!(
+            line.starts_with("singular at t = 0.4680928")
+                && line.contains("s: the front wheel stands broadside to the line of contacts")
+                && line.contains("the yaw rate's pivot at 0.01 of its upright value"),
+            "{line}"
+        );
+        let times = v["t"].as_array().unwrap();
+        assert_eq!(times.last().and_then(Value::as_f64), Some(t), "the end is the last row");
+    }
+    let (code, _, err) = carvallo(&[
+        "simulate",
+        "--model",
+        "lean-rider",
+        "--speed",
+        "3",
+        "--lean0",
+        "1.565",
+        "--fall-angle",
+        "1.57",
+        "--duration",
+        "1",
+    ]);
+    assert_eq!(code, 2, "{err}");
+    assert!(
+        err.contains(
+            "invalid start at roll 1.565 rad, steer 0 rad: at or beyond the singular \
+             configuration (the pitch folds, the front wheel just touching the ground): the \
+             pitch rate's pivot of the constraint solve at 0.0057"
+        ),
+        "{err}"
+    );
+}

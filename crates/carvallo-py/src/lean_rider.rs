@@ -7,7 +7,7 @@
 
 use std::sync::atomic::Ordering;
 
-use carvallo::numerics::integrate::{Grid, Integration};
+use carvallo::numerics::integrate::{Grid, IntegrateError, Integration};
 use carvallo::whipple::lean_rider::{
     Joint, LeanGains, LeanRider, LeanRiderParams, LeanRun, Limits, RunEnd, INPUT_NAMES, STATE_NAMES,
 };
@@ -289,7 +289,10 @@ pub(crate) fn simulate<'py>(
     let run = interruptible(py, |stop| {
         rider.simulate(x0, &|t| torques.at(t), Joint::Free, grid, how, limits, stop)
     })?
-    .map_err(|e| err(format!("the integration failed: {e:?}")))?;
+    .map_err(|e| match e {
+        IntegrateError::Model(e) => err(e.to_string()),
+        e => err(format!("the integration failed: {e:?}")),
+    })?;
     if let RunEnd::Interrupted { .. } = run.end.0 {
         // interruptible raised KeyboardInterrupt already when the flag came from Ctrl-C.
         return Err(pyo3::exceptions::PyKeyboardInterrupt::new_err("interrupted"));
@@ -304,6 +307,12 @@ pub(crate) fn simulate<'py>(
     d.set_item("status_line", line)?;
     d.set_item("fall_angle", fall_angle)?;
     d.set_item("steer_lock", steer_lock)?;
+    d.set_item("singular_pivot", carvallo::whipple_nonlinear::SINGULAR_PIVOT)?;
+    let singular_t = match run.end.0 {
+        RunEnd::Singular { t, .. } => Some(t),
+        _ => None,
+    };
+    d.set_item("singular_t", singular_t)?;
     d.set_item("max_energy_drift", run.max_energy_drift)?;
     set_run(&d, how, &run.stats, None)?;
     Ok(d)

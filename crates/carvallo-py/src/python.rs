@@ -1042,8 +1042,11 @@ fn sweep<'py>(
 /// For the leaning rider's params (`lean_rider()`): `lean0` is the roll, `torque_lean` (with
 /// `torque_t`) the lean torque T9 beside `torque_roll` and `torque_steer`; the dict holds `t`,
 /// `roll`, `steer`, `lean` (the torso on its joint), `yaw`, `pitch`, `x`, `y`, `energy`, the
-/// counts, `max_energy_drift` and `status` (`completed`, `fell`, `torso fell`, `steer lock`)
-/// with `status_line` (as `carvallo simulate --model lean-rider --json`).
+/// counts, `max_energy_drift` and `status` (`completed`, `fell`, `torso fell`, `steer lock`,
+/// `singular`: a pivot of the constraint solve fell to `singular_pivot` of its upright value,
+/// at `singular_t`, None otherwise)
+/// with `status_line` naming the pivot (as `carvallo simulate --model lean-rider --json`); a
+/// start at or beyond the singular configuration raises ParameterError naming the pivot.
 #[pyfunction]
 #[pyo3(signature = (params, speed, lean0, duration, step = 0.001, every = 10, strict = false, *, method = "rk4", rtol = None, atol = None, stop_when = Vec::new(), torque_t = None, torque_roll = None, torque_steer = None, impulses = Vec::new(), k = None, fall_angle = carvallo::whipple_nonlinear::DEFAULT_FALL_ANGLE, steer_lock = carvallo::whipple_nonlinear::DEFAULT_STEER_LOCK, torque_lean = None))]
 #[allow(clippy::too_many_arguments)]

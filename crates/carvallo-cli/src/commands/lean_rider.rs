@@ -23,11 +23,12 @@
 //!   `interrupted`), `status_line`, the counts and the energy drift. Batches, impulses, torque
 //!   files, gains and stop conditions are the bicycle's.
 
-use carvallo::numerics::integrate::{Grid, Integration};
+use carvallo::numerics::integrate::{Grid, IntegrateError, Integration};
 use carvallo::whipple::lean_rider::{
-    Joint, LeanGains, LeanRider, LeanRun, Limits, INPUT_NAMES, STATE_NAMES,
+    Joint, LeanGains, LeanRider, LeanRun, Limits, RunEnd, INPUT_NAMES, STATE_NAMES,
 };
 use carvallo::whipple::transfer::FrequencyPoint;
+use carvallo::whipple_nonlinear::SINGULAR_PIVOT;
 use serde_json::{json, Value};
 
 use super::simulate_inputs::{Input, Kind};
@@ -261,12 +262,13 @@ pub fn simulate(
     x0[3] = lean0;
     let run = rider
         .simulate(x0, &torques, Joint::Free, &grid, how, limits, crate::interrupt::interrupt_flag())
-        .map_err(|e| {
-            format!(
+        .map_err(|e| match e {
+            IntegrateError::Model(e) => e.to_string(),
+            e => format!(
                 "the integration diverged: {e:?} (--method {}); take a smaller --step or an \
                  adaptive --method",
                 how.method.name()
-            )
+            ),
         })?;
     let (status, line) = (run.end.0.status(), run.status_line(limits));
     const COLUMNS: [&str; 9] = LeanRun::COLUMNS;
@@ -283,6 +285,11 @@ pub fn simulate(
             "status_line": line,
             "fall_angle": limits.fall_angle,
             "steer_lock": limits.steer_lock,
+            "singular_pivot": SINGULAR_PIVOT,
+            "singular_t": match run.end.0 {
+                RunEnd::Singular { t, .. } => Some(t),
+                _ => None,
+            },
             "rhs_evaluations": run.stats.rhs_evaluations,
             "steps": run.stats.steps,
             "rejected_steps": run.stats.rejected_steps,

@@ -27,6 +27,25 @@
 //! lean. With Browser + Jason's $k_9 = c_9 = 0$ the torso is an inverted pendulum (a real
 //! eigenvalue near $+7\ \mathrm{s}^{-1}$ at every speed), so its open-loop stable speed range is
 //! empty ([`LeanRider::stable_speeds`] says so); joint stiffness or lean feedback makes one.
+//!
+//! # The singular configuration
+//! The dependent rates come from the front contact's three constraint rows solved one after the
+//! other, as the bicycle's do ([its singular
+//! configurations](super::nonlinear#the-singular-configurations)): every `A_q5d_*` formula of
+//! the generated program divides by the pitch rate's coefficient in the vertical row
+//! (`b_F_vertical_q5d`), every `A_q3d_*` by the yaw rate's in the lateral row
+//! (`b_F_lateral_q3d`) and every `A_q8d_*` by the front wheel rate's in the longitudinal row
+//! (`b_F_longitudinal_q8d`) ([`pivot_scene`]). The program's other divisions are by $\cos q_4$
+//! (zero only at a roll of ±π/2) and by `n_F`, the length of the vertical's projection on the
+//! front wheel's plane (zero only where the front wheel lies flat). The torso does not enter
+//! them: they are the bicycle's three pivots ([`PIVOTS`](super::nonlinear::PIVOTS)) of the same
+//! geometry, and with the joint locked the rider is the bicycle of [`LeanRider::locked`]. A
+//! simulation therefore ends, [`RunEnd::Singular`] (status *singular*, with the pivot), when
+//! the smallest of [`LeanRider::pivot_ratios`] (each pivot over its upright value) falls to
+//! [`SINGULAR_PIVOT`](super::nonlinear::SINGULAR_PIVOT) = 1 %: an event on the signed ratio,
+//! located on the interpolant like the falls, so that a step jumping across the pole registers
+//! too; a start at or beyond it is refused ([`LeanRiderError::SingularStart`], naming the pivot
+//! and its ratio).
 
 use std::fmt;
 use std::ops::{Add, Div, Mul, Sub};
@@ -66,6 +85,19 @@ crate::scene! {
     pub mod contact_scene {
         model: lean_rider,
         outputs: [F_contact_height, F_contact_height_dq5],
+    }
+}
+
+crate::scene! {
+    /// The pivots of the front contact's constraint rows, solved one after the other for the
+    /// dependent rates: the pitch rate's coefficient in the vertical row (`b_F_vertical_q5d`,
+    /// the divisor of every `A_q5d_*`), the yaw rate's in the lateral row (`b_F_lateral_q3d`,
+    /// of every `A_q3d_*`) and the front wheel rate's in the longitudinal row
+    /// (`b_F_longitudinal_q8d`, of every `A_q8d_*`): the bicycle's three
+    /// ([`PIVOTS`](super::nonlinear::PIVOTS)). The equations are singular where one vanishes.
+    pub mod pivot_scene {
+        model: lean_rider,
+        outputs: [b_F_vertical_q5d, b_F_lateral_q3d, b_F_longitudinal_q8d],
     }
 }
 
@@ -160,6 +192,19 @@ pub enum LeanRiderError {
     },
     /// The front wheel cannot touch the ground upright: no pitch puts its contact on it.
     NoUpright,
+    /// A start at or beyond the singular configuration: the pivot
+    /// [`PIVOTS`](super::nonlinear::PIVOTS)`[pivot]` of the constraint solve at or below
+    /// [`SINGULAR_PIVOT`](super::nonlinear::SINGULAR_PIVOT) of its upright value.
+    SingularStart {
+        /// The roll (rad).
+        q4: f64,
+        /// The steer (rad).
+        q7: f64,
+        /// Which pivot ([`PIVOTS`](super::nonlinear::PIVOTS) order).
+        pivot: usize,
+        /// Its ratio to its upright value.
+        ratio: f64,
+    },
 }
 
 impl fmt::Display for LeanRiderError {
@@ -186,6 +231,16 @@ impl fmt::Display for LeanRiderError {
                 "no rear frame pitch puts the front wheel on the ground upright (check d1, d2, \
                  d3, rf and rr)"
             ),
+            LeanRiderError::SingularStart { q4, q7, pivot, ratio } => {
+                let (name, where_) = super::nonlinear::PIVOTS[(*pivot).min(2)];
+                write!(
+                    f,
+                    "invalid start at roll {q4} rad, steer {q7} rad: at or beyond the singular \
+                     configuration ({where_}): the {name}'s pivot of the constraint solve at \
+                     {ratio} of its upright value, at or below {}",
+                    super::nonlinear::SINGULAR_PIVOT
+                )
+            }
         }
     }
 }
@@ -457,6 +512,9 @@ pub struct LeanRider {
     energy: Filled<{ energy_scene::Args::LEN }>,
     dynamics_jac: Filled<{ dynamics_jacobian_scene::Args::LEN }>,
     contact_jac: Filled<{ contact_jacobian_scene::Args::LEN }>,
+    pivot: Filled<{ pivot_scene::Args::LEN }>,
+    /// The pivots upright (roll and steer zero, the pitch $\lambda$).
+    pivot_upright: [f64; 3],
 }
 
 /// The lean joint in a simulation.
@@ -488,6 +546,16 @@ pub enum RunEnd {
     SteerLock {
         /// When (s).
         t: f64,
+    },
+    /// A pivot of the constraint solve fell to
+    /// [`SINGULAR_PIVOT`](super::nonlinear::SINGULAR_PIVOT) of its upright value at `t` (s):
+    /// the equations near their singular configuration ([`LeanRider::pivot_ratios`]).
+    Singular {
+        /// When (s).
+        t: f64,
+        /// Which pivot ([`PIVOTS`](super::nonlinear::PIVOTS) order: 0 pitch rate, 1 yaw
+        /// rate, 2 front wheel rate).
+        pivot: usize,
     },
     /// The stop flag (Ctrl-C) ended the run at `t` (s), the last accepted step.
     Interrupted {
@@ -533,13 +601,15 @@ pub struct LeanRun {
 }
 
 impl RunEnd {
-    /// The status word: `completed`, `fell`, `torso fell`, `steer lock`, `interrupted`.
+    /// The status word: `completed`, `fell`, `torso fell`, `steer lock`, `singular`,
+    /// `interrupted`.
     pub fn status(&self) -> &'static str {
         match self {
             RunEnd::Completed => "completed",
             RunEnd::Fell { .. } => "fell",
             RunEnd::TorsoFell { .. } => "torso fell",
             RunEnd::SteerLock { .. } => "steer lock",
+            RunEnd::Singular { .. } => "singular",
             RunEnd::Interrupted { .. } => "interrupted",
         }
     }
@@ -566,6 +636,11 @@ impl LeanRun {
             RunEnd::SteerLock { t } => {
                 format!("steer lock at t = {t} s: the steer reached ±{steer_lock} rad")
             }
+            RunEnd::Singular { t, pivot } => {
+                let x = &self.end.1;
+                let at = format!("roll {} rad, steer {} rad", x[3], x[5]);
+                super::nonlinear::singular_line_at(t, pivot, &at)
+            }
             RunEnd::Interrupted { t } => format!("interrupted at t = {t} s"),
         }
     }
@@ -576,7 +651,11 @@ impl LeanRun {
     pub fn table(&self, rider: &LeanRider) -> Vec<[f64; 9]> {
         let mut rows: Vec<(f64, [f64; 13])> =
             self.times.iter().copied().zip(self.states.iter().copied()).collect();
-        if let RunEnd::Fell { t } | RunEnd::TorsoFell { t } | RunEnd::SteerLock { t } = self.end.0 {
+        if let RunEnd::Fell { t }
+        | RunEnd::TorsoFell { t }
+        | RunEnd::SteerLock { t }
+        | RunEnd::Singular { t, .. } = self.end.0
+        {
             if rows.last().is_none_or(|(s, _)| *s < t) {
                 rows.push((t, self.end.1));
             }
@@ -664,17 +743,22 @@ impl LeanRider {
             contact_jacobian_scene::PARAMS,
             contact_jacobian_scene::INPUTS,
         );
+        let pivot = Filled::new(&params, 0.0, pivot_scene::PARAMS, pivot_scene::INPUTS);
         let mut rider = LeanRider {
             dynamics,
             contact,
             energy,
             dynamics_jac,
             contact_jac,
+            pivot,
+            pivot_upright: [f64::NAN; 3],
             params: params.clone(),
             lam: 0.0,
         };
         rider.lam = rider.pitch_on_ground(0.0, 0.0).ok_or(LeanRiderError::NoUpright)?;
         (rider.dynamics, rider.energy, rider.dynamics_jac) = with_lam(rider.lam);
+        rider.pivot = Filled::new(&params, rider.lam, pivot_scene::PARAMS, pivot_scene::INPUTS);
+        rider.pivot_upright = rider.pivots(0.0, rider.lam, 0.0);
         Ok(rider)
     }
 
@@ -783,6 +867,35 @@ impl LeanRider {
         values[..3].copy_from_slice(&[q4, q5, q7]);
         let o = contact_scene::eval_array(&self.contact.at(&values));
         (o[0], o[1])
+    }
+
+    /// The pivots of the constraint solve at roll `q4`, pitch `q5` and steer `q7`: the
+    /// coefficients of the pitch rate, the yaw rate and the front wheel rate in the front
+    /// contact's vertical, lateral and longitudinal rows ([`pivot_scene`]), by which the
+    /// dependent rates' formulas divide.
+    pub fn pivots(&self, q4: f64, q5: f64, q7: f64) -> [f64; 3] {
+        let mut values = [0.0; 12];
+        values[..3].copy_from_slice(&[q4, q5, q7]);
+        pivot_scene::eval_array(&self.pivot.at(&values))
+    }
+
+    /// The [`pivots`](Self::pivots) relative to their upright values (roll and steer zero, the
+    /// pitch $\lambda$), in the order of [`PIVOTS`](super::nonlinear::PIVOTS) (pitch rate, yaw
+    /// rate, front wheel rate): 1 upright, 0 where the equations are singular. A simulation
+    /// ends, [`RunEnd::Singular`], when the smallest falls to
+    /// [`SINGULAR_PIVOT`](super::nonlinear::SINGULAR_PIVOT), as the bicycle's does
+    /// ([the bicycle's singular configurations](super::nonlinear#the-singular-configurations)).
+    /// The pitch should put the front wheel on the ground ([`pitch_near`](Self::pitch_near)).
+    pub fn pivot_ratios(&self, q4: f64, q5: f64, q7: f64) -> [f64; 3] {
+        let p = self.pivots(q4, q5, q7);
+        std::array::from_fn(|k| p[k] / self.pivot_upright[k])
+    }
+
+    /// The [`pivot_ratios`](Self::pivot_ratios) at the state `x`, its pitch first put on the
+    /// contact constraint by one Newton step as [`projected_rate`](Self::projected_rate) does.
+    fn projected_pivot_ratios(&self, x: &[f64; 13]) -> [f64; 3] {
+        let (h, dh) = self.contact(x[3], x[PITCH], x[5]);
+        self.pivot_ratios(x[3], x[PITCH] - h / dh, x[5])
     }
 
     /// The pitch that puts the front contact on the ground at roll `q4` and steer `q7`: the
@@ -937,15 +1050,21 @@ impl LeanRider {
     /// `= [T4, T6, T7, T9]` (N m) over `grid` by `how`, with the lean joint `joint`, until the
     /// grid's end, the roll $|q_4|$ or the torso's lean $|q_9|$ reaching `limits.fall_angle`
     /// (rad; [`RunEnd::Fell`], [`RunEnd::TorsoFell`]), the steer $|q_7|$ reaching
-    /// `limits.steer_lock` ([`RunEnd::SteerLock`]) or `stop` being set. At every evaluation the
-    /// pitch is put back on the constraint by one Newton step from the carried value, as the
-    /// bicycle's right-hand side does ([`projected_rate`](Self::projected_rate)); the energy
-    /// drift is measured at every accepted step. The implicit method's Newton iterations use
+    /// `limits.steer_lock` ([`RunEnd::SteerLock`]), the smallest of the
+    /// [`pivot_ratios`](Self::pivot_ratios) falling to
+    /// [`SINGULAR_PIVOT`](super::nonlinear::SINGULAR_PIVOT) ([`RunEnd::Singular`]: an event on
+    /// the signed ratio, so a step across the pole registers too) or `stop` being set. At
+    /// every evaluation the pitch is put back on the constraint by one Newton step from the
+    /// carried value, as the bicycle's right-hand side does
+    /// ([`projected_rate`](Self::projected_rate)); the energy drift is measured at every
+    /// accepted step. The implicit method's Newton iterations use
     /// the generated state Jacobian ([`jacobian`](Self::jacobian)).
     ///
     /// # Errors
     /// [`IntegrateError::Model`] with [`LeanRiderError::NoUpright`] when the front wheel
-    /// cannot touch the ground at the start; the integrator's failures.
+    /// cannot touch the ground at the start, with [`LeanRiderError::SingularStart`] naming the
+    /// pivot and its ratio when the start is at or beyond the singular configuration; the
+    /// integrator's failures.
     #[allow(clippy::too_many_arguments)]
     pub fn simulate(
         &self,
@@ -962,6 +1081,17 @@ impl LeanRider {
         x0[PITCH] = self
             .pitch_near(x0[3], x0[PITCH], x0[5])
             .ok_or(IntegrateError::Model(LeanRiderError::NoUpright))?;
+        let ratios = self.pivot_ratios(x0[3], x0[PITCH], x0[5]);
+        let margin = super::nonlinear::pivot_margin(ratios);
+        if margin.is_nan() || margin <= super::nonlinear::SINGULAR_PIVOT {
+            let pivot = super::nonlinear::smallest_pivot(ratios);
+            return Err(IntegrateError::Model(LeanRiderError::SingularStart {
+                q4: x0[3],
+                q7: x0[5],
+                pivot,
+                ratio: ratios[pivot],
+            }));
+        }
         let energy0 = self.energy(&x0);
         let mut rhs = |t: f64, x: &[f64; 13]| -> Result<[f64; 13], LeanRiderError> {
             Ok(self.projected_rate(x, &torques(t), joint))
@@ -975,6 +1105,10 @@ impl LeanRider {
             |x: &[f64; 13]| -> Result<f64, LeanRiderError> { Ok(fall_angle - x[7].abs()) };
         let mut steer =
             |x: &[f64; 13]| -> Result<f64, LeanRiderError> { Ok(steer_lock - x[5].abs()) };
+        let mut singular = |x: &[f64; 13]| -> Result<f64, LeanRiderError> {
+            let margin = super::nonlinear::pivot_margin(self.projected_pivot_ratios(x));
+            Ok(margin - super::nonlinear::SINGULAR_PIVOT)
+        };
         let (mut times, mut states) = (Vec::new(), Vec::new());
         let mut drift = 0.0f64;
         let mut observe = |point: Point, t: f64, x: &[f64; 13]| -> Result<(), LeanRiderError> {
@@ -994,7 +1128,7 @@ impl LeanRider {
             x0,
             &mut rhs,
             Some(&mut jacobian),
-            &mut [&mut roll, &mut torso, &mut steer],
+            &mut [&mut roll, &mut torso, &mut steer, &mut singular],
             &mut observe,
             stop,
         )?;
@@ -1002,7 +1136,11 @@ impl LeanRider {
         let end = match (outcome.event, outcome.interrupted) {
             (Some(c), _) if c.index == 0 => RunEnd::Fell { t: c.t },
             (Some(c), _) if c.index == 1 => RunEnd::TorsoFell { t: c.t },
-            (Some(c), _) => RunEnd::SteerLock { t: c.t },
+            (Some(c), _) if c.index == 2 => RunEnd::SteerLock { t: c.t },
+            (Some(c), _) => RunEnd::Singular {
+                t: c.t,
+                pivot: super::nonlinear::smallest_pivot(self.projected_pivot_ratios(&x)),
+            },
             (None, true) => RunEnd::Interrupted { t },
             (None, false) => RunEnd::Completed,
         };

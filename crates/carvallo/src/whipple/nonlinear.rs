@@ -297,6 +297,34 @@ pub const PIVOTS: [(&str, &str); 3] = [
     ("front wheel rate", "the front wheel lies flat"),
 ];
 
+/// The smallest of three pivot ratios (NaN when one is NaN): the bicycle's and the leaning
+/// rider's margin to their singular configuration, compared with [`SINGULAR_PIVOT`].
+pub fn pivot_margin(ratios: [f64; 3]) -> f64 {
+    if ratios.iter().any(|v| v.is_nan()) {
+        return f64::NAN;
+    }
+    ratios[0].min(ratios[1]).min(ratios[2])
+}
+
+/// The index in [`PIVOTS`] of the smallest of `ratios`.
+pub fn smallest_pivot(ratios: [f64; 3]) -> usize {
+    (0..3).min_by(|&a, &b| ratios[a].total_cmp(&ratios[b])).unwrap_or(1)
+}
+
+/// The status line of a run that ended near its singular configuration at time `t` (s), the
+/// pivot [`PIVOTS`]`[pivot]` having fallen to [`SINGULAR_PIVOT`], at the configuration
+/// `at` (words, e.g. `lean -1.18 rad, steer -1.34 rad`): `singular at t = T s: ` what the
+/// bicycle does where that pivot vanishes, the configuration and which pivot. The bicycle's
+/// ([`WhippleNonlinear::singular_line`]) and the leaning rider's
+/// ([`LeanRun::status_line`](crate::whipple::lean_rider::LeanRun::status_line)).
+pub fn singular_line_at(t: f64, pivot: usize, at: &str) -> String {
+    let (name, where_) = PIVOTS[pivot.min(2)];
+    format!(
+        "singular at t = {t} s: {where_} ({at}), the {name}'s pivot at {SINGULAR_PIVOT} of its \
+         upright value; the equations are singular where it vanishes"
+    )
+}
+
 /// The fall angle of [`WhippleNonlinear::new`] (rad): a stated lean, 1.2 rad (69°). The
 /// Whipple model gives its frames and rider no extent (mass centres and inertias only), so no
 /// geometry tells where the frame, a pedal or the handlebar touches the ground; its only
@@ -713,14 +741,8 @@ impl WhippleNonlinear {
     /// and (`lean`, `pitch`, `steer`) (rad): `singular at t = T s: ` what the bicycle does
     /// where the smallest pivot vanishes ([`PIVOTS`]), the lean and steer, and which pivot.
     pub fn singular_line(&self, t: f64, lean: f64, pitch: f64, steer: f64) -> String {
-        let ratios = self.pivot_ratios(lean, pitch, steer);
-        let k = (0..3).min_by(|&a, &b| ratios[a].total_cmp(&ratios[b])).unwrap_or(1);
-        let (name, where_) = PIVOTS[k];
-        format!(
-            "singular at t = {t} s: {where_} (lean {lean} rad, steer {steer} rad), the \
-             {name}'s pivot at {SINGULAR_PIVOT} of its upright value; the equations are \
-             singular where it vanishes"
-        )
+        let k = smallest_pivot(self.pivot_ratios(lean, pitch, steer));
+        singular_line_at(t, k, &format!("lean {lean} rad, steer {steer} rad"))
     }
 
     /// Checks that `start` is a physical start and returns its pitch: a lean inside the fall

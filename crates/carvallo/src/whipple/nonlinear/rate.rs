@@ -234,11 +234,7 @@ impl StateRate {
 
     /// The smallest of the [`pivot_ratios`](Self::pivot_ratios) (NaN when one is NaN).
     pub fn pivot_margin(&self, lean: f64, pitch: f64, steer: f64) -> f64 {
-        let r = self.pivot_ratios(lean, pitch, steer);
-        if r.iter().any(|v| v.is_nan()) {
-            return f64::NAN;
-        }
-        r[0].min(r[1]).min(r[2])
+        super::pivot_margin(self.pivot_ratios(lean, pitch, steer))
     }
 
     /// The contact constraint $h$ (m) and $\partial h/\partial\theta$ (m/rad).
