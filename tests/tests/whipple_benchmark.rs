@@ -18,8 +18,8 @@ const SPEED_REL: f64 = 1e-12;
 const EIG_TOL: f64 = 1e-12;
 
 fn anchors() -> (toml::Table, String) {
-    let path = PathBuf::from(env!("CARGO_MANIFEST_DIR"))
-        .join("../data/anchors/whipple-benchmark.toml");
+    let path =
+        PathBuf::from(env!("CARGO_MANIFEST_DIR")).join("../data/anchors/whipple-benchmark.toml");
     let text = std::fs::read_to_string(&path).unwrap_or_else(|e| {
         panic!("anchors file {} is missing or unreadable: {e}", path.display())
     });
