@@ -30,21 +30,12 @@ pub fn derivative_name(output: &str, variable: &str) -> String {
     format!("d_{output}__{variable}")
 }
 
-/// A derivative while it is built: structurally zero, exactly one, a value, or the negation
-/// of a value not yet computed.
-///
-/// The deferred negation costs nothing until a sum or a difference absorbs it
-/// ($x + (-y) = x - y$, $x - (-y) = x + y$, $-x - y = -(x + y)$) or an output needs it: the
-/// derivative of $a - b$ where only $b$ depends on the variable, or of $\cos$, is then not a
-/// separate `neg`. Each rewrite is exact in IEEE arithmetic (subtraction is the addition of the
-/// negation, and rounding is symmetric about zero), so the derivatives have the bits they
-/// would have with every negation computed where it arises.
+/// A derivative while it is built: structurally zero, exactly one, or a value.
 #[derive(Clone, Copy, Debug, PartialEq)]
 enum D {
     Zero,
     One,
     V(Value),
-    Neg(Value),
 }
 
 /// The builder and the helpers that skip zeros and ones.
@@ -53,22 +44,12 @@ struct Diff {
 }
 
 impl Diff {
-    /// The value of `d`, materialised (a constant for one, a `neg` for a deferred negation;
-    /// zero is never asked for).
+    /// The value of `d`, materialised (a constant for one; zero is never asked for).
     fn value(&mut self, d: D) -> Option<Value> {
         match d {
             D::Zero => None,
             D::One => Some(self.b.constant(1.0)),
             D::V(v) => Some(v),
-            D::Neg(v) => Some(self.b.neg(v)),
-        }
-    }
-
-    /// `d` with a one made a value (the constant), so that sums see values and negations only.
-    fn no_one(&mut self, d: D) -> D {
-        match d {
-            D::One => D::V(self.b.constant(1.0)),
-            x => x,
         }
     }
 
@@ -78,7 +59,6 @@ impl Diff {
             D::Zero => D::Zero,
             D::One => D::V(c),
             D::V(v) => D::V(self.b.mul(c, v)),
-            D::Neg(v) => D::Neg(self.b.mul(c, v)),
         }
     }
 
@@ -87,8 +67,7 @@ impl Diff {
         match d {
             D::Zero => D::Zero,
             D::One => D::V(self.b.constant(-1.0)),
-            D::V(v) => D::Neg(v),
-            D::Neg(v) => D::V(v),
+            D::V(v) => D::V(self.b.neg(v)),
         }
     }
 
@@ -96,12 +75,13 @@ impl Diff {
     fn add(&mut self, a: D, b: D) -> D {
         match (a, b) {
             (D::Zero, x) | (x, D::Zero) => x,
-            _ => match (self.no_one(a), self.no_one(b)) {
-                (D::V(x), D::V(y)) => D::V(self.b.add(x, y)),
-                (D::V(x), D::Neg(y)) | (D::Neg(y), D::V(x)) => D::V(self.b.sub(x, y)),
-                (D::Neg(x), D::Neg(y)) => D::Neg(self.b.add(x, y)),
-                _ => D::Zero,
-            },
+            _ => {
+                let (x, y) = (self.value(a), self.value(b));
+                match (x, y) {
+                    (Some(x), Some(y)) => D::V(self.b.add(x, y)),
+                    _ => D::Zero,
+                }
+            }
         }
     }
 
@@ -110,13 +90,13 @@ impl Diff {
         match (a, b) {
             (x, D::Zero) => x,
             (D::Zero, y) => self.neg(y),
-            _ => match (self.no_one(a), self.no_one(b)) {
-                (D::V(x), D::V(y)) => D::V(self.b.sub(x, y)),
-                (D::V(x), D::Neg(y)) => D::V(self.b.add(x, y)),
-                (D::Neg(x), D::V(y)) => D::Neg(self.b.add(x, y)),
-                (D::Neg(x), D::Neg(y)) => D::V(self.b.sub(y, x)),
-                _ => D::Zero,
-            },
+            _ => {
+                let (x, y) = (self.value(a), self.value(b));
+                match (x, y) {
+                    (Some(x), Some(y)) => D::V(self.b.sub(x, y)),
+                    _ => D::Zero,
+                }
+            }
         }
     }
 }
@@ -273,11 +253,10 @@ impl Program {
                     b.div(half, value)
                 }),
                 Op::Sin(a) => unary(&mut g, d_of(a), |b| b.cos(map(a))),
-                Op::Cos(a) => {
-                    // -(a' sin a), the negation deferred.
-                    let d = unary(&mut g, d_of(a), |b| b.sin(map(a)));
-                    d.into_iter().map(|x| g.neg(x)).collect()
-                }
+                Op::Cos(a) => unary(&mut g, d_of(a), |b| {
+                    let s = b.sin(map(a));
+                    b.neg(s)
+                }),
                 Op::Tan(a) => unary(&mut g, d_of(a), |b| {
                     let t2 = b.powi(value, 2);
                     let one = b.constant(1.0);
@@ -497,39 +476,6 @@ output k = b
         .expect("parses");
         let e = q.with_jacobian(&["x"]).unwrap_err().to_string();
         assert!(e.contains("\"d_f__x\" is already an output"), "{e}");
-    }
-
-    #[test]
-    fn negations_are_absorbed_by_sums_and_differences() {
-        // With a = 1 - x sin y and b = cos y, whose y-derivatives are negations
-        // (-(x cos y), -(sin y)), every way a deferred negation meets a sum or a difference:
-        // f = a + b (both negated: one `neg` of the sum), g = x - f (zero minus a negation),
-        // h = sin y - a (a value minus a negation: an `add`), k = a - sin y (a negation minus
-        // a value: one `neg` of a sum), m = a - b (both negated), n = sin y + b (a value plus
-        // a negation: a `sub`). Only f's and k's derivatives end negated: 2 `neg` where
-        // computing every negation where it arises takes 3, and each derivative must equal
-        // the dual numbers' (a wrong absorption rule, such as x - (-y) as x - y, fails it).
-        let p = Program::parse(
-            "carvallo-ir 1\nmodel m\ninput x\ninput y\nlet c0 = const 1.0\n\
-             let t0 = sin y\nlet t1 = mul x t0\nlet a = sub c0 t1\nlet b = cos y\n\
-             let f = add a b\nlet g = sub x f\nlet h = sub t0 a\nlet k = sub a t0\n\
-             let m = sub a b\nlet n = add t0 b\n\
-             output f = f\noutput g = g\noutput h = h\noutput k = k\noutput m = m\n\
-             output n = n\n",
-        )
-        .expect("parses");
-        let j = p.with_jacobian(&["y"]).expect("differentiates");
-        let negs = j.insts.iter().filter(|i| matches!(i.op, Op::Neg(_))).count();
-        assert_eq!(negs, 2, "{}", j.to_text());
-        for (x, y) in [(0.7, -0.4), (-1.3, 2.9), (0.0, 0.0)] {
-            let got = j.eval_f64(&[], &[x, y]).expect("evaluates");
-            let dy = [Dual::<1>::constant(x), Dual::variable(y, 0)];
-            let want = dual::eval(&p, &[], &dy).expect("dual evaluation");
-            for (k, w) in want.iter().enumerate() {
-                let err = (got[6 + k] - w.grad[0]).abs();
-                assert!(err <= 4.0 * f64::EPSILON, "output {k} at ({x}, {y}): {got:?}");
-            }
-        }
     }
 
     #[test]
