@@ -424,8 +424,17 @@ impl StateRate {
         });
         let speed = o[12];
         let m = [o[0], o[1], o[2], o[3], o[4], o[5]];
-        let ud = solve_symmetric(m, [o[6] + torque[0], o[7] + torque[1], o[8]])
-            .ok_or(NonlinearError::SingularMassMatrix { lean, steer })?;
+        // M^-1 as its adjugate and the determinant's reciprocal, formed once for the
+        // accelerations and every column below (the operations of `solve_symmetric`, so the
+        // same bits as solving afresh).
+        let inverse = SymmetricInverse::new(m);
+        let finite = |x: [f64; 3]| {
+            x.iter()
+                .all(|v| v.is_finite())
+                .then_some(x)
+                .ok_or(NonlinearError::SingularMassMatrix { lean, steer })
+        };
+        let ud = finite(inverse.apply([o[6] + torque[0], o[7] + torque[1], o[8]]))?;
         // d ud / d y_j = M^-1 (df_j - dM_j ud), column by column.
         let mut dud = [[0.0; LEN]; 3];
         for j in 0..LEN {
@@ -438,8 +447,7 @@ impl StateRate {
             if rhs.iter().all(|v| *v == 0.0) {
                 continue;
             }
-            let col = solve_symmetric(m, rhs)
-                .ok_or(NonlinearError::SingularMassMatrix { lean, steer })?;
+            let col = finite(inverse.apply(rhs))?;
             for (r, v) in dud.iter_mut().zip(col) {
                 r[j] = v;
             }
@@ -502,19 +510,54 @@ where
         + std::ops::Mul<Output = T>
         + std::ops::Div<Output = T>,
 {
-    let [a, b, c, d, e, g] = m;
-    // Cofactors of the symmetric matrix [[a, b, c], [b, d, e], [c, e, g]].
-    let c11 = d * g - e * e;
-    let c12 = c * e - b * g;
-    let c13 = b * e - c * d;
-    let c22 = a * g - c * c;
-    let c23 = b * c - a * e;
-    let c33 = a * d - b * b;
-    let det = a * c11 + b * c12 + c * c13;
-    let r = T::from(1.0) / det;
-    [
-        (c11 * f[0] + c12 * f[1] + c13 * f[2]) * r,
-        (c12 * f[0] + c22 * f[1] + c23 * f[2]) * r,
-        (c13 * f[0] + c23 * f[1] + c33 * f[2]) * r,
-    ]
+    SymmetricInverse::new(m).apply(f)
+}
+
+/// The inverse of a symmetric $3 \times 3$ matrix as [`solve_symmetric_in`] applies it: the
+/// cofactors and the reciprocal of the determinant, formed once and applied to any number of
+/// right-hand sides, each solve the same operations (so the same bits) as
+/// [`solve_symmetric_in`]'s.
+#[derive(Clone, Copy, Debug)]
+pub struct SymmetricInverse<T> {
+    /// The cofactors `[c11, c12, c13, c22, c23, c33]`.
+    cofactors: [T; 6],
+    /// The reciprocal of the determinant.
+    r: T,
+}
+
+impl<T> SymmetricInverse<T>
+where
+    T: Copy
+        + From<f64>
+        + std::ops::Add<Output = T>
+        + std::ops::Sub<Output = T>
+        + std::ops::Mul<Output = T>
+        + std::ops::Div<Output = T>,
+{
+    /// The inverse of the symmetric matrix given as `[m11, m12, m13, m22, m23, m33]`.
+    #[inline]
+    pub fn new(m: [T; 6]) -> Self {
+        let [a, b, c, d, e, g] = m;
+        // Cofactors of the symmetric matrix [[a, b, c], [b, d, e], [c, e, g]].
+        let c11 = d * g - e * e;
+        let c12 = c * e - b * g;
+        let c13 = b * e - c * d;
+        let c22 = a * g - c * c;
+        let c23 = b * c - a * e;
+        let c33 = a * d - b * b;
+        let det = a * c11 + b * c12 + c * c13;
+        SymmetricInverse { cofactors: [c11, c12, c13, c22, c23, c33], r: T::from(1.0) / det }
+    }
+
+    /// $M^{-1} f$ (not finite when $M$ is singular).
+    #[inline]
+    pub fn apply(&self, f: [T; 3]) -> [T; 3] {
+        let [c11, c12, c13, c22, c23, c33] = self.cofactors;
+        let r = self.r;
+        [
+            (c11 * f[0] + c12 * f[1] + c13 * f[2]) * r,
+            (c12 * f[0] + c22 * f[1] + c23 * f[2]) * r,
+            (c13 * f[0] + c23 * f[1] + c33 * f[2]) * r,
+        ]
+    }
 }
