@@ -286,21 +286,7 @@ pub fn hoop_steady_turning_rates(
     if !active {
         return hoop.steady_turning_rates(theta, s);
     }
-    let nu = hoop.rate_unit();
-    let e = |n: f64| hoop_equilibrium(hoop, theta, s, n);
-    let (c, plus, minus) = (e(0.0), e(nu), e(-nu));
-    let (a, b) = ((plus + minus - 2.0 * c) / (2.0 * nu * nu), (plus - minus) / (2.0 * nu));
-    if !(a.is_finite() && b.is_finite() && c.is_finite()) || a == 0.0 {
-        return None;
-    }
-    let disc = b * b - 4.0 * a * c;
-    if disc < 0.0 {
-        return None;
-    }
-    // The cancellation-free form q = -(b + sign(b) sqrt(disc))/2, n = q/a, c/q.
-    let q = -0.5 * (b + b.signum() * disc.sqrt());
-    let (x, y) = if q == 0.0 { (0.0, 0.0) } else { (q / a, c / q) };
-    Some([x.min(y), x.max(y)])
+    hoop.turning_rates_of(|n| hoop_equilibrium(hoop, theta, s, n))
 }
 
 /// One row of a falsification table: the perturbation, the claim functions to run under it,

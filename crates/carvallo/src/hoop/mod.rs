@@ -324,10 +324,18 @@ impl Hoop {
     /// # Ok::<(), carvallo::ParameterError>(())
     /// ```
     pub fn steady_turning_rates(&self, theta: f64, s: f64) -> Option<[f64; 2]> {
+        self.turning_rates_of(|n| self.equilibrium(theta, s, n))
+    }
+
+    /// The real roots $n_1 \le n_2$ of an equilibrium (E) given as a function of $n$, a
+    /// quadratic whose coefficients are read off it at $n = 0, \pm\sqrt{g/R}$ (what
+    /// [`Hoop::steady_turning_rates`] does with [`Hoop::equilibrium`]; another (E), such as a
+    /// perturbed program's, goes through the same route). `None` when there are none.
+    pub fn turning_rates_of(&self, e: impl Fn(f64) -> f64) -> Option<[f64; 2]> {
         let nu = self.rate_unit();
-        let c = self.equilibrium(theta, s, 0.0);
-        let plus = self.equilibrium(theta, s, nu);
-        let minus = self.equilibrium(theta, s, -nu);
+        let c = e(0.0);
+        let plus = e(nu);
+        let minus = e(-nu);
         let a = (plus + minus - 2.0 * c) / (2.0 * nu * nu);
         let b = (plus - minus) / (2.0 * nu);
         quadratic_roots(a, b, c)
