@@ -1,7 +1,15 @@
 //! The mechanics engine against the hand derivations: the Carvallo–Whipple bicycle described in
 //! `derive/whipple/description.rs` gives, by Kane's method and by Carvallo's modified Lagrange
-//! equations, the same mass matrix and forcing as today's `generated/whipple_nonlinear.ir`, at
-//! 256 bits, at seeded random states and designs around the 2007 benchmark.
+//! equations, the same mass matrix and forcing as the hand derivation's program, at 256 bits, at
+//! seeded random states and designs around the 2007 benchmark; and the committed
+//! `generated/whipple_nonlinear.ir`, now derived by the engine, equals the hand derivation's
+//! program on every output they share.
+//!
+//! The hand derivation (`codegen/src/derive/whipple/nonlinear.rs` until issue 34 replaced it by
+//! the description) is frozen as its last generated program,
+//! `codegen/tests/fixtures/whipple_nonlinear_hand.ir` (byte-identical to
+//! `generated/whipple_nonlinear.ir` at commit bf4fd57): the program is the exact record of its
+//! values, evaluated here at 256 bits.
 //!
 //! Tolerances: the three programs compute the same functions by different formulas, so their
 //! 256-bit values differ only by the rounding of 256-bit arithmetic: relative 1e-60.
@@ -27,6 +35,176 @@ fn rel(a: &astro_float::BigFloat, b: &astro_float::BigFloat) -> f64 {
     diff / carvallo_ir::hp::to_f64(a).abs().max(1.0)
 }
 
+/// The hand derivation's program, frozen (module docs).
+fn hand_program() -> Program {
+    let text = std::fs::read_to_string(
+        std::path::Path::new(env!("CARGO_MANIFEST_DIR"))
+            .join("tests/fixtures/whipple_nonlinear_hand.ir"),
+    )
+    .expect("codegen/tests/fixtures/whipple_nonlinear_hand.ir");
+    Program::parse(&text).expect("the frozen hand program parses")
+}
+
+/// The committed program.
+fn committed(model: &str) -> Program {
+    let text = std::fs::read_to_string(
+        std::path::Path::new(env!("CARGO_MANIFEST_DIR")).join(format!("../generated/{model}.ir")),
+    )
+    .unwrap_or_else(|e| panic!("generated/{model}.ir: {e}"));
+    Program::parse(&text).expect("the committed IR parses")
+}
+
+/// `generated/whipple_nonlinear.ir`, derived by the engine, equals the hand derivation's frozen
+/// program on every output they share (the runtime reads no other), at 256 bits at 300 seeded
+/// states and designs: the parameters within ±20 % of the benchmark, lean and steer uniform in
+/// ±0.6 and ±0.8 rad, the pitch on the contact constraint, the lean and steer rates in ±2 rad/s
+/// and the rear wheel's in [-20, -5] rad/s. Every output the runtime's scenes read must be
+/// among the shared ones, and its f64 rounding error (against the 256-bit value, in units of the
+/// output's root mean square over the points) no worse than the hand program's by more than a
+/// factor 2 at the 99th percentile (with errors below 2^-52 counted as 2^-52). Half the points
+/// are 0.01 rad off the constraint in the pitch.
+#[test]
+fn engine_whipple_nonlinear_equals_the_frozen_hand_program() {
+    let hand = hand_program();
+    let engine = committed("whipple_nonlinear");
+    assert!(
+        engine.header.iter().any(|h| h.contains("codegen/src/derive/whipple/nonlinear.rs")),
+        "generated/whipple_nonlinear.ir names its source"
+    );
+    let shared: Vec<&str> = hand
+        .outputs
+        .iter()
+        .map(|o| o.name.as_str())
+        .filter(|n| engine.outputs.iter().any(|o| o.name == *n))
+        .collect();
+    let runtime = [
+        "m3_11",
+        "m3_12",
+        "m3_13",
+        "m3_22",
+        "m3_23",
+        "m3_33",
+        "f3_1",
+        "f3_2",
+        "f3_3",
+        "a_thetad_phid",
+        "a_thetad_deltad",
+        "a_thetad_thetaRd",
+        "a_psid_phid",
+        "a_psid_deltad",
+        "a_psid_thetaRd",
+        "a_thetaFd_phid",
+        "a_thetaFd_deltad",
+        "a_thetaFd_thetaRd",
+        "thetadd0",
+        "psidd0",
+        "thetaFdd0",
+        "thetad",
+        "psid",
+        "thetaFd",
+        "rear_speed",
+        "acc0_R_x",
+        "acc0_R_y",
+        "acc0_R_z",
+        "vt_R_phid_x",
+        "vt_R_phid_y",
+        "vt_R_phid_z",
+        "vt_R_deltad_x",
+        "vt_R_deltad_y",
+        "vt_R_deltad_z",
+        "vt_R_thetaRd_x",
+        "vt_R_thetaRd_y",
+        "vt_R_thetaRd_z",
+        "energy",
+        "front_contact_x",
+        "front_contact_y",
+        "contact_height",
+        "contact_height_dtheta",
+        "b1_thetad",
+        "b2_psid",
+        "b3_thetaFd",
+    ];
+    for n in runtime {
+        assert!(shared.contains(&n), "the runtime's output {n} is not shared: {shared:?}");
+    }
+    let pick = |p: &Program| -> Program { p.select_outputs(&shared).expect("selects") };
+    let (hand, engine) = (pick(&hand), pick(&engine));
+    assert_eq!(hand.params, engine.params);
+    assert_eq!(hand.inputs, engine.inputs);
+    let mut rng = rand_chacha::ChaCha8Rng::seed_from_u64(0x34_f1ee);
+    let mut worst = (0.0f64, String::new());
+    let mut err: Vec<[Vec<f64>; 2]> = vec![[Vec::new(), Vec::new()]; shared.len()];
+    let mut exact: Vec<Vec<f64>> = vec![Vec::new(); shared.len()];
+    for k in 0..300 {
+        let params: Vec<f64> =
+            BENCHMARK.iter().map(|x| x * (1.0 + rng.gen_range(-0.2..0.2))).collect();
+        let (phi, delta) = (rng.gen_range(-0.6..0.6), rng.gen_range(-0.8..0.8));
+        let rates =
+            [rng.gen_range(-2.0..2.0), rng.gen_range(-2.0..2.0), rng.gen_range(-20.0..-5.0)];
+        let mut theta = 0.0;
+        for _ in 0..30 {
+            let v = hand
+                .eval_f64(&params, &[phi, theta, delta, rates[0], rates[1], rates[2]])
+                .expect("evaluates");
+            let at = |n: &str| v[hand.outputs.iter().position(|o| o.name == n).unwrap()];
+            theta -= at("contact_height") / at("contact_height_dtheta");
+        }
+        // Half the points on the constraint (where the runtime evaluates), half 0.01 rad off
+        // it (so that the contact height is not all rounding).
+        if k % 2 == 1 {
+            theta += rng.gen_range(-0.01..0.01);
+        }
+        let inputs = [phi, theta, delta, rates[0], rates[1], rates[2]];
+        let h = carvallo_ir::hp::eval(&hand, &params, &inputs, 256).expect("hand at 256 bits");
+        let e = carvallo_ir::hp::eval(&engine, &params, &inputs, 256).expect("engine at 256 bits");
+        let hf = hand.eval_f64(&params, &inputs).expect("hand in f64");
+        let ef = engine.eval_f64(&params, &inputs).expect("engine in f64");
+        let (h, e) = (&h, &e);
+        for (j, name) in shared.iter().enumerate() {
+            let r = rel(&h[j], &e[j]);
+            if r > worst.0 {
+                worst = (r, name.to_string());
+            }
+            let x = carvallo_ir::hp::to_f64(&h[j]);
+            err[j][0].push((hf[j] - x).abs());
+            err[j][1].push((ef[j] - x).abs());
+            exact[j].push(x);
+        }
+    }
+    eprintln!(
+        "{} shared outputs; largest relative difference at 256 bits {:e} ({})",
+        shared.len(),
+        worst.0,
+        worst.1
+    );
+    assert!(worst.0 < 1e-60, "engine and hand programs differ: {:e} in {}", worst.0, worst.1);
+    let p99 = |v: &mut Vec<f64>| {
+        v.sort_by(f64::total_cmp);
+        v.get(((v.len().max(1) - 1) as f64 * 0.99).round() as usize).copied().unwrap_or(0.0)
+    };
+    // Each output's absolute errors in units of its root mean square over the points (an
+    // output that vanishes at some points, like a pivot or the contact height, has no
+    // meaningful relative error there).
+    let mut ratios = Vec::new();
+    for (k, name) in shared.iter().enumerate() {
+        let rms = (exact[k].iter().map(|x| x * x).sum::<f64>() / exact[k].len() as f64).sqrt();
+        if rms == 0.0 {
+            continue;
+        }
+        let [hand_err, engine_err] = &mut err[k];
+        let (h, e) = (p99(hand_err) / rms, p99(engine_err) / rms);
+        let (h, e) = (h.max(f64::EPSILON), e.max(f64::EPSILON));
+        ratios.push((e / h, name.to_string(), e, h));
+    }
+    ratios.sort_by(|a, b| b.0.total_cmp(&a.0));
+    eprintln!("largest f64 error ratios (engine/hand, p99): {:?}", &ratios[..5.min(ratios.len())]);
+    for (r, name, e, h) in &ratios {
+        if runtime.contains(&name.as_str()) {
+            assert!(*r <= 2.0, "{name}: f64 error {e:e} against the hand program's {h:e}");
+        }
+    }
+}
+
 #[test]
 fn engine_whipple_equals_the_hand_derivation_at_256_bits() {
     crate::on_symbolica_thread(|| {
@@ -42,12 +220,7 @@ fn engine_whipple_equals_the_hand_derivation_at_256_bits() {
         let kane_only =
             carvallo_codegen::Derivation { formulas: d.formulas[..kane_len].to_vec(), ..d.clone() };
         let kane_prog = emit_program(&kane_only).expect("emits");
-        let hand_text = std::fs::read_to_string(
-            std::path::Path::new(env!("CARGO_MANIFEST_DIR"))
-                .join("../generated/whipple_nonlinear.ir"),
-        )
-        .expect("generated/whipple_nonlinear.ir");
-        let hand = Program::parse(&hand_text).expect("the committed IR parses");
+        let hand = hand_program();
         eprintln!(
             "engine: {} formulas, Kane part {} formulas, {} ops (naive); whole program with Lagrange {} ops; hand IR {} ops",
             d.formulas.len(),
@@ -123,56 +296,32 @@ fn engine_whipple_equals_the_hand_derivation_at_256_bits() {
     });
 }
 
-/// The engine's mass matrix and forcing of the Whipple bicycle cost no more operations, after the
-/// optimising lowering regen uses, than they do today (1,524; the hand derivation's M₃ + f₃ take
-/// 1,491, issue 34's budget): a change to the engine that costs more fails here, with the
-/// formulas' own counts, largest first, to show where.
+/// The mass matrix and forcing the runtime evaluates, the cone of `m3_*`, `f3_*` in the committed
+/// `generated/whipple_nonlinear.ir` (derived by the engine, lowered by regen's optimising
+/// lowering; `regen_fresh` keeps it equal to the derivation), cost no more operations than
+/// today: 1,512, against the hand derivation's 1,491 (its frozen program) and issue 34's budget
+/// of 1,490, not met. A change to the engine or the lowering that costs more fails here, with
+/// the formulas' own counts, largest first, to show where.
 #[test]
 fn engine_whipple_mass_matrix_and_forcing_within_todays_operations() {
     crate::on_symbolica_thread(|| {
-        let model = description::whipple();
-        let (d, kane_len, _) = engine::derivation(&model, file!()).expect("derives");
-        let kane_only =
-            carvallo_codegen::Derivation { formulas: d.formulas[..kane_len].to_vec(), ..d.clone() };
-        let (prog, lowering) = carvallo_codegen::emit::choose(&kane_only).expect("lowers");
-        eprintln!("{}", lowering.join("\n"));
-        let names: Vec<String> = prog
-            .outputs
-            .iter()
-            .map(|o| o.name.clone())
-            .filter(|n| n.starts_with("M_") || n.starts_with("f_"))
-            .collect();
-        assert_eq!(names.len(), 9, "M (6 entries) and f (3): {names:?}");
-        let refs: Vec<&str> = names.iter().map(String::as_str).collect();
-        let ops = prog.select_outputs(&refs).expect("selects").op_count().total;
-        let hand = Program::parse(
-            &std::fs::read_to_string(
-                std::path::Path::new(env!("CARGO_MANIFEST_DIR"))
-                    .join("../generated/whipple_nonlinear.ir"),
-            )
-            .expect("generated/whipple_nonlinear.ir"),
-        )
-        .expect("parses");
-        let hand_names: Vec<String> = hand
-            .outputs
-            .iter()
-            .map(|o| o.name.clone())
-            .filter(|n| n.starts_with("m3_") || n.starts_with("f3_"))
-            .collect();
-        let hand_refs: Vec<&str> = hand_names.iter().map(String::as_str).collect();
-        let hand_ops = hand.select_outputs(&hand_refs).expect("selects").op_count().total;
+        let names = ["m3_11", "m3_12", "m3_13", "m3_22", "m3_23", "m3_33", "f3_1", "f3_2", "f3_3"];
+        let cone = |p: &Program| p.select_outputs(&names).expect("selects").op_count().total;
+        let (ops, hand_ops) = (cone(&committed("whipple_nonlinear")), cone(&hand_program()));
+        let d = crate::derived("whipple_nonlinear");
         let mut groups = std::collections::BTreeMap::<String, usize>::new();
-        for f in &kane_only.formulas {
-            let (n, _) = carvallo_codegen::emit::formula_op_count(&kane_only, f).expect("counts");
+        for f in &d.formulas {
+            let (n, _) = carvallo_codegen::emit::formula_op_count(d, f).expect("counts");
             let key: String = f.name.split('_').take(2).collect::<Vec<_>>().join("_");
             *groups.entry(key).or_insert(0) += n;
         }
         let mut by_group: Vec<_> = groups.into_iter().collect();
         by_group.sort_by_key(|(_, n)| std::cmp::Reverse(*n));
         eprintln!(
-            "engine M + f: {ops} ops optimised; hand M3 + f3: {hand_ops}; the formulas' own counts: {:?}",
+            "engine M3 + f3: {ops} ops; hand M3 + f3: {hand_ops}; the formulas' own counts: {:?}",
             &by_group
         );
-        assert!(ops <= 1524, "the engine's M + f take {ops} ops (today 1,524; hand {hand_ops})");
+        assert_eq!(hand_ops, 1491, "the frozen hand program's M3 + f3");
+        assert!(ops <= 1512, "the engine's M3 + f3 take {ops} ops (today 1,512; hand {hand_ops})");
     });
 }

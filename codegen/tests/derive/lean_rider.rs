@@ -8,7 +8,8 @@
 //!   speeds, and the six non-zero eigenvalues;
 //! - Kane's equations against Carvallo's modified Lagrange equations at 256 bits;
 //! - the lean joint locked: the equations of roll, rear wheel and steer equal the hand-derived
-//!   Whipple bicycle's (`generated/whipple_nonlinear.ir`) with the torso's mass and inertia in
+//!   Whipple bicycle's (the hand derivation's program, frozen as
+//!   `codegen/tests/fixtures/whipple_nonlinear_hand.ir`) with the torso's mass and inertia in
 //!   the rear frame, the parameters converted to the benchmark's.
 //!
 //! The linearisation is computed here from the engine's nonlinear equations by central
@@ -455,7 +456,7 @@ fn benchmark_of_locked(p: &dyn Fn(&str) -> f64) -> [f64; 26] {
 /// With the lean joint locked (q9 = u9 = 0; the joint's reaction enters only the lean
 /// equation), the roll, rear wheel and steer equations are the Whipple bicycle's with the torso
 /// in the rear frame: the engine's leaning rider against the hand derivation
-/// (`generated/whipple_nonlinear.ir`), a different formulation in different parameters, at
+/// (the hand derivation's frozen program), a different formulation in different parameters, at
 /// seeded states. The parameters are converted in f64, hence the tolerance.
 #[test]
 fn lean_rider_locked_is_the_whipple_bicycle_with_the_torso_in_the_rear_frame() {
@@ -474,9 +475,9 @@ fn lean_rider_locked_is_the_whipple_bicycle_with_the_torso_in_the_rear_frame() {
         eprintln!("the locked leaning rider in the benchmark's parameters: {bench:?}");
         let hand_text = std::fs::read_to_string(
             std::path::Path::new(env!("CARGO_MANIFEST_DIR"))
-                .join("../generated/whipple_nonlinear.ir"),
+                .join("tests/fixtures/whipple_nonlinear_hand.ir"),
         )
-        .expect("generated/whipple_nonlinear.ir");
+        .expect("codegen/tests/fixtures/whipple_nonlinear_hand.ir");
         let hand = Program::parse(&hand_text).expect("the committed IR parses");
         let mut rng = rand_chacha::ChaCha8Rng::seed_from_u64(98);
         let mut worst = 0.0f64;

@@ -281,6 +281,13 @@ pub fn derive(m: &Model, st: &mut Store) -> Result<Kane, DescriptionError> {
     for wh in &m.wheels {
         let carrier = kin.frames[&wh.carrier].clone();
         let a = kin.up(st, &wh.axle.unit(), &wh.carrier, &format!("a_{}", wh.name));
+        for (k, c) in ["x", "y", "z"].iter().enumerate() {
+            let _ = st.put(
+                &format!("axle_{}_{c}", wh.name),
+                &format!("wheel {}'s axle, {c} component (working frame)", wh.name),
+                a[k].clone(),
+            );
+        }
         let spin = var(&format!("{}d", wh.spin));
         let motion = FrameMotion {
             omega: expand3(&add(&carrier.omega, &scale(&spin, &a))),
@@ -343,6 +350,16 @@ pub fn derive(m: &Model, st: &mut Store) -> Result<Kane, DescriptionError> {
                 contact.position[2].clone(),
             );
             heights.push((wh.name.clone(), h));
+            for (k, axis) in ["x", "y"].iter().enumerate() {
+                let _ = st.put(
+                    &format!("{}_contact_{axis}", wh.name),
+                    &format!(
+                        "wheel {}'s contact point relative to the root point, along the working frame's {axis} axis (m)",
+                        wh.name
+                    ),
+                    contact.position[k].clone(),
+                );
+            }
         }
         let dirs: [(&str, V3); 3] = [
             ("vertical", zhat.clone()),
@@ -558,10 +575,31 @@ pub fn derive(m: &Model, st: &mut Store) -> Result<Kane, DescriptionError> {
         let x = &b.name;
         let what = format!("partial velocity of {x}'s mass centre");
         let vt = named_partials(st, &format!("vt_{x}"), &what, "", &b.centre.velocity);
+        // Its acceleration at zero independent accelerations: with the partial velocities, the
+        // mass centre's acceleration for any independent accelerations (a wheel centre's is
+        // what Basu-Mandal et al. tabulate).
+        let _ = st.name3_all(
+            &format!("a0_{x}"),
+            &format!("acceleration of {x}'s mass centre at zero independent accelerations"),
+            &add(&b.centre.acceleration, &velocity_part(&b.centre.velocity)),
+        );
         let omega = body_omega(&kin, m, b);
         let (what, after) =
             (format!("partial angular velocity of {x}"), format!(" ({}'s components)", b.frame));
         let wt = named_partials(st, &format!("wt_{x}"), &what, &after, &omega);
+        // Every component of the partial velocities is an output (the body's velocity and
+        // angular velocity for any speeds), also those too simple to name.
+        for (prefix, vectors) in [("vt", &vt), ("wt", &wt)] {
+            for (i, v) in vectors.iter().enumerate() {
+                for (k, c) in ["x", "y", "z"].iter().enumerate() {
+                    let full = format!("{prefix}_{x}_{}_{c}", independent[i]);
+                    if !st.is_named(&st.full(&full)) {
+                        let what = format!("{prefix}_{x} for {}, {c} component", independent[i]);
+                        let _ = st.put(&full, &what, v[k].clone());
+                    }
+                }
+            }
+        }
         partials.push((vt, wt));
     }
 

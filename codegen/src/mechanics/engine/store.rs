@@ -174,6 +174,20 @@ impl Store {
         })
     }
 
+    /// Like [`Store::name3`], and the components it leaves unnamed (numbers, symbols, a number
+    /// times a symbol) are recorded as formulas too, so that every component is an output; the
+    /// vector returned is [`Store::name3`]'s, so no other formula changes.
+    pub fn name3_all(&mut self, name: &str, description: &str, v: &V3) -> V3 {
+        let named = self.name3(name, description, v);
+        for (k, c) in ["x", "y", "z"].iter().enumerate() {
+            let full = format!("{name}_{c}");
+            if !self.is_named(&self.full(&full)) {
+                let _ = self.put(&full, &format!("{description}, {c} component"), named[k].clone());
+            }
+        }
+        named
+    }
+
     /// Declares the time derivative (at constant speeds) of a leaf symbol.
     pub fn set_rate(&mut self, leaf: &str, rate: Atom) {
         self.rates.insert(leaf.to_string(), rate);

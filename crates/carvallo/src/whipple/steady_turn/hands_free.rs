@@ -46,11 +46,20 @@ pub struct CurvePoint {
     pub steer: f64,
     /// Pitch (rad).
     pub pitch: f64,
-    /// Whether the turn is stable with no steer torque.
+    /// Whether the turn is stable with no steer torque: its growth below zero by more than
+    /// rounding ([`MARGINAL`] times the largest eigenvalue's modulus, at least 1/s). A growth
+    /// within that of zero (a branch point on upright running, where the capsize eigenvalue
+    /// crosses zero) is not stable.
     pub stable: bool,
     /// The largest real part of its four eigenvalues (1/s).
     pub growth: f64,
 }
+
+/// The growth, relative to the largest eigenvalue's modulus (at least 1/s), within which of
+/// zero a turn counts as marginal, not stable: far above the rounding of the eigenvalues of the
+/// reduced Jacobian (1.5e-15 1/s at the benchmark's capsize branch point), far below any stable
+/// turn's margin (4.3e-3 1/s at the nearest, on the reversed family near 4.58 m/s).
+pub const MARGINAL: f64 = 1e-10;
 
 /// A special point of a family: its index in [`Family::points`] (the point after it).
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
@@ -303,6 +312,7 @@ impl<'a> HandsFree<'a> {
         let k = (0..ev.len()).min_by(|&i, &j| ev[i].norm().total_cmp(&ev[j].norm()))?;
         ev.remove(k);
         let growth = ev.iter().map(|e| e.re).fold(f64::NEG_INFINITY, f64::max);
+        let scale = ev.iter().map(|e| e.norm()).fold(1.0, f64::max);
         // The steer in (-pi, pi] (the continuation carries it unwrapped).
         let pi = std::f64::consts::PI;
         let mut steer = z[2];
@@ -312,7 +322,8 @@ impl<'a> HandsFree<'a> {
         while steer <= -pi {
             steer += 2.0 * pi;
         }
-        Some(CurvePoint { speed: z[0], lean: z[1], steer, pitch, stable: growth < 0.0, growth })
+        let stable = growth < -MARGINAL * scale;
+        Some(CurvePoint { speed: z[0], lean: z[1], steer, pitch, stable, growth })
     }
 
     /// The unoriented tangent $\nabla F_1\times\nabla F_2$ at `f`.

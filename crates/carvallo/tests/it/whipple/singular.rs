@@ -34,7 +34,7 @@ carvallo::scene! {
     /// The yaw rate's pivot and the geometry it stands for.
     mod geometry {
         model: whipple_nonlinear,
-        outputs: [b2_psid, ax, ay, nf, front_contact_x, front_contact_y],
+        outputs: [b2_psid, axle_F_x, axle_F_y, n_F, front_contact_x, front_contact_y],
     }
 }
 
