@@ -186,20 +186,20 @@ def time_response(
 
 def closed_loop_window(
     params: Params,
-    K: npt.ArrayLike | dict[str, float] | GainTable,
+    k: npt.ArrayLike | dict[str, float] | GainTable,
     vmin: float | None = None,
     vmax: float | None = None,
     strict: bool = False,
 ) -> dict[str, object]:
-    """Closed-loop stable speed range of u = -K x, K (2, 4) (rows roll, steer torque; columns roll, steer, roll rate, steer rate) or gains by name, or a gain table {"speed": [...], "k_...": [...], ...} (interpolated in speed; vmin/vmax default to its speeds): {"from", "to", "stable": [(from, to), ...], "lowest_stable_speed"} (None: unbounded).
-    For the leaning rider's params (`lean_rider()`): K as in closed_loop_eigenvalues, the window
+    """Closed-loop stable speed range of u = -K x, k = K (2, 4) (rows roll, steer torque; columns roll, steer, roll rate, steer rate) or gains by name, or a gain table {"speed": [...], "k_...": [...], ...} (interpolated in speed; vmin/vmax default to its speeds): {"from", "to", "stable": [(from, to), ...], "lowest_stable_speed"} (None: unbounded).
+    For the leaning rider's params (`lean_rider()`): k as in closed_loop_eigenvalues, the window
     of a scan of vmin (0) to vmax (20) m/s, {"from", "to", "stable"}."""
 
 def closed_loop_eigenvalues(
-    params: Params, K: npt.ArrayLike | dict[str, float] | GainTable, speeds: Speeds, strict: bool = False
+    params: Params, k: npt.ArrayLike | dict[str, float] | GainTable, speeds: Speeds, strict: bool = False
 ) -> npt.NDArray[np.complex128]:
-    """Eigenvalues of A - B K at each speed, shape (n, 4), sorted by real then imaginary part (a gain table must cover the speeds).
-    For the leaning rider's params (`lean_rider()`): shape (n, 6), K a dict of gains
+    """Eigenvalues of A - B K (K = k as in closed_loop_window) at each speed, shape (n, 4), sorted by real then imaginary part (a gain table must cover the speeds).
+    For the leaning rider's params (`lean_rider()`): shape (n, 6), k a dict of gains
     k_{roll|steer|lean}_{roll|steer|lean|roll_rate|steer_rate|lean_rate} or a (3, 6) array
     (rows roll, steer, lean torque; columns roll, steer, lean and their rates)."""
 

@@ -1046,7 +1046,9 @@ fn sweep<'py>(
 /// `singular`: a pivot of the constraint solve fell to `singular_pivot` of its upright value,
 /// at `singular_t`, None otherwise)
 /// with `status_line` naming the pivot (as `carvallo simulate --model lean-rider --json`); a
-/// start at or beyond the singular configuration raises ParameterError naming the pivot.
+/// start with `lean0` at or beyond `fall_angle` (in (0, pi/2]), a `steer_lock` outside
+/// (0, pi/2) or a start at or beyond the singular configuration raises ParameterError naming
+/// the value (the pivot for the singular configuration).
 #[pyfunction]
 #[pyo3(signature = (params, speed, lean0, duration, step = 0.001, every = 10, strict = false, *, method = "rk4", rtol = None, atol = None, stop_when = Vec::new(), torque_t = None, torque_roll = None, torque_steer = None, impulses = Vec::new(), k = None, fall_angle = carvallo::whipple_nonlinear::DEFAULT_FALL_ANGLE, steer_lock = carvallo::whipple_nonlinear::DEFAULT_STEER_LOCK, torque_lean = None))]
 #[allow(clippy::too_many_arguments)]
