@@ -463,7 +463,7 @@ fn time_response<'py>(
 }
 
 /// The frequency response $G(i\omega)$ from `input` ("roll" or "steer" torque) to `output`
-/// ("roll", "steer", "roll-rate", "steer-rate") at every speed and angular frequency [rad/s]
+/// ("roll", "steer", "roll-rate", "steer-rate") at every speed and angular frequency (rad/s)
 /// (as `carvallo bode --json`): `{"response": complex (n, m), "magnitude_db": (n, m),
 /// "phase_deg": (n, m)}` for `n` speeds and `m` frequencies, the phase on the branch continuous
 /// in the frequency that lies in (-180°, 180°] as ω -> 0+: the same at a frequency whatever the

@@ -1451,7 +1451,7 @@ impl LeanTransfer {
         20.0 * re.hypot(im).log10()
     }
 
-    /// The phase of $G(i\omega)$ [degrees], continuous in $\omega$, in $(-180°, 180°]$ as
+    /// The phase of $G(i\omega)$ (degrees), continuous in $\omega$, in $(-180°, 180°]$ as
     /// $\omega \to 0^+$.
     pub fn phase_deg(&self, omega: f64) -> f64 {
         let lead = self.numerator[self.zeros.len()];
