@@ -1163,6 +1163,10 @@ fn simulate<'py>(
     Ok(d)
 }
 
+/// The limits a run reached: the times of the fall and of the steer lock, and of the singular
+/// configuration with the lean, pitch and steer there (None where not reached).
+type Reached = (Option<f64>, Option<f64>, Option<(f64, [f64; 3])>);
+
 /// How a run of `simulate` ended: `status` (`"completed"`, `"stopped"` by a condition of
 /// `stop_when`, `"fell"`: the lean reached `fall_angle`, `"steer lock"`: the steer reached
 /// `steer_lock`, `"singular"`: a pivot of the constraint solve fell to `singular_pivot` of its
@@ -1173,7 +1177,7 @@ fn set_status(
     d: &Bound<'_, PyDict>,
     bike: &WhippleNonlinear,
     event: Option<&(String, f64)>,
-    (fall, lock, singular): (Option<f64>, Option<f64>, Option<(f64, [f64; 3])>),
+    (fall, lock, singular): Reached,
     end: f64,
 ) -> PyResult<()> {
     let (status, line) = if let Some((t, [lean, pitch, steer])) = singular {

@@ -27,8 +27,7 @@
 
 use carvallo::numerics::integrate::{Grid, IntegrateError, Integration};
 use carvallo::whipple::lean_rider::{
-    Joint, LeanGains, LeanRider, LeanRiderError, LeanRun, Limits, RunEnd, INPUT_NAMES,
-    STATE_NAMES,
+    Joint, LeanGains, LeanRider, LeanRiderError, LeanRun, Limits, RunEnd, INPUT_NAMES, STATE_NAMES,
 };
 use carvallo::whipple::transfer::FrequencyPoint;
 use carvallo::whipple_nonlinear::SINGULAR_PIVOT;

@@ -516,10 +516,11 @@ fn a_start_at_or_beyond_the_limits_is_refused_naming_the_value() {
     let e = refused(start(12, f64::NAN), d);
     assert!(matches!(e, LeanRiderError::NotFiniteStart { name: "q5", .. }), "{e:?}");
     let upright = rider.upright(3.0);
+    let right = std::f64::consts::FRAC_PI_2;
     for (limits, name, value) in [
         (Limits { fall_angle: 0.0, ..d }, "fall angle", 0.0),
         (Limits { fall_angle: 1.6, ..d }, "fall angle", 1.6),
-        (Limits { steer_lock: std::f64::consts::FRAC_PI_2, ..d }, "steer lock", 1.5707963267948966),
+        (Limits { steer_lock: right, ..d }, "steer lock", right),
         (Limits { steer_lock: -1.0, ..d }, "steer lock", -1.0),
     ] {
         match refused(upright, limits) {
