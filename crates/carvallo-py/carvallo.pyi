@@ -155,7 +155,9 @@ def state_matrix(params: Params, speed: Speeds, strict: bool = False) -> npt.NDA
 def state_space(
     params: Params, speeds: Speeds, strict: bool = False
 ) -> tuple[npt.NDArray[np.float64], npt.NDArray[np.float64]]:
-    """(A, B) with roll and steer torque as inputs, shapes (n, 4, 4) and (n, 4, 2); C = I, D = 0."""
+    """(A, B) with roll and steer torque as inputs, shapes (n, 4, 4) and (n, 4, 2); C = I, D = 0.
+    For the leaning rider's params (`lean_rider()`), shapes (n, 12, 12) and (n, 12, 3): Moore's
+    states q1 q2 q3 q4 q6 q7 q8 q9 u4 u6 u7 u9 and the torques T4, T7, T9."""
 
 def modes(
     params: Params, speeds: Speeds, strict: bool = False
@@ -165,7 +167,9 @@ def modes(
 def frequency_response(
     params: Params, speeds: Speeds, omegas: Speeds, input: str, output: str, strict: bool = False
 ) -> dict[str, npt.NDArray[np.complex128] | npt.NDArray[np.float64]]:
-    """G(iω) from input "roll"|"steer" torque to output "roll"|"steer"|"roll-rate"|"steer-rate": {"response" complex, "magnitude_db", "phase_deg" (continuous in ω, in (-180°, 180°] as ω -> 0+, independent of the grid)}, each (n speeds, m omegas)."""
+    """G(iω) from input "roll"|"steer" torque to output "roll"|"steer"|"roll-rate"|"steer-rate": {"response" complex, "magnitude_db", "phase_deg" (continuous in ω, in (-180°, 180°] as ω -> 0+, independent of the grid)}, each (n speeds, m omegas).
+    For the leaning rider's params (`lean_rider()`): input "roll"|"steer"|"lean" torque, output
+    "roll"|"steer"|"lean"|"roll-rate"|"steer-rate"|"lean-rate" (lean: the torso on its joint)."""
 
 GainTable = dict[str, Sequence[float]]
 
@@ -182,20 +186,27 @@ def time_response(
 
 def closed_loop_window(
     params: Params,
-    K: npt.ArrayLike | dict[str, float] | GainTable,
+    k: npt.ArrayLike | dict[str, float] | GainTable,
     vmin: float | None = None,
     vmax: float | None = None,
     strict: bool = False,
 ) -> dict[str, object]:
-    """Closed-loop stable speed range of u = -K x, K (2, 4) (rows roll, steer torque; columns roll, steer, roll rate, steer rate) or gains by name, or a gain table {"speed": [...], "k_...": [...], ...} (interpolated in speed; vmin/vmax default to its speeds): {"from", "to", "stable": [(from, to), ...], "lowest_stable_speed"} (None: unbounded)."""
+    """Closed-loop stable speed range of u = -K x, k = K (2, 4) (rows roll, steer torque; columns roll, steer, roll rate, steer rate) or gains by name, or a gain table {"speed": [...], "k_...": [...], ...} (interpolated in speed; vmin/vmax default to its speeds): {"from", "to", "stable": [(from, to), ...], "lowest_stable_speed"} (None: unbounded).
+    For the leaning rider's params (`lean_rider()`): k as in closed_loop_eigenvalues, the window
+    of a scan of vmin (0) to vmax (20) m/s, {"from", "to", "stable"}."""
 
 def closed_loop_eigenvalues(
-    params: Params, K: npt.ArrayLike | dict[str, float] | GainTable, speeds: Speeds, strict: bool = False
+    params: Params, k: npt.ArrayLike | dict[str, float] | GainTable, speeds: Speeds, strict: bool = False
 ) -> npt.NDArray[np.complex128]:
-    """Eigenvalues of A - B K at each speed, shape (n, 4), sorted by real then imaginary part (a gain table must cover the speeds)."""
+    """Eigenvalues of A - B K (K = k as in closed_loop_window) at each speed, shape (n, 4), sorted by real then imaginary part (a gain table must cover the speeds).
+    For the leaning rider's params (`lean_rider()`): shape (n, 6), k a dict of gains
+    k_{roll|steer|lean}_{roll|steer|lean|roll_rate|steer_rate|lean_rate} or a (3, 6) array
+    (rows roll, steer, lean torque; columns roll, steer, lean and their rates)."""
 
 def eigenvalues(params: Params, speeds: Speeds, strict: bool = False) -> npt.NDArray[np.complex128]:
-    """Eigenvalues at each speed, shape (n, 4), sorted by real then imaginary part."""
+    """Eigenvalues at each speed, shape (n, 4), sorted by real then imaginary part. For the
+    leaning rider's params (`lean_rider()`), the six of roll, steer and lean, shape (n, 6), by
+    decreasing real part (the other six of the 12-state linearisation are zero)."""
 
 def steady_turn(
     params: Params, speed: float, lean: float, steer: float | None = None, strict: bool = False
@@ -203,7 +214,10 @@ def steady_turn(
     """Every steady turn at the rear contact's speed and the lean, by increasing steer."""
 
 def window(params: Params, strict: bool = False) -> dict[str, object]:
-    """{"weave_speed", "capsize_speed", "stable": [(from, to), ...]} in m/s (None if none)."""
+    """{"weave_speed", "capsize_speed", "stable": [(from, to), ...]} in m/s (None if none).
+    For the leaning rider's params (`lean_rider()`), {"stable", "scan", "state", "inputs"}: the
+    speeds of a scan of 0 to 20 m/s where all six eigenvalues have negative real parts (empty
+    for Browser + Jason's passive torso, k9 = c9 = 0)."""
 
 def windows(
     designs: npt.NDArray[np.float64], validate: bool = True, strict: bool = False
@@ -239,6 +253,7 @@ def simulate(
     k: Optional[npt.ArrayLike | dict[str, float] | GainTable] = None,
     fall_angle: float = 1.2,
     steer_lock: float = 1.4,
+    torque_lean: Optional[npt.ArrayLike] = None,
 ) -> dict[str, object]:
     """Nonlinear simulation from upright straight running (rk4, or dopri5 / dop853 /
     vern9 with rtol, default 1e-8, and atol, default 1e-3 rtol; stop_when conditions
@@ -265,7 +280,15 @@ def simulate(
     zero outside), impulses (t, J_roll, J_steer) in N m s at multiples of step, feedback
     T = -K x with k as in closed_loop_window (a gain table read at the rear contact's speed).
     Adds arrays T_phi, T_delta, work_t and floats work, max_energy_change; energy_drift is then
-    that of E - E(0) - W."""
+    that of E - E(0) - W.
+
+    For the leaning rider's params (`lean_rider()`): lean0 is the roll, torque_lean (with
+    torque_t) the lean torque T9 beside torque_roll and torque_steer; stop_when, impulses and k
+    are the bicycle's. The dict holds arrays t, roll, steer, lean (the torso on its joint), yaw,
+    pitch, x, y, energy, the counts, max_energy_drift, fall_angle, steer_lock, singular_pivot,
+    singular_t and status ("completed", "fell", "torso fell", "steer lock", "singular") with
+    status_line. A start with |lean0| at or beyond fall_angle, limits outside their ranges, or a
+    start at or beyond the singular configuration (naming the pivot) raises ParameterError."""
 
 def simulate_many(
     params: Params,
@@ -287,6 +310,19 @@ def simulate_many(
     equations' singular configuration; NaN when not), stopped_by, fell, ok, rhs_evaluations and the list errors; each equals `simulate`'s end bit for bit, and a chunk of a batch (any slice,
     any memory layout) gives the batch's rows for it bit for bit, so chunks can run on Dask
     workers (docs/examples/basin_dask.py)."""
+
+# Moore's (2012) leaning rider: the bicycle with the rider's torso on a lean joint (12 states).
+# Its parameters, a dict in Moore's names, select the model where a bicycle's params are taken
+# (state_space, eigenvalues, window, closed_loop_window, closed_loop_eigenvalues,
+# frequency_response, simulate).
+
+def lean_rider(path: str | None = None) -> dict[str, float]:
+    """The parameters of Moore's (2012) leaning rider as a dict in Moore's names (36 values: the
+    hinge and frame lengths d1-d4, l1-l6, the wheel radii rr, rf, the masses mc, md, me, mf, mg
+    (torso), their inertias, g, and the lean joint's damping c9 and stiffness k9):
+    BicycleParameters' mooreriderlean2012_browser_jason (Jason on the Browser bicycle), or the
+    `name = value` file `path`. Give it to eigenvalues, state_space and window in place of a
+    bicycle."""
 
 def report() -> list[dict[str, object]]:
     """The memoir concordance, the entries of `carvallo report --json`."""

@@ -38,24 +38,24 @@ pub const SPEED: Range = Range {
 /// sine (and none past $10^{16}$).
 pub const ANGLE: Range =
     Range { lo: -1e6, hi: 1e6, why: "beyond it the angle's sine loses its digits" };
-/// Angular rates [rad/s] of the hoop and the unicycle: their squares times the lengths stay far
+/// Angular rates (rad/s) of the hoop and the unicycle: their squares times the lengths stay far
 /// from overflow and the energy keeps the gravity term.
 pub const RATE: Range =
     Range { lo: -1e6, hi: 1e6, why: "beyond it gravity is lost in the rounding of the rate terms" };
-/// Lengths [m]: positive, so that products of up to six of them with the masses stay normal
+/// Lengths (m): positive, so that products of up to six of them with the masses stay normal
 /// numbers.
 pub const LENGTH: Range =
     Range { lo: 1e-6, hi: 1e6, why: "the equations' determinants must stay normal numbers" };
-/// Masses [kg]: positive, as [`LENGTH`].
+/// Masses (kg): positive, as [`LENGTH`].
 pub const MASS: Range =
     Range { lo: 1e-30, hi: 1e30, why: "the equations' determinants must stay normal numbers" };
-/// Moments of inertia [kg m²], zero allowed.
+/// Moments of inertia (kg m²), zero allowed.
 pub const INERTIA: Range =
     Range { lo: 0.0, hi: 1e42, why: "the equations' determinants must stay normal numbers" };
-/// Products of inertia [kg m²], of either sign.
+/// Products of inertia (kg m²), of either sign.
 pub const PRODUCT: Range =
     Range { lo: -1e42, hi: 1e42, why: "the equations' determinants must stay normal numbers" };
-/// A mass that may be zero (a wheel's) [kg].
+/// A mass in kg that may be zero (a wheel's).
 pub const MASS_OR_ZERO: Range = Range { lo: 0.0, ..MASS };
 /// The acceleration of gravity [m/s²]: positive (the hoop and the unicycle stand on it).
 pub const GRAVITY: Range = Range {
@@ -70,13 +70,13 @@ pub const GAIN: Range = Range {
     hi: 1e12,
     why: "beyond it the bicycle's own terms are lost in the rounding of the feedback",
 };
-/// Torques [N m] of a driven run: as [`GAIN`].
+/// Torques (N m) of a driven run: as [`GAIN`].
 pub const TORQUE: Range = Range {
     lo: -1e12,
     hi: 1e12,
     why: "beyond it the bicycle's own terms are lost in the rounding of the torque",
 };
-/// Angular frequencies [rad/s] of `bode`: the transfer function's powers of ω stay normal.
+/// Angular frequencies (rad/s) of `bode`: the transfer function's powers of ω stay normal.
 pub const FREQUENCY: Range =
     Range { lo: 1e-12, hi: 1e12, why: "the transfer function's powers of omega must stay normal" };
 
@@ -122,13 +122,13 @@ pub struct DataOptions {
     #[arg(long, value_name = "FILE.txt")]
     pub rider: Option<String>,
     /// With a Yeadon measurement file as --rider: yeadon's configuration file (its somersault
-    /// and the joint angles the seating does not solve) [default: `<R><B>YeadonCFG.txt` beside
-    /// the measurement file, BicycleParameters' layout]
+    /// and the joint angles the seating does not solve) (default: `<R><B>YeadonCFG.txt` beside
+    /// the measurement file, BicycleParameters' layout)
     #[arg(long, value_name = "FILE.txt", requires = "rider")]
     pub rider_config: Option<String>,
     /// With a Yeadon measurement file as --rider: the bicycle's measured geometry (seat, bottom
-    /// bracket, handlebar: hbb, lcs, lsp, lst, lamst, whb, LhbR, LhbF) [default:
-    /// `bicycles/<B>/RawData/<B>Measured.txt` of BicycleParameters' layout]
+    /// bracket, handlebar: hbb, lcs, lsp, lst, lamst, whb, LhbR, LhbF) (default:
+    /// `bicycles/<B>/RawData/<B>Measured.txt` of BicycleParameters' layout)
     #[arg(long, value_name = "FILE.txt", requires = "rider")]
     pub measured: Option<String>,
     /// A moment of inertia breaking a triangle inequality is an error instead of a warning

@@ -50,7 +50,7 @@ enum Command {
     /// The stable speed range of the linearised Carvallo-Whipple bicycle (open, or closed by a
     /// state feedback with --gain), or of Carvallo's bicycle without hands (memoir n° 117-121)
     Window(window::Args),
-    /// The eigenvalues of the linearised bicycle at speed V [m/s]
+    /// The eigenvalues of the linearised bicycle at speed V (m/s)
     Eig(eig::Args),
     /// The state space (A, B) of the linearised bicycle with roll and steer torque as inputs
     Statespace(statespace::Args),

@@ -52,10 +52,10 @@ pub struct SweepArgs {
     /// on the model (several make a grid)
     #[arg(long, value_name = "NAME=FROM:TO:COUNT", value_parser = crate::gains::parse_gain_axis, conflicts_with_all = ["vary", "random"], allow_hyphen_values = true)]
     pub gain: Vec<crate::gains::GainAxis>,
-    /// The lowest speed of the closed-loop windows of --gain [m/s] [default: 0]
+    /// The lowest speed of the closed-loop windows of --gain (m/s) [default: 0]
     #[arg(long, value_name = "V", value_parser = crate::gains::speed)]
     pub vmin: Option<f64>,
-    /// The highest speed of the closed-loop windows of --gain [m/s] [default: every speed]
+    /// The highest speed of the closed-loop windows of --gain (m/s) [default: every speed]
     #[arg(long, value_name = "V", value_parser = crate::gains::speed)]
     pub vmax: Option<f64>,
 }

@@ -86,8 +86,8 @@
 //! Private modules: `parse` reads the syntax, `validate` loads the IR and checks the scene
 //! against it, `emit` writes the Rust, `expand` ties them together on `proc_macro2` token
 //! streams (so that the unit tests in `tests` can run it outside the compiler). `scene` is the
-//! leaf they share: the validated [`Scene`](scene::Scene), the [`Context`](scene::Context) of
-//! the files, and the naming rules. The imports go one way: `parse`, `scene` ← `validate` ←
+//! leaf they share: the validated `scene::Scene`, the `scene::Context` of the files, and the
+//! naming rules (private items, not linked: a proc-macro crate documents only its macros). The imports go one way: `parse`, `scene` ← `validate` ←
 //! `expand` → `emit` → `scene`.
 
 mod emit;

@@ -9,7 +9,8 @@ use std::sync::atomic::Ordering;
 
 use carvallo::numerics::integrate::{Grid, IntegrateError, Integration};
 use carvallo::whipple::lean_rider::{
-    Joint, LeanGains, LeanRider, LeanRiderParams, LeanRun, Limits, RunEnd, INPUT_NAMES, STATE_NAMES,
+    Joint, LeanGains, LeanRider, LeanRiderError, LeanRiderParams, LeanRun, Limits, RunEnd,
+    INPUT_NAMES, STATE_NAMES,
 };
 use carvallo::whipple::transfer::FrequencyPoint;
 use numpy::{
@@ -273,16 +274,6 @@ pub(crate) fn simulate<'py>(
     torques: &Torques,
 ) -> PyResult<Bound<'py, PyDict>> {
     let Start { speed, lean0, fall_angle, steer_lock } = start;
-    for (name, v) in [("fall_angle", fall_angle), ("steer_lock", steer_lock)] {
-        if !(v.is_finite() && v > 0.0) {
-            return Err(err(format!("invalid {name} {v}: must be finite and positive")));
-        }
-    }
-    if lean0.abs() >= fall_angle {
-        return Err(err(format!(
-            "invalid lean0 {lean0:?}: at or beyond the fall angle ±{fall_angle} rad (fall_angle)"
-        )));
-    }
     let mut x0 = rider.upright(speed);
     x0[3] = lean0;
     let limits = Limits { fall_angle, steer_lock };
@@ -290,7 +281,7 @@ pub(crate) fn simulate<'py>(
         rider.simulate(x0, &|t| torques.at(t), Joint::Free, grid, how, limits, stop)
     })?
     .map_err(|e| match e {
-        IntegrateError::Model(e) => err(e.to_string()),
+        IntegrateError::Model(e) => err(bad_start(speed, lean0, &e)),
         e => err(format!("the integration failed: {e:?}")),
     })?;
     if let RunEnd::Interrupted { .. } = run.end.0 {
@@ -316,6 +307,30 @@ pub(crate) fn simulate<'py>(
     d.set_item("max_energy_drift", run.max_energy_drift)?;
     set_run(&d, how, &run.stats, None)?;
     Ok(d)
+}
+
+/// The message of a start at `speed` and `lean0` or of limits that [`LeanRider::simulate`]
+/// refuses, naming the keyword (`lean0`, `speed`, `fall_angle`, `steer_lock`) at fault; the
+/// library's message otherwise (the singular configuration, naming the roll and the pivot).
+fn bad_start(speed: f64, lean0: f64, e: &LeanRiderError) -> String {
+    match e {
+        LeanRiderError::Fallen { fall_angle, .. } => format!(
+            "invalid lean0 {lean0:?}: at or beyond the fall angle ±{fall_angle} rad (fall_angle)"
+        ),
+        LeanRiderError::NotFiniteStart { name: "q4", .. } => {
+            format!("invalid lean0 {lean0:?}: must be finite")
+        }
+        LeanRiderError::NotFiniteStart { name: "u6", .. } => {
+            format!("invalid speed {speed:?}: must be finite")
+        }
+        LeanRiderError::Invalid { name: "fall angle", value, reason } => {
+            format!("invalid fall_angle {value:?}: {reason}")
+        }
+        LeanRiderError::Invalid { name: "steer lock", value, reason } => {
+            format!("invalid steer_lock {value:?}: {reason}")
+        }
+        other => other.to_string(),
+    }
 }
 
 /// The leaning rider's torque `input` (roll, steer, lean: 0, 1, 2) and lateral state `output`

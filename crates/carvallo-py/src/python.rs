@@ -463,7 +463,7 @@ fn time_response<'py>(
 }
 
 /// The frequency response $G(i\omega)$ from `input` ("roll" or "steer" torque) to `output`
-/// ("roll", "steer", "roll-rate", "steer-rate") at every speed and angular frequency [rad/s]
+/// ("roll", "steer", "roll-rate", "steer-rate") at every speed and angular frequency (rad/s)
 /// (as `carvallo bode --json`): `{"response": complex (n, m), "magnitude_db": (n, m),
 /// "phase_deg": (n, m)}` for `n` speeds and `m` frequencies, the phase on the branch continuous
 /// in the frequency that lies in (-180°, 180°] as ω -> 0+: the same at a frequency whatever the
@@ -1046,7 +1046,9 @@ fn sweep<'py>(
 /// `singular`: a pivot of the constraint solve fell to `singular_pivot` of its upright value,
 /// at `singular_t`, None otherwise)
 /// with `status_line` naming the pivot (as `carvallo simulate --model lean-rider --json`); a
-/// start at or beyond the singular configuration raises ParameterError naming the pivot.
+/// start with `lean0` at or beyond `fall_angle` (in (0, pi/2]), a `steer_lock` outside
+/// (0, pi/2) or a start at or beyond the singular configuration raises ParameterError naming
+/// the value (the pivot for the singular configuration).
 #[pyfunction]
 #[pyo3(signature = (params, speed, lean0, duration, step = 0.001, every = 10, strict = false, *, method = "rk4", rtol = None, atol = None, stop_when = Vec::new(), torque_t = None, torque_roll = None, torque_steer = None, impulses = Vec::new(), k = None, fall_angle = carvallo::whipple_nonlinear::DEFAULT_FALL_ANGLE, steer_lock = carvallo::whipple_nonlinear::DEFAULT_STEER_LOCK, torque_lean = None))]
 #[allow(clippy::too_many_arguments)]
@@ -1161,6 +1163,10 @@ fn simulate<'py>(
     Ok(d)
 }
 
+/// The limits a run reached: the times of the fall and of the steer lock, and of the singular
+/// configuration with the lean, pitch and steer there (None where not reached).
+type Reached = (Option<f64>, Option<f64>, Option<(f64, [f64; 3])>);
+
 /// How a run of `simulate` ended: `status` (`"completed"`, `"stopped"` by a condition of
 /// `stop_when`, `"fell"`: the lean reached `fall_angle`, `"steer lock"`: the steer reached
 /// `steer_lock`, `"singular"`: a pivot of the constraint solve fell to `singular_pivot` of its
@@ -1171,7 +1177,7 @@ fn set_status(
     d: &Bound<'_, PyDict>,
     bike: &WhippleNonlinear,
     event: Option<&(String, f64)>,
-    (fall, lock, singular): (Option<f64>, Option<f64>, Option<(f64, [f64; 3])>),
+    (fall, lock, singular): Reached,
     end: f64,
 ) -> PyResult<()> {
     let (status, line) = if let Some((t, [lean, pitch, steer])) = singular {

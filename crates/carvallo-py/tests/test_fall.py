@@ -5,7 +5,7 @@ A slow fall ends at the steer lock (1.4 rad) instead, at one time by every metho
 `simulate` ends when the lean reaches `fall_angle` (1.2 rad by default) and returns the arrays
 up to then with `status` "fell", `status_line` and `fall_t`, the same fall time by RK4 and
 DOP853; a start at or beyond the fall angle raises ParameterError naming lean0 whatever the
-method. `closed_loop_window` names the argument of a speed or gain out of its range, and a
+method, for the leaning rider too (with its limits out of range and a start not finite). `closed_loop_window` names the argument of a speed or gain out of its range, and a
 gain table too long for the memory limit is refused on its length."""
 
 import math
@@ -75,6 +75,27 @@ def test_unphysical_starts_are_refused_by_every_method(method):
     for bad in (0.0, -0.5, 1.6, math.nan, 10**400):
         with pytest.raises(carvallo.ParameterError, match="fall"):
             carvallo.simulate(B, 5.0, 0.1, 1.0, method=method, fall_angle=bad)
+
+
+def test_the_leaning_riders_start_and_limits_out_of_range_are_refused():
+    """The leaning rider's: the library's LeanRider::simulate refuses them (the module has no check of its own); the
+    message names the keyword. Breaking perturbation: without the library's check, lean0 = 1.2
+    is integrated past the fall angle instead of refused."""
+    p = carvallo.lean_rider()
+    for lean0, fall in [(1.2, 1.2), (-1.3, 1.2), (0.5, 0.5)]:
+        with pytest.raises(carvallo.ParameterError,
+                           match=rf"invalid lean0 {lean0}: at or beyond the fall angle ±{fall} rad \(fall_angle\)"):
+            carvallo.simulate(p, 3.0, lean0, 0.1, fall_angle=fall)
+    with pytest.raises(carvallo.ParameterError, match=r"invalid lean0 NaN: must be finite"):
+        carvallo.simulate(p, 3.0, float("nan"), 0.1)
+    with pytest.raises(carvallo.ParameterError, match=r"invalid speed inf: must be finite"):
+        carvallo.simulate(p, float("inf"), 0.01, 0.1)
+    with pytest.raises(carvallo.ParameterError, match=r"invalid fall_angle 2.0: must lie in \(0, pi/2\] rad"):
+        carvallo.simulate(p, 3.0, 0.01, 0.1, fall_angle=2.0)
+    with pytest.raises(carvallo.ParameterError, match=r"invalid steer_lock 1.5707963267948966: must lie in \(0, pi/2\) rad"):
+        carvallo.simulate(p, 3.0, 0.01, 0.1, steer_lock=1.5707963267948966)
+    r = carvallo.simulate(p, 3.0, 0.4999, 0.5, fall_angle=0.5)
+    assert r["status"] == "fell", r["status_line"]
 
 
 def test_closed_loop_window_names_the_bad_argument():

@@ -25,7 +25,7 @@
 //! [`super::extend`] appends the C peer and the batched evaluators.
 //!
 //! Timings are wall-clock means over repeated calls (`std::time::Instant`), so they vary from
-//! run to run and machine to machine; errors do not. [`Targets`](super::measure::Targets) compares the ratios asked for in
+//! run to run and machine to machine; errors do not. [`Targets`] compares the ratios asked for in
 //! the issue with the measured ones.
 
 use std::hint::black_box;
@@ -487,7 +487,7 @@ fn window_rows(cfg: &Config, rows: &mut Vec<Row>) -> (f64, f64, f64, f64, f64, f
 /// The closed-loop windows of table 2: random gains (as in the tests of
 /// `carvallo::whipple::feedback`) on the benchmark and random designs, the Hurwitz route on the
 /// generated closed-loop polynomial against the edges located at 256 bits
-/// ([`feedback::closed_loop_reference_edges`]: the coefficients at 256 bits from the IR, each
+/// ([`feedback::closed_loop_reference_edges`](carvallo::whipple::feedback::closed_loop_reference_edges): the coefficients at 256 bits from the IR, each
 /// edge bisected on the Hurwitz verdict at 256 bits) and against the eigenvalue sweep of
 /// $A - BK$ (200 grid steps to 10 m/s, each edge bisected to adjacent floats); the time per
 /// gain set of the fast route and of the former one (every root of every Hurwitz function),

@@ -7,7 +7,7 @@
 //!
 //! JSON `{"model", "rider", "input", "output", "points": [{"speed", "omega", "re", "im",
 //! "magnitude_db", "phase_deg"}, ...]}`; CSV with the same columns as the points. Frequencies
-//! are angular [rad/s]; `--omega-range` spaces `N` of them logarithmically from `FROM` to `TO`
+//! are angular (rad/s); `--omega-range` spaces `N` of them logarithmically from `FROM` to `TO`
 //! (the axis of a Bode diagram); the default is `0.1:100:61` (20 per decade).
 //!
 //! The parameter file is read as for `window` ([`crate::args::bicycle`], with `--rider FILE`
@@ -30,7 +30,7 @@ pub struct Args {
     pub model: String,
     #[command(flatten)]
     pub data: DataOptions,
-    /// The forward speeds [m/s], separated by commas
+    /// The forward speeds (m/s), separated by commas
     #[arg(long, value_name = "V", required = true, value_delimiter = ',',
           value_parser = crate::args::SPEED.parser(), allow_hyphen_values = true)]
     pub speed: Vec<f64>,
@@ -39,16 +39,16 @@ pub struct Args {
     #[arg(long, value_name = "INPUT",
           value_parser = PossibleValuesParser::new(LEAN_INPUTS))]
     pub input: String,
-    /// The output: the lean (roll) or steer angle [rad] or its rate [rad/s] (and for the
+    /// The output: the lean (roll) or steer angle in rad or its rate in rad/s (and for the
     /// leaning rider the torso's lean on its joint, `lean`, `lean-rate`)
     #[arg(long, value_name = "OUTPUT",
           value_parser = PossibleValuesParser::new(LEAN_OUTPUTS))]
     pub output: String,
-    /// The angular frequencies [rad/s], positive, separated by commas
+    /// The angular frequencies (rad/s), positive, separated by commas
     #[arg(long, value_name = "W", value_delimiter = ',', value_parser = positive,
           conflicts_with = "omega_range")]
     pub omega: Vec<f64>,
-    /// N angular frequencies [rad/s] spaced logarithmically from FROM to TO
+    /// N angular frequencies (rad/s) spaced logarithmically from FROM to TO
     #[arg(long, value_name = "FROM:TO:N", value_parser = omega_range, default_value = "0.1:100:61")]
     pub omega_range: Frequencies,
     /// Print JSON `{model, input, output, points: [{speed, omega, re, im, magnitude_db,

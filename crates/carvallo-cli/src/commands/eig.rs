@@ -32,7 +32,7 @@ pub struct Args {
     pub model: String,
     #[command(flatten)]
     pub data: DataOptions,
-    /// The forward speeds [m/s], separated by commas
+    /// The forward speeds (m/s), separated by commas
     #[arg(long, value_name = "V", required = true, value_delimiter = ',',
           value_parser = crate::args::SPEED.parser(), allow_hyphen_values = true)]
     pub speed: Vec<f64>,

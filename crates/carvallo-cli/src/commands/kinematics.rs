@@ -28,10 +28,10 @@ const RANK_MINOR_NONZERO: f64 = 1e-3;
 /// `carvallo kinematics`: contact, relations (I) and steady rates (2) (memoir n° 59–69).
 #[derive(Clone, Debug, PartialEq, clap::Args)]
 pub struct Args {
-    /// The frame's lean θ [degrees], strictly between -90 and 90
+    /// The frame's lean θ (degrees), strictly between -90 and 90
     #[arg(long = "theta", value_name = "DEG", value_parser = lean_deg, allow_hyphen_values = true)]
     pub theta_deg: f64,
-    /// The handlebar angle γ [degrees]
+    /// The handlebar angle γ (degrees)
     #[arg(long = "gamma", value_name = "DEG", value_parser = crate::args::ANGLE.parser(), allow_hyphen_values = true)]
     pub gamma_deg: f64,
     /// Print JSON instead of text

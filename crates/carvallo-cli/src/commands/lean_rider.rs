@@ -21,11 +21,13 @@
 //!   torso's lean, yaw, pitch, the rear contact and the energy, then the status line; JSON
 //!   with the same columns, `status` (`completed`, `fell`, `torso fell`, `steer lock`,
 //!   `interrupted`), `status_line`, the counts and the energy drift. Batches, impulses, torque
-//!   files, gains and stop conditions are the bicycle's.
+//!   files, gains and stop conditions are the bicycle's. A start the library refuses
+//!   ([`LeanRider::simulate`]: the roll at or beyond the fall angle, named as `--lean0`, or
+//!   the singular configuration) is an error (exit 2).
 
 use carvallo::numerics::integrate::{Grid, IntegrateError, Integration};
 use carvallo::whipple::lean_rider::{
-    Joint, LeanGains, LeanRider, LeanRun, Limits, RunEnd, INPUT_NAMES, STATE_NAMES,
+    Joint, LeanGains, LeanRider, LeanRiderError, LeanRun, Limits, RunEnd, INPUT_NAMES, STATE_NAMES,
 };
 use carvallo::whipple::transfer::FrequencyPoint;
 use carvallo::whipple_nonlinear::SINGULAR_PIVOT;
@@ -241,12 +243,6 @@ pub fn simulate(
         return Err("--speed and --lean0 are required without --batch".into());
     };
     let limits = Limits { fall_angle: cmd.fall_angle, steer_lock: cmd.steer_lock };
-    if lean0.abs() >= limits.fall_angle {
-        return Err(format!(
-            "invalid --lean0 {lean0}: at or beyond the fall angle ±{} rad",
-            limits.fall_angle
-        ));
-    }
     let grid = Grid::exact(cmd.duration, cmd.step, cmd.every)
         .map_err(|(name, value, reason)| format!("invalid --{name} {value:?}: {reason}"))?;
     let torques = move |t: f64| {
@@ -263,7 +259,7 @@ pub fn simulate(
     let run = rider
         .simulate(x0, &torques, Joint::Free, &grid, how, limits, crate::interrupt::interrupt_flag())
         .map_err(|e| match e {
-            IntegrateError::Model(e) => e.to_string(),
+            IntegrateError::Model(e) => bad_start(lean0, &e),
             e => format!(
                 "the integration diverged: {e:?} (--method {}); take a smaller --step or an \
                  adaptive --method",
@@ -320,6 +316,19 @@ pub fn simulate(
         run.max_energy_drift
     ));
     Ok(s)
+}
+
+/// The message of a start that [`LeanRider::simulate`] refuses, naming `--lean0` for the
+/// roll at or beyond the fall angle (the library's message otherwise: the singular
+/// configuration names the roll and the pivot).
+fn bad_start(lean0: f64, e: &LeanRiderError) -> String {
+    match e {
+        LeanRiderError::Fallen { fall_angle, .. } => format!(
+            "invalid --lean0 {lean0}: at or beyond the fall angle ±{fall_angle} rad \
+             (--fall-angle), where the bicycle is on the ground"
+        ),
+        other => other.to_string(),
+    }
 }
 
 /// `carvallo bode` on the leaning rider: the points of the transfer function from torque

@@ -57,7 +57,7 @@ pub struct Args {
     /// A moment of inertia breaking a triangle inequality is an error instead of a warning
     #[arg(long)]
     pub strict: bool,
-    /// The forward speeds of the Bode diagram [m/s], separated by commas
+    /// The forward speeds of the Bode diagram (m/s), separated by commas
     #[arg(long, value_name = "V", value_delimiter = ',', default_value = "5",
           value_parser = crate::args::SPEED.parser(), allow_hyphen_values = true)]
     pub speed: Vec<f64>,
@@ -70,10 +70,10 @@ pub struct Args {
           value_parser = PossibleValuesParser::new(["roll", "steer", "roll-rate", "steer-rate"])
               .try_map(|s| s.parse::<Output>()))]
     pub output: Output,
-    /// N angular frequencies [rad/s] of the Bode diagram spaced logarithmically from FROM to TO
+    /// N angular frequencies (rad/s) of the Bode diagram spaced logarithmically from FROM to TO
     #[arg(long, value_name = "FROM:TO:N", value_parser = omega_range, default_value = "0.1:100:301")]
     pub omega_range: Frequencies,
-    /// The top of the speed axis of the eigenvalues [m/s] (default: 10, or 1.25 times the
+    /// The top of the speed axis of the eigenvalues in m/s (default: 10, or 1.25 times the
     /// capsize speed up to 30)
     #[arg(long, value_name = "V", value_parser = top_speed)]
     pub v_max: Option<f64>,

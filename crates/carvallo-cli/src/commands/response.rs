@@ -32,7 +32,7 @@ pub struct Args {
     pub model: String,
     #[command(flatten)]
     pub data: DataOptions,
-    /// The forward speed [m/s]
+    /// The forward speed (m/s)
     #[arg(long, value_name = "V", value_parser = crate::args::SPEED.parser(), allow_hyphen_values = true)]
     pub speed: f64,
     /// What drives the response: a unit step (1 N m) or a unit impulse (1 N m s) of the input
@@ -43,11 +43,11 @@ pub struct Args {
     #[arg(long, value_name = "INPUT", default_value = "steer",
           value_parser = PossibleValuesParser::new(["roll", "steer"]).try_map(|s| s.parse::<Input>()))]
     pub input: Input,
-    /// The initial state of `--kind initial`: lean, steer [rad], lean rate, steer rate [rad/s]
+    /// The initial state of `--kind initial`: lean, steer (rad), lean rate, steer rate (rad/s)
     #[arg(long, value_name = "X", value_delimiter = ',', num_args = 1,
           value_parser = crate::args::ANGLE.parser(), allow_hyphen_values = true)]
     pub x0: Vec<f64>,
-    /// The duration [s]
+    /// The duration (s)
     #[arg(long, value_name = "D", default_value_t = 5.0, value_parser = positive,
           allow_hyphen_values = true)]
     pub duration: f64,

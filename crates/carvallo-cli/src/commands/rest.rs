@@ -20,10 +20,10 @@ use crate::args::{finite, lean_deg};
 /// `carvallo rest`: the handlebar's rest position at a lean (memoir n° 67).
 #[derive(Clone, Debug, PartialEq, clap::Args)]
 pub struct Args {
-    /// The frame's lean θ [degrees], strictly between -90 and 90
+    /// The frame's lean θ (degrees), strictly between -90 and 90
     #[arg(long = "theta", value_name = "DEG", value_parser = lean_deg, allow_hyphen_values = true)]
     pub theta_deg: f64,
-    /// The front wheel's mass [kg]
+    /// The front wheel's mass (kg)
     #[arg(long, value_name = "KG", default_value_t = 5.0, value_parser = mass, allow_hyphen_values = true)]
     pub wheel_mass: f64,
     /// Print JSON instead of text

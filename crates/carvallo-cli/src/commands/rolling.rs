@@ -48,22 +48,22 @@ fn parse_threshold(text: &str) -> Result<Threshold, String> {
 /// The start, the run's length and how to integrate: the options both commands share.
 #[derive(Clone, Debug, PartialEq, clap::Args)]
 pub struct RunArgs {
-    /// The initial lean θ [rad]
+    /// The initial lean θ (rad)
     #[arg(long, value_name = "RAD", value_parser = ANGLE.parser(), allow_hyphen_values = true)]
     pub theta0: f64,
-    /// The initial rate s [rad/s] (the rolling rate of n° 7; the rate unit is sqrt(g/R))
+    /// The initial rate s in rad/s (the rolling rate of n° 7; the rate unit is sqrt(g/R))
     #[arg(long, value_name = "RAD/S", value_parser = RATE.parser(), allow_hyphen_values = true)]
     pub s0: f64,
-    /// The initial lean rate p [rad/s]
+    /// The initial lean rate p (rad/s)
     #[arg(long, value_name = "RAD/S", default_value_t = 0.0, value_parser = RATE.parser(), allow_hyphen_values = true)]
     pub p0: f64,
-    /// The initial rate n [rad/s] (the turning rate of n° 7)
+    /// The initial rate n in rad/s (the turning rate of n° 7)
     #[arg(long, value_name = "RAD/S", default_value_t = 0.0, value_parser = RATE.parser(), allow_hyphen_values = true)]
     pub n0: f64,
-    /// How long to simulate [s]
+    /// How long to simulate (s)
     #[arg(long, value_name = "S", value_parser = finite, allow_hyphen_values = true)]
     pub duration: f64,
-    /// The RK4 step [s] (for an adaptive method, the grid of the printed times)
+    /// The RK4 step in s (for an adaptive method, the grid of the printed times)
     #[arg(long, value_name = "DT", default_value_t = 0.001, value_parser = finite, allow_hyphen_values = true)]
     pub step: f64,
     /// Print every N-th step (for an adaptive method, the dense output every N × DT seconds)
@@ -179,13 +179,13 @@ pub(crate) fn interrupted_line(t: f64) -> String {
 /// `carvallo hoop`: the rolling hoop simulated.
 #[derive(Clone, Debug, PartialEq, clap::Args)]
 pub struct HoopArgs {
-    /// The hoop's radius R [m]
+    /// The hoop's radius R (m)
     #[arg(long, value_name = "M", default_value_t = 0.5, value_parser = LENGTH.parser(), allow_hyphen_values = true)]
     pub radius: f64,
-    /// The hoop's mass [kg]
+    /// The hoop's mass (kg)
     #[arg(long, value_name = "KG", default_value_t = 1.0, value_parser = MASS.parser(), allow_hyphen_values = true)]
     pub mass: f64,
-    /// Gravity [m/s²]
+    /// Gravity (m/s²)
     #[arg(long, value_name = "M/S2", default_value_t = 9.81, value_parser = GRAVITY.parser(), allow_hyphen_values = true)]
     pub g: f64,
     #[command(flatten)]
@@ -207,31 +207,31 @@ pub fn hoop(c: &HoopArgs) -> Result<String, String> {
 /// `carvallo unicycle`: the mounted unicycle simulated.
 #[derive(Clone, Debug, PartialEq, clap::Args)]
 pub struct UnicycleArgs {
-    /// The wheel's radius R [m]
+    /// The wheel's radius R (m)
     #[arg(long, value_name = "M", value_parser = LENGTH.parser(), allow_hyphen_values = true)]
     pub radius: f64,
-    /// Gravity [m/s²]
+    /// Gravity (m/s²)
     #[arg(long, value_name = "M/S2", default_value_t = 9.81, value_parser = GRAVITY.parser(), allow_hyphen_values = true)]
     pub g: f64,
-    /// The rider's mass μ [kg]
+    /// The rider's mass μ (kg)
     #[arg(long, value_name = "KG", value_parser = MASS.parser(), allow_hyphen_values = true)]
     pub rider_mass: f64,
-    /// The height of the rider's centre of gravity on Ok [m]
+    /// The height of the rider's centre of gravity on Ok (m)
     #[arg(long, value_name = "M", value_parser = LENGTH.parser(), allow_hyphen_values = true)]
     pub rider_height: f64,
-    /// The rider's A = Σ m(η² + ζ²) [kg m²]
+    /// The rider's A = Σ m(η² + ζ²) in kg m²
     #[arg(long, value_name = "KG_M2", value_parser = INERTIA.parser(), allow_hyphen_values = true)]
     pub rider_a: f64,
-    /// The rider's B = Σ m(ζ² + ξ²) [kg m²]
+    /// The rider's B = Σ m(ζ² + ξ²) in kg m²
     #[arg(long, value_name = "KG_M2", value_parser = INERTIA.parser(), allow_hyphen_values = true)]
     pub rider_b: f64,
-    /// The rider's C = Σ m(ξ² + η²) [kg m²]
+    /// The rider's C = Σ m(ξ² + η²) in kg m²
     #[arg(long, value_name = "KG_M2", value_parser = INERTIA.parser(), allow_hyphen_values = true)]
     pub rider_c: f64,
-    /// The rider's L = Σ m ζ ξ [kg m²]
+    /// The rider's L = Σ m ζ ξ (kg m²)
     #[arg(long, value_name = "KG_M2", default_value_t = 0.0, value_parser = PRODUCT.parser(), allow_hyphen_values = true)]
     pub rider_l: f64,
-    /// The wheel's mass [kg] (a thin hoop of radius R: A1 = 1.5 m R², B1 = 2 m R², C1 = 0.5 m R²)
+    /// The wheel's mass in kg (a thin hoop of radius R: A1 = 1.5 m R², B1 = 2 m R², C1 = 0.5 m R²)
     #[arg(long, value_name = "KG", value_parser = MASS_OR_ZERO.parser(), allow_hyphen_values = true)]
     pub wheel_mass: f64,
     #[command(flatten)]

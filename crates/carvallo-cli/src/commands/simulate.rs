@@ -322,26 +322,26 @@ pub struct Args {
     pub model: String,
     #[command(flatten)]
     pub data: DataOptions,
-    /// The initial forward speed [m/s]
+    /// The initial forward speed (m/s)
     #[arg(long, value_name = "V", value_parser = crate::args::SPEED.parser(), allow_hyphen_values = true, required_unless_present = "batch")]
     pub speed: Option<f64>,
-    /// The initial lean [rad]
+    /// The initial lean (rad)
     #[arg(long, value_name = "RAD", value_parser = crate::args::ANGLE.parser(), allow_hyphen_values = true, required_unless_present = "batch")]
     pub lean0: Option<f64>,
-    /// How long to simulate [s]
+    /// How long to simulate (s)
     #[arg(long, value_name = "S", value_parser = finite, allow_hyphen_values = true)]
     pub duration: f64,
-    /// The RK4 step [s] (for an adaptive method, the grid of the printed times)
+    /// The RK4 step in s (for an adaptive method, the grid of the printed times)
     #[arg(long, value_name = "DT", default_value_t = 0.001, value_parser = finite, allow_hyphen_values = true)]
     pub step: f64,
     /// Print every N-th step (for an adaptive method, the dense output every N × DT seconds)
     #[arg(long, value_name = "N", default_value_t = 10, value_parser = positive)]
     pub every: usize,
-    /// The lean at which the bicycle has fallen [rad]: the run ends there, status `fell`
+    /// The lean at which the bicycle has fallen (rad): the run ends there, status `fell`
     /// (a stated angle: the model gives the frame and rider no extent), in (0, π/2]
     #[arg(long, value_name = "RAD", default_value_t = DEFAULT_FALL_ANGLE, value_parser = fall_angle, allow_hyphen_values = true)]
     pub fall_angle: f64,
-    /// The steer at which the handlebar meets the frame [rad]: the run ends there, status
+    /// The steer at which the handlebar meets the frame (rad): the run ends there, status
     /// `steer lock` (a stated angle short of the equations' singularity at π/2), in (0, π/2)
     #[arg(long, value_name = "RAD", default_value_t = DEFAULT_STEER_LOCK, value_parser = steer_lock, allow_hyphen_values = true)]
     pub steer_lock: f64,

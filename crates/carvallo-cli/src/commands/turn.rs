@@ -55,15 +55,15 @@ pub struct Args {
     pub model: String,
     #[command(flatten)]
     pub data: DataOptions,
-    /// With --model carvallo: the handlebar angle γ [degrees] (Carvallo's sign: the bicycle
+    /// With --model carvallo: the handlebar angle γ in degrees (Carvallo's sign: the bicycle
     /// leans to −γ)
     #[arg(long = "gamma", value_name = "DEG", value_parser = gamma, allow_hyphen_values = true)]
     pub gamma_deg: Option<f64>,
-    /// The rear contact's speed (Carvallo's rolling speed Rs) [m/s]
+    /// The rear contact's speed in m/s (Carvallo's rolling speed Rs)
     #[arg(long, value_name = "V", value_parser = crate::args::SPEED.parser(), allow_hyphen_values = true,
           required_unless_present = "hands_free")]
     pub speed: Option<f64>,
-    /// With a nonlinear model: the lean φ [rad], positive to the right, strictly within ±π/2
+    /// With a nonlinear model: the lean φ (rad), positive to the right, strictly within ±π/2
     #[arg(long, value_name = "RAD", value_parser = finite, allow_hyphen_values = true)]
     pub lean: Option<f64>,
     /// With a nonlinear model: keep only the turn whose steer is nearest RAD

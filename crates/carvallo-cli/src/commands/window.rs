@@ -80,10 +80,10 @@ pub struct FeedbackOptions {
     /// speed, linearly interpolated
     #[arg(long, value_name = "FILE.csv", conflicts_with = "gain")]
     pub gain_table: Option<String>,
-    /// The lowest speed of a closed-loop window [m/s] [default: 0, or the table's first speed]
+    /// The lowest speed of a closed-loop window (m/s) [default: 0, or the table's first speed]
     #[arg(long, value_name = "V", value_parser = crate::gains::speed)]
     pub vmin: Option<f64>,
-    /// The highest speed of a closed-loop window [m/s] [default: every speed, or the table's
+    /// The highest speed of a closed-loop window (m/s) [default: every speed, or the table's
     /// last speed]
     #[arg(long, value_name = "V", value_parser = crate::gains::speed)]
     pub vmax: Option<f64>,

@@ -401,7 +401,7 @@ fn window_sweep(
     c.render()
 }
 
-/// The balance-assist figure's gains [N m s/rad], speed axis [m/s] and target speed [m/s].
+/// The balance-assist figure's gains [N m s/rad], speed axis (m/s) and target speed (m/s).
 const ASSIST_GAINS: (f64, usize) = (50.0, 100);
 const ASSIST_V_MAX: f64 = 8.0;
 const ASSIST_TARGET: f64 = 2.0;

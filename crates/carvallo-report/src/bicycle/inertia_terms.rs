@@ -63,7 +63,8 @@ pub struct FrameTerms {
     pub decomposition: f64,
     /// The printed sum against the computed sum, arbitrary states.
     pub sum_whole: f64,
-    /// Term (1)..(6) against the corrected forms ([`corrected_terms`]), every state.
+    /// Term (1)..(6) against the corrected forms (`corrected_terms`, private to this module),
+    /// every state.
     pub corrected: [f64; 6],
 }
 

@@ -11,7 +11,6 @@
 //! n° 24, the rider's and the wheel's letters are never merged here.
 
 pub mod discussion;
-/// The rider's pitch about the axle (n° 42) and the rolling rate held by the pedals (n° 78).
 pub mod variants;
 
 use std::sync::atomic::AtomicBool;

@@ -28,26 +28,26 @@ use super::WhippleParams;
 pub struct MassCentre {
     /// `rear wheel`, `rear frame`, `front frame`, `front wheel`, `rider` or `whole bicycle`.
     pub name: &'static str,
-    /// The body's mass [kg].
+    /// The body's mass (kg).
     pub mass: f64,
-    /// Where it is: $(x, h)$ [m].
+    /// Where it is: $(x, h)$ (m).
     pub at: [f64; 2],
 }
 
-/// The points of a side view (see the module docs); every point is $(x, h)$ [m].
+/// The points of a side view (see the module docs); every point is $(x, h)$ (m).
 #[derive(Clone, Debug, PartialEq)]
 pub struct SideView {
     /// The rear wheel's contact with the ground, $(0, 0)$.
     pub rear_contact: [f64; 2],
     /// The rear hub, $(0, r_R)$.
     pub rear_hub: [f64; 2],
-    /// $r_R$ [m].
+    /// $r_R$ (m).
     pub rear_radius: f64,
     /// The front wheel's contact with the ground, $(w, 0)$.
     pub front_contact: [f64; 2],
     /// The front hub, $(w, r_F)$.
     pub front_hub: [f64; 2],
-    /// $r_F$ [m].
+    /// $r_F$ (m).
     pub front_radius: f64,
     /// The steer axis from the ground, $(w + c, 0)$, to its drawn top.
     pub steer_axis: [[f64; 2]; 2],
@@ -107,7 +107,7 @@ impl SideView {
         }
     }
 
-    /// The fork offset $e = r_F\sin\lambda - c\cos\lambda$ [m]: the front hub's distance ahead
+    /// The fork offset $e = r_F\sin\lambda - c\cos\lambda$ (m): the front hub's distance ahead
     /// of the steer axis.
     pub fn fork_offset(&self) -> f64 {
         // The axis's unit vector u = (−sin λ, cos λ) and the forward normal (u_h, −u_x).

@@ -382,9 +382,9 @@ fn hurwitz_intervals(
 /// The closed-loop stable speed range looked for in $[from, to]$.
 #[derive(Clone, Debug, PartialEq)]
 pub struct ClosedLoopWindow {
-    /// The lowest speed looked at [m/s].
+    /// The lowest speed looked at (m/s).
     pub from: f64,
-    /// The highest speed looked at [m/s] (infinite: every speed above `from`).
+    /// The highest speed looked at in m/s (infinite: every speed above `from`).
     pub to: f64,
     /// The maximal stable intervals within $[from, to]$, ascending; an interval that reaches
     /// `to` ends there (it may go on above).

@@ -36,10 +36,9 @@
 //! alone, the handlebar fixed as in n° 105) slides again when the holding torque exceeds
 //! $\tau$.
 //!
-//! [`simulate_coulomb`](crate::whipple::friction::simulate_coulomb) does the same for any
-//! friction whose slip rate is linear in the steer rate and angle
-//! ([`DryFriction`](crate::whipple::friction::DryFriction)), in particular the memoir's own
-//! case, the pivoting friction of the front tyre on the ground, whose slip rate is the front
+//! [`simulate_coulomb`] does the same for any friction whose slip rate is linear in the steer
+//! rate and angle ([`DryFriction`]), in particular the memoir's own case, the pivoting friction
+//! of the front tyre on the ground, whose slip rate is the front
 //! wheel's rate about the vertical $\omega_n = k\dot\delta + (v\cos\lambda/w)\delta$: sticking, the front wheel keeps
 //! its heading and the steer angle decays as $\dot\delta = -(v\cos\lambda/(kw))\,\delta$ while
 //! the rear frame turns onto the front wheel's heading.

@@ -205,6 +205,38 @@ pub enum LeanRiderError {
         /// Its ratio to its upright value.
         ratio: f64,
     },
+    /// A start whose state `name` ([`STATE_NAMES`], or `q5` for the pitch) is not a finite
+    /// number.
+    NotFiniteStart {
+        /// The state.
+        name: &'static str,
+        /// Its value.
+        value: f64,
+    },
+    /// A start with the roll $|q_4|$ at or beyond the fall angle: the bicycle would already
+    /// lie on the ground.
+    Fallen {
+        /// The roll of the start (rad).
+        q4: f64,
+        /// The fall angle ([`Limits::fall_angle`], rad).
+        fall_angle: f64,
+    },
+    /// A start with the torso's lean on its joint $|q_9|$ at or beyond the fall angle: the
+    /// torso would already have fallen.
+    TorsoFallen {
+        /// The torso's lean of the start (rad).
+        q9: f64,
+        /// The fall angle ([`Limits::fall_angle`], rad).
+        fall_angle: f64,
+    },
+    /// A start with the steer $|q_7|$ at or beyond the steer lock: the handlebar would
+    /// already be against the frame.
+    SteerLocked {
+        /// The steer of the start (rad).
+        q7: f64,
+        /// The steer lock ([`Limits::steer_lock`], rad).
+        steer_lock: f64,
+    },
 }
 
 impl fmt::Display for LeanRiderError {
@@ -241,6 +273,24 @@ impl fmt::Display for LeanRiderError {
                     super::nonlinear::SINGULAR_PIVOT
                 )
             }
+            LeanRiderError::NotFiniteStart { name, value } => {
+                write!(f, "invalid start {name} {value:?}: must be finite")
+            }
+            LeanRiderError::Fallen { q4, fall_angle } => write!(
+                f,
+                "invalid roll {q4:?} rad: at or beyond the fall angle ±{fall_angle} rad, where the \
+                 bicycle is on the ground"
+            ),
+            LeanRiderError::TorsoFallen { q9, fall_angle } => write!(
+                f,
+                "invalid torso lean {q9:?} rad: at or beyond the fall angle ±{fall_angle} rad, \
+                 where the torso has fallen on its joint"
+            ),
+            LeanRiderError::SteerLocked { q7, steer_lock } => write!(
+                f,
+                "invalid steer {q7:?} rad: at or beyond the steer lock ±{steer_lock} rad, where \
+                 the handlebar is against the frame"
+            ),
         }
     }
 }
@@ -582,6 +632,58 @@ impl Limits {
         fall_angle: super::nonlinear::DEFAULT_FALL_ANGLE,
         steer_lock: super::nonlinear::DEFAULT_STEER_LOCK,
     };
+
+    /// Checks the limits as the bicycle's
+    /// [`with_fall_angle`](super::nonlinear::WhippleNonlinear::with_fall_angle) and
+    /// [`with_steer_lock`](super::nonlinear::WhippleNonlinear::with_steer_lock) do.
+    ///
+    /// # Errors
+    /// [`LeanRiderError::Invalid`] naming `fall angle` unless $0 <$ `fall_angle` $\le \pi/2$,
+    /// or `steer lock` unless $0 <$ `steer_lock` $< \pi/2$ (at π/2 the equations are
+    /// singular).
+    pub fn check(&self) -> Result<(), LeanRiderError> {
+        use std::f64::consts::FRAC_PI_2;
+        let Limits { fall_angle, steer_lock } = *self;
+        if !(fall_angle > 0.0 && fall_angle <= FRAC_PI_2) {
+            let reason = "must lie in (0, pi/2] rad";
+            return Err(LeanRiderError::Invalid { name: "fall angle", value: fall_angle, reason });
+        }
+        if !(steer_lock > 0.0 && steer_lock < FRAC_PI_2) {
+            let reason = "must lie in (0, pi/2) rad";
+            return Err(LeanRiderError::Invalid { name: "steer lock", value: steer_lock, reason });
+        }
+        Ok(())
+    }
+
+    /// Checks that the start `x0` (Moore's twelve, then the pitch) lies inside these limits:
+    /// every state finite, the roll $|q_4|$ and the torso's lean $|q_9|$ below the fall angle,
+    /// the steer $|q_7|$ below the steer lock. [`LeanRider::simulate`] makes this check
+    /// first, as the bicycle's
+    /// [`check_start`](super::nonlinear::WhippleNonlinear::check_start) does.
+    ///
+    /// # Errors
+    /// As [`check`](Self::check) for the limits themselves;
+    /// [`LeanRiderError::NotFiniteStart`] naming the first state not finite;
+    /// [`LeanRiderError::Fallen`], [`LeanRiderError::TorsoFallen`] and
+    /// [`LeanRiderError::SteerLocked`] naming the value at or beyond its limit.
+    pub fn check_start(&self, x0: &[f64; 13]) -> Result<(), LeanRiderError> {
+        self.check()?;
+        if let Some(k) = x0.iter().position(|x| !x.is_finite()) {
+            let name = STATE_NAMES.get(k).copied().unwrap_or("q5");
+            return Err(LeanRiderError::NotFiniteStart { name, value: x0[k] });
+        }
+        let Limits { fall_angle, steer_lock } = *self;
+        if x0[3].abs() >= fall_angle {
+            return Err(LeanRiderError::Fallen { q4: x0[3], fall_angle });
+        }
+        if x0[7].abs() >= fall_angle {
+            return Err(LeanRiderError::TorsoFallen { q9: x0[7], fall_angle });
+        }
+        if x0[5].abs() >= steer_lock {
+            return Err(LeanRiderError::SteerLocked { q7: x0[5], steer_lock });
+        }
+        Ok(())
+    }
 }
 
 /// A simulation of the leaning rider: the samples of the grid up to its end.
@@ -1061,10 +1163,12 @@ impl LeanRider {
     /// the generated state Jacobian ([`jacobian`](Self::jacobian)).
     ///
     /// # Errors
-    /// [`IntegrateError::Model`] with [`LeanRiderError::NoUpright`] when the front wheel
-    /// cannot touch the ground at the start, with [`LeanRiderError::SingularStart`] naming the
-    /// pivot and its ratio when the start is at or beyond the singular configuration; the
-    /// integrator's failures.
+    /// [`IntegrateError::Model`] with what [`Limits::check_start`] refuses (limits outside
+    /// their ranges, a state not finite, the roll or the torso's lean at or beyond the fall
+    /// angle, the steer at or beyond the steer lock), with [`LeanRiderError::NoUpright`] when
+    /// the front wheel cannot touch the ground at the start, with
+    /// [`LeanRiderError::SingularStart`] naming the pivot and its ratio when the start is at or
+    /// beyond the singular configuration; the integrator's failures.
     #[allow(clippy::too_many_arguments)]
     pub fn simulate(
         &self,
@@ -1076,6 +1180,7 @@ impl LeanRider {
         limits: Limits,
         stop: &AtomicBool,
     ) -> Result<LeanRun, IntegrateError<LeanRiderError>> {
+        limits.check_start(&x0).map_err(IntegrateError::Model)?;
         let Limits { fall_angle, steer_lock } = limits;
         let mut x0 = x0;
         x0[PITCH] = self
@@ -1346,7 +1451,7 @@ impl LeanTransfer {
         20.0 * re.hypot(im).log10()
     }
 
-    /// The phase of $G(i\omega)$ [degrees], continuous in $\omega$, in $(-180°, 180°]$ as
+    /// The phase of $G(i\omega)$ (degrees), continuous in $\omega$, in $(-180°, 180°]$ as
     /// $\omega \to 0^+$.
     pub fn phase_deg(&self, omega: f64) -> f64 {
         let lead = self.numerator[self.zeros.len()];

@@ -29,7 +29,6 @@ mod params;
 pub mod certified;
 pub mod drawing;
 pub mod feedback;
-/// Friction at the steering pivot (memoir n° 123): viscous steer damping and dry friction.
 pub mod friction;
 pub mod lean_rider;
 pub mod modes;

@@ -19,10 +19,10 @@ use super::matrices::Matrices;
 use super::model::Whipple;
 use crate::numerics::eigen::Eigenvalue;
 
-/// The largest speed step of the continuation [m/s].
+/// The largest speed step of the continuation (m/s).
 pub const STEP: f64 = 0.01;
 
-/// The farthest a requested speed may lie from the reference speed [m/s] (20 000 steps).
+/// The farthest a requested speed may lie from the reference speed in m/s (20 000 steps).
 pub const MAX_RANGE: f64 = 200.0;
 
 /// Which mode an eigenvalue belongs to.
@@ -53,7 +53,7 @@ impl ModeLabel {
 pub struct Mode {
     /// Its label.
     pub label: ModeLabel,
-    /// The eigenvalue $\lambda$ [1/s].
+    /// The eigenvalue $\lambda$ (1/s).
     pub eigenvalue: Eigenvalue,
     /// The unit eigenvector of $A$, $(\varphi, \delta, \dot\varphi, \dot\delta)$.
     pub vector: [Complex<f64>; 4],

@@ -22,7 +22,7 @@ use crate::numerics::mat2::det;
 /// The state space $(A, B)$ of the linearised bicycle at one speed ($C = I_4$, $D = 0$).
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct StateSpace {
-    /// The forward speed $v$ [m/s].
+    /// The forward speed $v$ (m/s).
     pub speed: f64,
     /// The state matrix of $(\varphi, \delta, \dot\varphi, \dot\delta)$.
     pub a: Matrix4<f64>,

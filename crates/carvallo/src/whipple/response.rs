@@ -35,7 +35,7 @@ pub enum Excitation {
 }
 
 impl Whipple {
-    /// The state $(\varphi, \delta, \dot\varphi, \dot\delta)$ at each of `times` [s] at speed `v`
+    /// The state $(\varphi, \delta, \dot\varphi, \dot\delta)$ at each of `times` (s) at speed `v`
     /// (see the [module docs](self)).
     ///
     /// # Errors

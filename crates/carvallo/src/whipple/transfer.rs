@@ -66,22 +66,22 @@ crate::scene! {
 /// An input of the plant: a generalised force.
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
 pub enum Input {
-    /// The roll torque $T_\varphi$ [N m] (acting between the ground and the rear frame).
+    /// The roll torque $T_\varphi$ in N m (acting between the ground and the rear frame).
     Roll,
-    /// The steer torque $T_\delta$ [N m] (acting between the rear and the front frame).
+    /// The steer torque $T_\delta$ in N m (acting between the rear and the front frame).
     Steer,
 }
 
 /// An output of the plant: a coordinate or its rate.
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
 pub enum Output {
-    /// The lean (roll) angle $\varphi$ [rad].
+    /// The lean (roll) angle $\varphi$ (rad).
     Roll,
-    /// The steer angle $\delta$ [rad].
+    /// The steer angle $\delta$ (rad).
     Steer,
-    /// The roll rate $\dot\varphi$ [rad/s].
+    /// The roll rate $\dot\varphi$ (rad/s).
     RollRate,
-    /// The steer rate $\dot\delta$ [rad/s].
+    /// The steer rate $\dot\delta$ (rad/s).
     SteerRate,
 }
 
@@ -171,7 +171,7 @@ impl FromStr for Output {
 /// a_4 s^4)$ with $r = 1$ for a rate output, else 0.
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct TransferFunction {
-    /// The forward speed [m/s].
+    /// The forward speed (m/s).
     pub speed: f64,
     /// The input.
     pub input: Input,
@@ -261,12 +261,12 @@ impl TransferFunction {
 
     /// The poles of $G$: the roots of the characteristic polynomial (the eigenvalues of $A$),
     /// by Aberth's iteration with compensated evaluation
-    /// ([`aberth_compensated`](crate::numerics::quartic::aberth_compensated)).
+    /// ([`aberth_compensated`]).
     pub fn poles(&self) -> [Complex<f64>; 4] {
         aberth_compensated(&self.denominator)
     }
 
-    /// The phase of $G(i\omega)$ [degrees] for $\omega \ge 0$, continuous in $\omega$ and in
+    /// The phase of $G(i\omega)$ (degrees) for $\omega \ge 0$, continuous in $\omega$ and in
     /// $(-180°, 180°]$ as $\omega \to 0^+$ (see the [module docs](self)); NaN where $G$ is zero
     /// or undefined. The same $\omega$ gives the same phase whatever other frequencies are
     /// asked for.
@@ -298,7 +298,7 @@ impl TransferFunction {
     }
 }
 
-/// The phase of $G(i\omega) = $ `g` (real and imaginary parts) [degrees] for $\omega \ge 0$ on
+/// The phase of $G(i\omega) = $ `g` (real and imaginary parts) in degrees for $\omega \ge 0$ on
 /// the branch that the zeros and poles choose (see the [module docs](self)): continuous in
 /// $\omega$, in $(-180°, 180°]$ as $\omega \to 0^+$; `negative` when the gain $K$ (the ratio of
 /// the leading coefficients) is negative. Shared by the bicycle's transfer functions and the
@@ -353,17 +353,17 @@ pub(crate) fn phase_on_branch(
 /// One point of a frequency response.
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct FrequencyPoint {
-    /// The forward speed [m/s].
+    /// The forward speed (m/s).
     pub speed: f64,
-    /// The angular frequency $\omega$ [rad/s].
+    /// The angular frequency $\omega$ (rad/s).
     pub omega: f64,
     /// $\operatorname{Re} G(i\omega)$.
     pub re: f64,
     /// $\operatorname{Im} G(i\omega)$.
     pub im: f64,
-    /// $20 \log_{10} |G(i\omega)|$ [dB].
+    /// $20 \log_{10} |G(i\omega)|$ (dB).
     pub magnitude_db: f64,
-    /// $\arg G(i\omega)$ [degrees] on the branch continuous in $\omega$ that lies in
+    /// $\arg G(i\omega)$ (degrees) on the branch continuous in $\omega$ that lies in
     /// $(-180°, 180°]$ as $\omega \to 0^+$ ([`TransferFunction::phase_deg`]): a function of
     /// the frequency, not of the grid.
     pub phase_deg: f64,
