@@ -72,7 +72,7 @@ use std::sync::atomic::AtomicBool;
 
 use nalgebra::{Matrix3, Vector3};
 
-use super::rate::{self, StateRate};
+use super::rate::{self, StateRate, TorqueJet};
 use super::{
     check_run, dynamics_scene, Configuration, NonlinearError, Sample, State, Stop, Watch,
     WhippleNonlinear,
@@ -415,6 +415,39 @@ impl Inputs {
         Ok(tau)
     }
 
+    /// [`torque_when`](Self::torque_when) with its derivatives with respect to the state of
+    /// the right-hand side ([`rate::LEN`] components; $x$ is its lean, steer, lean rate and
+    /// steer rate, components 3, 4, 7, 8) and the rear contact's speed: $-K$ in $x$'s
+    /// columns and, for a gain table, $-(\mathrm{d}K/\mathrm{d}v)\,x$ for the speed. The
+    /// time functions do not depend on the state. The torques are those of `torque_when`,
+    /// bit for bit.
+    fn torque_jet_when(
+        &self,
+        w: When<'_>,
+        x: [f64; 4],
+        speed: f64,
+    ) -> Result<TorqueJet, InputError> {
+        let torque = self.torque_when(w, x, speed)?;
+        let (k, slope) = match &self.feedback {
+            Feedback::None => return Ok(TorqueJet::constant(torque)),
+            Feedback::Constant(k) => (*k, Gains::ZERO),
+            Feedback::Table(table) => {
+                // Inside the table: `torque_when` returned the error otherwise.
+                let k = table.at(speed).unwrap_or(Gains::ZERO);
+                (k, table.slope(speed).unwrap_or(Gains::ZERO))
+            }
+        };
+        let mut jet = TorqueJet { torque, ..TorqueJet::default() };
+        for r in 0..2 {
+            for (c, j) in X_IN_STATE.into_iter().enumerate() {
+                jet.state[r][j] = -k.0[r][c];
+            }
+            let s = slope.0[r];
+            jet.speed[r] = -(s[0] * x[0] + s[1] * x[1] + s[2] * x[2] + s[3] * x[3]);
+        }
+        Ok(jet)
+    }
+
     /// Checks the steps and impulses against `grid` (finite values, impulse times in
     /// $[0, nh)$ on the grid) and returns where the run is split: the grid points inside the
     /// run where a torque jumps or an impulse acts, in order, each with the impulse there
@@ -508,9 +541,104 @@ fn plain(y: &Y) -> [f64; rate::LEN] {
     std::array::from_fn(|i| y[i])
 }
 
+/// The components of the state of the right-hand side that the feedback's $x$ = (lean,
+/// steer, lean rate, steer rate) are.
+const X_IN_STATE: [usize; 4] = [3, 4, 7, 8];
+
+/// The number of components of a driven run's state ([`ForcedRate`]).
+pub const FORCED_LEN: usize = 12;
+
 fn y_of(s: &State, pitch: f64, work: f64) -> Y {
     let a = rate::state_with_pitch(s, pitch);
     std::array::from_fn(|i| if i < WORK { a[i] } else { work })
+}
+
+/// The derivative of the driven state `y` at the time `w`: the right-hand side's, its torques
+/// at the rear contact's speed, and the work's rate $T_\varphi\dot\varphi +
+/// T_\delta\dot\delta$.
+fn driven_rate(f: &StateRate, inputs: &Inputs, w: When<'_>, y: &Y) -> Result<Y, NonlinearError> {
+    let s = state_of(y);
+    let x = [s.lean, s.steer, s.lean_rate, s.steer_rate];
+    let mut tau = [0.0, 0.0];
+    let r = f.rates_with(&plain(y), &mut |v| {
+        tau = inputs.torque_when(w, x, v)?;
+        Ok(tau)
+    })?;
+    Ok(std::array::from_fn(|i| {
+        if i < WORK {
+            r.derivative[i]
+        } else {
+            tau[0] * s.lean_rate + tau[1] * s.steer_rate
+        }
+    }))
+}
+
+/// The state Jacobian of [`driven_rate`]: the right-hand side's with the torques' derivatives
+/// ([`StateRate::jacobian_driven`]), and the work's row
+/// $\mathrm{d}T_\varphi\,\dot\varphi + \mathrm{d}T_\delta\,\dot\delta$ plus the torques
+/// in the rates' columns. Nothing depends on the work: its column is zero.
+fn driven_jacobian(
+    f: &StateRate,
+    inputs: &Inputs,
+    w: When<'_>,
+    y: &Y,
+) -> Result<[[f64; FORCED_LEN]; FORCED_LEN], NonlinearError> {
+    let s = state_of(y);
+    let x = [s.lean, s.steer, s.lean_rate, s.steer_rate];
+    let d = f.jacobian_driven(&plain(y), &mut |v| Ok(inputs.torque_jet_when(w, x, v)?))?;
+    let mut jac = [[0.0; FORCED_LEN]; FORCED_LEN];
+    for (row, r) in jac.iter_mut().zip(&d.jacobian) {
+        row[..rate::LEN].copy_from_slice(r);
+    }
+    let dt = &d.torque_jacobian;
+    for j in 0..rate::LEN {
+        jac[WORK][j] = dt[0][j] * s.lean_rate + dt[1][j] * s.steer_rate;
+    }
+    jac[WORK][7] += d.torque[0];
+    jac[WORK][8] += d.torque[1];
+    Ok(jac)
+}
+
+/// The right-hand side of a driven run and its state Jacobian, as
+/// [`WhippleNonlinear::simulate_forced`] integrates them (there the torques at a jump on the
+/// grid are taken on the side of the segment being integrated; here at time `t`, the value
+/// after a jump). The state has [`FORCED_LEN`] components: the eleven of [`rate::LEN`] (the
+/// ten of [`State`], then the pitch) and the inputs' work.
+#[derive(Clone, Debug)]
+pub struct ForcedRate<'a> {
+    f: StateRate,
+    inputs: &'a Inputs,
+}
+
+impl<'a> ForcedRate<'a> {
+    /// The driven right-hand side of `bike` under `inputs`.
+    pub fn new(bike: &WhippleNonlinear, inputs: &'a Inputs) -> ForcedRate<'a> {
+        ForcedRate { f: StateRate::new(&bike.params), inputs }
+    }
+
+    /// The state derivative at time `t` and state `y`.
+    ///
+    /// # Errors
+    /// As [`StateRate::rates_with`], and [`InputError::OutsideGainTable`].
+    pub fn eval(&self, t: f64, y: &[f64; FORCED_LEN]) -> Result<[f64; FORCED_LEN], NonlinearError> {
+        driven_rate(&self.f, self.inputs, When { t, segment: None }, y)
+    }
+
+    /// The state Jacobian of [`eval`](Self::eval) at time `t` and state `y`: generated
+    /// derivatives of the bicycle ([`StateRate::jacobian_driven`]) with the feedback's
+    /// chain term $\partial\dot y/\partial T\;\mathrm{d}T/\mathrm{d}y$ (`-K` in the lean,
+    /// steer and their rates, and a gain table's slope through the rear contact's speed),
+    /// what Radau5's Newton iterations use in a driven run.
+    ///
+    /// # Errors
+    /// As [`eval`](Self::eval).
+    pub fn jacobian(
+        &self,
+        t: f64,
+        y: &[f64; FORCED_LEN],
+    ) -> Result<[[f64; FORCED_LEN]; FORCED_LEN], NonlinearError> {
+        driven_jacobian(&self.f, self.inputs, When { t, segment: None }, y)
+    }
 }
 
 impl WhippleNonlinear {
@@ -645,28 +773,25 @@ struct Run<'a> {
 }
 
 impl Run<'_> {
+    /// Time `t` inside the segment being integrated.
+    fn when(&self, t: f64) -> When<'_> {
+        When { t, segment: Some((self.mid.get(), self.grid)) }
+    }
+
     /// The torques at time `t` in the state `s` with the rear contact speed `speed`.
     fn torque(&self, t: f64, s: &State, speed: f64) -> Result<[f64; 2], NonlinearError> {
         let x = [s.lean, s.steer, s.lean_rate, s.steer_rate];
-        let when = When { t, segment: Some((self.mid.get(), self.grid)) };
-        Ok(self.inputs.torque_when(when, x, speed)?)
+        Ok(self.inputs.torque_when(self.when(t), x, speed)?)
     }
 
     /// The derivative of `y` at time `t`.
     fn rhs(&self, t: f64, y: &Y) -> Result<Y, NonlinearError> {
-        let s = state_of(y);
-        let mut tau = [0.0, 0.0];
-        let r = self.f.rates_with(&plain(y), &mut |v| {
-            tau = self.torque(t, &s, v)?;
-            Ok(tau)
-        })?;
-        Ok(std::array::from_fn(|i| {
-            if i < WORK {
-                r.derivative[i]
-            } else {
-                tau[0] * s.lean_rate + tau[1] * s.steer_rate
-            }
-        }))
+        driven_rate(&self.f, self.inputs, self.when(t), y)
+    }
+
+    /// The state Jacobian of [`rhs`](Self::rhs) at time `t`.
+    fn jacobian(&self, t: f64, y: &Y) -> Result<[[f64; FORCED_LEN]; FORCED_LEN], NonlinearError> {
+        driven_jacobian(&self.f, self.inputs, self.when(t), y)
     }
 
     /// The configuration of `y`: its pitch projected onto the contact constraint.
@@ -744,6 +869,9 @@ impl Run<'_> {
         let offset = grid.time(k0);
         self.mid.set((grid.time(k0) + grid.time(k1)) / 2.0);
         let mut rhs = |t: f64, y: &Y| -> Result<Y, NonlinearError> { self.rhs(offset + t, y) };
+        // The implicit method's Newton iterations use the generated Jacobian with the
+        // feedback's chain term.
+        let mut jacobian = |t: f64, y: &Y| self.jacobian(offset + t, y);
         let mut watchers = self.watches.map(|watch| {
             move |y: &Y| -> Result<f64, NonlinearError> {
                 watch.map_or(Ok(f64::NAN), |w| w.value(&self.f, y))
@@ -772,11 +900,12 @@ impl Run<'_> {
             }
             Ok(())
         };
-        let outcome = integrate::integrate_until(
+        let outcome = integrate::integrate_with_jacobian(
             self.how,
             &local,
             y0,
             &mut rhs,
+            Some(&mut jacobian),
             &mut events[..self.watches.iter().flatten().count()],
             &mut observe,
             self.stop,
