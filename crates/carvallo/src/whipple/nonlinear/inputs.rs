@@ -695,6 +695,22 @@ impl WhippleNonlinear {
         inputs: &Inputs,
         stop: &AtomicBool,
     ) -> Result<ForcedTrajectory, NonlinearError> {
+        self.simulate_forced_with(start, grid, how, stops, inputs, stop, JacobianBy::Generated)
+    }
+
+    /// [`simulate_forced_until`](Self::simulate_forced_until) with the Jacobian Radau5's
+    /// Newton iterations use chosen (forward differences only to compare with).
+    #[allow(clippy::too_many_arguments)]
+    fn simulate_forced_with(
+        &self,
+        start: State,
+        grid: &Grid,
+        how: &Integration,
+        stops: &[Stop],
+        inputs: &Inputs,
+        stop: &AtomicBool,
+        jacobian: JacobianBy,
+    ) -> Result<ForcedTrajectory, NonlinearError> {
         check_run(&start, how, stops)?;
         let breaks = inputs.breaks(grid)?;
         let mut trajectory =
@@ -704,6 +720,7 @@ impl WhippleNonlinear {
         let run = Run {
             bike: self,
             inputs,
+            jacobian,
             how,
             grid,
             e0,
@@ -753,10 +770,21 @@ impl WhippleNonlinear {
 /// stop conditions', and the time) and the time the stop flag ended it.
 type SegmentEnd = (Y, Option<(usize, f64)>, Option<f64>);
 
+/// Where the Jacobian of a driven run's right-hand side comes from, for the implicit method.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+enum JacobianBy {
+    /// [`driven_jacobian`]: the generated derivatives and the feedback's chain term.
+    Generated,
+    /// The integrator's forward differences (what a driven run used before; kept to compare).
+    #[cfg_attr(not(test), allow(dead_code))]
+    ForwardDifferences,
+}
+
 /// A driven run in progress: what its segments share.
 struct Run<'a> {
     bike: &'a WhippleNonlinear,
     inputs: &'a Inputs,
+    jacobian: JacobianBy,
     how: &'a Integration,
     grid: &'a Grid,
     e0: f64,
@@ -905,7 +933,10 @@ impl Run<'_> {
             &local,
             y0,
             &mut rhs,
-            Some(&mut jacobian),
+            match self.jacobian {
+                JacobianBy::Generated => Some(&mut jacobian),
+                JacobianBy::ForwardDifferences => None,
+            },
             &mut events[..self.watches.iter().flatten().count()],
             &mut observe,
             self.stop,
@@ -1222,6 +1253,69 @@ mod tests {
         }
         let ratio = errors[0] / errors[1];
         assert!(errors[1] < 1e-3 && (1.6..2.5).contains(&ratio), "{errors:?}");
+    }
+
+    #[test]
+    fn radau5_with_the_driven_jacobian_needs_fewer_evaluations_for_the_same_run() {
+        // Radau5 driven by a steer torque step and the feedback (constant gains, and a gain
+        // table read at the rear contact's speed), from a lean of 0.02 rad, 5 s: with the
+        // generated Jacobian and its feedback chain term (`ForcedRate::jacobian`) it takes the
+        // steps forward differences took and ends as close to DOP853 at 1e-13, with fewer
+        // evaluations of the right-hand side (forward differences cost twelve per Jacobian).
+        // Measured at rtol 1e-8: constant gains 2,949 evaluations against 4,185 (387 steps,
+        // 35 rejected, each), the table 2,953 against 4,141 (398 steps, 28 rejected); the same
+        // ends (errors 6.5e-10 and 3.0e-10 both ways). Handing Radau5 no Jacobian (the driven
+        // run before) fails the count.
+        let bike = bike();
+        let g = Gains::balance_assist(20.0);
+        let mut g2 = g;
+        g2.0[1][0] = 2.0;
+        g2.0[0][0] = -5.0;
+        let table = GainTable::new(vec![(0.0, g2), (4.0, g), (10.0, g2)]).expect("table");
+        for (name, speed, feedback) in [
+            ("constant gains", 5.0, Feedback::Constant(g)),
+            ("gain table", 3.0, Feedback::Table(table)),
+        ] {
+            let inputs = Inputs {
+                steer: vec![Signal::Step { value: 0.5, start: 0.1 }],
+                feedback,
+                ..Inputs::default()
+            };
+            let start = bike.initial_state(speed, 0.02).expect("start");
+            let grid = Grid::new(5.0, 1e-3, 1000).expect("grid");
+            let never = AtomicBool::new(false);
+            let run = |how: Integration, by: JacobianBy| {
+                bike.simulate_forced_with(start, &grid, &how, &[], &inputs, &never, by)
+                    .expect("run")
+            };
+            let reference =
+                run(Integration::adaptive(Method::Dop853, 1e-13, 1e-15), JacobianBy::Generated);
+            let end = |tr: &ForcedTrajectory| {
+                let s = tr.last().expect("end").1.sample.state;
+                [s.lean, s.steer, s.lean_rate, s.steer_rate]
+            };
+            let err = |tr: &ForcedTrajectory| {
+                let (a, b) = (end(tr), end(&reference));
+                (0..4).map(|k| (a[k] - b[k]).abs()).fold(0.0, f64::max)
+            };
+            let radau = Integration::adaptive(Method::Radau5, 1e-8, 1e-11);
+            let exact = run(radau, JacobianBy::Generated);
+            let fd = run(radau, JacobianBy::ForwardDifferences);
+            eprintln!(
+                "{name}: generated {:?}, error {:.1e}; forward differences {:?}, error {:.1e}",
+                exact.stats,
+                err(&exact),
+                fd.stats,
+                err(&fd)
+            );
+            assert!(err(&exact) < 1e-7 && err(&fd) < 1e-7, "{name}");
+            assert!(
+                5 * exact.stats.rhs_evaluations < 4 * fd.stats.rhs_evaluations,
+                "{name}: generated {:?} against forward differences {:?}",
+                exact.stats,
+                fd.stats
+            );
+        }
     }
 
     #[test]
