@@ -59,6 +59,15 @@
 //! ([`Sample::speed`], $-r_R(\dot\theta + \dot\theta_R)$); a speed outside the table is an
 //! error ([`InputError::OutsideGainTable`]).
 //!
+//! # The Jacobian
+//!
+//! Radau5's Newton iterations take the driven run's state Jacobian from [`ForcedRate::jacobian`]:
+//! the generated derivatives of the undriven bicycle ([`StateRate::jacobian_driven`]), the
+//! torques' part $\partial\dot u/\partial T = M_3^{-1}$'s first two columns, and the
+//! feedback's chain term $\mathrm{d}T/\mathrm{d}y = -K\,\partial x/\partial y -
+//! (\mathrm{d}K/\mathrm{d}v)\,x\,\mathrm{d}v/\mathrm{d}y$ (a gain table's slope through the
+//! rear contact's speed $v$). The explicit methods do not use it.
+//!
 //! # Energy balance
 //!
 //! The work $W(t) = \int_0^t (T_\varphi\dot\varphi + T_\delta\dot\delta)\,dt$ (impulses
