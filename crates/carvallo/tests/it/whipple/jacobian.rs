@@ -10,10 +10,10 @@
 //!   linear* model (`generated/whipple.ir`), at several speeds, to 1e-12.
 
 use carvallo::numerics::rng::SplitMix64;
+use carvallo::whipple::feedback::{GainTable, Gains};
 use carvallo::whipple::nonlinear::rate::{
     project_jacobian_scene, state_rate_jacobian_scene, StateRate, LEN, PITCH,
 };
-use carvallo::whipple::feedback::{GainTable, Gains};
 use carvallo::whipple::{Whipple, WhippleParams};
 use carvallo::whipple_nonlinear::{
     Feedback, ForcedRate, Inputs, Signal, WhippleNonlinear, FORCED_LEN,
@@ -323,11 +323,8 @@ fn the_driven_jacobian_with_feedback_equals_dual_numbers_of_a_second_right_hand_
         let table: Vec<(f64, Gains)> =
             [0.0, 2.5, 5.0, 10.0].iter().map(|&v| (v, gains(&mut rng))).collect();
         // Every third state with constant gains: a table whose rows are all equal.
-        let table = if k % 3 == 2 {
-            table.iter().map(|&(v, _)| (v, table[0].1)).collect()
-        } else {
-            table
-        };
+        let table =
+            if k % 3 == 2 { table.iter().map(|&(v, _)| (v, table[0].1)).collect() } else { table };
         let feedback = if k % 3 == 2 {
             Feedback::Constant(table[0].1)
         } else {
