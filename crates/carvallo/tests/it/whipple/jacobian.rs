@@ -291,9 +291,9 @@ fn torque_dual<const N: usize>(
     let w = (v - Dual::constant(v0)) / Dual::constant(v1 - v0);
     std::array::from_fn(|r| {
         let mut t = Dual::constant(open[r]);
-        for c in 0..4 {
+        for (c, xc) in x.iter().enumerate() {
             let k = Dual::constant(g0.0[r][c]) + w * Dual::constant(g1.0[r][c] - g0.0[r][c]);
-            t = t - k * x[c];
+            t = t - k * *xc;
         }
         t
     })
