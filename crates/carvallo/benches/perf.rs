@@ -1,7 +1,9 @@
 //! Criterion benchmarks of the performance work: the bicycle's stability window by the
 //! closed-form Hurwitz route against the eigenvalue sweep, the quartic root solvers on the
 //! benchmark bicycle's polynomial at 5 m/s, the generated characteristic polynomial against
-//! the interpreter, and the certified classification.
+//! the interpreter, the certified classification, and the leaning rider's steady turns at one
+//! speed and roll (a scan of 720 steers, each with the torso's equilibrium by Newton, then
+//! Newton on the steer).
 //!
 //! Run with `cargo bench -p carvallo --bench perf`. `carvallo bench` measures the same things
 //! together with their errors in one table.
@@ -10,6 +12,8 @@ use std::hint::black_box;
 use std::time::Duration;
 
 use carvallo::ir::{Interpreter, Program};
+use carvallo::whipple::lean_rider::{LeanRider, LeanRiderParams};
+use carvallo::whipple::steady_turn::lean_rider::RiderTurnSolver;
 use carvallo::whipple::{char_poly_scene, Whipple, WhippleParams};
 use carvallo::{certified, quartic, sweep};
 use criterion::{criterion_group, criterion_main, Criterion};
@@ -57,6 +61,12 @@ fn bench(c: &mut Criterion) {
             it.eval(black_box(&params), &[5.0], &mut scratch, &mut out).unwrap();
             black_box(out[0])
         })
+    });
+    group.sample_size(10);
+    let rider = LeanRider::new(LeanRiderParams::browser_jason()).unwrap();
+    let solver = RiderTurnSolver::new(&rider);
+    group.bench_function("steady_turn/lean_rider", |b| {
+        b.iter(|| solver.turns(black_box(5.0), black_box(0.05)).unwrap())
     });
     group.finish();
 }

@@ -100,7 +100,7 @@ pub enum MethodArg {
     /// Verner's efficient 9(8) pair, error-controlled, dense output of order 9
     Vern9,
     /// Radau IIA of order 5, implicit, for stiff variants (Newton on the model's generated
-    /// state Jacobian; forward differences for the bicycle driven by torques or feedback)
+    /// state Jacobian, with the feedback's derivatives when driven)
     Radau5,
 }
 

@@ -510,9 +510,27 @@ impl GainTable {
         if !(v >= lo && v <= hi) {
             return None;
         }
-        let i = self.rows.partition_point(|r| r.0 <= v).clamp(1, self.rows.len() - 1);
-        let ((v0, g0), (v1, g1)) = (self.rows[i - 1], self.rows[i]);
+        let ((v0, g0), (v1, g1)) = self.segment(v);
         Some(g0.lerp(&g1, (v - v0) / (v1 - v0)))
+    }
+
+    /// The derivative $\mathrm{d}K/\mathrm{d}v$ of [`at`](Self::at) at speed `v`: the slope
+    /// of the table's segment that `at` interpolates on (at a row's speed, the segment after
+    /// it, or the last one at the last speed); `None` outside [`GainTable::span`].
+    pub fn slope(&self, v: f64) -> Option<Gains> {
+        let (lo, hi) = self.span();
+        if !(v >= lo && v <= hi) {
+            return None;
+        }
+        let ((v0, g0), (v1, g1)) = self.segment(v);
+        let w = v1 - v0;
+        Some(Gains(std::array::from_fn(|r| std::array::from_fn(|c| (g1.0[r][c] - g0.0[r][c]) / w))))
+    }
+
+    /// The rows at the ends of the segment that holds `v` (inside the span).
+    fn segment(&self, v: f64) -> ((f64, Gains), (f64, Gains)) {
+        let i = self.rows.partition_point(|r| r.0 <= v).clamp(1, self.rows.len() - 1);
+        (self.rows[i - 1], self.rows[i])
     }
 }
 

@@ -971,6 +971,17 @@ impl LeanRider {
         (o[0], o[1])
     }
 
+    /// The front contact's height $h$ (m), $\partial h/\partial q_5$ (m/rad) and their
+    /// derivatives with respect to roll, pitch and steer (rows $h$, $h_{q_5}$; columns $q_4$,
+    /// $q_5$, $q_7$) at roll `q4`, pitch `q5` and steer `q7`, from generated code
+    /// ([`contact_jacobian_scene`]).
+    pub fn contact_derivatives(&self, q4: f64, q5: f64, q7: f64) -> (f64, f64, [[f64; 3]; 2]) {
+        let mut values = [0.0; 12];
+        values[..3].copy_from_slice(&[q4, q5, q7]);
+        let o = contact_jacobian_scene::eval_array(&self.contact_jac.at(&values));
+        (o[0], o[1], contact_jacobian_scene::jacobian_array(&o))
+    }
+
     /// The pivots of the constraint solve at roll `q4`, pitch `q5` and steer `q7`: the
     /// coefficients of the pitch rate, the yaw rate and the front wheel rate in the front
     /// contact's vertical, lateral and longitudinal rows ([`pivot_scene`]), by which the

@@ -89,8 +89,8 @@ pub mod rate;
 use self::rate::StateRate;
 
 pub use self::inputs::{
-    Feedback, ForcedDiagnostics, ForcedSample, ForcedTrajectory, Impulse, InputError, Inputs,
-    Series, Signal,
+    Feedback, ForcedDiagnostics, ForcedRate, ForcedSample, ForcedTrajectory, Impulse, InputError,
+    Inputs, Series, Signal, FORCED_LEN,
 };
 
 crate::scene! {

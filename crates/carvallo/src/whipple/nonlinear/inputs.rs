@@ -59,6 +59,15 @@
 //! ([`Sample::speed`], $-r_R(\dot\theta + \dot\theta_R)$); a speed outside the table is an
 //! error ([`InputError::OutsideGainTable`]).
 //!
+//! # The Jacobian
+//!
+//! Radau5's Newton iterations take the driven run's state Jacobian from [`ForcedRate::jacobian`]:
+//! the generated derivatives of the undriven bicycle ([`StateRate::jacobian_driven`]), the
+//! torques' part $\partial\dot u/\partial T = M_3^{-1}$'s first two columns, and the
+//! feedback's chain term $\mathrm{d}T/\mathrm{d}y = -K\,\partial x/\partial y -
+//! (\mathrm{d}K/\mathrm{d}v)\,x\,\mathrm{d}v/\mathrm{d}y$ (a gain table's slope through the
+//! rear contact's speed $v$). The explicit methods do not use it.
+//!
 //! # Energy balance
 //!
 //! The work $W(t) = \int_0^t (T_\varphi\dot\varphi + T_\delta\dot\delta)\,dt$ (impulses
@@ -72,7 +81,7 @@ use std::sync::atomic::AtomicBool;
 
 use nalgebra::{Matrix3, Vector3};
 
-use super::rate::{self, StateRate};
+use super::rate::{self, StateRate, TorqueJet};
 use super::{
     check_run, dynamics_scene, Configuration, NonlinearError, Sample, State, Stop, Watch,
     WhippleNonlinear,
@@ -415,6 +424,39 @@ impl Inputs {
         Ok(tau)
     }
 
+    /// [`torque_when`](Self::torque_when) with its derivatives with respect to the state of
+    /// the right-hand side ([`rate::LEN`] components; $x$ is its lean, steer, lean rate and
+    /// steer rate, components 3, 4, 7, 8) and the rear contact's speed: $-K$ in $x$'s
+    /// columns and, for a gain table, $-(\mathrm{d}K/\mathrm{d}v)\,x$ for the speed. The
+    /// time functions do not depend on the state. The torques are those of `torque_when`,
+    /// bit for bit.
+    fn torque_jet_when(
+        &self,
+        w: When<'_>,
+        x: [f64; 4],
+        speed: f64,
+    ) -> Result<TorqueJet, InputError> {
+        let torque = self.torque_when(w, x, speed)?;
+        let (k, slope) = match &self.feedback {
+            Feedback::None => return Ok(TorqueJet::constant(torque)),
+            Feedback::Constant(k) => (*k, Gains::ZERO),
+            Feedback::Table(table) => {
+                // Inside the table: `torque_when` returned the error otherwise.
+                let k = table.at(speed).unwrap_or(Gains::ZERO);
+                (k, table.slope(speed).unwrap_or(Gains::ZERO))
+            }
+        };
+        let mut jet = TorqueJet { torque, ..TorqueJet::default() };
+        for r in 0..2 {
+            for (c, j) in X_IN_STATE.into_iter().enumerate() {
+                jet.state[r][j] = -k.0[r][c];
+            }
+            let s = slope.0[r];
+            jet.speed[r] = -(s[0] * x[0] + s[1] * x[1] + s[2] * x[2] + s[3] * x[3]);
+        }
+        Ok(jet)
+    }
+
     /// Checks the steps and impulses against `grid` (finite values, impulse times in
     /// $[0, nh)$ on the grid) and returns where the run is split: the grid points inside the
     /// run where a torque jumps or an impulse acts, in order, each with the impulse there
@@ -508,9 +550,104 @@ fn plain(y: &Y) -> [f64; rate::LEN] {
     std::array::from_fn(|i| y[i])
 }
 
+/// The components of the state of the right-hand side that the feedback's $x$ = (lean,
+/// steer, lean rate, steer rate) are.
+const X_IN_STATE: [usize; 4] = [3, 4, 7, 8];
+
+/// The number of components of a driven run's state ([`ForcedRate`]).
+pub const FORCED_LEN: usize = 12;
+
 fn y_of(s: &State, pitch: f64, work: f64) -> Y {
     let a = rate::state_with_pitch(s, pitch);
     std::array::from_fn(|i| if i < WORK { a[i] } else { work })
+}
+
+/// The derivative of the driven state `y` at the time `w`: the right-hand side's, its torques
+/// at the rear contact's speed, and the work's rate $T_\varphi\dot\varphi +
+/// T_\delta\dot\delta$.
+fn driven_rate(f: &StateRate, inputs: &Inputs, w: When<'_>, y: &Y) -> Result<Y, NonlinearError> {
+    let s = state_of(y);
+    let x = [s.lean, s.steer, s.lean_rate, s.steer_rate];
+    let mut tau = [0.0, 0.0];
+    let r = f.rates_with(&plain(y), &mut |v| {
+        tau = inputs.torque_when(w, x, v)?;
+        Ok(tau)
+    })?;
+    Ok(std::array::from_fn(|i| {
+        if i < WORK {
+            r.derivative[i]
+        } else {
+            tau[0] * s.lean_rate + tau[1] * s.steer_rate
+        }
+    }))
+}
+
+/// The state Jacobian of [`driven_rate`]: the right-hand side's with the torques' derivatives
+/// ([`StateRate::jacobian_driven`]), and the work's row
+/// $\mathrm{d}T_\varphi\,\dot\varphi + \mathrm{d}T_\delta\,\dot\delta$ plus the torques
+/// in the rates' columns. Nothing depends on the work: its column is zero.
+fn driven_jacobian(
+    f: &StateRate,
+    inputs: &Inputs,
+    w: When<'_>,
+    y: &Y,
+) -> Result<[[f64; FORCED_LEN]; FORCED_LEN], NonlinearError> {
+    let s = state_of(y);
+    let x = [s.lean, s.steer, s.lean_rate, s.steer_rate];
+    let d = f.jacobian_driven(&plain(y), &mut |v| Ok(inputs.torque_jet_when(w, x, v)?))?;
+    let mut jac = [[0.0; FORCED_LEN]; FORCED_LEN];
+    for (row, r) in jac.iter_mut().zip(&d.jacobian) {
+        row[..rate::LEN].copy_from_slice(r);
+    }
+    let dt = &d.torque_jacobian;
+    for j in 0..rate::LEN {
+        jac[WORK][j] = dt[0][j] * s.lean_rate + dt[1][j] * s.steer_rate;
+    }
+    jac[WORK][7] += d.torque[0];
+    jac[WORK][8] += d.torque[1];
+    Ok(jac)
+}
+
+/// The right-hand side of a driven run and its state Jacobian, as
+/// [`WhippleNonlinear::simulate_forced`] integrates them (there the torques at a jump on the
+/// grid are taken on the side of the segment being integrated; here at time `t`, the value
+/// after a jump). The state has [`FORCED_LEN`] components: the eleven of [`rate::LEN`] (the
+/// ten of [`State`], then the pitch) and the inputs' work.
+#[derive(Clone, Debug)]
+pub struct ForcedRate<'a> {
+    f: StateRate,
+    inputs: &'a Inputs,
+}
+
+impl<'a> ForcedRate<'a> {
+    /// The driven right-hand side of `bike` under `inputs`.
+    pub fn new(bike: &WhippleNonlinear, inputs: &'a Inputs) -> ForcedRate<'a> {
+        ForcedRate { f: StateRate::new(&bike.params), inputs }
+    }
+
+    /// The state derivative at time `t` and state `y`.
+    ///
+    /// # Errors
+    /// As [`StateRate::rates_with`], and [`InputError::OutsideGainTable`].
+    pub fn eval(&self, t: f64, y: &[f64; FORCED_LEN]) -> Result<[f64; FORCED_LEN], NonlinearError> {
+        driven_rate(&self.f, self.inputs, When { t, segment: None }, y)
+    }
+
+    /// The state Jacobian of [`eval`](Self::eval) at time `t` and state `y`: generated
+    /// derivatives of the bicycle ([`StateRate::jacobian_driven`]) with the feedback's
+    /// chain term $\partial\dot y/\partial T\;\mathrm{d}T/\mathrm{d}y$ (`-K` in the lean,
+    /// steer and their rates, and a gain table's slope through the rear contact's speed),
+    /// what Radau5's Newton iterations use in a driven run.
+    ///
+    /// # Errors
+    /// As [`eval`](Self::eval).
+    pub fn jacobian(
+        &self,
+        t: f64,
+        y: &[f64; FORCED_LEN],
+    ) -> Result<[[f64; FORCED_LEN]; FORCED_LEN], NonlinearError> {
+        driven_jacobian(&self.f, self.inputs, When { t, segment: None }, y)
+    }
 }
 
 impl WhippleNonlinear {
@@ -567,6 +704,22 @@ impl WhippleNonlinear {
         inputs: &Inputs,
         stop: &AtomicBool,
     ) -> Result<ForcedTrajectory, NonlinearError> {
+        self.simulate_forced_with(start, grid, how, stops, inputs, stop, JacobianBy::Generated)
+    }
+
+    /// [`simulate_forced_until`](Self::simulate_forced_until) with the Jacobian Radau5's
+    /// Newton iterations use chosen (forward differences only to compare with).
+    #[allow(clippy::too_many_arguments)]
+    fn simulate_forced_with(
+        &self,
+        start: State,
+        grid: &Grid,
+        how: &Integration,
+        stops: &[Stop],
+        inputs: &Inputs,
+        stop: &AtomicBool,
+        jacobian: JacobianBy,
+    ) -> Result<ForcedTrajectory, NonlinearError> {
         check_run(&start, how, stops)?;
         let breaks = inputs.breaks(grid)?;
         let mut trajectory =
@@ -576,6 +729,7 @@ impl WhippleNonlinear {
         let run = Run {
             bike: self,
             inputs,
+            jacobian,
             how,
             grid,
             e0,
@@ -625,10 +779,21 @@ impl WhippleNonlinear {
 /// stop conditions', and the time) and the time the stop flag ended it.
 type SegmentEnd = (Y, Option<(usize, f64)>, Option<f64>);
 
+/// Where the Jacobian of a driven run's right-hand side comes from, for the implicit method.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+enum JacobianBy {
+    /// [`driven_jacobian`]: the generated derivatives and the feedback's chain term.
+    Generated,
+    /// The integrator's forward differences (what a driven run used before; kept to compare).
+    #[cfg_attr(not(test), allow(dead_code))]
+    ForwardDifferences,
+}
+
 /// A driven run in progress: what its segments share.
 struct Run<'a> {
     bike: &'a WhippleNonlinear,
     inputs: &'a Inputs,
+    jacobian: JacobianBy,
     how: &'a Integration,
     grid: &'a Grid,
     e0: f64,
@@ -645,28 +810,25 @@ struct Run<'a> {
 }
 
 impl Run<'_> {
+    /// Time `t` inside the segment being integrated.
+    fn when(&self, t: f64) -> When<'_> {
+        When { t, segment: Some((self.mid.get(), self.grid)) }
+    }
+
     /// The torques at time `t` in the state `s` with the rear contact speed `speed`.
     fn torque(&self, t: f64, s: &State, speed: f64) -> Result<[f64; 2], NonlinearError> {
         let x = [s.lean, s.steer, s.lean_rate, s.steer_rate];
-        let when = When { t, segment: Some((self.mid.get(), self.grid)) };
-        Ok(self.inputs.torque_when(when, x, speed)?)
+        Ok(self.inputs.torque_when(self.when(t), x, speed)?)
     }
 
     /// The derivative of `y` at time `t`.
     fn rhs(&self, t: f64, y: &Y) -> Result<Y, NonlinearError> {
-        let s = state_of(y);
-        let mut tau = [0.0, 0.0];
-        let r = self.f.rates_with(&plain(y), &mut |v| {
-            tau = self.torque(t, &s, v)?;
-            Ok(tau)
-        })?;
-        Ok(std::array::from_fn(|i| {
-            if i < WORK {
-                r.derivative[i]
-            } else {
-                tau[0] * s.lean_rate + tau[1] * s.steer_rate
-            }
-        }))
+        driven_rate(&self.f, self.inputs, self.when(t), y)
+    }
+
+    /// The state Jacobian of [`rhs`](Self::rhs) at time `t`.
+    fn jacobian(&self, t: f64, y: &Y) -> Result<[[f64; FORCED_LEN]; FORCED_LEN], NonlinearError> {
+        driven_jacobian(&self.f, self.inputs, self.when(t), y)
     }
 
     /// The configuration of `y`: its pitch projected onto the contact constraint.
@@ -744,6 +906,9 @@ impl Run<'_> {
         let offset = grid.time(k0);
         self.mid.set((grid.time(k0) + grid.time(k1)) / 2.0);
         let mut rhs = |t: f64, y: &Y| -> Result<Y, NonlinearError> { self.rhs(offset + t, y) };
+        // The implicit method's Newton iterations use the generated Jacobian with the
+        // feedback's chain term.
+        let mut jacobian = |t: f64, y: &Y| self.jacobian(offset + t, y);
         let mut watchers = self.watches.map(|watch| {
             move |y: &Y| -> Result<f64, NonlinearError> {
                 watch.map_or(Ok(f64::NAN), |w| w.value(&self.f, y))
@@ -772,11 +937,15 @@ impl Run<'_> {
             }
             Ok(())
         };
-        let outcome = integrate::integrate_until(
+        let outcome = integrate::integrate_with_jacobian(
             self.how,
             &local,
             y0,
             &mut rhs,
+            match self.jacobian {
+                JacobianBy::Generated => Some(&mut jacobian),
+                JacobianBy::ForwardDifferences => None,
+            },
             &mut events[..self.watches.iter().flatten().count()],
             &mut observe,
             self.stop,
@@ -1086,6 +1255,69 @@ mod tests {
         }
         let ratio = errors[0] / errors[1];
         assert!(errors[1] < 1e-3 && (1.6..2.5).contains(&ratio), "{errors:?}");
+    }
+
+    #[test]
+    fn radau5_with_the_driven_jacobian_needs_fewer_evaluations_for_the_same_run() {
+        // Radau5 driven by a steer torque step and the feedback (constant gains, and a gain
+        // table read at the rear contact's speed), from a lean of 0.02 rad, 5 s: with the
+        // generated Jacobian and its feedback chain term (`ForcedRate::jacobian`) it takes the
+        // steps forward differences took and ends as close to DOP853 at 1e-13, with fewer
+        // evaluations of the right-hand side (forward differences cost twelve per Jacobian).
+        // Measured at rtol 1e-8: constant gains 2,949 evaluations against 4,185 (387 steps,
+        // 35 rejected, each), the table 2,953 against 4,141 (398 steps, 28 rejected); the same
+        // ends (errors 6.5e-10 and 3.0e-10 both ways). Handing Radau5 no Jacobian (the driven
+        // run before) fails the count.
+        let bike = bike();
+        let g = Gains::balance_assist(20.0);
+        let mut g2 = g;
+        g2.0[1][0] = 2.0;
+        g2.0[0][0] = -5.0;
+        let table = GainTable::new(vec![(0.0, g2), (4.0, g), (10.0, g2)]).expect("table");
+        for (name, speed, feedback) in [
+            ("constant gains", 5.0, Feedback::Constant(g)),
+            ("gain table", 3.0, Feedback::Table(table)),
+        ] {
+            let inputs = Inputs {
+                steer: vec![Signal::Step { value: 0.5, start: 0.1 }],
+                feedback,
+                ..Inputs::default()
+            };
+            let start = bike.initial_state(speed, 0.02).expect("start");
+            let grid = Grid::new(5.0, 1e-3, 1000).expect("grid");
+            let never = AtomicBool::new(false);
+            let run = |how: Integration, by: JacobianBy| {
+                bike.simulate_forced_with(start, &grid, &how, &[], &inputs, &never, by)
+                    .expect("run")
+            };
+            let reference =
+                run(Integration::adaptive(Method::Dop853, 1e-13, 1e-15), JacobianBy::Generated);
+            let end = |tr: &ForcedTrajectory| {
+                let s = tr.last().expect("end").1.sample.state;
+                [s.lean, s.steer, s.lean_rate, s.steer_rate]
+            };
+            let err = |tr: &ForcedTrajectory| {
+                let (a, b) = (end(tr), end(&reference));
+                (0..4).map(|k| (a[k] - b[k]).abs()).fold(0.0, f64::max)
+            };
+            let radau = Integration::adaptive(Method::Radau5, 1e-8, 1e-11);
+            let exact = run(radau, JacobianBy::Generated);
+            let fd = run(radau, JacobianBy::ForwardDifferences);
+            eprintln!(
+                "{name}: generated {:?}, error {:.1e}; forward differences {:?}, error {:.1e}",
+                exact.stats,
+                err(&exact),
+                fd.stats,
+                err(&fd)
+            );
+            assert!(err(&exact) < 1e-7 && err(&fd) < 1e-7, "{name}");
+            assert!(
+                5 * exact.stats.rhs_evaluations < 4 * fd.stats.rhs_evaluations,
+                "{name}: generated {:?} against forward differences {:?}",
+                exact.stats,
+                fd.stats
+            );
+        }
     }
 
     #[test]

@@ -360,6 +360,38 @@ fn derivative(y: &[f64; LEN], o: &[f64; 13], tau: [f64; 2]) -> Result<[f64; LEN]
     Ok([speed * cy, speed * sy, o[10], y[7], y[8], y[9], o[11], ud[0], ud[1], ud[2], o[9]])
 }
 
+/// A torque $(T_\varphi, T_\delta)$ that may depend on the state, and its derivatives: what
+/// [`StateRate::jacobian_driven`] takes from the torque at the rear contact's speed $v$.
+#[derive(Clone, Copy, Debug, Default, PartialEq)]
+pub struct TorqueJet {
+    /// The torques (N m).
+    pub torque: [f64; 2],
+    /// $\partial T_r/\partial y_j$ with the speed $v$ held: row $r$ for $T_\varphi$,
+    /// $T_\delta$, column $j$ a component of the state ([`LEN`]).
+    pub state: [[f64; LEN]; 2],
+    /// $\partial T_r/\partial v$ (N m s/m).
+    pub speed: [f64; 2],
+}
+
+impl TorqueJet {
+    /// A torque that does not depend on the state.
+    pub fn constant(torque: [f64; 2]) -> TorqueJet {
+        TorqueJet { torque, ..TorqueJet::default() }
+    }
+}
+
+/// What [`StateRate::jacobian_driven`] gives.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct DrivenJacobian {
+    /// The state Jacobian of the driven right-hand side.
+    pub jacobian: Jacobian,
+    /// The torques at the state (N m).
+    pub torque: [f64; 2],
+    /// Their total derivatives $\mathrm{d}T_r/\mathrm{d}y_j = \partial T_r/\partial y_j +
+    /// \partial T_r/\partial v\;\partial v/\partial y_j$.
+    pub torque_jacobian: [[f64; LEN]; 2],
+}
+
 impl StateRate {
     /// The state Jacobian of [`eval`](Self::eval) at `y`: $\partial \dot y_i/\partial y_j$,
     /// the derivatives of exactly the function `eval` computes, with constant torques
@@ -385,6 +417,28 @@ impl StateRate {
         y: &[f64; LEN],
         torque: [f64; 2],
     ) -> Result<Jacobian, NonlinearError> {
+        Ok(self.jacobian_driven(y, &mut |_| Ok(TorqueJet::constant(torque)))?.jacobian)
+    }
+
+    /// The state Jacobian of [`rates_with`](Self::rates_with) at `y` driven by a torque that
+    /// depends on the state: `torque(v)` gives, at the rear contact's speed $v$ (as
+    /// `rates_with`'s closure receives it), the torques and their derivatives ([`TorqueJet`]),
+    /// e.g. the feedback $T = -K(v)\,x$. As [`jacobian_with`](Self::jacobian_with), with the
+    /// torques' own derivatives added to $f_3$'s: the torques enter as generalised forces
+    /// $(T_\varphi, T_\delta, 0)$ beside $f_3$, so $\partial\dot u/\partial T = M_3^{-1}$'s
+    /// first two columns and
+    /// $\mathrm{d}\dot u = M_3^{-1}(\mathrm{d}f_3 + (\mathrm{d}T_\varphi, \mathrm{d}T_\delta,
+    /// 0) - \mathrm{d}M_3\,\dot u)$, with $\mathrm{d}T = \partial T/\partial y +
+    /// \partial T/\partial v\,\mathrm{d}v$ and $\mathrm{d}v$ the generated derivative of the
+    /// rear contact's speed (through the pitch's projection).
+    ///
+    /// # Errors
+    /// As [`rates_with`](Self::rates_with).
+    pub fn jacobian_driven(
+        &self,
+        y: &[f64; LEN],
+        torque: &mut dyn FnMut(f64) -> Result<TorqueJet, NonlinearError>,
+    ) -> Result<DrivenJacobian, NonlinearError> {
         let (lean, steer, yaw) = (y[3], y[4], y[2]);
         // The projection and its derivatives with respect to lean, pitch, steer.
         let h_at = |pitch: f64| {
@@ -423,6 +477,11 @@ impl StateRate {
             row
         });
         let speed = o[12];
+        // The torques at the speed, and their total derivatives through it.
+        let jet = torque(speed)?;
+        let dt: [[f64; LEN]; 2] = std::array::from_fn(|r| {
+            std::array::from_fn(|j| jet.state[r][j] + jet.speed[r] * g[12][j])
+        });
         let m = [o[0], o[1], o[2], o[3], o[4], o[5]];
         // M^-1 as its adjugate and the determinant's reciprocal, formed once for the
         // accelerations and every column below (the operations of `solve_symmetric`, so the
@@ -434,14 +493,14 @@ impl StateRate {
                 .then_some(x)
                 .ok_or(NonlinearError::SingularMassMatrix { lean, steer })
         };
-        let ud = finite(inverse.apply([o[6] + torque[0], o[7] + torque[1], o[8]]))?;
-        // d ud / d y_j = M^-1 (df_j - dM_j ud), column by column.
+        let ud = finite(inverse.apply([o[6] + jet.torque[0], o[7] + jet.torque[1], o[8]]))?;
+        // d ud / d y_j = M^-1 (df_j + dT_j - dM_j ud), column by column.
         let mut dud = [[0.0; LEN]; 3];
         for j in 0..LEN {
             let dm = |k: usize| g[k][j];
             let rhs = [
-                dm(6) - (dm(0) * ud[0] + dm(1) * ud[1] + dm(2) * ud[2]),
-                dm(7) - (dm(1) * ud[0] + dm(3) * ud[1] + dm(4) * ud[2]),
+                dm(6) + dt[0][j] - (dm(0) * ud[0] + dm(1) * ud[1] + dm(2) * ud[2]),
+                dm(7) + dt[1][j] - (dm(1) * ud[0] + dm(3) * ud[1] + dm(4) * ud[2]),
                 dm(8) - (dm(2) * ud[0] + dm(4) * ud[1] + dm(5) * ud[2]),
             ];
             if rhs.iter().all(|v| *v == 0.0) {
@@ -467,7 +526,7 @@ impl StateRate {
         jac[8] = dud[1];
         jac[9] = dud[2];
         jac[PITCH] = g[9];
-        Ok(jac)
+        Ok(DrivenJacobian { jacobian: jac, torque: jet.torque, torque_jacobian: dt })
     }
 
     /// The state Jacobian at `y`, undriven; see [`jacobian_with`](Self::jacobian_with).

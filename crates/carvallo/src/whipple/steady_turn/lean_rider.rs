@@ -18,7 +18,11 @@
 //! bicycle's (a scan of the steer and a safeguarded Newton), with
 //! $dF/dq_7 = \partial_7 f_{q_4} - \partial_9 f_{q_4}\,\partial_7 f_{q_9}/\partial_9 f_{q_9}$
 //! (the implicit function theorem on the torso's equation, the pitch's derivative by the same
-//! theorem on the constraint) from forward-mode dual numbers through the program.
+//! theorem on the constraint). The torso's Newton steps and $dF/dq_7$ take their derivatives
+//! from generated code ([`turn_rows_scene`]: $f_{q_4}$, $f_{q_9}$ and their derivatives with
+//! respect to pitch, steer and torso lean; the contact constraint's from
+//! [`LeanRider::contact_derivatives`]); forward-mode dual numbers through the IR interpreter,
+//! which they replaced, remain their reference in the tests.
 //!
 //! The stability with the steer torque held: the eigenvalues of the Jacobian of the thirteen-
 //! component right-hand side of [`LeanRider::rate`] (the pitch projected onto the constraint
@@ -37,6 +41,30 @@ use std::sync::OnceLock;
 
 use super::{check, steer_roots, Stability, TurnError, ROOT_TOLERANCE};
 use crate::whipple::lean_rider::{self as rider, dynamics_scene, Joint, LeanRider, PITCH};
+
+crate::scene! {
+    /// The roll row $f_{q_4}$ and the lean joint's row $f_{q_9}$ of Kane's equations and their
+    /// derivatives with respect to pitch, steer and the torso's lean: what the steady turn's
+    /// Newton steps need (the torso's equilibrium, $dF/dq_7$).
+    pub mod turn_rows_scene {
+        model: lean_rider,
+        outputs: [f_q4d, f_q9d],
+        jacobian: [q5, q7, q9],
+    }
+}
+
+/// $f_{q_4}$ and $f_{q_9}$ at a steady state, the pitch projected by one Newton step, and
+/// their derivatives along the projected pitch.
+#[derive(Clone, Copy, Debug, PartialEq)]
+struct Rows {
+    /// $(f_{q_4}, f_{q_9})$ (N m).
+    f: [f64; 2],
+    /// Row $r$ of `f`, columns $\mathrm{d}/\mathrm{d}q_7$ (the pitch following the
+    /// projection) and $\partial/\partial q_9$.
+    d: [[f64; 2]; 2],
+    /// The projected pitch (rad).
+    pitch: f64,
+}
 
 /// The state indices of the block whose eigenvalues decide: roll $q_4$, steer $q_7$, torso
 /// lean $q_9$, their rates $u_4$, $u_7$, $u_9$ and the rear wheel's rate $u_6$ (Moore's order).
@@ -150,6 +178,9 @@ pub struct RiderTurnSolver<'a> {
     rider: &'a LeanRider,
     contact: (Vec<f64>, Vec<usize>),
     dynamics: (Vec<f64>, Vec<usize>),
+    /// [`turn_rows_scene`]'s arguments with the parameters, and the slots of its inputs in
+    /// [`INPUTS`] order (`usize::MAX` where it does not take one).
+    rows: ([f64; turn_rows_scene::Args::LEN], [usize; 12]),
     rr: f64,
     scale: f64,
 }
@@ -185,10 +216,24 @@ impl<'a> RiderTurnSolver<'a> {
         let p = programs();
         let get = |n: &str| rider.params().get(n).unwrap_or(f64::NAN);
         let mass = ["mc", "md", "me", "mf", "mg"].iter().map(|n| get(n)).sum::<f64>();
+        let rows = (
+            std::array::from_fn(|i| match turn_rows_scene::PARAMS.get(i) {
+                Some(&"lam") => rider.upright_pitch(),
+                Some(n) => get(n),
+                None => 0.0,
+            }),
+            INPUTS.map(|name| {
+                turn_rows_scene::INPUTS
+                    .iter()
+                    .position(|n| *n == name)
+                    .map_or(usize::MAX, |i| turn_rows_scene::PARAMS.len() + i)
+            }),
+        );
         RiderTurnSolver {
             rider,
             contact: arguments(&p.contact, rider),
             dynamics: arguments(&p.dynamics, rider),
+            rows,
             rr: get("rr"),
             scale: mass * get("g"),
         }
@@ -230,6 +275,32 @@ impl<'a> RiderTurnSolver<'a> {
         ]
     }
 
+    /// [`Rows`] at `(lean, pitch, steer, torso)` with the rear wheel's rate `wheel`, every
+    /// other speed and every torque zero, the pitch first projected onto the contact
+    /// constraint by one Newton step, $q_5^* = q_5 - h/h_{q_5}$ (as [`outputs`](Self::outputs)
+    /// does): generated values and derivatives, with
+    /// $\mathrm{d}q_5^*/\mathrm{d}q_7 = -(h_{q_7}h_{q_5} - h\,h_{q_5q_7})/h_{q_5}^2$.
+    fn rows(&self, lean: f64, pitch: f64, steer: f64, torso: f64, wheel: f64) -> Rows {
+        let (h, dh, hd) = self.rider.contact_derivatives(lean, pitch, steer);
+        let projected = pitch - h / dh;
+        let dproj = -(hd[0][2] * dh - h * hd[1][2]) / (dh * dh);
+        let (mut a, slots) = self.rows;
+        let values = [lean, projected, steer, torso, 0.0, wheel, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0];
+        for (&slot, v) in slots.iter().zip(values) {
+            if let Some(x) = a.get_mut(slot) {
+                *x = v;
+            }
+        }
+        let o = turn_rows_scene::eval_array(&a);
+        // Columns q5, q7, q9.
+        let j = turn_rows_scene::jacobian_array(&o);
+        Rows {
+            f: [o[0], o[1]],
+            d: std::array::from_fn(|r| [j[r][1] + j[r][0] * dproj, j[r][2]]),
+            pitch: projected,
+        }
+    }
+
     /// The torso's lean in equilibrium at `(lean, pitch, steer)` by Newton from `guess`, and the
     /// roll row there; `None` when Newton does not converge within ±π/2.
     fn torso(
@@ -242,10 +313,8 @@ impl<'a> RiderTurnSolver<'a> {
     ) -> Option<(f64, f64)> {
         let mut q9 = guess;
         for _ in 0..50 {
-            let x =
-                self.inputs(lean, pitch, Dual::<1>::constant(steer), Dual::variable(q9, 0), wheel);
-            let (o, _) = self.outputs(x);
-            let step = o[13].value / o[13].grad[0];
+            let r = self.rows(lean, pitch, steer, q9, wheel);
+            let step = r.f[1] / r.d[1][1];
             if !step.is_finite() {
                 return None;
             }
@@ -254,7 +323,7 @@ impl<'a> RiderTurnSolver<'a> {
                 return None;
             }
             if step.abs() <= 1e-14 * (1.0 + q9.abs()) {
-                return Some((q9, o[10].value));
+                return Some((q9, r.f[0]));
             }
         }
         None
@@ -270,12 +339,9 @@ impl<'a> RiderTurnSolver<'a> {
     ) -> Option<(f64, f64, (f64, f64))> {
         let pitch = self.rider.pitch_near(lean, g.0, steer)?;
         let (q9, _) = self.torso(lean, pitch, steer, g.1, wheel)?;
-        let x =
-            self.inputs(lean, pitch, Dual::<2>::variable(steer, 0), Dual::variable(q9, 1), wheel);
-        let (o, pitch) = self.outputs(x);
-        let (f, h) = (o[10], o[13]);
-        let df = f.grad[0] - f.grad[1] * h.grad[0] / h.grad[1];
-        Some((f.value, df, (pitch.value, q9)))
+        let r = self.rows(lean, pitch, steer, q9, wheel);
+        let df = r.d[0][0] - r.d[0][1] * r.d[1][0] / r.d[1][1];
+        Some((r.f[0], df, (r.pitch, q9)))
     }
 
     /// Every steady turn at the rear contact's speed `speed` (m/s) and the roll `lean` (rad).
@@ -404,5 +470,72 @@ impl<'a> RiderTurnSolver<'a> {
         let eigenvalues: [Complex<f64>; 6] = ev.try_into().ok()?;
         let stable = eigenvalues.iter().all(|e| e.re < 0.0);
         Some(Stability { eigenvalues, family, stable })
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::numerics::rng::SplitMix64;
+    use crate::whipple::lean_rider::LeanRiderParams;
+
+    /// [`RiderTurnSolver::rows`] by the route it replaced: dual numbers in the steer and the
+    /// torso's lean through the IR interpreter ([`RiderTurnSolver::outputs`], the pitch
+    /// projected in dual arithmetic), no generated derivative.
+    fn rows_dual(
+        s: &RiderTurnSolver<'_>,
+        lean: f64,
+        pitch: f64,
+        steer: f64,
+        torso: f64,
+        wheel: f64,
+    ) -> Rows {
+        let x =
+            s.inputs(lean, pitch, Dual::<2>::variable(steer, 0), Dual::variable(torso, 1), wheel);
+        let (o, pitch) = s.outputs(x);
+        let (f4, f9) = (o[10], o[13]);
+        Rows { f: [f4.value, f9.value], d: [f4.grad, f9.grad], pitch: pitch.value }
+    }
+
+    #[test]
+    fn the_generated_turn_derivatives_equal_the_dual_numbers_they_replaced() {
+        // At 40 seeded steady states of Browser + Jason (roll, steer, torso lean, speed; the
+        // pitch on the contact constraint, then, for half of them, moved by 1e-9 rad so that
+        // the projection's second-order term counts): the rows f_q4, f_q9 and their
+        // derivatives in the steer (through the projected pitch) and the torso's lean, as the
+        // torso's Newton steps and dF/dq7 use them, against the dual numbers they replaced:
+        // 1e-12 of each row's largest entry. Dropping the pitch's part of d/dq7 (the
+        // constraint moves the pitch as the steer turns) fails at the first state.
+        let rider = LeanRider::new(LeanRiderParams::browser_jason()).expect("the rider");
+        let s = RiderTurnSolver::new(&rider);
+        let mut rng = SplitMix64(3507);
+        let mut worst = 0.0f64;
+        for k in 0..40 {
+            let lean = rng.uniform(-0.6, 0.6);
+            let steer = rng.uniform(-1.2, 1.2);
+            let torso = rng.uniform(-0.4, 0.4);
+            let wheel = -rng.uniform(0.5, 10.0) / s.rr;
+            let on = rider.pitch_near(lean, rider.upright_pitch(), steer).expect("pitch");
+            let pitch = if k % 2 == 0 { on } else { on + 1e-9 };
+            let got = s.rows(lean, pitch, steer, torso, wheel);
+            let want = rows_dual(&s, lean, pitch, steer, torso, wheel);
+            assert!((got.pitch - want.pitch).abs() <= 1e-15, "state {k}: {got:?} vs {want:?}");
+            for r in 0..2 {
+                let row = [want.f[r], want.d[r][0], want.d[r][1]];
+                let scale = row.iter().fold(1.0f64, |m, x| m.max(x.abs()));
+                for (g, w) in [got.f[r], got.d[r][0], got.d[r][1]].into_iter().zip(row) {
+                    let err = (g - w).abs() / scale;
+                    worst = worst.max(err);
+                    assert!(err <= 1e-12, "state {k}, row {r}: {got:?} vs dual numbers {want:?}");
+                }
+            }
+        }
+        eprintln!(
+            "turn rows, generated vs dual numbers: worst {worst:.2e} of the row's largest; \
+             turn_rows_scene {} operations ({} derivatives of {})",
+            turn_rows_scene::OP_COUNT,
+            turn_rows_scene::JACOBIAN_NONZEROS,
+            2 * 3
+        );
     }
 }
