@@ -355,8 +355,10 @@ pub fn wheel_terms_with(route: Route) -> WheelTerms {
         out.rear_whole = out.rear_whole.max(rel(sum, printed));
         if !steady {
             // term (2) alone: −Σ m [Θ O' M'].
-            let t2: f64 =
-                rear.iter().map(|(m, x)| -m * det(&big_theta, &o_dot, &(omega.cross(x) + jj * slip))).sum();
+            let t2: f64 = rear
+                .iter()
+                .map(|(m, x)| -m * det(&big_theta, &o_dot, &(omega.cross(x) + jj * slip)))
+                .sum();
             out.rear_term2 = out.rear_term2.max(rel(t2, term2));
         }
         let q = s + n * st;

@@ -838,7 +838,10 @@ pub fn claims() -> Vec<Claim> {
     out.extend(quartic_claims(&k));
     out.extend(design_claims(&k));
     out.extend(friction_claims(&k));
-    out.push(slope_claim(&k));
+    out.push(slope_claim(&k).falsified_by(
+        "the travel at delta = 60° from the upward slope line instead of straight up (the bicycle climbing obliquely): the rise per rotation is then R cos(delta) sin(i), half the straight climb's",
+        slope_claim_at(&k, 60f64.to_radians()),
+    ));
     // Perturbations of the derived side: the same checks on the bicycle of n° 117 with one
     // constant changed (each run, each changing the verdict of the claims it names).
     let cases: [(&str, Constants, &[&str]); 4] = [
@@ -1840,12 +1843,18 @@ fn friction_claims(k: &Constants) -> Vec<Claim> {
 
 /// n° 124 against n° 25: the slope term of the marching equation.
 fn slope_claim(k: &Constants) -> Claim {
+    slope_claim_at(k, 0.0)
+}
+
+/// [`slope_claim`] with the travel at `delta` (rad) from the upward slope line (0: climbing
+/// straight, as the claim reads).
+fn slope_claim_at(k: &Constants, delta: f64) -> Claim {
     let mass = k.mu + 2.0 * k.mu1;
     let (mut worst_sin, mut worst_tan) = (0.0f64, 0.0f64);
     for i in [0.02, 0.05, 0.1, 0.2] {
         // The virtual work of gravity for a rotation δσ of the rear wheel, rolling straight up
         // the slope: the whole bicycle moves R δσ along the ground.
-        let w = incline_virtual_works(mass, k.g, k.h, k.r, i, 0.0, 0.0)[2];
+        let w = incline_virtual_works(mass, k.g, k.h, k.r, i, delta, 0.0)[2];
         let moment = -w;
         let sin_form = mass * k.g * k.r * i.sin();
         let tan_form = mass * k.g * k.r * i.tan();

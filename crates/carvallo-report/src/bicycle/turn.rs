@@ -758,7 +758,10 @@ fn claims_for_model(bike: &LockedSteer) -> Vec<crate::claims::Claim> {
         policy::formula(worst_cancel, Verdict::DerivationDiffers),
         "",
     ));
-    out.push(x_log_derivative_claim(&Geometry::old_model()).falsified_by(X_LOG_PERTURBED, x_log_derivative_claim(&x_log_perturbed_geometry())));
+    out.push(
+        x_log_derivative_claim(&Geometry::old_model())
+            .falsified_by(X_LOG_PERTURBED, x_log_derivative_claim(&x_log_perturbed_geometry())),
+    );
 
     // n° 104: df/dtheta essentially negative; the centrifugal part of the second order.
     let negative = count(&|p| p.c.dfdtheta < 0.0);

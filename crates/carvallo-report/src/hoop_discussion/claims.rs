@@ -137,6 +137,15 @@ const D_FLIPPED: Perturbation = Perturbation {
     factor: -1.0,
 };
 
+/// Every use of θ in the generated skid D(n) (`skid_of_n`) halved: D read at half the lean,
+/// which stays below 1/2 (D(n2) lies between tan θ/3 and tan θ/2) for every lean below 90°.
+const D_THETA_HALVED: Perturbation = Perturbation {
+    model: "hoop_discussion",
+    output: "skid_of_n",
+    target: crate::perturb::Target::Argument("theta"),
+    factor: 0.5,
+};
+
 /// The third constant of the generated cubic of H (`h_cubic`, its 14) negated.
 const H_CUBIC_FLIPPED: Perturbation = Perturbation {
     model: "hoop_discussion",
@@ -158,7 +167,8 @@ const VERTICAL_T_SCALED: Perturbation = Perturbation {
 /// ([`crate::perturb::with`]), only the functions giving the claims named.
 fn compute() -> Vec<Claim> {
     let checks = compute_checks();
-    let table: [crate::perturb::Row; 15] = [
+    let table: [crate::perturb::Row; 16] = [
+        (&D_THETA_HALVED, skid_16, &["hoop-n2-skid-left"]),
         (&H_CUBIC_FLIPPED, h_17_bis, &["hoop-h-cubic-one-root"]),
         (&VERTICAL_T_SCALED, || vec![u_smallest()], &["hoop-u-smallest-root"]),
         (
@@ -172,7 +182,8 @@ fn compute() -> Vec<Claim> {
         (
             &QUARTIC_FLIPPED,
             || {
-                let mut v = vec![quartic_bracket(), u_roots(), graeffe_separated(), half_thousandth()];
+                let mut v =
+                    vec![quartic_bracket(), u_roots(), graeffe_separated(), half_thousandth()];
                 v.extend(tables());
                 v
             },
@@ -229,6 +240,15 @@ fn compute() -> Vec<Claim> {
         (&D_SCALED, discussion_15, &["hoop-variation-table", "hoop-d-minus-half-n1"]),
     ];
     crate::perturb::falsify(checks, &table)
+        .into_iter()
+        .map(|c| match c.id.as_str() {
+            "hoop-cyclist-centrifugal-adds" => c.falsified_by(
+                "the n° 36 rider a tenth as heavy, 6 kg instead of 60 (his moments A, B, C scaled with him; centre of gravity at 1.25 m and the 5 kg hoop wheel kept)",
+                cyclist_footnote_for(0.1),
+            ),
+            _ => c,
+        })
+        .collect()
 }
 
 /// The checks of n° 13–19, as derived.
@@ -1145,10 +1165,23 @@ fn marche_17() -> Vec<Claim> {
 /// n° 17's footnote: for the cyclist the frame's and rider's centrifugal force adds to the
 /// wheel's and is much larger, which is why skidding is feared by cyclists and not in hoop play.
 fn cyclist_footnote_17() -> Claim {
+    cyclist_footnote_for(1.0)
+}
+
+/// [`cyclist_footnote_17`] with the rider's mass and moments scaled by `scale` (1 for the
+/// n° 36 rider).
+fn cyclist_footnote_for(scale: f64) -> Claim {
     use carvallo::unicycle::{Rider, Unicycle, Wheel};
     let (r, g, mu1) = (0.5f64, 9.81f64, 5.0f64);
     // The n° 36 rider (60 kg, centre of gravity at 2.5 R) on a hoop wheel of 5 kg, R = 0.5 m.
-    let rider = Rider { mass: 60.0, height: 1.25, a: 100.0, b: 100.0, c: 0.77, l: 0.0 };
+    let rider = Rider {
+        mass: 60.0 * scale,
+        height: 1.25,
+        a: 100.0 * scale,
+        b: 100.0 * scale,
+        c: 0.77 * scale,
+        l: 0.0,
+    };
     let unicycle = Unicycle::new(r, g, rider, Wheel::hoop(mu1, r)).ok();
     let hoop = carvallo::hoop::Hoop::new(r, mu1, g).ok();
     let unit = (g / r).sqrt();

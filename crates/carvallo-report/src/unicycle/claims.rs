@@ -325,7 +325,12 @@ fn cylinder(mu: f64, r: f64, len: f64, h: f64) -> (f64, f64, f64) {
 }
 
 fn wheel_small() -> Claim {
-    let (mu, mu1, r) = (60.0, 5.0, 0.5);
+    wheel_small_for(5.0)
+}
+
+/// [`wheel_small`] with a hoop wheel of mass `mu1` (kg; the memoir's 5).
+fn wheel_small_for(mu1: f64) -> Claim {
+    let (mu, r) = (60.0, 0.5);
     let rc = 1.0 / (2.0 * PI);
     let h = H_OVER_R * r;
     let a1 = 1.5 * mu1 * r * r;
@@ -392,7 +397,12 @@ fn slope_height(i: f64, r: f64, z: f64, mu: f64, mu1: f64, ds: f64) -> f64 {
 }
 
 fn slope_moment() -> (Claim, Claim) {
-    let (r, z, mu, mu1, g) = (0.5, 1.25, 60.0, 5.0, 9.81);
+    slope_moment_for(9.81)
+}
+
+/// [`slope_moment`] with gravity `g` (m/s^2; 9.81).
+fn slope_moment_for(g: f64) -> (Claim, Claim) {
+    let (r, z, mu, mu1) = (0.5, 1.25, 60.0, 5.0);
     let (mut sin_rel, mut tan_rel, mut tan_rel_10) = (0.0f64, 0.0f64, 0.0);
     let mut sign_ok = true;
     let mut count = 0;
@@ -1371,7 +1381,7 @@ fn three_accelerations() -> Claim {
         "unicycle-three-accelerations",
         "37",
         "The first acceleration, of the fall p', is proportional to gravity alone; the second, W, to s; the third, the righting one, to s²: when s is large enough the righting couple wins over the fall, which is due to gravity alone.",
-        "the generated linearised equations of n° 19's (2) without stick moments (stick_dp, stick_dn; R = 0.5 m, g = 9.81, s = 2 sqrt(g/R)) at s and 2s: the fall acceleration at θ = 0.01 rad at rest, the turning acceleration n' for a fall rate p = 0.1 rad/s upright, and the righting part of p' for the turn n = -2sθ that the fall produces (n° 19 (3)). Holds if doubling s multiplies them by 1, 2 and 4 within 1e-12",
+        "the generated linearised equations of n° 19's (2) without stick moments (stick_dp, stick_dn; R = 0.5 m, g = 9.81, s = 2 sqrt(g/R)) at s and 2s: the fall acceleration at θ = 0.01 rad at rest, the turning acceleration n' for a fall rate p = 0.1 rad/s upright, and the righting part of p' for the turn n = -2sθ that the fall produces (n° 19 (3)). Holds if doubling s multiplies them by 1, 2 and 4 within 1e-12. Holds by construction because the ratios are the degrees of the three terms in the rates (none, p s, s n with n = -2 s θ): every term of the generated equations is a product of rates and a coefficient of θ alone, so no constant of the program can move the ratios, only the degrees, which a re-derivation would change",
         &[
             ("fall acceleration ratio (2s / s)", ratios[0]),
             ("turning acceleration ratio (2s / s)", ratios[1]),
@@ -2153,6 +2163,14 @@ pub fn claims() -> Vec<Claim> {
                 c.falsified_by(FLAT, straight_oscillates_check(FLAT_SPIN))
             }
             "unicycle-e-larger-than-c" => c.falsified_by(FAT_RIDER, e_larger_than_c_for(3.0)),
+            "unicycle-wheel-small-against-rider" => c.falsified_by(
+                "the hoop wheel of 50 kg instead of 5 (R = 0.5 m kept, A1 = 3/2 mu1 R^2 tenfold)",
+                wheel_small_for(50.0),
+            ),
+            "unicycle-slope-sign" => c.falsified_by(
+                "the weight reversed, g = -9.81 m/s^2 instead of 9.81 in the generalised force of gravity",
+                slope_moment_for(-9.81).1,
+            ),
             "unicycle-e-zero-not-in-s" => c.falsified_by(FAT_RIDER, e_zero_not_in_s_for(3.0)),
             "unicycle-pedal-paradox" => c.falsified_by(
                 "the cranks twice as long (0.1 R to 1.9 R: the lowest pedal below the ground line for cranks beyond R)",

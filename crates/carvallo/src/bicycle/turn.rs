@@ -254,8 +254,7 @@ impl LockedSteer {
         k.validate()?;
         if let Some(ibyy) = ibyy {
             let named = k.whipple_values();
-            let get =
-                |name: &str| named.iter().find(|(n, _)| *n == name).map_or(0.0, |(_, v)| *v);
+            let get = |name: &str| named.iter().find(|(n, _)| *n == name).map_or(0.0, |(_, v)| *v);
             let bound = get("IBxx") + get("IBzz");
             ParameterError::check_positive("ibyy", ibyy)?;
             if ibyy > bound {
