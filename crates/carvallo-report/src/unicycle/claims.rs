@@ -1271,9 +1271,26 @@ fn stability_from_spin() -> Claim {
 }
 
 fn fall_turns_toward_lean() -> Claim {
+    fall_turns_check(HOOP_SPIN)
+}
+
+/// [`fall_turns_toward_lean`] with the wheel's moment about its axle `spin` mu1 R^2
+/// ([`HOOP_SPIN`] for the hoop wheel, whose other moments it keeps).
+fn fall_turns_check(spin: f64) -> Claim {
     let (mut turn_ok, mut right_ok, mut cases) = (true, true, 0);
     for base in points(false).iter().take(16) {
-        let Some(u) = unicycle_at(base, 0.0) else { continue };
+        let rider = Rider {
+            mass: base["mu"],
+            height: base["z"],
+            a: base["A"],
+            b: base["B"],
+            c: base["C"],
+            l: 0.0,
+        };
+        let (r, mu1) = (base["R"], base["mu1"]);
+        let m = mu1 * r * r;
+        let wheel = Wheel { mass: mu1, a1: 1.5 * m, b1: spin * m, c1: 0.5 * m };
+        let Ok(u) = Unicycle::new(r, base["g"], rider, wheel) else { continue };
         let s = 2.0 * u.rate_unit();
         for p in [0.05, -0.05] {
             // Upright, falling toward the side of p.
@@ -2156,6 +2173,10 @@ pub fn claims() -> Vec<Claim> {
         .into_iter()
         .map(|c| match c.id.as_str() {
             "unicycle-light-wheel-unstable" => c.falsified_by(FLAT, light_wheel_check(FLAT_SPIN)),
+            "unicycle-fall-turns-toward-lean" => c.falsified_by(
+                "the wheel's moment about its axle B1 = mu1 R^2 instead of the hoop's 2 mu1 R^2 (its spin carrying no moment of momentum beyond its rolling translation's), the 16 seeded unicycles otherwise",
+                fall_turns_check(FLAT_SPIN),
+            ),
             "unicycle-stability-decreases-with-wheel" => {
                 c.falsified_by(FLAT, stability_decreases_check(FLAT_SPIN))
             }
