@@ -385,23 +385,31 @@ fn steady_needs_no_motor() -> Claim {
 
 /// The height of the total centre of gravity on a slope of angle `i` after the wheel has
 /// rolled by `ds` up it, the rider translating with the wheel's centre (n° 22): wheel centre
-/// R nu, rider's centre of gravity z nu at the start (nu the slope's normal).
-fn slope_height(i: f64, r: f64, z: f64, mu: f64, mu1: f64, ds: f64) -> f64 {
+/// R nu, rider's centre of gravity z nu at the start (nu the slope's normal); or with
+/// `horizontal` the cycle advanced horizontally by R ds and raised onto the slope (the rise
+/// R ds tan(i) of n° 25's reading) instead of rolling on it.
+fn slope_height_with(i: f64, r: f64, z: f64, mu: f64, mu1: f64, ds: f64, horizontal: bool) -> f64 {
     let nu = (-i.sin(), i.cos());
     // The wheel turns by -ds about the contact point: its centre R nu goes to rot(-ds) R nu.
     let (c, s) = (ds.cos(), -ds.sin());
-    let centre = (r * (c * nu.0 - s * nu.1), r * (s * nu.0 + c * nu.1));
-    let shift = (centre.0 - r * nu.0, centre.1 - r * nu.1);
+    let (centre, shift) = if horizontal {
+        let shift = (r * ds, r * ds * i.tan());
+        ((r * nu.0 + shift.0, r * nu.1 + shift.1), shift)
+    } else {
+        let centre = (r * (c * nu.0 - s * nu.1), r * (s * nu.0 + c * nu.1));
+        (centre, (centre.0 - r * nu.0, centre.1 - r * nu.1))
+    };
     let rider = (z * nu.0 + shift.0, z * nu.1 + shift.1);
     (mu * rider.1 + mu1 * centre.1) / (mu + mu1)
 }
 
 fn slope_moment() -> (Claim, Claim) {
-    slope_moment_for(9.81)
+    slope_moment_for(9.81, false)
 }
 
-/// [`slope_moment`] with gravity `g` (m/s^2; 9.81).
-fn slope_moment_for(g: f64) -> (Claim, Claim) {
+/// [`slope_moment`] with gravity `g` (m/s^2; 9.81), the cycle advanced horizontally when
+/// `horizontal` ([`slope_height_with`]).
+fn slope_moment_for(g: f64, horizontal: bool) -> (Claim, Claim) {
     let (r, z, mu, mu1) = (0.5, 1.25, 60.0, 5.0);
     let (mut sin_rel, mut tan_rel, mut tan_rel_10) = (0.0f64, 0.0f64, 0.0);
     let mut sign_ok = true;
@@ -411,8 +419,8 @@ fn slope_moment_for(g: f64) -> (Claim, Claim) {
     {
         let i = f64::to_radians(deg);
         let h = 1e-6;
-        let up = slope_height(i, r, z, mu, mu1, h);
-        let down = slope_height(i, r, z, mu, mu1, -h);
+        let up = slope_height_with(i, r, z, mu, mu1, h, horizontal);
+        let down = slope_height_with(i, r, z, mu, mu1, -h, horizontal);
         // The moment the pedals must give: minus the generalised force of gravity for ds.
         let moment = (mu + mu1) * g * (up - down) / (2.0 * h);
         let total = (mu + mu1) * g * r;
@@ -2190,7 +2198,11 @@ pub fn claims() -> Vec<Claim> {
             ),
             "unicycle-slope-sign" => c.falsified_by(
                 "the weight reversed, g = -9.81 m/s^2 instead of 9.81 in the generalised force of gravity",
-                slope_moment_for(-9.81).1,
+                slope_moment_for(-9.81, false).1,
+            ),
+            "unicycle-slope-moment" => c.falsified_by(
+                "the cycle advanced horizontally by R ds and raised onto the slope (a rise R ds tan(i), n° 25's reading) instead of rolling R ds along it",
+                slope_moment_for(9.81, true).0,
             ),
             "unicycle-e-zero-not-in-s" => c.falsified_by(FAT_RIDER, e_zero_not_in_s_for(3.0)),
             "unicycle-pedal-paradox" => c.falsified_by(
