@@ -1643,17 +1643,16 @@ fn divergence_friction_check(sign: f64) -> Claim {
     )
 }
 
-/// n° 123: the pendulum with dry friction, and friction at the steer of the bicycle.
-fn friction_claims(k: &Constants) -> Vec<Claim> {
-    let mut out = Vec::new();
-    // The pendulum: a slowly growing swing with constant friction is damped below the threshold.
+/// n° 123: the pendulum with a constant friction a^2 k of sign `sign` (1: opposing the motion,
+/// as the memoir's) against the threshold (2 + τ)k/τ.
+fn pendulum_friction_claim(sign: f64) -> Claim {
     let (a, kf, eps) = (1.3, 0.02, 0.01);
     let tau = (eps * std::f64::consts::PI / a).exp() - 1.0;
     let threshold = (2.0 + tau) * kf / tau;
-    let swing = |th0: f64| friction_half_swing(a, kf, th0, eps, 20_000).1;
+    let swing = |th0: f64| friction_half_swing(a, sign * kf, th0, eps, 20_000).1;
     let (below, above) = (0.8 * threshold, 1.25 * threshold);
     let (sb, sa) = (swing(below), swing(above));
-    out.push(claim(
+    claim(
         "bicycle-straight-pendulum-friction-threshold",
         "123",
         "With a constant friction a²k a slowly growing oscillation θ0 e^(εt) sin(at - π/2) is damped, the unstable equilibrium made stable, provided τθ0 < (2 + τ)k, with e^(εT/2) = 1 + τ.",
@@ -1668,6 +1667,16 @@ fn friction_claims(k: &Constants) -> Vec<Claim> {
         sb.abs() < below && sa.abs() > above,
         Verdict::DerivationDiffers,
         "below the threshold the swing shrinks, above it grows: the equilibrium is made stable for amplitudes below (2 + τ)k/τ only (a local stability, which the memoir's condition on θ0 states)",
+    )
+}
+
+/// n° 123: the pendulum with dry friction, and friction at the steer of the bicycle.
+fn friction_claims(k: &Constants) -> Vec<Claim> {
+    let mut out = Vec::new();
+    // The pendulum: a slowly growing swing with constant friction is damped below the threshold.
+    out.push(pendulum_friction_claim(1.0).falsified_by(
+        "the friction's sign flipped in the simulated pendulum (+a²k sgn θ': it drives the swing instead of opposing it), the threshold (2 + τ)k/τ kept",
+        pendulum_friction_claim(-1.0),
     ));
     // The exponential divergence: slower with friction, simulated from rest.
     out.push(divergence_friction_check(1.0).falsified_by(
