@@ -41,6 +41,33 @@ fn rel(a: f64, b: f64) -> f64 {
 /// A mass point: (mass, position relative to the rear contact O).
 type Point = (f64, V);
 
+/// The kinematics the point sums are taken with: as derived, or with one ingredient changed
+/// (issue 38: the perturbations of the derived side that must break the checks of n° 81–83
+/// and 99).
+#[derive(Clone, Copy, Debug, Default, PartialEq)]
+pub enum Route {
+    /// The memoir's kinematics: the wheels roll without sliding.
+    #[default]
+    Derived,
+    /// The contacts slide sideways at this speed (m/s) along J: the rear contact's O' (and
+    /// the front contact's O1') gain it, and every point of the frame and of the wheels moves
+    /// with it (rolling without sliding dropped, the constraint of n° 5).
+    LateralSlip(f64),
+    /// The rate of the front wheel's axle j1 taken with the opposite sign,
+    /// $j_1' = -(I_1p_1 + Kn_1) \times j_1$ (the sign of the memoir's (1′)).
+    FrontAxleRateNegated,
+}
+
+impl Route {
+    /// The sideways sliding speed (m/s): zero but for [`Route::LateralSlip`].
+    fn slip(self) -> f64 {
+        match self {
+            Route::LateralSlip(v) => v,
+            _ => 0.0,
+        }
+    }
+}
+
 /// Axes at the lean θ: (I, J, K, j, k).
 fn axes(theta: f64) -> (V, V, V, V, V) {
     let (i, jj, kk) = (V::x(), V::y(), V::z());
@@ -130,6 +157,12 @@ fn frame_cloud(rng: &mut Rng) -> Vec<Point> {
 
 /// n° 83 term by term.
 pub fn frame_terms() -> FrameTerms {
+    frame_terms_with(Route::Derived)
+}
+
+/// n° 83 term by term, the point velocities from the kinematics `route`.
+pub fn frame_terms_with(route: Route) -> FrameTerms {
+    let slip = route.slip();
     let mut rng = Rng(SEED);
     let mut out = FrameTerms::default();
     for case in 0..2 * STATES {
@@ -156,7 +189,7 @@ pub fn frame_terms() -> FrameTerms {
         // Kinematics (n° 5, 99).
         let phi = i * p + kk * n;
         let psi = phi - j * eta_t;
-        let o_dot = i * (r * s);
+        let o_dot = i * (r * s) + jj * slip;
         let s_pos = k * r;
         let s_dot = o_dot + phi.cross(&s_pos);
         let i_dot = jj * n;
@@ -165,7 +198,7 @@ pub fn frame_terms() -> FrameTerms {
         let mut direct = 0.0;
         for (m, q) in &cloud {
             let x = i * q.x + j * q.y + k * q.z; // M - O
-            let v = i * (r * (s + eta_t)) + psi.cross(&x); // M'
+            let v = i * (r * (s + eta_t)) + jj * slip + psi.cross(&x); // M'
             let xs = x - s_pos; // M - S
             t[0] += m * deta * det(&j, &s_dot, &v);
             t[1] += -m * dnu * det(&kk, &o_dot, &v);
@@ -267,6 +300,13 @@ pub struct WheelTerms {
 
 /// n° 81, 82 and the wheels' kinetic energies of n° 99.
 pub fn wheel_terms() -> WheelTerms {
+    wheel_terms_with(Route::Derived)
+}
+
+/// n° 81, 82 and 99, the point velocities from the kinematics `route`.
+pub fn wheel_terms_with(route: Route) -> WheelTerms {
+    let slip = route.slip();
+    let axle_sign = if route == Route::FrontAxleRateNegated { -1.0 } else { 1.0 };
     let mut rng = Rng(SEED ^ 0x5757);
     let mut out = WheelTerms::default();
     for case in 0..2 * STATES {
@@ -290,12 +330,12 @@ pub fn wheel_terms() -> WheelTerms {
         let rear = ring(mu1, r, &o, &i, &k, phase);
         let big_theta = i + kk * dnu;
         let big_theta_dot = jj * n + kk * dnu_dot;
-        let o_dot = i * (r * s);
+        let o_dot = i * (r * s) + jj * slip;
         let mut sum = 0.0;
         let mut kin = 0.0;
         let mut moments = [0.0; 3];
         for (m, x) in &rear {
-            let v = omega.cross(x);
+            let v = omega.cross(x) + jj * slip;
             let dm = big_theta_dot.cross(x) + big_theta.cross(&(v - o_dot));
             sum += m * v.dot(&dm);
             kin += m * v.dot(&v);
@@ -316,8 +356,10 @@ pub fn wheel_terms() -> WheelTerms {
         out.rear_whole = out.rear_whole.max(rel(sum, printed));
         if !steady {
             // term (2) alone: −Σ m [Θ O' M'].
-            let t2: f64 =
-                rear.iter().map(|(m, x)| -m * det(&big_theta, &o_dot, &omega.cross(x))).sum();
+            let t2: f64 = rear
+                .iter()
+                .map(|(m, x)| -m * det(&big_theta, &o_dot, &(omega.cross(x) + jj * slip)))
+                .sum();
             out.rear_term2 = out.rear_term2.max(rel(t2, term2));
         }
         let q = s + n * st;
@@ -333,7 +375,7 @@ pub fn wheel_terms() -> WheelTerms {
         let front = ring(mu1, r, &o1, &i1, &k1, phase);
         let vrot = i - j * deta + kk * dnu + j1 * dsig; // Θ1 of (1)
         let j_dot = (i * p + kk * n).cross(&j);
-        let j1_dot = (i1 * p1 + kk * n1).cross(&j1);
+        let j1_dot = (i1 * p1 + kk * n1).cross(&j1) * axle_sign;
         let vrot_dot =
             jj * n - j_dot * deta - j * deta_dot + kk * dnu_dot + j1_dot * dsig + j1 * dsig_dot;
         // (1') as printed: Jn + (−pk + I n cos θ) dη/dθ + (−p1 k1 + I1 n1 cos θ1) dσ1/dθ − ...
@@ -347,11 +389,11 @@ pub fn wheel_terms() -> WheelTerms {
                 - j * deta_dot
                 + kk * dnu_dot
                 + j1 * dsig_dot;
-        let o1_dot = i1 * (r * s1);
+        let o1_dot = i1 * (r * s1) + jj * slip;
         let mut fsum = 0.0;
         let mut fkin = 0.0;
         for (m, x) in &front {
-            let v = omega1.cross(&(x - o1));
+            let v = omega1.cross(&(x - o1)) + jj * slip;
             let dm = vrot_dot.cross(&(x - o1)) + vrot.cross(&(v - o1_dot));
             fsum += m * v.dot(&dm);
             fkin += m * v.dot(&v);

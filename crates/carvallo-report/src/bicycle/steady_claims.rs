@@ -15,7 +15,7 @@ use carvallo::unicycle::{Rider, Unicycle, Wheel};
 use carvallo::whipple::steady_turn::{hands_free::HandsFree, TurnSolver};
 use carvallo::whipple::Whipple;
 
-use super::inertia_terms::{frame_terms, wheel_terms, RING, STATES};
+use super::inertia_terms::{frame_terms_with, wheel_terms_with, Route, RING, STATES};
 use crate::claims::Claim;
 use crate::entry::Verdict;
 use crate::policy::{self, rel_diff, AGREEMENT_TOLERANCE};
@@ -186,10 +186,11 @@ fn lateral_shift_claims() -> Vec<Claim> {
     ]
 }
 
-/// n° 81–83, 99: the inertia terms term by term.
-fn inertia_claims() -> Vec<Claim> {
-    let f = frame_terms();
-    let w = wheel_terms();
+/// n° 81–83, 99: the inertia terms term by term, the point velocities from the kinematics
+/// `route` (the memoir's in the report).
+fn inertia_claims(route: Route) -> Vec<Claim> {
+    let f = frame_terms_with(route);
+    let w = wheel_terms_with(route);
     let tol = 1e-10;
     let mut out = Vec::new();
     let how_frame = format!("the loaded frame as 8 point masses symmetric about its plane (e, h, A, B, C, L computed from them), velocities M' = I R (s + eta') + |Psi (M - O) of n° 99, virtual velocity dM/dtheta = |I(M - O) - (d eta/d theta)|j(M - S) + (d nu/d theta)|K(M - O) of n° 83 differentiated exactly (I' = J n, j' = |Phi j); each of the six parallelepiped sums taken point by point against the printed term, at {STATES} seeded arbitrary states (theta, p, n, s, eta', d eta/d theta, d nu/d theta and the rates of the last two drawn freely: these are identities) and {STATES} steady ones (p = eta' = 0 and both rates zero, the underlined terms dropped); tolerance {tol:e} relative");
@@ -451,10 +452,9 @@ fn order_claims(geo: Geometry) -> Vec<Claim> {
     vec![c86, c95]
 }
 
-/// Steady turns of the nonlinear model of constants `k` at [`TURNS`]: (gamma, speed m/s,
-/// lean, yaw rate).
-fn turns(k: Constants) -> Option<Vec<(f64, f64, f64, f64)>> {
-    let bike = LockedSteer::new(k).ok()?;
+/// Steady turns of the nonlinear model `bike` at [`TURNS`]: (gamma, speed m/s, lean, yaw
+/// rate).
+fn turns(bike: &LockedSteer) -> Option<Vec<(f64, f64, f64, f64)>> {
     TURNS
         .iter()
         .map(|&(gdeg, kmh)| {
@@ -464,12 +464,12 @@ fn turns(k: Constants) -> Option<Vec<(f64, f64, f64, f64)>> {
         .collect()
 }
 
-/// n° 86 bis, 87, 88, 89, 96, 97: signs and sizes of the steady turn, for the geometry `geo`
-/// and the constants `k` of the nonlinear model (the old bicycle of n° 52 and n° 117's
-/// constants in the report).
-fn turn_claims(geo: Geometry, k: Constants) -> Vec<Claim> {
+/// n° 86 bis, 87, 88, 89, 96, 97: signs and sizes of the steady turn, for the geometry `geo`,
+/// the nonlinear model `bike` and the first-order model's constants `params` (the old bicycle
+/// of n° 52, n° 117's constants and those of n° 96 in the report).
+fn turn_claims(geo: Geometry, bike: Option<&LockedSteer>, params: BicycleParams) -> Vec<Claim> {
     let mut out = Vec::new();
-    let Some(ts) = turns(k) else {
+    let Some(ts) = bike.and_then(turns) else {
         return out;
     };
     // n° 86 bis: alpha and n opposite to theta; lean left, handlebar left, turn left.
@@ -544,7 +544,7 @@ fn turn_claims(geo: Geometry, k: Constants) -> Vec<Claim> {
         same &= r > 0.0;
         ratios.push(r);
     }
-    let bike = BicycleSteady::new(BicycleParams::memoir());
+    let bike = BicycleSteady::new(params);
     let first_order = bike.map(|b| b.theta1_over_theta(25f64.to_radians())).unwrap_or(f64::NAN);
     out.push(Claim::new(
         "steady-wheels-lean-alike",
@@ -559,13 +559,16 @@ fn turn_claims(geo: Geometry, k: Constants) -> Vec<Claim> {
         policy::claim(same && first_order > 0.0, Verdict::DerivationDiffers),
         "holds: theta1/theta is positive, and above 1, in every turn (the front wheel leans more, n° 97's geometric statement)",
     ));
-    // n° 96: omega <= eta in the steady turns (gamma opposite to theta).
+    // n° 96: omega <= eta in the steady turns, on the side of gamma the model's steady turns
+    // take (gamma opposite to theta at every turn above, n° 97).
+    let opposite_turns = ts.iter().filter(|&&(gamma, _, lean, _)| gamma * lean < 0.0).count();
+    let side = if opposite_turns == ts.len() { -1.0 } else { 1.0 };
     let mut max_excess = f64::NEG_INFINITY;
     let mut cases = 0usize;
     for it in 0..=8 {
         for ig in 0..=12 {
             let theta = (5.0 * it as f64).to_radians();
-            let gamma = -(5.0 * ig as f64).to_radians();
+            let gamma = side * (5.0 * ig as f64).to_radians();
             if let Ok(c) = geo.solve(theta, gamma) {
                 max_excess = max_excess.max(c.mu - geo.sigma0());
                 cases += 1;
@@ -577,9 +580,10 @@ fn turn_claims(geo: Geometry, k: Constants) -> Vec<Claim> {
         "steady-omega-below-eta",
         "96",
         "mu (e/R)(R sin(omega) - c)/l has the upper limit mu (e/R)(R sin(eta) - c)/l: omega does not exceed eta = 25°.",
-        "the exact contact angle omega (mu of ch. I) of the old bicycle of n° 52 on the grid theta = 0..40°, gamma = 0..-60° by 5° (gamma opposite to theta, as in every steady turn, n° 97), against eta0 = 25°",
+        "the exact contact angle omega (mu of ch. I) of the old bicycle of n° 52 on the grid theta = 0..40°, gamma = 0..-60° by 5°, against eta0 = 25°: gamma opposite to theta, the side the nonlinear model's steady turns take (every turn of claim steady-turns-toward-the-lean has gamma opposite to theta, n° 97; were one on the other side, the grid would be gamma = 0..60°)",
         &[
             ("cases", cases as f64),
+            ("steady turns with gamma opposite to theta", opposite_turns as f64),
             ("largest_omega_minus_eta_rad", max_excess),
             ("omega_minus_eta_at_theta_gamma_0_3_same_sign", opposite),
         ],
@@ -841,6 +845,15 @@ fn no_hands_claim(constants: Constants) -> Option<Claim> {
     ))
 }
 
+/// n° 117's bicycle with its weight reversed, g = -9.81 m/s^2: a model ingredient's sign
+/// flipped (the weight then pulls the frame back upright, as a pendulum's below its support),
+/// which [`Constants::validate`] refuses and [`LockedSteer::new_unchecked`] builds.
+pub(crate) const WEIGHT_REVERSED: Constants =
+    Constants { g: -Constants::MEMOIR.g, ..Constants::MEMOIR };
+
+/// The words stating [`WEIGHT_REVERSED`].
+pub(crate) const WEIGHT_REVERSED_TEXT: &str = "the weight reversed in the nonlinear model, g = -9.81 m/s^2 instead of 9.81 (n° 117's bicycle otherwise; the lean is then restored by gravity, as a pendulum's below its support)";
+
 /// The claims of n° 79–100.
 pub fn claims() -> Vec<Claim> {
     const FLIPPED: &str = "the centrifugal rows of the generated fall equation (fall_rear, fall_front, fall_frame) scaled by -1, the fall equation recomputed from its rows";
@@ -866,7 +879,29 @@ pub fn claims() -> Vec<Claim> {
     let (pedals, actions): (Vec<Claim>, Vec<Claim>) =
         actions.into_iter().partition(|c| c.section == "79");
     let mut c = pedals;
-    c.extend(inertia_claims());
+    // The point sums with the contacts sliding sideways (rolling without sliding dropped), and
+    // with the front wheel's axle rate of the sign of the memoir's (1').
+    const SLIP: &str = "the contacts sliding sideways at 0.1 m/s along J (rolling without sliding dropped: O' and O1' gain 0.1 J, every point of the frame and of the wheels moves with it)";
+    let slipping = inertia_claims(Route::LateralSlip(0.1));
+    let inertia = falsified(
+        inertia_claims(Route::Derived),
+        &slipping,
+        &[
+            ("steady-frame-decomposition", SLIP),
+            ("steady-frame-six-terms-steady", SLIP),
+            ("steady-frame-six-terms-unsteady", SLIP),
+            ("steady-rear-wheel-terms", SLIP),
+            ("steady-wheel-kinetic-energies", SLIP),
+        ],
+    );
+    c.extend(falsified(
+        inertia,
+        &inertia_claims(Route::FrontAxleRateNegated),
+        &[(
+            "steady-front-wheel-terms",
+            "the rate of the front wheel's axle j1 negated in the point velocities' route, j1' = -(I1 p1 + K n1) x j1 (the sign the memoir's (1') gives its d sigma1/d theta term)",
+        )],
+    ));
     c.push(reduction_claim(None).falsified_by(
         "the generated rear wheel's centrifugal row fall_rear scaled by 1 + 1e-9",
         reduction_claim(Some(Scaled { rows: &["fall_rear"], factor: 1.0 + 1e-9 })),
@@ -883,9 +918,10 @@ pub fn claims() -> Vec<Claim> {
     // The old bicycle of n° 52 with the fork offset c = R sin(sigma0) = 0.1606 m instead of
     // 0.08 m: zero trail, the factor (R sin(omega) - c)/l of n° 86 zero upright.
     const ZERO_TRAIL: &str = "the fork offset c = R sin(sigma0) = 0.1606 m instead of 0.08 m (zero trail: the factor (R sin(omega) - c)/l of y vanishes upright), the old bicycle of n° 52 otherwise";
+    let memoir_bike = LockedSteer::new(Constants::MEMOIR).ok();
     let zero_trail = Geometry::new(0.38, 1.10, 0.38 * 25f64.to_radians().sin(), 25f64.to_radians());
     let (order_zero, turn_zero) = match zero_trail {
-        Ok(g) => (order_claims(g), turn_claims(g, Constants::MEMOIR)),
+        Ok(g) => (order_claims(g), turn_claims(g, memoir_bike.as_ref(), BicycleParams::memoir())),
         Err(_) => (Vec::new(), Vec::new()),
     };
     c.extend(falsified(
@@ -898,11 +934,35 @@ pub fn claims() -> Vec<Claim> {
         y_with_lean_claim(1.0),
     ));
     c.extend(actions);
-    c.extend(falsified(
-        turn_claims(Geometry::old_model(), Constants::MEMOIR),
-        &turn_zero,
-        &[("steady-neglected-term-bound", ZERO_TRAIL)],
-    ));
+    // The trail reversed in all three models: the fork offset c = R sin(eta) + 0.1 m, so that
+    // R sin(eta) - c = c1 = -0.1 m.
+    const TRAIL_REVERSED: &str = "the trail reversed in the geometry, the nonlinear model and the first-order handlebar equation: the fork offset c = R sin(eta) + 0.1 = 0.2606 m instead of 0.08 m (R sin(eta) - c = c1 = -0.1 m instead of 0.08 m); then X = mu (e/R)(R sin(eta) - c)/l lies between -2 mu1 sin(eta) and -mu1 sin(eta) and the first-order theta1/theta = (2 mu1 sin(eta) + X)/(mu1 sin(eta) + X) is negative";
+    let reversed_offset = 0.38 * 25f64.to_radians().sin() + 0.1;
+    let trail_reversed = match Geometry::new(0.38, 1.10, reversed_offset, 25f64.to_radians()) {
+        Ok(g) => turn_claims(
+            g,
+            LockedSteer::new(Constants { c1: -0.1, ..Constants::MEMOIR }).ok().as_ref(),
+            BicycleParams { offset: reversed_offset, ..BicycleParams::memoir() },
+        ),
+        Err(_) => Vec::new(),
+    };
+    let turn = falsified(
+        falsified(
+            turn_claims(Geometry::old_model(), memoir_bike.as_ref(), BicycleParams::memoir()),
+            &turn_zero,
+            &[("steady-neglected-term-bound", ZERO_TRAIL)],
+        ),
+        &turn_claims(
+            Geometry::old_model(),
+            Some(&LockedSteer::new_unchecked(WEIGHT_REVERSED)),
+            BicycleParams::memoir(),
+        ),
+        &[
+            ("steady-turns-toward-the-lean", WEIGHT_REVERSED_TEXT),
+            ("steady-omega-below-eta", WEIGHT_REVERSED_TEXT),
+        ],
+    );
+    c.extend(falsified(turn, &trail_reversed, &[("steady-wheels-lean-alike", TRAIL_REVERSED)]));
     let negative_trail = Constants { c1: -Constants::MEMOIR.c1, ..Constants::MEMOIR };
     match (no_hands_claim(Constants::MEMOIR), no_hands_claim(negative_trail)) {
         (Some(nominal), Some(perturbed)) => c.push(nominal.falsified_by(

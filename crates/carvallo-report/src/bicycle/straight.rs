@@ -835,10 +835,13 @@ pub fn claims() -> Vec<Claim> {
     let mut out = Vec::new();
     let k = Constants::MEMOIR;
     out.push(gamma2_claim());
-    out.extend(quartic_claims());
+    out.extend(quartic_claims(&k));
     out.extend(design_claims(&k));
     out.extend(friction_claims(&k));
-    out.push(slope_claim(&k));
+    out.push(slope_claim(&k).falsified_by(
+        "the travel at delta = 60° from the upward slope line instead of straight up (the bicycle climbing obliquely): the rise per rotation is then R cos(delta) sin(i), half the straight climb's",
+        slope_claim_at(&k, 60f64.to_radians()),
+    ));
     // Perturbations of the derived side: the same checks on the bicycle of n° 117 with one
     // constant changed (each run, each changing the verdict of the claims it names).
     let cases: [(&str, Constants, &[&str]); 4] = [
@@ -850,7 +853,15 @@ pub fn claims() -> Vec<Claim> {
         (
             "the trail reversed: c1 = -0.08 m instead of 0.08 m (no stable window left, so no sensitivity of its limits)",
             Constants { c1: -k.c1, ..k },
-            &["bicycle-straight-design-rule"],
+            &[
+                "bicycle-straight-design-rule",
+                "bicycle-straight-stable-only-in-third-row",
+                "bicycle-straight-upper-limit-stable",
+                "bicycle-straight-47-not-stable",
+                "bicycle-straight-zero-root-turns-negative",
+                "bicycle-straight-real-roots-stay-negative",
+                "bicycle-straight-lower-limit-imaginary-pair",
+            ],
         ),
         (
             "each wheel's mass mu1 = 20 kg instead of 5 (four times)",
@@ -864,7 +875,8 @@ pub fn claims() -> Vec<Claim> {
         ),
     ];
     for (what, perturbed, ids) in cases {
-        let mut redone = design_claims(&perturbed);
+        let mut redone = quartic_claims(&perturbed);
+        redone.extend(design_claims(&perturbed));
         redone.extend(friction_claims(&perturbed));
         out = out
             .into_iter()
@@ -905,8 +917,9 @@ fn gamma2_claim() -> Claim {
     )
 }
 
-/// n° 120–121: the discussion of the quartic.
-fn quartic_claims() -> Vec<Claim> {
+/// n° 120–121: the discussion of the quartic, the general model's route with the constants
+/// `k` (n° 117's in the report).
+fn quartic_claims(k: &Constants) -> Vec<Claim> {
     let mut out = Vec::new();
     // Permanences are necessary: stable quartics have positive coefficients.
     let mut rng = SplitMix64(0x1897_0120);
@@ -941,14 +954,13 @@ fn quartic_claims() -> Vec<Claim> {
     // The printed quartic of n° 120.
     let w120 = window(&memoir_quartic_120);
     let (lo, hi) = w120.stable_s.first().map_or((f64::NAN, f64::NAN), |x| (x.0 * x.0, x.1 * x.1));
-    let k = Constants::MEMOIR;
-    let general = Equations::via_whipple(&k).map(|g| window(&|s| g.quartic(s)));
+    let general = Equations::via_whipple(k).map(|g| window(&|s| g.quartic(s)));
     let (glo, ghi) = general
         .as_ref()
         .ok()
         .and_then(|w| w.stable_s.first())
         .map_or((f64::NAN, f64::NAN), |x| (x.0 * x.0, x.1 * x.1));
-    let (gc2, gc0) = match Equations::via_whipple(&k) {
+    let (gc2, gc0) = match Equations::via_whipple(k) {
         Ok(g) => {
             let n = normalised_120(&g);
             (n[2] / n[1], n[6] / n[5])
@@ -979,6 +991,16 @@ fn quartic_claims() -> Vec<Claim> {
     ));
     // s^2 = 83.6: the cubic's roots, and just below it.
     let at = |s2: f64| quartic_roots(&memoir_quartic_120(s2.sqrt()));
+    // The same statements on the general model's quartic (constants `k` through the
+    // Carvallo–Whipple model) at its own third row, gc2 < s^2 < gc0: the derived side of the
+    // memoir's argument, whose printed quartic carries his three-digit coefficients.
+    let general_eq = Equations::via_whipple(k).ok();
+    let gat = |s2: f64| -> Option<[Eigenvalue; 4]> {
+        let g = general_eq.as_ref()?;
+        (s2 > 0.0).then(|| quartic_roots(&g.quartic(s2.sqrt()))).flatten()
+    };
+    let g_on = gat(gc0);
+    let g_below = gat(gc0 * (1.0 - 1e-3));
     let on = at(83.6);
     let below = at(83.6 * (1.0 - 1e-3));
     let max_re = |r: &Option<[Eigenvalue; 4]>| r.map_or(f64::NAN, |r| r[3].re);
@@ -988,15 +1010,20 @@ fn quartic_claims() -> Vec<Claim> {
         "bicycle-straight-upper-limit-stable",
         "120",
         "At s^2 = 83.6 the real root -0.6744 and the imaginary pair of sum -0.1256 have negative real parts: « le cas étudié s² = 83,6 est un cas où le mouvement rectiligne, sans les mains, est stable ».",
-        "the roots of the printed n° 120 quartic (companion matrix, Schur) at s^2 = 83.6 and at 83.6 (1 - 1e-3)",
+        "the roots of the printed n° 120 quartic (companion matrix, Schur) at s^2 = 83.6 and at 83.6 (1 - 1e-3); and the same on the general model's quartic at its own upper limit gc0 (the s^2 annulling its constant term) and at gc0 (1 - 1e-3)",
         &[
             ("largest real part at 83.6 (the zero root)", max_re(&on)),
             ("next largest real part at 83.6", second),
             ("largest real part at 83.6 (1 - 1e-3)", max_re(&below)),
+            ("general model: next largest real part at gc0", g_on.map_or(f64::NAN, |r| r[2].re)),
+            ("general model: largest real part at gc0 (1 - 1e-3)", max_re(&g_below)),
         ],
-        second < 0.0 && max_re(&below) < 0.0,
+        second < 0.0
+            && max_re(&below) < 0.0
+            && g_on.is_some_and(|r| r[2].re < 0.0)
+            && max_re(&g_below) < 0.0,
         Verdict::DerivationDiffers,
-        "holds in the sense the memoir uses: at s^2 = 95.6/1.143 = 83.64 the fourth root is zero (the constant term vanishes; n° 121 lists λ1 = 0), so the motion is there on the boundary (neutral); at the rounded 83.6 and just below it every root has a negative real part",
+        "holds in the sense the memoir uses: at s^2 = 95.6/1.143 = 83.64 the fourth root is zero (the constant term vanishes; n° 121 lists λ1 = 0), so the motion is there on the boundary (neutral); at the rounded 83.6 and just below it every root has a negative real part; so for the general model at its own upper limit",
     ));
     // The footnote: the division by λ - 0,6744.
     let cubic = [0.0717, 0.191, 0.80, 1.0];
@@ -1012,7 +1039,7 @@ fn quartic_claims() -> Vec<Claim> {
         "bicycle-straight-footnote-divisor",
         "120",
         "Footnote: « Le lecteur vérifiera facilement ce résultat en effectuant la division du premier membre de l'équation à résoudre par λ - 0,6744 »: the cubic λ³ + 0,80λ² + 0,191λ + 0,0717 = 0 has the real root λ = -0,6744 and the pair λ² + 0,1256λ + 0,1062 = 0.",
-        "synthetic division of the printed cubic by λ - 0,6744 (the printed divisor) and by λ + 0,6744 (the divisor of the root -0,6744): the quotients λ² + q1 λ + q0 and the remainders, against the printed pair (0,1256; 0,1062); holds if the printed divisor leaves the printed pair within one unit of its last digit and a remainder below 1e-3",
+        "synthetic division of the printed cubic by λ - 0,6744 (the printed divisor) and by λ + 0,6744 (the divisor of the root -0,6744): the quotients λ² + q1 λ + q0 and the remainders, against the printed pair (0,1256; 0,1062); holds if the printed divisor leaves the printed pair within one unit of its last digit and a remainder below 1e-3. Holds by construction because the check is the footnote's own arithmetic on the printed cubic and the printed divisor: no model ingredient enters (the cubic is the printed quartic's at s^2 = 83.6, not a derived one), so no perturbation of the derived side can move its verdict; the general model's quartic at its own upper limit is judged in bicycle-straight-upper-limit-stable",
         &[
             ("by λ - 0,6744: q1", m1),
             ("by λ - 0,6744: q0", m0),
@@ -1026,29 +1053,41 @@ fn quartic_claims() -> Vec<Claim> {
         "the printed divisor λ - 0,6744 leaves λ² + 1,4744λ + 1,185 and the remainder 0,871; the division that verifies the result is by λ + 0,6744 (the root is -0,6744, as printed two lines above), which leaves λ² + 0,1256λ + 0,1063 and the remainder 1e-5. A sign slip in the footnote (an explicit minus, by the rule of n° 116's cells not an OCR loss); the root and the pair are right",
     ));
     let r47 = at(47.0);
+    let g47 = gat(gc2);
     out.push(claim(
         "bicycle-straight-47-not-stable",
         "120",
         "The lower value s^2 = 47.0 certainly does not give stability: a zero coefficient of λ^2 is impossible in a case of stability (λ1λ2 + λ3λ4 + (λ1 + λ2)(λ3 + λ4) = 0), so the lower limit is above 47.0.",
-        "the roots of the printed n° 120 quartic at s^2 = 47.0, and the lower end of its stable range (previous claims)",
-        &[("largest real part at s^2 = 47.0", max_re(&r47)), ("lower end of the stable range, s^2", lo)],
-        max_re(&r47) > 0.0 && lo > 47.0,
+        "the roots of the printed n° 120 quartic at s^2 = 47.0, and the lower end of its stable range (previous claims); the same on the general model's quartic at its own gc2 (the s^2 annulling its λ^2 term) against its own lower end",
+        &[
+            ("largest real part at s^2 = 47.0", max_re(&r47)),
+            ("lower end of the stable range, s^2", lo),
+            ("general model: largest real part at gc2", max_re(&g47)),
+            ("general model: lower end of its stable range, s^2", glo),
+        ],
+        max_re(&r47) > 0.0 && lo > 47.0 && max_re(&g47) > 0.0 && glo > gc2,
         Verdict::DerivationDiffers,
-        "at 47.0 an imaginary pair has a positive real part, and the stable range begins above 47.0",
+        "at 47.0 an imaginary pair has a positive real part, and the stable range begins above 47.0; so for the general model at its own gc2",
     ));
     // n° 121: below 83.6 the zero root turns negative; over (47, 83.6) two real negative roots.
     let near_zero = below.map_or(f64::NAN, |r| {
+        r.iter().filter(|x| x.im == 0.0).map(|x| x.re).fold(f64::NEG_INFINITY, f64::max)
+    });
+    let g_near_zero = g_below.map_or(f64::NAN, |r| {
         r.iter().filter(|x| x.im == 0.0).map(|x| x.re).fold(f64::NEG_INFINITY, f64::max)
     });
     out.push(claim(
         "bicycle-straight-zero-root-turns-negative",
         "121",
         "For s^2 = 83.6 - ε the root λ1 = 0 becomes negative (Descartes' rule of signs).",
-        "the largest real root of the printed n° 120 quartic at s^2 = 83.6 (1 - 1e-3)",
-        &[("largest real root just below 83.6", near_zero)],
-        near_zero < 0.0,
+        "the largest real root of the printed n° 120 quartic at s^2 = 83.6 (1 - 1e-3), and of the general model's quartic at gc0 (1 - 1e-3), its own upper limit gc0 lowered likewise",
+        &[
+            ("largest real root just below 83.6", near_zero),
+            ("general model: largest real root just below gc0", g_near_zero),
+        ],
+        near_zero < 0.0 && g_near_zero < 0.0,
         Verdict::DerivationDiffers,
-        "the zero root moves to the left as s^2 decreases below 83.6",
+        "the zero root moves to the left as s^2 decreases below 83.6, in the printed quartic and in the general model's below its own gc0",
     ));
     let (mut points, mut two_negative, mut min_gap) = (0usize, 0usize, f64::INFINITY);
     for i in 0..=200 {
@@ -1063,15 +1102,29 @@ fn quartic_claims() -> Vec<Claim> {
                 .min(r.iter().map(|x| x.re.abs() + x.im.abs()).fold(f64::INFINITY, f64::min));
         }
     }
+    let (mut g_points, mut g_two_negative) = (0usize, 0usize);
+    for i in 0..=200 {
+        let s2 = gc2 + (gc0 * (1.0 - 1e-6) - gc2) * i as f64 / 200.0;
+        g_points += 1;
+        if let Some(r) = gat(s2) {
+            let reals: Vec<f64> = r.iter().filter(|x| x.im == 0.0).map(|x| x.re).collect();
+            g_two_negative += usize::from(reals.len() == 2 && reals.iter().all(|x| *x < 0.0));
+        }
+    }
     out.push(claim(
         "bicycle-straight-real-roots-stay-negative",
         "121",
         "As s^2 decreases from 83.6 to 47.0 no root vanishes, so λ1 and λ2 stay negative: the obstacle to stability can only come from the imaginary pair.",
-        "the roots of the printed n° 120 quartic at 201 values of s^2 evenly spaced from 47.0 to 83.6 (1 - 1e-6): the number of points with exactly two real roots, both negative",
-        &[("points", points as f64), ("points with two negative real roots and a pair", two_negative as f64), ("smallest |root| (re + im)", min_gap)],
-        two_negative == points,
+        "the roots of the printed n° 120 quartic at 201 values of s^2 evenly spaced from 47.0 to 83.6 (1 - 1e-6): the number of points with exactly two real roots, both negative; the same for the general model's quartic from its own gc2 to gc0 (1 - 1e-6)",
+        &[
+            ("points", points as f64),
+            ("points with two negative real roots and a pair", two_negative as f64),
+            ("smallest |root| (re + im)", min_gap),
+            ("general model: points with two negative real roots and a pair", g_two_negative as f64),
+        ],
+        two_negative == points && g_two_negative == g_points,
         Verdict::DerivationDiffers,
-        "the two real roots stay real and negative over the whole interval (they do not merge into a pair, which the memoir's argument takes for granted), and no root reaches zero",
+        "the two real roots stay real and negative over the whole interval (they do not merge into a pair, which the memoir's argument takes for granted), and no root reaches zero; so in the general model over its own third row",
     ));
     // The lower limit is a pure imaginary pair, mu^2 = a3/a1.
     let (ws, pair_re, mu2_rel) = match w120.weave_s {
@@ -1084,15 +1137,41 @@ fn quartic_claims() -> Vec<Claim> {
         }
         None => (f64::NAN, f64::NAN, f64::NAN),
     };
+    let (g_pair_re, g_mu2_rel) = match general.as_ref().ok().and_then(|w| w.weave_s) {
+        Some(s) => match &general_eq {
+            Some(g) => {
+                let q = g.quartic(s);
+                let top = quartic_roots(&q).map_or((f64::NAN, f64::NAN), |r| (r[3].re, r[3].im));
+                let mu2 = q[1] / q[3];
+                (top.0, (top.1 * top.1 - mu2).abs() / mu2)
+            }
+            None => (f64::NAN, f64::NAN),
+        },
+        None => (f64::NAN, f64::NAN),
+    };
     out.push(claim(
         "bicycle-straight-lower-limit-imaginary-pair",
         "121",
         "There is a value of s^2 between 83.6 and 47.0 where the real part of the imaginary pair changes sign, where the pair is ±μi with μ² = a3/a1.",
-        "the lower end of the stable range of the printed n° 120 quartic (the lowest rise of H3 with a1/a3 > 0, bisected to adjacent floats) and its roots there",
-        &[("lower limit s^2 (printed quartic)", ws), ("real part of the critical pair", pair_re), ("|Im^2 - a3/a1| / (a3/a1)", mu2_rel)],
-        ws > 47.0 && ws < 83.6 && pair_re.abs() < 1e-9 && mu2_rel < 1e-6,
+        "the lower end of the stable range of the printed n° 120 quartic (the lowest rise of H3 with a1/a3 > 0, bisected to adjacent floats) and its roots there; the same for the general model's quartic at its own lower limit, between its gc2 and gc0",
+        &[
+            ("lower limit s^2 (printed quartic)", ws),
+            ("real part of the critical pair", pair_re),
+            ("|Im^2 - a3/a1| / (a3/a1)", mu2_rel),
+            ("general model: lower limit s^2", glo),
+            ("general model: real part of the critical pair", g_pair_re),
+            ("general model: |Im^2 - a3/a1| / (a3/a1)", g_mu2_rel),
+        ],
+        ws > 47.0
+            && ws < 83.6
+            && pair_re.abs() < 1e-9
+            && mu2_rel < 1e-6
+            && glo > gc2
+            && glo < gc0
+            && g_pair_re.abs() < 1e-9
+            && g_mu2_rel < 1e-6,
         Verdict::DerivationDiffers,
-        "the stability is lost at the lower limit through a pair crossing the imaginary axis (the weave of the modern literature), at the μ² of (3)",
+        "the stability is lost at the lower limit through a pair crossing the imaginary axis (the weave of the modern literature), at the μ² of (3), in the printed quartic and in the general model's",
     ));
     out
 }
@@ -1564,17 +1643,16 @@ fn divergence_friction_check(sign: f64) -> Claim {
     )
 }
 
-/// n° 123: the pendulum with dry friction, and friction at the steer of the bicycle.
-fn friction_claims(k: &Constants) -> Vec<Claim> {
-    let mut out = Vec::new();
-    // The pendulum: a slowly growing swing with constant friction is damped below the threshold.
+/// n° 123: the pendulum with a constant friction a^2 k of sign `sign` (1: opposing the motion,
+/// as the memoir's) against the threshold (2 + τ)k/τ.
+fn pendulum_friction_claim(sign: f64) -> Claim {
     let (a, kf, eps) = (1.3, 0.02, 0.01);
     let tau = (eps * std::f64::consts::PI / a).exp() - 1.0;
     let threshold = (2.0 + tau) * kf / tau;
-    let swing = |th0: f64| friction_half_swing(a, kf, th0, eps, 20_000).1;
+    let swing = |th0: f64| friction_half_swing(a, sign * kf, th0, eps, 20_000).1;
     let (below, above) = (0.8 * threshold, 1.25 * threshold);
     let (sb, sa) = (swing(below), swing(above));
-    out.push(claim(
+    claim(
         "bicycle-straight-pendulum-friction-threshold",
         "123",
         "With a constant friction a²k a slowly growing oscillation θ0 e^(εt) sin(at - π/2) is damped, the unstable equilibrium made stable, provided τθ0 < (2 + τ)k, with e^(εT/2) = 1 + τ.",
@@ -1589,6 +1667,16 @@ fn friction_claims(k: &Constants) -> Vec<Claim> {
         sb.abs() < below && sa.abs() > above,
         Verdict::DerivationDiffers,
         "below the threshold the swing shrinks, above it grows: the equilibrium is made stable for amplitudes below (2 + τ)k/τ only (a local stability, which the memoir's condition on θ0 states)",
+    )
+}
+
+/// n° 123: the pendulum with dry friction, and friction at the steer of the bicycle.
+fn friction_claims(k: &Constants) -> Vec<Claim> {
+    let mut out = Vec::new();
+    // The pendulum: a slowly growing swing with constant friction is damped below the threshold.
+    out.push(pendulum_friction_claim(1.0).falsified_by(
+        "the friction's sign flipped in the simulated pendulum (+a²k sgn θ': it drives the swing instead of opposing it), the threshold (2 + τ)k/τ kept",
+        pendulum_friction_claim(-1.0),
     ));
     // The exponential divergence: slower with friction, simulated from rest.
     out.push(divergence_friction_check(1.0).falsified_by(
@@ -1764,12 +1852,18 @@ fn friction_claims(k: &Constants) -> Vec<Claim> {
 
 /// n° 124 against n° 25: the slope term of the marching equation.
 fn slope_claim(k: &Constants) -> Claim {
+    slope_claim_at(k, 0.0)
+}
+
+/// [`slope_claim`] with the travel at `delta` (rad) from the upward slope line (0: climbing
+/// straight, as the claim reads).
+fn slope_claim_at(k: &Constants, delta: f64) -> Claim {
     let mass = k.mu + 2.0 * k.mu1;
     let (mut worst_sin, mut worst_tan) = (0.0f64, 0.0f64);
     for i in [0.02, 0.05, 0.1, 0.2] {
         // The virtual work of gravity for a rotation δσ of the rear wheel, rolling straight up
         // the slope: the whole bicycle moves R δσ along the ground.
-        let w = incline_virtual_works(mass, k.g, k.h, k.r, i, 0.0, 0.0)[2];
+        let w = incline_virtual_works(mass, k.g, k.h, k.r, i, delta, 0.0)[2];
         let moment = -w;
         let sin_form = mass * k.g * k.r * i.sin();
         let tan_form = mass * k.g * k.r * i.tan();

@@ -78,10 +78,20 @@ const DP_SCALED: crate::perturb::Perturbation = crate::perturb::Perturbation {
     factor: 1.0 + 1e-3,
 };
 
+/// The first constant of the generated p' of system (2) (`pns_dp`, its 4/3, the gyroscopic
+/// term in s n) negated.
+const DP_FLIPPED: crate::perturb::Perturbation = crate::perturb::Perturbation {
+    model: "hoop",
+    output: "pns_dp",
+    target: crate::perturb::Target::Constant(0),
+    factor: -1.0,
+};
+
 /// The checks with the falsification of those that a perturbation of the generated `hoop`
 /// program breaks ([`crate::perturb::falsify`]).
 fn compute() -> Vec<Claim> {
-    let table: [crate::perturb::Row; 5] = [
+    let table: [crate::perturb::Row; 6] = [
+        (&DP_FLIPPED, || vec![stable_fall_rate_vanishes()], &["hoop-stable-fall-stops"]),
         (
             &S_SCALED,
             || {

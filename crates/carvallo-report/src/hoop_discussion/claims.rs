@@ -6,7 +6,7 @@
 
 use std::sync::OnceLock;
 
-use carvallo::hoop_discussion::{self as hd, carvallo_root, special_points};
+use carvallo::hoop_discussion::{self as hd, special_points};
 use carvallo::numerics::poly::{bisect, poly_eval};
 
 use super::e_roots;
@@ -137,6 +137,15 @@ const D_FLIPPED: Perturbation = Perturbation {
     factor: -1.0,
 };
 
+/// Every use of θ in the generated skid D(n) (`skid_of_n`) halved: D read at half the lean,
+/// which stays below 1/2 (D(n2) lies between tan θ/3 and tan θ/2) for every lean below 90°.
+const D_THETA_HALVED: Perturbation = Perturbation {
+    model: "hoop_discussion",
+    output: "skid_of_n",
+    target: crate::perturb::Target::Argument("theta"),
+    factor: 0.5,
+};
+
 /// The third constant of the generated cubic of H (`h_cubic`, its 14) negated.
 const H_CUBIC_FLIPPED: Perturbation = Perturbation {
     model: "hoop_discussion",
@@ -158,7 +167,8 @@ const VERTICAL_T_SCALED: Perturbation = Perturbation {
 /// ([`crate::perturb::with`]), only the functions giving the claims named.
 fn compute() -> Vec<Claim> {
     let checks = compute_checks();
-    let table: [crate::perturb::Row; 15] = [
+    let table: [crate::perturb::Row; 16] = [
+        (&D_THETA_HALVED, skid_16, &["hoop-n2-skid-left"]),
         (&H_CUBIC_FLIPPED, h_17_bis, &["hoop-h-cubic-one-root"]),
         (&VERTICAL_T_SCALED, || vec![u_smallest()], &["hoop-u-smallest-root"]),
         (
@@ -172,11 +182,20 @@ fn compute() -> Vec<Claim> {
         (
             &QUARTIC_FLIPPED,
             || {
-                let mut v = vec![quartic_bracket(), u_roots()];
+                let mut v =
+                    vec![quartic_bracket(), u_roots(), graeffe_separated(), half_thousandth()];
                 v.extend(tables());
                 v
             },
-            &["hoop-quartic-root-bracket", "hoop-u-no-positive-root", "hoop-horner-tableau-cells"],
+            &[
+                "hoop-quartic-root-bracket",
+                "hoop-u-no-positive-root",
+                "hoop-horner-tableau-cells",
+                "hoop-graeffe-table-cells",
+                "hoop-verification-tableau-cells",
+                "hoop-graeffe-separated",
+                "hoop-root-squaring-half-thousandth",
+            ],
         ),
         (
             &D_FLIPPED,
@@ -221,6 +240,15 @@ fn compute() -> Vec<Claim> {
         (&D_SCALED, discussion_15, &["hoop-variation-table", "hoop-d-minus-half-n1"]),
     ];
     crate::perturb::falsify(checks, &table)
+        .into_iter()
+        .map(|c| match c.id.as_str() {
+            "hoop-cyclist-centrifugal-adds" => c.falsified_by(
+                "the n° 36 rider a tenth as heavy, 6 kg instead of 60 (his moments A, B, C scaled with him; centre of gravity at 1.25 m and the 5 kg hoop wheel kept)",
+                cyclist_footnote_for(0.1),
+            ),
+            _ => c,
+        })
+        .collect()
 }
 
 /// The checks of n° 13–19, as derived.
@@ -551,8 +579,54 @@ fn judge(cells: &[Cell]) -> (usize, usize, f64, f64) {
     (cells.len(), faithful, his_max, exact_max)
 }
 
+/// Carvallo's method of n° 14 as [`carvallo::hoop_discussion::carvallo_root`] runs it, but on
+/// the generated F(t) read through [`crate::perturb::discussion_output`]
+/// ([`quartic_f_coefficients`]) instead of the compiled copy, so that a perturbed program is
+/// seen: the equation in u (the Horner shift t = 1 + u), the root-squaring rows on v = 1/u
+/// after 0, 1 and 2 squarings, and the exact root polished by Newton from the generated
+/// `vertical_t`.
+struct GeneratedRoot {
+    /// The equation in u, highest power first (28, 68, 51, 14, 1).
+    shifted: Vec<f64>,
+    /// The root-squaring rows on the equation in v.
+    graeffe_rows: Vec<Vec<f64>>,
+    /// The root from (generated `vertical_t`) - 1, three Newton steps on the equation in u.
+    exact_u: f64,
+    /// The relative error of the method's u (two squarings) against `exact_u`.
+    method_rel_error: f64,
+    /// The same after six squarings.
+    converged_rel_error: f64,
+}
+
+fn generated_root() -> GeneratedRoot {
+    use carvallo::numerics::graeffe::{graeffe_largest, horner_shift};
+    let (shifted, _) = horner_shift(&quartic_f_coefficients(), 1.0);
+    let reversed: Vec<f64> = shifted.iter().rev().copied().collect();
+    let (graeffe_rows, v_abs) = graeffe_largest(&reversed, 2);
+    let u = -1.0 / v_abs;
+    let (_, v_conv) = graeffe_largest(&reversed, 6);
+    let mut exact_u = crate::perturb::discussion_output("vertical_t", &[]) - 1.0;
+    for _ in 0..3 {
+        let h = 1e-7;
+        let d = (poly_eval(&shifted, exact_u + h) - poly_eval(&shifted, exact_u - h)) / (2.0 * h);
+        if d != 0.0 {
+            exact_u -= poly_eval(&shifted, exact_u) / d;
+        }
+    }
+    GeneratedRoot {
+        method_rel_error: ((u - exact_u) / exact_u).abs(),
+        converged_rel_error: ((-1.0 / v_conv - exact_u) / exact_u).abs(),
+        shifted,
+        graeffe_rows,
+        exact_u,
+    }
+}
+
+/// The equation in v = 1/u that Carvallo squares, 1, 14, 51, 68, 28 (his first row).
+const PRINTED_V_EQUATION: [f64; 5] = [1.0, 14.0, 51.0, 68.0, 28.0];
+
 fn tables() -> Vec<Claim> {
-    let root = carvallo_root();
+    let root = generated_root();
     // Horner tableau: the coefficients, then for each pass the products line (1 x the new row
     // but its last entry) and the new row; the last pass carries the leading 28.
     let printed_horner: [&[f64]; 11] = [
@@ -597,7 +671,10 @@ fn tables() -> Vec<Claim> {
     // Root-squaring table. Carvallo writes a number of k + 1 digits as "k.digits" (2.196 =
     // 196, 5.565 = 565 000); the double products are printed by their leading digits.
     let e = &root.graeffe_rows;
-    let (h0, h1) = ([1.0, 14.0, 51.0, 68.0, 28.0], [1.0, 94.0, 752.0, 1770.0, 784.0]);
+    let (h0, h1) = (PRINTED_V_EQUATION, [1.0, 94.0, 752.0, 1770.0, 784.0]);
+    // His first row is the equation in v of the generated F (the tableau's shift reversed).
+    let v_equation: Vec<f64> = root.shifted.iter().rev().copied().collect();
+    let from_equation = v_equation == h0;
     let ex1 = &e[1];
     let g = vec![
         // 2^0 squares and double products (his inputs are the exact coefficients).
@@ -638,9 +715,9 @@ fn tables() -> Vec<Claim> {
         "hoop-graeffe-table-cells",
         "14",
         "The printed root-squaring table on v = 1/u (two squarings, \"les opérations étant faites à la règle à calcul\") and the logarithms that follow, down to -u = 0,10807.",
-        "27 printed cells (Carvallo writes a number of k + 1 digits as k.digits, 5.565 = 565 000; double products by their leading digits; the \"5.613\" printed at the end of the first squares line is read as 784^2, printed again as the last coefficient of the 2^2 row; the truncated start of a third squaring, \"10.537\", is not read) each against Carvallo's own arithmetic on his printed inputs (a slide rule: within one unit of the last printed digit or 2e-3 relative, the policy's rule for printed numbers) and against the exact root squaring of the generated equation (carvallo::numerics::graeffe)",
-        &[("cells", n as f64), ("faithful_to_his_arithmetic", faithful as f64), ("max_rel_diff_to_his_arithmetic", his_max), ("max_rel_diff_to_exact", exact_max)],
-        policy::claim(faithful == n, Verdict::MemoirError),
+        "27 printed cells (Carvallo writes a number of k + 1 digits as k.digits, 5.565 = 565 000; double products by their leading digits; the \"5.613\" printed at the end of the first squares line is read as 784^2, printed again as the last coefficient of the 2^2 row; the truncated start of a third squaring, \"10.537\", is not read) each against Carvallo's own arithmetic on his printed inputs (a slide rule: within one unit of the last printed digit or 2e-3 relative, the policy's rule for printed numbers) and against the exact root squaring of the generated equation (carvallo::numerics::graeffe); his first row 1, 14, 51, 68, 28 against the equation in v of the generated F (its Horner shift read backwards, through the generated quartic_f): another equation is derivation-differs",
+        &[("cells", n as f64), ("faithful_to_his_arithmetic", faithful as f64), ("max_rel_diff_to_his_arithmetic", his_max), ("max_rel_diff_to_exact", exact_max), ("first_row_is_the_generated_equation", f64::from(u8::from(from_equation)))],
+        if from_equation { policy::claim(faithful == n, Verdict::MemoirError) } else { Verdict::DerivationDiffers },
         "every cell is his arithmetic at slide-rule precision under the one rule of printed numbers (policy::printed: within one unit of the last printed digit, or 2e-3 relative, the rule that makes u's 1,1e-3 `rounding`): the largest relative difference, 2 %, is the double product 2 x 784 = 1568 printed by its two digits 16, i.e. 1600 with a last digit worth 100, within one unit; the exception is 784^2 = 614 656 printed 613 (thousands, both times), 1,7 units of the last digit and 2,7e-3 relative, outside both halves of the rule: a slip, kept `memoir-error`, that does not reach the root (only the first two coefficients of the last row give v^4); against the exact squaring the cells drift by up to 2 % (his 752 for 753 and 1770 for 1768 propagate)",
     );
     // The verification by substitution of u = -0,10807 (synthetic division).
@@ -666,13 +743,15 @@ fn tables() -> Vec<Claim> {
         cell(0.0004, 4, 1.0 - 0.9996, exact_rows[4].1),
     ];
     let (vn, vf, vh, ve) = judge(&v);
+    // His equation in u, 28, 68, 51, 14, 1, is the generated F shifted.
+    let u_from_equation = root.shifted == [28.0, 68.0, 51.0, 14.0, 1.0];
     let verification = Claim::new(
         "hoop-verification-tableau-cells",
         "14",
         "The printed verification of u = -0,10807 by substitution in the equation in u (synthetic division) ends with the residual +0,0004.",
-        "the 8 computed cells (4 products, 4 partial sums; the first line is the equation's coefficients) each against Carvallo's own arithmetic on his printed inputs (slide-rule rule of the policy) and against the exact synthetic division at u = -0,10807",
-        &[("cells", vn as f64), ("faithful_to_his_arithmetic", vf as f64), ("max_rel_diff_to_his_arithmetic", vh), ("max_rel_diff_to_exact", ve), ("exact_residual", exact_rows[4].1)],
-        policy::claim(vf == vn, Verdict::MemoirError),
+        "the 8 computed cells (4 products, 4 partial sums; the first line is the equation's coefficients) each against Carvallo's own arithmetic on his printed inputs (slide-rule rule of the policy) and against the exact synthetic division at u = -0,10807; the first line 28, 68, 51, 14, 1 against the Horner shift of the generated F (through the generated quartic_f): another equation is derivation-differs",
+        &[("cells", vn as f64), ("faithful_to_his_arithmetic", vf as f64), ("max_rel_diff_to_his_arithmetic", vh), ("max_rel_diff_to_exact", ve), ("exact_residual", exact_rows[4].1), ("first_line_is_the_generated_equation", f64::from(u8::from(u_from_equation)))],
+        if u_from_equation { policy::claim(vf == vn, Verdict::MemoirError) } else { Verdict::DerivationDiffers },
         "every cell is his slide-rule arithmetic (9,248 x 0,10807 = 0,99943 read 0,9996); that reading, 1,7e-4 relative, is what turns the exact residual 0,00065 into his 0,0004 (the value entry of the residual)",
     );
     vec![horner, graeffe, verification]
@@ -695,7 +774,7 @@ fn quartic_f_coefficients() -> Vec<f64> {
 }
 
 fn graeffe_separated() -> Claim {
-    let root = carvallo_root();
+    let root = generated_root();
     let rows = &root.graeffe_rows;
     let last = &rows[2];
     let prev = &rows[1];
@@ -707,7 +786,7 @@ fn graeffe_separated() -> Claim {
         "hoop-graeffe-separated",
         "14",
         "After two squarings \"la plus grande racine est visiblement séparée et la dernière transformée donne pour cette racine\" v^4 = 7332.",
-        "the exact root squaring (carvallo::numerics::graeffe) of v^4 + 14v^3 + 51v^2 + 68v + 28: the double products' share of the square in the first coefficient of the last row (the usual test of separation: negligible when separated), the other roots' share of the sum of fourth powers that this coefficient is, and the relative error of the root it gives against the exact one",
+        "the exact root squaring (carvallo::numerics::graeffe) of the equation in v of the generated F (through the generated quartic_f), v^4 + 14v^3 + 51v^2 + 68v + 28: the double products' share of the square in the first coefficient of the last row (the usual test of separation: negligible when separated), the other roots' share of the sum of fourth powers that this coefficient is, and the relative error of the root it gives against the exact one",
         &[("double_product_share_last_row", share), ("other_roots_share_of_b1", rest4 / (v1.powi(4))), ("root_rel_error_after_2", root.method_rel_error), ("root_rel_error_after_6", root.converged_rel_error)],
         // Separated, or else judged by what the separation is for, the root read off, with the
         // one rule of slide-rule numbers (policy::printed, as the value entry `u exact vs
@@ -722,7 +801,7 @@ fn graeffe_separated() -> Claim {
 }
 
 fn half_thousandth() -> Claim {
-    let root = carvallo_root();
+    let root = generated_root();
     let u = -0.10807;
     let residual = poly_eval(&root.shifted, u);
     let largest_term = (14.0 * u).abs();
@@ -1086,10 +1165,23 @@ fn marche_17() -> Vec<Claim> {
 /// n° 17's footnote: for the cyclist the frame's and rider's centrifugal force adds to the
 /// wheel's and is much larger, which is why skidding is feared by cyclists and not in hoop play.
 fn cyclist_footnote_17() -> Claim {
+    cyclist_footnote_for(1.0)
+}
+
+/// [`cyclist_footnote_17`] with the rider's mass and moments scaled by `scale` (1 for the
+/// n° 36 rider).
+fn cyclist_footnote_for(scale: f64) -> Claim {
     use carvallo::unicycle::{Rider, Unicycle, Wheel};
     let (r, g, mu1) = (0.5f64, 9.81f64, 5.0f64);
     // The n° 36 rider (60 kg, centre of gravity at 2.5 R) on a hoop wheel of 5 kg, R = 0.5 m.
-    let rider = Rider { mass: 60.0, height: 1.25, a: 100.0, b: 100.0, c: 0.77, l: 0.0 };
+    let rider = Rider {
+        mass: 60.0 * scale,
+        height: 1.25,
+        a: 100.0 * scale,
+        b: 100.0 * scale,
+        c: 0.77 * scale,
+        l: 0.0,
+    };
     let unicycle = Unicycle::new(r, g, rider, Wheel::hoop(mu1, r)).ok();
     let hoop = carvallo::hoop::Hoop::new(r, mu1, g).ok();
     let unit = (g / r).sqrt();

@@ -13,7 +13,7 @@ use carvallo::hoop::Hoop;
 use carvallo::unicycle::variants::Pitch;
 use carvallo::unicycle::{Rider, Unicycle, Wheel};
 use carvallo::unicycle_discussion::{
-    bisect, curve_n_s, minimum_on_e, n32, s_on_e, stability_limit, trinomial, Point, H_OVER_R,
+    bisect, curve_n_s, minimum_on_e, n32, s_on_e, trinomial, Point, H_OVER_R,
 };
 
 use crate::claims::{Assertion, Claim, Status};
@@ -21,6 +21,71 @@ use crate::entry::Verdict;
 use crate::policy::{self, rel_diff};
 
 use super::{points, with};
+
+/// The curves of n° 32–41 as [`carvallo::unicycle_discussion`] computes them, but read
+/// through [`crate::perturb::unicycle_out`], so that a perturbed `unicycle` program is seen
+/// (issue 38); the same formulas, the same evaluation points.
+mod read {
+    use carvallo::unicycle_discussion::{bisect, minimise, n32};
+
+    use crate::perturb::unicycle_out as out;
+
+    /// s on (N) at θ, the positive root of (E) at n = -s; `None` beyond the asymptote.
+    pub(super) fn curve_n_s(theta_deg: f64) -> Option<f64> {
+        let e = |s: f64| out(&n32(theta_deg, s, -s), "equilibrium_n32");
+        let (e0, e1) = (e(0.0), e(1.0));
+        let s2 = -e0 / (e1 - e0);
+        (s2.is_finite() && s2 >= 0.0).then(|| s2.sqrt())
+    }
+
+    /// s on (E) of n° 32 at θ and n (linear in s).
+    pub(super) fn s_on_e(theta_deg: f64, n: f64) -> f64 {
+        let e0 = out(&n32(theta_deg, 0.0, n), "equilibrium_n32");
+        let e1 = out(&n32(theta_deg, 1.0, n), "equilibrium_n32");
+        -e0 / (e1 - e0)
+    }
+
+    /// (n0, s0): the smallest s on (E) at θ and its n.
+    pub(super) fn minimum_on_e(theta_deg: f64) -> (f64, f64) {
+        let n0 = minimise(|n| s_on_e(theta_deg, n), -5.0, -1e-3);
+        (n0, s_on_e(theta_deg, n0))
+    }
+
+    /// (a, b, c) of the generated trinomial S(n^2) = a m^2 + b m + c of n° 41.
+    pub(super) fn trinomial(theta_deg: f64) -> (f64, f64, f64) {
+        let t = |m: f64| out(&n32(theta_deg, 0.0, m.sqrt()), "trinomial_n41");
+        let (t0, t1, t2) = (t(0.0), t(1.0), t(2.0));
+        let a = (t2 - 2.0 * t1 + t0) / 2.0;
+        (a, t1 - t0 - a, t0)
+    }
+
+    /// The two points (n, s) of the limit of stability at θ; `None` where the trinomial's
+    /// roots are not real and positive.
+    pub(super) fn stability_limit(theta_deg: f64) -> Option<[(f64, f64); 2]> {
+        let (a, b, c) = trinomial(theta_deg);
+        let disc = b * b - 4.0 * a * c;
+        if disc < 0.0 || a == 0.0 {
+            return None;
+        }
+        let roots = [(-b - disc.sqrt()) / (2.0 * a), (-b + disc.sqrt()) / (2.0 * a)];
+        if roots.iter().any(|m| *m <= 0.0) {
+            return None;
+        }
+        Some(roots.map(|m| {
+            let n = -m.sqrt();
+            (n, s_on_e(theta_deg, n))
+        }))
+    }
+
+    /// The two zeros of the first member of n° 41, -b - 2 sqrt(ac), in degrees.
+    pub(super) fn first_member_roots() -> (f64, f64) {
+        let first = |th: f64| {
+            let (a, b, c) = trinomial(th);
+            -b - 2.0 * (a * c).sqrt()
+        };
+        (bisect(first, 5.0, 30.0), bisect(first, 50.0, 70.0))
+    }
+}
 
 /// The larger of two numbers, NaN when either is (so that a failed evaluation fails a check
 /// instead of being skipped by `f64::max`).
@@ -260,7 +325,12 @@ fn cylinder(mu: f64, r: f64, len: f64, h: f64) -> (f64, f64, f64) {
 }
 
 fn wheel_small() -> Claim {
-    let (mu, mu1, r) = (60.0, 5.0, 0.5);
+    wheel_small_for(5.0)
+}
+
+/// [`wheel_small`] with a hoop wheel of mass `mu1` (kg; the memoir's 5).
+fn wheel_small_for(mu1: f64) -> Claim {
+    let (mu, r) = (60.0, 0.5);
     let rc = 1.0 / (2.0 * PI);
     let h = H_OVER_R * r;
     let a1 = 1.5 * mu1 * r * r;
@@ -315,19 +385,32 @@ fn steady_needs_no_motor() -> Claim {
 
 /// The height of the total centre of gravity on a slope of angle `i` after the wheel has
 /// rolled by `ds` up it, the rider translating with the wheel's centre (n° 22): wheel centre
-/// R nu, rider's centre of gravity z nu at the start (nu the slope's normal).
-fn slope_height(i: f64, r: f64, z: f64, mu: f64, mu1: f64, ds: f64) -> f64 {
+/// R nu, rider's centre of gravity z nu at the start (nu the slope's normal); or with
+/// `horizontal` the cycle advanced horizontally by R ds and raised onto the slope (the rise
+/// R ds tan(i) of n° 25's reading) instead of rolling on it.
+fn slope_height_with(i: f64, r: f64, z: f64, mu: f64, mu1: f64, ds: f64, horizontal: bool) -> f64 {
     let nu = (-i.sin(), i.cos());
     // The wheel turns by -ds about the contact point: its centre R nu goes to rot(-ds) R nu.
     let (c, s) = (ds.cos(), -ds.sin());
-    let centre = (r * (c * nu.0 - s * nu.1), r * (s * nu.0 + c * nu.1));
-    let shift = (centre.0 - r * nu.0, centre.1 - r * nu.1);
+    let (centre, shift) = if horizontal {
+        let shift = (r * ds, r * ds * i.tan());
+        ((r * nu.0 + shift.0, r * nu.1 + shift.1), shift)
+    } else {
+        let centre = (r * (c * nu.0 - s * nu.1), r * (s * nu.0 + c * nu.1));
+        (centre, (centre.0 - r * nu.0, centre.1 - r * nu.1))
+    };
     let rider = (z * nu.0 + shift.0, z * nu.1 + shift.1);
     (mu * rider.1 + mu1 * centre.1) / (mu + mu1)
 }
 
 fn slope_moment() -> (Claim, Claim) {
-    let (r, z, mu, mu1, g) = (0.5, 1.25, 60.0, 5.0, 9.81);
+    slope_moment_for(9.81, false)
+}
+
+/// [`slope_moment`] with gravity `g` (m/s^2; 9.81), the cycle advanced horizontally when
+/// `horizontal` ([`slope_height_with`]).
+fn slope_moment_for(g: f64, horizontal: bool) -> (Claim, Claim) {
+    let (r, z, mu, mu1) = (0.5, 1.25, 60.0, 5.0);
     let (mut sin_rel, mut tan_rel, mut tan_rel_10) = (0.0f64, 0.0f64, 0.0);
     let mut sign_ok = true;
     let mut count = 0;
@@ -336,8 +419,8 @@ fn slope_moment() -> (Claim, Claim) {
     {
         let i = f64::to_radians(deg);
         let h = 1e-6;
-        let up = slope_height(i, r, z, mu, mu1, h);
-        let down = slope_height(i, r, z, mu, mu1, -h);
+        let up = slope_height_with(i, r, z, mu, mu1, h, horizontal);
+        let down = slope_height_with(i, r, z, mu, mu1, -h, horizontal);
         // The moment the pedals must give: minus the generalised force of gravity for ds.
         let moment = (mu + mu1) * g * (up - down) / (2.0 * h);
         let total = (mu + mu1) * g * r;
@@ -755,7 +838,7 @@ fn separation_curve() -> Claim {
     for th in grid(0.5, 23.0, 46) {
         let t = th.to_radians();
         let printed = (t.tan() / (1.0 - H_OVER_R * t.sin())).sqrt();
-        worst = mx(worst, rel_diff(curve_n_s(th).unwrap_or(f64::NAN), printed));
+        worst = mx(worst, rel_diff(read::curve_n_s(th).unwrap_or(f64::NAN), printed));
     }
     Claim::new(
         "unicycle-separation-curve",
@@ -792,7 +875,7 @@ fn n_touches_e() -> Claim {
         "unicycle-n-touches-e",
         "32",
         "(N) touches the curve (ℰ) of the smallest s at the point I where s0 = -n0 (theta = 11.5°, s0 = 0.639).",
-        "s on the generated (N) minus the smallest s on the generated (E) (golden section) at 91 leans 0.5°–23°, and at the derived point I (bisection of s0 + n0).",
+        "s on the generated (N) minus the smallest s on the generated (E) (golden section) at 91 leans 0.5°–23°, and at the derived point I (bisection of s0 + n0). Holds by construction because (N) is (E) taken at n = -s and (ℰ) is the smallest s over n on the same (E): every point of (N) is a point of (E), so (N) cannot pass below (ℰ) and meets it exactly where the minimising n0 equals -s0, whatever (E) is (a perturbed (E) moves both curves together); where I lies, theta = 11.5° and s0 = 0.639, is judged by the value entries of n° 32 (point I)",
         &[("theta_I_deg", theta_i), ("gap_at_I", gap_at_i), ("min_gap_1deg_away", min_gap_away)],
         policy::claim(holds, Verdict::DerivationDiffers),
         "(N) lies above (ℰ) everywhere else (as it must: (ℰ) is the smallest s over n) and meets it at I only, a contact.",
@@ -859,10 +942,10 @@ fn regions() -> Claim {
 
 /// The walking root n2's stability limit on (S) of n° 40 at θ < 16.3°: s_a of n° 41.
 fn stability_circle() -> Claim {
-    let (root1, _) = carvallo::unicycle_discussion::first_member_roots();
+    let (root1, _) = read::first_member_roots();
     let mut max_dev = 0.0f64;
     for th in grid(0.5, root1 - 0.05, 40) {
-        if let Some([(na, sa), (nb, sb)]) = stability_limit(th) {
+        if let Some([(na, sa), (nb, sb)]) = read::stability_limit(th) {
             // The branch through (n = 0, s = 1): the root of smaller |n|.
             let s_lim = if na.abs() < nb.abs() { sa } else { sb };
             max_dev = mx(max_dev, (s_lim - 1.0).abs());
@@ -871,7 +954,7 @@ fn stability_circle() -> Claim {
     // Stable walking states below the circle, beyond the first root (all states stable there).
     let mut below_stable_to = root1;
     for th in grid(root1, 23.5, 200) {
-        if minimum_on_e(th).1 < 1.0 {
+        if read::minimum_on_e(th).1 < 1.0 {
             below_stable_to = th;
         }
     }
@@ -1196,9 +1279,26 @@ fn stability_from_spin() -> Claim {
 }
 
 fn fall_turns_toward_lean() -> Claim {
+    fall_turns_check(HOOP_SPIN)
+}
+
+/// [`fall_turns_toward_lean`] with the wheel's moment about its axle `spin` mu1 R^2
+/// ([`HOOP_SPIN`] for the hoop wheel, whose other moments it keeps).
+fn fall_turns_check(spin: f64) -> Claim {
     let (mut turn_ok, mut right_ok, mut cases) = (true, true, 0);
     for base in points(false).iter().take(16) {
-        let Some(u) = unicycle_at(base, 0.0) else { continue };
+        let rider = Rider {
+            mass: base["mu"],
+            height: base["z"],
+            a: base["A"],
+            b: base["B"],
+            c: base["C"],
+            l: 0.0,
+        };
+        let (r, mu1) = (base["R"], base["mu1"]);
+        let m = mu1 * r * r;
+        let wheel = Wheel { mass: mu1, a1: 1.5 * m, b1: spin * m, c1: 0.5 * m };
+        let Ok(u) = Unicycle::new(r, base["g"], rider, wheel) else { continue };
         let s = 2.0 * u.rate_unit();
         for p in [0.05, -0.05] {
             // Upright, falling toward the side of p.
@@ -1306,7 +1406,7 @@ fn three_accelerations() -> Claim {
         "unicycle-three-accelerations",
         "37",
         "The first acceleration, of the fall p', is proportional to gravity alone; the second, W, to s; the third, the righting one, to s²: when s is large enough the righting couple wins over the fall, which is due to gravity alone.",
-        "the generated linearised equations of n° 19's (2) without stick moments (stick_dp, stick_dn; R = 0.5 m, g = 9.81, s = 2 sqrt(g/R)) at s and 2s: the fall acceleration at θ = 0.01 rad at rest, the turning acceleration n' for a fall rate p = 0.1 rad/s upright, and the righting part of p' for the turn n = -2sθ that the fall produces (n° 19 (3)). Holds if doubling s multiplies them by 1, 2 and 4 within 1e-12",
+        "the generated linearised equations of n° 19's (2) without stick moments (stick_dp, stick_dn; R = 0.5 m, g = 9.81, s = 2 sqrt(g/R)) at s and 2s: the fall acceleration at θ = 0.01 rad at rest, the turning acceleration n' for a fall rate p = 0.1 rad/s upright, and the righting part of p' for the turn n = -2sθ that the fall produces (n° 19 (3)). Holds if doubling s multiplies them by 1, 2 and 4 within 1e-12. Holds by construction because the ratios are the degrees of the three terms in the rates (none, p s, s n with n = -2 s θ): every term of the generated equations is a product of rates and a coefficient of θ alone, so no constant of the program can move the ratios, only the degrees, which a re-derivation would change",
         &[
             ("fall acceleration ratio (2s / s)", ratios[0]),
             ("turning acceleration ratio (2s / s)", ratios[1]),
@@ -1455,8 +1555,20 @@ fn light_turning_radius() -> Claim {
     )
 }
 
+/// The circumference (m) of the cylinder rider of n° 36 whose moments the checks of n° 39 read:
+/// the memoir's 1 m.
+const RIDER_CIRCUMFERENCE: f64 = 1.0;
+
+/// The words stating the fat cylinder rider under which the checks of n° 39 must fail.
+const FAT_RIDER: &str = "the cylinder rider's circumference 3 m instead of 1 m (radius 0.48 m instead of 0.16 m; 60 kg, centre at 1.25 m and lengths 1.0-1.8 m kept): its moment C about its axis grows ninefold";
+
 fn e_larger_than_c() -> Claim {
-    let (mu, r) = (60.0, 1.0 / (2.0 * PI));
+    e_larger_than_c_for(RIDER_CIRCUMFERENCE)
+}
+
+/// [`e_larger_than_c`] for a cylinder rider of circumference `circumference` (m).
+fn e_larger_than_c_for(circumference: f64) -> Claim {
+    let (mu, r) = (60.0, circumference / (2.0 * PI));
     let h = 1.25;
     let mut ratios = Vec::new();
     for len in grid(1.0, 1.8, 9) {
@@ -1485,7 +1597,12 @@ fn e_larger_than_c() -> Claim {
 
 /// n° 39: E = 0 is acceptable in (E) (beside μh²) but not in (S) (beside C).
 fn e_zero_not_in_s() -> Claim {
-    let (mu, r, h) = (60.0, 1.0 / (2.0 * PI), 1.25);
+    e_zero_not_in_s_for(RIDER_CIRCUMFERENCE)
+}
+
+/// [`e_zero_not_in_s`] for a cylinder rider of circumference `circumference` (m).
+fn e_zero_not_in_s_for(circumference: f64) -> Claim {
+    let (mu, r, h) = (60.0, circumference / (2.0 * PI), 1.25);
     let (mut max_e_share, mut min_e_share, mut min_factor) = (0.0f64, f64::INFINITY, f64::INFINITY);
     for len in grid(1.0, 1.8, 9) {
         let (_, b, c) = cylinder(mu, r, len, h);
@@ -1569,7 +1686,7 @@ fn threshold_independent() -> Claim {
 fn bracket_positive() -> Claim {
     let mut smallest = f64::INFINITY;
     for th in grid(0.0, 89.5, 180) {
-        let (_, b, _) = trinomial(th);
+        let (_, b, _) = read::trinomial(th);
         smallest = smallest.min(-b * th.to_radians().cos());
     }
     Claim::new(
@@ -1642,7 +1759,7 @@ fn curve_ends() -> Claim {
     let mut ratios = Vec::new();
     let mut inner = Vec::new();
     for th in [0.5, 1.0, 2.0] {
-        if let Some([(na, sa), (nb, sb)]) = stability_limit(th) {
+        if let Some([(na, sa), (nb, sb)]) = read::stability_limit(th) {
             let (outer, inn) = if na.abs() < nb.abs() { (sa, sb) } else { (sb, sa) };
             ratios.push((outer - 1.0) / th.to_radians().powi(2));
             inner.push(inn);
@@ -1977,6 +2094,13 @@ const SKID_Z: Perturbation = scaled("skid", "z", 1.0 + 1e-2);
 const SKID_FULL_DP: Perturbation = scaled("skid_full", "dp", 1.0 - 1e-2);
 /// The rider's height z in the generated normalised (E) of n° 32 scaled by 1 + 1e-2.
 const E32_Z: Perturbation = scaled("equilibrium_n32", "z", 1.0 + 1e-2);
+/// The rider's height z in the generated trinomial S(n^2) of n° 41 scaled by 1.8 (h/R from 2.5
+/// to 4.5 in that output only).
+const TRINOMIAL_Z: Perturbation = scaled("trinomial_n41", "z", 1.8);
+/// The rolling rate s in the generated normalised (E) of n° 32 negated: the steady states,
+/// and the limit of stability drawn on them, on the side s < 0 (the branch of (S) through
+/// s = -1 instead of s = 1).
+const E32_S_FLIPPED: Perturbation = scaled("equilibrium_n32", "s", -1.0);
 /// The rider's height z in the generated normalised D of n° 32 scaled by 1 + 1e-2.
 const SKID32_Z: Perturbation = scaled("skid_n32", "z", 1.0 + 1e-2);
 /// The rider's product of inertia L in the generated rider's share of the p equation (n° 33)
@@ -2006,7 +2130,13 @@ const CHAR78_C1_L_FLIPPED: Perturbation = scaled("char78_c1", "L", -1.0);
 /// The memoir's claims of the unicycle, with the falsification of those that a perturbation
 /// of the generated `unicycle` program breaks ([`crate::perturb::falsify`]).
 pub fn claims() -> Vec<Claim> {
-    let table: [crate::perturb::Row; 15] = [
+    let table: [crate::perturb::Row; 17] = [
+        (
+            &TRINOMIAL_Z,
+            || vec![bracket_positive(), stability_circle()],
+            &["unicycle-bracket-positive", "unicycle-stability-circle"],
+        ),
+        (&E32_S_FLIPPED, || vec![curve_ends()], &["unicycle-s-curve-ends"]),
         (&S40_SCALED_1E2, || vec![stable_between_roots()], &["unicycle-stable-between-roots"]),
         (&S39_Z, || vec![light_only_turning()], &["unicycle-light-stable-only-turning"]),
         (&S39_N_FLIPPED, || vec![light_turning_radius()], &["unicycle-light-turning-radius"]),
@@ -2025,8 +2155,12 @@ pub fn claims() -> Vec<Claim> {
         ),
         (
             &E32_Z,
-            || vec![regions(), light_root_n1()],
-            &["unicycle-walking-pivoting-regions", "unicycle-light-stable-root-n1"],
+            || vec![regions(), light_root_n1(), separation_curve()],
+            &[
+                "unicycle-walking-pivoting-regions",
+                "unicycle-light-stable-root-n1",
+                "unicycle-separation-curve",
+            ],
         ),
         (&SKID32_Z, || vec![skid_is_tan_on_e()], &["unicycle-skid-is-tan-on-e"]),
         (&RIDER_P_L, || vec![l_terms_vanish()], &["unicycle-l-terms-vanish-at-steady"]),
@@ -2047,12 +2181,30 @@ pub fn claims() -> Vec<Claim> {
         .into_iter()
         .map(|c| match c.id.as_str() {
             "unicycle-light-wheel-unstable" => c.falsified_by(FLAT, light_wheel_check(FLAT_SPIN)),
+            "unicycle-fall-turns-toward-lean" => c.falsified_by(
+                "the wheel's moment about its axle B1 = mu1 R^2 instead of the hoop's 2 mu1 R^2 (its spin carrying no moment of momentum beyond its rolling translation's), the 16 seeded unicycles otherwise",
+                fall_turns_check(FLAT_SPIN),
+            ),
             "unicycle-stability-decreases-with-wheel" => {
                 c.falsified_by(FLAT, stability_decreases_check(FLAT_SPIN))
             }
             "unicycle-straight-running-oscillates" => {
                 c.falsified_by(FLAT, straight_oscillates_check(FLAT_SPIN))
             }
+            "unicycle-e-larger-than-c" => c.falsified_by(FAT_RIDER, e_larger_than_c_for(3.0)),
+            "unicycle-wheel-small-against-rider" => c.falsified_by(
+                "the hoop wheel of 50 kg instead of 5 (R = 0.5 m kept, A1 = 3/2 mu1 R^2 tenfold)",
+                wheel_small_for(50.0),
+            ),
+            "unicycle-slope-sign" => c.falsified_by(
+                "the weight reversed, g = -9.81 m/s^2 instead of 9.81 in the generalised force of gravity",
+                slope_moment_for(-9.81, false).1,
+            ),
+            "unicycle-slope-moment" => c.falsified_by(
+                "the cycle advanced horizontally by R ds and raised onto the slope (a rise R ds tan(i), n° 25's reading) instead of rolling R ds along it",
+                slope_moment_for(9.81, true).0,
+            ),
+            "unicycle-e-zero-not-in-s" => c.falsified_by(FAT_RIDER, e_zero_not_in_s_for(3.0)),
             "unicycle-pedal-paradox" => c.falsified_by(
                 "the cranks twice as long (0.1 R to 1.9 R: the lowest pedal below the ground line for cranks beyond R)",
                 pedal_paradox_check(2.0),

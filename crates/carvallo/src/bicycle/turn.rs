@@ -241,12 +241,20 @@ impl LockedSteer {
         LockedSteer::build(k, Some(ibyy))
     }
 
+    /// The same model with the constants `k` taken as they are, without
+    /// [`Constants::validate`]: a perturbed bicycle for the report's falsification checks
+    /// (issue 38), such as the weight reversed (`g` negative, which `validate` refuses), built
+    /// as [`LockedSteer::new`] builds it. No claim of the memoir is judged on such a model; it
+    /// shows that a check can fail.
+    pub fn new_unchecked(k: Constants) -> LockedSteer {
+        LockedSteer::assemble(k, None)
+    }
+
     fn build(k: Constants, ibyy: Option<f64>) -> Result<LockedSteer, ParameterError> {
         k.validate()?;
-        let named = k.whipple_values();
-        let get = |name: &str| named.iter().find(|(n, _)| *n == name).map_or(0.0, |(_, v)| *v);
-        let mut values: [f64; 26] = std::array::from_fn(|i| get(PARAM_NAMES[i]));
         if let Some(ibyy) = ibyy {
+            let named = k.whipple_values();
+            let get = |name: &str| named.iter().find(|(n, _)| *n == name).map_or(0.0, |(_, v)| *v);
             let bound = get("IBxx") + get("IBzz");
             ParameterError::check_positive("ibyy", ibyy)?;
             if ibyy > bound {
@@ -256,12 +264,21 @@ impl LockedSteer {
                     reason: "exceeds the sum of the two other central moments",
                 });
             }
-            if let Some(i) = PARAM_NAMES.iter().position(|n| *n == "IByy") {
-                values[i] = ibyy;
-            }
+        }
+        Ok(LockedSteer::assemble(k, ibyy))
+    }
+
+    /// The model of the constants `k` (the frame's central pitch moment `ibyy` when given),
+    /// without checks.
+    fn assemble(k: Constants, ibyy: Option<f64>) -> LockedSteer {
+        let named = k.whipple_values();
+        let get = |name: &str| named.iter().find(|(n, _)| *n == name).map_or(0.0, |(_, v)| *v);
+        let mut values: [f64; 26] = std::array::from_fn(|i| get(PARAM_NAMES[i]));
+        if let (Some(ibyy), Some(i)) = (ibyy, PARAM_NAMES.iter().position(|n| *n == "IByy")) {
+            values[i] = ibyy;
         }
         let bike = WhippleNonlinear::new(WhippleParams::from_values_unchecked(values));
-        Ok(LockedSteer { k, bike })
+        LockedSteer { k, bike }
     }
 
     /// The constants.
