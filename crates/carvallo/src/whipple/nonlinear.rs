@@ -1,7 +1,8 @@
 //! The nonlinear Carvallo–Whipple bicycle: accelerations, total energy, ground tracks and a
 //! simulation, from the evaluators generated over `generated/whipple_nonlinear.ir`
-//! (derived by Kane's method in `codegen/src/derive/whipple/nonlinear.rs`, the 25 benchmark
-//! parameters symbolic).
+//! (derived by the mechanics engine, Kane's method, from the bicycle's description in
+//! `codegen/src/derive/whipple/description.rs`, the 25 benchmark parameters symbolic; see
+//! `codegen/src/derive/whipple/nonlinear.rs`).
 //!
 //! Coordinates (benchmark axes, x forward, y right, z down): the rear contact $(x, y)$, yaw ψ,
 //! lean φ, rear frame pitch θ, rear wheel rotation $\theta_R$ relative to the rear frame, steer

@@ -180,12 +180,13 @@ fn a_stiff_lean_joint_is_the_locked_whipple_bicycle() {
     }
 }
 
-/// The nonlinear simulation with the lean joint locked against the hand-derived nonlinear
-/// Whipple bicycle (`generated/whipple_nonlinear.ir`, [`StateRate`]) with the torso in the rear
+/// The nonlinear simulation with the lean joint locked against the nonlinear Whipple bicycle
+/// (`generated/whipple_nonlinear.ir`, [`StateRate`]: another description, in the benchmark's
+/// coordinates and parameters, equal to the former hand derivation) with the torso in the rear
 /// frame ([`LeanRider::locked`]), both integrated by DOP853 at tolerances of 1e-12 from the same
 /// state (5 m/s, a roll rate of 0.5 rad/s) for 3 s: roll, steer, their rates and the rear
-/// wheel's rate agree along the whole run. Moore's and the hand derivation's coordinates are
-/// the same angles (q4 = φ, q7 = δ, u6 = θ̇_R, q5 = λ + θ).
+/// wheel's rate agree along the whole run. Moore's and the benchmark description's coordinates
+/// are the same angles (q4 = φ, q7 = δ, u6 = θ̇_R, q5 = λ + θ).
 #[test]
 fn the_locked_simulation_is_the_whipple_bicycles() {
     use carvallo::numerics::integrate::{integrate, Grid, Integration, Method, Point};
