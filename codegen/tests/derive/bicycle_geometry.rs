@@ -17,7 +17,7 @@ fn bicycle_geometry_derivation_body() {
     // The emitted program at the memoir's old bicycle (n° 52) in the normal position: both
     // residuals vanish at sigma = sigma0, mu = sigma0, and the first-order sigma1 is 0.
     let s0 = 25f64.to_radians();
-    let at = common::outputs_at(&d, &[0.38, 1.10, 0.08, s0], &[0.0, 0.0, s0, s0]);
+    let at = common::outputs_at(d, &[0.38, 1.10, 0.08, s0], &[0.0, 0.0, s0, s0]);
     for name in
         ["contact_height", "lowest_point", "sigma1_first", "memoir_sigma1_first", "contact_y"]
     {

@@ -24,7 +24,7 @@ fn bicycle_kinematics_derivation_body() {
     // M is at x = l, y = 0, alpha = beta = 0, so (I) gives no pitching or turning, the steady
     // turning rate is 0 and the front wheel rolls as the rear one (sigma1' = s).
     let s0 = 25f64.to_radians();
-    let at = common::outputs_at(&d, &[0.38, 1.10, 0.08, s0], &[0.0, 0.0, s0, s0]);
+    let at = common::outputs_at(d, &[0.38, 1.10, 0.08, s0], &[0.0, 0.0, s0, s0]);
     for name in ["d_eta_d_theta", "d_eta_d_gamma", "d_nu_d_theta", "steady_n", "eta_second"] {
         assert!(at(name).abs() < 1e-15, "{name} = {} upright", at(name));
     }

@@ -27,7 +27,7 @@ fn straight_running_derivation_body() {
         "bar_front_wheel_gamma2_as_printed",
     ];
     common::assert_checks(&d.checks, &findings);
-    let prog = emit_program(&d).expect("emission");
+    let prog = emit_program(d).expect("emission");
     // n° 117: R, l, c_1, eta = 25°, e, h, mu, mu1, A + 2 A1, C, L; g = 9.81.
     let params =
         [0.38, 1.10, 0.08, 25f64.to_radians(), 0.20, 1.0, 70.0, 5.0, 100.0, 4.0, 14.0, 9.81];

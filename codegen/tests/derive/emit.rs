@@ -154,7 +154,7 @@ fn hoop_formulas_match_symbolica_body() {
     ]
     .into_iter()
     .collect();
-    compare_with_symbolica(&d, &ranges, 100, 0x4009);
+    compare_with_symbolica(d, &ranges, 100, 0x4009);
 }
 
 /// Precision of the high-precision comparison, in bits.
@@ -172,7 +172,7 @@ fn hoop_formulas_match_symbolica_in_high_precision() {
 
 fn hoop_formulas_match_symbolica_in_high_precision_body() {
     let d = crate::derived("hoop");
-    let program = emit_program(&d).unwrap();
+    let program = emit_program(d).unwrap();
     let mut rng = ChaCha8Rng::seed_from_u64(0x4010);
     for _ in 0..20 {
         let mut values = BTreeMap::new();

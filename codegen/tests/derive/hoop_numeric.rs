@@ -65,29 +65,29 @@ fn derived_formulas_match_hand_values() {
         // n° 8, system (1).
         close(
             "pqr_dp",
-            eval(&d, "pqr_dp", x),
+            eval(d, "pqr_dp", x),
             2.0 * gr * st / 3.0 + 4.0 * x.q * x.rr / 3.0 - x.rr * x.rr * tt / 3.0,
         );
-        close("pqr_dq", eval(&d, "pqr_dq", x), -x.p * x.rr / 2.0);
-        close("pqr_dr", eval(&d, "pqr_dr", x), x.p * x.rr * tt - 2.0 * x.p * x.q);
+        close("pqr_dq", eval(d, "pqr_dq", x), -x.p * x.rr / 2.0);
+        close("pqr_dr", eval(d, "pqr_dr", x), x.p * x.rr * tt - 2.0 * x.p * x.q);
         // n° 7, system (2): ½ n' + ps/cos θ = 0, 2 s' − 4ps tan θ + 3pn cos θ = 0.
-        close("pns_dn", eval(&d, "pns_dn", x), -2.0 * x.p * x.s / ct);
-        close("pns_ds", eval(&d, "pns_ds", x), 2.0 * x.p * x.s * tt - 1.5 * x.p * x.n * ct);
+        close("pns_dn", eval(d, "pns_dn", x), -2.0 * x.p * x.s / ct);
+        close("pns_ds", eval(d, "pns_ds", x), 2.0 * x.p * x.s * tt - 1.5 * x.p * x.n * ct);
         // Energy: μR²(¾p² + q² + ¼r²) + μgR cos θ with q = s + n sin θ, r = n cos θ.
         let (q, r) = (x.s + x.n * st, x.n * ct);
         let energy =
             x.mu * x.r * x.r * (0.75 * x.p * x.p + q * q + 0.25 * r * r) + x.mu * x.g * x.r * ct;
-        close("energy", eval(&d, "energy", x), energy);
+        close("energy", eval(d, "energy", x), energy);
         // n° 9 (S) and n° 10 D.
         let stab =
             -2.0 * gr * ct / 3.0 + x.n * x.n + 8.0 * x.s * x.n * st / 3.0 + 8.0 * x.s * x.s / 3.0;
-        close("stability", eval(&d, "stability", x), stab);
-        close("skid", eval(&d, "skid", x), -(x.n * x.n * st + x.s * x.n) / gr);
+        close("stability", eval(d, "stability", x), stab);
+        close("skid", eval(d, "skid", x), -(x.n * x.n * st + x.s * x.n) / gr);
         // n° 12 (E).
         let e12 = x.n * x.n + 4.0 * x.s * x.n / (3.0 * st) + 2.0 / (3.0 * ct);
-        close("equilibrium_n12", eval(&d, "equilibrium_n12", x), e12);
+        close("equilibrium_n12", eval(d, "equilibrium_n12", x), e12);
         // Inertia (n° 4).
-        close("inertia_b", eval(&d, "inertia_b", x), 2.0 * x.mu * x.r * x.r);
+        close("inertia_b", eval(d, "inertia_b", x), 2.0 * x.mu * x.r * x.r);
     }
 }
 
@@ -98,7 +98,7 @@ fn routh_threshold_numerically() {
     let s_crit = (g / (4.0 * r)).sqrt();
     for (s, positive) in [(s_crit * 1.001, true), (s_crit * 0.999, false)] {
         let x = Point { r, g, mu: 1.0, theta: 0.0, p: 0.0, q: 0.0, rr: 0.0, n: 0.0, s };
-        let v = eval(&d, "stability", &x);
+        let v = eval(d, "stability", &x);
         assert_eq!(v > 0.0, positive, "stability at s = {s} is {v}");
     }
 }

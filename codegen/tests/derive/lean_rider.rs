@@ -67,6 +67,7 @@ fn sin_cos(x: &BigFloat) -> (BigFloat, BigFloat) {
 }
 
 /// Solves `m x = f` (square, by Gaussian elimination with partial pivoting).
+#[allow(clippy::needless_range_loop)]
 fn solve(mut m: Vec<Vec<BigFloat>>, mut f: Vec<BigFloat>) -> Vec<BigFloat> {
     let n = f.len();
     for k in 0..n {

@@ -67,7 +67,7 @@ fn whipple_linearisation_body() {
         }
         assert!(c.holds, "check {} fails: {}", c.id, c.detail);
     }
-    let prog = emit_program(&d).expect("emission");
+    let prog = emit_program(d).expect("emission");
     let text = anchors();
     let params: Vec<f64> = whipple::PARAMS.iter().map(|k| scalar(&text, k)).collect();
     let names: Vec<&str> = prog.outputs.iter().map(|o| o.name.as_str()).collect();
@@ -109,7 +109,7 @@ fn whipple_linearisation_body() {
         // Transfer numerators: N P = det(P) I with N the emitted adjugate (entry by entry).
         let sig = ["roll", "steer"];
         let n = |i: usize, j: usize| -> f64 {
-            (0..3).map(|k| at(&format!("tf_{}_{}_{k}", sig[i], sig[j])) * s.powi(k as i32)).sum()
+            (0..3).map(|k| at(&format!("tf_{}_{}_{k}", sig[i], sig[j])) * s.powi(k)).sum()
         };
         for i in 0..2 {
             for j in 0..2 {
@@ -131,7 +131,7 @@ fn whipple_linearisation_body() {
         let mut scale_cl = 0.0;
         for kk in 0..5 {
             for j in 0..=(4 - kk) {
-                let term = atc(&format!("cl_a{kk}_{j}")) * v.powi(j as i32) * s.powi(kk as i32);
+                let term = atc(&format!("cl_a{kk}_{j}")) * v.powi(j) * s.powi(kk);
                 poly_cl += term;
                 scale_cl += term.abs();
             }

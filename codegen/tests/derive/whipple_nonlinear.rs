@@ -18,7 +18,7 @@ fn basu_mandal_table_one_body() {
     for c in &d.checks {
         assert!(c.holds, "check {} fails: {}", c.id, c.detail);
     }
-    let prog = emit_program(&d).expect("emission");
+    let prog = emit_program(d).expect("emission");
     let names: Vec<&str> = prog.outputs.iter().map(|o| o.name.as_str()).collect();
     let pi = std::f64::consts::PI;
     // Basu-Mandal's state (Table 1): lean psi, pitch phi, steer psif, rates.

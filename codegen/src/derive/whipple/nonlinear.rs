@@ -51,12 +51,12 @@ pub const DEPENDENT: [&str; 3] = ["thetad", "psid", "thetaFd"];
 pub fn runtime_names() -> Vec<(String, String, String)> {
     let mut out = Vec::new();
     let mut alias = |name: String, engine: String, what: String| out.push((name, engine, what));
-    for i in 0..3 {
-        for j in i..3 {
+    for (i, ui) in INDEPENDENT.iter().enumerate() {
+        for (j, uj) in INDEPENDENT.iter().enumerate().skip(i) {
             alias(
                 format!("m3_{}{}", i + 1, j + 1),
-                format!("M_{}_{}", INDEPENDENT[i], INDEPENDENT[j]),
-                format!("mass matrix entry ({}, {}) of M3 u' = f3", INDEPENDENT[i], INDEPENDENT[j]),
+                format!("M_{ui}_{uj}"),
+                format!("mass matrix entry ({ui}, {uj}) of M3 u' = f3"),
             );
         }
     }

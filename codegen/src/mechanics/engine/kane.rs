@@ -665,7 +665,7 @@ pub fn derive(m: &Model, st: &mut Store) -> Result<Kane, DescriptionError> {
             &format!(
                 "acceleration of assembly {x}'s mass centre at zero independent accelerations"
             ),
-            &(&add(&centre.acceleration, &velocity_part(&centre.velocity))),
+            &add(&centre.acceleration, &velocity_part(&centre.velocity)),
         );
         let local = kin.local[&t.frame].clone();
         let what = format!("partial angular velocity of {}", t.frame);
@@ -682,7 +682,7 @@ pub fn derive(m: &Model, st: &mut Store) -> Result<Kane, DescriptionError> {
                 "angular acceleration of {} at zero independent accelerations (its own components)",
                 t.frame
             ),
-            &(&add(&local.alpha, &velocity_part(&local.omega))),
+            &add(&local.alpha, &velocity_part(&local.omega)),
         );
         let mut torque = add(&mv(&inertia, &alpha0), &cross(&omega, &mv(&inertia, &omega)));
         for sp in &t.spins {
