@@ -35,6 +35,36 @@ fn rel(a: &astro_float::BigFloat, b: &astro_float::BigFloat) -> f64 {
     diff / carvallo_ir::hp::to_f64(a).abs().max(1.0)
 }
 
+/// A seeded design and state: the benchmark's parameters each within ±20 %, the lean and steer
+/// uniform in ±0.6 and ±0.8 rad, the lean and steer rates in ±2 rad/s and the rear wheel's in
+/// [-20, -5] rad/s.
+fn seeded_case(rng: &mut impl Rng) -> (Vec<f64>, f64, f64, [f64; 3]) {
+    let params = BENCHMARK.iter().map(|x| x * (1.0 + rng.gen_range(-0.2..0.2))).collect();
+    let (phi, delta) = (rng.gen_range(-0.6..0.6), rng.gen_range(-0.8..0.8));
+    let rates = [rng.gen_range(-2.0..2.0), rng.gen_range(-2.0..2.0), rng.gen_range(-20.0..-5.0)];
+    (params, phi, delta, rates)
+}
+
+/// The pitch on the contact constraint at lean and steer `angles`, by 30 Newton steps on the
+/// program's output `height` and its pitch derivative `<height>_dtheta`.
+fn pitch_on_constraint(
+    p: &Program,
+    params: &[f64],
+    [phi, delta]: [f64; 2],
+    rates: [f64; 3],
+    height: &str,
+) -> f64 {
+    let slot = |n: &str| p.outputs.iter().position(|o| o.name == n).expect("an output");
+    let (h, dh) = (slot(height), slot(&format!("{height}_dtheta")));
+    let mut theta = 0.0;
+    for _ in 0..30 {
+        let v = p.eval_f64(params, &[phi, theta, delta, rates[0], rates[1], rates[2]]);
+        let v = v.expect("evaluates");
+        theta -= v[h] / v[dh];
+    }
+    theta
+}
+
 /// The hand derivation's program, frozen (module docs).
 fn hand_program() -> Program {
     let text = std::fs::read_to_string(
@@ -136,19 +166,8 @@ fn engine_whipple_nonlinear_equals_the_frozen_hand_program() {
     let mut err: Vec<[Vec<f64>; 2]> = vec![[Vec::new(), Vec::new()]; shared.len()];
     let mut exact: Vec<Vec<f64>> = vec![Vec::new(); shared.len()];
     for k in 0..300 {
-        let params: Vec<f64> =
-            BENCHMARK.iter().map(|x| x * (1.0 + rng.gen_range(-0.2..0.2))).collect();
-        let (phi, delta) = (rng.gen_range(-0.6..0.6), rng.gen_range(-0.8..0.8));
-        let rates =
-            [rng.gen_range(-2.0..2.0), rng.gen_range(-2.0..2.0), rng.gen_range(-20.0..-5.0)];
-        let mut theta = 0.0;
-        for _ in 0..30 {
-            let v = hand
-                .eval_f64(&params, &[phi, theta, delta, rates[0], rates[1], rates[2]])
-                .expect("evaluates");
-            let at = |n: &str| v[hand.outputs.iter().position(|o| o.name == n).unwrap()];
-            theta -= at("contact_height") / at("contact_height_dtheta");
-        }
+        let (params, phi, delta, rates) = seeded_case(&mut rng);
+        let mut theta = pitch_on_constraint(&hand, &params, [phi, delta], rates, "contact_height");
         // Half the points on the constraint (where the runtime evaluates), half 0.01 rad off
         // it (so that the contact height is not all rounding).
         if k % 2 == 1 {
@@ -234,20 +253,10 @@ fn engine_whipple_equals_the_hand_derivation_at_256_bits() {
         let mut worst = (0.0f64, String::new());
         let mut each = std::collections::BTreeMap::<String, f64>::new();
         for _ in 0..40 {
-            let params: Vec<f64> =
-                BENCHMARK.iter().map(|x| x * (1.0 + rng.gen_range(-0.2..0.2))).collect();
-            let (phi, delta) = (rng.gen_range(-0.6..0.6), rng.gen_range(-0.8..0.8));
-            let rates =
-                [rng.gen_range(-2.0..2.0), rng.gen_range(-2.0..2.0), rng.gen_range(-20.0..-5.0)];
+            let (params, phi, delta, rates) = seeded_case(&mut rng);
             // The pitch on the constraint, by Newton on the engine's own height.
-            let mut theta = 0.0;
-            for _ in 0..30 {
-                let v = kane_prog
-                    .eval_f64(&params, &[phi, theta, delta, rates[0], rates[1], rates[2]])
-                    .expect("evaluates");
-                let at = |n: &str| v[kane_prog.outputs.iter().position(|o| o.name == n).unwrap()];
-                theta -= at("F_contact_height") / at("F_contact_height_dtheta");
-            }
+            let theta =
+                pitch_on_constraint(&kane_prog, &params, [phi, delta], rates, "F_contact_height");
             let inputs = [phi, theta, delta, rates[0], rates[1], rates[2]];
             let e =
                 carvallo_ir::hp::eval(&prog, &params, &inputs, 256).expect("engine at 256 bits");

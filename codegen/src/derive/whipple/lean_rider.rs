@@ -25,7 +25,7 @@
 use anyhow::{anyhow, Result};
 use symbolica::atom::Atom;
 
-use crate::{Check, Derivation};
+use crate::Derivation;
 
 use crate::mechanics::engine::{
     self, sym, Angle, Axis, Body, Coordinate, Frame, Kind, Model, Point, Rotation, Torque, Wheel,
@@ -195,16 +195,7 @@ pub fn lean_rider() -> Model {
 /// (this layer may not emit a program to evaluate them).
 pub fn derive() -> Result<Derivation> {
     let model = lean_rider();
-    let (d, kane_len, redundant) =
-        engine::derivation(&model, file!()).map_err(|e| anyhow!("the leaning rider: {e}"))?;
-    let checks = vec![Check {
-        section: "34".into(),
-        id: "redundant_rows".into(),
-        statement: "the rolling constraints' only redundant row is the rear contact's vertical one"
-            .into(),
-        holds: redundant.len() == 1 && redundant[0].starts_with("D vertical: "),
-        detail: redundant.join("; "),
-    }];
-    let formulas = d.formulas[..kane_len].to_vec();
-    Ok(Derivation { formulas, checks, nominal: crate::derive::nominal::values("lean_rider"), ..d })
+    let d =
+        engine::kane_derivation(&model, file!()).map_err(|e| anyhow!("the leaning rider: {e}"))?;
+    Ok(Derivation { nominal: crate::derive::nominal::values("lean_rider"), ..d })
 }

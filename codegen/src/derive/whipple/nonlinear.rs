@@ -32,7 +32,7 @@ use symbolica::atom::Atom;
 use super::description;
 use crate::cas::var;
 use crate::mechanics::engine;
-use crate::{Check, Derivation, Formula};
+use crate::{Derivation, Formula};
 
 /// The parameters, in order: the 2007 benchmark's 25 and the steer axis tilt.
 pub const PARAMS: [&str; 26] = crate::derive::whipple::PARAMS;
@@ -102,9 +102,9 @@ const ZERO: [&str; 1] = ["A_thetad_thetaRd"];
 /// Derives the model's formulas and checks.
 pub fn derive() -> Result<Derivation> {
     let model = description::whipple();
-    let (d, kane_len, redundant) =
-        engine::derivation(&model, file!()).map_err(|e| anyhow!("the Whipple bicycle: {e}"))?;
-    let mut formulas = d.formulas[..kane_len].to_vec();
+    let d = engine::kane_derivation(&model, file!())
+        .map_err(|e| anyhow!("the Whipple bicycle: {e}"))?;
+    let mut formulas = d.formulas;
     let section = formulas.last().map(|f| f.section.clone()).unwrap_or_default();
     for (name, engine_name, what) in runtime_names() {
         let (expr, description) = if formulas.iter().any(|f| f.name == engine_name) {
@@ -118,18 +118,9 @@ pub fn derive() -> Result<Derivation> {
         };
         formulas.push(Formula { name, section: section.clone(), description, expr });
     }
-    let checks = vec![Check {
-        section: "34".into(),
-        id: "redundant_rows".into(),
-        statement: "the rolling constraints' only redundant row is the rear contact's vertical one"
-            .into(),
-        holds: redundant.len() == 1 && redundant[0].starts_with("R vertical: "),
-        detail: redundant.join("; "),
-    }];
     Ok(Derivation {
         model: "whipple_nonlinear".into(),
         formulas,
-        checks,
         nominal: crate::derive::nominal::values("whipple_nonlinear"),
         ..d
     })

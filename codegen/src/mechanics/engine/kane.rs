@@ -559,22 +559,29 @@ pub fn derive(m: &Model, st: &mut Store) -> Result<Kane, DescriptionError> {
     // ones in the body's frame's components (a wheel's: its carrier's, with its spin).
     // The partials of `v` for each independent speed, named `<name>_<speed>` and described as
     // "<what> for <speed><after>".
-    let named_partials = |st: &mut Store, name: &str, what: &str, after: &str, v: &V3| -> Vec<V3> {
-        (0..n)
-            .map(|i| {
-                st.name3(
-                    &format!("{name}_{}", independent[i]),
-                    &format!("{what} for {}{after}", independent[i]),
-                    &partial(v, i),
-                )
-            })
-            .collect()
-    };
+    // With `every`, each component is an output, also those too simple to name
+    // ([`Store::name3_all`]).
+    let named_partials =
+        |st: &mut Store, name: &str, what: &str, after: &str, v: &V3, every: bool| -> Vec<V3> {
+            (0..n)
+                .map(|i| {
+                    let name = format!("{name}_{}", independent[i]);
+                    let what = format!("{what} for {}{after}", independent[i]);
+                    if every {
+                        st.name3_all(&name, &what, &partial(v, i))
+                    } else {
+                        st.name3(&name, &what, &partial(v, i))
+                    }
+                })
+                .collect()
+        };
     let mut partials = Vec::new();
     for b in &bodies {
         let x = &b.name;
         let what = format!("partial velocity of {x}'s mass centre");
-        let vt = named_partials(st, &format!("vt_{x}"), &what, "", &b.centre.velocity);
+        // Every component of a body's partial velocities is an output: its velocity and
+        // angular velocity for any speeds.
+        let vt = named_partials(st, &format!("vt_{x}"), &what, "", &b.centre.velocity, true);
         // Its acceleration at zero independent accelerations: with the partial velocities, the
         // mass centre's acceleration for any independent accelerations (a wheel centre's is
         // what Basu-Mandal et al. tabulate).
@@ -586,20 +593,7 @@ pub fn derive(m: &Model, st: &mut Store) -> Result<Kane, DescriptionError> {
         let omega = body_omega(&kin, m, b);
         let (what, after) =
             (format!("partial angular velocity of {x}"), format!(" ({}'s components)", b.frame));
-        let wt = named_partials(st, &format!("wt_{x}"), &what, &after, &omega);
-        // Every component of the partial velocities is an output (the body's velocity and
-        // angular velocity for any speeds), also those too simple to name.
-        for (prefix, vectors) in [("vt", &vt), ("wt", &wt)] {
-            for (i, v) in vectors.iter().enumerate() {
-                for (k, c) in ["x", "y", "z"].iter().enumerate() {
-                    let full = format!("{prefix}_{x}_{}_{c}", independent[i]);
-                    if !st.is_named(&st.full(&full)) {
-                        let what = format!("{prefix}_{x} for {}, {c} component", independent[i]);
-                        let _ = st.put(&full, &what, v[k].clone());
-                    }
-                }
-            }
-        }
+        let wt = named_partials(st, &format!("wt_{x}"), &what, &after, &omega, true);
         partials.push((vt, wt));
     }
 
@@ -659,7 +653,7 @@ pub fn derive(m: &Model, st: &mut Store) -> Result<Kane, DescriptionError> {
         let rho = kin.up(st, &e, &t.frame, &format!("r_{x}"));
         let centre = kin.rigid(&kin.points[&t.from], &kin.frames[&t.frame], &rho);
         let what = format!("partial velocity of assembly {x}'s mass centre");
-        let vt = named_partials(st, &format!("vt_{x}"), &what, "", &centre.velocity);
+        let vt = named_partials(st, &format!("vt_{x}"), &what, "", &centre.velocity, false);
         let a0 = st.name3(
             &format!("a0_{x}"),
             &format!(
@@ -669,8 +663,14 @@ pub fn derive(m: &Model, st: &mut Store) -> Result<Kane, DescriptionError> {
         );
         let local = kin.local[&t.frame].clone();
         let what = format!("partial angular velocity of {}", t.frame);
-        let wt =
-            named_partials(st, &format!("wt_{x}"), &what, " (its own components)", &local.omega);
+        let wt = named_partials(
+            st,
+            &format!("wt_{x}"),
+            &what,
+            " (its own components)",
+            &local.omega,
+            false,
+        );
         let omega = st.name3(
             &format!("om_{x}"),
             &format!("angular velocity of {} (its own components)", t.frame),

@@ -482,6 +482,26 @@ pub fn sym(name: &str) -> Atom {
     var(name)
 }
 
+/// Kane's part of [`derivation`], the program a model generates (Carvallo's modified Lagrange
+/// equations are derived too, and checked against Kane's by the derivation tests), with one
+/// check: the rolling constraints' only redundant row is the vertical one of the wheel whose
+/// contact is the root point.
+pub fn kane_derivation(m: &Model, source: &str) -> Result<crate::Derivation, DescriptionError> {
+    let (d, kane_len, redundant) = derivation(m, source)?;
+    let root = m.wheels.iter().find(|w| w.at_root).map_or("", |w| w.name.as_str());
+    let check = crate::Check {
+        section: "34".into(),
+        id: "redundant_rows".into(),
+        statement: "the rolling constraints' only redundant row is the rear contact's vertical one"
+            .into(),
+        holds: redundant.len() == 1 && redundant[0].starts_with(&format!("{root} vertical: ")),
+        detail: redundant.join("; "),
+    };
+    let mut formulas = d.formulas;
+    formulas.truncate(kane_len);
+    Ok(crate::Derivation { formulas, checks: vec![check], ..d })
+}
+
 /// The equations of a description by both routes, as a [`crate::Derivation`]: every named
 /// quantity, the dependent speeds, the contact heights and their derivatives in the dependent
 /// coordinates (for Newton's method), Kane's `M_<ui>_<uj>` and `f_<ui>`, the energy, then the

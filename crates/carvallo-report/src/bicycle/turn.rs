@@ -653,16 +653,21 @@ fn x_log_derivative_claim(geo: &Geometry) -> crate::claims::Claim {
 fn claims_for(k: &Constants) -> Vec<crate::claims::Claim> {
     match LockedSteer::new(*k) {
         Ok(bike) => claims_for_model(&bike),
-        Err(err) => vec![crate::claims::Claim::new(
-            "bicycle-turn-grid",
-            "105",
-            "the claims of n° 101-105 across a grid of steady turns",
-            GRID_HOW,
-            &[],
-            policy::claim(false, Verdict::DerivationDiffers),
-            &format!("the computation failed: {err}"),
-        )],
+        Err(err) => vec![grid_failed(&err)],
     }
+}
+
+/// The claim that stands for the grid's claims when the grid cannot be computed.
+fn grid_failed(err: &dyn std::fmt::Display) -> crate::claims::Claim {
+    crate::claims::Claim::new(
+        "bicycle-turn-grid",
+        "105",
+        "the claims of n° 101-105 across a grid of steady turns",
+        GRID_HOW,
+        &[],
+        policy::claim(false, Verdict::DerivationDiffers),
+        &format!("the computation failed: {err}"),
+    )
 }
 
 /// The claims of [`claims`] on the model `bike` (its constants for the claims on them).
@@ -672,18 +677,7 @@ fn claims_for_model(bike: &LockedSteer) -> Vec<crate::claims::Claim> {
     let mut out = Vec::new();
     let grid = match claim_grid(bike) {
         Ok(g) => g,
-        Err(err) => {
-            out.push(Claim::new(
-                "bicycle-turn-grid",
-                "105",
-                "the claims of n° 101-105 across a grid of steady turns",
-                GRID_HOW,
-                &[],
-                policy::claim(false, Verdict::DerivationDiffers),
-                &format!("the computation failed: {err}"),
-            ));
-            return out;
-        }
+        Err(err) => return vec![grid_failed(&err)],
     };
     // Counted over the turns asked for: a turn with no steady state is one where the
     // statements fail.

@@ -146,6 +146,29 @@ fn rhs_dual_driven<const N: usize>(
     (rates, tau)
 }
 
+/// Asserts that the rates `value` and their Jacobian `jac` at state number `k` equal the dual
+/// numbers `want` (the rates within 1e-12 relative, the derivatives within 1e-12 of max|J|);
+/// returns the largest derivative difference in units of max|J|.
+fn equal_to_duals<const N: usize>(
+    k: usize,
+    value: &[f64; N],
+    jac: &[[f64; N]; N],
+    want: &[Dual<N>; N],
+) -> f64 {
+    let scale = jac.iter().flatten().fold(1.0f64, |m, v| m.max(v.abs()));
+    let mut worst: f64 = 0.0;
+    for i in 0..N {
+        let dv = (value[i] - want[i].value).abs() / want[i].value.abs().max(1.0);
+        assert!(dv <= 1e-12, "state {k}: rate {i} {} vs dual {}", value[i], want[i].value);
+        for (j, (got, dual)) in jac[i].iter().zip(want[i].grad).enumerate() {
+            let err = (got - dual).abs() / scale;
+            worst = worst.max(err);
+            assert!(err <= 1e-12, "state {k}: d rate {i} / d y {j} = {got} vs dual numbers {dual}");
+        }
+    }
+    worst
+}
+
 #[test]
 fn the_state_jacobian_equals_dual_numbers_of_a_second_right_hand_side() {
     let p = program();
@@ -159,19 +182,7 @@ fn the_state_jacobian_equals_dual_numbers_of_a_second_right_hand_side() {
         let value = rate.eval(&y).expect("rate");
         let yd: [Dual<LEN>; LEN] = std::array::from_fn(|i| Dual::variable(y[i], i));
         let want = rhs_dual(&p, yd);
-        let scale = jac.iter().flatten().fold(1.0f64, |m, v| m.max(v.abs()));
-        for i in 0..LEN {
-            let dv = (value[i] - want[i].value).abs() / want[i].value.abs().max(1.0);
-            assert!(dv <= 1e-12, "state {k}: rate {i} {} vs dual {}", value[i], want[i].value);
-            for (j, (got, dual)) in jac[i].iter().zip(want[i].grad).enumerate() {
-                let err = (got - dual).abs() / scale;
-                worst = worst.max(err);
-                assert!(
-                    err <= 1e-12,
-                    "state {k}: d rate {i} / d y {j} = {got} vs dual numbers {dual}"
-                );
-            }
-        }
+        worst = worst.max(equal_to_duals(k, &value, &jac, &want));
     }
     eprintln!("state Jacobian vs dual numbers: worst {worst:.2e} of max|J|");
 }
@@ -349,19 +360,7 @@ fn the_driven_jacobian_with_feedback_equals_dual_numbers_of_a_second_right_hand_
         let work = tau[0] * yd[7] + tau[1] * yd[8];
         let want: [Dual<FORCED_LEN>; FORCED_LEN] =
             std::array::from_fn(|i| if i < LEN { rates[i] } else { work });
-        let scale = jac.iter().flatten().fold(1.0f64, |m, v| m.max(v.abs()));
-        for i in 0..FORCED_LEN {
-            let dv = (value[i] - want[i].value).abs() / want[i].value.abs().max(1.0);
-            assert!(dv <= 1e-12, "state {k}: rate {i} {} vs dual {}", value[i], want[i].value);
-            for (j, (got, dual)) in jac[i].iter().zip(want[i].grad).enumerate() {
-                let err = (got - dual).abs() / scale;
-                worst = worst.max(err);
-                assert!(
-                    err <= 1e-12,
-                    "state {k}: d rate {i} / d y {j} = {got} vs dual numbers {dual}"
-                );
-            }
-        }
+        worst = worst.max(equal_to_duals(k, &value, &jac, &want));
     }
     eprintln!("driven state Jacobian vs dual numbers: worst {worst:.2e} of max|J|");
 }
