@@ -1838,6 +1838,7 @@ pub const SYMBOLS: &[&str] = &[
     "wt_F_q9d_x",
     "wt_F_q9d_y",
     "wt_F_q9d_z",
+    "lin_dtheta",
 ];
 
 /// Creates every symbol of [`SYMBOLS`] in order (a symbol that exists already keeps its place).

@@ -149,3 +149,36 @@ fn whipple_linearisation_body() {
 fn whipple_linearisation() {
     crate::on_symbolica_thread(whipple_linearisation_body);
 }
+
+/// The engine's linearisation against the hand series derivation, and what breaks the
+/// comparisons: the right reference gives the hand's matrices exactly; the rear wheel turning
+/// at $-v/r_F$ instead of $-v/r_R$ (a wrong reference) changes exactly the speed-dependent
+/// matrices $C_1$ and $K_2$, and the same wrong reference in the modified Lagrange route alone
+/// makes it disagree with Kane's.
+fn engine_linearisation_body() {
+    use carvallo_codegen::cas::var;
+    use carvallo_codegen::derive::whipple::linearised::{
+        both_routes, differing, lateral, route, upright,
+    };
+    let d = both_routes().expect("engine derivation");
+    let hand = whipple::matrices(&mut Vec::new());
+    let right = upright(-var("v") / var("rR"));
+    let wrong = upright(-var("v") / var("rF"));
+    let kane = lateral(&route(&d, "", &right).expect("Kane"), "kane", &mut Vec::new());
+    assert_eq!(differing(&kane, &hand), Vec::<String>::new(), "engine against hand");
+    let mut checks = Vec::new();
+    let off = lateral(&route(&d, "", &wrong).expect("Kane"), "kane", &mut checks);
+    let moved = differing(&off, &hand);
+    assert!(
+        !moved.is_empty() && moved.iter().all(|n| n.starts_with("c1_") || n.starts_with("k2_")),
+        "a wrong rear wheel rate moves C1 and K2 only: {moved:?}"
+    );
+    assert!(checks.iter().all(|c| c.holds), "the wrong reference is still an equilibrium");
+    let lagrange = lateral(&route(&d, "L_", &wrong).expect("Lagrange"), "l", &mut Vec::new());
+    assert!(!differing(&kane, &lagrange).is_empty(), "Kane against a perturbed Lagrange route");
+}
+
+#[test]
+fn engine_linearisation_equals_the_hand_series_and_breaks_with_a_wrong_reference() {
+    crate::on_symbolica_thread(engine_linearisation_body);
+}

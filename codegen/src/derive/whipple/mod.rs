@@ -3,13 +3,19 @@
 //! upright straight running at speed $v$, with the 25 parameters of the 2007 benchmark
 //! (Meijaard, Papadopoulos, Ruina, Schwab, Proc. R. Soc. A 463, Table 1) kept as symbols.
 //!
-//! [`linear`] derives $M$, $C_1$, $K_0$, $K_2$ of
-//! $M\ddot q + v C_1 \dot q + (g K_0 + v^2 K_2) q = f$, $q = (\varphi, \delta)$ (lean, steer):
-//! $K_0$ from the potential energy at second order with the frame pitch eliminated by the
-//! holonomic front contact constraint, $M$, $C_1$, $K_2$ by Kane's method at first order with the
-//! yaw rate and the front wheel's spin from the non-holonomic rolling constraints. Nothing is
-//! transcribed from the paper: its published numbers are the test oracle
-//! (`tests/tests/whipple_benchmark.rs`, `codegen/tests/derive/whipple_linear.rs`).
+//! The emitted $M$, $C_1$, $K_0$, $K_2$ of
+//! $M\ddot q + v C_1 \dot q + (g K_0 + v^2 K_2) q = f$, $q = (\varphi, \delta)$ (lean, steer),
+//! come from the mechanics engine ([`linearised`]): the bicycle's description
+//! ([`description`]) derived by Kane's method and by Carvallo's modified Lagrange equations,
+//! each linearised about the upright motion, the two routes equal entry by entry exactly.
+//! [`linear`] is a second, independent derivation written by hand for this model ($K_0$ from the
+//! potential energy at second order with the frame pitch eliminated by the holonomic front
+//! contact constraint, $M$, $C_1$, $K_2$ by Kane's method at first order in a bookkeeping ε
+//! with the yaw rate and the front wheel's spin from the rolling constraints); the engine's
+//! matrices must equal it exactly (check `engine_equals_hand`), and Carvallo's bicycle
+//! ([`crate::derive::bicycle`]) is compared with it. Nothing is transcribed from the paper: its
+//! published numbers are the test oracle (`tests/tests/whipple_benchmark.rs`,
+//! `codegen/tests/derive/whipple_linear.rs`).
 //!
 //! Outputs: the sixteen matrix entries `m11` … `k2_22` (parameters only) and the coefficients
 //! `a0` … `a4` of the characteristic polynomial
@@ -23,15 +29,15 @@
 //! of a state feedback $u = -Kx$ ([`closed_loop_poly`]), whose eight gains ([`GAINS`]) are
 //! inputs of the model beside $v$.
 //!
-//! [`carvallo`] derives the inertial part of the same equations a second way, by Carvallo's
-//! modified Lagrange equations (memoir n° 72) with the kinematics at second order, and the two
-//! are checked to agree exactly (at a fixed rational parameter point, in exact arithmetic). A
-//! finding recorded on the way: the plain Lagrange equation (no correction) is already right for
-//! the lean at the linear level, but not for the steer. The nonlinear equations are not derived
-//! yet.
+//! [`carvallo`] derives the inertial part of the hand route a second way, by Carvallo's
+//! modified Lagrange equations (memoir n° 72) with the kinematics at second order, checked to
+//! agree exactly at a fixed rational parameter point. A finding recorded on the way: the plain
+//! Lagrange equation (no correction) is already right for the lean at the linear level, but not
+//! for the steer.
 
 pub mod carvallo;
 pub mod linear;
+pub mod linearised;
 pub mod nonlinear;
 
 use anyhow::{ensure, Result};
@@ -91,7 +97,7 @@ fn check(id: &str, statement: &str, holds: bool, detail: String) -> Check {
     }
 }
 
-/// Derives the matrices and the checks made on the way.
+/// The hand series derivation's matrices ([`linear`], [`carvallo`]) and the checks made on the way.
 pub fn matrices(checks: &mut Vec<Check>) -> Matrices {
     let st = linear::statics();
     checks.push(check(
@@ -500,7 +506,15 @@ fn closed_loop_checks() -> Vec<Check> {
 #[allow(clippy::needless_range_loop)]
 pub fn derive() -> Result<Derivation> {
     let mut checks = Vec::new();
-    let mats = matrices(&mut checks);
+    let hand = matrices(&mut checks);
+    let mats = linearised::matrices(&mut checks)?;
+    let differ = linearised::differing(&mats, &hand);
+    checks.push(check(
+        "engine_equals_hand",
+        "the engine's linearisation of the description (linearised.rs) equals the series derivation written by hand for this model (linear.rs: Kane at first order, the potential energy at second order), entry by entry, exactly",
+        differ.is_empty(),
+        if differ.is_empty() { String::new() } else { format!("differ: {}", differ.join(", ")) },
+    ));
     let mut formulas = Vec::new();
     let names = [
         ("m", &mats.m, "mass matrix M (kg m^2)"),

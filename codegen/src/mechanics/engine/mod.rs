@@ -28,6 +28,7 @@
 pub mod kane;
 pub mod kinematics;
 pub mod lagrange;
+pub mod linear;
 pub mod store;
 
 use std::collections::BTreeSet;
