@@ -7,6 +7,7 @@ pub mod hoop;
 pub mod nominal;
 pub mod symbols;
 pub mod unicycle;
+pub mod wheeled_pendulum;
 pub mod whipple;
 
 use anyhow::Result;
@@ -30,4 +31,5 @@ pub const DERIVATIONS: &[(&str, DeriveFn)] = &[
     ("bicycle_kinematics", bicycle::kinematics::derive),
     ("bicycle_straight", bicycle::straight::derive),
     ("lean_rider", whipple::lean_rider::derive),
+    ("wheeled_pendulum", wheeled_pendulum::derive),
 ];

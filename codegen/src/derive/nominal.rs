@@ -46,6 +46,32 @@ const BENCHMARK: [(&str, f64); 26] = [
     ("IFyy", 0.28),
 ];
 
+/// The wheeled pendulum (`derive::wheeled_pendulum`): a personal transporter with its rider,
+/// illustrative values of that size (not a published data set), at 2 m/s, pitched and turning
+/// gently, the motors pushing apart.
+const WHEELED_PENDULUM: [(&str, f64); 20] = [
+    ("r", 0.24),
+    ("W", 0.58),
+    ("mW", 4.0),
+    ("IWd", 0.06),
+    ("IWa", 0.12),
+    ("l", 0.9),
+    ("mB", 90.0),
+    ("IBxx", 12.0),
+    ("IByy", 12.5),
+    ("IBzz", 1.5),
+    ("g", 9.81),
+    ("phi", 0.0),
+    ("theta", 0.05),
+    ("thetad", 0.1),
+    ("thetaLd", -8.0),
+    ("thetaRd", -8.5),
+    ("TL", 1.0),
+    ("TR", -1.0),
+    ("v", 2.0),
+    ("psi", 0.0),
+];
+
 /// The linear whipple model's inputs: the speed and the feedback gains of the bench.
 const WHIPPLE_INPUTS: [(&str, f64); 9] = [
     ("v", 5.0),
@@ -218,6 +244,7 @@ pub fn values(model: &str) -> Vec<(String, f64)> {
         "bicycle_geometry" | "bicycle_kinematics" => &[&GEOMETRY],
         "bicycle_steady" => &[&STEADY],
         "lean_rider" => &[&LEAN_RIDER],
+        "wheeled_pendulum" => &[&WHEELED_PENDULUM],
         _ => &[],
     };
     tables.iter().flat_map(|t| t.iter()).map(|&(n, v)| (n.to_string(), v)).collect()

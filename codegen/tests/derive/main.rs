@@ -28,6 +28,7 @@ mod lean_rider;
 mod regen_atomic;
 mod regen_fresh;
 mod unicycle;
+mod wheeled_pendulum;
 mod whipple_linear;
 mod whipple_nonlinear;
 

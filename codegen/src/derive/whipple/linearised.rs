@@ -59,6 +59,7 @@ pub fn upright(rear_rate: Atom) -> Reference {
         dependent: strings(&["theta"]),
         speeds: strings(&INDEPENDENT),
         heights: strings(&["F_contact_height"]),
+        inputs: Vec::new(),
     }
 }
 

@@ -177,7 +177,8 @@ pub fn jets(
 /// A description's equations $M\dot u = f$ linearised about a reference.
 #[derive(Debug)]
 pub struct Linear {
-    /// The perturbed inputs: the coordinates, then the independent speeds.
+    /// The perturbed quantities: the independent and dependent coordinates, the independent
+    /// speeds, the inputs.
     pub vars: Vec<String>,
     /// The independent coordinates (the columns of [`Linear::f_q`]).
     pub coordinates: Vec<String>,
@@ -191,6 +192,10 @@ pub struct Linear {
     pub f_q: Vec<Vec<Atom>>,
     /// $\partial f/\partial u$.
     pub f_u: Vec<Vec<Atom>>,
+    /// The perturbed inputs (the columns of [`Linear::f_t`]).
+    pub inputs: Vec<String>,
+    /// $\partial f/\partial T$, the inputs' coefficients.
+    pub f_t: Vec<Vec<Atom>>,
     /// Each contact height's value at the reference: zero when the reference is on the ground.
     pub heights0: Vec<(String, Atom)>,
     /// $\partial q_d/\partial q$: the dependent coordinates' first-order perturbations, by
@@ -213,6 +218,8 @@ pub struct Reference {
     /// The contact heights (formula names) whose first-order terms give the dependent
     /// coordinates' perturbations.
     pub heights: Vec<String>,
+    /// The inputs perturbed (torques), each with its value in `values`.
+    pub inputs: Vec<String>,
 }
 
 /// Linearises the equations named `<prefix>M_<ui>_<uj>` and `<prefix>f_<ui>` (`""` for Kane's,
@@ -226,7 +233,8 @@ pub fn linearise(
     reference: &Reference,
     normal: &dyn Fn(&Atom) -> Atom,
 ) -> Result<Linear, LinearError> {
-    let Reference { values: reference, coordinates, dependent, speeds, heights } = reference;
+    let Reference { values: reference, coordinates, dependent, speeds, heights, inputs } =
+        reference;
     if dependent.len() != heights.len() {
         return Err(LinearError::Constraint(format!(
             "{} dependent coordinates ({}) and {} contact heights ({})",
@@ -236,7 +244,8 @@ pub fn linearise(
             heights.join(", ")
         )));
     }
-    let vars: Vec<String> = coordinates.iter().chain(dependent).chain(speeds).cloned().collect();
+    let vars: Vec<String> =
+        coordinates.iter().chain(dependent).chain(speeds).chain(inputs).cloned().collect();
     for v in &vars {
         if !reference.contains_key(v) {
             return Err(LinearError::Missing(format!("reference value of {v}")));
@@ -290,6 +299,7 @@ pub fn linearise(
     let mut f0 = Vec::new();
     let mut f_q = Vec::new();
     let mut f_u = Vec::new();
+    let mut f_t = Vec::new();
     for s in speeds {
         let j = get(&format!("{prefix}f_{s}"))?;
         f0.push(j.value.clone());
@@ -305,6 +315,7 @@ pub fn linearise(
                 .collect(),
         );
         f_u.push((0..n).map(|k| j.slope[nq + nd + k].clone()).collect());
+        f_t.push((0..inputs.len()).map(|k| j.slope[nq + nd + n + k].clone()).collect());
     }
     Ok(Linear {
         vars,
@@ -314,6 +325,8 @@ pub fn linearise(
         f0,
         f_q,
         f_u,
+        inputs: inputs.clone(),
+        f_t,
         heights0,
         dependent: dependent.iter().cloned().zip(dq_d).collect(),
     })
