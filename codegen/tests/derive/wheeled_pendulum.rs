@@ -75,7 +75,7 @@ fn closed_form_residual(p: &Program, x: &[f64], v: f64) -> f64 {
     let yaw = 2.0 * r / w;
     rel(quad([0.0, 1.0, -1.0]), 2.0 * mw * r * r + 2.0 * iwa + (2.0 * iwd + ibz) * yaw * yaw);
     // The pitch's growth rate: theta'' = (M^-1 f_q)_0 theta when f_u vanishes.
-    let mm = nalgebra::Matrix3::from_fn(|i, j| m(i, j));
+    let mm = nalgebra::Matrix3::from_fn(m);
     let fq = nalgebra::Vector3::from_fn(|i, _| at(p, &out, &format!("lin_fq_{}", INDEPENDENT[i])));
     let growth = mm.lu().solve(&fq).expect("M is invertible")[0];
     rel(growth, mb * g * l * mt / (jb * mt - mb * mb * l * l));
