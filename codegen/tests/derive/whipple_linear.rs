@@ -182,3 +182,34 @@ fn engine_linearisation_body() {
 fn engine_linearisation_equals_the_hand_series_and_breaks_with_a_wrong_reference() {
     crate::on_symbolica_thread(engine_linearisation_body);
 }
+
+/// The memoir's n° 98 by the engine (checks `*_shift_*` of `generated/whipple.checks.tsv`) and
+/// what breaks it: the body turned by ε about the axis through the rear wheel's centre instead
+/// of the ground trace OI moves its centre of gravity by a different amount, and the gravity
+/// coefficient becomes $-g\,m_B(z_B + r_R)$, so both routes' gravity checks fail while the
+/// handlebar's still hold.
+fn shift_body() {
+    use carvallo_codegen::derive::whipple::description::whipple_shifted;
+    use carvallo_codegen::derive::whipple::linearised::shift_checks_of;
+    let d = crate::derived("whipple");
+    for c in d.checks.iter().filter(|c| c.id.contains("_shift_")) {
+        assert!(c.holds, "check {} fails: {}", c.id, c.detail);
+    }
+    let hand = whipple::matrices(&mut Vec::new());
+    let mut about_the_axle = whipple_shifted();
+    let cre = about_the_axle.points.iter_mut().find(|p| p.name == "CRe").expect("CRe");
+    cre.frame = "L".into();
+    let mut checks = Vec::new();
+    shift_checks_of(&about_the_axle, &mut checks, &hand).expect("derives");
+    let holds = |id: &str| checks.iter().find(|c| c.id == id).map(|c| c.holds);
+    for route in ["kane", "lagrange"] {
+        assert_eq!(holds(&format!("{route}_shift_gravity")), Some(false), "{checks:?}");
+        assert_eq!(holds(&format!("{route}_shift_handlebar")), Some(true), "{checks:?}");
+        assert_eq!(holds(&format!("{route}_shift_unshifted")), Some(true), "{checks:?}");
+    }
+}
+
+#[test]
+fn engine_shift_of_the_body_is_the_memoirs_and_breaks_about_the_wrong_axis() {
+    crate::on_symbolica_thread(shift_body);
+}

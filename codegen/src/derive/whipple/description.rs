@@ -132,3 +132,33 @@ pub fn whipple() -> Model {
         gravity: sym("g"),
     }
 }
+
+/// The bicycle of [`whipple`] with the rider's body moved sideways as the memoir's n° 98 moves
+/// it: the rear body's centre of gravity turned by the angle `epsilon` (a parameter) about the
+/// rear frame's ground trace OI, the line through the rear contact P along the heading. The
+/// frames and points that carry the wheels and the steering axis are the bicycle's own; the
+/// rear body (frame and rider, the benchmark's B) is carried by $L_\varepsilon = L\cdot
+/// R_x(\varepsilon)$ and $E = L_\varepsilon\cdot R_y(\theta)$, its centre
+/// $P - r_R\,(L_\varepsilon)_z + E\,(x_B, 0, z_B + r_R)$: the vector from P to the centre of
+/// [`whipple`] turned about OI by ε.
+pub fn whipple_shifted() -> Model {
+    let mut m = whipple();
+    let rr = sym("rR");
+    m.name = "whipple_shifted".into();
+    m.params.push("epsilon".into());
+    m.frames.push(frame(
+        "Le",
+        "L",
+        vec![Rotation {
+            axis: Axis::X,
+            angle: Angle::Parameter { name: "epsilon".into(), negated: false },
+        }],
+    ));
+    m.frames.push(frame("E", "Le", vec![rot(Axis::Y, "theta")]));
+    m.points.push(point("CRe", "P", "Le", [zero(), zero(), -&rr]));
+    m.points.push(point("GBe", "CRe", "E", [sym("xB"), zero(), sym("zB") + &rr]));
+    let body = m.bodies.iter_mut().find(|b| b.name == "B").expect("the rear body");
+    body.frame = "E".into();
+    body.centre = "GBe".into();
+    m
+}

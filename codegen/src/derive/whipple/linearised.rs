@@ -187,3 +187,68 @@ pub fn differing(a: &Matrices, b: &Matrices) -> Vec<String> {
         .map(|((name, _), _)| name)
         .collect()
 }
+
+/// The memoir's n° 98 by the engine: the bicycle with the rider's body moved sideways by the
+/// angle ε about the rear frame's ground trace OI ([`description::whipple_shifted`]), derived
+/// by both routes and linearised in the lean, the steer, the speeds and ε about upright running.
+/// With ε = 0 the matrices are the bicycle's (`unshifted`). The memoir says (n° 98): the gravity
+/// moment of the fall equation, $\mu g h\sin\theta$, becomes $\mu g h\sin(\theta + \varepsilon)$
+/// — so ε's coefficient in the lean row is $\mu g h = -g\,m_B z_B$, the rear body's (the
+/// benchmark's B is the memoir's loaded frame; its height is $-z_B$); the moment of the
+/// centrifugal force is not changed appreciably — so that coefficient is free of the speed; and
+/// the handlebar equation is not changed — so ε's coefficient in the steer row vanishes. Each
+/// is a check, for each route; so is the rear wheel's row, untouched.
+pub fn shift_checks(checks: &mut Vec<Check>, unshifted: &Matrices) -> Result<()> {
+    shift_checks_of(&description::whipple_shifted(), checks, unshifted)
+}
+
+/// [`shift_checks`] for another description of the shift (a test moves the axis of the shift).
+pub fn shift_checks_of(
+    model: &engine::Model,
+    checks: &mut Vec<Check>,
+    unshifted: &Matrices,
+) -> Result<()> {
+    let (d, _, _) = engine::derivation(model, file!())
+        .map_err(|e| anyhow!("the Whipple bicycle with its rider shifted: {e}"))?;
+    let mut reference = upright(-var("v") / var("rR"));
+    reference.values.insert("epsilon".into(), Atom::num(0));
+    reference.inputs.push("epsilon".into());
+    let vs = var("v").get_symbol().expect("symbol");
+    let expected = -var("g") * var("mB") * var("zB");
+    for (prefix, name) in [("", "kane"), ("L_", "lagrange")] {
+        let lin = route(&d, prefix, &reference)?;
+        let s = |e: &Atom| reduce(&stand_ins(e));
+        let (lean, steer, wheel) = (s(&lin.f_t[0][0]), s(&lin.f_t[1][0]), s(&lin.f_t[2][0]));
+        let same =
+            differing(&lateral(&lin, &format!("{name}_shifted"), &mut Vec::new()), unshifted);
+        checks.push(Check {
+            section: "98".into(),
+            id: format!("{name}_shift_unshifted"),
+            statement: format!("{name}: with the body shifted by epsilon = 0 the engine's bicycle has the unshifted matrices M, C1, K0, K2 exactly"),
+            holds: same.is_empty(),
+            detail: if same.is_empty() { String::new() } else { format!("differ: {}", same.join(", ")) },
+        });
+        checks.push(Check {
+            section: "98".into(),
+            id: format!("{name}_shift_gravity"),
+            statement: format!("{name}: epsilon's coefficient in the lean row is the loaded frame's gravity moment mu g h = -g mB zB, as mu g h sin(theta) becoming mu g h sin(theta + epsilon) (n° 98) requires at first order"),
+            holds: vanishes(&(&lean - &expected)),
+            detail: format!("derived: {lean}"),
+        });
+        checks.push(Check {
+            section: "98".into(),
+            id: format!("{name}_shift_centrifugal"),
+            statement: format!("{name}: epsilon's coefficient in the lean row does not depend on the speed (the centrifugal moment is not changed by the shift at first order, n° 98)"),
+            holds: !lean.contains_symbol(vs),
+            detail: format!("derived: {lean}"),
+        });
+        checks.push(Check {
+            section: "98".into(),
+            id: format!("{name}_shift_handlebar"),
+            statement: format!("{name}: epsilon's coefficients in the steer row and in the rear wheel's row vanish (the handlebar equation is not changed by the shift, n° 98)"),
+            holds: vanishes(&steer) && vanishes(&wheel),
+            detail: format!("steer row: {steer}; rear wheel row: {wheel}"),
+        });
+    }
+    Ok(())
+}

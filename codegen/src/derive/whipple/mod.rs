@@ -515,6 +515,7 @@ pub fn derive() -> Result<Derivation> {
         differ.is_empty(),
         if differ.is_empty() { String::new() } else { format!("differ: {}", differ.join(", ")) },
     ));
+    linearised::shift_checks(&mut checks, &mats)?;
     let mut formulas = Vec::new();
     let names = [
         ("m", &mats.m, "mass matrix M (kg m^2)"),
