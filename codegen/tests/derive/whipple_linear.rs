@@ -200,7 +200,8 @@ fn shift_body() {
     let cre = about_the_axle.points.iter_mut().find(|p| p.name == "CRe").expect("CRe");
     cre.frame = "L".into();
     let mut checks = Vec::new();
-    shift_checks_of(&about_the_axle, &mut checks, &hand).expect("derives");
+    let routes = [("", "kane"), ("L_", "lagrange")];
+    shift_checks_of(&about_the_axle, &mut checks, Some(&hand), &routes).expect("derives");
     let holds = |id: &str| checks.iter().find(|c| c.id == id).map(|c| c.holds);
     for route in ["kane", "lagrange"] {
         assert_eq!(holds(&format!("{route}_shift_gravity")), Some(false), "{checks:?}");

@@ -190,23 +190,82 @@ pub fn differing(a: &Matrices, b: &Matrices) -> Vec<String> {
 
 /// The memoir's n° 98 by the engine: the bicycle with the rider's body moved sideways by the
 /// angle ε about the rear frame's ground trace OI ([`description::whipple_shifted`]), derived
-/// by both routes and linearised in the lean, the steer, the speeds and ε about upright running.
+/// by Kane's method (the modified Lagrange equations agree with it on the unshifted bicycle,
+/// `kane_equals_lagrange`; [`shift_checks_of`] takes either route) and linearised in the lean,
+/// the steer, the speeds and ε about upright running.
 /// With ε = 0 the matrices are the bicycle's (`unshifted`). The memoir says (n° 98): the gravity
 /// moment of the fall equation, $\mu g h\sin\theta$, becomes $\mu g h\sin(\theta + \varepsilon)$
 /// — so ε's coefficient in the lean row is $\mu g h = -g\,m_B z_B$, the rear body's (the
 /// benchmark's B is the memoir's loaded frame; its height is $-z_B$); the moment of the
 /// centrifugal force is not changed appreciably — so that coefficient is free of the speed; and
 /// the handlebar equation is not changed — so ε's coefficient in the steer row vanishes. Each
-/// is a check, for each route; so is the rear wheel's row, untouched.
+/// is a check; so is the rear wheel's row, untouched.
+///
+/// Two negative controls follow, recorded as checks that hold when the perturbed description
+/// *fails* the corresponding Kane check (so that the report can state what breaks each claim):
+/// the body turned about the axis through the rear wheel's centre instead of OI must fail the
+/// gravity check; the front frame carried with the shifted body (the whole frame turned, the
+/// front assembly with it) must fail the handlebar check; the shift turning the handlebar by ε
+/// too must fail the centrifugal check (ε then acts through the speed-dependent steer terms).
 pub fn shift_checks(checks: &mut Vec<Check>, unshifted: &Matrices) -> Result<()> {
-    shift_checks_of(&description::whipple_shifted(), checks, unshifted)
+    shift_checks_of(&description::whipple_shifted(), checks, Some(unshifted), &[("", "kane")])?;
+    let mut about_the_axle = description::whipple_shifted();
+    if let Some(p) = about_the_axle.points.iter_mut().find(|p| p.name == "CRe") {
+        p.frame = "L".into();
+    }
+    let mut whole_frame = description::whipple_shifted();
+    if let Some(p) = whole_frame.points.iter_mut().find(|p| p.name == "A") {
+        p.from = "CRe".into();
+        p.frame = "E".into();
+    }
+    // The front frame turned with the body: H from E, declared after it.
+    let h = whole_frame.frames.iter().position(|f| f.name == "H").expect("H");
+    let mut front = whole_frame.frames.remove(h);
+    front.parent = "E".into();
+    whole_frame.frames.push(front);
+    // CRe before A: the points are declared in order.
+    let cre = whole_frame.points.iter().position(|p| p.name == "CRe").expect("CRe");
+    let moved = whole_frame.points.remove(cre);
+    whole_frame.points.insert(0, moved);
+    let mut steered = description::whipple_shifted();
+    if let Some(h) = steered.frames.iter_mut().find(|f| f.name == "H") {
+        h.rotations.insert(
+            2,
+            engine::Rotation {
+                axis: engine::Axis::Z,
+                angle: engine::Angle::Parameter { name: "epsilon".into(), negated: false },
+            },
+        );
+    }
+    for (model, name, what, broken) in [
+        (&about_the_axle, "axle", "the body turned about the axis through the rear wheel's centre instead of the ground trace OI", &["gravity"][..]),
+        (&whole_frame, "whole_frame", "the steering axis and the front frame carried by the shifted body (the whole frame turned by epsilon about OI, the front assembly with it)", &["handlebar"][..]),
+        (&steered, "steer", "the shift also turning the handlebar by epsilon about the steering axis", &["centrifugal"][..]),
+    ] {
+        let mut perturbed = Vec::new();
+        shift_checks_of(model, &mut perturbed, None, &[("", "kane")])?;
+        for b in broken {
+            let id = format!("kane_shift_{b}");
+            let fails = perturbed.iter().any(|c| c.id == id && !c.holds);
+            let detail = perturbed.iter().find(|c| c.id == id).map_or(String::new(), |c| c.detail.clone());
+            checks.push(Check {
+                section: "98".into(),
+                id: format!("shift_{b}_breaks_with_{name}"),
+                statement: format!("negative control of {id}: with {what} the check fails"),
+                holds: fails,
+                detail,
+            });
+        }
+    }
+    Ok(())
 }
 
 /// [`shift_checks`] for another description of the shift (a test moves the axis of the shift).
 pub fn shift_checks_of(
     model: &engine::Model,
     checks: &mut Vec<Check>,
-    unshifted: &Matrices,
+    unshifted: Option<&Matrices>,
+    routes: &[(&str, &str)],
 ) -> Result<()> {
     let (d, _, _) = engine::derivation(model, file!())
         .map_err(|e| anyhow!("the Whipple bicycle with its rider shifted: {e}"))?;
@@ -215,19 +274,21 @@ pub fn shift_checks_of(
     reference.inputs.push("epsilon".into());
     let vs = var("v").get_symbol().expect("symbol");
     let expected = -var("g") * var("mB") * var("zB");
-    for (prefix, name) in [("", "kane"), ("L_", "lagrange")] {
+    for &(prefix, name) in routes {
         let lin = route(&d, prefix, &reference)?;
         let s = |e: &Atom| reduce(&stand_ins(e));
         let (lean, steer, wheel) = (s(&lin.f_t[0][0]), s(&lin.f_t[1][0]), s(&lin.f_t[2][0]));
-        let same =
-            differing(&lateral(&lin, &format!("{name}_shifted"), &mut Vec::new()), unshifted);
-        checks.push(Check {
-            section: "98".into(),
-            id: format!("{name}_shift_unshifted"),
-            statement: format!("{name}: with the body shifted by epsilon = 0 the engine's bicycle has the unshifted matrices M, C1, K0, K2 exactly"),
-            holds: same.is_empty(),
-            detail: if same.is_empty() { String::new() } else { format!("differ: {}", same.join(", ")) },
-        });
+        if let Some(unshifted) = unshifted {
+            let same =
+                differing(&lateral(&lin, &format!("{name}_shifted"), &mut Vec::new()), unshifted);
+            checks.push(Check {
+                section: "98".into(),
+                id: format!("{name}_shift_unshifted"),
+                statement: format!("{name}: with the body shifted by epsilon = 0 the engine's bicycle has the unshifted matrices M, C1, K0, K2 exactly"),
+                holds: same.is_empty(),
+                detail: if same.is_empty() { String::new() } else { format!("differ: {}", same.join(", ")) },
+            });
+        }
         checks.push(Check {
             section: "98".into(),
             id: format!("{name}_shift_gravity"),

@@ -158,49 +158,78 @@ fn engine_check(id: &str) -> bool {
 /// n° 98: a sideways shift of the body, by two independent derivations: the memoir's bicycle
 /// in his variables with the loaded frame's centre of gravity off its plane, and the mechanics
 /// engine's Carvallo–Whipple bicycle with the rear body turned by ε about the ground trace OI,
-/// by Kane's method and by the modified Lagrange equations.
+/// by Kane's method; each claim states the perturbed description that breaks the engine's
+/// check (a negative control recorded at regeneration).
 fn lateral_shift_claims() -> Vec<Claim> {
     let how = "derived symbolically twice. (1) In the memoir's variables (codegen/src/derive/bicycle/steady/mod.rs): the whole loaded frame translated by y_c along j (sum m y = mu y_c, sum m x y = mu e y_c, sum m y z = mu h y_c, sum m y^2 + mu y_c^2), the steady rows of the fall equation (n° 83-84) and of the handlebar equation (n° 91-93) recomputed and compared with the unshifted ones, exactly and at first order in theta, alpha, n, d eta/d theta, d eta/d gamma and y_c (generated/bicycle_steady.checks.tsv, check";
-    let claim = |id: &str, check: &str, engine: &str, says: &str, reading: &str| {
+    // The claim with the engine's verdict `engine_ok` (its own check, or the negative
+    // control's outcome on the perturbed description).
+    let claim = |id: &str,
+                 check: &str,
+                 engine: &str,
+                 says: &str,
+                 reading: &str,
+                 engine_ok: bool| {
         let (holds, detail) = steady_check(check).unwrap_or((false, "check missing".into()));
         let kane = format!("kane_shift_{engine}");
-        let lagrange = format!("lagrange_shift_{engine}");
-        let both = engine_check(&kane) && engine_check(&lagrange);
         let exact = detail.rsplit_once("exact change ").map_or("", |(_, e)| e).to_string();
         Claim::new(
             id,
             "98",
             says,
-            &format!("{how} {check}). (2) By the mechanics engine (codegen/src/derive/whipple/linearised.rs, shift_checks): the Carvallo-Whipple bicycle's description with the rear body (frame and rider) turned by epsilon about the rear frame's ground trace OI, derived by Kane's method and by Carvallo's modified Lagrange equations and linearised in lean, steer, speeds and epsilon about upright running, symbolic in the 25 parameters (generated/whipple.checks.tsv, checks {kane} and {lagrange}). Agrees when both derivations hold"),
+            &format!("{how} {check}). (2) By the mechanics engine (codegen/src/derive/whipple/linearised.rs, shift_checks): the Carvallo-Whipple bicycle's description with the rear body (frame and rider) turned by epsilon about the rear frame's ground trace OI, derived by Kane's method and linearised in lean, steer, speeds and epsilon about upright running, symbolic in the 25 parameters (generated/whipple.checks.tsv, check {kane}; the modified Lagrange equations equal Kane's on the unshifted bicycle, check kane_equals_lagrange). Agrees when both derivations hold"),
             &[
                 ("check_holds", f64::from(u8::from(holds))),
-                ("engine_checks_hold", f64::from(u8::from(both))),
+                ("engine_checks_hold", f64::from(u8::from(engine_ok))),
             ],
-            policy::claim(holds && both, Verdict::DerivationDiffers),
+            policy::claim(holds && engine_ok, Verdict::DerivationDiffers),
             &format!("{reading}; exact change with the shift: {exact}"),
         )
     };
+    // Each claim with the description that breaks the engine's check: the negative control
+    // recorded at regeneration holds when the perturbed description fails that check.
+    let with_control = |id: &str,
+                        check: &str,
+                        engine: &str,
+                        says: &str,
+                        reading: &str,
+                        control: &str,
+                        what: &str| {
+        let own =
+            claim(id, check, engine, says, reading, engine_check(&format!("kane_shift_{engine}")));
+        let broken = engine_check(control);
+        own.falsified_by(
+            &format!("the engine's description perturbed: {what} (re-derived at regeneration; generated/whipple.checks.tsv, negative control {control})"),
+            claim(id, check, engine, says, reading, !broken),
+        )
+    };
     vec![
-        claim(
+        with_control(
             "steady-shift-gravity-moment",
             "shift_fall_gravity",
             "gravity",
             "With the body moved sideways by the angle epsilon, the gravity moment of the fall equation mu g h sin(theta) becomes mu g h sin(theta + epsilon).",
             "exactly mu g (h sin(theta) + y_c cos(theta)) = mu g sqrt(h^2 + y_c^2) sin(theta + epsilon) with tan(epsilon) = y_c/h: the memoir's form holds with h read as the distance of the centre of gravity from the trace OI, and at first order in epsilon as printed; the engine's bicycle gives epsilon's coefficient in the lean row -g mB zB, the loaded frame's mu g h",
+            "shift_gravity_breaks_with_axle",
+            "the body turned about the axis through the rear wheel's centre instead of the ground trace OI",
         ),
-        claim(
+        with_control(
             "steady-shift-centrifugal-moment",
             "shift_fall_inertia",
             "centrifugal",
             "The moment of the centrifugal force in the fall equation is not changed sensibly by the sideways shift of the body.",
             "holds at first order: the change is of the second order (y_c times n, n^2 or the angles); in the engine's bicycle epsilon's coefficient in the lean row does not depend on the speed",
+            "shift_centrifugal_breaks_with_steer",
+            "the shift also turning the handlebar by epsilon about the steering axis",
         ),
-        claim(
+        with_control(
             "steady-shift-handlebar-unchanged",
             "shift_steer_unchanged",
             "handlebar",
             "The handlebar equation is not changed by the sideways shift of the body (the frame's terms come from the virtual velocities dM/d eta, dM/d nu, whose variations are negligible).",
             "its frame gravity term is unchanged exactly and its inertia terms change by the third-order -mu e (d eta/d gamma) n^2 y_c sin(theta) cos(theta) only; in the engine's bicycle epsilon's coefficient in the steer row vanishes",
+            "shift_handlebar_breaks_with_whole_frame",
+            "the steering axis and the front frame carried by the shifted body (the whole frame turned about OI)",
         ),
     ]
 }
