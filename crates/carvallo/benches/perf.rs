@@ -2,8 +2,9 @@
 //! closed-form Hurwitz route against the eigenvalue sweep, the quartic root solvers on the
 //! benchmark bicycle's polynomial at 5 m/s, the generated characteristic polynomial against
 //! the interpreter, the certified classification, the bicycle's steady turns at one speed and
-//! lean (a scan of 720 steers, then Newton on the steer), the branch points of its hands-free
-//! turns on upright running (2,000 speeds, each the Jacobian of the lean and steer rows) and
+//! lean (a scan of 720 steers, then Newton on the steer), its hands-free turns (the branch
+//! points on upright running: 2,000 speeds, each the Jacobian of the lean and steer rows; every
+//! family, what `carvallo turn --hands-free` computes) and
 //! the leaning rider's steady turns at one speed and roll (a scan of 720 steers, each with the
 //! torso's equilibrium by Newton, then Newton on the steer).
 //!
@@ -75,6 +76,7 @@ fn bench(c: &mut Criterion) {
     group.bench_function("hands_free/branch_speeds", |b| {
         b.iter(|| hands_free.branch_speeds(black_box(0.0), MAX_SPEED))
     });
+    group.bench_function("hands_free/families", |b| b.iter(|| hands_free.families().unwrap()));
     let rider = LeanRider::new(LeanRiderParams::browser_jason()).unwrap();
     let solver = RiderTurnSolver::new(&rider);
     group.bench_function("steady_turn/lean_rider", |b| {
