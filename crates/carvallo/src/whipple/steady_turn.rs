@@ -32,12 +32,16 @@
 //! $d\theta^*/d\delta = -(h_\delta h_\theta - h\,h_{\theta\delta})/h_\theta^2$ comes from
 //! the generated derivatives of the constraint
 //! ([`project_jacobian_scene`](super::nonlinear::rate::project_jacobian_scene)); on the
-//! constraint it is the implicit function theorem's $-h_\delta/h_\theta$. Forward-mode dual
-//! numbers through the IR interpreter ([`carvallo_ir::dual`]), which computed it before, remain
-//! its reference in the tests. A sign change across a pole of $F$ (the fork
-//! across the frame, $\delta = \pm\pi/2$, where the yaw rate grows as $\tan\delta$) is not a
-//! root: a bracket is kept only when $|F|$ falls below [`ROOT_TOLERANCE`] times the weight
-//! times the wheelbase.
+//! constraint it is the implicit function theorem's $-h_\delta/h_\theta$; the values at a
+//! turn found come from the generated kernel
+//! ([`state_rate_scene`](super::nonlinear::rate::state_rate_scene)), so a turn runs no
+//! interpreter. Forward-mode dual numbers through the IR interpreter ([`carvallo_ir::dual`]),
+//! which computed the derivative before, remain its reference in the tests (`hands_free`'s
+//! `the_generated_turn_derivatives_equal_the_dual_numbers_they_replaced`) and the reference
+//! of the stability's Jacobian ([`TurnSolver::state_jacobian_dual`]). A sign change across a
+//! pole of $F$ (the fork across the frame, $\delta = \pm\pi/2$, where the yaw rate grows as
+//! $\tan\delta$) is not a root: a bracket is kept only when $|F|$ falls below
+//! [`ROOT_TOLERANCE`] times the weight times the wheelbase.
 //!
 //! # Contact forces
 //!
