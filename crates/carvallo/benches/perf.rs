@@ -1,9 +1,12 @@
 //! Criterion benchmarks of the performance work: the bicycle's stability window by the
 //! closed-form Hurwitz route against the eigenvalue sweep, the quartic root solvers on the
 //! benchmark bicycle's polynomial at 5 m/s, the generated characteristic polynomial against
-//! the interpreter, the certified classification, and the leaning rider's steady turns at one
-//! speed and roll (a scan of 720 steers, each with the torso's equilibrium by Newton, then
-//! Newton on the steer).
+//! the interpreter, the certified classification, the bicycle's steady turns at one speed and
+//! lean (a scan of 720 steers, then Newton on the steer), its hands-free turns (the branch
+//! points on upright running: 2,000 speeds, each the Jacobian of the lean and steer rows; every
+//! family, what `carvallo turn --hands-free` computes) and
+//! the leaning rider's steady turns at one speed and roll (a scan of 720 steers, each with the
+//! torso's equilibrium by Newton, then Newton on the steer).
 //!
 //! Run with `cargo bench -p carvallo --bench perf`. `carvallo bench` measures the same things
 //! together with their errors in one table.
@@ -13,7 +16,9 @@ use std::time::Duration;
 
 use carvallo::ir::{Interpreter, Program};
 use carvallo::whipple::lean_rider::{LeanRider, LeanRiderParams};
+use carvallo::whipple::steady_turn::hands_free::{HandsFree, MAX_SPEED};
 use carvallo::whipple::steady_turn::lean_rider::RiderTurnSolver;
+use carvallo::whipple::steady_turn::TurnSolver;
 use carvallo::whipple::{char_poly_scene, Whipple, WhippleParams};
 use carvallo::{certified, quartic, sweep};
 use criterion::{criterion_group, criterion_main, Criterion};
@@ -63,6 +68,15 @@ fn bench(c: &mut Criterion) {
         })
     });
     group.sample_size(10);
+    let bicycle = TurnSolver::new(&WhippleParams::benchmark()).unwrap();
+    group.bench_function("steady_turn/whipple", |b| {
+        b.iter(|| bicycle.turns(black_box(5.0), black_box(0.05)).unwrap())
+    });
+    let hands_free = HandsFree::new(&bicycle);
+    group.bench_function("hands_free/branch_speeds", |b| {
+        b.iter(|| hands_free.branch_speeds(black_box(0.0), MAX_SPEED))
+    });
+    group.bench_function("hands_free/families", |b| b.iter(|| hands_free.families().unwrap()));
     let rider = LeanRider::new(LeanRiderParams::browser_jason()).unwrap();
     let solver = RiderTurnSolver::new(&rider);
     group.bench_function("steady_turn/lean_rider", |b| {

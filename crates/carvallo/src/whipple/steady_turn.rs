@@ -25,12 +25,23 @@
 //! The roots are bracketed by a scan of δ over 720 points of $(-\pi, \pi]$ (the pitch
 //! continued from point to point by Newton's method on $h$), then found by Newton's method
 //! safeguarded by bisection inside each bracket. The derivative $dF/d\delta$ is exact to
-//! rounding: forward-mode dual numbers ([`carvallo_ir::dual`]) through the generated program
-//! `generated/whipple_nonlinear.ir`, the pitch's derivative by the implicit function theorem,
-//! $d\theta/d\delta = -h_\delta/h_\theta$. A sign change across a pole of $F$ (the fork
-//! across the frame, $\delta = \pm\pi/2$, where the yaw rate grows as $\tan\delta$) is not a
-//! root: a bracket is kept only when $|F|$ falls below [`ROOT_TOLERANCE`] times the weight
-//! times the wheelbase.
+//! rounding: generated code ([`turn_rows_scene`]: $f_{3,1}$, $f_{3,2}$ and their derivatives
+//! with respect to lean, pitch, steer and the rear wheel's rate, forward-mode differentiation
+//! of `generated/whipple_nonlinear.ir` at compile time) at the pitch projected onto the
+//! constraint by one Newton step, $\theta^* = \theta - h/h_\theta$, whose derivative
+//! $d\theta^*/d\delta = -(h_\delta h_\theta - h\,h_{\theta\delta})/h_\theta^2$ comes from
+//! the generated derivatives of the constraint
+//! ([`project_jacobian_scene`](super::nonlinear::rate::project_jacobian_scene)); on the
+//! constraint it is the implicit function theorem's $-h_\delta/h_\theta$; the values at a
+//! turn found come from the generated kernel
+//! ([`state_rate_scene`](super::nonlinear::rate::state_rate_scene)), so a turn runs no
+//! interpreter. Forward-mode dual numbers through the IR interpreter ([`carvallo_ir::dual`]),
+//! which computed the derivative before, remain its reference in the tests (`hands_free`'s
+//! `the_generated_turn_derivatives_equal_the_dual_numbers_they_replaced`) and the reference
+//! of the stability's Jacobian ([`TurnSolver::state_jacobian_dual`]). A sign change across a
+//! pole of $F$ (the fork across the frame, $\delta = \pm\pi/2$, where the yaw rate grows as
+//! $\tan\delta$) is not a root: a bracket is kept only when $|F|$ falls below
+//! [`ROOT_TOLERANCE`] times the weight times the wheelbase.
 //!
 //! # Contact forces
 //!
@@ -76,13 +87,42 @@ use carvallo_ir::dual::{self, Dual};
 use carvallo_ir::Program;
 use nalgebra::{Complex, Matrix3, SMatrix, SVector, Vector3};
 
-use super::nonlinear::rate::{self, StateRate};
+use super::nonlinear::rate::{
+    self, fill, filled, input_slots, project_jacobian_scene, state_rate_scene, StateRate,
+};
 use super::nonlinear::{Configuration, NonlinearError, WhippleNonlinear};
 use super::WhippleParams;
 use crate::error::ParameterError;
 
 pub mod hands_free;
 pub mod lean_rider;
+
+crate::scene! {
+    /// The lean and steer rows $f_{3,1}$, $f_{3,2}$ of Kane's equations and their derivatives
+    /// with respect to the lean, the pitch, the steer and the rear wheel's rate: what the
+    /// turns' Newton steps need ($dF/d\delta$, and the hands-free rows' gradients in speed,
+    /// lean and steer).
+    pub mod turn_rows_scene {
+        model: whipple_nonlinear,
+        outputs: [f3_1, f3_2],
+        jacobian: [phi, theta, delta, thetaRd],
+    }
+}
+
+/// The lean and steer rows $(f_{3,1}, f_{3,2})$ at a steady state (lean and steer rates zero),
+/// the pitch projected onto the contact constraint by one Newton step, and their derivatives
+/// along the projected pitch.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub(crate) struct Rows {
+    /// $(f_{3,1}, f_{3,2})$ (N m).
+    pub f: [f64; 2],
+    /// Row $r$ of `f`, columns $\mathrm{d}/\mathrm{d}\varphi$ and
+    /// $\mathrm{d}/\mathrm{d}\delta$ (the pitch following the projection) and
+    /// $\partial/\partial\dot\theta_R$.
+    pub d: [[f64; 3]; 2],
+    /// The projected pitch (rad).
+    pub pitch: f64,
+}
 
 /// The number of steer angles of the bracketing scan over $(-\pi, \pi]$ (a half degree apart).
 pub const SCAN_POINTS: usize = 720;
@@ -337,7 +377,8 @@ fn refine<G: Copy>(
     (f.abs() <= tolerance).then_some((x, g))
 }
 
-/// The programs the dual numbers run: the contact constraint, and the dynamics.
+/// The programs the dual numbers run (the reference route,
+/// [`TurnSolver::state_jacobian_dual`]): the contact constraint, and the dynamics.
 struct Programs {
     contact: Program,
     dynamics: Program,
@@ -401,6 +442,13 @@ pub struct TurnSolver {
     rate: StateRate,
     contact: DualProgram,
     dynamics: DualProgram,
+    /// [`turn_rows_scene`]'s arguments with the parameters, and the slots of its inputs
+    /// ([`input_slots`]).
+    rows: ([f64; turn_rows_scene::Args::LEN], [usize; 6]),
+    /// The same for [`project_jacobian_scene`].
+    contact_jacobian: ([f64; project_jacobian_scene::Args::LEN], [usize; 6]),
+    /// The same for [`state_rate_scene`].
+    values: ([f64; state_rate_scene::Args::LEN], [usize; 6]),
     /// Weight times wheelbase (N m), the scale of the roll row.
     scale: f64,
 }
@@ -413,8 +461,6 @@ impl fmt::Debug for TurnSolver {
 
 /// The evaluated terms of the dynamics at one (dual) state.
 struct Terms<const N: usize> {
-    /// The projected pitch.
-    pitch: Dual<N>,
     /// $M_3$ as `[m11, m12, m13, m22, m23, m33]`.
     mass: [Dual<N>; 6],
     /// $f_3$.
@@ -442,6 +488,18 @@ impl TurnSolver {
             rate: StateRate::new(params),
             contact: DualProgram::new(&p.contact, params),
             dynamics: DualProgram::new(&p.dynamics, params),
+            rows: (
+                filled(params, turn_rows_scene::PARAMS),
+                input_slots(turn_rows_scene::PARAMS, turn_rows_scene::INPUTS),
+            ),
+            contact_jacobian: (
+                filled(params, project_jacobian_scene::PARAMS),
+                input_slots(project_jacobian_scene::PARAMS, project_jacobian_scene::INPUTS),
+            ),
+            values: (
+                filled(params, state_rate_scene::PARAMS),
+                input_slots(state_rate_scene::PARAMS, state_rate_scene::INPUTS),
+            ),
             scale: mass * get("g") * get("w"),
             bike,
         })
@@ -457,7 +515,9 @@ impl TurnSolver {
     }
 
     /// The terms at lean, pitch (projected onto the contact constraint by one Newton step, as
-    /// [`StateRate::project`] does when the pitch is on it), steer and the three speeds.
+    /// [`StateRate::project`] does when the pitch is on it), steer and the three speeds, in dual
+    /// numbers through the IR interpreter: the reference route of
+    /// [`state_jacobian_dual`](Self::state_jacobian_dual) and of the tests.
     fn terms<const N: usize>(
         &self,
         lean: Dual<N>,
@@ -470,7 +530,6 @@ impl TurnSolver {
         let pitch = pitch - h[0] / h[1];
         let o = self.dynamics.eval([lean, pitch, steer, u[0], u[1], u[2]]);
         Terms {
-            pitch,
             mass: [o[0], o[1], o[2], o[3], o[4], o[5]],
             forcing: [o[6], o[7], o[8]],
             rates: [o[9], o[10], o[11], o[12]],
@@ -537,6 +596,38 @@ impl TurnSolver {
         std::array::from_fn(|i| d[i].grad)
     }
 
+    /// [`Rows`] at `(lean, pitch, steer)` with the rear wheel's rate `wheel` and the lean and
+    /// steer rates zero, the pitch first projected onto the contact constraint by one Newton
+    /// step, $\theta^* = \theta - h/h_\theta$ (as [`terms`](Self::terms) does): generated
+    /// values and derivatives ([`turn_rows_scene`], [`project_jacobian_scene`]), with
+    /// $\mathrm{d}\theta^*/\mathrm{d}v = -(h_v h_\theta - h\,h_{\theta v})/h_\theta^2$ for
+    /// $v$ the lean or the steer.
+    pub(crate) fn rows(&self, lean: f64, pitch: f64, steer: f64, wheel: f64) -> Rows {
+        let (args, slots) = &self.contact_jacobian;
+        let o = project_jacobian_scene::eval_array(&fill(*args, slots, [lean, pitch, steer]));
+        // Rows h, h_theta; columns lean, pitch, steer.
+        let hd = project_jacobian_scene::jacobian_array(&o);
+        let (h, dh) = (o[0], o[1]);
+        let projected = pitch - h / dh;
+        let dproj = |k: usize| -(hd[0][k] * dh - h * hd[1][k]) / (dh * dh);
+        let (lean_proj, steer_proj) = (dproj(0), dproj(2));
+        let (args, slots) = &self.rows;
+        let o = turn_rows_scene::eval_array(&fill(
+            *args,
+            slots,
+            [lean, projected, steer, 0.0, 0.0, wheel],
+        ));
+        // Columns lean, pitch, steer, rear wheel rate.
+        let j = turn_rows_scene::jacobian_array(&o);
+        Rows {
+            f: [o[0], o[1]],
+            d: std::array::from_fn(|r| {
+                [j[r][0] + j[r][1] * lean_proj, j[r][2] + j[r][1] * steer_proj, j[r][3]]
+            }),
+            pitch: projected,
+        }
+    }
+
     /// The roll row $F(\delta)$ at `(speed, lean)`, its derivative in δ (the pitch following the
     /// constraint) and the pitch, the pitch solved by Newton from `guess`.
     fn roll_row(
@@ -547,10 +638,8 @@ impl TurnSolver {
         guess: f64,
     ) -> Result<(f64, f64, f64), NonlinearError> {
         let pitch = self.bike.pitch(lean, steer, guess)?;
-        let wheel = -speed / self.param("rR");
-        let c = Dual::<1>::constant;
-        let t = self.terms(c(lean), c(pitch), Dual::variable(steer, 0), [c(0.0), c(0.0), c(wheel)]);
-        Ok((t.forcing[0].value, t.forcing[0].grad[0], t.pitch.value))
+        let r = self.rows(lean, pitch, steer, -speed / self.param("rR"));
+        Ok((r.f[0], r.d[0][1], r.pitch))
     }
 
     /// The roll row alone, by the generated evaluator (the scan).
@@ -599,11 +688,17 @@ impl TurnSolver {
         pitch: f64,
     ) -> Result<SteadyTurn, TurnError> {
         let wheel = -speed / self.param("rR");
-        let c = Dual::<0>::constant;
-        let t = self.terms(c(lean), c(pitch), c(steer), [c(0.0), c(0.0), c(wheel)]);
-        let pitch = t.pitch.value;
-        let [_, yaw_rate, front_wheel_rate, _] = t.rates.map(|d| d.value);
-        let forcing = t.forcing.map(|d| d.value);
+        // The pitch projected by one Newton step, then the values of the generated kernel.
+        let (h, dh) = self.rate.contact(lean, pitch, steer);
+        let pitch = pitch - h / dh;
+        let (args, slots) = &self.values;
+        let o = state_rate_scene::eval_array(&fill(
+            *args,
+            slots,
+            [lean, pitch, steer, 0.0, 0.0, wheel],
+        ));
+        let (yaw_rate, front_wheel_rate) = (o[10], o[11]);
+        let forcing = [o[6], o[7], o[8]];
         let forces =
             self.contact_forces(lean, pitch, steer, speed, yaw_rate, wheel, front_wheel_rate);
         let mut y = [0.0; rate::LEN];
