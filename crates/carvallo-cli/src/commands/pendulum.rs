@@ -438,6 +438,9 @@ fn render(
         "    t        x        y      psi    theta   thetad  thetaLd  thetaRd       TL       TR\n",
     );
     for r in rows {
+        // Rounding leaves the heading and the sideways drift of a straight run at 1e-17, which
+        // would print as -0.0000 on one platform and +0.0000 on another.
+        let r = r.map(|v| if v.abs() < 1e-9 { 0.0 } else { v });
         let _ = writeln!(
             s,
             "{:5.2} {:+8.4} {:+8.4} {:+8.4} {:+8.4} {:+8.4} {:+8.4} {:+8.4} {:+8.2} {:+8.2}",
