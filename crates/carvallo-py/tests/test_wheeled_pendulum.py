@@ -2,9 +2,13 @@
 `pendulum_state_space`, `simulate_pendulum`): the pitch eigenvalue against the planar
 Lagrangian's closed form written here, the eigenvalues against numpy's of the returned A, the
 energy conserved with the motors off, the placed feedback keeping the body up where its negation
-and the open loop fall, and bad arguments as errors naming the value."""
+and the open loop fall, bad arguments as errors naming the value, and the guide chapter's
+example (`docs/guide/src/wheeled-pendulum.md`) printing its `# -> ` lines."""
 
 import math
+import re
+import subprocess
+import sys
 
 import carvallo
 import numpy as np
@@ -72,3 +76,13 @@ def test_bad_arguments_name_the_value(kwargs, needle):
     args.update(kwargs)
     with pytest.raises(carvallo.ParameterError, match=needle):
         carvallo.simulate_pendulum(args.pop("t_end"), args.pop("pitch0"), **args)
+
+
+def test_the_guide_example_runs(root, tmp_path):
+    text = (root / "docs" / "guide" / "src" / "wheeled-pendulum.md").read_text()
+    (code,) = re.findall(r"```python\n(.*?)```", text, flags=re.S)
+    (tmp_path / "example.py").write_text(code)
+    out = subprocess.run([sys.executable, "example.py"], cwd=tmp_path, capture_output=True,
+                         text=True, check=True)
+    expected = [line[len("# -> "):] for line in code.splitlines() if line.startswith("# -> ")]
+    assert len(expected) == 4 and out.stdout.splitlines() == expected
