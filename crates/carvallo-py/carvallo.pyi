@@ -16,8 +16,8 @@ Limits (a `ParameterError` naming the argument and the limit, raised before allo
 needs at most 1 GiB for its result and working arrays; files are read up to 16 MiB; counts
 (`samples`, `count`, `every`, `seed`) are whole numbers from 0 to 2**64 - 1 and real arguments
 numbers a float holds. A wrong Python type for a text or flag argument is a `TypeError`.
-`sweep`, `windows`, `simulate`, `simulate_hoop`, `simulate_unicycle`, `simulate_many`,
-`closed_loop_window` (a gain table), `closed_loop_eigenvalues`, `monte_carlo` and
+`sweep`, `windows`, `simulate`, `simulate_hoop`, `simulate_unicycle`, `simulate_pendulum`,
+`simulate_many`, `closed_loop_window` (a gain table), `closed_loop_eigenvalues`, `monte_carlo` and
 `eigenvalue_bands` run with the GIL
 released and raise `KeyboardInterrupt` within a fraction of a second of Ctrl-C. Speeds of
 `closed_loop_window` and gain tables lie within 1e6 m/s and gains within 1e12, as on the
@@ -401,3 +401,45 @@ def simulate_unicycle(
 ) -> dict[str, object]:
     """The mounted unicycle (n° 21-24): rider {mass, height, a, b, c, l}, wheel {mass, a1, b1,
     c1}; state, options and result as simulate_hoop."""
+
+def pendulum_params() -> dict[str, float]:
+    """The two-wheeled inverted pendulum's nominal design {r, W, mW, IWd, IWa, l, mB, IBxx, IByy,
+    IBzz, g} (SI units): a personal transporter with its rider, illustrative values, not a
+    published data set."""
+
+def pendulum_eigenvalues(
+    speeds: Union[float, Sequence[float], npt.NDArray[np.float64]],
+    *,
+    params: Optional[Mapping[str, float]] = None,
+) -> npt.NDArray[np.complex128]:
+    """The eigenvalues of the pendulum's linear model about upright running at each speed,
+    shape (n, 4), by decreasing real part (lambda, 0, 0, -lambda); params changes values of
+    pendulum_params()."""
+
+def pendulum_state_space(
+    speed: float,
+    *,
+    params: Optional[Mapping[str, float]] = None,
+) -> tuple[npt.NDArray[np.float64], npt.NDArray[np.float64]]:
+    """(A, B) of the pendulum's linear model at speed: A (4, 4) over theta, thetad, thetaLd,
+    thetaRd; B (4, 2) over the motor torques TL, TR."""
+
+def simulate_pendulum(
+    t_end: float,
+    pitch0: float,
+    *,
+    speed: float = 2.0,
+    params: Optional[Mapping[str, float]] = None,
+    gain: Union[None, str, Sequence[Sequence[float]], npt.NDArray[np.float64]] = None,
+    poles: Optional[Sequence[float]] = None,
+    step: float = 0.01,
+    every: int = 1,
+    method: str = "dop853",
+    rtol: Optional[float] = None,
+    atol: Optional[float] = None,
+) -> dict[str, object]:
+    """The nonlinear pendulum from upright running at speed pitched by pitch0 (rad), open loop
+    or under T = -K (x - x_ref) (gain "placed": poles, default -lambda, -1.5 lambda, -2 lambda;
+    or K, 2 rows TL, TR of 4): arrays t, x, y, psi, theta, thetad, thetaLd, thetaRd, TL, TR;
+    status ("fell" or "completed"), fall_time, energy0, max_energy_change, gain; method, rtol,
+    atol, rhs_evaluations, steps, rejected_steps, events."""

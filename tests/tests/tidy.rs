@@ -90,10 +90,12 @@ const REPORT_LEAVES: [&str; 6] = ["entry", "policy", "sample", "checks", "outlin
 const REPORT_MODELS: [&str; 5] = ["hoop", "hoop_discussion", "unicycle", "whipple", "bicycle"];
 
 /// The files allowed directly in `crates/carvallo/src`: everything else lives in a layer's
-/// folder (`numerics/`) or in a model's (`hoop/`, `unicycle/`, `whipple/`, `bicycle/`).
+/// folder (`numerics/`) or in a model's (`hoop/`, `unicycle/`, `whipple/`, `bicycle/`,
+/// `wheeled_pendulum/`).
 const LIBRARY_ROOT_FILES: [&str; 3] = ["artifacts.rs", "error.rs", "lib.rs"];
-/// The library's models, one folder each (mirrored by `codegen/src/derive/` and the report).
-const LIBRARY_MODELS: [&str; 4] = ["hoop", "unicycle", "whipple", "bicycle"];
+/// The library's models, one folder each (mirrored by `codegen/src/derive/`, and by the report for
+/// the memoir's models; the wheeled pendulum is not one).
+const LIBRARY_MODELS: [&str; 5] = ["hoop", "unicycle", "whipple", "bicycle", "wheeled_pendulum"];
 /// The flat module names of the first layout, kept in `lib.rs` only as hidden re-exports: the
 /// library itself uses the new paths.
 const OLD_LIBRARY_PATHS: [&str; 16] = [

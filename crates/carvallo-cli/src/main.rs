@@ -28,8 +28,8 @@ mod staging;
 mod sweep_args;
 
 use commands::{
-    accel, bode, eig, kinematics, parameters, plot, report, response, rest, rolling, simulate,
-    statespace, turn, window,
+    accel, bode, eig, kinematics, parameters, pendulum, plot, report, response, rest, rolling,
+    simulate, statespace, turn, window,
 };
 
 /// carvallo: E. Carvallo's memoir (1897) on the hoop, unicycle and bicycle, re-derived and
@@ -93,6 +93,9 @@ enum Command {
     Hoop(rolling::HoopArgs),
     /// Simulate the mounted unicycle (memoir n° 21-24): time series, energy drift, events
     Unicycle(rolling::UnicycleArgs),
+    /// The two-wheeled inverted pendulum (a self-balancing transporter): the eigenvalues of its
+    /// linear model, or a simulation open loop or under a state feedback
+    Pendulum(pendulum::Args),
     /// Print a shell completion script: `carvallo completions bash > carvallo.bash`
     Completions {
         /// The shell
@@ -122,6 +125,7 @@ impl Command {
             Command::Kinematics(_) => "kinematics",
             Command::Hoop(_) => "hoop",
             Command::Unicycle(_) => "unicycle",
+            Command::Pendulum(_) => "pendulum",
             Command::Completions { .. } => "completions",
         }
     }
@@ -147,6 +151,10 @@ impl Command {
             Command::Kinematics(a) => text(kinematics::run(a)),
             Command::Hoop(a) => text(rolling::hoop(a)),
             Command::Unicycle(a) => text(rolling::unicycle(a)),
+            Command::Pendulum(a) => text(match &a.command {
+                pendulum::PendulumCommand::Eig(e) => pendulum::eig(e),
+                pendulum::PendulumCommand::Simulate(s) => pendulum::simulate(s),
+            }),
             Command::Completions { shell } => {
                 let mut script = Vec::new();
                 clap_complete::generate(*shell, &mut Cli::command(), "carvallo", &mut script);

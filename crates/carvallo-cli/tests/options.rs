@@ -106,14 +106,16 @@ const BASES: &[&[&str]] = &[
             "/../../data/bicycleparameters/bicycles/Browser/RawData/BrowserMeasured.txt"
         ),
     ],
+    &["pendulum", "simulate", "--t-end", "0.05", "--pitch0", "0.05", "--gain", "placed"],
     &["completions", "bash"],
 ];
 
 /// Options not varied: `report --out` writes a whole report for every value that names a
 /// directory (ten seconds each); its edges are the tests of `report_out.rs`. `parameters --out`
 /// is a file name, not a number: `--out=-inf` writes the file `-inf` and says so, which is right;
-/// so is `plot --out`.
-const SKIPPED: &[(&str, &str)] = &[("report", "out"), ("parameters", "out"), ("plot", "out")];
+/// so is `plot --out`, and `pendulum --csv` (`--csv=inf` writes the CSV file `inf`).
+const SKIPPED: &[(&str, &str)] =
+    &[("report", "out"), ("parameters", "out"), ("plot", "out"), ("pendulum", "csv")];
 
 /// The state of `accel`'s standard input.
 const STATE: &str = r#"{"q": [0, 0, 0, 0, 1.5, 2.8, 0, 0, 0], "qd": [0, 0, 0, 0, 1, 0, 1, 1, 0]}"#;

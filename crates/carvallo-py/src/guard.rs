@@ -204,6 +204,8 @@ pub(crate) mod arg {
         start: f64 = real;
         stop: f64 = real;
         theta0: f64 = real;
+        pitch0: f64 = real;
+        t_end: f64 = real;
         s0: f64 = real;
         p0: f64 = real;
         n0: f64 = real;

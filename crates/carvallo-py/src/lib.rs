@@ -1,7 +1,8 @@
 //! Python bindings of the `carvallo` runtime crate: the Carvallo–Whipple bicycle's matrices,
 //! eigenvalues, stability windows (one or many designs), sweeps, nonlinear simulation, the
 //! uncertainty propagation of [`carvallo::whipple_uncertainty`] and the memoir concordance,
-//! with numpy arrays in and out.
+//! with numpy arrays in and out; and the two-wheeled inverted pendulum of
+//! [`carvallo::wheeled_pendulum`] (its eigenvalues, state space and simulation).
 //!
 //! The crate has two layers. This file is plain Rust (no Python): reading a parameter mapping
 //! into a validated [`WhippleParams`] with errors that name the key and the value, and the
@@ -24,6 +25,8 @@ mod python;
 mod rolling;
 #[cfg(feature = "python")]
 mod steady_turn;
+#[cfg(feature = "python")]
+mod wheeled_pendulum;
 #[cfg(feature = "python")]
 mod yeadon;
 

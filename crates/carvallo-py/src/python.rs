@@ -57,7 +57,7 @@ fn number_or_numbers(x: &Bound<'_, PyAny>, name: &str) -> PyResult<Vec<f64>> {
     }
 }
 
-fn speeds_of(speeds: &Bound<'_, PyAny>) -> PyResult<Vec<f64>> {
+pub(crate) fn speeds_of(speeds: &Bound<'_, PyAny>) -> PyResult<Vec<f64>> {
     let v = number_or_numbers(speeds, "speeds")?;
     if let Some(x) = v.iter().find(|x| !x.is_finite()) {
         return Err(err(format!("invalid speed {x}: must be finite")));
@@ -1613,6 +1613,7 @@ fn carvallo_module(m: &Bound<'_, PyModule>) -> PyResult<()> {
     crate::steady_turn::register(m)?;
     crate::lean_rider::register(m)?;
     crate::yeadon::register(m)?;
+    crate::wheeled_pendulum::register(m)?;
     register_plot(m)?;
     Ok(())
 }

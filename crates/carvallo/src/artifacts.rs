@@ -38,11 +38,13 @@ artifact!(BICYCLE_KINEMATICS, "bicycle_kinematics");
 artifact!(BICYCLE_STEADY, "bicycle_steady");
 artifact!(BICYCLE_STRAIGHT, "bicycle_straight");
 artifact!(LEAN_RIDER, "lean_rider");
+artifact!(WHEELED_PENDULUM, "wheeled_pendulum");
 
 /// Every model with committed artifacts: the hoop and the unicycle (Part I), the modern
 /// Carvallo–Whipple bicycle, then Carvallo's bicycle of Part II, then Moore's leaning rider
-/// (from the mechanics engine).
-pub const MODELS: [Artifact; 10] = [
+/// (from the mechanics engine), and the two-wheeled inverted pendulum (the engine's rolling
+/// system that is not a bicycle).
+pub const MODELS: [Artifact; 11] = [
     HOOP,
     UNICYCLE,
     HOOP_DISCUSSION,
@@ -53,6 +55,7 @@ pub const MODELS: [Artifact; 10] = [
     BICYCLE_STEADY,
     BICYCLE_STRAIGHT,
     LEAN_RIDER,
+    WHEELED_PENDULUM,
 ];
 
 /// The artifacts of `model`; `None` when no model of that name is embedded.

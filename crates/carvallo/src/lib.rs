@@ -19,7 +19,10 @@
 //!   [`whipple::stability`], [`whipple::certified`], [`whipple::sweep`], [`whipple::nonlinear`],
 //!   [`whipple::uncertainty`] and [`whipple::parameter_text`];
 //! * [`bicycle`]: Carvallo's bicycle of Part II ([`bicycle::geometry`], [`bicycle::kinematics`],
-//!   [`bicycle::rest`], [`bicycle::steady`], [`bicycle::straight`], [`bicycle::turn`]).
+//!   [`bicycle::rest`], [`bicycle::steady`], [`bicycle::straight`], [`bicycle::turn`]);
+//! * [`wheeled_pendulum`]: the two-wheeled inverted pendulum, a rolling system that is not a
+//!   bicycle, from the mechanics engine ([`wheeled_pendulum::linear`],
+//!   [`wheeled_pendulum::simulation`]); not a memoir object, so it has no concordance report.
 //!
 //! [`artifacts`] embeds `generated/` (the only `include_str!` of it) and [`error`] holds the
 //! one parameter error, which every model's error carries; [`numerics::ode::Trajectory`] is
@@ -70,6 +73,7 @@ pub mod error;
 pub mod hoop;
 pub mod numerics;
 pub mod unicycle;
+pub mod wheeled_pendulum;
 pub mod whipple;
 
 pub use error::ParameterError;

@@ -9,6 +9,7 @@ pub mod eig;
 pub mod kinematics;
 pub mod lean_rider;
 pub mod parameters;
+pub mod pendulum;
 pub mod plot;
 pub mod report;
 pub mod response;
