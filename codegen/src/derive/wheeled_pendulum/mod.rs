@@ -40,7 +40,7 @@ use symbolica::atom::{Atom, AtomCore};
 use crate::cas::{is_zero, simplify, var};
 use crate::mechanics::engine::linear::{self, Linear, Reference};
 use crate::mechanics::engine::{
-    self, sym, Angle, Axis, Body, Coordinate, Frame, Kind, Model, Point, Rotation, Torque, Wheel,
+    self, coordinate, frame, point, rot, sym, Axis, Body, Kind, Model, Torque, Wheel,
 };
 use crate::{Check, Derivation, Formula};
 
@@ -53,22 +53,6 @@ pub const INPUTS: [&str; 2] = ["TL", "TR"];
 
 /// The independent speeds: the body's pitch rate and the wheels' rates relative to the body.
 pub const INDEPENDENT: [&str; 3] = ["thetad", "thetaLd", "thetaRd"];
-
-fn coordinate(name: &str, description: &str, kind: Kind) -> Coordinate {
-    Coordinate { name: name.into(), description: description.into(), kind }
-}
-
-fn rot(axis: Axis, coordinate: &str) -> Rotation {
-    Rotation { axis, angle: Angle::Coordinate(coordinate.into()) }
-}
-
-fn frame(name: &str, parent: &str, rotations: Vec<Rotation>) -> Frame {
-    Frame { name: name.into(), parent: parent.into(), rotations }
-}
-
-fn point(name: &str, from: &str, frame: &str, offset: [Atom; 3]) -> Point {
-    Point { name: name.into(), from: from.into(), frame: frame.into(), offset }
-}
 
 fn wheel(name: &str, centre: &str, spin: &str, at_root: bool) -> Wheel {
     Wheel {

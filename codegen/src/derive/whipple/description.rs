@@ -13,27 +13,11 @@ use symbolica::atom::Atom;
 
 use super::PARAMS;
 use crate::mechanics::engine::{
-    sym, Angle, Axis, Body, Coordinate, Frame, Kind, Model, Point, Rotation, Wheel,
+    coordinate, frame, point, rot, sym, Angle, Axis, Body, Kind, Model, Rotation, Wheel,
 };
-
-fn coordinate(name: &str, description: &str, kind: Kind) -> Coordinate {
-    Coordinate { name: name.into(), description: description.into(), kind }
-}
-
-fn rot(axis: Axis, coordinate: &str) -> Rotation {
-    Rotation { axis, angle: Angle::Coordinate(coordinate.into()) }
-}
 
 fn tilt(axis: Axis, negated: bool) -> Rotation {
     Rotation { axis, angle: Angle::Parameter { name: "lambda".into(), negated } }
-}
-
-fn frame(name: &str, parent: &str, rotations: Vec<Rotation>) -> Frame {
-    Frame { name: name.into(), parent: parent.into(), rotations }
-}
-
-fn point(name: &str, from: &str, frame: &str, offset: [Atom; 3]) -> Point {
-    Point { name: name.into(), from: from.into(), frame: frame.into(), offset }
 }
 
 fn zero() -> Atom {

@@ -28,7 +28,8 @@ use symbolica::atom::Atom;
 use crate::Derivation;
 
 use crate::mechanics::engine::{
-    self, sym, Angle, Axis, Body, Coordinate, Frame, Kind, Model, Point, Rotation, Torque, Wheel,
+    self, coordinate, frame, point, rot, sym, Angle, Axis, Body, Kind, Model, Rotation, Torque,
+    Wheel,
 };
 
 /// Parameter names, in order: BicycleParameters' 36 (alphabetical, as its `eval_linear` takes
@@ -43,22 +44,6 @@ pub const PARAMS: [&str; 37] = [
 /// on the rear frame; BicycleParameters' state space drops it), steer torque, lean torque on
 /// the torso.
 pub const INPUTS: [&str; 4] = ["T4", "T6", "T7", "T9"];
-
-fn coordinate(name: &str, description: &str, kind: Kind) -> Coordinate {
-    Coordinate { name: name.into(), description: description.into(), kind }
-}
-
-fn rot(axis: Axis, coordinate: &str) -> Rotation {
-    Rotation { axis, angle: Angle::Coordinate(coordinate.into()) }
-}
-
-fn frame(name: &str, parent: &str, rotations: Vec<Rotation>) -> Frame {
-    Frame { name: name.into(), parent: parent.into(), rotations }
-}
-
-fn point(name: &str, from: &str, frame: &str, offset: [Atom; 3]) -> Point {
-    Point { name: name.into(), from: from.into(), frame: frame.into(), offset }
-}
 
 fn zero() -> Atom {
     Atom::num(0)

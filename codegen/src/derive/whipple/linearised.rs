@@ -19,21 +19,11 @@ use symbolica::atom::{Atom, AtomCore};
 
 use super::linear::{COS_LAMBDA, SIN_LAMBDA};
 use super::nonlinear::INDEPENDENT;
-use super::{description, reduce, vanishes, Matrices};
+use super::{check, description, reduce, vanishes, Matrices};
 use crate::cas::{expr, reduce_pair, var};
 use crate::mechanics::engine;
 use crate::mechanics::engine::linear::{self, Linear, Reference};
 use crate::{Check, Derivation};
-
-fn check(id: &str, statement: &str, holds: bool, detail: String) -> Check {
-    Check {
-        section: "linear".to_string(),
-        id: id.to_string(),
-        statement: statement.to_string(),
-        holds,
-        detail,
-    }
-}
 
 /// The engine's $\sin\lambda$, $\cos\lambda$ written as the stand-ins of [`super::reduce`].
 fn stand_ins(e: &Atom) -> Atom {

@@ -87,7 +87,8 @@ pub struct Matrices {
     pub k2: [[Atom; 2]; 2],
 }
 
-fn check(id: &str, statement: &str, holds: bool, detail: String) -> Check {
+/// A check of the linear model's section.
+pub(super) fn check(id: &str, statement: &str, holds: bool, detail: String) -> Check {
     Check {
         section: "linear".to_string(),
         id: id.to_string(),

@@ -174,6 +174,26 @@ pub fn jets(
     Ok(out)
 }
 
+/// The formulas `roots` depend on, in their order.
+fn cone(formulas: &[Formula], roots: &[String]) -> Vec<Formula> {
+    let index: BTreeMap<&str, usize> =
+        formulas.iter().enumerate().map(|(k, f)| (f.name.as_str(), k)).collect();
+    let mut keep = vec![false; formulas.len()];
+    let mut stack: Vec<usize> =
+        roots.iter().filter_map(|r| index.get(r.as_str()).copied()).collect();
+    while let Some(k) = stack.pop() {
+        if std::mem::replace(&mut keep[k], true) {
+            continue;
+        }
+        for s in super::store::symbols_of(&formulas[k].expr) {
+            if let Some(&j) = index.get(s.as_str()) {
+                stack.push(j);
+            }
+        }
+    }
+    formulas.iter().zip(keep).filter(|(_, k)| *k).map(|(f, _)| f.clone()).collect()
+}
+
 /// A description's equations $M\dot u = f$ linearised about a reference.
 #[derive(Debug)]
 pub struct Linear {
@@ -251,7 +271,14 @@ pub fn linearise(
             return Err(LinearError::Missing(format!("reference value of {v}")));
         }
     }
-    let all = jets(formulas, reference, &vars, normal)?;
+    // Only the formulas the equations and the heights use (a derivation holds both routes,
+    // the energy, the partial velocities...).
+    let mut roots: Vec<String> = heights.clone();
+    for (i, ui) in speeds.iter().enumerate() {
+        roots.push(format!("{prefix}f_{ui}"));
+        roots.extend(speeds[i..].iter().map(|uj| format!("{prefix}M_{ui}_{uj}")));
+    }
+    let all = jets(&cone(formulas, &roots), reference, &vars, normal)?;
     let get = |name: &str| all.get(name).ok_or_else(|| LinearError::Missing(name.to_string()));
     let nq = coordinates.len();
     let nd = dependent.len();

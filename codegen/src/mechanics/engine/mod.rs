@@ -483,6 +483,26 @@ pub fn sym(name: &str) -> Atom {
     var(name)
 }
 
+/// A coordinate (shorthand for descriptions).
+pub fn coordinate(name: &str, description: &str, kind: Kind) -> Coordinate {
+    Coordinate { name: name.into(), description: description.into(), kind }
+}
+
+/// A simple rotation by a coordinate (shorthand for descriptions).
+pub fn rot(axis: Axis, coordinate: &str) -> Rotation {
+    Rotation { axis, angle: Angle::Coordinate(coordinate.into()) }
+}
+
+/// A frame from its parent by `rotations` (shorthand for descriptions).
+pub fn frame(name: &str, parent: &str, rotations: Vec<Rotation>) -> Frame {
+    Frame { name: name.into(), parent: parent.into(), rotations }
+}
+
+/// A point from an earlier one by an offset fixed in `frame` (shorthand for descriptions).
+pub fn point(name: &str, from: &str, frame: &str, offset: [Atom; 3]) -> Point {
+    Point { name: name.into(), from: from.into(), frame: frame.into(), offset }
+}
+
 /// Kane's part of [`derivation`], the program a model generates (Carvallo's modified Lagrange
 /// equations are derived too, and checked against Kane's by the derivation tests), with one
 /// check: the rolling constraints' only redundant row is the vertical one of the wheel whose
