@@ -30,9 +30,11 @@ pub(crate) fn measurements_at(path: &str) -> PyResult<Measurements> {
         .map_err(|e| err(format!("invalid Yeadon measurement file `{path}`: {e}")))
 }
 
-/// Whether the file at `path` is a Yeadon measurement file (not a BicycleParameters rider file).
+/// Whether the file at `path` is a Yeadon measurement file (not a BicycleParameters rider file);
+/// read through [`read_text`]'s bound, so an endless device is not one (and the rider file's
+/// reader then names it).
 pub(crate) fn is_measurement_file(path: &str) -> bool {
-    std::fs::read_to_string(path).is_ok_and(|t| Measurements::looks_like(&t))
+    read_text(path, "Yeadon measurement").is_ok_and(|t| Measurements::looks_like(&t))
 }
 
 /// yeadon's configuration file at `path`.

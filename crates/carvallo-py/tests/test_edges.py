@@ -112,6 +112,10 @@ CHILD = textwrap.dedent(
                 "bicycleparameters/bicycles/Browser/RawData/BrowserMeasured.txt")),
         "simulate_unicycle": dict(rider=RIDER, wheel=WHEEL, radius=0.5, theta0=0.05, s0=3.0,
                                   duration=0.2, every=10),
+        "pendulum_params": {},
+        "pendulum_eigenvalues": dict(speeds=[1.0, 5.0]),
+        "pendulum_state_space": dict(speed=2.0),
+        "simulate_pendulum": dict(t_end=0.2, pitch0=0.05),
     }
 
     def bad_values(arg):
