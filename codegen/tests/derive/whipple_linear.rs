@@ -214,3 +214,30 @@ fn shift_body() {
 fn engine_shift_of_the_body_is_the_memoirs_and_breaks_about_the_wrong_axis() {
     crate::on_symbolica_thread(shift_body);
 }
+
+/// What breaks the engine's recorded equilibrium check: about a state with the handlebar
+/// turning (steer rate 1 rad/s) upright running is no longer an equilibrium, so
+/// `kane_equilibrium` fails; about the true reference it holds. (A leaned or pitched reference
+/// would break `kane_on_the_ground` too, but with a symbolic angle the jets' trigonometry does
+/// not reduce and the linearisation runs for minutes: not tried here.)
+fn reference_checks_body() {
+    use carvallo_codegen::cas::var;
+    use carvallo_codegen::derive::whipple::linearised::{both_routes, lateral, route, upright};
+    use symbolica::atom::Atom;
+    let d = both_routes().expect("engine derivation");
+    let holds = |reference: &carvallo_codegen::mechanics::engine::linear::Reference, id: &str| {
+        let mut checks = Vec::new();
+        let _ = lateral(&route(&d, "", reference).expect("Kane"), "kane", &mut checks);
+        checks.iter().find(|c| c.id == id).map(|c| c.holds).expect("the check is made")
+    };
+    let right = upright(-var("v") / var("rR"));
+    assert!(holds(&right, "kane_equilibrium"));
+    let mut steering = right.clone();
+    steering.values.insert("deltad".into(), Atom::num(1));
+    assert!(!holds(&steering, "kane_equilibrium"), "a turning handlebar is not an equilibrium");
+}
+
+#[test]
+fn engine_reference_checks_fail_off_the_reference() {
+    crate::on_symbolica_thread(reference_checks_body);
+}
