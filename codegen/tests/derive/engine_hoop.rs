@@ -41,3 +41,40 @@ fn engine_hoop_equals_the_memoirs_hand_derivation_at_256_bits() {
         });
     });
 }
+
+/// The generated hoop is the engine's (`derive::hoop`'s checks `engine_kane_is_system2`,
+/// `engine_lagrange_is_memoir_lagrange`): what breaks those checks. A hoop described with a
+/// disc's diametral moment μR²/4 instead of the circle's μR²/2 gives other accelerations by
+/// both routes, and a sign choice that is not one of the hoop's symmetries (σ = (1, 1, −1), the
+/// spin reversed alone) gives others again; the description as committed gives the generated
+/// `pns_*` exactly.
+#[test]
+fn the_engines_hoop_accelerations_break_with_a_wrong_inertia_or_sign() {
+    crate::on_symbolica_thread(|| {
+        use carvallo_codegen::cas::{from_trig, is_zero};
+        use symbolica::atom::Atom;
+        let d = crate::derived("hoop");
+        let generated: Vec<Atom> = ["pns_dp", "pns_dn", "pns_ds"]
+            .iter()
+            .map(|n| from_trig(&d.formulas.iter().find(|f| f.name == *n).expect("pns output").expr))
+            .collect();
+        let differs = |got: &[Atom]| -> Vec<bool> {
+            got.iter().zip(&generated).map(|(a, b)| !is_zero(&(a - b))).collect()
+        };
+        let ([kane, lagrange], _) =
+            description::accelerations(&description::hoop(), [1, 1, 1]).expect("derives");
+        assert_eq!(differs(&kane), [false; 3], "the committed description");
+        assert_eq!(differs(&lagrange), [false; 3], "the committed description, Lagrange");
+        let mut disc = description::hoop();
+        let (mu, r) = (carvallo_codegen::cas::var("mu"), carvallo_codegen::cas::var("R"));
+        disc.wheels[0].diametral = &mu * &r * &r / Atom::num(4);
+        let ([kane, lagrange], _) = description::accelerations(&disc, [1, 1, 1]).expect("derives");
+        eprintln!("a disc's diametral moment: Kane differs {:?}", differs(&kane));
+        assert!(differs(&kane).iter().any(|&x| x), "a disc's inertia must change Kane's");
+        assert!(differs(&lagrange).iter().any(|&x| x), "and Lagrange's");
+        let ([kane, _], _) =
+            description::accelerations(&description::hoop(), [1, 1, -1]).expect("derives");
+        eprintln!("the spin reversed alone: differs {:?}", differs(&kane));
+        assert!(differs(&kane).iter().any(|&x| x), "a sign that is no symmetry must break it");
+    });
+}

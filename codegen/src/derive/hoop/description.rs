@@ -2,9 +2,11 @@
 //! the memoir's hoop (n° 1–7: a homogeneous circle of radius $R$ and mass $\mu$ rolling without
 //! slipping on a horizontal plane) written as frames and one wheel, with nothing of the memoir's
 //! own derivation in it: no trihedron (I, j, k), no $p, n, s$, no moments of the inertia forces.
-//! The engine derives it by Kane's method and by the modified Lagrange equations; the test
-//! `codegen/tests/derive/engine_hoop.rs` compares both with the hand derivation of [`super`]
-//! (`generated/hoop.ir`) at 256 bits. It is also the guide's worked example of a model that is
+//! The engine derives it by Kane's method and by the modified Lagrange equations; the hoop's
+//! derivation ([`super::derive`]) solves both in closed form ([`accelerations`]), checks them
+//! exactly against the memoir's routes (n° 7 and n° 73) and generates the model from Kane's,
+//! and the test `codegen/tests/derive/engine_hoop.rs` compares the engine's own program with
+//! `generated/hoop.ir` at 256 bits. It is also the guide's worked example of a model that is
 //! not a bicycle (`docs/guide/src/contributing.md`).
 //!
 //! Frames: the yawed frame Y (heading ψ about the downward vertical) and the lean frame
@@ -77,4 +79,49 @@ pub fn hoop() -> Model {
         torques: Vec::new(),
         gravity: sym("g"),
     }
+}
+
+/// The accelerations $\dot p, \dot n, \dot s$ of a description built on the hoop's (the hoop,
+/// the unicycle), by Kane's method and by the modified Lagrange equations (in that order), and
+/// its energy, written in the memoir's variables: the engine's lean φ is σ₁θ and its rates
+/// $\dot\varphi, \dot\psi, \dot\theta_R$ are σ₁p, σ₂n, σ₃s, with the signs `sigma` the engine
+/// tests found (`engine_hoop`, `engine_unicycle`: the heading is about the downward vertical and
+/// n about the upward one). Expressions in the stand-ins $\sin\theta, \cos\theta$, simplified.
+pub fn accelerations(model: &Model, sigma: [i64; 3]) -> anyhow::Result<([Vec<Atom>; 2], Atom)> {
+    use crate::cas::{cos_t, expr, simplify, sin_t, solve_linear, var};
+    use symbolica::atom::AtomCore;
+    let c = crate::mechanics::engine::closed_form(model)
+        .map_err(|e| anyhow::anyhow!("the description {}: {e}", model.name))?;
+    let sign = |k: usize| Atom::num(sigma[k]);
+    let memoir = |e: &Atom| {
+        let mut e = e
+            .replace(expr("sin(phi)").to_pattern())
+            .with((sign(0) * sin_t()).to_pattern())
+            .replace(expr("cos(phi)").to_pattern())
+            .with(cos_t().to_pattern());
+        for (engine, ours, k) in [("phid", "p", 0), ("psid", "n", 1), ("thetaRd", "s", 2)] {
+            e = e.replace(var(engine).to_pattern()).with((sign(k) * var(ours)).to_pattern());
+        }
+        e
+    };
+    let rate = |speed: &str| match speed {
+        "phid" => Ok(sign(0) * var("dp")),
+        "psid" => Ok(sign(1) * var("dn")),
+        "thetaRd" => Ok(sign(2) * var("ds")),
+        other => Err(anyhow::anyhow!("{} has the unexpected speed {other}", model.name)),
+    };
+    let rates: Vec<Atom> = c.speeds.iter().map(|s| rate(s)).collect::<anyhow::Result<_>>()?;
+    let solve = |(mass, forcing): &(Vec<Vec<Atom>>, Vec<Atom>)| {
+        let eqs: Vec<Atom> = mass
+            .iter()
+            .zip(forcing)
+            .map(|(row, f)| {
+                let lhs =
+                    row.iter().zip(&rates).fold(Atom::num(0), |acc, (m, r)| acc + memoir(m) * r);
+                lhs - memoir(f)
+            })
+            .collect();
+        solve_linear(&eqs, &["dp", "dn", "ds"])
+    };
+    Ok(([solve(&c.kane), solve(&c.lagrange)], simplify(&memoir(&c.energy))))
 }

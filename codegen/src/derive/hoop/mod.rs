@@ -7,6 +7,11 @@
 //! [`derive`] returns the formulas of the hoop model contract (outputs `pqr_*`, `pns_*`,
 //! `energy`, `inertia_*`, `equilibrium`, `stability`, `skid`, `equilibrium_direct`, the
 //! `*_n12` forms and the `memoir_*` transcriptions) and every [`Check`] made on the way.
+//! The equations of motion the model generates (systems (1) and (2) of n° 7–8, and every
+//! steady-state formula drawn from them) are the mechanics engine's: the hoop's description
+//! ([`description`]) derived by Kane's method, solved for p', n', s'. The derivation checks them
+//! exactly against the moments of the inertia forces (n° 7), the memoir's Lagrange equations
+//! of n° 73 (the engine's modified Lagrange equations as well) and the printed formulas.
 //! Equalities are decided exactly: both sides are brought to one fraction and the numerator is
 //! reduced modulo $\sin^2\theta + \cos^2\theta - 1$ (see [`crate::cas::reduce_trig`]).
 
@@ -305,6 +310,40 @@ pub fn derive() -> Result<Derivation> {
         chk.detail = format!("{}; the plain equation lacks the term {}", chk.detail, show(corr));
         checks.push(chk);
     }
+
+    // The hoop as a description (`description`): the mechanics engine's Kane and modified
+    // Lagrange equations give the same accelerations and energy as the moments of n° 7 and the
+    // memoir's Lagrange equations of n° 73, exactly. From here on the engine's accelerations are
+    // the model's: what follows (n° 8-12) and the generated systems (1) and (2) use them.
+    let ([kane, lagrange_engine], engine_energy) =
+        description::accelerations(&description::hoop(), [1, 1, 1])?;
+    checks.push(compare_all("7", "engine_kane_is_system2", "the engine's Kane equations of the hoop's description, solved for p', n', s', are system (2) of n° 7 (the moments of the inertia forces)", &["p'", "n'", "s'"], &kane, &pns));
+    checks.push(compare_all("73", "engine_lagrange_is_memoir_lagrange", "the engine's modified Lagrange equations of the description, solved for p', n', s', are the memoir's modified Lagrange equations of n° 73 solved", &["p'", "n'", "s'"], &lagrange_engine, &lag_solved));
+    checks.push(compare(
+        "7",
+        "engine_energy",
+        "the engine's total energy of the description is T + V of n° 7",
+        &engine_energy,
+        &en,
+        &one,
+    ));
+    let pns = kane;
+    let en = engine_energy;
+    // System (1) from the engine's (2): q = s + n sin(theta), r = n cos(theta).
+    let in_pqr = |e: &Atom| {
+        let n = var("r") / cos_t();
+        subst(&subst(e, "s", &(var("q") - &n * sin_t())), "n", &n)
+    };
+    let pqr_engine: Vec<Atom> = [
+        pns[0].clone(),
+        &pns[2] + &pns[1] * sin_t() + var("n") * cos_t() * var("p"),
+        &pns[1] * cos_t() - var("n") * sin_t() * var("p"),
+    ]
+    .iter()
+    .map(|e| simplify(&in_pqr(e)))
+    .collect();
+    checks.push(compare_all("8", "engine_is_system1", "the engine's accelerations written in p, q, r (q = s + n sin(theta), r = n cos(theta)) are system (1) of n° 8 solved from the moments", &["p'", "q'", "r'"], &pqr_engine, &pqr));
+    let pqr = pqr_engine;
 
     // n° 8: equilibrium.
     let e = steady::equilibrium(&pns);

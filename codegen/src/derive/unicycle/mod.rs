@@ -20,6 +20,17 @@
 //! once for the full model and once for the memoir's hypotheses of n° 33–40 (rider letters
 //! only, L = 0, the wheel kept only through its term $(B_1 - \mu_1R^2)ps\cos\theta$); n° 78
 //! drops the (s) equation (s held constant by the pedals) and keeps L.
+//!
+//! The mechanics engine derives the same unicycle from a description ([`description`]: the
+//! hoop's plus the rider's body), and [`derive`] checks exactly that its Kane and modified
+//! Lagrange equations, solved, are the ones above solved once $A_1 = C_1 + \mu_1R^2$
+//! (`engine_kane_is_memoir`, `engine_lagrange_is_memoir`, `engine_energy`). The program stays
+//! this hand derivation for that reason: the memoir keeps the wheel's $A_1$ a letter of its own
+//! (n° 24, and the merge of n° 24 and the light-wheel forms of n° 29–34 read it so), while the
+//! engine's wheel is a body of revolution, for which the relation holds, so the engine's
+//! equations have no $A_1$ to read. A wheel whose $A_1$ breaks the relation is not a body of
+//! revolution and its inertia would not be constant in the trihedron Oijk, so the engine covers
+//! every physical unicycle; the letters stay for the memoir's formulas.
 
 pub mod description;
 pub mod memoir;
@@ -400,6 +411,24 @@ pub fn derive() -> Result<Derivation> {
     let mut chk = compare("24", "energy_conservation", "with A1 = C1 + mu1 R^2 (a wheel of revolution, as n° 7 for the hoop) the energy T + V is constant along the solved equations (motor moment 0)", &with(&flow, &revolution), &zero());
     chk.detail.push_str(&format!("; without the relation dE/dt is {}", show(&flow)));
     checks.push(chk);
+
+    // The unicycle as a description (`description`: the hoop's plus the rider's body): the
+    // mechanics engine's Kane and modified Lagrange equations, solved, are the equations above
+    // solved, exactly, once A1 = C1 + mu1 R^2. The engine's wheel is a body of revolution, which
+    // implies that relation; the memoir's n° 24 keeps A1 a letter of its own, so the program
+    // stays the memoir's derivation (see the module's documentation) and the engine checks it.
+    let ([kane, lagrange_engine], engine_energy) =
+        hoop::description::accelerations(&description::unicycle(), [1, -1, -1])?;
+    let pns_revolution: Vec<Atom> = pns.iter().map(|e| with(e, &revolution)).collect();
+    checks.push(compare_all("24", "engine_kane_is_memoir", "the engine's Kane equations of the unicycle's description (theta = phi, p = phi', n = -psi', s = -thetaR'), solved for p', n', s', are the equations of n° 22-24 solved, with A1 = C1 + mu1 R^2", &kane, &pns_revolution));
+    checks.push(compare_all("74", "engine_lagrange_is_memoir", "the engine's modified Lagrange equations of the description, solved for p', n', s', are the equations of n° 22-24 solved, with A1 = C1 + mu1 R^2", &lagrange_engine, &pns_revolution));
+    checks.push(compare(
+        "24",
+        "engine_energy",
+        "the engine's total energy of the description is T + V, with A1 = C1 + mu1 R^2",
+        &engine_energy,
+        &with(&energy, &revolution),
+    ));
 
     // n° 29: (E).
     let steady0 = [("p", zero()), ("dp", zero()), ("dn", zero()), ("ds", zero())];

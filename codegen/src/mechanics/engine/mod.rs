@@ -587,3 +587,61 @@ pub fn derivation(
         redundant,
     ))
 }
+
+/// A small description's equations with every named quantity substituted: $M$ and $f$ of
+/// $M\dot u = f$ by each route, as closed forms in the parameters, the coordinates' sines and
+/// cosines (`sin(phi)`, …) and the independent speeds.
+pub struct ClosedForm {
+    /// The independent speeds, the order of the rows and columns.
+    pub speeds: Vec<String>,
+    /// Kane's mass matrix (full, symmetric) and forcing.
+    pub kane: (Vec<Vec<Atom>>, Vec<Atom>),
+    /// The modified Lagrange equations' mass matrix and forcing.
+    pub lagrange: (Vec<Vec<Atom>>, Vec<Atom>),
+    /// The total energy.
+    pub energy: Atom,
+}
+
+/// The equations of `m` by both routes in closed form ([`ClosedForm`]): the formulas of
+/// [`derivation`] substituted into each other in their order. Meant for systems small enough to
+/// be written out (the rolling hoop, the unicycle), whose closed forms a derivation compares with
+/// the memoir's and solves.
+pub fn closed_form(m: &Model) -> Result<ClosedForm, DescriptionError> {
+    use symbolica::atom::AtomCore;
+    let (d, _, _) = derivation(m, "")?;
+    let mut known: std::collections::BTreeMap<String, Atom> = std::collections::BTreeMap::new();
+    for f in &d.formulas {
+        let mut e = f.expr.clone();
+        for s in store::symbols_of(&f.expr) {
+            if let Some(v) = known.get(&s) {
+                e = e.replace(var(&s).to_pattern()).with(v.to_pattern());
+            }
+        }
+        known.insert(f.name.clone(), e);
+    }
+    let speeds = m.independent_speeds();
+    let get = |name: String| {
+        known.get(&name).cloned().ok_or_else(|| DescriptionError::Constraints {
+            reason: format!("the derivation names no {name}"),
+        })
+    };
+    let system = |prefix: &str| -> Result<(Vec<Vec<Atom>>, Vec<Atom>), DescriptionError> {
+        let mut mass = vec![vec![Atom::num(0); speeds.len()]; speeds.len()];
+        let mut forcing = Vec::with_capacity(speeds.len());
+        for (i, ui) in speeds.iter().enumerate() {
+            for (j, uj) in speeds.iter().enumerate().skip(i) {
+                let e = get(format!("{prefix}M_{ui}_{uj}"))?;
+                mass[i][j] = e.clone();
+                mass[j][i] = e;
+            }
+            forcing.push(get(format!("{prefix}f_{ui}"))?);
+        }
+        Ok((mass, forcing))
+    };
+    Ok(ClosedForm {
+        kane: system("")?,
+        lagrange: system("L_")?,
+        energy: get("energy".into())?,
+        speeds,
+    })
+}
