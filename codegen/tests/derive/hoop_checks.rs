@@ -10,7 +10,7 @@ use symbolica::atom::AtomCore;
 const EXPECTED_FALSE: [&str; 2] = ["lagrange_unmodified_nu", "lagrange_unmodified_sigma"];
 
 /// Every check the derivation must make.
-const EXPECTED_IDS: [&str; 42] = [
+const EXPECTED_IDS: [&str; 46] = [
     "inertia_a_memoir",
     "inertia_b_memoir",
     "inertia_c_memoir",
@@ -53,6 +53,10 @@ const EXPECTED_IDS: [&str; 42] = [
     "equilibrium_n12_memoir",
     "stability_n12_memoir",
     "skid_n12_memoir",
+    "engine_kane_is_system2",
+    "engine_lagrange_is_memoir_lagrange",
+    "engine_energy",
+    "engine_is_system1",
 ];
 
 fn checks_hold_except_the_unmodified_lagrange_ones() {

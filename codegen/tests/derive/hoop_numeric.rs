@@ -91,15 +91,25 @@ fn derived_formulas_match_hand_values() {
     }
 }
 
+/// Routh's threshold for the thin ring rolling upright (θ = 0, n = 0): the generated stability
+/// first member is (8/3)(s² − g/(4R)), so it changes sign at s² = g/(4R). Checked at relative
+/// distances 1e-3, 1e-6 and 1e-9 from the threshold on both sides, the sign and the value: the
+/// error budget is the rounding of s² and g/(4R) (a few ulps of terms of size (8/3)s² ≈ 13 here,
+/// so 1e-14 of that), far below the first member's 2.6e-8 at 1e-9 from the threshold. A
+/// threshold off by one part in 1e9 (g/(4R) scaled by 1 + 2e-9) fails at 1e-9 (run and seen).
 fn routh_threshold_numerically() {
-    // θ = 0, n = 0: the stability first member changes sign at s² = g/(4R).
     let d = crate::derived("hoop");
     let (r, g): (f64, f64) = (0.5, 9.81);
     let s_crit = (g / (4.0 * r)).sqrt();
-    for (s, positive) in [(s_crit * 1.001, true), (s_crit * 0.999, false)] {
-        let x = Point { r, g, mu: 1.0, theta: 0.0, p: 0.0, q: 0.0, rr: 0.0, n: 0.0, s };
-        let v = eval(d, "stability", &x);
-        assert_eq!(v > 0.0, positive, "stability at s = {s} is {v}");
+    for eps in [1e-3, 1e-6, 1e-9] {
+        for (s, positive) in [(s_crit * (1.0 + eps), true), (s_crit * (1.0 - eps), false)] {
+            let x = Point { r, g, mu: 1.0, theta: 0.0, p: 0.0, q: 0.0, rr: 0.0, n: 0.0, s };
+            let v = eval(d, "stability", &x);
+            assert_eq!(v > 0.0, positive, "stability at s = {s} (eps {eps}) is {v}");
+            let routh = 8.0 / 3.0 * (s * s - g / (4.0 * r));
+            let budget = 1e-14 * 8.0 / 3.0 * s * s;
+            assert!((v - routh).abs() <= budget, "s = {s}: {v} against Routh's {routh}");
+        }
     }
 }
 
