@@ -156,3 +156,25 @@ fn bad_inputs_are_named_with_exit_code_2_and_nothing_printed() {
     assert_eq!((code, out.as_str()), (2, ""));
     assert!(err.contains("'--batch <FILE.csv>' cannot be used with '--torque"), "{err}");
 }
+
+/// An integration that fails is said to be one, with the method's settings and what to change
+/// (before, a driven run printed the bare failure and the command's usage): Radau5 at rtol
+/// 1e-15 and atol 1e-300 rejects its very first steps (no accepted step, so no restart), with
+/// the feedback as without it.
+#[test]
+fn a_failed_integration_names_the_settings_to_change() {
+    for extra in [&[][..], &["--gain", "k_steer_roll_rate=-20"][..]] {
+        let tight = ["--method", "radau5", "--rtol", "1e-15", "--atol", "1e-300"];
+        let (code, out, err) = carvallo(&[&BASE[..], &tight, extra].concat());
+        assert_eq!(code, 2, "{err}");
+        assert!(out.is_empty(), "{out}");
+        let first = err.lines().next().unwrap_or("");
+        assert_eq!(
+            first,
+            "error: the integration diverged: the integration failed at t = 0 s: step size below \
+             double precision (--method radau5, --rtol 1e-15, --atol 1e-300); try another \
+             --method, --rtol or --atol",
+            "{extra:?}"
+        );
+    }
+}

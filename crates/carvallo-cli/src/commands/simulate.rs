@@ -447,6 +447,27 @@ pub(crate) fn limits_json(v: &mut serde_json::Value, bike: &WhippleNonlinear, li
     v["singular_t"] = json!(singular.map(|(t, _)| t));
 }
 
+/// The message of a run that left the state's domain (a fixed step too long for the rates) or
+/// whose adaptive method gave up (its step below double precision, more than a million
+/// steps): the failure and the options to change, `--step` for RK4, the tolerances and the
+/// method for the adaptive ones (Radau5 is restarted from its last accepted step when its
+/// step collapses, so what reaches here collapsed with no step accepted since).
+pub(crate) fn diverged(e: &NonlinearError, how: &Integration, step: f64) -> String {
+    let m = how.method.name();
+    if how.method.is_adaptive() {
+        format!(
+            "the integration diverged: {e} (--method {m}, --rtol {:e}, --atol {:e}); try \
+             another --method, --rtol or --atol",
+            how.rtol, how.atol
+        )
+    } else {
+        format!(
+            "the integration diverged: {e} (--method {m}, --step {step}); take a smaller \
+             --step or an adaptive --method"
+        )
+    }
+}
+
 /// The message of a start that [`WhippleNonlinear::check_start`] refuses, naming `--lean0`.
 pub(crate) fn bad_start(lean0: f64, e: &NonlinearError) -> String {
     match e {
@@ -508,13 +529,9 @@ pub fn run(cmd: &Args) -> Result<String, String> {
     }
     // An error after the start is the integration leaving the state's domain (a step too long
     // for the rates): said so, with the options to change.
-    let tr = bike.simulate_until(start, &grid, &how, stops, crate::interrupt::interrupt_flag()).map_err(|e| {
-        format!(
-            "the integration diverged: {e} (--method {}{}); take a smaller --step or an adaptive --method",
-            how.method.name(),
-            if how.method.is_adaptive() { String::new() } else { format!(", --step {}", step) }
-        )
-    })?;
+    let tr = bike
+        .simulate_until(start, &grid, &how, stops, crate::interrupt::interrupt_flag())
+        .map_err(|e| diverged(&e, &how, *step))?;
     let events: Vec<(String, f64)> = tr.event.iter().map(|&(k, t)| (stops[k].text(), t)).collect();
     let end = tr.times.last().copied().unwrap_or(0.0);
     let last = tr.samples.last().map_or([f64::NAN; 3], |p| [p.state.lean, p.pitch, p.state.steer]);

@@ -23,8 +23,8 @@ use std::path::{Path, PathBuf};
 
 use carvallo::numerics::integrate::{Grid, Integration};
 use carvallo::whipple_nonlinear::{
-    Feedback, ForcedSample, Impulse, InputError, Inputs, Series, Signal, State, Stop,
-    WhippleNonlinear,
+    Feedback, ForcedSample, Impulse, InputError, Inputs, NonlinearError, Series, Signal, State,
+    Stop, WhippleNonlinear,
 };
 use serde_json::{json, Value};
 
@@ -299,7 +299,10 @@ pub fn run(
     let inputs = args.inputs()?;
     let tr = bike
         .simulate_forced_until(start, grid, how, stops, &inputs, crate::interrupt::interrupt_flag())
-        .map_err(|e| e.to_string())?;
+        .map_err(|e| match e {
+            NonlinearError::Integration { .. } => super::simulate::diverged(&e, how, grid.h),
+            e => e.to_string(),
+        })?;
     let events: Vec<(String, f64)> = tr.event.iter().map(|&(k, t)| (stops[k].text(), t)).collect();
     let end = tr.times.last().copied().unwrap_or(0.0);
     let last = tr

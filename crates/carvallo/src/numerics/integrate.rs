@@ -28,6 +28,20 @@
 //! accepted rather than rejected: such a run ends with the model's error at that step
 //! (DOPRI5 and DOP853 shrink the step instead and may pass).
 //!
+//! The crate's Radau5 (0.7.0) keeps its iteration matrices after a rejected step and after a
+//! change of step whose Newton iterations contracted fast, where Hairer's RADAU5 decomposes
+//! them again for the new step (and refreshes a Jacobian that is not fresh): `step` sets
+//! `call_decomp` only after an accepted step that also refreshes the Jacobian, so when the
+//! step changes after a run of steps at one size that skipped both, the simplified Newton
+//! iterations solve with $(u_1/h_{old}) I - J$ for the step $h$. They converge slowly or
+//! diverge, the step is rejected and halved, and the matrix stays the old one: the error
+//! estimate, solved with the same matrix, grows as $h_{old}/h$, so every smaller step is
+//! rejected too, down to $h < 10^{-16} h_{old}$, the crate's "step size below double
+//! precision". When that happens after at least one accepted step since the run (re)started,
+//! the run is restarted from the last accepted step with a fresh solver (its first step the
+//! last accepted one), which computes the Jacobian and the matrices anew, at most
+//! [`MAX_RESTARTS`] times; a collapse with no accepted step since is reported.
+//!
 //! The grid of samples, the event functions and an observer of every accepted step are the
 //! caller's; [`integrate`] returns the counts ([`Stats`]) and the event that ended the run.
 
@@ -411,6 +425,10 @@ type Evaluations<const N: usize> = [(f64, [f64; N], [f64; N]); RECENT];
 
 /// The most steps (accepted or rejected) an adaptive run may attempt.
 const MAX_STEPS: usize = 1_000_000;
+
+/// The most times a Radau5 run is restarted from its last accepted step after the crate's
+/// step collapsed (see the module docs).
+pub const MAX_RESTARTS: usize = 100;
 
 /// After so many failed or non-finite evaluations in a row the wrapped right-hand side is no
 /// longer called (the step control only shrinks the step until it gives up).
@@ -938,6 +956,9 @@ struct Sampler<'a, 'b, const N: usize, E> {
     /// The flag that ends the run early, and whether it did.
     stop: &'a AtomicBool,
     interrupted: bool,
+    /// The accepted steps shown, and the length of the last one.
+    accepted: usize,
+    last_h: f64,
 }
 
 impl<const N: usize, E> Sampler<'_, '_, N, E> {
@@ -1010,6 +1031,8 @@ impl<const N: usize, E> Solout<f64, [f64; N]> for Sampler<'_, '_, N, E> {
             self.non_finite = Some(t_curr);
             return ControlFlag::Terminate;
         }
+        self.accepted += 1;
+        self.last_h = t_curr - t_prev;
         let dop853 = self.dop853;
         let mut interp = |t: f64| {
             let t = t.clamp(t_prev, t_curr);
@@ -1050,7 +1073,7 @@ impl<const N: usize, E> Solout<f64, [f64; N]> for Sampler<'_, '_, N, E> {
 /// An adaptive method of the crate, set to the tolerances, over the grid's span.
 #[allow(clippy::too_many_arguments)]
 fn adaptive<'e, const N: usize, E: Clone, S>(
-    make: impl FnOnce(f64) -> S,
+    make: impl Fn(f64) -> S,
     how: &Integration,
     order: i32,
     grid: &Grid,
@@ -1098,7 +1121,6 @@ where
     };
     let h0 = (100.0 * h).min(h1).min(end);
     let h0 = if h0.is_finite() && h0 > 0.0 { h0 } else { 1e-6f64.min(end) };
-    let mut method = make(h0);
     let mut sampler = Sampler {
         system: &system,
         dop853: how.method == Method::Dop853,
@@ -1114,34 +1136,55 @@ where
         end: (0.0, x0),
         stop,
         interrupted: false,
+        accepted: 0,
+        last_h: h0,
     };
-    let result = solve_ode(&mut method, &system, 0.0, grid.end(), &x0, &mut sampler);
-    if let Some(e) = sampler.failure.take() {
-        return Err(IntegrateError::Model(e));
-    }
-    if let Some(t) = sampler.non_finite {
-        return Err(match system.failure.borrow_mut().take() {
-            Some(f) => IntegrateError::Model(f),
-            None => IntegrateError::NotFinite { t },
-        });
-    }
-    let solution = match result {
-        Ok(s) => s,
-        Err(e) => {
-            if let Some(f) = system.failure.borrow_mut().take() {
-                return Err(IntegrateError::Model(f));
-            }
-            return Err(match e {
-                Error::StepSize { t, .. } => IntegrateError::StepTooSmall { t },
-                Error::Stiffness { t, .. } => IntegrateError::Stiff { t },
-                Error::MaxSteps { t, .. } => IntegrateError::TooManySteps { t },
-                _ => IntegrateError::StepTooSmall { t: sampler.end.0 },
+    // Radau5 restarts from its last accepted step when the crate's step collapses (module
+    // docs): the accepted steps before the last restart, counted by the sampler (the crate
+    // returns no counts with its error, so the rejected attempts of a collapsed segment are
+    // not counted).
+    let (mut start, mut h_start, mut earlier, mut restarts) = ((0.0, x0), h0, 0, 0);
+    let solution = loop {
+        let mut method = make(h_start);
+        let result = solve_ode(&mut method, &system, start.0, end, &start.1, &mut sampler);
+        if let Some(e) = sampler.failure.take() {
+            return Err(IntegrateError::Model(e));
+        }
+        if let Some(t) = sampler.non_finite {
+            return Err(match system.failure.borrow_mut().take() {
+                Some(f) => IntegrateError::Model(f),
+                None => IntegrateError::NotFinite { t },
             });
+        }
+        match result {
+            Ok(s) => break s,
+            Err(e) => {
+                if let Some(f) = system.failure.borrow_mut().take() {
+                    return Err(IntegrateError::Model(f));
+                }
+                let progressed = sampler.end.0 > start.0;
+                if matches!(e, Error::StepSize { .. })
+                    && how.method.is_implicit()
+                    && progressed
+                    && restarts < MAX_RESTARTS
+                {
+                    restarts += 1;
+                    earlier = sampler.accepted;
+                    (start, h_start) = (sampler.end, sampler.last_h);
+                    continue;
+                }
+                return Err(match e {
+                    Error::StepSize { t, .. } => IntegrateError::StepTooSmall { t },
+                    Error::Stiffness { t, .. } => IntegrateError::Stiff { t },
+                    Error::MaxSteps { t, .. } => IntegrateError::TooManySteps { t },
+                    _ => IntegrateError::StepTooSmall { t: sampler.end.0 },
+                });
+            }
         }
     };
     let stats = Stats {
         rhs_evaluations: system.evaluations.get(),
-        steps: solution.steps.accepted,
+        steps: earlier + solution.steps.accepted,
         rejected_steps: solution.steps.rejected,
     };
     if sampler.interrupted {
