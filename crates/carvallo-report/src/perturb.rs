@@ -318,6 +318,8 @@ pub fn describe(pert: &Perturbation, value: f64) -> String {
     let rel = pert.factor - 1.0;
     let change = if pert.factor == -1.0 {
         "negated".to_string()
+    } else if pert.factor == 2.0 {
+        "doubled".to_string()
     } else {
         format!("scaled by 1 {} {:.0e}", if rel < 0.0 { "-" } else { "+" }, rel.abs())
     };

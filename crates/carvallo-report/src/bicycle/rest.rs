@@ -227,7 +227,7 @@ pub fn claims() -> Vec<crate::claims::Claim> {
         "rest-light-front-wheel-rests-at-lowest-frame",
         "67",
         "'Si l'on néglige le poids de la roue directrice devant celui du cadre, la position d'équilibre est celle qui donne au cadre la position la plus basse dans son plan.'",
-        "the handlebar's rest position gamma67 (dU/dgamma = 0, stable) against the frame's lowest position gamma55 at theta = 20° (carvallo::bicycle_rest, n° 117's loaded frame on n° 52's geometry) with the front wheel's mass 5, 0.5 and 0.05 kg: the shift must vanish with the wheel's mass",
+        "the handlebar's rest position gamma67 (dU/dgamma = 0, stable) against the frame's lowest position gamma55 at theta = 20° (carvallo::bicycle_rest, n° 117's loaded frame on n° 52's geometry) with the front wheel's mass 5, 0.5 and 0.05 kg: the shift must vanish with the wheel's mass. Holds by construction because the potential of n° 67 is g (μ h_frame + μ1 h_wheel) and nothing else: as μ1 → 0 its stationary point in γ is by definition that of h_frame, the frame's lowest position, whatever the geometry, masses or centre of gravity; the check shows the limit is regular (the shift proportional to μ1) on the derived contact geometry, and no perturbation that keeps a potential of that form can break it",
         &[
             ("shift_deg_mu1_5kg", shifts[0]),
             ("shift_deg_mu1_0_5kg", shifts[1]),

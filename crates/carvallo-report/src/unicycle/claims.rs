@@ -1068,7 +1068,7 @@ fn solved_form() -> Claim {
         "unicycle-solved-form",
         "34",
         "Solved for p', n', s', the equations have the form p' = f(n, s, theta), n' = p g(n, s, theta), s' = p h(n, s, theta), which the transformations of n° 8–9 need.",
-        "The generated full model's p', n', s' at p = 0, 0.7, 1.4 (other state and parameters seeded, 16 points): p' independent of p, n' and s' zero at p = 0 and linear in p; with L = 0 and with L = 1.",
+        "The generated full model's p', n', s' at p = 0, 0.7, 1.4 (other state and parameters seeded, 16 points): p' independent of p, n' and s' zero at p = 0 and linear in p; with L = 0 and with L = 1. Holds by construction because the form is a statement about which monomials the derived equations contain, not about their coefficients: with L = 0 no term of (p) carries p or p' (p enters the moments only through the compound centrifugal terms of (n) and (s), each a product of p with a rate), so a coefficient scaled or an ingredient changed keeps it (every argument of pns_dp, pns_dn and pns_ds scaled by -1, 0, 1.01 and 2, and each of their first 12 constants by -1, 1.01 and 2, one at a time, leaves the verdict, tried on branch hC); only a term of another form, which the derivation cannot give, would break it",
         &[("max_dev_L0_in_g_over_R", with_l0), ("max_dev_L1_in_g_over_R", with_l1)],
         policy::claim(holds, Verdict::DerivationDiffers),
         "The form holds exactly with L = 0 (wheel included); with L != 0 it is lost (terms L p' cos and L p^2 sin), which is why n° 33 sets L = 0 and n° 78 needs another method.",
@@ -1133,7 +1133,7 @@ fn stability_biquadratic() -> Claim {
         "unicycle-stability-biquadratic",
         "35",
         "(S) has the form a n^2 + b n + c s^2 + d > 0 with a, b, c, d functions of theta; with s = e n + f/n from (E) it becomes a biquadratic inequality in n (terms in n^2, 1/n^2 and a constant).",
-        "The generated stability first member of the full model (L = 0) at 16 seeded unicycles: its coefficients read at (s, n) = (0, 0), (0, 1), (1, 0), (1, 1) and tested at 4 seeded (s, n) each; along the generated (E), n^2 times it at n^2 = 1, 2, 3 fitted by a quadratic in n^2 and tested at n^2 = 0.25, 0.6, 5.",
+        "The generated stability first member of the full model (L = 0) at 16 seeded unicycles: its coefficients read at (s, n) = (0, 0), (0, 1), (1, 0), (1, 1) and tested at 4 seeded (s, n) each; along the generated (E), n^2 times it at n^2 = 1, 2, 3 fitted by a quadratic in n^2 and tested at n^2 = 0.25, 0.6, 5. Holds by construction because (S) at p = 0 is the constant term of the n° 76 determinant, a sum of products of two first-order terms of the equations, each linear in n and s or free of them: a coefficient scaled, an ingredient changed or an argument's sign flipped keeps a n^2 + b s n + c s^2 + d (scaling n or s maps the form onto itself), and along (E), which is linear in s, n^2 (S) stays a quadratic in n^2; only a term of another degree, which the derivation cannot give, would break it",
         &[("max_rel_diff_form", form), ("max_rel_diff_biquadratic", biq)],
         policy::claim(holds, Verdict::DerivationDiffers),
         "The form is a n^2 + b s n + c s^2 + d: the printed « b n » lost its s (the memoir's next sentence, terms in n^2, 1/n^2 and a constant only, needs b s n; with b n there would be a term in n). With it the inequality is biquadratic, for the full model too.",
@@ -1180,7 +1180,7 @@ pub(super) fn light_rider_limit() -> (f64, f64, f64) {
     let hoop = Hoop::new(base["R"], 5.0, base["g"]).ok();
     let h = hoop.map_or(f64::NAN, |h| {
         let u = h.rate_unit();
-        bisect(|s| h.stability(0.0, s * u, 0.0), 0.0, 100.0).powi(2)
+        bisect(|s| crate::perturb::hoop_stability(&h, 0.0, s * u, 0.0), 0.0, 100.0).powi(2)
     });
     (none, small, h)
 }
@@ -1262,17 +1262,35 @@ fn stability_from_spin() -> Claim {
         let scale = p["C"] * p["g"] / p["R"];
         rider_term = mx(rider_term, diff(&p, "p", 1e-3, |q| out(q, "rider_n")).abs() / scale);
     }
-    // A wheel whose B1 is only mu1 R^2: no gyroscopic excess.
-    let rider = Rider { mass: 60.0, height: 1.25, a: 100.0, b: 100.0, c: 0.77, l: 0.0 };
-    let flat = Wheel { mass: 5.0, a1: 0.625 + 1.25, b1: 1.25, c1: 0.625 };
-    let none = Unicycle::new(0.5, 9.81, rider, flat).ok().map(|u| u.straight_running_threshold());
-    let holds = rider_term <= 1e-9 && matches!(none, Some(None));
+    // A wheel whose B1 is only mu1 R^2: no gyroscopic excess. Its threshold from the generated
+    // (S) of the full model (what Unicycle::straight_running_threshold evaluates), so that a
+    // perturbation of that output reaches it.
+    let flat: Point = BTreeMap::from([
+        ("R", 0.5),
+        ("g", 9.81),
+        ("mu", 60.0),
+        ("z", 1.25),
+        ("A", 100.0),
+        ("B", 100.0),
+        ("C", 0.77),
+        ("L", 0.0),
+        ("mu1", 5.0),
+        ("A1", 0.625 + 1.25),
+        ("B1", 1.25),
+        ("C1", 0.625),
+        ("p", 0.0),
+        ("dp", 0.0),
+        ("dn", 0.0),
+        ("ds", 0.0),
+    ]);
+    let found = stability_threshold(&flat, "stability").is_finite();
+    let holds = rider_term <= 1e-9 && !found;
     Claim::new(
         "unicycle-stability-from-wheel-spin",
         "37",
         "Only the compound centrifugal forces can give stability; in straight running the rider's are very weak, having no sensible rotation: the stability comes from the wheel's rotation.",
-        "The derivative in p of the rider's generated (n) first member at theta = 0, n = 0 (16 seeded states, relative to C g/R); and the full model's straight-running threshold for the n° 36 example with a wheel whose B1 - mu1 R^2 is zero (B1 = mu1 R^2).",
-        &[("max_rider_p_term", rider_term), ("threshold_found_without_spin_excess", if matches!(none, Some(Some(_))) { 1.0 } else { 0.0 })],
+        "The derivative in p of the rider's generated (n) first member at theta = 0, n = 0 (16 seeded states, relative to C g/R); and the full model's straight-running threshold (the root in s of the generated stability first member at theta = 0, n = 0, L = 0, searched up to 1000 sqrt(g/R)) for the n° 36 example with a wheel whose B1 - mu1 R^2 is zero (B1 = mu1 R^2).",
+        &[("max_rider_p_term", rider_term), ("threshold_found_without_spin_excess", if found { 1.0 } else { 0.0 })],
         policy::claim(holds, Verdict::DerivationDiffers),
         "The rider contributes nothing to the p s coupling of (n) in straight running; without the wheel's gyroscopic term (B1 - mu1 R^2) p s cos no speed stabilises.",
     )
@@ -1361,7 +1379,7 @@ fn accelerating_couple() -> Claim {
         "unicycle-accelerating-couple",
         "37",
         "The rotation p of the wheel turns the velocity V = sR of the rear end A of the horizontal diameter, giving A the acceleration W = VV'/dt = Rsp normal to the wheel, and the front end B the opposite one: an « accelerating couple » about the vertical OK of moment psR × 2R = 2psR² (per unit mass at A and B), whose inertia couple turns the hoop toward its lean.",
-        "a rim point of a wheel of radius R = 0.5 m spinning at s = 10 rad/s about its axle and leaning at p = 0.3 rad/s about OI: its position in closed form, its acceleration by a central second difference (step 1e-4 s, error about 1e-8 relative); the normal (J) accelerations at A and B, the couple of the pair about OK, and the moment of a ring of unit mass (720 elements) against the rate of change of its spin momentum R² s p (the second route). Holds if the couple is 2psR² within 1e-6",
+        "a rim point of a wheel of radius R = 0.5 m spinning at s = 10 rad/s about its axle and leaning at p = 0.3 rad/s about OI: its position in closed form, its acceleration by a central second difference (step 1e-4 s, error about 1e-8 relative); the normal (J) accelerations at A and B, the couple of the pair about OK, and the moment of a ring of unit mass (720 elements) against the rate of change of its spin momentum R² s p (the second route). Holds if the couple is 2psR² within 1e-6. Holds by construction because it is the kinematics of one rim point in closed form (a spin s about the axle composed with a lean rate p about OI) and takes no ingredient of the derived equations: there is no generated expression of it to perturb, and its verdict is decided by the factor 2 between W = Rsp and the Coriolis acceleration 2 p × V, which no mass, moment or coefficient enters; its two routes (the pair A, B and the ring against R² s p) check each other, and the couple as it enters the hoop's equations (the 4/3 s n of (E)) is broken by hoop-turns-toward-lean's perturbation",
         &[
             ("normal acceleration at A (m/s²)", normal_a),
             ("the memoir's W = Rsp (m/s²)", memoir_w),
@@ -1807,11 +1825,18 @@ fn s_misses_e() -> Claim {
 // n° 42 ------------------------------------------------------------------------------------
 
 fn stable_principle() -> Claim {
+    stable_principle_check(1.0)
+}
+
+/// The check of [`stable_principle`] with the rider's arm below the axle `arm_sign` (R - h):
+/// 1 as the memoir, -1 for the centre of gravity reflected about the axle.
+fn stable_principle_check(arm_sign: f64) -> Claim {
     // Wheel hoops of the same linear density as the 5 kg, 0.5 m wheel; rider 60 kg, moment
     // 10 kg m^2 about its centre of gravity, seated centre of gravity 1.10 m above the ground.
     let make = |r: f64, height: f64| {
         let m = 5.0 * r / 0.5;
-        Pitch::new(r, 9.81, m, m * r * r, 60.0, 10.0, Pitch::arm_for_height(r, height)).ok()
+        let arm = arm_sign * Pitch::arm_for_height(r, height);
+        Pitch::new(r, 9.81, m, m * r * r, 60.0, 10.0, arm).ok()
     };
     let mut radii = Vec::new();
     let mut stable = Vec::new();
@@ -1839,8 +1864,13 @@ fn stable_principle() -> Claim {
 }
 
 fn big_wheel_lean() -> Claim {
-    let small = example(0.5, 5.0, 1.25, 0.77, 0.0);
-    let big = example(1.2, 12.0, 1.10, 0.77, 0.0);
+    big_wheel_lean_check(HOOP_SPIN)
+}
+
+/// The check of [`big_wheel_lean`] with the wheels' moment about their axle `spin` mu1 R^2.
+fn big_wheel_lean_check(spin: f64) -> Claim {
+    let small = example_spin(0.5, 5.0, 1.25, 0.77, 0.0, spin);
+    let big = example_spin(1.2, 12.0, 1.10, 0.77, 0.0, spin);
     let (su, bu) = (threshold_units(&small), threshold_units(&big));
     let (sv, bv) = (threshold_speed(&small), threshold_speed(&big));
     let holds = bv < 0.95 * sv;
@@ -1971,13 +2001,19 @@ fn growth_per_period(l: f64, s: f64) -> f64 {
 }
 
 fn l_sign() -> Claim {
+    l_sign_check(1.0)
+}
+
+/// The check of [`l_sign`] with the rider's product of inertia entered as `l_sign` L in the
+/// simulated equations and in the generated n° 78 coefficients (1 as derived, -1 flipped).
+fn l_sign_check(l_sign: f64) -> Claim {
     let mut envelopes = BTreeMap::new();
     let threshold = example(0.5, 5.0, 1.25, 0.77, 0.0)
         .and_then(|u| u.straight_running_threshold())
         .unwrap_or(f64::NAN);
     let s = 2.0 * threshold;
     for l in [-0.2, 0.0, 0.2] {
-        let Some(u) = example(0.5, 5.0, 1.25, 0.77, l) else { continue };
+        let Some(u) = example(0.5, 5.0, 1.25, 0.77, l_sign * l) else { continue };
         let leans = u.simulate_constant_speed([0.01, 0.0, 0.0], s, 2e-3, 5000);
         let half = leans.len() / 2;
         let first = leans[..half].iter().fold(0.0f64, |a, &b| a.max(b.abs()));
@@ -1995,10 +2031,10 @@ fn l_sign() -> Claim {
     }
     let mut oscillating = true;
     for l in [-0.5, 0.05, 0.5] {
-        let (c2, c1, c0) = char78(l, s);
+        let (c2, c1, c0) = char78(l_sign * l, s);
         oscillating &= c1 * c1 - 4.0 * c2 * c0 < 0.0;
     }
-    let (small, large) = (growth_per_period(0.05, s), growth_per_period(0.5, s));
+    let (small, large) = (growth_per_period(l_sign * 0.05, s), growth_per_period(l_sign * 0.5, s));
     let get = |k: &str| envelopes.get(k).copied().unwrap_or(f64::NAN);
     let holds = get("pos") > 1.01
         && get("neg") < 0.99
@@ -2127,10 +2163,40 @@ const CHAR78_C2_A_FLIPPED: Perturbation = scaled("char78_c2", "A", -1.0);
 /// The rider's product of inertia L in the generated middle coefficient of n° 78 negated.
 const CHAR78_C1_L_FLIPPED: Perturbation = scaled("char78_c1", "L", -1.0);
 
+/// The weight g in the generated complete skid D of n° 30 (`skid_full`) negated: its
+/// denominator g - (p' z sin + p^2 z cos) becomes -g - (…), the sign the memoir's misprint
+/// gives the p^2 term relative to g.
+const SKID_FULL_G_FLIPPED: Perturbation = scaled("skid_full", "g", -1.0);
+/// The wheel's moment about its axle B1 in the generated stability first member of the full
+/// model (`stability`) doubled.
+const STABILITY_B1_DOUBLED: Perturbation = scaled("stability", "B1", 2.0);
+/// The weight g in the hoop's generated (S) of n° 9 (`stability` of generated/hoop.ir)
+/// doubled: its weight term -2/3 g cos/R becomes -4/3 g cos/R.
+const HOOP_S_G_DOUBLED: Perturbation =
+    Perturbation { model: "hoop", output: "stability", target: Target::Argument("g"), factor: 2.0 };
+
+/// The wheel's moment about its axle twice the hoop's: B1 = 4 mu1 R^2 (a perturbation of the
+/// wheel's spin, its other moments kept).
+const DOUBLE_SPIN: f64 = 4.0;
+
 /// The memoir's claims of the unicycle, with the falsification of those that a perturbation
 /// of the generated `unicycle` program breaks ([`crate::perturb::falsify`]).
 pub fn claims() -> Vec<Claim> {
-    let table: [crate::perturb::Row; 17] = [
+    let table: [crate::perturb::Row; 20] = [
+        (
+            &SKID_FULL_G_FLIPPED,
+            || {
+                let (a, b) = abrupt_turn();
+                vec![a, b]
+            },
+            &["unicycle-abrupt-turn-increase"],
+        ),
+        (
+            &STABILITY_B1_DOUBLED,
+            || vec![stability_from_spin()],
+            &["unicycle-stability-from-wheel-spin"],
+        ),
+        (&HOOP_S_G_DOUBLED, || vec![light_rider_hoop()], &["unicycle-light-rider-hoop-limit"]),
         (
             &TRINOMIAL_Z,
             || vec![bracket_positive(), stability_circle()],
@@ -2188,6 +2254,18 @@ pub fn claims() -> Vec<Claim> {
             "unicycle-stability-decreases-with-wheel" => {
                 c.falsified_by(FLAT, stability_decreases_check(FLAT_SPIN))
             }
+            "unicycle-78-l-sign" => c.falsified_by(
+                "the rider's product of inertia L entered with its sign flipped (L -> -L) in the simulated (p), (n) equations with s held constant and in the generated n° 78 coefficients, the n° 36 example otherwise",
+                l_sign_check(-1.0),
+            ),
+            "unicycle-stable-principle" => c.falsified_by(
+                "the rider's centre of gravity reflected about the axle in the pitch model (arm h - R above it instead of R - h below it), the wheels and rider otherwise as the check's",
+                stable_principle_check(-1.0),
+            ),
+            "unicycle-big-wheel-lean-stability" => c.falsified_by(
+                "both wheels' moment about their axle twice the hoop's, B1 = 4 mu1 R^2 instead of 2 mu1 R^2 (their other moments kept), the two unicycles otherwise as the check's",
+                big_wheel_lean_check(DOUBLE_SPIN),
+            ),
             "unicycle-straight-running-oscillates" => {
                 c.falsified_by(FLAT, straight_oscillates_check(FLAT_SPIN))
             }
