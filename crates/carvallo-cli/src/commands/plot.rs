@@ -136,12 +136,17 @@ pub fn run(args: &Args) -> Result<String, String> {
                     bikes.len()
                 ));
             };
-            let p = bicycle(b, &data(r))?;
-            let v_max = args.v_max.unwrap_or_else(|| {
-                let window = carvallo::whipple::Whipple::new(p.clone()).stability_window();
-                window.capsize_speed.map_or(10.0, |c| (1.25 * c).clamp(10.0, 30.0).ceil())
-            });
-            figures::fig_modes(&p, &names[0], v_max)
+            if let Some(rider) = crate::args::lean_rider(b, &data(r))? {
+                let v_max = args.v_max.unwrap_or(10.0);
+                figures::fig_rider_modes(&rider, &names[0], v_max)
+            } else {
+                let p = bicycle(b, &data(r))?;
+                let v_max = args.v_max.unwrap_or_else(|| {
+                    let window = carvallo::whipple::Whipple::new(p.clone()).stability_window();
+                    window.capsize_speed.map_or(10.0, |c| (1.25 * c).clamp(10.0, 30.0).ceil())
+                });
+                figures::fig_modes(&p, &names[0], v_max)
+            }
         }
         Figure::Bode => {
             let mut params = Vec::new();
