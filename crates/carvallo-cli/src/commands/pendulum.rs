@@ -226,8 +226,11 @@ pub fn eig(c: &EigArgs) -> Result<String, String> {
     } else {
         s.push_str("eigenvalues (1/s):\n");
     }
+    // The closed loop's turning mode is zero only to rounding (1e-16), which would print as
+    // -0.000000 on one platform and +0.000000 on another.
+    let zero = |v: f64| if v.abs() < 1e-9 { 0.0 } else { v };
     for z in ev {
-        let _ = writeln!(s, "  {:+.6} {:+.6}i", z.re, z.im);
+        let _ = writeln!(s, "  {:+.6} {:+.6}i", zero(z.re), zero(z.im));
     }
     let lambda = lin.growth_rate();
     if lambda > 0.0 && feedback.is_none() {
