@@ -162,7 +162,7 @@ struct Scene<'a> {
     /// The model's own values of its arguments (parameters and state), each drawn within
     /// ±20 % of it at every point; `None` for the hoop's, the unicycle's and the Whipple
     /// bicycle's scenes, whose arguments [`arg_value`] gives.
-    values: Option<&'a dyn Fn(&str) -> Option<f64>>,
+    values: Option<fn(&str) -> Option<f64>>,
 }
 
 /// The wheeled pendulum's arguments: the nominal transporter
@@ -1552,7 +1552,7 @@ pub fn run(cfg: &Config) -> Report {
             outputs: wp::OUTPUTS,
             ops: wp::OP_COUNT,
             eval: scene_fn!(carvallo::wheeled_pendulum::dynamics_scene),
-            values: Some(&pendulum_value),
+            values: Some(pendulum_value),
         },
         Scene {
             name: "wheeled pendulum linearisation at v",
@@ -1561,7 +1561,7 @@ pub fn run(cfg: &Config) -> Report {
             outputs: wpl::OUTPUTS,
             ops: wpl::OP_COUNT,
             eval: scene_fn!(carvallo::wheeled_pendulum::linear_scene),
-            values: Some(&pendulum_value),
+            values: Some(pendulum_value),
         },
         Scene {
             name: "leaning rider M, f, dependent rates, contact velocity",
@@ -1570,7 +1570,7 @@ pub fn run(cfg: &Config) -> Report {
             outputs: lr::OUTPUTS,
             ops: lr::OP_COUNT,
             eval: scene_fn!(carvallo::whipple::lean_rider::dynamics_scene),
-            values: Some(&rider_value),
+            values: Some(rider_value),
         },
     ];
     let mut ratios = Vec::new();

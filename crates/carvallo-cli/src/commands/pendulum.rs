@@ -139,6 +139,9 @@ pub struct EigArgs {
     pub json: bool,
 }
 
+/// A feedback with the poles it was placed at (`None` when `--gain` gave K).
+type Chosen = (Feedback, Option<[f64; 3]>);
+
 /// The feedback of `--gain` (with the poles `--gain placed` put it at) on the linear model
 /// `lin`, `None` without `--gain`; `--poles` without `--gain placed`, poles or gains the
 /// model refuses are errors naming them.
@@ -146,7 +149,7 @@ fn feedback_of(
     lin: &LinearModel,
     gain: &Option<GainArg>,
     poles: Option<[f64; 3]>,
-) -> Result<Option<(Feedback, Option<[f64; 3]>)>, String> {
+) -> Result<Option<Chosen>, String> {
     if poles.is_some() && *gain != Some(GainArg::Placed) {
         return Err("invalid --poles: they are placed by --gain placed".into());
     }
@@ -449,7 +452,7 @@ pub fn simulate(c: &SimulateArgs) -> Result<String, String> {
 fn render(
     c: &SimulateArgs,
     run: &Trajectory,
-    feedback: &Option<(Feedback, Option<[f64; 3]>)>,
+    feedback: &Option<Chosen>,
     status: &str,
     rows: &[[f64; 10]],
     method: &str,
