@@ -112,6 +112,8 @@ def test_the_guides_example_runs_as_written():
     exec(code, ns)
     assert ns["ev"].shape == (3, 6) and (ns["ev"].real[:, 0] > 6.5).all()
     assert ns["A"].shape == (1, 12, 12) and ns["B"].shape == (1, 12, 3)
+    assert ns["labels"] == ["weave", "weave", "capsize", "caster", "torso", "torso"]
+    assert ns["modal"].shape == (1, 6) and ns["vectors"].shape == (1, 6, 6)
     w = carvallo.window(dict(ns["p"], k9=1e4, c9=100.0))
     assert [(round(a, 2), round(b, 2)) for a, b in w["stable"]] == [(4.99, 7.11)]
     assert ns["run"]["status"] == "torso fell" and abs(ns["run"]["lean"][-1]) == 1.2
