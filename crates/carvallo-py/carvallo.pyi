@@ -122,8 +122,8 @@ def plot_eigenvalues(
     ax: Optional[object] = None,
 ) -> object:
     """The eigenvalues against speed (default 0 to 10 m/s), each named by its mode as `modes`
-    labels it (weave, capsize, caster), the stable range shaded; titled "name: eigenvalues
-    against speed"."""
+    labels it (weave, capsize, caster; torso too for the leaning rider's params), the stable
+    range shaded; titled "name: eigenvalues against speed"."""
 
 def plot_bode(
     bicycles: Union[Params, Sequence[Params]],
@@ -162,7 +162,9 @@ def state_space(
 def modes(
     params: Params, speeds: Speeds, strict: bool = False
 ) -> tuple[list[str], npt.NDArray[np.complex128], npt.NDArray[np.complex128]]:
-    """(labels, eigenvalues (n, 4), unit eigenvectors (n, 4, 4) in NumPy's convention: vectors[k, :, i] is mode i at speed k, the columns are the vectors); labels weave, weave, capsize, caster by continuation."""
+    """(labels, eigenvalues (n, 4), unit eigenvectors (n, 4, 4) in NumPy's convention: vectors[k, :, i] is mode i at speed k, the columns are the vectors); labels weave, weave, capsize, caster by continuation.
+    For the leaning rider's params (`lean_rider()`): labels weave, weave, capsize, caster, torso,
+    torso, eigenvalues (n, 6) and vectors (n, 6, 6) over roll, steer, lean and their rates."""
 
 def frequency_response(
     params: Params, speeds: Speeds, omegas: Speeds, input: str, output: str, strict: bool = False

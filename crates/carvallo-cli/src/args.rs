@@ -195,7 +195,8 @@ pub fn side_view(
 pub const LEAN_RIDER: &str = "lean-rider";
 
 /// The commands that take the leaning rider, for the error of the others.
-pub const LEAN_RIDER_COMMANDS: &str = "eig, window, statespace, bode, simulate and turn";
+pub const LEAN_RIDER_COMMANDS: &str =
+    "eig, window, statespace, bode, simulate, turn and plot eigenvalues";
 
 /// The leaning rider when `model` names it: `lean-rider`, or a parameter file in Moore's names
 /// ([`LeanRiderParams::looks_like`]); `None` for any other model. `--rider` and `--strict`
@@ -276,7 +277,8 @@ fn read_bicycle(model: &str, data: &DataOptions) -> Result<(UncertainParams, Vec
     Ok((loaded.params, warnings))
 }
 
-/// The name of a bicycle for titles and file names: `Benchmark bicycle` for `benchmark`, or the stem
+/// The name of a bicycle for titles and file names: `Benchmark bicycle` for `benchmark`,
+/// `Leaning rider (Browser + Jason)` for `lean-rider`, or the stem
 /// of the parameter file without BicycleParameters' `Benchmark` suffix
 /// (`…/BrowserBenchmark.txt` → `Browser`), and with a rider `bicycle + rider`, the rider's stem
 /// without that suffix and without the bicycle's name (`JasonBrowserBenchmark.txt` on Browser →
@@ -291,7 +293,11 @@ pub fn bicycle_name(model: &str, rider: Option<&str>) -> String {
             _ => s,
         }
     };
-    let bike = if model == "benchmark" { "Benchmark bicycle".to_string() } else { stem(model) };
+    let bike = match model {
+        "benchmark" => "Benchmark bicycle".to_string(),
+        LEAN_RIDER => "Leaning rider (Browser + Jason)".to_string(),
+        _ => stem(model),
+    };
     match rider {
         None => bike,
         Some(r) => {

@@ -94,7 +94,8 @@ enum Command {
     /// Simulate the mounted unicycle (memoir n° 21-24): time series, energy drift, events
     Unicycle(rolling::UnicycleArgs),
     /// The two-wheeled inverted pendulum (a self-balancing transporter): the eigenvalues of its
-    /// linear model, or a simulation open loop or under a state feedback
+    /// linear model, open or closed by a state feedback, or a simulation open loop or under a
+    /// state feedback
     Pendulum(pendulum::Args),
     /// Print a shell completion script: `carvallo completions bash > carvallo.bash`
     Completions {
@@ -127,6 +128,20 @@ impl Command {
             Command::Unicycle(_) => "unicycle",
             Command::Pendulum(_) => "pendulum",
             Command::Completions { .. } => "completions",
+        }
+    }
+
+    /// Its name and its subcommand's (`pendulum eig`), for the usage line of its errors.
+    fn path(&self) -> Vec<&'static str> {
+        match self {
+            Command::Pendulum(a) => vec![
+                "pendulum",
+                match a.command {
+                    pendulum::PendulumCommand::Eig(_) => "eig",
+                    pendulum::PendulumCommand::Simulate(_) => "simulate",
+                },
+            ],
+            c => vec![c.name()],
         }
     }
 
@@ -173,7 +188,7 @@ impl Command {
                 error(&err);
                 ExitCode::from(2)
             }
-            Err(err) => usage_error(self.name(), &err),
+            Err(err) => usage_error(&self.path(), &err),
         }
     }
 }
@@ -194,13 +209,17 @@ fn finish_report(out: anyhow::Result<String>) -> ExitCode {
     }
 }
 
-/// Prints `message`, a usage error of the command `name` found after parsing, as clap prints
-/// its own: the message, the command's usage and the pointer to its help; exit code 2.
-fn usage_error(name: &str, message: &str) -> ExitCode {
+/// Prints `message`, a usage error of the command `path` (its name, then its subcommand's)
+/// found after parsing, as clap prints its own: the message, the command's usage and the
+/// pointer to its help; exit code 2.
+fn usage_error(path: &[&str], message: &str) -> ExitCode {
     let mut cli = Cli::command();
     cli.build();
-    let usage =
-        cli.find_subcommand_mut(name).map(|c| c.render_usage().to_string()).unwrap_or_default();
+    let mut at = Some(&mut cli);
+    for name in path {
+        at = at.and_then(|c| c.find_subcommand_mut(name));
+    }
+    let usage = at.map(|c| c.render_usage().to_string()).unwrap_or_default();
     error(&format!("{message}\n\n{usage}\n\nFor more information, try '--help'."));
     ExitCode::from(2)
 }
@@ -232,14 +251,33 @@ pub(crate) fn emit(text: &str) -> std::io::Result<()> {
     }
 }
 
+/// The help of the command that `words` (the arguments after `carvallo`) name: the deepest
+/// subcommand their leading words select (`pendulum` → `carvallo pendulum`'s help, with its
+/// own usage line), `carvallo`'s own when none.
+fn help_of(words: &[String]) -> String {
+    fn descend(cmd: &mut clap::Command, words: &[String]) -> String {
+        match words.split_first() {
+            Some((w, rest)) if cmd.find_subcommand(w).is_some() => {
+                descend(cmd.find_subcommand_mut(w).expect("found above"), rest)
+            }
+            _ => cmd.render_help().to_string(),
+        }
+    }
+    let mut cmd = Cli::command();
+    cmd.build();
+    descend(&mut cmd, words)
+}
+
 fn main() -> ExitCode {
     match Cli::try_parse() {
         Ok(cli) => cli.command.run(),
-        // `carvallo` alone: clap shows the help as an error; it says so first.
+        // `carvallo` alone (or `carvallo pendulum` alone): clap shows the help as an error; it
+        // says so first, with the help of the command that lacks its subcommand.
         Err(err)
             if err.kind() == clap::error::ErrorKind::DisplayHelpOnMissingArgumentOrSubcommand =>
         {
-            error(&format!("a command is required\n\n{}", Cli::command().render_help()));
+            let words: Vec<String> = std::env::args().skip(1).collect();
+            error(&format!("a command is required\n\n{}", help_of(&words)));
             ExitCode::from(2)
         }
         Err(err) => {

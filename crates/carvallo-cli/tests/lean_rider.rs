@@ -407,3 +407,68 @@ fn a_start_at_or_beyond_the_fall_angle_is_refused_naming_lean0() {
     assert_eq!(code, 0, "{err}");
     assert!(out.contains("fell at t = "), "{out}");
 }
+
+/// `plot eigenvalues --model lean-rider`: the figure is drawn (not refused), titled by the
+/// rider, with the four modes' curves and names; `eig --json` labels the same six roots, the
+/// torso's two being those of the largest lean share (the joint's coordinate q9) and its
+/// unstable root near +7 1/s; under `--gain` the modes are empty.
+#[test]
+fn plot_eigenvalues_and_eig_label_the_riders_modes() {
+    let dir = std::env::temp_dir().join(format!("carvallo-lean-plot-{}", std::process::id()));
+    std::fs::create_dir_all(&dir).unwrap();
+    let out = dir.join("rider.svg");
+    let (code, printed, err) = carvallo(&[
+        "plot",
+        "eigenvalues",
+        "--model",
+        "lean-rider",
+        "--v-max",
+        "8",
+        "--out",
+        out.to_str().unwrap(),
+    ]);
+    assert_eq!(code, 0, "{err}");
+    assert_eq!(printed.trim(), out.to_str().unwrap());
+    let svg = std::fs::read_to_string(&out).unwrap();
+    for t in [
+        "Leaning rider (Browser + Jason): eigenvalues against speed",
+        "weave: Re λ",
+        "capsize: Re λ",
+        "caster: Re λ",
+        "torso: Re λ",
+        "weave: Im λ",
+        ">\ntorso\n<",
+    ] {
+        assert!(svg.contains(t), "no `{t}` in the figure");
+    }
+    std::fs::remove_dir_all(&dir).ok();
+    let (code, out, err) =
+        carvallo(&["eig", "--model", "lean-rider", "--speed", "0.5,10", "--json"]);
+    assert_eq!(code, 0, "{err}");
+    let v: Value = serde_json::from_str(&out).unwrap();
+    for at in v.as_array().unwrap() {
+        let modes = at["modes"].as_array().unwrap();
+        assert_eq!(modes.len(), 6, "{at}");
+        let lean = |m: &Value| number(&m["shares"]["lean"]);
+        let (torso, other): (Vec<&Value>, Vec<&Value>) =
+            modes.iter().partition(|m| m["label"] == "torso");
+        assert_eq!(torso.len(), 2, "{at}");
+        let least = torso.iter().map(|m| lean(m)).fold(1.0, f64::min);
+        assert!(other.iter().all(|m| lean(m) < least), "{at}");
+        let up = torso.iter().map(|m| number(&m["re"])).fold(f64::MIN, f64::max);
+        assert!((6.5..7.6).contains(&up), "{at}");
+    }
+    let (code, out, err) = carvallo(&[
+        "eig",
+        "--model",
+        "lean-rider",
+        "--speed",
+        "5",
+        "--json",
+        "--gain",
+        "k_lean_lean=100",
+    ]);
+    assert_eq!(code, 0, "{err}");
+    let v: Value = serde_json::from_str(&out).unwrap();
+    assert_eq!(v["modes"], serde_json::json!([]));
+}

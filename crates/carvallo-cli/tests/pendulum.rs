@@ -1,7 +1,9 @@
 //! Tests of `carvallo pendulum`: `eig --json` is the library's linear model (the command adds
 //! nothing), a simulation's status and samples are the library's run with the same settings,
 //! the placed feedback keeps the body up where the open loop falls, `--csv` writes every
-//! sample, and bad input is an error naming the value with exit code 2.
+//! sample, `eig --gain` gives the eigenvalues of A - BK (the placed poles, or those computed
+//! here from the printed A, B and K), and bad input is an
+//! error naming the value with exit code 2, under the usage line of the subcommand.
 
 use std::process::Command;
 
@@ -151,4 +153,65 @@ fn bad_input_names_the_value() {
         assert!(out.is_empty(), "{args:?}: {out}");
         assert!(err.starts_with("error: ") && err.contains(needle), "{args:?}: {err}");
     }
+}
+
+/// `eig --gain`: placed at `--poles`, the closed loop's eigenvalues are those poles and the
+/// turning mode's zero; with K given, they are the eigenvalues of A - BK computed here from the
+/// printed A, B and K, and differ from the open loop's.
+#[test]
+fn eig_with_a_gain_is_the_closed_loop() {
+    let v = json(&["pendulum", "eig", "--gain", "placed", "--poles", "-2,-3,-4", "--json"]);
+    let ev: Vec<(f64, f64)> = v["eigenvalues"]
+        .as_array()
+        .unwrap()
+        .iter()
+        .map(|z| (z[0].as_f64().unwrap(), z[1].as_f64().unwrap()))
+        .collect();
+    for (want, got) in [0.0, -2.0, -3.0, -4.0].iter().zip(&ev) {
+        assert!((got.0 - want).abs() < 1e-9 && got.1 == 0.0, "{ev:?}");
+    }
+    assert_eq!(v["poles"], serde_json::json!([-2.0, -3.0, -4.0]));
+    let k = "-500,-100,-5,0,-500,-100,0,-5";
+    let v = json(&["pendulum", "eig", "--gain", k, "--json"]);
+    let open = json(&["pendulum", "eig", "--json"]);
+    let m = |key: &str, cols: usize| {
+        nalgebra::DMatrix::from_fn(4, cols, |i, j| v[key][i][j].as_f64().unwrap())
+    };
+    let gain = nalgebra::DMatrix::from_fn(2, 4, |i, j| v["gain"][i][j].as_f64().unwrap());
+    assert_eq!(gain[(0, 0)], -500.0);
+    assert_eq!(gain[(1, 3)], -5.0);
+    let closed = m("a", 4) - m("b", 2) * gain;
+    let mut want: Vec<nalgebra::Complex<f64>> =
+        closed.complex_eigenvalues().iter().copied().collect();
+    want.sort_by(|p, q| q.re.total_cmp(&p.re).then(q.im.total_cmp(&p.im)));
+    for (z, w) in v["eigenvalues"].as_array().unwrap().iter().zip(&want) {
+        let got = nalgebra::Complex::new(z[0].as_f64().unwrap(), z[1].as_f64().unwrap());
+        assert!((got - w).norm() < 1e-9 * w.norm().max(1.0), "{got} against {w}");
+    }
+    assert_ne!(v["eigenvalues"], open["eigenvalues"]);
+    assert!(open.get("gain").is_none());
+    let (code, out, _) = carvallo(&["pendulum", "eig", "--gain", k]);
+    assert_eq!(code, 0);
+    assert!(out.contains("closed-loop eigenvalues of A - BK (1/s):"), "{out}");
+}
+
+/// A bad gain is named by its place and value, `--poles` without `--gain placed` is refused
+/// under the subcommand's usage line, and `carvallo pendulum` alone prints the pendulum's help
+/// (exit code 2 each).
+#[test]
+fn bad_gains_and_a_missing_subcommand_name_what_is_wrong() {
+    let (code, _, err) = carvallo(&["pendulum", "eig", "--gain", "1,2,3,4,5,6,7,x"]);
+    assert_eq!(code, 2);
+    assert!(err.contains("K8 `x`: not a number"), "{err}");
+    let (code, _, err) = carvallo(&["pendulum", "eig", "--gain", "1,2,3"]);
+    assert_eq!(code, 2);
+    assert!(err.contains("eight gains K1,...,K8 (rows TL, TR), not 3"), "{err}");
+    let (code, _, err) = carvallo(&["pendulum", "eig", "--poles", "-1,-2,-3"]);
+    assert_eq!(code, 2);
+    assert!(err.contains("invalid --poles: they are placed by --gain placed"), "{err}");
+    assert!(err.contains("Usage: carvallo pendulum eig [OPTIONS]"), "{err}");
+    let (code, _, err) = carvallo(&["pendulum"]);
+    assert_eq!(code, 2);
+    assert!(err.contains("Usage: carvallo pendulum <COMMAND>"), "{err}");
+    assert!(!err.contains("Usage: carvallo <COMMAND>"), "{err}");
 }

@@ -43,6 +43,17 @@ fn quick_bench_reports_times_beside_correct_errors() {
             assert_eq!(same, total.split(' ').next().unwrap(), "{note}");
         }
     }
+    // Every model of a description has its evaluators measured: the wheeled pendulum's
+    // dynamics and linearisation and the leaning rider's dynamics, each by the three methods
+    // with its operations counted (the errors are checked above).
+    let evaluators = rows(&v, "evaluators");
+    for model in ["wheeled pendulum M, f", "wheeled pendulum linearisation", "leaning rider M, f"] {
+        let of: Vec<_> =
+            evaluators.iter().filter(|r| r["name"].as_str().unwrap().starts_with(model)).collect();
+        let methods: Vec<&str> = of.iter().map(|r| r["method"].as_str().unwrap()).collect();
+        assert_eq!(methods, ["generated", "interpreter", "naive tree"], "{model}");
+        assert!(of.iter().all(|r| r["ops"].as_u64().unwrap() > 0), "{model}");
+    }
     // The benchmark speeds by the Hurwitz route, and the compensated quartic roots.
     let windows = rows(&v, "windows");
     let hurwitz = windows.iter().find(|r| r["method"] == "hurwitz closed form").unwrap();

@@ -98,6 +98,44 @@ pub(crate) fn eigenvalues_with<'py>(
     PyArray1::from_vec(py, flat).reshape([speeds.len(), 6])
 }
 
+/// The rider's six modes at each speed ([`LeanRider::modes`], as `carvallo eig --model
+/// lean-rider --json` labels them): `(labels, eigenvalues, vectors)` with the six labels
+/// ("weave", "weave", "capsize", "caster", "torso", "torso"), the eigenvalues (n, 6) complex and
+/// the unit eigenvectors (n, 6, 6) complex in NumPy's convention, the columns the vectors over
+/// roll, steer, lean and their rates.
+pub(crate) fn modes<'py>(
+    py: Python<'py>,
+    rider: &LeanRider,
+    speeds: &[f64],
+) -> PyResult<(Vec<&'static str>, Bound<'py, PyAny>, Bound<'py, PyAny>)> {
+    within(&format!("{} speeds", speeds.len()), speeds.len() as f64, 42.0 * 16.0 + 64.0)?;
+    let all = interruptible(py, |_| rider.modes(speeds))?.ok_or_else(|| {
+        err("the leaning rider's modes cannot be followed to these speeds (more than 200 m/s \
+             from the reference speed, or no speed of 5 to 50 m/s with one complex pair and four \
+             real roots)")
+    })?;
+    let labels = all.first().map_or(Vec::new(), |m| m.iter().map(|x| x.label.name()).collect());
+    let ev: Vec<Complex64> = all
+        .iter()
+        .flat_map(|m| m.iter().map(|x| Complex64::new(x.eigenvalue.re, x.eigenvalue.im)))
+        .collect();
+    // Row-major (speed, state, mode): the columns of each 6 x 6 block are the vectors.
+    let vecs: Vec<Complex64> = all
+        .iter()
+        .flat_map(|m| {
+            (0..6).flat_map(move |state| {
+                m.iter().map(move |x| Complex64::new(x.vector[state].re, x.vector[state].im))
+            })
+        })
+        .collect();
+    let n = speeds.len();
+    Ok((
+        labels,
+        PyArray1::from_vec(py, ev).reshape([n, 6])?.into_any(),
+        PyArray1::from_vec(py, vecs).reshape([n, 6, 6])?.into_any(),
+    ))
+}
+
 /// The leaning rider's gains of `k`: a dict by name or a (3, 6) array (rows roll, steer, lean
 /// torque; columns roll, steer, lean and their rates), finite.
 pub(crate) fn gains_of(k: &Bound<'_, PyAny>) -> PyResult<LeanGains> {

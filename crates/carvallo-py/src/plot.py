@@ -20,7 +20,7 @@ _SUPERSCRIPT = str.maketrans("-0123456789", "⁻⁰¹²³⁴⁵⁶⁷⁸⁹")
 PALETTE = ["#1f77b4", "#d62728", "#2ca02c", "#9467bd", "#ff7f0e", "#8c564b", "#e377c2",
            "#17becf", "#bcbd22", "#000080", "#800000", "#464646"]
 
-_MODE_COLOURS = {"weave": PALETTE[0], "capsize": PALETTE[1], "caster": PALETTE[2]}
+_MODE_COLOURS = {"weave": PALETTE[0], "capsize": PALETTE[1], "caster": PALETTE[2], "torso": PALETTE[3]}
 
 _INPUTS = {"roll": "roll torque Tφ", "steer": "steer torque Tδ"}
 # The most curves of one Bode figure (bicycles times speeds): a legend beyond it is unreadable.
@@ -88,7 +88,8 @@ def plot_geometry(params, rider=None, name=None, ax=None):
     import carvallo
 
     g = carvallo.geometry(params, rider)
-    name = name or _name_of(params, "Bicycle")
+    rider = isinstance(params, dict) and all(k in params for k in ("mg", "ig11", "d4"))
+    name = name or _name_of(params, "Leaning rider" if rider else "Bicycle")
     fig, ax = _axes(ax, (9, 5))
     for hub, r in ((g["rear_hub"], g["rear_radius"]), (g["front_hub"], g["front_radius"])):
         t = [2 * math.pi * k / 180 for k in range(181)]
@@ -124,9 +125,9 @@ def plot_geometry(params, rider=None, name=None, ax=None):
 
 def plot_eigenvalues(params, speeds=None, name=None, ax=None):
     """The eigenvalues of `params` against speed (default 301 speeds from 0 to 10 m/s), each real
-    part in its mode's colour and named as `carvallo.modes` labels it (weave, capsize, caster),
-    the weave's imaginary part dashed, the stable range of `carvallo.window` shaded; titled
-    "`name`: eigenvalues against speed"."""
+    part in its mode's colour and named as `carvallo.modes` labels it (weave, capsize, caster,
+    and torso for the leaning rider's params), the weave's imaginary part dashed, the stable
+    range of `carvallo.window` shaded; titled "`name`: eigenvalues against speed"."""
     import numpy as np
 
     import carvallo
@@ -138,7 +139,8 @@ def plot_eigenvalues(params, speeds=None, name=None, ax=None):
     speeds = np.atleast_1d(np.asarray(speeds, float))
     if speeds.size == 0:
         raise carvallo.ParameterError("invalid speeds []: at least one speed is needed")
-    name = name or _name_of(params, "Bicycle")
+    rider = isinstance(params, dict) and all(k in params for k in ("mg", "ig11", "d4"))
+    name = name or _name_of(params, "Leaning rider" if rider else "Bicycle")
     fig, ax = _axes(ax, (9, 6))
     y_max = 10.0
     for a, b in carvallo.window(params)["stable"]:
@@ -165,7 +167,7 @@ def plot_eigenvalues(params, speeds=None, name=None, ax=None):
         return bx[0] * v_max <= x <= bx[1] * v_max and by[0] * y_max <= y <= by[1] * y_max
 
     loc, bx, by = min(corners, key=lambda c: sum(under(x, y, c[1], c[2]) for x, y in points))
-    for label in ("weave", "capsize", "caster"):
+    for label in dict.fromkeys(labels):
         re = ev[:, labels.index(label)].real
         inside = [k for k in range(len(speeds))
                   if abs(re[k]) < 0.85 * y_max and speeds[k] <= 0.93 * v_max

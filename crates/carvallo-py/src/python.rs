@@ -763,7 +763,9 @@ fn gains_within(g: &carvallo::whipple::feedback::Gains, whereabouts: &str) -> Py
 /// `(labels, eigenvalues, vectors)` with the four labels ("weave", "weave", "capsize",
 /// "caster"), the eigenvalues (n, 4) complex and the unit eigenvectors (n, 4, 4) complex in
 /// NumPy's convention (`numpy.linalg.eig`): the columns are the vectors, `vectors[k, :, i]` the
-/// state (lean, steer, lean rate, steer rate) of mode `i` at speed `k`.
+/// state (lean, steer, lean rate, steer rate) of mode `i` at speed `k`. For the leaning rider's
+/// params (`lean_rider()`): six labels ("weave", "weave", "capsize", "caster", "torso",
+/// "torso"), eigenvalues (n, 6) and vectors (n, 6, 6) over roll, steer, lean and their rates.
 #[pyfunction]
 #[pyo3(signature = (params, speeds, strict = false))]
 fn modes<'py>(
@@ -772,6 +774,9 @@ fn modes<'py>(
     speeds: &Bound<'py, PyAny>,
     strict: bool,
 ) -> PyResult<(Vec<&'static str>, Bound<'py, PyAny>, Bound<'py, PyAny>)> {
+    if let Some(rider) = crate::lean_rider::rider_of(params)? {
+        return crate::lean_rider::modes(py, &rider, &speeds_of(speeds)?);
+    }
     let bike = Whipple::new(params_of(params, strict)?);
     let speeds = speeds_of(speeds)?;
     // The modes (four per speed), then the eigenvalues and vectors copied out of them.

@@ -112,6 +112,8 @@ def test_the_guides_example_runs_as_written():
     exec(code, ns)
     assert ns["ev"].shape == (3, 6) and (ns["ev"].real[:, 0] > 6.5).all()
     assert ns["A"].shape == (1, 12, 12) and ns["B"].shape == (1, 12, 3)
+    assert ns["labels"] == ["weave", "weave", "capsize", "caster", "torso", "torso"]
+    assert ns["modal"].shape == (1, 6) and ns["vectors"].shape == (1, 6, 6)
     w = carvallo.window(dict(ns["p"], k9=1e4, c9=100.0))
     assert [(round(a, 2), round(b, 2)) for a, b in w["stable"]] == [(4.99, 7.11)]
     assert ns["run"]["status"] == "torso fell" and abs(ns["run"]["lean"][-1]) == 1.2
@@ -161,3 +163,27 @@ def test_frequency_response_equals_the_peers_state_space(inp, out):
         assert np.abs(np.diff(ph)).max() < 30.0, np.abs(np.diff(ph)).max()
     with pytest.raises(carvallo.ParameterError, match="unknown input `yaw` for the leaning rider"):
         carvallo.frequency_response(carvallo.lean_rider(), [5.0], [1.0], "yaw", "roll")
+
+
+def test_modes_label_the_torso_by_its_eigenvector_as_the_cli_does(cli):
+    """carvallo.modes on the leaning rider: six labels, each column an eigenvector of the lateral
+    block of A; the two torso roots are those whose vectors put the largest share of their
+    coordinates on the lean joint q9 (computed here from the vectors); the same labels and
+    eigenvalues as `carvallo eig --model lean-rider --json`."""
+    p = carvallo.lean_rider()
+    speeds = [0.5, 3.0, 10.0]
+    labels, ev, vec = carvallo.modes(p, speeds)
+    assert labels == ["weave", "weave", "capsize", "caster", "torso", "torso"]
+    a, _ = carvallo.state_space(p, speeds)
+    lateral = [3, 5, 7, 8, 10, 11]
+    for k in range(len(speeds)):
+        lat = a[k][np.ix_(lateral, lateral)]
+        r = lat @ vec[k] - vec[k] @ np.diag(ev[k])
+        assert np.abs(r).max() < 1e-9 * np.abs(lat).max()
+        coords = np.abs(vec[k, :3, :]) ** 2
+        share = coords[2] / coords.sum(axis=0)
+        torso = sorted(np.argsort(share)[-2:])
+        assert torso == [4, 5], (speeds[k], share)
+    c = cli("eig", "--model", "lean-rider", "--speed", "3", "--json")
+    assert [m["label"] for m in c["modes"]] == labels
+    assert np.allclose([complex(m["re"], m["im"]) for m in c["modes"]], ev[1], rtol=0, atol=1e-12)

@@ -105,6 +105,18 @@ def test_the_figures_carry_the_name_the_modes_and_the_decades():
     assert {"weave", "capsize", "caster", "weave: Re λ", "capsize: Re λ", "caster: Re λ"} <= set(t)
     assert any(s.startswith("stable: 4.292 < v < 6.024") for s in t), t
 
+    # The leaning rider's figure names the torso's mode beside the bicycle's, and its roots are
+    # those of carvallo.modes (the torso's unstable one near +7 1/s).
+    speeds = np.linspace(0.0, 8.0, 81)
+    fig = carvallo.plot_eigenvalues(carvallo.lean_rider(), speeds=speeds)
+    t = texts(fig)
+    assert "Leaning rider: eigenvalues against speed" in t
+    assert {"torso", "torso: Re λ", "weave: Re λ", "capsize: Re λ", "caster: Re λ"} <= set(t), t
+    labels, ev, _ = carvallo.modes(carvallo.lean_rider(), speeds)
+    torso = [ln for ln in fig.axes[0].get_lines() if ln.get_label() == "torso: Re λ"][0]
+    assert np.array_equal(torso.get_ydata(), np.where(abs(ev[:, 4].real) <= 10, ev[:, 4].real, np.nan))
+    assert np.all((ev[:, 4].real > 6.5) & (ev[:, 4].real < 7.6))
+
     short = dict(bench, c=0.06)
     fig = carvallo.plot_bode([bench, short], speeds=5.0, names=["Benchmark", "Short trail"])
     t = texts(fig)

@@ -4,8 +4,10 @@
 //!
 //! - `eig`: the six eigenvalues of roll, steer and lean at each speed (the other six of the
 //!   12-state linearisation are zero), JSON `{"model", "rider": null, "speed", "eigenvalues",
-//!   "modes": []}` as for the bicycle (the weave and capsize labels are the bicycle's; the
-//!   rider's modes are not labelled).
+//!   "modes"}` as for the bicycle: the open loop's six modes labelled weave, capsize, caster
+//!   or torso ([`LeanRider::modes`]), each `{"label", "re", "im", "vector"` (roll, steer,
+//!   lean and their rates)`, "shares": {"roll", "steer", "lean"}}`; empty under `--gain` or
+//!   where the labels have no reference speed.
 //! - `window`: the speeds of a scan of `[0, 20]` m/s where all six have negative real parts,
 //!   each edge bisected to $10^{-10}$ m/s; with Browser + Jason's passive torso
 //!   ($k_9 = c_9 = 0$) there is none, and the output says why (the torso's real eigenvalue).
@@ -29,8 +31,10 @@ use carvallo::numerics::integrate::{Grid, IntegrateError, Integration};
 use carvallo::whipple::lean_rider::{
     Joint, LeanGains, LeanRider, LeanRiderError, LeanRun, Limits, RunEnd, INPUT_NAMES, STATE_NAMES,
 };
+use carvallo::whipple::modes::RiderMode;
 use carvallo::whipple::transfer::FrequencyPoint;
 use carvallo::whipple_nonlinear::SINGULAR_PIVOT;
+use nalgebra::Complex;
 use serde_json::{json, Value};
 
 use super::simulate_inputs::{Input, Kind};
@@ -62,6 +66,19 @@ fn gains_shown(k: &LeanGains) -> (String, Value) {
     (text.join(", "), Value::Object(obj))
 }
 
+/// One labelled mode as JSON (the module docs' keys).
+fn mode_json(m: &RiderMode) -> Value {
+    let c = |z: &Complex<f64>| json!({ "re": z.re, "im": z.im });
+    let [roll, steer, lean] = m.shares();
+    json!({
+        "label": m.label.name(),
+        "re": m.eigenvalue.re,
+        "im": m.eigenvalue.im,
+        "vector": m.vector.iter().map(c).collect::<Vec<_>>(),
+        "shares": { "roll": roll, "steer": steer, "lean": lean },
+    })
+}
+
 /// `carvallo eig` on the leaning rider (`--gain`: the closed loop $A - BK$).
 pub fn eig(
     model: &str,
@@ -74,7 +91,13 @@ pub fn eig(
     let mut s = header(model, rider);
     let closed = *k != LeanGains::default();
     let (gains_text, gains_json) = gains_shown(k);
-    for &v in speeds {
+    let modes = match as_json && !closed {
+        true => rider.modes(speeds),
+        false => None,
+    };
+    for (i, &v) in speeds.iter().enumerate() {
+        let labelled: Vec<Value> =
+            modes.as_ref().map_or(Vec::new(), |m| m[i].iter().map(mode_json).collect());
         let ev = rider.closed_loop_eigenvalues(v, k);
         let list: Vec<Value> = ev.iter().map(|e| json!({ "re": e.re, "im": e.im })).collect();
         let mut value = json!({
@@ -82,7 +105,7 @@ pub fn eig(
             "rider": Value::Null,
             "speed": v,
             "eigenvalues": list,
-            "modes": [],
+            "modes": labelled,
         });
         if closed {
             value["gains"] = gains_json.clone();

@@ -2,11 +2,14 @@
 //! transporter, [`carvallo::wheeled_pendulum`]), the mechanics engine's rolling system that is
 //! not a bicycle.
 //!
-//! * `carvallo pendulum eig [--speed V] [--param NAME=VALUE ...] [--json]`: the eigenvalues of
-//!   the linear model about upright straight running at V m/s (2 by default), with its $A$
-//!   (state θ, θ̇, θ̇_L, θ̇_R) and $B$ (inputs T_L, T_R).
-//! * `carvallo pendulum simulate --t-end T --pitch0 X [--gain placed|K1,...,K8]
-//!   [--poles P1,P2,P3] [--csv PATH] [--json]`: the nonlinear model from upright running at V
+//! * `carvallo pendulum eig [--speed V] [--param NAME=VALUE ...] [--gain placed|K1,...,K8]
+//!   [--poles P1,P2,P3] [--json]`: the eigenvalues of the linear model about upright straight
+//!   running at V m/s (2 by default), with its $A$ (state θ, θ̇, θ̇_L, θ̇_R) and $B$ (inputs
+//!   T_L, T_R); with `--gain` those of the closed loop $A - BK$ under the feedback `simulate`
+//!   takes, the gain printed (and the poles it was placed at).
+//! * `carvallo pendulum simulate --t-end T --pitch0 X [--speed V] [--param NAME=VALUE ...]
+//!   [--gain placed|K1,...,K8] [--poles P1,P2,P3] [--step DT] [--every N] [--method M]
+//!   [--rtol R] [--atol A] [--csv PATH] [--json]`: the nonlinear model from upright running at V
 //!   pitched by X rad, open loop or under the state feedback $T = -K(x - x_{\rm ref})$
 //!   (`--gain placed`: poles placed at $-\lambda, -1.5\lambda, -2\lambda$ from the linear
 //!   model's growth rate λ, or at `--poles`; `--gain` with eight numbers: K's rows T_L, T_R
@@ -23,7 +26,8 @@ use std::fmt::Write as _;
 
 use carvallo::numerics::integrate::Grid;
 use carvallo::wheeled_pendulum::{
-    Feedback, Trajectory, WheeledPendulum, WheeledPendulumParams, FALL_ANGLE, STATE_NAMES,
+    Feedback, LinearModel, Trajectory, WheeledPendulum, WheeledPendulumParams, FALL_ANGLE,
+    STATE_NAMES,
 };
 use serde_json::json;
 
@@ -120,9 +124,58 @@ impl DesignArgs {
 pub struct EigArgs {
     #[command(flatten)]
     pub design: DesignArgs,
-    /// Print JSON (speed, eigenvalues as [re, im] pairs, A, B) instead of text
+    /// The state feedback: `placed` (poles placed from the linear model, or at --poles), or
+    /// the eight gains of K, rows TL, TR over theta, thetad, thetaLd, thetaRd; the eigenvalues
+    /// are then those of the closed loop A - BK
+    #[arg(long, value_name = "placed|K1,...,K8", value_parser = parse_gain, allow_hyphen_values = true)]
+    pub gain: Option<GainArg>,
+    /// The three closed-loop poles (1/s) of the pitch and forward motion for `--gain placed`
+    /// [default: -λ, -1.5λ, -2λ from the growth rate λ]
+    #[arg(long, value_name = "P1,P2,P3", value_parser = parse_poles, allow_hyphen_values = true)]
+    pub poles: Option<[f64; 3]>,
+    /// Print JSON (speed, eigenvalues as [re, im] pairs, A, B; with --gain the gain and the
+    /// poles) instead of text
     #[arg(long)]
     pub json: bool,
+}
+
+/// A feedback with the poles it was placed at (`None` when `--gain` gave K).
+type Chosen = (Feedback, Option<[f64; 3]>);
+
+/// The feedback of `--gain` (with the poles `--gain placed` put it at) on the linear model
+/// `lin`, `None` without `--gain`; `--poles` without `--gain placed`, poles or gains the
+/// model refuses are errors naming them.
+fn feedback_of(
+    lin: &LinearModel,
+    gain: &Option<GainArg>,
+    poles: Option<[f64; 3]>,
+) -> Result<Option<Chosen>, String> {
+    if poles.is_some() && *gain != Some(GainArg::Placed) {
+        return Err("invalid --poles: they are placed by --gain placed".into());
+    }
+    let feedback = match gain {
+        None => None,
+        Some(GainArg::Placed) => {
+            let poles = poles.unwrap_or_else(|| lin.default_poles());
+            let k = lin.place(poles).map_err(|e| format!("invalid --poles: {e}"))?;
+            Some((k, Some(poles)))
+        }
+        Some(GainArg::Matrix(k)) => {
+            Some((lin.feedback(*k).map_err(|e| format!("invalid --gain: {e}"))?, None))
+        }
+    };
+    if let Some((k, _)) = &feedback {
+        all_finite(k.gain.iter().flatten())?;
+    }
+    Ok(feedback)
+}
+
+/// The lines of a gain matrix K under its heading.
+fn gain_text(s: &mut String, k: &Feedback) {
+    s.push_str("gain K (rows TL, TR; columns theta, thetad, thetaLd, thetaRd):\n");
+    for row in &k.gain {
+        let _ = writeln!(s, " {}", row.iter().map(|v| format!(" {v:+12.6}")).collect::<String>());
+    }
 }
 
 /// Every entry of `values` finite, or an error saying the design overflows.
@@ -138,8 +191,12 @@ fn all_finite<'a>(values: impl IntoIterator<Item = &'a f64>) -> Result<(), Strin
 pub fn eig(c: &EigArgs) -> Result<String, String> {
     let m = c.design.model()?;
     let lin = m.linear(c.design.speed);
-    let ev = lin.eigenvalues();
     all_finite(lin.a.iter().chain(lin.b.iter()))?;
+    let feedback = feedback_of(&lin, &c.gain, c.poles)?;
+    let ev = match &feedback {
+        Some((k, _)) => lin.closed_loop_eigenvalues(k),
+        None => lin.eigenvalues(),
+    };
     let rows = |k: usize, cols: usize, at: &dyn Fn(usize, usize) -> f64| -> Vec<Vec<f64>> {
         (0..k).map(|i| (0..cols).map(|j| at(i, j)).collect()).collect()
     };
@@ -154,18 +211,32 @@ pub fn eig(c: &EigArgs) -> Result<String, String> {
             "a": a,
             "b": b,
         });
+        let mut out = out;
+        if let Some((k, poles)) = &feedback {
+            out["gain"] = json!(k.gain);
+            out["poles"] = json!(poles);
+        }
         return serde_json::to_string(&out).map_err(|e| e.to_string());
     }
-    let mut s = format!(
-        "wheeled pendulum, {}, upright at {} m/s\neigenvalues (1/s):\n",
-        c.design.describe(),
-        c.design.speed
-    );
+    let mut s =
+        format!("wheeled pendulum, {}, upright at {} m/s\n", c.design.describe(), c.design.speed);
+    if let Some((k, poles)) = &feedback {
+        if let Some(p) = poles {
+            let _ = writeln!(s, "feedback placed at poles {}, {}, {} 1/s", p[0], p[1], p[2]);
+        }
+        gain_text(&mut s, k);
+        s.push_str("closed-loop eigenvalues of A - BK (1/s):\n");
+    } else {
+        s.push_str("eigenvalues (1/s):\n");
+    }
+    // The closed loop's turning mode is zero only to rounding (1e-16), which would print as
+    // -0.000000 on one platform and +0.000000 on another.
+    let zero = |v: f64| if v.abs() < 1e-9 { 0.0 } else { v };
     for z in ev {
-        let _ = writeln!(s, "  {:+.6} {:+.6}i", z.re, z.im);
+        let _ = writeln!(s, "  {:+.6} {:+.6}i", zero(z.re), zero(z.im));
     }
     let lambda = lin.growth_rate();
-    if lambda > 0.0 {
+    if lambda > 0.0 && feedback.is_none() {
         let _ = writeln!(
             s,
             "the pitch grows as exp({lambda:.6} t): doubles in {:.4} s without control",
@@ -199,9 +270,17 @@ fn parse_gain(text: &str) -> Result<GainArg, String> {
     }
     let values: Vec<f64> = text
         .split(',')
-        .map(|v| finite(v.trim()).and_then(|x| GAIN.check(x)))
-        .collect::<Result<_, _>>()
-        .map_err(|e| format!("expected `placed` or eight gains K1,...,K8: {e}"))?;
+        .enumerate()
+        .map(|(i, v)| {
+            finite(v.trim()).and_then(|x| GAIN.check(x)).map_err(|e| {
+                format!(
+                    "expected `placed` or eight gains K1,...,K8: K{} `{}`: {e}",
+                    i + 1,
+                    v.trim()
+                )
+            })
+        })
+        .collect::<Result<_, _>>()?;
     let k: [f64; 8] = values.try_into().map_err(|v: Vec<f64>| {
         format!("expected `placed` or eight gains K1,...,K8 (rows TL, TR), not {}", v.len())
     })?;
@@ -285,9 +364,6 @@ pub fn simulate(c: &SimulateArgs) -> Result<String, String> {
             c.pitch0
         ));
     }
-    if c.poles.is_some() && c.gain != Some(GainArg::Placed) {
-        return Err("invalid --poles: they are placed by --gain placed".into());
-    }
     let how = ToleranceArgs { method: c.method, rtol: c.rtol, atol: c.atol }
         .integration()
         .map_err(|e| match (c.rtol, c.atol) {
@@ -304,20 +380,7 @@ pub fn simulate(c: &SimulateArgs) -> Result<String, String> {
     let speed = c.design.speed;
     let lin = m.linear(speed);
     all_finite(lin.a.iter().chain(lin.b.iter()))?;
-    let feedback: Option<(Feedback, Option<[f64; 3]>)> = match &c.gain {
-        None => None,
-        Some(GainArg::Placed) => {
-            let poles = c.poles.unwrap_or_else(|| lin.default_poles());
-            let k = lin.place(poles).map_err(|e| format!("invalid --poles: {e}"))?;
-            Some((k, Some(poles)))
-        }
-        Some(GainArg::Matrix(k)) => {
-            Some((lin.feedback(*k).map_err(|e| format!("invalid --gain: {e}"))?, None))
-        }
-    };
-    if let Some((k, _)) = &feedback {
-        all_finite(k.gain.iter().flatten())?;
-    }
+    let feedback = feedback_of(&lin, &c.gain, c.poles)?;
     let torques = |x: &[f64; 7]| feedback.as_ref().map_or([0.0, 0.0], |(k, _)| k.torques(x));
     let mut x0 = m.upright(speed);
     x0[3] = c.pitch0;
@@ -389,7 +452,7 @@ pub fn simulate(c: &SimulateArgs) -> Result<String, String> {
 fn render(
     c: &SimulateArgs,
     run: &Trajectory,
-    feedback: &Option<(Feedback, Option<[f64; 3]>)>,
+    feedback: &Option<Chosen>,
     status: &str,
     rows: &[[f64; 10]],
     method: &str,
@@ -407,14 +470,7 @@ fn render(
             if let Some(p) = poles {
                 let _ = writeln!(s, "feedback placed at poles {}, {}, {} 1/s", p[0], p[1], p[2]);
             }
-            s.push_str("gain K (rows TL, TR; columns theta, thetad, thetaLd, thetaRd):\n");
-            for row in &k.gain {
-                let _ = writeln!(
-                    s,
-                    " {}",
-                    row.iter().map(|v| format!(" {v:+12.6}")).collect::<String>()
-                );
-            }
+            gain_text(&mut s, k);
         }
     }
     let _ = writeln!(s, "status: {status}");

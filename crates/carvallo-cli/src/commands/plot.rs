@@ -4,6 +4,9 @@
 //! axis and trail, mass centres, the rider's apart), the eigenvalues against speed labelled by
 //! mode (weave, capsize, caster), or the Bode diagram (magnitude and phase against ω on a
 //! logarithmic axis labelled by decades) from `--input` to `--output` at each `--speed`.
+//! `eigenvalues --model lean-rider` (or a file in Moore's names) draws the leaning rider's six
+//! roots labelled as [`carvallo::whipple::lean_rider::LeanRider::modes`] labels them, the
+//! torso's beside the weave, capsize and caster (`--v-max` 10 m/s by default).
 //!
 //! `--model` and `--rider` repeat: the bicycles drawn are each model alone (no rider), each
 //! model with the rider of the same rank (as many riders as models), one model with each rider,
@@ -47,7 +50,9 @@ pub struct Args {
     /// The figure
     #[arg(value_enum)]
     pub figure: Figure,
-    /// A bicycle: `benchmark` or a parameter file; repeat to compare bicycles
+    /// A bicycle: `benchmark` or a parameter file; repeat to compare bicycles. `eigenvalues`
+    /// also draws Moore's leaning rider: `lean-rider` (Browser + Jason) or a file in Moore's
+    /// names, its torso's mode beside the bicycle's
     #[arg(long, value_name = "MODEL", required = true)]
     pub model: Vec<String>,
     /// A BicycleParameters rider file (`name = value+/-sigma`) added to the rear frame; repeat
@@ -136,12 +141,17 @@ pub fn run(args: &Args) -> Result<String, String> {
                     bikes.len()
                 ));
             };
-            let p = bicycle(b, &data(r))?;
-            let v_max = args.v_max.unwrap_or_else(|| {
-                let window = carvallo::whipple::Whipple::new(p.clone()).stability_window();
-                window.capsize_speed.map_or(10.0, |c| (1.25 * c).clamp(10.0, 30.0).ceil())
-            });
-            figures::fig_modes(&p, &names[0], v_max)
+            if let Some(rider) = crate::args::lean_rider(b, &data(r))? {
+                let v_max = args.v_max.unwrap_or(10.0);
+                figures::fig_rider_modes(&rider, &names[0], v_max)
+            } else {
+                let p = bicycle(b, &data(r))?;
+                let v_max = args.v_max.unwrap_or_else(|| {
+                    let window = carvallo::whipple::Whipple::new(p.clone()).stability_window();
+                    window.capsize_speed.map_or(10.0, |c| (1.25 * c).clamp(10.0, 30.0).ceil())
+                });
+                figures::fig_modes(&p, &names[0], v_max)
+            }
         }
         Figure::Bode => {
             let mut params = Vec::new();

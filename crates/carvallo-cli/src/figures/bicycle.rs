@@ -9,6 +9,7 @@
 
 use anyhow::{anyhow, Result};
 use carvallo::whipple::drawing::SideView;
+use carvallo::whipple::lean_rider::LeanRider;
 use carvallo::whipple::modes::ModeLabel;
 use carvallo::whipple::steady_turn::hands_free::{self, HandsFree, Special};
 use carvallo::whipple::steady_turn::TurnSolver;
@@ -21,6 +22,10 @@ use super::chart::{color, trim, Chart, Curve, Stroke, GREY};
 /// The mode labels in the order of the legend, with their colours.
 const MODES: [(ModeLabel, usize); 3] =
     [(ModeLabel::Weave, 0), (ModeLabel::Capsize, 1), (ModeLabel::Caster, 2)];
+
+/// The leaning rider's mode labels: the bicycle's and the torso's.
+const RIDER_MODES: [(ModeLabel, usize); 4] =
+    [(ModeLabel::Weave, 0), (ModeLabel::Capsize, 1), (ModeLabel::Caster, 2), (ModeLabel::Torso, 3)];
 
 /// A circle of radius `r` about `c`, as a closed polyline.
 fn circle(c: [f64; 2], r: f64) -> Vec<(f64, f64)> {
@@ -159,41 +164,79 @@ const TITLE_NAMES: usize = 40;
 /// (no speed up to 50 m/s with a complex pair and two real roots) is drawn unlabelled.
 pub fn fig_modes(p: &WhippleParams, name: &str, v_max: f64) -> Result<String> {
     let bike = Whipple::new(p.clone());
-    let y_max = 10.0;
-    let speeds: Vec<f64> = (0..=300).map(|k| v_max * f64::from(k) / 300.0).collect();
+    let speeds = modes_speeds(v_max);
     let title = format!("{name}: eigenvalues against speed");
     let Some(modes) = bike.modes(&speeds) else {
         return super::fig_bicycle_eigenvalues(p, &title, v_max);
     };
+    let modes: Vec<Vec<Labelled>> = modes
+        .iter()
+        .map(|ms| ms.iter().map(|m| (m.label, m.eigenvalue.re, m.eigenvalue.im)).collect())
+        .collect();
+    draw_modes(&title, v_max, &speeds, &modes, &bike.stability_window().stable, &MODES)
+}
+
+/// The eigenvalues of Moore's leaning rider `rider` named `name` against speed up to `v_max`
+/// (301 speeds), as [`fig_modes`] draws the bicycle's, with the torso's two roots beside the
+/// weave, capsize and caster ([`LeanRider::modes`]); the stable range (none for a passive
+/// torso) shaded. A rider without a reference speed is an error.
+pub fn fig_rider_modes(rider: &LeanRider, name: &str, v_max: f64) -> Result<String> {
+    let speeds = modes_speeds(v_max);
+    let modes = rider.modes(&speeds).ok_or_else(|| {
+        anyhow!("the leaning rider's modes have no reference speed (one complex pair and four real roots at 5 to 50 m/s)")
+    })?;
+    let modes: Vec<Vec<Labelled>> = modes
+        .iter()
+        .map(|ms| ms.iter().map(|m| (m.label, m.eigenvalue.re, m.eigenvalue.im)).collect())
+        .collect();
+    let stable = rider.stable_speeds(0.0, v_max, 300);
+    let title = format!("{name}: eigenvalues against speed");
+    draw_modes(&title, v_max, &speeds, &modes, &stable, &RIDER_MODES)
+}
+
+/// An eigenvalue with its label: (label, real part, imaginary part).
+type Labelled = (ModeLabel, f64, f64);
+
+/// The 301 speeds of an eigenvalue figure up to `v_max`.
+fn modes_speeds(v_max: f64) -> Vec<f64> {
+    (0..=300).map(|k| v_max * f64::from(k) / 300.0).collect()
+}
+
+/// The figure of [`fig_modes`]: the labelled eigenvalues `modes` at `speeds`, the `stable`
+/// speed ranges shaded, the modes `legend` (label, colour) in its order.
+fn draw_modes(
+    title: &str,
+    v_max: f64,
+    speeds: &[f64],
+    modes: &[Vec<Labelled>],
+    stable: &[(f64, f64)],
+    legend: &[(ModeLabel, usize)],
+) -> Result<String> {
+    let y_max = 10.0;
     let mut c =
-        Chart::new(&title, "forward speed v (m/s)", "eigenvalue (1/s)", 0.0..v_max, -y_max..y_max);
-    let window = bike.stability_window();
-    for &(a, b) in &window.stable {
+        Chart::new(title, "forward speed v (m/s)", "eigenvalue (1/s)", 0.0..v_max, -y_max..y_max);
+    for &(a, b) in stable {
         c.shade.push([(a, -y_max), (b.min(v_max), y_max)]);
     }
-    c.shade_label = match window.stable.first() {
+    c.shade_label = match stable.first() {
         Some((a, b)) => format!("stable: {}", super::chart::speed_range(*a, *b)),
         None => "no stable speed".to_string(),
     };
     let inside = |y: f64| (-y_max..=y_max).contains(&y);
-    for (label, k) in MODES {
+    for &(label, k) in legend {
         let re: Vec<(f64, f64)> = speeds
             .iter()
-            .zip(&modes)
-            .flat_map(|(&v, ms)| {
-                ms.iter().filter(move |m| m.label == label).map(move |m| (v, m.eigenvalue.re))
-            })
+            .zip(modes)
+            .flat_map(|(&v, ms)| ms.iter().filter(move |m| m.0 == label).map(move |m| (v, m.1)))
             .filter(|p| inside(p.1))
             .collect();
         c.add(Curve::new(format!("{}: Re λ", label.name()), re, color(k), Stroke::Points));
     }
     let im: Vec<(f64, f64)> = speeds
         .iter()
-        .zip(&modes)
+        .zip(modes)
         .filter_map(|(&v, ms)| {
-            ms.iter()
-                .find(|m| m.label == ModeLabel::Weave && m.eigenvalue.im > 0.0)
-                .map(|m| (v, m.eigenvalue.im))
+            ms.iter().find(|m| m.0 == ModeLabel::Weave && m.2 > 0.0).map(|m| (v, m.2))
         })
         .filter(|p| inside(p.1))
         .collect();
@@ -216,10 +259,10 @@ pub fn fig_modes(p: &WhippleParams, name: &str, v_max: f64) -> Result<String> {
         .into_iter()
         .min_by_key(|(_, bx, by)| drawn.iter().filter(|p| under(**p, *bx, *by)).count())
         .unwrap_or((SeriesLabelPosition::LowerRight, (0.74, 1.0), (-1.0, -0.56)));
-    for (label, _) in MODES {
-        let at = speeds.iter().zip(&modes).rev().find_map(|(&v, ms)| {
-            let m = ms.iter().find(|m| m.label == label)?;
-            let at = (v, m.eigenvalue.re);
+    for &(label, _) in legend {
+        let at = speeds.iter().zip(modes).rev().find_map(|(&v, ms)| {
+            let m = ms.iter().find(|m| m.0 == label)?;
+            let at = (v, m.1);
             (v <= 0.93 * v_max && at.1.abs() < 0.85 * y_max && !under(at, bx, by)).then_some(at)
         });
         if let Some(at) = at {

@@ -18,7 +18,7 @@ mod modern;
 use anyhow::Result;
 use carvallo::whipple::WhippleParams;
 
-pub use bicycle::{fig_bode, fig_geometry, fig_modes};
+pub use bicycle::{fig_bode, fig_geometry, fig_modes, fig_rider_modes};
 #[cfg(test)]
 pub(crate) use chart::svg_texts;
 pub use modern::{fig_bicycle_eigenvalues, fig_eigenvalue_bands, BAND_SEED};

@@ -12,9 +12,30 @@
 //! speed, matching each step's four eigenvalues to the previous ones by the permutation of least
 //! total distance. Below the bifurcation speed the weave pair are the two real roots that merge
 //! into it.
+//!
+//! # The leaning rider
+//! Moore's leaning rider ([`LeanRider`]) has six modes' eigenvalues ([`LeanRider::eigenvalues`]):
+//! the bicycle's weave pair, capsize and caster, and two of the torso on its lean joint
+//! ([`ModeLabel::Torso`]; with Browser + Jason's $k_9 = c_9 = 0$ an inverted pendulum, one
+//! real root near $+7$ and one near $-6$ to $-7\ \mathrm{s}^{-1}$). [`LeanRider::modes`]
+//! labels them the same way, by continuation in speed, from a reference speed where the labels
+//! are decided by the eigenvectors:
+//! - the reference is the first speed of $5, 5.1, \dots, 50$ m/s with one complex pair and
+//!   four real roots: the pair is the weave; of the real roots, the two whose eigenvectors put
+//!   the largest share of their coordinates on the lean joint $q_9$
+//!   ([`RiderMode::torso_share`]) are the torso's, of the other two the more negative is the
+//!   caster and the other the capsize;
+//! - from there the eigenvalues are followed in steps of at most [`STEP`] m/s, each step's six
+//!   matched to the previous ones by the permutation of least total distance;
+//! - two modes of different labels may merge into one complex pair and part again (with
+//!   Browser + Jason the caster and the torso's stable root do, between about 0.7 and 2.6
+//!   m/s); while merged, each keeps its label, and where they part into two real roots the
+//!   continuation cannot tell them apart (both are as near), so the eigenvectors decide again:
+//!   the root with the larger torso share is the torso's.
 
-use nalgebra::Complex;
+use nalgebra::{Complex, SMatrix};
 
+use super::lean_rider::{LeanRider, LATERAL};
 use super::matrices::Matrices;
 use super::model::Whipple;
 use crate::numerics::eigen::Eigenvalue;
@@ -35,6 +56,8 @@ pub enum ModeLabel {
     Capsize,
     /// The fast, strongly damped steer mode (real, strongly negative).
     Caster,
+    /// The leaning rider's torso on its lean joint (two roots; never a Whipple bicycle's).
+    Torso,
 }
 
 impl ModeLabel {
@@ -44,6 +67,7 @@ impl ModeLabel {
             ModeLabel::Weave => "weave",
             ModeLabel::Capsize => "capsize",
             ModeLabel::Caster => "caster",
+            ModeLabel::Torso => "torso",
         }
     }
 }
@@ -179,6 +203,197 @@ impl Whipple {
     }
 }
 
+/// One mode of the leaning rider at one speed.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct RiderMode {
+    /// Its label.
+    pub label: ModeLabel,
+    /// The eigenvalue $\lambda$ (1/s).
+    pub eigenvalue: Complex<f64>,
+    /// The unit eigenvector of $A$ on the lateral states ([`LATERAL`]:
+    /// $q_4, q_7, q_9, u_4, u_7, u_9$, roll, steer, the torso's lean on its joint and their
+    /// rates), its largest coordinate component real and positive.
+    pub vector: [Complex<f64>; 6],
+}
+
+impl RiderMode {
+    /// The shares of roll $q_4$, steer $q_7$ and the lean joint $q_9$ in the eigenvector's
+    /// coordinates, $|x_k|^2 / (|x_4|^2 + |x_7|^2 + |x_9|^2)$; they sum to one.
+    pub fn shares(&self) -> [f64; 3] {
+        let n: [f64; 3] = std::array::from_fn(|k| self.vector[k].norm_sqr());
+        let sum: f64 = n.iter().sum();
+        n.map(|x| x / sum)
+    }
+
+    /// The lean joint's share of the coordinates ([`shares`](Self::shares)`[2]`).
+    pub fn torso_share(&self) -> f64 {
+        self.shares()[2]
+    }
+}
+
+/// The unit eigenvector of the $6 \times 6$ matrix `a` for its eigenvalue `l`: the right
+/// singular vector of $A - \lambda I$ of least singular value, its largest component of the
+/// first three real and positive.
+fn eigenvector6(a: &SMatrix<f64, 6, 6>, l: Complex<f64>) -> [Complex<f64>; 6] {
+    let m = SMatrix::<Complex<f64>, 6, 6>::from_fn(|i, j| {
+        Complex::from(a[(i, j)]) - if i == j { l } else { Complex::from(0.0) }
+    });
+    let svd = m.svd(false, true);
+    let v_t = svd.v_t.expect("asked for V^H");
+    let k = svd.singular_values.imin();
+    let mut x: [Complex<f64>; 6] = std::array::from_fn(|j| v_t[(k, j)].conj());
+    let big = x[..3].iter().copied().max_by(|p, q| p.norm().total_cmp(&q.norm())).expect("three");
+    let phase = if big.norm() > 0.0 { big.conj() / big.norm() } else { Complex::from(1.0) };
+    let norm = x.iter().map(|c| c.norm_sqr()).sum::<f64>().sqrt();
+    for c in &mut x {
+        *c = *c * phase / norm;
+    }
+    x
+}
+
+/// The lean joint's share of the coordinates of `a`'s eigenvector for `l`
+/// ([`RiderMode::torso_share`]).
+fn torso_share(a: &SMatrix<f64, 6, 6>, l: Complex<f64>) -> f64 {
+    let x = eigenvector6(a, l);
+    x[2].norm_sqr() / (x[0].norm_sqr() + x[1].norm_sqr() + x[2].norm_sqr())
+}
+
+/// `new` reordered to follow `old`: the permutation of least total distance (the first found
+/// on a tie).
+fn follow6(old: &[Complex<f64>; 6], new: &[Complex<f64>; 6]) -> [Complex<f64>; 6] {
+    let mut best = (f64::INFINITY, [0, 1, 2, 3, 4, 5]);
+    let mut perm = [0usize, 1, 2, 3, 4, 5];
+    permute6(&mut perm, 0, &mut |p| {
+        let d: f64 = (0..6).map(|i| (old[i] - new[p[i]]).norm()).sum();
+        if d < best.0 {
+            best = (d, *p);
+        }
+    });
+    std::array::from_fn(|i| new[best.1[i]])
+}
+
+fn permute6(p: &mut [usize; 6], k: usize, f: &mut impl FnMut(&[usize; 6])) {
+    if k == 6 {
+        f(p);
+        return;
+    }
+    for i in k..6 {
+        p.swap(k, i);
+        permute6(p, k + 1, f);
+        p.swap(k, i);
+    }
+}
+
+/// The labels in the order of [`LeanRider::modes_reference`]'s eigenvalues.
+const RIDER_LABELS: [ModeLabel; 6] = [
+    ModeLabel::Weave,
+    ModeLabel::Weave,
+    ModeLabel::Capsize,
+    ModeLabel::Caster,
+    ModeLabel::Torso,
+    ModeLabel::Torso,
+];
+
+impl LeanRider {
+    /// The $6 \times 6$ matrix of $A$ on [`LATERAL`] at `speed`.
+    fn lateral(&self, speed: f64) -> SMatrix<f64, 6, 6> {
+        let (a, _) = self.state_space(speed);
+        SMatrix::<f64, 6, 6>::from_fn(|i, j| a[(LATERAL[i], LATERAL[j])])
+    }
+
+    /// The six modes at `speed` with the eigenvalues `ev` in the order of [`RIDER_LABELS`].
+    fn labelled(&self, speed: f64, ev: &[Complex<f64>; 6]) -> [RiderMode; 6] {
+        let a = self.lateral(speed);
+        std::array::from_fn(|i| RiderMode {
+            label: RIDER_LABELS[i],
+            eigenvalue: ev[i],
+            vector: eigenvector6(&a, ev[i]),
+        })
+    }
+
+    /// The reference speed and its eigenvalues ordered as [`RIDER_LABELS`] (the module docs
+    /// say how); `None` if no speed of $5, 5.1, \dots, 50$ m/s has one complex pair and four
+    /// real roots.
+    fn modes_reference(&self) -> Option<(f64, [Complex<f64>; 6])> {
+        (0..=450).find_map(|i| {
+            let v = 5.0 + 0.1 * f64::from(i);
+            let a = self.lateral(v);
+            let ev = self.eigenvalues(v);
+            let (cx, re): (Vec<Complex<f64>>, Vec<Complex<f64>>) =
+                ev.iter().partition(|e| e.im != 0.0);
+            if cx.len() != 2 {
+                return None;
+            }
+            let mut re: Vec<(f64, Complex<f64>)> =
+                re.iter().map(|&e| (torso_share(&a, e), e)).collect();
+            re.sort_by(|p, q| q.0.total_cmp(&p.0));
+            let (mut torso, mut bike) = ([re[0].1, re[1].1], [re[2].1, re[3].1]);
+            torso.sort_by(|p, q| q.re.total_cmp(&p.re));
+            bike.sort_by(|p, q| q.re.total_cmp(&p.re));
+            Some((v, [cx[0], cx[1], bike[0], bike[1], torso[0], torso[1]]))
+        })
+    }
+
+    /// One step of the continuation from `old` (labelled as [`RIDER_LABELS`]) to the speed
+    /// `v`: the permutation of least distance, then two roots of different labels that were
+    /// one complex pair and are now real given by their torso shares.
+    fn follow_to(&self, old: &[Complex<f64>; 6], v: f64) -> [Complex<f64>; 6] {
+        let mut ev = follow6(old, &self.eigenvalues(v));
+        let mut a = None;
+        for i in 0..6 {
+            for j in i + 1..6 {
+                let merged =
+                    old[i].im != 0.0 && (old[i] - old[j].conj()).norm() <= 1e-9 * old[i].norm();
+                let parted = ev[i].im == 0.0 && ev[j].im == 0.0;
+                let torso =
+                    (RIDER_LABELS[i] == ModeLabel::Torso) != (RIDER_LABELS[j] == ModeLabel::Torso);
+                if merged && parted && torso {
+                    let a = a.get_or_insert_with(|| self.lateral(v));
+                    let t = if RIDER_LABELS[i] == ModeLabel::Torso { i } else { j };
+                    let o = i + j - t;
+                    if torso_share(a, ev[o]) > torso_share(a, ev[t]) {
+                        ev.swap(i, j);
+                    }
+                }
+            }
+        }
+        ev
+    }
+
+    /// The six modes at each of `speeds` (the module docs say how they are labelled: weave
+    /// twice, capsize, caster, torso twice, in that order); `None` if there is no reference
+    /// speed or a speed lies more than [`MAX_RANGE`] from it (or is not finite).
+    ///
+    /// The speeds are visited in order along one continuation up and one down from the
+    /// reference, so the cost is that of the range covered, not of the number of speeds.
+    pub fn modes(&self, speeds: &[f64]) -> Option<Vec<[RiderMode; 6]>> {
+        let (v0, ev0) = self.modes_reference()?;
+        if speeds
+            .iter()
+            .any(|v| (v - v0).abs().partial_cmp(&MAX_RANGE) != Some(std::cmp::Ordering::Less))
+        {
+            return None;
+        }
+        let mut out: Vec<Option<[RiderMode; 6]>> = vec![None; speeds.len()];
+        for up in [true, false] {
+            let mut order: Vec<usize> =
+                (0..speeds.len()).filter(|&k| (speeds[k] >= v0) == up).collect();
+            order.sort_by(|&p, &q| (speeds[p] - v0).abs().total_cmp(&(speeds[q] - v0).abs()));
+            let (mut at, mut ev) = (v0, ev0);
+            for k in order {
+                let v = speeds[k];
+                let n = ((v - at).abs() / STEP).ceil() as usize;
+                for s in 1..=n {
+                    ev = self.follow_to(&ev, at + (v - at) * s as f64 / n as f64);
+                }
+                at = v;
+                out[k] = Some(self.labelled(v, &ev));
+            }
+        }
+        out.into_iter().collect()
+    }
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;
@@ -247,5 +462,75 @@ mod tests {
         assert!(w.phase_deg().abs() <= 180.0);
         assert!(bike.modes(&[5.0, 1e308]).is_none());
         assert!(bike.modes(&[f64::NAN]).is_none());
+    }
+
+    /// The leaning rider's labels at speeds on both sides of the reference (5 m/s) and across
+    /// the caster and torso's merged pair (about 0.7 to 2.6 m/s), each checked against the
+    /// eigenvectors computed here (A x = λ x), not against the continuation: the two torso
+    /// roots put the largest shares of their coordinates on the lean joint q9, the caster is
+    /// the stable real root of the bicycle's with the largest steer share, the capsize a real
+    /// root leaning more than it steers, the weave a complex pair above 0.7 m/s (two real
+    /// roots that merge into it below); the torso's unstable root stays near +7 1/s.
+    #[test]
+    fn rider_labels_agree_with_the_eigenvectors() {
+        use crate::whipple::lean_rider::LeanRiderParams;
+        let rider = LeanRider::new(LeanRiderParams::browser_jason()).unwrap();
+        let speeds = [0.0, 0.5, 3.0, 4.0, 5.0, 8.0, 15.0, 20.0];
+        let all = rider.modes(&speeds).unwrap();
+        for (v, modes) in speeds.iter().zip(&all) {
+            let (a, _) = rider.state_space(*v);
+            let lat = SMatrix::<f64, 6, 6>::from_fn(|i, j| a[(LATERAL[i], LATERAL[j])]);
+            for md in modes {
+                let x = md.vector;
+                for i in 0..6 {
+                    let ax: Complex<f64> = (0..6).map(|j| x[j] * lat[(i, j)]).sum();
+                    let r = (ax - md.eigenvalue * x[i]).norm();
+                    assert!(r < 1e-9 * lat.amax(), "v = {v}, {md:?}: residual {r:e}");
+                }
+            }
+            let of = |l: ModeLabel| modes.iter().filter(move |m| m.label == l);
+            let count = |l: ModeLabel| of(l).count();
+            assert_eq!(
+                [ModeLabel::Weave, ModeLabel::Capsize, ModeLabel::Caster, ModeLabel::Torso]
+                    .map(count),
+                [2, 1, 1, 2],
+                "v = {v}"
+            );
+            // The torso: real, the two largest lean-joint shares, one root near +7 1/s.
+            let least_torso = of(ModeLabel::Torso).map(|m| m.torso_share()).fold(1.0, f64::min);
+            let most_other = modes
+                .iter()
+                .filter(|m| m.label != ModeLabel::Torso)
+                .map(|m| m.torso_share())
+                .fold(0.0, f64::max);
+            assert!(least_torso > most_other, "v = {v}: {least_torso} vs {most_other}");
+            assert!(of(ModeLabel::Torso).all(|m| m.eigenvalue.im == 0.0), "v = {v}");
+            let up = of(ModeLabel::Torso).map(|m| m.eigenvalue.re).fold(f64::MIN, f64::max);
+            assert!((6.5..7.6).contains(&up), "v = {v}: the torso's unstable root {up}");
+            // The caster: real, negative, the largest steer share of the bicycle's real
+            // stable roots; the capsize: real, leaning more than it steers.
+            let caster = of(ModeLabel::Caster).next().unwrap();
+            let capsize = of(ModeLabel::Capsize).next().unwrap();
+            assert!(caster.eigenvalue.im == 0.0 && caster.eigenvalue.re < -3.0, "v = {v}");
+            let steer = modes
+                .iter()
+                .filter(|m| m.label != ModeLabel::Torso)
+                .filter(|m| m.eigenvalue.im == 0.0 && m.eigenvalue.re < 0.0)
+                .map(|m| m.shares()[1])
+                .fold(0.0, f64::max);
+            assert_eq!(caster.shares()[1], steer, "v = {v}");
+            assert!(capsize.eigenvalue.im == 0.0, "v = {v}");
+            assert!(capsize.shares()[0] > capsize.shares()[1], "v = {v}: {capsize:?}");
+            let weave: Vec<_> = of(ModeLabel::Weave).map(|m| m.eigenvalue).collect();
+            if *v > 0.7 {
+                assert!(weave[0].im != 0.0 && weave[0] == weave[1].conj(), "v = {v}: {weave:?}");
+            } else {
+                assert!(weave.iter().all(|e| e.im == 0.0 && e.re > 0.0), "v = {v}: {weave:?}");
+            }
+        }
+        // Browser + Jason's capsize crosses zero between 7 and 7.5 m/s (7.0: -0.027).
+        assert!(all[5].iter().any(|m| m.label == ModeLabel::Capsize && m.eigenvalue.re > 0.0));
+        assert!(rider.modes(&[5.0, 1e308]).is_none());
+        assert!(rider.modes(&[f64::NAN]).is_none());
     }
 }
