@@ -96,7 +96,8 @@ fn derived_formulas_match_hand_values() {
 /// distances 1e-3, 1e-6 and 1e-9 from the threshold on both sides, the sign and the value: the
 /// error budget is the rounding of s² and g/(4R) (a few ulps of terms of size (8/3)s² ≈ 13 here,
 /// so 1e-14 of that), far below the first member's 2.6e-8 at 1e-9 from the threshold. A
-/// threshold off by one part in 1e9 (g/(4R) scaled by 1 + 2e-9) fails at 1e-9 (run and seen).
+/// generated side whose threshold is off by two parts in 1e9 (evaluated with g scaled by
+/// 1 + 2e-9) fails the value check at the first point, 2.6e-8 from Routh's (run and seen).
 fn routh_threshold_numerically() {
     let d = crate::derived("hoop");
     let (r, g): (f64, f64) = (0.5, 9.81);
