@@ -62,6 +62,10 @@ pub struct Derivation {
     /// Nominal values of some parameters and inputs, by name: where the model is evaluated in
     /// practice (`derive::nominal`), for the lowering's second error sample; empty for none.
     pub nominal: Vec<(String, f64)>,
+    /// Further numbers of Horner schemes the optimising lowering tries on this model after
+    /// [`emit::EFFORTS`] (for a program on a hot path, where operations saved pay at every
+    /// call); empty for most.
+    pub horner_schemes: Vec<usize>,
 }
 
 pub mod cas;

@@ -69,16 +69,6 @@ pub const EFFORTS: [Effort; 2] = [
     Effort { horner_iterations: 10, cpe_iterations: None },
 ];
 
-/// The models whose program a simulation evaluates at every step, and the further effort
-/// [`choose`] tries on them after [`EFFORTS`]: the nonlinear Whipple bicycle's mass matrix and
-/// forcing (M₃ + f₃) cost 1,512 operations with the two efforts of [`EFFORTS`], 1,485 with 30
-/// Horner schemes and 1,459 with 100 (issue 34's budget is 1,490, the hand derivation's program
-/// 1,491), at 2 s more of the regeneration's CPU in the release build. The other models keep
-/// their programs: with 100 schemes seven of them would change (the unicycle's 2,281 operations
-/// would become 1,104), which is work of its own (every value they print moves at rounding).
-pub const HOT: [(&str, Effort); 1] =
-    [("whipple_nonlinear", Effort { horner_iterations: 100, cpe_iterations: None })];
-
 /// The number of placeholders [`declare_placeholders`] creates, more than any level of any
 /// model uses (a level that needs more is lowered naively).
 pub const PLACEHOLDERS: usize = 4096;
@@ -546,7 +536,7 @@ fn points(p: &Program, n: usize, nominal: Option<&[(String, f64)]>) -> Vec<(Vec<
 
 /// The lowering a model keeps, and the lines that record the comparison (for the IR header).
 ///
-/// At each effort of [`EFFORTS`] (and [`HOT`]'s for its models), the optimised program is measured against the naive one; the
+/// At each effort of [`EFFORTS`] (then the derivation's own [`Derivation::horner_schemes`]), the optimised program is measured against the naive one; the
 /// outputs whose error grows by more than 2x are lowered naively and the rest optimised again,
 /// until every output passes (at most four rounds). The program with the fewest operations
 /// wins; the naive one on a tie.
@@ -569,8 +559,9 @@ pub fn choose(d: &Derivation) -> Result<(Program, Vec<String>), EmitError> {
         if samples.len() > 1 { " (uniform, and around the model's nominal values)" } else { "" }
     )];
     let mut best: Option<(Program, usize, Effort)> = None;
-    let hot = HOT.iter().filter(|(m, _)| *m == d.model).map(|(_, e)| *e);
-    let efforts: Vec<Effort> = EFFORTS.iter().copied().chain(hot).collect();
+    let further =
+        d.horner_schemes.iter().map(|&h| Effort { horner_iterations: h, cpe_iterations: None });
+    let efforts: Vec<Effort> = EFFORTS.iter().copied().chain(further).collect();
     'efforts: for effort in efforts {
         let mut fallback = BTreeSet::new();
         for _round in 0..12 {

@@ -53,6 +53,7 @@ fn single(params: &[&str], inputs: &[&str], expr: Atom) -> Derivation {
         }],
         checks: vec![],
         nominal: Vec::new(),
+        horner_schemes: Vec::new(),
     }
 }
 

@@ -307,11 +307,11 @@ fn engine_whipple_equals_the_hand_derivation_at_256_bits() {
 
 /// The mass matrix and forcing the runtime evaluates, the cone of `m3_*`, `f3_*` in the committed
 /// `generated/whipple_nonlinear.ir` (derived by the engine, lowered by regen's optimising
-/// lowering with the further effort `emit::HOT` gives this model; `regen_fresh` keeps it equal to
+/// lowering with the further effort its derivation asks for, `Derivation::horner_schemes`; `regen_fresh` keeps it equal to
 /// the derivation), cost no more than issue 34's budget of 1,490 operations (the hand
 /// derivation's frozen program: 1,491): today 1,459. A change to the engine or the lowering that
 /// costs more fails here, with the formulas' own counts, largest first, to show where. Without
-/// `HOT`'s effort the same formulas take 1,512 (run and seen).
+/// that effort the same formulas take 1,512 (run and seen).
 #[test]
 fn engine_whipple_mass_matrix_and_forcing_within_todays_operations() {
     crate::on_symbolica_thread(|| {

@@ -41,6 +41,7 @@ fn toy_model(model: &str, expr: &str) -> Derivation {
             detail: "none".to_string(),
         }],
         nominal: Vec::new(),
+        horner_schemes: Vec::new(),
     }
 }
 

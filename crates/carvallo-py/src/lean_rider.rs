@@ -114,26 +114,13 @@ pub(crate) fn modes<'py>(
              from the reference speed, or no speed of 5 to 50 m/s with one complex pair and four \
              real roots)")
     })?;
-    let labels = all.first().map_or(Vec::new(), |m| m.iter().map(|x| x.label.name()).collect());
-    let ev: Vec<Complex64> = all
-        .iter()
-        .flat_map(|m| m.iter().map(|x| Complex64::new(x.eigenvalue.re, x.eigenvalue.im)))
-        .collect();
-    // Row-major (speed, state, mode): the columns of each 6 x 6 block are the vectors.
-    let vecs: Vec<Complex64> = all
-        .iter()
-        .flat_map(|m| {
-            (0..6).flat_map(move |state| {
-                m.iter().map(move |x| Complex64::new(x.vector[state].re, x.vector[state].im))
-            })
-        })
-        .collect();
-    let n = speeds.len();
-    Ok((
-        labels,
-        PyArray1::from_vec(py, ev).reshape([n, 6])?.into_any(),
-        PyArray1::from_vec(py, vecs).reshape([n, 6, 6])?.into_any(),
-    ))
+    crate::python::modes_arrays(
+        py,
+        &all,
+        |x| x.label.name(),
+        |x| Complex64::new(x.eigenvalue.re, x.eigenvalue.im),
+        |x| x.vector.map(|c| Complex64::new(c.re, c.im)),
+    )
 }
 
 /// The leaning rider's gains of `k`: a dict by name or a (3, 6) array (rows roll, steer, lean

@@ -785,25 +785,39 @@ fn modes<'py>(
     let all = bike
         .modes(&speeds)
         .ok_or_else(|| err("the modes cannot be followed to these speeds (more than 200 m/s from the reference speed, or no speed with one complex pair and two real roots)"))?;
-    let labels = all.first().map_or(Vec::new(), |m| m.iter().map(|x| x.label.name()).collect());
-    let ev: Vec<Complex64> = all
-        .iter()
-        .flat_map(|m| m.iter().map(|x| Complex64::new(x.eigenvalue.re, x.eigenvalue.im)))
-        .collect();
-    // Row-major (speed, state, mode): the columns of each 4 x 4 block are the vectors.
-    let vecs: Vec<Complex64> = all
-        .iter()
-        .flat_map(|m| {
-            (0..4).flat_map(move |state| {
-                m.iter().map(move |x| Complex64::new(x.vector[state].re, x.vector[state].im))
-            })
-        })
-        .collect();
-    let n = speeds.len();
+    modes_arrays(
+        py,
+        &all,
+        |x| x.label.name(),
+        |x| Complex64::new(x.eigenvalue.re, x.eigenvalue.im),
+        |x| x.vector.map(|c| Complex64::new(c.re, c.im)),
+    )
+}
+
+/// The modes of each speed (`N` per speed) as Python's `modes` returns them: the labels, the
+/// eigenvalues of shape (n, N) and the vectors of shape (n, N, N), row-major (speed, state,
+/// mode), so the columns of each N x N block are the vectors.
+pub(crate) fn modes_arrays<'py, M, const N: usize>(
+    py: Python<'py>,
+    all: &[[M; N]],
+    label: impl Fn(&M) -> &'static str,
+    eigenvalue: impl Fn(&M) -> Complex64,
+    vector: impl Fn(&M) -> [Complex64; N],
+) -> PyResult<(Vec<&'static str>, Bound<'py, PyAny>, Bound<'py, PyAny>)> {
+    let labels = all.first().map_or(Vec::new(), |m| m.iter().map(&label).collect());
+    let ev: Vec<Complex64> = all.iter().flat_map(|m| m.iter().map(&eigenvalue)).collect();
+    let mut vecs: Vec<Complex64> = Vec::with_capacity(all.len() * N * N);
+    for m in all {
+        let columns: Vec<[Complex64; N]> = m.iter().map(&vector).collect();
+        for state in 0..N {
+            vecs.extend(columns.iter().map(|c| c[state]));
+        }
+    }
+    let n = all.len();
     Ok((
         labels,
-        PyArray1::from_vec(py, ev).reshape([n, 4])?.into_any(),
-        PyArray1::from_vec(py, vecs).reshape([n, 4, 4])?.into_any(),
+        PyArray1::from_vec(py, ev).reshape([n, N])?.into_any(),
+        PyArray1::from_vec(py, vecs).reshape([n, N, N])?.into_any(),
     ))
 }
 

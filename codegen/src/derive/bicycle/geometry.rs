@@ -801,5 +801,6 @@ pub fn derive() -> Result<Derivation> {
         formulas,
         checks,
         nominal: crate::derive::nominal::values("bicycle_geometry"),
+        horner_schemes: Vec::new(),
     })
 }

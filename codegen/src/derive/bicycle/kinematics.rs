@@ -843,5 +843,6 @@ pub fn derive() -> Result<Derivation> {
         formulas,
         checks,
         nominal: crate::derive::nominal::values("bicycle_kinematics"),
+        horner_schemes: Vec::new(),
     })
 }

@@ -917,5 +917,6 @@ pub fn derive() -> Result<Derivation> {
         formulas,
         checks,
         nominal: crate::derive::nominal::values("bicycle_straight"),
+        horner_schemes: Vec::new(),
     })
 }

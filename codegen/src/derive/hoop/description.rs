@@ -19,19 +19,11 @@
 use symbolica::atom::Atom;
 
 use super::PARAMS;
-use crate::mechanics::engine::{
-    sym, Angle, Axis, Coordinate, Frame, Kind, Model, Point, Rotation, Wheel,
-};
+use crate::mechanics::engine::{coordinate, frame, point, rot, sym, Axis, Kind, Model, Wheel};
 
 /// The rolling hoop's description.
 pub fn hoop() -> Model {
     let (r, mu) = (sym("R"), sym("mu"));
-    let coordinate = |name: &str, description: &str, kind: Kind| Coordinate {
-        name: name.into(),
-        description: description.into(),
-        kind,
-    };
-    let rot = |axis: Axis, c: &str| Rotation { axis, angle: Angle::Coordinate(c.into()) };
     Model {
         name: "hoop_engine".into(),
         params: PARAMS.iter().map(|s| s.to_string()).collect(),
@@ -52,15 +44,10 @@ pub fn hoop() -> Model {
         heading: Some("psi".into()),
         root: "P".into(),
         frames: vec![
-            Frame { name: "Y".into(), parent: "N".into(), rotations: vec![rot(Axis::Z, "psi")] },
-            Frame { name: "L".into(), parent: "Y".into(), rotations: vec![rot(Axis::X, "phi")] },
+            frame("Y", "N", vec![rot(Axis::Z, "psi")]),
+            frame("L", "Y", vec![rot(Axis::X, "phi")]),
         ],
-        points: vec![Point {
-            name: "S".into(),
-            from: "P".into(),
-            frame: "L".into(),
-            offset: [Atom::num(0), Atom::num(0), -&r],
-        }],
+        points: vec![point("S", "P", "L", [Atom::num(0), Atom::num(0), -&r])],
         bodies: Vec::new(),
         wheels: vec![Wheel {
             name: "R".into(),

@@ -750,5 +750,6 @@ pub fn derive() -> Result<Derivation> {
         formulas,
         checks,
         nominal: crate::derive::nominal::values("hoop_discussion"),
+        horner_schemes: Vec::new(),
     })
 }

@@ -575,5 +575,6 @@ pub fn derive() -> Result<Derivation> {
         formulas,
         checks,
         nominal: crate::derive::nominal::values("hoop"),
+        horner_schemes: Vec::new(),
     })
 }

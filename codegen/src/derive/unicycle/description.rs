@@ -17,7 +17,7 @@
 use symbolica::atom::Atom;
 
 use super::PARAMS;
-use crate::mechanics::engine::{sym, Body, Model, Point};
+use crate::mechanics::engine::{point, sym, Body, Model};
 
 /// The mounted unicycle's description.
 pub fn unicycle() -> Model {
@@ -48,12 +48,7 @@ pub fn unicycle() -> Model {
     wheel.mass = sym("mu1");
     wheel.diametral = sym("C1");
     wheel.axial = sym("B1") - sym("mu1") * &r * &r;
-    m.points.push(Point {
-        name: "G".into(),
-        from: "P".into(),
-        frame: "E".into(),
-        offset: [Atom::num(0), Atom::num(0), -&z],
-    });
+    m.points.push(point("G", "P", "E", [Atom::num(0), Atom::num(0), -&z]));
     let zero = || Atom::num(0);
     let mz2 = &mu * &z * &z;
     m.bodies.push(Body {

@@ -729,5 +729,6 @@ pub fn derive() -> Result<Derivation> {
         formulas,
         checks,
         nominal: crate::derive::nominal::values("unicycle"),
+        horner_schemes: Vec::new(),
     })
 }

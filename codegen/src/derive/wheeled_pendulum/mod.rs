@@ -268,5 +268,6 @@ pub fn derive() -> Result<Derivation> {
         formulas,
         checks,
         nominal: crate::derive::nominal::values("wheeled_pendulum"),
+        horner_schemes: Vec::new(),
     })
 }

@@ -596,6 +596,7 @@ pub fn derive() -> Result<Derivation> {
         formulas,
         checks,
         nominal: crate::derive::nominal::values("whipple"),
+        horner_schemes: Vec::new(),
     })
 }
 pub mod description;

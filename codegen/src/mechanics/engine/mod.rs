@@ -582,6 +582,7 @@ pub fn derivation(
             formulas,
             checks: Vec::new(),
             nominal: Vec::new(),
+            horner_schemes: Vec::new(),
         },
         kane_len,
         redundant,

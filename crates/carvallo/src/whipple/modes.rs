@@ -124,12 +124,13 @@ fn dist(a: Eigenvalue, b: Eigenvalue) -> f64 {
     (a.re - b.re).hypot(a.im - b.im)
 }
 
-/// `new` reordered to follow `old`: the permutation of least total distance.
-fn follow(old: &[Eigenvalue; 4], new: &[Eigenvalue]) -> [Eigenvalue; 4] {
-    let mut best = (f64::INFINITY, [0, 1, 2, 3]);
-    let mut perm = [0usize, 1, 2, 3];
+/// `new` reordered to follow `old`: the permutation of least total distance `dist` (the first
+/// found on a tie). `new` has at least `N` entries; the first `N` are permuted.
+fn follow<T: Copy, const N: usize>(old: &[T; N], new: &[T], dist: impl Fn(T, T) -> f64) -> [T; N] {
+    let mut best = (f64::INFINITY, std::array::from_fn::<usize, N, _>(|i| i));
+    let mut perm = best.1;
     permute(&mut perm, 0, &mut |p| {
-        let d: f64 = (0..4).map(|i| dist(old[i], new[p[i]])).sum();
+        let d: f64 = (0..N).map(|i| dist(old[i], new[p[i]])).sum();
         if d < best.0 {
             best = (d, *p);
         }
@@ -137,12 +138,12 @@ fn follow(old: &[Eigenvalue; 4], new: &[Eigenvalue]) -> [Eigenvalue; 4] {
     std::array::from_fn(|i| new[best.1[i]])
 }
 
-fn permute(p: &mut [usize; 4], k: usize, f: &mut impl FnMut(&[usize; 4])) {
-    if k == 4 {
+fn permute<const N: usize>(p: &mut [usize; N], k: usize, f: &mut impl FnMut(&[usize; N])) {
+    if k == N {
         f(p);
         return;
     }
-    for i in k..4 {
+    for i in k..N {
         p.swap(k, i);
         permute(p, k + 1, f);
         p.swap(k, i);
@@ -191,7 +192,7 @@ impl Whipple {
                     if new.len() != 4 {
                         return None;
                     }
-                    ev = follow(&ev, &new);
+                    ev = follow(&ev, &new, dist);
                 }
                 Some(std::array::from_fn(|i| Mode {
                     label: LABELS[i],
@@ -258,32 +259,6 @@ fn torso_share(a: &SMatrix<f64, 6, 6>, l: Complex<f64>) -> f64 {
     x[2].norm_sqr() / (x[0].norm_sqr() + x[1].norm_sqr() + x[2].norm_sqr())
 }
 
-/// `new` reordered to follow `old`: the permutation of least total distance (the first found
-/// on a tie).
-fn follow6(old: &[Complex<f64>; 6], new: &[Complex<f64>; 6]) -> [Complex<f64>; 6] {
-    let mut best = (f64::INFINITY, [0, 1, 2, 3, 4, 5]);
-    let mut perm = [0usize, 1, 2, 3, 4, 5];
-    permute6(&mut perm, 0, &mut |p| {
-        let d: f64 = (0..6).map(|i| (old[i] - new[p[i]]).norm()).sum();
-        if d < best.0 {
-            best = (d, *p);
-        }
-    });
-    std::array::from_fn(|i| new[best.1[i]])
-}
-
-fn permute6(p: &mut [usize; 6], k: usize, f: &mut impl FnMut(&[usize; 6])) {
-    if k == 6 {
-        f(p);
-        return;
-    }
-    for i in k..6 {
-        p.swap(k, i);
-        permute6(p, k + 1, f);
-        p.swap(k, i);
-    }
-}
-
 /// The labels in the order of [`LeanRider::modes_reference`]'s eigenvalues.
 const RIDER_LABELS: [ModeLabel; 6] = [
     ModeLabel::Weave,
@@ -338,7 +313,7 @@ impl LeanRider {
     /// `v`: the permutation of least distance, then two roots of different labels that were
     /// one complex pair and are now real given by their torso shares.
     fn follow_to(&self, old: &[Complex<f64>; 6], v: f64) -> [Complex<f64>; 6] {
-        let mut ev = follow6(old, &self.eigenvalues(v));
+        let mut ev = follow(old, &self.eigenvalues(v), |a, b| (a - b).norm());
         let mut a = None;
         for i in 0..6 {
             for j in i + 1..6 {

@@ -987,5 +987,6 @@ pub fn derive() -> Result<Derivation> {
         formulas,
         checks,
         nominal: crate::derive::nominal::values("bicycle_steady"),
+        horner_schemes: Vec::new(),
     })
 }
