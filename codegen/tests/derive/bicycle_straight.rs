@@ -53,3 +53,43 @@ fn straight_running_derivation_body() {
 fn straight_running_derivation() {
     crate::on_symbolica_thread(straight_running_derivation_body);
 }
+
+/// What the per-origin checks of n° 116 rest on, and what breaks them: the split of Carvallo's
+/// equations between the momentum's derivative and the correction depends on which speeds are
+/// held when differentiating. With the rear wheel's rotation measured from the lean frame (the
+/// wheel's own spin, as the memoir's s, [`bicycle_straight::general`]) the frame's correction
+/// row of the fall equation equals the table's; with it measured from the pitching rear frame
+/// (the engine's Whipple description, whose linear matrices `generated/whipple.ir` holds) it
+/// does not, while Kane's terms, which are physical, are the same either way.
+fn split_depends_on_the_speeds_body() {
+    use carvallo_codegen::derive::whipple::linearised;
+    use symbolica::atom::{Atom, AtomCore};
+    let (kane, parts) = linearised::matrices(&mut Vec::new()).expect("the engine's Whipple");
+    let relative = bicycle_straight::General { kane, parts };
+    let own_spin = bicycle_straight::general().expect("the engine's Whipple, own spin");
+    let pt = &bicycle_straight::points()[0];
+    let mut table: Vec<Atom> = vec![Atom::num(0); 6];
+    for (eq, origin, part, row) in bicycle_straight::tables() {
+        if eq == "fall" && part == "frame" && origin.starts_with("-sum") {
+            for j in 0..6 {
+                table[j] = (&table[j] + bicycle_straight::at(&row[j], pt)).expand();
+            }
+        }
+    }
+    let a = bicycle_straight::general_terms(Some(0), pt, &own_spin);
+    let r = bicycle_straight::general_terms(Some(0), pt, &relative);
+    let same = |x: &Atom, y: &Atom| (x - y).expand().is_zero();
+    assert!((0..6).all(|j| same(&table[j], &a.correction[0][j])), "own spin: the table's row");
+    assert!(
+        (0..6).any(|j| !same(&table[j], &r.correction[0][j])),
+        "spin relative to the pitching frame: the split moves"
+    );
+    for row in 0..2 {
+        assert!((0..6).all(|j| same(&a.kane[row][j], &r.kane[row][j])), "Kane's terms agree");
+    }
+}
+
+#[test]
+fn the_split_of_carvallos_equations_depends_on_the_speeds_held() {
+    crate::on_symbolica_thread(split_depends_on_the_speeds_body);
+}

@@ -150,25 +150,157 @@ fn whipple_linearisation() {
     crate::on_symbolica_thread(whipple_linearisation_body);
 }
 
-/// The engine's linearisation against the hand series derivation, and what breaks the
-/// comparisons: the right reference gives the hand's matrices exactly; the rear wheel turning
-/// at $-v/r_F$ instead of $-v/r_R$ (a wrong reference) changes exactly the speed-dependent
-/// matrices $C_1$ and $K_2$, and the same wrong reference in the modified Lagrange route alone
-/// makes it disagree with Kane's.
+/// The frozen program of the linear model (`codegen/tests/fixtures/whipple_linear.ir`,
+/// byte-identical to `generated/whipple.ir` at commit 8eca596, when the engine's matrices were
+/// still compared exactly with the hand series derivation, `engine_equals_hand`, since deleted):
+/// the exact record of the hand derivation's values.
+fn frozen() -> carvallo_ir::Program {
+    let path = PathBuf::from(env!("CARGO_MANIFEST_DIR")).join("tests/fixtures/whipple_linear.ir");
+    let text = std::fs::read_to_string(&path).expect("codegen/tests/fixtures/whipple_linear.ir");
+    carvallo_ir::Program::parse(&text).expect("the frozen program parses")
+}
+
+/// The sixteen matrix entries of `m` as a program in the benchmark's parameters.
+fn program_of(m: &whipple::Matrices) -> carvallo_ir::Program {
+    use carvallo_codegen::{Derivation, Formula};
+    let mut formulas = Vec::new();
+    for (prefix, mat) in [("m", &m.m), ("c1_", &m.c1), ("k0_", &m.k0), ("k2_", &m.k2)] {
+        for r in 0..2 {
+            for c in 0..2 {
+                formulas.push(Formula {
+                    name: format!("{prefix}{}{}", r + 1, c + 1),
+                    section: "linear".into(),
+                    description: String::new(),
+                    expr: whipple::to_lambda(&mat[r][c]),
+                });
+            }
+        }
+    }
+    emit_program(&Derivation {
+        model: "whipple_matrices".into(),
+        source: file!().into(),
+        params: whipple::PARAMS.iter().map(|s| s.to_string()).collect(),
+        inputs: Vec::new(),
+        formulas,
+        checks: Vec::new(),
+        nominal: Vec::new(),
+        horner_schemes: Vec::new(),
+    })
+    .expect("emits")
+}
+
+/// The entries (by name) in which `m` differs from the frozen program at three designs around
+/// the benchmark (relative 1e-12).
+fn differs_from_frozen(m: &whipple::Matrices) -> Vec<String> {
+    let (mine, old) = (program_of(m), frozen());
+    let bench: Vec<f64> = whipple::PARAMS.iter().map(|k| scalar(&anchors(), k)).collect();
+    let mut out = Vec::new();
+    for (k, scale) in [1.0, 1.1, 0.85].iter().enumerate() {
+        let params: Vec<f64> = bench
+            .iter()
+            .enumerate()
+            .map(|(i, x)| x * if i % 2 == k % 2 { *scale } else { 1.0 })
+            .collect();
+        let a = mine.eval_f64(&params, &[]).expect("evaluates");
+        let b = old.eval_f64(&params, &vec![0.0; old.inputs.len()]).expect("evaluates");
+        for (j, o) in mine.outputs.iter().enumerate() {
+            let w = b[old.outputs.iter().position(|x| x.name == o.name).expect("shared")];
+            if (a[j] - w).abs() > 1e-12 * w.abs().max(1.0) && !out.contains(&o.name) {
+                out.push(o.name.clone());
+            }
+        }
+    }
+    out
+}
+
+/// `generated/whipple.ir` equals the frozen program on every output (relative 1e-60 at 256 bits)
+/// at 300 seeded designs (the benchmark's parameters each within ±20 %), speeds in [0, 12] m/s
+/// and gains in ±20, and its f64 rounding error (p99, in units of each output's root mean
+/// square) is no worse than the frozen program's by more than a factor 2.
+#[test]
+fn whipple_linear_equals_the_frozen_hand_program() {
+    use rand::{Rng, SeedableRng};
+    let text = std::fs::read_to_string(
+        PathBuf::from(env!("CARGO_MANIFEST_DIR")).join("../generated/whipple.ir"),
+    )
+    .expect("generated/whipple.ir");
+    let now = carvallo_ir::Program::parse(&text).expect("parses");
+    let old = frozen();
+    assert_eq!(now.params, old.params);
+    assert_eq!(now.inputs, old.inputs);
+    let names: Vec<&str> = old.outputs.iter().map(|o| o.name.as_str()).collect();
+    let slot: Vec<usize> = names
+        .iter()
+        .map(|n| {
+            now.outputs.iter().position(|o| o.name == *n).unwrap_or_else(|| panic!("no output {n}"))
+        })
+        .collect();
+    let bench: Vec<f64> = whipple::PARAMS.iter().map(|k| scalar(&anchors(), k)).collect();
+    let mut rng = rand_chacha::ChaCha8Rng::seed_from_u64(0x34_11ea);
+    let mut worst = (0.0f64, String::new());
+    let mut err: Vec<[Vec<f64>; 2]> = vec![[Vec::new(), Vec::new()]; names.len()];
+    let mut exact: Vec<Vec<f64>> = vec![Vec::new(); names.len()];
+    for _ in 0..300 {
+        let params: Vec<f64> = bench.iter().map(|x| x * (1.0 + rng.gen_range(-0.2..0.2))).collect();
+        let inputs: Vec<f64> = std::iter::once(rng.gen_range(0.0..12.0))
+            .chain((0..8).map(|_| rng.gen_range(-20.0..20.0)))
+            .collect();
+        let a = carvallo_ir::hp::eval(&old, &params, &inputs, 256).expect("frozen at 256 bits");
+        let b = carvallo_ir::hp::eval(&now, &params, &inputs, 256)
+            .unwrap_or_else(|e| panic!("generated at 256 bits: {e}"));
+        let af = old.eval_f64(&params, &inputs).expect("f64");
+        let bf = now.eval_f64(&params, &inputs).expect("f64");
+        for (j, name) in names.iter().enumerate() {
+            let d = a[j].sub(&b[slot[j]], 256, astro_float::RoundingMode::ToEven);
+            let x = carvallo_ir::hp::to_f64(&a[j]);
+            let r = carvallo_ir::hp::to_f64(&d).abs() / x.abs().max(1.0);
+            if r > worst.0 {
+                worst = (r, name.to_string());
+            }
+            err[j][0].push((af[j] - x).abs());
+            err[j][1].push((bf[slot[j]] - x).abs());
+            exact[j].push(x);
+        }
+    }
+    assert!(worst.0 < 1e-60, "the generated program differs from the frozen one: {worst:?}");
+    let p99 = |v: &mut Vec<f64>| {
+        v.sort_by(f64::total_cmp);
+        v[((v.len() - 1) as f64 * 0.99).round() as usize]
+    };
+    for (k, name) in names.iter().enumerate() {
+        let rms = (exact[k].iter().map(|x| x * x).sum::<f64>() / exact[k].len() as f64).sqrt();
+        if rms == 0.0 {
+            continue;
+        }
+        let [old_err, new_err] = &mut err[k];
+        let (o, n) =
+            ((p99(old_err) / rms).max(f64::EPSILON), (p99(new_err) / rms).max(f64::EPSILON));
+        assert!(n <= 2.0 * o, "{name}: f64 error {n:e} against the frozen program's {o:e}");
+    }
+}
+
+/// The engine's linearisation against the frozen program of the hand derivation, and what breaks
+/// the comparisons: the right reference gives its matrices; the rear wheel turning at $-v/r_F$
+/// instead of $-v/r_R$ (a wrong reference) changes exactly the speed-dependent matrices $C_1$
+/// and $K_2$, and the same wrong reference in the modified Lagrange route alone makes it
+/// disagree with Kane's.
 fn engine_linearisation_body() {
     use carvallo_codegen::cas::var;
     use carvallo_codegen::derive::whipple::linearised::{
         both_routes, differing, lateral, route, upright,
     };
     let d = both_routes().expect("engine derivation");
-    let hand = whipple::matrices(&mut Vec::new());
     let right = upright(-var("v") / var("rR"));
     let wrong = upright(-var("v") / var("rF"));
     let kane = lateral(&route(&d, "", &right).expect("Kane"), "kane", &mut Vec::new());
-    assert_eq!(differing(&kane, &hand), Vec::<String>::new(), "engine against hand");
+    assert_eq!(
+        differs_from_frozen(&kane),
+        Vec::<String>::new(),
+        "engine against the frozen hand program"
+    );
     let mut checks = Vec::new();
     let off = lateral(&route(&d, "", &wrong).expect("Kane"), "kane", &mut checks);
-    let moved = differing(&off, &hand);
+    let moved = differs_from_frozen(&off);
     assert!(
         !moved.is_empty() && moved.iter().all(|n| n.starts_with("c1_") || n.starts_with("k2_")),
         "a wrong rear wheel rate moves C1 and K2 only: {moved:?}"
@@ -179,7 +311,7 @@ fn engine_linearisation_body() {
 }
 
 #[test]
-fn engine_linearisation_equals_the_hand_series_and_breaks_with_a_wrong_reference() {
+fn engine_linearisation_equals_the_frozen_hand_program_and_breaks_with_a_wrong_reference() {
     crate::on_symbolica_thread(engine_linearisation_body);
 }
 
@@ -195,7 +327,8 @@ fn shift_body() {
     for c in d.checks.iter().filter(|c| c.id.contains("_shift_")) {
         assert!(c.holds, "check {} fails: {}", c.id, c.detail);
     }
-    let hand = whipple::matrices(&mut Vec::new());
+    let (hand, _) = carvallo_codegen::derive::whipple::linearised::matrices(&mut Vec::new())
+        .expect("the engine's matrices");
     let mut about_the_axle = whipple_shifted();
     let cre = about_the_axle.points.iter_mut().find(|p| p.name == "CRe").expect("CRe");
     cre.frame = "L".into();

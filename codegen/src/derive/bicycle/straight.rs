@@ -25,15 +25,15 @@
 //!   handlebar equation being minus the steer equation), one part at a time (the other parts'
 //!   masses and moments set to zero: the general model's terms are sums over its bodies), and
 //!   by origin: the rows $(\partial T/\partial q')'$ and $-\sum m\,M'\,|\,(\partial M/
-//!   \partial q)'$ against the two terms of Carvallo's modified Lagrange equations computed in
-//!   the general model with second-order kinematics ([`crate::derive::whipple::carvallo`]), their sum
-//!   against Kane's $M$ (accelerations), $vC_1$ (gyroscopic) and $v^2K_2$ (centrifugal)
-//!   ([`crate::derive::whipple::linear`]), the gravity row against $gK_0$. The comparison is made in
-//!   exact rational arithmetic at three rational points of the constants and of $s$
-//!   ([`points`], $\sin\eta$, $\cos\eta$ Pythagorean pairs), the general model being
-//!   evaluated at each point ([`linear::dynamics_with`]); a fully symbolic comparison took more
-//!   than four minutes, this one about half a minute. The whole bicycle and the yaw rate of
-//!   n° 108 (6) are compared the same way.
+//!   \partial q)'$ against the two terms of the mechanics engine's modified Lagrange equations
+//!   of the general model, linearised apart ([`linearised::Origins`]), their sum against Kane's
+//!   $M$ (accelerations), $vC_1$ (gyroscopic) and $v^2K_2$ (centrifugal), the gravity row
+//!   against $gK_0$ (the engine's matrices, [`linearised::matrices`], symbolic in the general
+//!   model's parameters, [`general`]). The comparison is made in exact rational arithmetic at
+//!   three rational points of the constants and of $s$ ([`points`], $\sin\eta$, $\cos\eta$
+//!   Pythagorean pairs), the general model's matrices being evaluated at each point. The whole
+//!   bicycle and the yaw rate of n° 108 (6) (the engine's dependent speed $\psi'$ linearised)
+//!   are compared the same way.
 //! * The quartic of n° 119 with $T = st$ (n° 118), its constant term's root in $s^2$ (the
 //!   upper limit, n° 120 and n° 122) in closed form, checked symbolically against the printed
 //!   closed form and its simplification for $c_1 = \tfrac12R\sin\eta$; the lower limit's
@@ -50,7 +50,8 @@ use symbolica::atom::{Atom, AtomCore};
 
 use crate::cas::{rat, var};
 use crate::cas::{show, subst};
-use crate::derive::whipple::{carvallo, linear, reduce, vanishes};
+use crate::derive::whipple::linearised::{self, Origins};
+use crate::derive::whipple::{reduce, vanishes, Matrices, COS_LAMBDA, SIN_LAMBDA};
 use crate::{Check, Derivation, Formula};
 
 /// Parameter names, in order: the constants of n° 117 (`c_1` is $c_1$, `ecg` the rider's distance $e$,
@@ -79,7 +80,7 @@ fn n(k: i64) -> Atom {
 /// $\sin\eta$ and $\cos\eta$ as the polynomial stand-ins of the Whipple derivation (so that its
 /// exact zero test applies).
 fn sc() -> (Atom, Atom) {
-    (v(linear::SIN_LAMBDA), v(linear::COS_LAMBDA))
+    (v(SIN_LAMBDA), v(COS_LAMBDA))
 }
 
 /// The hoop wheel's moments about its contact point (n° 4): $A_1, B_1, C_1$.
@@ -357,8 +358,8 @@ pub fn whipple_mapping(part: Option<usize>) -> Vec<(&'static str, Atom)> {
         ("IFxx", on(2, rat(1, 2) * &mu1 * &r2)),
         ("IFyy", on(2, &mu1 * &r2)),
         ("g", v("g")),
-        (linear::SIN_LAMBDA, v(linear::SIN_LAMBDA)),
-        (linear::COS_LAMBDA, v(linear::COS_LAMBDA)),
+        (SIN_LAMBDA, v(SIN_LAMBDA)),
+        (COS_LAMBDA, v(COS_LAMBDA)),
     ]
 }
 
@@ -421,20 +422,7 @@ pub fn points() -> Vec<Point> {
         ],
     ];
     let names = [
-        "R",
-        "l",
-        "c_1",
-        "ecg",
-        "h",
-        "mu",
-        "mu1",
-        "A2",
-        "C",
-        "L",
-        "g",
-        "s",
-        linear::SIN_LAMBDA,
-        linear::COS_LAMBDA,
+        "R", "l", "c_1", "ecg", "h", "mu", "mu1", "A2", "C", "L", "g", "s", SIN_LAMBDA, COS_LAMBDA,
     ];
     sets.iter()
         .map(|set| names.iter().zip(set).map(|(nm, (p, q))| (*nm, rat(*p, *q))).collect())
@@ -457,7 +445,7 @@ pub const COLUMNS: [&str; 6] = ["theta''", "theta'", "theta", "gamma''", "gamma'
 /// One part's terms of the two equations from the general model at a point, each `[fall, bar]`
 /// by [`COLUMNS`] (exact numbers): Kane's inertial terms (accelerations $M$, rates $vC_1$,
 /// angles $v^2K_2$), the gravity terms $gK_0$ (angle columns), and the two terms of Carvallo's
-/// modified Lagrange equations by the route of [`crate::derive::whipple::carvallo`]: the momentum
+/// modified Lagrange equations from the engine ([`linearised::Origins`]): the momentum
 /// derivative $(\partial T^*/\partial q')'$ and the correction
 /// $-\sum m\,M'\,|\,(\partial M/\partial q)'$. The fall equation is the lean equation, the
 /// handlebar equation minus the steer equation, the steer columns change sign
@@ -475,20 +463,30 @@ pub struct PartTerms {
     pub yaw_rate: Atom,
 }
 
+/// The general model's linear terms, symbolic in its parameters: Kane's matrices and the modified
+/// Lagrange equations' parts ([`linearised::matrices`]).
+pub struct General {
+    /// $M$, $C_1$, $K_0$, $K_2$.
+    pub kane: Matrices,
+    /// The momentum's derivative, the correction and the yaw rate.
+    pub parts: Origins,
+}
+
+/// The general model from the mechanics engine.
+pub fn general() -> Result<General> {
+    let model = crate::derive::whipple::description::whipple_rear_spin_from_lean();
+    let (kane, parts) = linearised::matrices_of(&model, false, &mut Vec::new())?;
+    Ok(General { kane, parts })
+}
+
 /// The terms of one part (or of the whole bicycle, `None`) at `pt` from the general model.
 // The row and column index six matrices and the output rows together.
 #[allow(clippy::needless_range_loop)]
-pub fn general_terms(
-    part: Option<usize>,
-    pt: &Point,
-    k0: &[[Atom; 2]; 2],
-    pitch2: &Atom,
-) -> PartTerms {
-    let mapping: Vec<(&str, Atom)> =
+pub fn general_terms(part: Option<usize>, pt: &Point, gen: &General) -> PartTerms {
+    let rs = at(&(v("R") * v("s")), pt);
+    let mut mapping: Vec<(&str, Atom)> =
         whipple_mapping(part).into_iter().map(|(name, x)| (name, at(&x, pt))).collect();
-    let prm = |name: &str| -> Atom {
-        mapping.iter().find(|(k, _)| *k == name).map_or_else(|| var(name), |(_, x)| x.clone())
-    };
+    mapping.push(("v", rs.clone()));
     let to_point = |e: &Atom| -> Atom {
         let mut a = e.clone();
         for (name, x) in &mapping {
@@ -496,40 +494,36 @@ pub fn general_terms(
         }
         a.expand()
     };
-    let rs = at(&(v("R") * v("s")), pt);
     let g = at(&v("g"), pt);
-    let dy = linear::dynamics_with(&prm);
-    let cf = carvallo::carvallo_form(&prm, &to_point(pitch2));
+    let (k, p) = (&gen.kane, &gen.parts);
     let sign = |row: usize, col: usize| if (row == 1) != (col == 1) { n(-1) } else { n(1) };
     let zero_row = || -> Row { std::array::from_fn(|_| n(0)) };
+    let y = &p.yaw_rate;
     let mut out = PartTerms {
         kane: [zero_row(), zero_row()],
         gravity: [zero_row(), zero_row()],
         momentum: [zero_row(), zero_row()],
         correction: [zero_row(), zero_row()],
-        yaw_rate: dy.yaw_rate.clone(),
-    };
-    // Coefficient of a state symbol in a linear form, at v = R s.
-    let coef = |f: &Atom, x: &str| -> Atom {
-        let d = f.derivative(var(x).get_symbol().expect("symbol"));
-        subst(&d, "v", &rs).expand()
+        yaw_rate: to_point(&y[0]) * v("phi")
+            + to_point(&y[1]) * v("delta")
+            + to_point(&y[2]) * v("phid")
+            + to_point(&y[3]) * v("deltad"),
     };
     for row in 0..2 {
         for col in 0..2 {
+            // The equation's sign (handlebar = minus steer) times the column's (gamma = -delta).
             let sg = sign(row, col);
             let b = 3 * col;
-            out.kane[row][b] = (&sg * &dy.m[row][col]).expand();
-            out.kane[row][b + 1] = (&sg * &rs * &dy.c1[row][col]).expand();
-            out.kane[row][b + 2] = (&sg * rs.pow(n(2)) * &dy.k2[row][col]).expand();
-            out.gravity[row][b + 2] = (&sg * &g * to_point(&k0[row][col])).expand();
-            let names = [linear::QDD[col], linear::QD[col], linear::Q[col]];
-            // The equation's sign (handlebar = minus steer) times the column's (gamma = -delta).
-            for (j, x) in names.iter().enumerate() {
-                let mom = coef(&cf.momentum_terms[row], x);
-                let all = coef(&cf.equations[row], x);
-                out.momentum[row][b + j] = (&sg * &mom).expand();
-                out.correction[row][b + j] = (&sg * (&all - &mom)).expand();
-            }
+            let put = |x: &Atom| (&sg * to_point(x)).expand();
+            out.kane[row][b] = put(&k.m[row][col]);
+            out.kane[row][b + 1] = (&rs * put(&k.c1[row][col])).expand();
+            out.kane[row][b + 2] = (rs.pow(n(2)) * put(&k.k2[row][col])).expand();
+            out.gravity[row][b + 2] = (&g * put(&k.k0[row][col])).expand();
+            out.momentum[row][b] = put(&k.m[row][col]);
+            out.momentum[row][b + 1] = put(&p.momentum_rate[row][col]);
+            out.momentum[row][b + 2] = put(&p.momentum_angle[row][col]);
+            out.correction[row][b + 1] = put(&p.correction_rate[row][col]);
+            out.correction[row][b + 2] = put(&p.correction_angle[row][col]);
         }
     }
     out
@@ -570,8 +564,8 @@ fn check(section: &str, id: &str, statement: &str, diff: &Atom, detail: String) 
 }
 
 fn to_eta(e: &Atom) -> Atom {
-    let a = subst(e, linear::SIN_LAMBDA, &var("sin(eta)"));
-    subst(&a, linear::COS_LAMBDA, &var("cos(eta)"))
+    let a = subst(e, SIN_LAMBDA, &var("sin(eta)"));
+    subst(&a, COS_LAMBDA, &var("cos(eta)"))
 }
 
 /// Compares the transcribed rows `table` with the general model's `derived`, both `[point][fall
@@ -635,7 +629,7 @@ pub fn derive() -> Result<Derivation> {
         ));
     }
     // n° 116 by part and by origin, against the general model at exact rational points.
-    let st = linear::statics();
+    let gen = general()?;
     let pts = points();
     let tabs = tables();
     let zero_rows =
@@ -672,7 +666,7 @@ pub fn derive() -> Result<Derivation> {
             let inert: [Row; 2] = std::array::from_fn(|r| {
                 std::array::from_fn(|j| (&mom[r][j] + &cor[r][j]).expand())
             });
-            let g = general_terms(Some(p), pt, &st.k0, &st.pitch2);
+            let g = general_terms(Some(p), pt, &gen);
             tab_mom.push(mom);
             tab_cor.push(cor);
             tab_grav.push(grav);
@@ -710,7 +704,7 @@ pub fn derive() -> Result<Derivation> {
             checks.push(numeric_check(
                 "116",
                 &format!("{eq_name}_{key}_momentum"),
-                &format!("the {part}'s row (dT/d{q}')' of the n° 116 table of the {eq_name} equation equals the momentum derivative (dT*/d{q}')' of Carvallo's modified Lagrange equation for the {part} alone in the general Carvallo-Whipple bicycle (second-order kinematics, whipple::carvallo), {intro}"),
+                &format!("the {part}'s row (dT/d{q}')' of the n° 116 table of the {eq_name} equation equals the momentum derivative (dT*/d{q}')' of Carvallo's modified Lagrange equation for the {part} alone in the general Carvallo-Whipple bicycle (the mechanics engine's modified Lagrange equations, linearised part by part), {intro}"),
                 compare_rows(&tab_mom, &gen_mom, eq),
             ));
             checks.push(numeric_check(
@@ -741,7 +735,7 @@ pub fn derive() -> Result<Derivation> {
     let mut yaw_ok = true;
     let mut yaw_detail = String::new();
     for (k, pt) in pts.iter().enumerate() {
-        let g = general_terms(None, pt, &st.k0, &st.pitch2);
+        let g = general_terms(None, pt, &gen);
         let rows: [Row; 2] =
             std::array::from_fn(|r| std::array::from_fn(|j| at(&sums[6 * r + j], pt)));
         let gen: [Row; 2] = std::array::from_fn(|r| {

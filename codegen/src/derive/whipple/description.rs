@@ -146,3 +146,19 @@ pub fn whipple_shifted() -> Model {
     body.centre = "GBe".into();
     m
 }
+
+/// The bicycle of [`whipple`] with the rear wheel's rotation measured from the lean frame L
+/// instead of the rear frame B: the same bicycle (the axle is L's and B's y axis, the wheel is
+/// symmetric about it), but its independent speed is then the wheel's spin about its axle up to
+/// the heading's share, $\dot\theta_R + \dot\theta$ of [`whipple`], as the memoir's $s$ is
+/// (n° 108): holding it fixed holds the forward speed at first order, where holding
+/// [`whipple`]'s rate relative to the pitching frame does not. Kane's equations of lean and
+/// steer are the same; how Carvallo's modified Lagrange equations split between the momentum's
+/// derivative and the correction is not (the split depends on which speeds are held).
+pub fn whipple_rear_spin_from_lean() -> Model {
+    let mut m = whipple();
+    m.name = "whipple_rear_spin_from_lean".into();
+    let rear = m.wheels.iter_mut().find(|w| w.name == "R").expect("the rear wheel");
+    rear.carrier = "L".into();
+    m
+}

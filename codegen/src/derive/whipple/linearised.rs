@@ -17,9 +17,8 @@ use std::collections::BTreeMap;
 use anyhow::{anyhow, Result};
 use symbolica::atom::{Atom, AtomCore};
 
-use super::linear::{COS_LAMBDA, SIN_LAMBDA};
 use super::nonlinear::INDEPENDENT;
-use super::{check, description, reduce, vanishes, Matrices};
+use super::{check, description, reduce, vanishes, Matrices, COS_LAMBDA, SIN_LAMBDA};
 use crate::cas::{expr, reduce_pair, var};
 use crate::mechanics::engine;
 use crate::mechanics::engine::linear::{self, Linear, Reference};
@@ -65,10 +64,90 @@ pub fn both_routes() -> Result<Derivation> {
 /// about `reference`, every jet reduced modulo $\sin^2\lambda + \cos^2\lambda = 1$ as it is
 /// made (which keeps the mass matrix's entries at tens of terms instead of thousands).
 pub fn route(d: &Derivation, prefix: &str, reference: &Reference) -> Result<Linear> {
-    linear::linearise(&d.formulas, prefix, reference, &|e: &Atom| {
-        reduce_pair(&stand_ins(&e.expand()), &var(SIN_LAMBDA), &var(COS_LAMBDA))
-    })
-    .map_err(|e| anyhow!("the Whipple bicycle: {e}"))
+    linear::linearise(&d.formulas, prefix, reference, &normal)
+        .map_err(|e| anyhow!("the Whipple bicycle: {e}"))
+}
+
+/// The lean and steer rows of Carvallo's modified Lagrange equations split by origin, linearised
+/// about upright running and written as generalised inertia forces (the left-hand side of
+/// $\ldots = Q$), each a $2 \times 2$ matrix (rows lean, steer; columns lean, steer), reduced:
+/// the momentum's derivative $(\partial T/\partial q')'$ has the accelerations' coefficients
+/// $M$ and the rates' and angles' `momentum_rate`, `momentum_angle`; Carvallo's correction
+/// $-\sum m\,M'\,|\,(\partial M/\partial q)'$ has no accelerations; the plain Lagrange term
+/// $-\mathrm{d}T/\mathrm{d}q$ it replaces (the pitch following through the front contact) is
+/// given for comparison. Momentum plus correction is Kane's $M$, $vC_1$, $v^2K_2$.
+pub struct Origins {
+    /// Coefficients of the rates in $(\partial T/\partial q')'$.
+    pub momentum_rate: [[Atom; 2]; 2],
+    /// Coefficients of the angles in $(\partial T/\partial q')'$.
+    pub momentum_angle: [[Atom; 2]; 2],
+    /// Coefficients of the rates in the correction.
+    pub correction_rate: [[Atom; 2]; 2],
+    /// Coefficients of the angles in the correction.
+    pub correction_angle: [[Atom; 2]; 2],
+    /// The plain Lagrange term, when the derivation has it.
+    pub plain: Option<Plain>,
+    /// The yaw rate $\psi'$ to first order: coefficients of lean, steer, lean rate, steer rate.
+    pub yaw_rate: [Atom; 4],
+}
+
+/// The plain Lagrange term $-\mathrm{d}T/\mathrm{d}q$ linearised, beside the correction's value.
+pub struct Plain {
+    /// Coefficients of the rates in $-\mathrm{d}T/\mathrm{d}q$.
+    pub rate: [[Atom; 2]; 2],
+    /// Coefficients of the angles in $-\mathrm{d}T/\mathrm{d}q$.
+    pub angle: [[Atom; 2]; 2],
+    /// The values at the reference of the correction and of $-\mathrm{d}T/\mathrm{d}q$, by row.
+    pub values: [[Atom; 2]; 2],
+}
+
+/// The modified Lagrange route of `d` linearised about `reference` with its parts
+/// ([`Origins`]).
+pub fn origins(d: &Derivation, reference: &Reference) -> Result<(Linear, Origins)> {
+    let rows = ["phid", "deltad"];
+    let plain = d.formulas.iter().any(|f| f.name == "L_q_phid");
+    let mut extra = Vec::new();
+    let parts_asked: &[&str] = if plain { &["L_p_", "L_c_", "L_q_"] } else { &["L_p_", "L_c_"] };
+    for part in parts_asked {
+        extra.extend(rows.iter().map(|u| format!("{part}{u}")));
+    }
+    extra.push("psid".to_string());
+    let (lin, parts) = linear::linearise_with(&d.formulas, "L_", reference, &normal, &extra)
+        .map_err(|e| anyhow!("the Whipple bicycle: {e}"))?;
+    let red = |e: &Atom| reduce(&stand_ins(e));
+    // Rows of a part (0 momentum, 1 correction, 2 dT/dq), signed as inertia forces.
+    let mat = |part: usize, rate: bool, sign: i64| -> [[Atom; 2]; 2] {
+        std::array::from_fn(|r| {
+            std::array::from_fn(|c| {
+                let row = &parts[2 * part + r];
+                red(&(Atom::num(sign) * if rate { &row.u[c] } else { &row.q[c] }))
+            })
+        })
+    };
+    let yaw = parts.last().expect("the yaw rate");
+    Ok((
+        lin,
+        Origins {
+            momentum_rate: mat(0, true, 1),
+            momentum_angle: mat(0, false, 1),
+            correction_rate: mat(1, true, -1),
+            correction_angle: mat(1, false, -1),
+            plain: plain.then(|| Plain {
+                rate: mat(2, true, -1),
+                angle: mat(2, false, -1),
+                values: std::array::from_fn(|part| {
+                    std::array::from_fn(|r| red(&-&parts[2 * (part + 1) + r].value))
+                }),
+            }),
+            yaw_rate: [red(&yaw.q[0]), red(&yaw.q[1]), red(&yaw.u[0]), red(&yaw.u[1])],
+        },
+    ))
+}
+
+/// The normal form of every jet: expanded, in the stand-ins, reduced modulo
+/// $\sin^2\lambda + \cos^2\lambda = 1$.
+fn normal(e: &Atom) -> Atom {
+    reduce_pair(&stand_ins(&e.expand()), &var(SIN_LAMBDA), &var(COS_LAMBDA))
 }
 
 /// One route's lean and steer matrices, with the checks that they are the benchmark's form.
@@ -153,11 +232,25 @@ fn entries(m: &Matrices) -> Vec<(String, &Atom)> {
 
 /// $M$, $C_1$, $K_0$, $K_2$ from the engine (Kane's route), reduced as [`super::reduce`]
 /// reduces, with the checks of both routes and of their agreement.
-pub fn matrices(checks: &mut Vec<Check>) -> Result<Matrices> {
-    let d = both_routes()?;
+pub fn matrices(checks: &mut Vec<Check>) -> Result<(Matrices, Origins)> {
+    matrices_of(&description::whipple(), true, checks)
+}
+
+/// [`matrices`] for another description of the bicycle (the same bicycle with other speeds,
+/// [`description::whipple_rear_spin_from_lean`]).
+/// With `plain`, [`Origins::plain`] is filled.
+pub fn matrices_of(
+    model: &engine::Model,
+    plain: bool,
+    checks: &mut Vec<Check>,
+) -> Result<(Matrices, Origins)> {
+    let derive = if plain { engine::derivation_with_plain_lagrange } else { engine::derivation };
+    let (d, _, _) =
+        derive(model, file!()).map_err(|e| anyhow!("the Whipple bicycle ({}): {e}", model.name))?;
     let reference = upright(-var("v") / var("rR"));
     let kane = lateral(&route(&d, "", &reference)?, "kane", checks);
-    let lagrange = lateral(&route(&d, "L_", &reference)?, "lagrange", checks);
+    let (lin, parts) = origins(&d, &reference)?;
+    let lagrange = lateral(&lin, "lagrange", checks);
     let differ = differing(&kane, &lagrange);
     checks.push(check(
         "kane_equals_lagrange",
@@ -165,7 +258,7 @@ pub fn matrices(checks: &mut Vec<Check>) -> Result<Matrices> {
         differ.is_empty(),
         if differ.is_empty() { String::new() } else { format!("differ: {}", differ.join(", ")) },
     ));
-    Ok(kane)
+    Ok((kane, parts))
 }
 
 /// The entries in which two sets of matrices differ (exactly), by name.

@@ -31,8 +31,56 @@ pub struct Lagrange {
     pub f: Vec<Atom>,
 }
 
-/// Derives the modified Lagrange equations of `m` from Kane's partial velocities `k`.
-pub fn derive(m: &Model, st: &mut Store, k: &Kane) -> Lagrange {
+/// The independent coordinate whose rate is the speed `u`, if any (an ignorable coordinate's
+/// plain term vanishes: the kinetic energy does not depend on it).
+fn coordinate_of(m: &Model, u: &str) -> Option<String> {
+    m.coordinates
+        .iter()
+        .find(|c| c.speed() == u && c.kind == Kind::Independent)
+        .map(|c| c.name.clone())
+}
+
+/// $\mathrm{d}T/\mathrm{d}q = \partial T/\partial q + \sum_d \partial T/\partial q_d\,\partial q_d/\partial q$,
+/// the dependent coordinates $q_d$ following $q$ through the contact heights
+/// ($H_{q_d}\,\partial q_d/\partial q = -H_q$); `None` when the heights do not fix the dependent
+/// coordinates one to one (their numbers differ, or more than three).
+fn plain_term(m: &Model, st: &mut Store, k: &Kane, t: &Atom, q: &str) -> Option<Atom> {
+    let dependent: Vec<&str> = m
+        .coordinates
+        .iter()
+        .filter(|c| c.kind == Kind::Dependent)
+        .map(|c| c.name.as_str())
+        .collect();
+    let mut out = st.partial(t, q);
+    if dependent.is_empty() {
+        return Some(out);
+    }
+    if dependent.len() != k.heights.len() || dependent.len() > 3 {
+        return None;
+    }
+    let unknowns: Vec<String> = dependent.iter().map(|d| format!("plain_d{d}")).collect();
+    let eqs: Vec<Atom> = k
+        .heights
+        .iter()
+        .map(|(_, h)| {
+            let mut e = st.partial(h, q);
+            for (d, x) in dependent.iter().zip(&unknowns) {
+                e += st.partial(h, d) * var(x);
+            }
+            e
+        })
+        .collect();
+    let names: Vec<&str> = unknowns.iter().map(String::as_str).collect();
+    let rates = crate::cas::solve_linear(&eqs, &names);
+    for (d, rate) in dependent.iter().zip(rates) {
+        out += st.partial(t, d) * rate;
+    }
+    Some(out.expand())
+}
+
+/// Derives the modified Lagrange equations of `m` from Kane's partial velocities `k`; with
+/// `plain`, also the plain Lagrange terms `L_q_<speed>` ([`plain_term`]).
+pub fn derive(m: &Model, st: &mut Store, k: &Kane, plain: bool) -> Lagrange {
     let n = k.independent.len();
     let u: Vec<Atom> = k.independent.iter().map(|s| var(s)).collect();
     let mut t = Atom::num(0);
@@ -97,8 +145,30 @@ pub fn derive(m: &Model, st: &mut Store, k: &Kane) -> Lagrange {
             msym[kk][j] = s.clone();
             msym[j][kk] = s;
         }
+        let u_k = &k.independent[kk];
         let pdot = st.dt(&p);
-        let rhs = &q_grav[kk] + &k.torque_forces[kk] - pdot + &correction[kk];
+        let pdot = st.put(
+            &format!("L_p_{u_k}"),
+            &format!("(d/dt dT/d{u_k}) at vanishing accelerations: the momentum's derivative of the modified Lagrange equation of {u_k}"),
+            pdot,
+        );
+        let corr = st.put(
+            &format!("L_c_{u_k}"),
+            &format!("Carvallo's term sum m v.(dv/d{u_k})' + w.I(dw/d{u_k})' of the equation of {u_k} (n° 72), which replaces dT/dq"),
+            correction[kk].expand(),
+        );
+        if let Some(q) = coordinate_of(m, u_k).filter(|_| plain) {
+            // The plain Lagrange term dT/dq of the coordinate whose rate u_k is (the dependent
+            // coordinates following it through the contact heights), for comparison only.
+            if let Some(dtdq) = plain_term(m, st, k, &t, &q) {
+                let _ = st.put(
+                    &format!("L_q_{u_k}"),
+                    &format!("dT/d{q} with the dependent coordinates following through the contact heights: the plain Lagrange term Carvallo's replaces (for comparison)"),
+                    dtdq,
+                );
+            }
+        }
+        let rhs = &q_grav[kk] + &k.torque_forces[kk] - pdot + corr;
         fsym.push(st.put(
             &format!("L_f_{}", k.independent[kk]),
             &format!("right-hand side of the modified Lagrange equation of {}", k.independent[kk]),

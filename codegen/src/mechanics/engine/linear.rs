@@ -242,6 +242,21 @@ pub struct Reference {
     pub inputs: Vec<String>,
 }
 
+/// One more formula to first order about the reference, like a row of the forcing: its value
+/// there and its coefficients in the independent coordinates (the dependent ones eliminated),
+/// the independent speeds and the inputs.
+#[derive(Clone, Debug)]
+pub struct Row {
+    /// The value at the reference.
+    pub value: Atom,
+    /// The coefficients of the independent coordinates' perturbations.
+    pub q: Vec<Atom>,
+    /// The coefficients of the independent speeds' perturbations.
+    pub u: Vec<Atom>,
+    /// The coefficients of the inputs' perturbations.
+    pub t: Vec<Atom>,
+}
+
 /// Linearises the equations named `<prefix>M_<ui>_<uj>` and `<prefix>f_<ui>` (`""` for Kane's,
 /// `"L_"` for the modified Lagrange equations) about `reference`: a dependent coordinate's
 /// perturbation is solved from the first-order terms of the contact heights by Cramer's rule;
@@ -253,6 +268,18 @@ pub fn linearise(
     reference: &Reference,
     normal: &dyn Fn(&Atom) -> Atom,
 ) -> Result<Linear, LinearError> {
+    Ok(linearise_with(formulas, prefix, reference, normal, &[])?.0)
+}
+
+/// [`linearise`], and the formulas named `extra` linearised the same way ([`Row`], in order):
+/// the parts of an equation (the modified Lagrange equations' momentum and correction terms).
+pub fn linearise_with(
+    formulas: &[Formula],
+    prefix: &str,
+    reference: &Reference,
+    normal: &dyn Fn(&Atom) -> Atom,
+    extra: &[String],
+) -> Result<(Linear, Vec<Row>), LinearError> {
     let Reference { values: reference, coordinates, dependent, speeds, heights, inputs } =
         reference;
     if dependent.len() != heights.len() {
@@ -278,6 +305,7 @@ pub fn linearise(
         roots.push(format!("{prefix}f_{ui}"));
         roots.extend(speeds[i..].iter().map(|uj| format!("{prefix}M_{ui}_{uj}")));
     }
+    roots.extend(extra.iter().cloned());
     let all = jets(&cone(formulas, &roots), reference, &vars, normal)?;
     let get = |name: &str| all.get(name).ok_or_else(|| LinearError::Missing(name.to_string()));
     let nq = coordinates.len();
@@ -323,15 +351,11 @@ pub fn linearise(
             m[j][i] = e;
         }
     }
-    let mut f0 = Vec::new();
-    let mut f_q = Vec::new();
-    let mut f_u = Vec::new();
-    let mut f_t = Vec::new();
-    for s in speeds {
-        let j = get(&format!("{prefix}f_{s}"))?;
-        f0.push(j.value.clone());
-        f_q.push(
-            (0..nq)
+    let row = |name: &str| -> Result<Row, LinearError> {
+        let j = get(name)?;
+        Ok(Row {
+            value: j.value.clone(),
+            q: (0..nq)
                 .map(|c| {
                     let mut e = j.slope[c].clone();
                     for (k, row) in dq_d.iter().enumerate() {
@@ -340,11 +364,23 @@ pub fn linearise(
                     e.expand()
                 })
                 .collect(),
-        );
-        f_u.push((0..n).map(|k| j.slope[nq + nd + k].clone()).collect());
-        f_t.push((0..inputs.len()).map(|k| j.slope[nq + nd + n + k].clone()).collect());
+            u: (0..n).map(|k| j.slope[nq + nd + k].clone()).collect(),
+            t: (0..inputs.len()).map(|k| j.slope[nq + nd + n + k].clone()).collect(),
+        })
+    };
+    let mut f0 = Vec::new();
+    let mut f_q = Vec::new();
+    let mut f_u = Vec::new();
+    let mut f_t = Vec::new();
+    for s in speeds {
+        let r = row(&format!("{prefix}f_{s}"))?;
+        f0.push(r.value);
+        f_q.push(r.q);
+        f_u.push(r.u);
+        f_t.push(r.t);
     }
-    Ok(Linear {
+    let extra = extra.iter().map(|name| row(name)).collect::<Result<Vec<_>, _>>()?;
+    let lin = Linear {
         vars,
         coordinates: coordinates.clone(),
         speeds: speeds.clone(),
@@ -356,5 +392,6 @@ pub fn linearise(
         f_t,
         heights0,
         dependent: dependent.iter().cloned().zip(dq_d).collect(),
-    })
+    };
+    Ok((lin, extra))
 }

@@ -533,6 +533,25 @@ pub fn derivation(
     m: &Model,
     source: &str,
 ) -> Result<(crate::Derivation, usize, Vec<String>), DescriptionError> {
+    derivation_of(m, source, false)
+}
+
+/// [`derivation`], and for every independent speed that is a coordinate's rate the plain
+/// Lagrange term $\mathrm{d}T/\mathrm{d}q$ that Carvallo's correction replaces, named
+/// `L_q_<speed>` (for comparison with the correction `L_c_<speed>`; it costs the partial
+/// derivatives of every partial velocity, so only a derivation that compares asks for it).
+pub fn derivation_with_plain_lagrange(
+    m: &Model,
+    source: &str,
+) -> Result<(crate::Derivation, usize, Vec<String>), DescriptionError> {
+    derivation_of(m, source, true)
+}
+
+fn derivation_of(
+    m: &Model,
+    source: &str,
+    plain: bool,
+) -> Result<(crate::Derivation, usize, Vec<String>), DescriptionError> {
     let mut st = store::Store::new(&m.name, "");
     let k = kane::derive(m, &mut st)?;
     for (wheel, h) in &k.heights {
@@ -562,7 +581,7 @@ pub fn derivation(
         kinetic / Atom::num(2) + &k.potential,
     );
     let kane_len = st.formulas.len();
-    let _ = lagrange::derive(m, &mut st, &k);
+    let _ = lagrange::derive(m, &mut st, &k, plain);
     let mut inputs = m.configuration();
     inputs.extend(k.independent.iter().cloned());
     inputs.extend(m.inputs.iter().cloned());
