@@ -343,6 +343,23 @@ pub fn shift_checks(checks: &mut Vec<Check>, unshifted: &Matrices) -> Result<()>
     Ok(())
 }
 
+/// The bicycle with the rider's body shifted by ε ([`description::whipple_shifted`]), Kane's
+/// route linearised about upright running in the lean, the steer, the speeds and ε (ε's
+/// coefficients are the inputs' column of [`Linear::f_t`]).
+pub fn shifted() -> Result<Linear> {
+    let (d, _, _) = engine::derivation(&description::whipple_shifted(), file!())
+        .map_err(|e| anyhow!("the Whipple bicycle with its rider shifted: {e}"))?;
+    route(&d, "", &shifted_reference())
+}
+
+/// Upright running with the shift ε as a perturbed input (its value 0).
+fn shifted_reference() -> Reference {
+    let mut reference = upright(-var("v") / var("rR"));
+    reference.values.insert("epsilon".into(), Atom::num(0));
+    reference.inputs.push("epsilon".into());
+    reference
+}
+
 /// [`shift_checks`] for another description of the shift (a test moves the axis of the shift).
 pub fn shift_checks_of(
     model: &engine::Model,
@@ -352,9 +369,7 @@ pub fn shift_checks_of(
 ) -> Result<()> {
     let (d, _, _) = engine::derivation(model, file!())
         .map_err(|e| anyhow!("the Whipple bicycle with its rider shifted: {e}"))?;
-    let mut reference = upright(-var("v") / var("rR"));
-    reference.values.insert("epsilon".into(), Atom::num(0));
-    reference.inputs.push("epsilon".into());
+    let reference = shifted_reference();
     let vs = var("v").get_symbol().expect("symbol");
     let expected = -var("g") * var("mB") * var("zB");
     for &(prefix, name) in routes {

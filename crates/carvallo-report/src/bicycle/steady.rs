@@ -273,6 +273,16 @@ fn numbers() -> Vec<Entry> {
         verdict: policy::finding(Verdict::MemoirError),
         note: "the memoir prints no number: its (delta theta), (delta gamma) of n° 98 with the geometry solved for epsilon/theta, with its printed ratio (memoir column) and with the derived one (generated `shift_98`); at this speed the derived shift is about a quarter of theta and of the opposite sign to the memoir's".into(),
     });
+    let exact20 = bike.lateral_shift_exact(eta, s20);
+    e.push(Entry {
+        section: "98".into(),
+        quantity: "lateral shift epsilon/theta at 20 km/h, exact at first order".into(),
+        memoir: Memoir::Number(shift20_memoir),
+        derived: Derived::Number(exact20),
+        rel_diff: Some((exact20 - shift20_memoir).abs() / exact20.abs().max(shift20_memoir.abs())),
+        verdict: policy::finding(Verdict::MemoirError),
+        note: format!("the mechanics engine's bicycle with the body turned by epsilon about the ground trace OI (n° 98's definition), linearised and solved for a steady turn without hands (generated `shift_98_exact`, checked to solve both rows exactly), with none of n° 86's reductions; it differs from the reduced route's {shift20:.4} (the entry above) by {:.1} % and has its sign, opposite to the memoir's", 100.0 * (exact20 - shift20).abs() / shift20.abs()),
+    });
     e.push(number(
         "104",
         "mu g h (kilogrammetres)",

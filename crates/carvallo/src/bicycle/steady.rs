@@ -31,7 +31,7 @@ crate::scene! {
             fall_first_order, tan_theta_86, curvature_87, ratio_88, epsilon_bound_89,
             steer_first_order, theta1_over_theta, memoir_theta1_over_theta,
             theta1_over_theta_geometry, no_hands_s2, memoir_no_hands_s2, shift_98,
-            memoir_shift_98, kinetic_frame, dt0_dp, dt0_deta, dt0_dn, dfdpp_frame,
+            memoir_shift_98, shift_98_exact, kinetic_frame, dt0_dp, dt0_deta, dt0_dn, dfdpp_frame,
             memoir_fall_rear, memoir_fall_front, memoir_fall_frame, memoir_fall_grav_rear,
             memoir_fall_grav_front, memoir_fall_grav_frame, memoir_tan_theta_86,
             memoir_curvature_87, memoir_ratio_88, memoir_epsilon_bound_89, memoir_steer_front,
@@ -301,5 +301,14 @@ impl BicycleSteady {
     /// rate `s` (derived ratio).
     pub fn lateral_shift(&self, eta: f64, s: f64) -> f64 {
         self.get(&SteadyState { eta, s, ..SteadyState::default() }, "shift_98")
+    }
+
+    /// n° 98 exactly at first order: the lateral shift ε/θ of a steady turn without hands at
+    /// rolling rate `s`, from the mechanics engine's bicycle with the body turned about the
+    /// frame's ground trace, linearised (generated `shift_98_exact`; the wheels' diametral
+    /// moment about the centre is $C_1$). [`Self::lateral_shift`] is the memoir's route, which
+    /// reduces the fall equation first (n° 86).
+    pub fn lateral_shift_exact(&self, eta: f64, s: f64) -> f64 {
+        self.get(&SteadyState { eta, s, ..SteadyState::default() }, "shift_98_exact")
     }
 }

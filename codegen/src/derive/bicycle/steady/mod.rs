@@ -140,6 +140,195 @@ fn d(f: &Atom, x: &str) -> Atom {
     f.derivative(var(x).get_symbol().expect("symbol"))
 }
 
+/// The rational points of the comparison with the mechanics engine (n° 98): generic constants
+/// near the memoir's (hoop-like wheels with $A_1 = C_1 + \mu_1R^2$, the symmetric wheel the
+/// Whipple bicycle assumes), $\sin\eta$, $\cos\eta$ Pythagorean pairs and the spin $s$.
+fn engine_points() -> Vec<Vec<(&'static str, Atom)>> {
+    let r = |n: i64, d: i64| Atom::num(n) / Atom::num(d);
+    let sets = [
+        [
+            (19, 50),
+            (981, 100),
+            (70, 1),
+            (3, 20),
+            (1, 1),
+            (75, 1),
+            (78, 1),
+            (8, 1),
+            (6, 1),
+            (5, 1),
+            (11, 10),
+            (2, 25),
+            (5, 13),
+            (12, 13),
+            (14, 1),
+        ],
+        [
+            (2, 5),
+            (10, 1),
+            (64, 1),
+            (1, 5),
+            (9, 10),
+            (60, 1),
+            (66, 1),
+            (7, 1),
+            (4, 1),
+            (4, 1),
+            (23, 20),
+            (1, 20),
+            (3, 5),
+            (4, 5),
+            (9, 1),
+        ],
+        [
+            (7, 20),
+            (49, 5),
+            (80, 1),
+            (1, 10),
+            (11, 10),
+            (90, 1),
+            (95, 1),
+            (10, 1),
+            (9, 1),
+            (6, 1),
+            (1, 1),
+            (1, 10),
+            (8, 17),
+            (15, 17),
+            (20, 1),
+        ],
+    ];
+    let names =
+        ["R", "g", "mu", "e", "h", "A", "B", "C", "L", "mu1", "l", "c", "sin_eta", "cos_eta", "s"];
+    sets.iter()
+        .map(|set| {
+            let mut pt: Vec<(&str, Atom)> =
+                names.iter().zip(set).map(|(n, (p, q))| (*n, r(*p, *q))).collect();
+            let get = |pt: &Vec<(&str, Atom)>, n: &str| {
+                pt.iter().find(|(k, _)| *k == n).map(|(_, x)| x.clone()).expect("named")
+            };
+            let m = get(&pt, "mu1") * get(&pt, "R").pow(Atom::num(2));
+            pt.push(("C1", (&m / Atom::num(2)).expand()));
+            pt.push(("A1", (Atom::num(3) * &m / Atom::num(2)).expand()));
+            pt.push(("B1", (Atom::num(2) * &m).expand()));
+            pt.push(("sin_omega", get(&pt, "sin_eta")));
+            pt.push(("cos_omega", get(&pt, "cos_eta")));
+            pt
+        })
+        .collect()
+}
+
+/// Carvallo's bicycle at a point of [`engine_points`] as a parameter set of the general
+/// Carvallo–Whipple bicycle: the mounted frame (mass $\mu$, centre $e$ ahead of and $h$ above
+/// the rear contact, moments $A$, $B$, $C$ and product $L$ about the rear contact's axes) as
+/// the rear body, a massless fork, hoop-like wheels of radius $R$ whose moments about the
+/// centre are $C_1$ (diametral) and $B_1 - \mu_1R^2$ (axial), the trail
+/// $(R\sin\eta - c)/\cos\eta$, the steering axis' tilt $\eta$ and the speed $v = Rs$.
+fn whipple_values(pt: &[(&str, Atom)]) -> Vec<(&'static str, Atom)> {
+    let get = |n: &str| pt.iter().find(|(k, _)| *k == n).map(|(_, x)| x.clone()).expect("named");
+    let (r, mu, mu1, e, h) = (get("R"), get("mu"), get("mu1"), get("e"), get("h"));
+    let sq = |x: &Atom| x.pow(Atom::num(2));
+    let z = Atom::num(0);
+    let vals = vec![
+        ("w", get("l")),
+        ("c", (&r * get("sin_eta") - get("c")) / get("cos_eta")),
+        ("sin_lambda", get("sin_eta")),
+        ("cos_lambda", get("cos_eta")),
+        ("g", get("g")),
+        ("rR", r.clone()),
+        ("rF", r.clone()),
+        ("mR", mu1.clone()),
+        ("mF", mu1.clone()),
+        ("IRxx", get("C1")),
+        ("IFxx", get("C1")),
+        ("IRyy", get("B1") - &mu1 * sq(&r)),
+        ("IFyy", get("B1") - &mu1 * sq(&r)),
+        ("xB", e.clone()),
+        ("zB", -h.clone()),
+        ("mB", mu.clone()),
+        ("IBxx", get("A") - &mu * sq(&h)),
+        ("IByy", get("B") - &mu * (sq(&e) + sq(&h))),
+        ("IBzz", get("C") - &mu * sq(&e)),
+        ("IBxz", get("L") - &mu * &e * &h),
+        ("mH", z.clone()),
+        ("IHxx", z.clone()),
+        ("IHyy", z.clone()),
+        ("IHzz", z.clone()),
+        ("IHxz", z),
+        ("xH", Atom::num(1)),
+        ("zH", Atom::num(-1)),
+        ("v", &r * get("s")),
+    ];
+    vals.into_iter().map(|(n, x)| (n, x.expand())).collect()
+}
+
+/// n° 98 by the mechanics engine: the general bicycle with the rider's body turned by ε about the
+/// frame's ground trace OI ([`crate::derive::whipple::description::whipple_shifted`]),
+/// linearised; a steady turn without hands at first order has every rate zero and no steer
+/// torque, $f_q\,(\varphi, \delta) + f_\varepsilon\,\varepsilon = 0$ in the lean and steer rows,
+/// whose solution per unit lean gives $\varepsilon/\theta$ exactly at first order, for
+/// Carvallo's bicycle written as a parameter set of the general one ([`whipple_values`]; its
+/// wheels' diametral moment about the centre is $C_1$, so $A_1 = C_1 + \mu_1R^2$ as for hoops).
+/// The memoir's route (n° 95–97, `shift_98`) reduces the fall equation first ((3)′ of n° 86:
+/// the frame alone, the $(B - C)n^2$ term and $d\eta/d\theta$ dropped), so the two differ; the
+/// checks: the exact ratio solves both rows (residuals zero at exact rational points), and it
+/// is not the reduced route's (informative).
+fn shift_98_engine(shift_98: &Atom) -> Result<(Atom, Vec<Check>)> {
+    let lin = crate::derive::whipple::linearised::shifted()?;
+    let (fq, ft) = (&lin.f_q, &lin.f_t);
+    // Per unit lean: [fq01 ft0; fq11 ft1] (delta, eps) = -(fq00, fq10), by Cramer's rule.
+    let det = &fq[0][1] * &ft[1][0] - &ft[0][0] * &fq[1][1];
+    let delta = (-&fq[0][0] * &ft[1][0] + &ft[0][0] * &fq[1][0]) / &det;
+    let eps = (-&fq[0][1] * &fq[1][0] + &fq[0][0] * &fq[1][1]) / &det;
+    let symbolic: Vec<(&str, Atom)> =
+        ["R", "g", "mu", "e", "h", "A", "B", "C", "L", "mu1", "l", "c", "C1", "B1", "s"]
+            .iter()
+            .map(|n| (*n, var(n)))
+            .chain([("sin_eta", sn("eta")), ("cos_eta", cs("eta"))])
+            .collect();
+    let exact = simplify_all(&with(&eps, &whipple_values(&symbolic)));
+    let mut residual_bad = Vec::new();
+    let mut differ = Vec::new();
+    let mut shown = Vec::new();
+    for (k, pt) in engine_points().iter().enumerate() {
+        let wv = whipple_values(pt);
+        let (e, dl) = (with(&exact, pt), with(&delta, &wv));
+        let rows: Vec<Atom> = (0..2)
+            .map(|r| simplify_all(&with(&(&fq[r][0] + &fq[r][1] * &dl + &ft[r][0] * &e), &wv)))
+            .collect();
+        if rows.iter().any(|x| !x.is_zero()) {
+            residual_bad.push(format!(
+                "point {}: {}",
+                k + 1,
+                rows.iter().map(|x| x.to_string()).collect::<Vec<_>>().join(", ")
+            ));
+        }
+        let hand = simplify_all(&with(shift_98, pt));
+        let e = simplify_all(&e);
+        if !simplify_all(&(&e - &hand)).is_zero() {
+            differ.push(k + 1);
+        }
+        shown.push(format!("point {}: exact {e}, reduced {hand}", k + 1));
+    }
+    let checks = vec![
+        Check {
+            section: "98".into(),
+            id: "shift_98_exact_solves".into(),
+            statement: "the exact first-order lateral shift epsilon/theta of a steady turn without hands (generated shift_98_exact: the mechanics engine's general bicycle with the body turned by epsilon about the ground trace OI, linearised, Carvallo's bicycle as a parameter set of it) with the steer it implies makes the lean and the steer rows vanish with no steer torque, at three exact rational points".into(),
+            holds: residual_bad.is_empty(),
+            detail: if residual_bad.is_empty() { "residuals 0".into() } else { residual_bad.join("; ") },
+        },
+        Check {
+            section: "98".into(),
+            id: "shift_98_reduction_matters".into(),
+            statement: "the exact first-order shift (shift_98_exact) differs from the reduced route's (shift_98: n° 95-97 with the reduced fall equation (3)' of n° 86) at the three rational points (informative: the reductions of n° 86 change the shift)".into(),
+            holds: differ.len() == 3,
+            detail: shown.join("; "),
+        },
+    ];
+    Ok((exact, checks))
+}
+
 fn compare(section: &str, id: &str, statement: &str, derived: &Atom, expected: &Atom) -> Check {
     let diff = simplify_all(&(derived - expected));
     Check {
@@ -822,6 +1011,8 @@ pub fn derive() -> Result<Derivation> {
     // n° 83: the loaded frame's six terms, in a motion that is not steady (p, eta' and the
     // rates of d eta/d theta, d nu/d theta kept), each from its definition.
     checks.extend(frame_six_terms());
+    let (shift_98_exact, shift_checks) = shift_98_engine(&shift_98)?;
+    checks.extend(shift_checks);
 
     // n° 98: the body moved sideways by y_c (the angle ε of the memoir, tan ε = y_c/h).
     let yc = var("yc");
@@ -934,6 +1125,7 @@ pub fn derive() -> Result<Derivation> {
         wrap("memoir_no_hands_s2", "97", "The same with the printed ratio of (1)' (negative: none) (1/s^2).", &no_hands_s2_memoir)?,
         wrap("shift_98", "98", "Lateral shift epsilon/theta of n° 98 for a steady turn without hands (derived ratio).", &shift_98)?,
         wrap("memoir_shift_98", "98", "The same with the printed ratio of (1)'.", &shift_98_memoir)?,
+        wrap("shift_98_exact", "98", "Lateral shift epsilon/theta of n° 98 for a steady turn without hands, exact at first order: the mechanics engine's bicycle with the body turned about OI, linearised (wheels' diametral moment C1 about the centre).", &shift_98_exact)?,
         wrap("kinetic_frame", "99", "Twice the loaded frame's kinetic energy (J).", &twice_t0)?,
         wrap("dt0_dp", "100", "dT0/dp (kg m^2/s).", &dt0[0])?,
         wrap("dt0_deta", "100", "dT0/d eta' (kg m^2/s).", &dt0[1])?,
