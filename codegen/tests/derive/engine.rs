@@ -335,3 +335,20 @@ fn engine_whipple_mass_matrix_and_forcing_within_todays_operations() {
         assert!(ops <= 1459, "the engine's M3 + f3 take {ops} ops (today 1,459; budget 1,490)");
     });
 }
+
+/// The check of the redundant rows names what it expects and fails on another expectation: the
+/// Whipple bicycle drops exactly its rear contact's vertical row, so expecting the rear
+/// contact's lateral row too (as two wheels on one axle would give) fails.
+#[test]
+fn the_redundant_rows_check_fails_on_the_wrong_rows() {
+    crate::on_symbolica_thread(|| {
+        let model = description::whipple();
+        let right = engine::kane_derivation(&model, file!()).expect("derives");
+        assert!(right.checks[0].holds, "{:?}", right.checks[0]);
+        let wrong =
+            engine::kane_derivation_expecting(&model, file!(), &["R vertical", "R lateral"])
+                .expect("derives");
+        assert!(!wrong.checks[0].holds, "{:?}", wrong.checks[0]);
+        assert!(wrong.checks[0].detail.starts_with("R vertical"), "{}", wrong.checks[0].detail);
+    });
+}
