@@ -981,7 +981,7 @@ struct Shape {
     c: f64,
 }
 
-/// n° 32's and n° 40's rider: $B - C = \mu h^2$ ($E = 0$).
+/// n° 32's and n° 40's rider: $B - C = \mu h^2$ ($E = 0$; its $C$, here $\mu R^2$, drops out).
 const SHAPE_32: Shape = Shape { e: 0.0, c: 1.0 };
 
 /// A rider with $B - C = \mu h^2 / 2$ ($E = -\mu h^2/2$) and $C = 0.6\,\mu h^2$: his moment
@@ -993,7 +993,7 @@ const SHAPE_POLE: Shape = Shape { e: -0.5 * H_OVER_R * H_OVER_R, c: 0.6 * H_OVER
 /// A point of the generated full `unicycle` program for the normalised model of n° 32–41
 /// (R = g = mu = 1, z = h/R, L = 0, rates in units of sqrt(g/R)) with the rider's `shape`
 /// and a wheel of moment `wheel` mu1 R^2 about its axle (0 for none, 2 for n° 40's) and
-/// mu1 R^2 = C.
+/// mu1 R^2 = C; the rider's A is taken equal to B (A only divides K, whose sign is read).
 fn n40_point(theta_deg: f64, s: f64, n: f64, shape: Shape, wheel: f64) -> Point {
     let (z, c) = (H_OVER_R, shape.c);
     let b = c + z * z + shape.e;
