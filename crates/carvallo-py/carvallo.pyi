@@ -24,6 +24,7 @@ released and raise `KeyboardInterrupt` within a fraction of a second of Ctrl-C. 
 command line.
 """
 
+import os
 import types
 from typing import Mapping, Optional, Sequence, Union
 
@@ -116,14 +117,18 @@ def plot_geometry(
     """The side view of `geometry(params, rider)`, titled "name: geometry"."""
 
 def plot_eigenvalues(
-    params: Params,
+    params: Union[Params, str, os.PathLike],
     speeds: Optional[Speeds] = None,
     name: Optional[str] = None,
     ax: Optional[object] = None,
 ) -> object:
     """The eigenvalues against speed (default 0 to 10 m/s), each named by its mode as `modes`
     labels it (weave, capsize, caster; torso too for the leaning rider's params), the stable
-    range shaded; titled "name: eigenvalues against speed"."""
+    range shaded; titled "name: eigenvalues against speed". `params` may be the path of a
+    leaning rider's file in Moore's names (read by `lean_rider(path)`). The name is by default
+    the parameter set's, as `carvallo plot eigenvalues --model` names it: the file's stem,
+    "Leaning rider (Browser + Jason)" for the values of `lean_rider()`, "Leaning rider" for
+    another rider's dict."""
 
 def plot_bode(
     bicycles: Union[Params, Sequence[Params]],

@@ -408,6 +408,36 @@ fn a_start_at_or_beyond_the_fall_angle_is_refused_naming_lean0() {
     assert!(out.contains("fell at t = "), "{out}");
 }
 
+/// `plot eigenvalues --model FILE` for a leaning rider's file: the figure is titled by the
+/// file's stem (`heavy_torso`, as a bicycle's file names its figure), not by Browser + Jason,
+/// whose values the file changes (the torso's mass 60 kg instead of 48.816).
+#[test]
+fn plot_eigenvalues_of_a_riders_file_is_titled_by_the_file() {
+    let dir = std::env::temp_dir().join(format!("carvallo-lean-title-{}", std::process::id()));
+    std::fs::create_dir_all(&dir).unwrap();
+    let base =
+        std::fs::read_to_string(root().join("data/mooreriderlean2012/browser_jason.toml")).unwrap();
+    let heavy = base.replace("mg = 48.816", "mg = 60.0");
+    assert_ne!(heavy, base);
+    let path = dir.join("heavy_torso.toml");
+    std::fs::write(&path, heavy).unwrap();
+    let (code, printed, err) = carvallo(&[
+        "plot",
+        "eigenvalues",
+        "--model",
+        path.to_str().unwrap(),
+        "--v-max",
+        "8",
+        "--out",
+        dir.join("rider.svg").to_str().unwrap(),
+    ]);
+    assert_eq!(code, 0, "{err}");
+    let svg = std::fs::read_to_string(printed.trim()).unwrap();
+    assert!(svg.contains("heavy_torso: eigenvalues against speed"), "no file name in the title");
+    assert!(!svg.contains("Browser"), "the title names Browser + Jason for another set");
+    std::fs::remove_dir_all(&dir).ok();
+}
+
 /// `plot eigenvalues --model lean-rider`: the figure is drawn (not refused), titled by the
 /// rider, with the four modes' curves and names; `eig --json` labels the same six roots, the
 /// torso's two being those of the largest lean share (the joint's coordinate q9) and its

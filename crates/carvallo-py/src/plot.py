@@ -66,6 +66,44 @@ def _name_of(params, default):
     return f"{bike} + {rider}" if isinstance(rider, str) and rider else bike
 
 
+def _is_rider(params):
+    """Whether `params` is a leaning rider's dict in Moore's names (it holds mg, ig11 and d4)."""
+    return isinstance(params, dict) and all(k in params for k in ("mg", "ig11", "d4"))
+
+
+def _rider_name(params):
+    """The name of a leaning rider's dict, as the command line names its `--model`: "Leaning
+    rider (Browser + Jason)" for BicycleParameters' published set (the values of `lean_rider()`,
+    `--model lean-rider`), "Leaning rider" for any other set (a dict does not keep the name of
+    the file it was read from: give the file's path, or `name`)."""
+    import carvallo
+
+    published = carvallo.lean_rider()
+    try:
+        same = set(params) == set(published) and all(
+            float(params[k]) == v for k, v in published.items())
+    except (TypeError, ValueError):
+        same = False
+    return "Leaning rider (Browser + Jason)" if same else "Leaning rider"
+
+
+def _rider_file(params):
+    """`(dict, name)` for the path of a leaning rider's parameter file in Moore's names (read by
+    `lean_rider(path)`), named by the file's stem without BicycleParameters' `Benchmark` suffix,
+    as `carvallo plot eigenvalues --model FILE` names it; None for anything else."""
+    import os
+    import pathlib
+
+    if not isinstance(params, (str, os.PathLike)):
+        return None
+    import carvallo
+
+    stem = pathlib.Path(params).stem
+    if stem.endswith("Benchmark") and stem != "Benchmark":
+        stem = stem[: -len("Benchmark")]
+    return carvallo.lean_rider(os.fspath(params)), stem
+
+
 def _names(names):
     if len(names) == 1:
         return names[0]
@@ -127,11 +165,20 @@ def plot_eigenvalues(params, speeds=None, name=None, ax=None):
     """The eigenvalues of `params` against speed (default 301 speeds from 0 to 10 m/s), each real
     part in its mode's colour and named as `carvallo.modes` labels it (weave, capsize, caster,
     and torso for the leaning rider's params), the weave's imaginary part dashed, the stable
-    range of `carvallo.window` shaded; titled "`name`: eigenvalues against speed"."""
+    range of `carvallo.window` shaded; titled "`name`: eigenvalues against speed". `params` may
+    also be the path of a leaning rider's parameter file in Moore's names (read by
+    `lean_rider(path)`); the name is by default the parameter set's, as `carvallo plot
+    eigenvalues --model` names it: the file's stem for a path, "Leaning rider (Browser + Jason)"
+    for the values of `lean_rider()`, "Leaning rider" for another rider's dict, a
+    bicycleparameters.Bicycle's own names, "Bicycle" otherwise."""
     import numpy as np
 
     import carvallo
 
+    loaded = _rider_file(params)
+    if loaded is not None:
+        params, stem = loaded
+        name = name or stem
     if speeds is None:
         speeds = np.linspace(0.0, 10.0, 301)
     # Checked (and refused with a ParameterError) by modes before numpy reads them.
@@ -139,8 +186,7 @@ def plot_eigenvalues(params, speeds=None, name=None, ax=None):
     speeds = np.atleast_1d(np.asarray(speeds, float))
     if speeds.size == 0:
         raise carvallo.ParameterError("invalid speeds []: at least one speed is needed")
-    rider = isinstance(params, dict) and all(k in params for k in ("mg", "ig11", "d4"))
-    name = name or _name_of(params, "Leaning rider" if rider else "Bicycle")
+    name = name or (_rider_name(params) if _is_rider(params) else _name_of(params, "Bicycle"))
     fig, ax = _axes(ax, (9, 6))
     y_max = 10.0
     for a, b in carvallo.window(params)["stable"]:

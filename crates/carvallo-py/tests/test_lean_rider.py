@@ -117,6 +117,7 @@ def test_the_guides_example_runs_as_written():
     w = carvallo.window(dict(ns["p"], k9=1e4, c9=100.0))
     assert [(round(a, 2), round(b, 2)) for a, b in w["stable"]] == [(4.99, 7.11)]
     assert ns["run"]["status"] == "torso fell" and abs(ns["run"]["lean"][-1]) == 1.2
+    assert ns["fig"].axes[0].get_title() == "Leaning rider (Browser + Jason): eigenvalues against speed"
 
 
 def test_lean_feedback_is_the_joints_spring_and_damper():

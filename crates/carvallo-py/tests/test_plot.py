@@ -110,7 +110,7 @@ def test_the_figures_carry_the_name_the_modes_and_the_decades():
     speeds = np.linspace(0.0, 8.0, 81)
     fig = carvallo.plot_eigenvalues(carvallo.lean_rider(), speeds=speeds)
     t = texts(fig)
-    assert "Leaning rider: eigenvalues against speed" in t
+    assert "Leaning rider (Browser + Jason): eigenvalues against speed" in t
     assert {"torso", "torso: Re λ", "weave: Re λ", "capsize: Re λ", "caster: Re λ"} <= set(t), t
     labels, ev, _ = carvallo.modes(carvallo.lean_rider(), speeds)
     torso = [ln for ln in fig.axes[0].get_lines() if ln.get_label() == "torso: Re λ"][0]
@@ -129,6 +129,40 @@ def test_the_figures_carry_the_name_the_modes_and_the_decades():
     line = mag_ax.get_lines()[1]
     r = carvallo.frequency_response(short, [5.0], line.get_xdata(), "steer", "roll")
     assert np.array_equal(line.get_ydata(), r["magnitude_db"][0])
+
+
+def test_the_riders_figure_names_the_parameter_set_it_draws(tmp_path, cli):
+    """The leaning rider's eigenvalue figure is titled by the parameter set drawn, as the command
+    line's `plot eigenvalues --model` titles it: a file by its stem (the same title as the
+    command line's for the same file), Browser + Jason's values by their name, another rider's
+    dict without Browser + Jason's name."""
+    speeds = np.linspace(0.0, 8.0, 41)
+    heavy = tmp_path / "heavy_torso.toml"
+    published = (ROOT / "data" / "mooreriderlean2012" / "browser_jason.toml").read_text()
+    heavy.write_text(re.sub(r"(?m)^mg = .*$", "mg = 60.0", published))
+    assert carvallo.lean_rider(str(heavy))["mg"] == 60.0
+    want = "heavy_torso: eigenvalues against speed"
+    for path in (str(heavy), heavy):
+        t = texts(carvallo.plot_eigenvalues(path, speeds=speeds))
+        assert want in t, t
+        assert not any("Browser" in s for s in t), t
+    exe = os.environ.get("CARVALLO_BIN", str(ROOT / "target" / "release" / "carvallo"))
+    out = tmp_path / "e.svg"
+    subprocess.run([exe, "plot", "eigenvalues", "--model", str(heavy), "--v-max", "8",
+                    "--out", str(out)], check=True, capture_output=True)
+    assert want in out.read_text()
+    # The file's values in a dict: the dict keeps no file name, and is not Browser + Jason.
+    t = texts(carvallo.plot_eigenvalues(carvallo.lean_rider(str(heavy)), speeds=speeds))
+    assert "Leaning rider: eigenvalues against speed" in t, t
+    assert not any("Browser" in s for s in t), t
+    # Browser + Jason's values, read from the committed file or built in, and a name given.
+    browser = ROOT / "data" / "mooreriderlean2012" / "browser_jason.toml"
+    t = texts(carvallo.plot_eigenvalues(carvallo.lean_rider(str(browser)), speeds=speeds))
+    assert "Leaning rider (Browser + Jason): eigenvalues against speed" in t, t
+    t = texts(carvallo.plot_eigenvalues(str(heavy), speeds=speeds, name="Jason, heavier"))
+    assert "Jason, heavier: eigenvalues against speed" in t, t
+    with pytest.raises(carvallo.ParameterError, match="leaning-rider file"):
+        carvallo.plot_eigenvalues(str(BROWSER), speeds=speeds)
 
 
 def test_the_submodule_imports_and_a_bicycle_object_names_itself():

@@ -141,6 +141,13 @@ fn the_named_claims_are_decided_by_their_numbers() {
     assert_eq!(c.verdict, Verdict::MemoirError);
     assert!(evidence(&c, "n2_unusable_max_s") < 1.04);
     assert!(evidence(&c, "n1_usable") > 0.0);
+    // Its falsification: with the rider's couple (B - C) n^2 sin cos of (E) halved, n1 pivots
+    // at every point of the region and n2 stays usable above the band under s = 1.
+    let f = c.falsification.as_ref().expect("n° 32's practical region states a perturbation");
+    assert_eq!(f.verdict, Verdict::Agrees);
+    assert_eq!(f.evidence["n1_usable"], 0.0);
+    assert_eq!(f.evidence["n2_unusable"], 0.0);
+    assert!(f.evidence["points_with_roots"] > 2000.0, "{:?}", f.evidence);
     // n° 39, 41: a light unicycle is stable only while turning; every lean between the roots.
     let c = claim("unicycle-light-stable-only-turning");
     assert_eq!(c.verdict, Verdict::Agrees);
