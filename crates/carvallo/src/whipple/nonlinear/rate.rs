@@ -148,7 +148,7 @@ pub(crate) fn filled<const N: usize>(params: &WhippleParams, names: &[&str]) -> 
 /// The right-hand side of one bicycle: the kernels' argument arrays with its parameters.
 #[derive(Clone, Debug)]
 pub struct StateRate {
-    projected: [f64; projected_rate_scene::Args::LEN],
+    projected: projected_rate_scene::Args,
     projected_slots: [usize; 6],
     project: [f64; project_scene::Args::LEN],
     project_slots: [usize; 6],
@@ -185,7 +185,10 @@ impl StateRate {
     /// The right-hand side of the bicycle with the parameters `params`.
     pub fn new(params: &WhippleParams) -> StateRate {
         StateRate {
-            projected: filled(params, projected_rate_scene::PARAMS),
+            projected: projected_rate_scene::Args::from_array(filled(
+                params,
+                projected_rate_scene::PARAMS,
+            )),
             projected_slots: input_slots(
                 projected_rate_scene::PARAMS,
                 projected_rate_scene::INPUTS,
@@ -295,9 +298,10 @@ impl StateRate {
         let u = [y[7], y[8], y[9]];
         // One Newton step and the kernel at the corrected pitch, in one program; when the
         // step is too long for one to be enough, Newton to convergence and the kernel alone.
-        let o =
-            fill(self.projected, &self.projected_slots, [lean, y[PITCH], steer, u[0], u[1], u[2]]);
-        let o = projected_rate_scene::eval_array(&o);
+        let mut a = self.projected;
+        (a.phi, a.theta, a.delta, a.phid, a.deltad, a.thetaRd) =
+            (lean, y[PITCH], steer, u[0], u[1], u[2]);
+        let o = projected_rate_scene::eval(&a).to_array();
         let (o, pitch) = if o[13].abs() <= ONE_STEP {
             (std::array::from_fn::<f64, 13, _>(|i| o[i]), o[14])
         } else {
@@ -331,7 +335,7 @@ impl StateRate {
         &self,
         y: &[[f64; LEN]; LANES],
     ) -> [Result<[f64; LEN], NonlinearError>; LANES] {
-        let mut args = self.projected.map(|v| [v; LANES]);
+        let mut args = self.projected.to_array().map(|v| [v; LANES]);
         for (slot, k) in self.projected_slots.iter().zip([3, PITCH, 4, 7, 8, 9]) {
             if let Some(a) = args.get_mut(*slot) {
                 *a = std::array::from_fn(|j| y[j][k]);
