@@ -13,6 +13,9 @@
 //! enough for rustc, whose compile time grows badly with function size. (The former interface,
 //! arrays of live values passed in and returned, copied every crossing value two or three times
 //! and made the 2,498-op nonlinear bicycle 1.6 times slower than the same SSA compiled as C.)
+//! A scene that raises `max_fn_ops` gets longer functions; beyond [`MAX_NESTED_LETS`]
+//! operations their locals are declared in groups before they are assigned, since one `let`
+//! per value nests one lexical scope per value and overflowed rustc's stack in debug builds.
 //!
 //! With `lanes: N` the same program is printed a second time inside a loop over `N` lanes
 //! (`eval_lanes`, structure of arrays): the loop has a constant trip count and independent
@@ -257,8 +260,31 @@ fn referenced(p: &Program, insts: &[usize], extra: impl Iterator<Item = Value>) 
         .collect()
 }
 
-/// `let` bindings of the instructions `insts`, in order.
+/// The most `let` bindings [`lets`] prints one after the other. Each `let` opens a lexical
+/// scope nested in the previous one, and LLVM's DWARF writer recurses once per level when the
+/// function has inlined calls (`sqrt`, `powi`): rustc 1.95 with line tables (the workspace's
+/// debug profile) overflowed its stack on a function of 9,245 such `let`s. Longer runs, which
+/// only a scene's raised `max_fn_ops` makes, declare their locals first, [`DECLARED_PER_LET`]
+/// to a `let`, and assign them after: the same values, a few dozen nested scopes.
+const MAX_NESTED_LETS: usize = crate::scene::DEFAULT_MAX_FN_OPS;
+
+/// The locals one declaring `let` of [`lets`] names, beyond [`MAX_NESTED_LETS`].
+const DECLARED_PER_LET: usize = 256;
+
+/// `let` bindings of the instructions `insts`, in order; beyond [`MAX_NESTED_LETS`] of them,
+/// declarations in groups (`let (t1, t2, ...,);`) then one assignment per instruction.
 fn lets(p: &Program, l: &Locals, insts: &[usize]) -> TokenStream {
+    if insts.len() > MAX_NESTED_LETS {
+        let declarations = insts.chunks(DECLARED_PER_LET).map(|group| {
+            let names = group.iter().map(|&i| &l.insts[i]);
+            quote!(let (#(#names,)*);)
+        });
+        let assignments = insts.iter().map(|&i| {
+            let (name, rhs) = (&l.insts[i], op_expr(&p.insts[i].op, l));
+            quote!(#name = #rhs;)
+        });
+        return quote!(#(#declarations)* #(#assignments)*);
+    }
     let lets = insts.iter().map(|&i| {
         let (name, rhs) = (&l.insts[i], op_expr(&p.insts[i].op, l));
         quote!(let #name = #rhs;)
@@ -935,5 +961,58 @@ pub fn emit(scene: &Scene) -> TokenStream {
             #lanes
             #jacobian
         }
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use carvallo_ir::Builder;
+
+    use super::*;
+
+    /// A chain of `n` square roots of sums, each on the previous one.
+    fn chain(n: usize) -> Program {
+        let mut b = Builder::new("chain");
+        let x = b.input("x");
+        let mut v = x;
+        for _ in 0..n {
+            let s = b.add(v, x);
+            v = b.sqrt(s);
+        }
+        b.output("y", v);
+        b.finish()
+    }
+
+    /// The `let` statements of [`lets`] over every instruction of `p`, and its text.
+    fn lets_of(p: &Program) -> (usize, String) {
+        let l = Locals::new(p, 0);
+        let all: Vec<usize> = (0..p.insts.len()).collect();
+        let text = lets(p, &l, &all).to_string();
+        (text.matches("let ").count(), text)
+    }
+
+    /// Up to [`MAX_NESTED_LETS`] instructions are one `let` each; beyond, the locals are
+    /// declared 256 to a `let` and assigned after, in program order, to the same expressions.
+    #[test]
+    fn long_runs_declare_their_locals_in_groups() {
+        let short = chain(MAX_NESTED_LETS / 2);
+        let (n, text) = lets_of(&short);
+        assert_eq!(n, short.insts.len());
+        assert!(!text.contains("let ("), "{}", &text[..200]);
+
+        let long = chain(MAX_NESTED_LETS);
+        let n_insts = long.insts.len();
+        assert!(n_insts > MAX_NESTED_LETS);
+        let (n, text) = lets_of(&long);
+        assert_eq!(n, n_insts.div_ceil(DECLARED_PER_LET));
+        assert_eq!(text.matches("let (").count(), n);
+        // The assignments after the declarations, one per instruction, in order.
+        let assigned = text.split(';').filter(|s| !s.trim_start().starts_with("let")).count();
+        assert_eq!(assigned - 1, n_insts, "a statement per instruction and the empty tail");
+        let l = Locals::new(&long, 0);
+        let (first, last) = (&l.insts[0], &l.insts[n_insts - 1]);
+        let first_at = text.find(&format!("{first} =")).expect("first assigned");
+        let last_at = text.find(&format!("{last} =")).expect("last assigned");
+        assert!(first_at < last_at);
     }
 }

@@ -35,6 +35,10 @@
 //!   1500) into several `#[inline(never)]` helper functions, which
 //!   keeps rustc's compile time in check for very large formulas. The helpers share one
 //!   struct of the values that cross them (each stored once and loaded where it is used).
+//!   Crossing values cost loads and stores, so a hot evaluator may ask for a larger `N`
+//!   (the bicycle's state Jacobian is one function of 9,245 operations); a function of more
+//!   than 1500 operations declares its locals in groups and assigns them after, so that
+//!   debug builds do not nest one scope per value.
 //! * `lanes: N` (2, 4, 8 or 16) also emits `eval_lanes`, the same evaluator on `N` points per
 //!   call in structure-of-arrays form (`[[f64; N]; K]` in, `[[f64; N]; M]` out), lane `j`
 //!   bit for bit equal to `eval_array` of point `j`. On x86 it is compiled twice,
