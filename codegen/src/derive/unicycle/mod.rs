@@ -729,6 +729,8 @@ pub fn derive() -> Result<Derivation> {
         formulas,
         checks,
         nominal: crate::derive::nominal::values("unicycle"),
-        horner_schemes: Vec::new(),
+        // Every simulation step of the unicycle evaluates this program: 100 Horner schemes take
+        // it from 2,281 operations (the two usual efforts) to about half.
+        horner_schemes: vec![100],
     })
 }
