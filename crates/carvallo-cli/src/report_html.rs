@@ -514,6 +514,7 @@ mod tests {
     #[test]
     fn the_page_links_entries_to_errata_and_back() {
         let entry = |verdict, section: &str| Entry {
+            falsification: None,
             section: section.to_string(),
             quantity: "q <x>".to_string(),
             memoir: Memoir::Formula("mu R^2".to_string()),

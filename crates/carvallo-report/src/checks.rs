@@ -58,6 +58,7 @@ pub(crate) fn check_entries(
         Ok(c) => c,
         Err(message) => {
             return vec![Entry {
+                falsification: None,
                 section: "-".into(),
                 quantity: format!("{label} symbolic checks"),
                 memoir: Memoir::Formula(format!("generated/{file}")),
@@ -80,6 +81,7 @@ pub(crate) fn check_entries(
             };
             let verdict = policy::check(c.holds, expect(findings, &c.id));
             Entry {
+                falsification: None,
                 section: c.section.clone(),
                 quantity: format!("{label} check {}", c.id),
                 memoir: Memoir::Formula(c.statement.clone()),

@@ -14,6 +14,7 @@ use std::fmt::Write as _;
 
 use serde::{Deserialize, Serialize};
 
+pub use crate::entry::Falsification;
 use crate::entry::Verdict;
 use crate::render::text::format_significant;
 
@@ -38,27 +39,6 @@ pub struct Claim {
     /// The perturbation of the derived side that must break the check, and the verdict the
     /// same check gives on the perturbed input (`None` when no perturbation is stated yet).
     pub falsification: Option<Falsification>,
-}
-
-/// A check run on a perturbed derived side (a model ingredient moved, a coefficient of the
-/// generated program scaled by a stated amount, a sign flipped; never the printed value
-/// replaced): what was perturbed and the verdict the check then gives. A check that can fail
-/// gives a verdict other than its own.
-#[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
-pub struct Falsification {
-    /// What was perturbed, and by how much.
-    pub perturbation: String,
-    /// The verdict of the same check on the perturbed input.
-    pub verdict: Verdict,
-    /// The evidence the check produced on the perturbed input.
-    pub evidence: BTreeMap<String, f64>,
-}
-
-impl Falsification {
-    /// Whether the perturbation broke the check: its verdict differs from `verdict`.
-    pub fn breaks(&self, verdict: Verdict) -> bool {
-        self.verdict != verdict
-    }
 }
 
 impl Claim {

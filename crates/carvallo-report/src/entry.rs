@@ -74,6 +74,32 @@ pub struct Entry {
     /// Where a difference comes from, how the value was obtained, or the symbolic checks of the
     /// same section.
     pub note: String,
+    /// The same comparison run on a perturbed derived side (issue 38): what was perturbed and
+    /// the verdict it then gives; `None` when the entry states no perturbation (then its note
+    /// says why it holds by construction, or it is not `agrees`).
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub falsification: Option<Falsification>,
+}
+
+/// A check run on a perturbed derived side (a model ingredient moved, a coefficient of the
+/// generated program scaled by a stated amount, a sign flipped; never the printed value
+/// replaced): what was perturbed and the verdict the check then gives. A check that can fail
+/// gives a verdict other than its own.
+#[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
+pub struct Falsification {
+    /// What was perturbed, and by how much.
+    pub perturbation: String,
+    /// The verdict of the same check on the perturbed input.
+    pub verdict: Verdict,
+    /// The evidence the check produced on the perturbed input.
+    pub evidence: BTreeMap<String, f64>,
+}
+
+impl Falsification {
+    /// Whether the perturbation broke the check: its verdict differs from `verdict`.
+    pub fn breaks(&self, verdict: Verdict) -> bool {
+        self.verdict != verdict
+    }
 }
 
 /// The sort key of a section: its leading number (`"14/18"` and `"17 bis"` sort as 14 and 17),

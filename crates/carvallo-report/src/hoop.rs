@@ -68,7 +68,10 @@ fn sample_points() -> Vec<BTreeMap<&'static str, f64>> {
 fn eval_all(point: &BTreeMap<&str, f64>) -> BTreeMap<&'static str, f64> {
     use concordance_scene as scene;
     let args = scene::Args::from_fn(|name| point.get(name).copied().unwrap_or(f64::NAN));
-    scene::OUTPUTS.iter().copied().zip(scene::eval(&args).to_array()).collect()
+    let mut values: BTreeMap<&'static str, f64> =
+        scene::OUTPUTS.iter().copied().zip(scene::eval(&args).to_array()).collect();
+    crate::perturb::overlay("hoop", |name| point.get(name).copied(), &mut values);
+    values
 }
 
 /// What the memoir prints for each derived output that has a `memoir_*` transcription:
@@ -238,6 +241,7 @@ fn formula_entries(
             ));
         }
         entries.push(Entry {
+            falsification: None,
             section: section.to_string(),
             quantity: quantity.to_string(),
             memoir: Memoir::Formula(printed.to_string()),
@@ -316,6 +320,7 @@ fn threshold_entries() -> Vec<Entry> {
     };
     let Some(s) = bisect(stability_n12, 0.0, 2.0) else {
         return vec![Entry {
+            falsification: None,
             section: "14/18".into(),
             quantity: "upright threshold s^2 (units g/R)".into(),
             memoir: Memoir::Number(0.25),
@@ -400,6 +405,7 @@ fn consistency_entries(
             ));
         }
         entries.push(Entry {
+            falsification: None,
             section: section.to_string(),
             quantity: quantity.to_string(),
             memoir: Memoir::Formula(printed.to_string()),
@@ -490,6 +496,7 @@ fn fold_checks(entries: &mut Vec<Entry>, checks: Result<Vec<SymbolicCheck>, Stri
         Ok(checks) => checks,
         Err(message) => {
             entries.push(Entry {
+                falsification: None,
                 section: "-".into(),
                 quantity: "symbolic checks".into(),
                 memoir: Memoir::Formula("generated/hoop.checks.tsv".into()),
@@ -532,6 +539,7 @@ fn fold_checks(entries: &mut Vec<Entry>, checks: Result<Vec<SymbolicCheck>, Stri
             note.push_str(&format!("; expected not to hold: {}", f.why));
         }
         entries.push(Entry {
+            falsification: None,
             section: check.section.clone(),
             quantity: format!("check {}", check.id),
             memoir: Memoir::Formula(check.statement.clone()),

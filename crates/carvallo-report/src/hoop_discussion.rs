@@ -70,6 +70,7 @@ fn formula_entry(
 ) -> Entry {
     let rel = max_rel(derived, memoir);
     Entry {
+        falsification: None,
         section: section.into(),
         quantity: quantity.into(),
         memoir: Memoir::Formula(printed.into()),
@@ -186,6 +187,7 @@ pub fn entries() -> Vec<Entry> {
     // n° 14: Carvallo's method.
     let shifted_ok = root.shifted == [28.0, 68.0, 51.0, 14.0, 1.0];
     out.push(Entry {
+        falsification: None,
         section: "14".into(),
         quantity: "Horner shift t = 1 + u".into(),
         memoir: Memoir::Formula("28u^4 + 68u^3 + 51u^2 + 14u + 1".into()),
@@ -209,6 +211,7 @@ pub fn entries() -> Vec<Entry> {
     out.push(printed_number("14", "residual of the u equation at u = -0,10807", 0.0004, 4, root.residual_at_printed_u, fa, "28u^4 + 68u^3 + 51u^2 + 14u + 1 at the printed u, in f64; his check was done with the slide rule"));
     let rel_to_14u = root.residual_at_printed_u.abs() / (14.0 * 0.10807);
     out.push(Entry {
+        falsification: None,
         section: "14".into(),
         quantity: "claim: relative error below 1/2 thousandth".into(),
         memoir: Memoir::Number(5e-4),
@@ -281,6 +284,7 @@ pub fn entries() -> Vec<Entry> {
     // n° 16 and 18: which g R gives 2,40 m/s.
     let g = 9.81;
     out.push(Entry {
+        falsification: None,
         section: "16".into(),
         quantity: "g R implied by V = 2,40 m/s (m^2/s^2)".into(),
         memoir: Memoir::Number(2.40 * 2.40),
@@ -332,6 +336,7 @@ pub fn entries() -> Vec<Entry> {
         .collect();
     let dev = arc.iter().map(|s| (s - 0.5).abs() / 0.5).fold(0.0, f64::max);
     out.push(Entry {
+        falsification: None,
         section: "18".into(),
         quantity: "arc DH of (S) ~ circle s = 0,5".into(),
         memoir: Memoir::Number(0.5),
@@ -428,6 +433,7 @@ fn marche_entries() -> Vec<Entry> {
             note.push_str("; the printed \"s < n2\" cannot hold since n2 < 0 (n° 12, footnote of n° 17): a minus sign lost (OCR; the printed literal contradicts the memoir's own footnote), the ordering with -n2 holds");
         }
         out.push(Entry {
+            falsification: None,
             section: "17".into(),
             quantity: format!("marche/pivot: {region}"),
             memoir: Memoir::Formula(printed.into()),
@@ -457,6 +463,7 @@ fn speed_entries() -> Vec<Entry> {
     let accel_threshold = s_min * unit;
     vec![
         Entry {
+            falsification: None,
             section: "16".into(),
             quantity: "pas gymnastique 2,27 m/s vs circle s = 1".into(),
             memoir: Memoir::Number(2.27),
@@ -469,6 +476,7 @@ fn speed_entries() -> Vec<Entry> {
             note: format!("{why} (\"la partie utilisée du diagramme ne sortira guère du cercle s = 1\"): s = V/sqrt(gR) at R = 0.5 m, g = 9.81; an approximation the memoir declares: rounding within 5 % of 1"),
         },
         Entry {
+            falsification: None,
             section: "18".into(),
             quantity: "pas accéléré 1,50 m/s vs threshold sR".into(),
             memoir: Memoir::Number(1.50),
@@ -491,6 +499,7 @@ fn stick_entries() -> Vec<Entry> {
     let h = (2.0 / 3.0 * (4.0 * s * s - g / r)).sqrt();
     let time = 2.0 / h;
     let mut out = vec![Entry {
+        falsification: None,
         section: "19".into(),
         quantity: "(6): cosh ht".into(),
         memoir: Memoir::Formula("theta = ... - [M/h^2 cosh ht + 4sM1/(3h^3) sin ht]".into()),
@@ -515,6 +524,7 @@ fn stick_entries() -> Vec<Entry> {
             && n_full.signum() == -theta_sign
             && cf_vs_rk4 < 1e-6;
         out.push(Entry {
+            falsification: None,
             section: "19".into(),
             quantity: format!("sign of th and n: {case}"),
             memoir: Memoir::Number(theta_sign),
@@ -536,6 +546,7 @@ fn stick_entries() -> Vec<Entry> {
     let (th_e, n_e) = n_early(0.5 / h);
     let same_sign = n_e * th_e > 0.0;
     out.push(Entry {
+        falsification: None,
         section: "19".into(),
         quantity: "n opposite to th \"dans les trois cas\" (M1 term)".into(),
         memoir: Memoir::Number(-1.0),
@@ -556,6 +567,7 @@ fn check_entries() -> Vec<Entry> {
         Ok(c) => c,
         Err(message) => {
             return vec![Entry {
+                falsification: None,
                 section: "-".into(),
                 quantity: "symbolic checks of hoop_discussion".into(),
                 memoir: Memoir::Formula("generated/hoop_discussion.checks.tsv".into()),
@@ -582,6 +594,7 @@ fn check_entries() -> Vec<Entry> {
             }
             let verdict = policy::check(c.holds, checks::expect(FINDINGS, &c.id));
             Entry {
+                falsification: None,
                 section: c.section,
                 quantity: format!("check {}", c.id),
                 memoir: Memoir::Formula(c.statement),

@@ -145,11 +145,21 @@ pub const REPORTS: [Report; 10] = [
 /// The whole concordance: every report of [`REPORTS`], in memoir order (a stable sort by the
 /// section's leading number; entries without one last).
 pub fn all_entries() -> Vec<Entry> {
-    let mut entries: Vec<Entry> = REPORTS.iter().flat_map(|r| (r.entries)()).collect();
+    let mut entries: Vec<Entry> = REPORTS.iter().flat_map(falsified_entries).collect();
     // Stable sort: the models' own orders are kept within a section.
     entries
         .sort_by(|a, b| entry::section_key(&a.section).total_cmp(&entry::section_key(&b.section)));
     entries
+}
+
+/// The entries of `report` with their falsifications ([`perturb::falsify_entries`]): the
+/// generated programs searched for the outputs an entry names are the report's own model's
+/// first, then every other embedded model's.
+pub fn falsified_entries(report: &Report) -> Vec<Entry> {
+    let mut models: Vec<&'static str> =
+        carvallo::artifacts::MODELS.iter().map(|a| a.model).collect();
+    models.sort_by_key(|m| *m != report.model);
+    perturb::falsify_entries((report.entries)(), &models, report.entries)
 }
 
 /// Every claim of every report, in memoir order (a stable sort by section as for the entries).

@@ -15,6 +15,8 @@ use std::collections::{BTreeMap, BTreeSet};
 
 use carvallo::ir::{Inst, Interpreter, Op, Program, Value};
 
+use crate::entry::{Entry, Falsification, Verdict};
+
 /// One coefficient, or one model ingredient, of one output of a generated program scaled.
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct Perturbation {
@@ -36,11 +38,23 @@ pub enum Target {
     /// Every use of the named parameter or input in the cone (a model ingredient, such as the
     /// rider's mass, changed in that output only).
     Argument(&'static str),
+    /// Every use of the `k`-th parameter or input the cone reads, in the program's order
+    /// (parameters first): an argument chosen at run time ([`falsify_entries`]).
+    Slot(usize),
+}
+
+/// The parts of a [`Perturbation`] with the output borrowed.
+struct Probe<'a> {
+    output: &'a str,
+    target: Target,
+    factor: f64,
 }
 
 /// The perturbed program, compiled once for the interpreter.
 struct Active {
     model: &'static str,
+    /// The perturbed output.
+    output: String,
     program: Program,
     interp: Interpreter,
 }
@@ -77,12 +91,33 @@ fn cone(p: &Program, name: &str) -> Option<Vec<usize>> {
     Some(seen.into_iter().collect())
 }
 
+/// The parameters and inputs the instructions `members` of `p` read, with their names, in the
+/// program's order (parameters first).
+fn arguments_read(p: &Program, members: &[usize]) -> Vec<(Value, String)> {
+    let read: BTreeSet<Value> = members.iter().flat_map(|&i| p.insts[i].op.operands()).collect();
+    let params = p.params.iter().enumerate().map(|(i, n)| (Value::Param(i as u32), n));
+    let inputs = p.inputs.iter().enumerate().map(|(i, n)| (Value::Input(i as u32), n));
+    params.chain(inputs).filter(|(v, _)| read.contains(v)).map(|(v, n)| (v, n.clone())).collect()
+}
+
 /// The program of `p` with the perturbation applied: the cone of the output copied after the
 /// program's instructions, the chosen constant of the copy scaled (or every use of the chosen
 /// argument replaced by the argument times the factor), the output redirected to the copy.
 /// Also returns the constant's value before scaling (NaN for an argument). `None` when the
 /// output, the constant or the argument's use in the cone does not exist.
 pub fn perturbed_program(p: &Program, pert: &Perturbation) -> Option<(Program, f64)> {
+    perturbed_parts(p, pert.output, pert.target, pert.factor)
+}
+
+/// [`perturbed_program`] for the output `output`, the target `target` and the factor
+/// `factor` given apart (an output named at run time, as [`falsify_entries`] chooses).
+fn perturbed_parts(
+    p: &Program,
+    output: &str,
+    target: Target,
+    factor: f64,
+) -> Option<(Program, f64)> {
+    let pert = Probe { output, target, factor };
     let members = cone(p, pert.output)?;
     let mut q = p.clone();
     // The scaled argument, `mul arg factor`, ahead of the copies.
@@ -97,14 +132,13 @@ pub fn perturbed_program(p: &Program, pert: &Perturbation) -> Option<(Program, f
             let Op::Const(value) = p.insts[target].op else { return None };
             (Some(target), value, None)
         }
-        Target::Argument(name) => {
-            let arg = match p.params.iter().position(|n| n == name) {
-                Some(i) => Value::Param(i as u32),
-                None => Value::Input(p.inputs.iter().position(|n| n == name)? as u32),
+        Target::Argument(_) | Target::Slot(_) => {
+            let read = arguments_read(p, &members);
+            let (arg, name) = match pert.target {
+                Target::Argument(name) => read.into_iter().find(|(_, n)| n == name)?,
+                Target::Slot(k) => read.into_iter().nth(k)?,
+                Target::Constant(_) => unreachable!("matched above"),
             };
-            if !members.iter().any(|&i| p.insts[i].op.operands().into_iter().any(|v| v == arg)) {
-                return None;
-            }
             let factor = q.insts.len() as u32;
             q.insts.push(Inst { name: format!("{name}__factor"), op: Op::Const(pert.factor) });
             q.insts.push(Inst {
@@ -147,13 +181,49 @@ fn ir_of(model: &str) -> Option<&'static str> {
 /// Runs `f` with the perturbation active on this thread; `None` (and `f` not run) when the
 /// model, output or constant does not exist. Also returns the constant's value before scaling.
 pub fn with<T>(pert: &Perturbation, f: impl FnOnce() -> T) -> Option<(T, f64)> {
-    let program = Program::parse(ir_of(pert.model)?).ok()?;
-    let (program, value) = perturbed_program(&program, pert)?;
+    with_parts(pert.model, pert.output, pert.target, pert.factor, f)
+}
+
+/// [`with`] for a perturbation given by its parts.
+fn with_parts<T>(
+    model: &'static str,
+    output: &str,
+    target: Target,
+    factor: f64,
+    f: impl FnOnce() -> T,
+) -> Option<(T, f64)> {
+    let program = Program::parse(ir_of(model)?).ok()?;
+    let (program, value) = perturbed_parts(&program, output, target, factor)?;
     let interp = Interpreter::new(&program).ok()?;
-    ACTIVE.with(|a| *a.borrow_mut() = Some(Active { model: pert.model, program, interp }));
+    let output = output.to_string();
+    ACTIVE.with(|a| *a.borrow_mut() = Some(Active { model, output, program, interp }));
     let out = f();
     ACTIVE.with(|a| *a.borrow_mut() = None);
     Some((out, value))
+}
+
+/// Replaces, in `values` (every output of `model`'s generated program at one point, by name),
+/// the perturbed output by its perturbed value when a perturbation of `model` is active on this
+/// thread ([`with`]); `get` gives the program's arguments by name (a name it does not know is
+/// NaN). Nothing changes otherwise. The model reports' evaluators call it after the compiled
+/// evaluator so that a perturbation reaches every entry computed from them.
+pub fn overlay(
+    model: &str,
+    get: impl Fn(&str) -> Option<f64>,
+    values: &mut BTreeMap<&'static str, f64>,
+) {
+    ACTIVE.with(|a| {
+        let a = a.borrow();
+        let Some(active) = a.as_ref().filter(|a| a.model == model) else { return };
+        let Some(k) = active.program.outputs.iter().position(|o| o.name == active.output) else {
+            return;
+        };
+        if let Some(slot) = values.get_mut(active.output.as_str()) {
+            if let Some(v) = active.eval(get, f64::NAN) {
+                *slot = v[k];
+            }
+        }
+    });
 }
 
 /// The output `name` of the active perturbed program of `model` at the named arguments
@@ -313,6 +383,124 @@ pub fn falsify(claims: Vec<crate::claims::Claim>, table: &[Row]) -> Vec<crate::c
     out
 }
 
+/// The relative changes [`falsify_entries`] tries, in order: $10^{-6}$ (a million times the
+/// agreement tolerance of a formula, [`crate::policy::AGREEMENT_TOLERANCE`]), then $10^{-2}$
+/// (above the largest tolerance of a numerical route, [`crate::policy::NUMERIC_TOLERANCE_MAX`],
+/// and beyond a slide rule's three digits, [`crate::policy::SLIDE_RULE`]).
+pub const ENTRY_FACTORS: [f64; 2] = [1.0 + 1e-6, 1.0 + 1e-2];
+
+/// The most perturbations [`falsify_entries`] tries for one entry before it records the first
+/// one tried, which did not break it.
+const MAX_TRIES: usize = 8;
+
+/// The outputs of `program` that `note` names: between backticks, or as the word after
+/// "generated" (`generated stability_n12`); the memoir's transcriptions (`memoir_*`) excluded,
+/// in the order the note names them.
+fn outputs_named(program: &Program, note: &str) -> Vec<String> {
+    let ticked = note.split('`').skip(1).step_by(2);
+    let after_generated = note
+        .split("generated ")
+        .skip(1)
+        .filter_map(|rest| rest.split(|c: char| !(c.is_ascii_alphanumeric() || c == '_')).next());
+    let mut out: Vec<String> = Vec::new();
+    for w in ticked.chain(after_generated) {
+        if w.starts_with("memoir_") || out.iter().any(|o| o == w) {
+            continue;
+        }
+        if program.outputs.iter().any(|o| o.name == w) {
+            out.push(w.to_string());
+        }
+    }
+    out
+}
+
+/// Whether `entry` is a symbolic check recorded at regeneration (its derived side is
+/// `holds`): its falsification is recorded at regeneration too ([`crate::checks`]).
+fn is_symbolic_check(entry: &Entry) -> bool {
+    matches!(&entry.derived, crate::entry::Derived::Numbers(m) if m.contains_key("holds"))
+}
+
+/// The entry of `entries` that is `entry` computed again: the same index when section and
+/// quantity match there, otherwise the first with the same section and quantity.
+fn same_entry<'a>(entries: &'a [Entry], index: usize, entry: &Entry) -> Option<&'a Entry> {
+    let same = |e: &&Entry| e.section == entry.section && e.quantity == entry.quantity;
+    entries.get(index).filter(same).or_else(|| entries.iter().find(same))
+}
+
+/// `entries` (computed by `run`) with every `agrees` entry that states no falsification given
+/// one (issue 38): for each output of the generated programs of `models` that the entry's note
+/// names, each parameter or input that output reads and each factor of [`ENTRY_FACTORS`],
+/// `run` computes the entries again with that argument scaled in a copy of the output's
+/// instructions ([`Target::Slot`]; the memoir's transcriptions and every other output keep
+/// theirs), until the same entry (same section and quantity) no longer `agrees`. That
+/// perturbation and the verdict it gives are recorded; when none of the first
+/// [`MAX_TRIES`] breaks it, the first tried is recorded with its verdict (`agrees`), which the
+/// falsifiability test reports. An entry whose note names no output, or whose evaluators do
+/// not read the perturbed program ([`overlay`] and the other functions of this module), is left
+/// without one. Every rerun is cached by its perturbation.
+pub fn falsify_entries(
+    entries: Vec<Entry>,
+    models: &[&'static str],
+    run: impl Fn() -> Vec<Entry>,
+) -> Vec<Entry> {
+    let programs: Vec<(&'static str, Program)> =
+        models.iter().filter_map(|m| Some((*m, Program::parse(ir_of(m)?).ok()?))).collect();
+    type Key = (&'static str, String, usize, usize);
+    let mut cache: BTreeMap<Key, Option<(Vec<Entry>, String)>> = BTreeMap::new();
+    let mut out = entries.clone();
+    for (index, entry) in entries.iter().enumerate() {
+        if entry.verdict != Verdict::Agrees
+            || entry.falsification.is_some()
+            || is_symbolic_check(entry)
+        {
+            continue;
+        }
+        let mut first: Option<Falsification> = None;
+        let mut tries = 0usize;
+        'search: for (model, program) in &programs {
+            for output in outputs_named(program, &entry.note) {
+                let Some(members) = cone(program, &output) else { continue };
+                let read = arguments_read(program, &members);
+                for (f, &factor) in ENTRY_FACTORS.iter().enumerate() {
+                    for (slot, (_, argument)) in read.iter().enumerate() {
+                        if tries == MAX_TRIES {
+                            break 'search;
+                        }
+                        tries += 1;
+                        let key = (*model, output.clone(), slot, f);
+                        let rerun = cache.entry(key).or_insert_with(|| {
+                            let (again, _) =
+                                with_parts(model, &output, Target::Slot(slot), factor, &run)?;
+                            let what = format!(
+                                "every use of `{argument}` in the generated `{output}` output of generated/{model}.ir scaled by 1 + {:.0e} (in a copy of the output's instructions: the memoir's transcribed outputs and every other output keep theirs)",
+                                factor - 1.0
+                            );
+                            Some((again, what))
+                        });
+                        let Some((again, what)) = rerun.as_ref() else { continue };
+                        let Some(perturbed) = same_entry(again, index, entry) else { continue };
+                        let found = Falsification {
+                            perturbation: what.clone(),
+                            verdict: perturbed.verdict,
+                            evidence: perturbed
+                                .rel_diff
+                                .map(|r| BTreeMap::from([("rel_diff".to_string(), r)]))
+                                .unwrap_or_default(),
+                        };
+                        if found.breaks(entry.verdict) {
+                            first = Some(found);
+                            break 'search;
+                        }
+                        first.get_or_insert(found);
+                    }
+                }
+            }
+        }
+        out[index].falsification = first;
+    }
+    out
+}
+
 /// The words stating a perturbation, with the constant's value.
 pub fn describe(pert: &Perturbation, value: f64) -> String {
     let rel = pert.factor - 1.0;
@@ -328,6 +516,7 @@ pub fn describe(pert: &Perturbation, value: f64) -> String {
             format!("constant n° {} ({})", k + 1, crate::render::text::format_significant(value, 6))
         }
         Target::Argument(name) => format!("every use of `{name}`"),
+        Target::Slot(k) => format!("every use of argument n° {} read", k + 1),
     };
     format!(
         "{what} of the generated `{}` output of generated/{}.ir {change} (in a copy of the output's instructions: the memoir's transcribed outputs keep theirs)",

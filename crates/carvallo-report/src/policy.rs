@@ -240,6 +240,7 @@ pub(crate) fn number_entry(
 ) -> Entry {
     let rel = rel_diff(derived, memoir);
     Entry {
+        falsification: None,
         section: section.to_string(),
         quantity: quantity.to_string(),
         memoir: Memoir::Number(memoir),
@@ -266,6 +267,7 @@ pub(crate) fn printed_number(
     let otherwise = if formulas_agree { Verdict::MemoirError } else { Verdict::DerivationDiffers };
     let verdict = printed(derived, memoir, unit_of(decimals), otherwise);
     Entry {
+        falsification: None,
         section: section.to_string(),
         quantity: quantity.to_string(),
         memoir: Memoir::Number(memoir),
@@ -294,6 +296,7 @@ pub(crate) fn formula_entry<P>(
     }
     let verdict = formula(worst, otherwise);
     Entry {
+        falsification: None,
         section: section.into(),
         quantity: quantity.into(),
         memoir: Memoir::Formula(printed.into()),
@@ -320,6 +323,7 @@ pub(crate) fn number(
     let rel = rel_diff(derived, memoir);
     let verdict = printed(derived, memoir, unit_of(decimals), Verdict::MemoirError);
     Entry {
+        falsification: None,
         section: section.into(),
         quantity: quantity.into(),
         memoir: Memoir::Number(memoir),
@@ -341,6 +345,7 @@ pub(crate) fn number_as(
 ) -> Entry {
     let rel = rel_diff(derived, memoir);
     Entry {
+        falsification: None,
         section: section.into(),
         quantity: quantity.into(),
         memoir: Memoir::Number(memoir),

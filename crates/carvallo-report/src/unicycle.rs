@@ -335,6 +335,7 @@ fn numbers() -> Vec<Entry> {
         e.push(entry);
     }
     e.push(Entry {
+        falsification: None,
         section: "32".into(),
         quantity: "s0 of (E), formula".into(),
         memoir: Memoir::Formula("s0 = (2/n0) tan(theta)".into()),
@@ -647,6 +648,7 @@ fn ocr_entries() -> Vec<Entry> {
         && dn_dn <= FD_TOLERANCE
         && a21_ratio <= FD_TOLERANCE;
     e.push(Entry {
+        falsification: None,
         section: "78".into(),
         quantity: "characteristic determinant, second row".into(),
         memoir: Memoir::Formula("-L lambda^2 + dN/dtheta lambda + dN/dtheta'".into()),
@@ -674,6 +676,7 @@ fn ocr_entries() -> Vec<Entry> {
     let dn_dp_general = diff(&base, "p", 1e-3, |q| residual(q, "n"));
     let general_rel = rel_diff(dn_dp_general, (base["B1"] - mu1 * r * r) * s);
     e.push(Entry {
+        falsification: None,
         section: "78".into(),
         quantity: "dN/dp at theta = 0, n = 0".into(),
         memoir: Memoir::Formula("dN/dp = B1 - mu1 R^2 = +mu R^2 s".into()),
@@ -712,6 +715,7 @@ fn ocr_entries() -> Vec<Entry> {
         worst40 = worst40.max(rel_diff(a_dpdn, printed_rhs));
     }
     e.push(Entry {
+        falsification: None,
         section: "40".into(),
         quantity: "left side A dp'/dn".into(),
         memoir: Memoir::Formula("A1 dp'/dn = mu R h s cos(theta) + 2 mu h^2 n sin(theta) cos(theta)".into()),
@@ -727,6 +731,7 @@ fn ocr_entries() -> Vec<Entry> {
     // n° 41 conclusion: the straight-running speed limit.
     let limit = bisect(|s| out(&n32(0.0, s, 0.0), "stability_n40"), 0.0, 5.0);
     e.push(Entry {
+        falsification: None,
         section: "41".into(),
         quantity: "conclusion: speed limit sqrt(C/(mu1 R^2))".into(),
         memoir: Memoir::Formula("s > mu1 R / C (= 1)".into()),
@@ -758,6 +763,7 @@ fn ocr_entries() -> Vec<Entry> {
     let with_mu = -r * (b1 - mu1 * r * r) / (g * c);
     let printed = -mu1 * r * (b1 - mu1 * r * r) / (mu * g * c);
     e.push(Entry {
+        falsification: None,
         section: "36".into(),
         quantity: "first member (S): s^2 over constant term".into(),
         memoir: Memoir::Formula("0 < -mu0 g z + mu1 R z (B1 - mu1 R^2)/C s^2".into()),

@@ -49,6 +49,7 @@ fn rel(d: f64, m: f64) -> f64 {
 fn number_entry(quantity: String, published: f64, derived: f64, note: &str) -> Entry {
     let r = rel(derived, published);
     Entry {
+        falsification: None,
         section: SECTION.to_string(),
         quantity,
         memoir: Memoir::Number(published),
@@ -113,6 +114,7 @@ pub fn entries() -> Vec<Entry> {
                 out.push(number_entry(format!("{name} (modern anchor)"), published, d, note))
             }
             None => out.push(Entry {
+                falsification: None,
                 section: SECTION.to_string(),
                 quantity: format!("{name} (modern anchor)"),
                 memoir: Memoir::Number(published),
@@ -127,6 +129,7 @@ pub fn entries() -> Vec<Entry> {
         Ok(checks) => {
             for ch in checks {
                 out.push(Entry {
+                    falsification: None,
                     section: SECTION.to_string(),
                     quantity: format!("check {}", ch.id),
                     memoir: Memoir::Formula(ch.statement.clone()),
@@ -148,6 +151,7 @@ pub fn entries() -> Vec<Entry> {
             }
         }
         Err(e) => out.push(Entry {
+            falsification: None,
             section: SECTION.to_string(),
             quantity: "symbolic checks".to_string(),
             memoir: Memoir::Formula("generated/whipple.checks.tsv".to_string()),

@@ -56,6 +56,7 @@ fn rel(a: f64, b: f64) -> f64 {
 
 fn failed(section: &str, quantity: &str, why: String) -> Entry {
     Entry {
+        falsification: None,
         section: section.into(),
         quantity: quantity.into(),
         memoir: Memoir::Formula("-".into()),
@@ -76,6 +77,7 @@ fn worst_entry(
     note: &str,
 ) -> Entry {
     Entry {
+        falsification: None,
         section: section.into(),
         quantity: quantity.into(),
         memoir: Memoir::Formula(memoir.into()),
@@ -208,6 +210,7 @@ fn relations_66(k: &Kinematics) -> Vec<Entry> {
     ];
     match defect {
         Ok(d) => e.push(Entry {
+            falsification: None,
             section: "66".into(),
             quantity: "ν is not a function of (θ, γ): cross derivatives of (I) at θ = 20°, γ = 40°".into(),
             memoir: Memoir::Formula("dnu/dtheta, dnu/dgamma of (I)".into()),
@@ -262,6 +265,7 @@ fn rest_69(k: &Kinematics) -> Vec<Entry> {
         "exact lowest frame position (R sin mu = c, n° 53); the memoir's 61.6° is the slide-rule value of n° 53",
     )];
     e.push(Entry {
+        falsification: None,
         section: "69".into(),
         quantity: "eta' at the rest equilibrium".into(),
         memoir: Memoir::Number(0.0),
@@ -275,6 +279,7 @@ fn rest_69(k: &Kinematics) -> Vec<Entry> {
     });
     let derived_fd = rel(r.eta_second, eq.eta_second_fd);
     e.push(Entry {
+        falsification: None,
         section: "69".into(),
         quantity: "eta'' at the rest equilibrium (1/rad)".into(),
         memoir: Memoir::Number(r.memoir_eta_second),
@@ -293,6 +298,7 @@ fn rest_69(k: &Kinematics) -> Vec<Entry> {
         Ok(st) => {
             let bound = -k.geometry().radius() + eq.lambda * r.eta_second;
             e.push(Entry {
+                falsification: None,
                 section: "69".into(),
                 quantity: "d2Z/dtheta2 at the rest equilibrium, illustrative centre of gravity (m/rad^2)".into(),
                 memoir: Memoir::Formula("d2Z/dtheta2 = -Z + X R cos^3 mu sin gamma/(lambda cos eta) < 0".into()),

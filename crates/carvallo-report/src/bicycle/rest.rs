@@ -44,6 +44,7 @@ fn small(x: f64, bound: f64) -> String {
 
 fn failure(quantity: String, why: &str) -> Entry {
     Entry {
+        falsification: None,
         section: "67".into(),
         quantity,
         memoir: Memoir::Formula("voisine de celle du n° 55, sinon confondue".into()),
@@ -88,6 +89,7 @@ fn lean_entry(bike: &RestBicycle, td: f64) -> Result<(Entry, f64), String> {
     let mut n = numbers(&p);
     n.insert("difference_with_e_0.35_deg".to_string(), deg(far.difference()));
     let entry = Entry {
+        falsification: None,
         section: "67".into(),
         quantity: format!("handlebar at rest, theta = {td}°: gamma67 against gamma55 (degrees)"),
         memoir: Memoir::Formula(
@@ -133,6 +135,7 @@ pub fn entries() -> Vec<Entry> {
     }
     let lowers = wheel_slopes.len() == LEANS.len() && wheel_slopes.values().all(|d| *d < 0.0);
     e.push(Entry {
+        falsification: None,
         section: "67".into(),
         quantity: "direction of the shift: dU/dgamma at gamma55, the front wheel's part (J/rad)".into(),
         memoir: Memoir::Formula(
@@ -145,6 +148,7 @@ pub fn entries() -> Vec<Entry> {
     });
     let all_stable = stiffness.len() == LEANS.len() && stiffness.values().all(|k| *k > 0.0);
     e.push(Entry {
+        falsification: None,
         section: "67".into(),
         quantity: "stiffness d2U/dgamma2 at the handlebar's rest position (J/rad^2)".into(),
         memoir: Memoir::Formula("the front wheel 'va prendre une position d'équilibre stable'".into()),
@@ -164,6 +168,7 @@ pub fn entries() -> Vec<Entry> {
     match limit {
         Ok((at_zero, upright, slight)) => {
             e.push(Entry {
+                falsification: None,
                 section: "67".into(),
                 quantity: "stiffness d2U/dgamma2 in the normal position, theta = gamma = 0 (J/rad^2)".into(),
                 memoir: Memoir::Formula("the front wheel 'est au départ dans une position d'équilibre instable'".into()),
@@ -182,6 +187,7 @@ pub fn entries() -> Vec<Entry> {
             n.insert("gamma67_at_0.01deg".to_string(), deg(slight.equilibrium.gamma));
             let shift = deg(upright.difference());
             e.push(Entry {
+                falsification: None,
                 section: "67".into(),
                 quantity: q,
                 memoir: Memoir::Formula(

@@ -222,6 +222,7 @@ fn numbers() -> Vec<Entry> {
     let memoir_ratio = bike.memoir_theta1_over_theta(eta);
     e.push(number("96", "theta1/theta = (mu' - mu''')/mu' from the printed 7 and 0.78", (7.0 - 0.78) / 7.0, 2, memoir_ratio, "generated `memoir_theta1_over_theta` (the printed (1)' at omega = eta) beside the memoir's own letters of n° 96: below 1, hence the memoir's theta1 < theta of n° 97"));
     e.push(Entry {
+        falsification: None,
         section: "97".into(),
         quantity: "theta1/theta of the handlebar equation (first order)".into(),
         memoir: Memoir::Number(memoir_ratio),
@@ -232,6 +233,7 @@ fn numbers() -> Vec<Entry> {
     });
     let geo20 = bike.geometric_theta1_over_theta(eta, s20);
     e.push(Entry {
+        falsification: None,
         section: "97".into(),
         quantity: "theta1/theta imposed by the geometry at 20 km/h (first order)".into(),
         memoir: Memoir::Formula("theta1 > theta (sin(theta1) = sin(theta) cos(gamma) - cos(theta) sin(gamma) sin(eta))".into()),
@@ -249,6 +251,7 @@ fn numbers() -> Vec<Entry> {
         }
     });
     e.push(Entry {
+        falsification: None,
         section: "97".into(),
         quantity: "speed of a steady turn without hands and without lateral shift (m/s)".into(),
         memoir: Memoir::Formula("none: 'il serait impossible d'effectuer une conversion sans les mains'".into()),
@@ -265,6 +268,7 @@ fn numbers() -> Vec<Entry> {
     let shift20_memoir =
         bike.output(&memoir_state(eta, s20), "memoir_shift_98").unwrap_or(f64::NAN);
     e.push(Entry {
+        falsification: None,
         section: "98".into(),
         quantity: "lateral shift epsilon/theta at 20 km/h".into(),
         memoir: Memoir::Number(shift20_memoir),
@@ -275,6 +279,7 @@ fn numbers() -> Vec<Entry> {
     });
     let exact20 = bike.lateral_shift_exact(eta, s20);
     e.push(Entry {
+        falsification: None,
         section: "98".into(),
         quantity: "lateral shift epsilon/theta at 20 km/h, exact at first order".into(),
         memoir: Memoir::Number(shift20_memoir),

@@ -77,6 +77,7 @@ fn printed(
     let mut all = vec![("value", d)];
     all.extend_from_slice(extra);
     Entry {
+        falsification: None,
         section: section.to_string(),
         quantity: quantity.to_string(),
         memoir: Memoir::Number(m),
@@ -89,6 +90,7 @@ fn printed(
 
 fn ocr(section: &str, quantity: &str, text: &str, derived: Derived, note: &str) -> Entry {
     Entry {
+        falsification: None,
         section: section.to_string(),
         quantity: quantity.to_string(),
         memoir: Memoir::Formula(text.to_string()),
@@ -158,6 +160,7 @@ fn concordance_entry() -> Entry {
         }
     }
     Entry {
+        falsification: None,
         section: "116".to_string(),
         quantity: "the twelve coefficients of n° 117 vs the general model's exact linearisation".to_string(),
         memoir: Memoir::Formula("(δθ), (δγ) of n° 117 (column sums of the n° 116 tables)".to_string()),
@@ -347,6 +350,7 @@ fn quartic_entries(m: &Equations, f: &Equations) -> Vec<Entry> {
         }
     }
     out.push(Entry {
+        falsification: None,
         section: "120".to_string(),
         quantity: "sign table of the quartic (4 intervals × 5 terms)".to_string(),
         memoir: Memoir::Formula("+ + - - + / + + - + + / + + + + + / + + + + -".to_string()),
@@ -528,6 +532,7 @@ fn new_bicycle_entries(k: &Constants) -> Vec<Entry> {
     let (_, new_half) = n.upper_limit_s2();
     let full = new_half / old_half;
     out.push(Entry {
+        falsification: None,
         section: "122".to_string(),
         quantity: "ratio s'^2/s^2 of the three-factor formula".to_string(),
         memoir: Memoir::Number(1.67),
@@ -559,6 +564,7 @@ fn friction_entries() -> Vec<Entry> {
     ] {
         let r = rel(d, m);
         out.push(Entry {
+            falsification: None,
             section: "123".to_string(),
             quantity: q.to_string(),
             memoir: Memoir::Formula(formula.to_string()),
@@ -573,6 +579,7 @@ fn friction_entries() -> Vec<Entry> {
     let his = -kf + (th0 - kf) * (eps * std::f64::consts::PI / a).exp();
     let r = rel(th_g, his);
     out.push(Entry {
+        falsification: None,
         section: "123".to_string(),
         quantity: "growing swing with friction: θ1 = -k + (θ0 - k) e^(ε T/2)".to_string(),
         memoir: Memoir::Formula("-k + (θ0 - k) e^(ε T/2), ε² neglected (ε = 0.01)".to_string()),
@@ -627,6 +634,7 @@ fn incline_entries() -> Vec<Entry> {
             // failed comparison agree); an expected finding that does not show agrees.
             let verdict = policy::numeric(r, tol, *expected);
             Entry {
+                falsification: None,
                 section: "124".to_string(),
                 quantity: q.to_string(),
                 memoir: Memoir::Formula(text.to_string()),
@@ -682,6 +690,7 @@ fn time_scale_entry(e: &Equations) -> Entry {
     }
     let tol = 1e-10;
     Entry {
+        falsification: None,
         section: "118".to_string(),
         quantity: "T = s t: quartic roots times s are the eigenvalues in t".to_string(),
         memoir: Memoir::Formula("d/dt = s d/dT, equations divided by s^2".to_string()),

@@ -53,6 +53,7 @@ fn approx(
 ) -> Entry {
     let rel = rel_diff(derived, memoir);
     Entry {
+        falsification: None,
         section: section.into(),
         quantity,
         memoir: Memoir::Number(memoir),
@@ -118,6 +119,7 @@ fn turn_entries(bike: &LockedSteer, gdeg: f64, kmh: f64, e: &mut Vec<Entry>) -> 
     ));
     // (C) itself.
     e.push(Entry {
+        falsification: None,
         section: "101".into(),
         quantity: format!("characteristic equation (C) with the handlebar held and s held, {at}"),
         memoir: Memoir::Formula(
@@ -191,6 +193,7 @@ fn turn_entries(bike: &LockedSteer, gdeg: f64, kmh: f64, e: &mut Vec<Entry>) -> 
     let ratio = c.dfdtheta_centrifugal() / c.dfdtheta_gravity;
     let tan2 = th.tan().powi(2);
     e.push(Entry {
+        falsification: None,
         section: "104".into(),
         quantity: format!("centrifugal part / gravity part of df/dtheta, {at}"),
         memoir: Memoir::Number(tan2),
@@ -221,6 +224,7 @@ fn turn_entries(bike: &LockedSteer, gdeg: f64, kmh: f64, e: &mut Vec<Entry>) -> 
             b.fall_equation(&t, Hold::Rolling).map_err(|x| x.to_string())
         })?;
     e.push(Entry {
+        falsification: None,
         section: "105".into(),
         quantity: format!("roots of (C) with the handlebar held (1/s), {at}"),
         memoir: Memoir::Formula(
@@ -366,6 +370,7 @@ fn new_bicycle_roots(old: &LockedSteer, e: &mut Vec<Entry>) -> Result<(), String
     let without_dfdp = (-c.dfdtheta / c.dfdpp).sqrt();
     let all = [&c, &cb, &half, &cc, &oc];
     e.push(Entry {
+        falsification: None,
         section: "105".into(),
         quantity: format!("roots of (C), handlebar held (1/s), new bicycle of n° 122, {}", label(gdeg, kmh)),
         memoir: Memoir::Formula("real and of opposite signs: unstable, whatever the speed (n° 105; n° 122 discusses only the straight running of the new bicycle)".into()),
@@ -431,6 +436,7 @@ fn new_bicycle_grid() -> Entry {
     }
     let fmt = |x: &[f64]| x.iter().map(|v| v.to_string()).collect::<Vec<_>>().join(", ");
     Entry {
+        falsification: None,
         section: "105".into(),
         quantity: "roots of (C) real and of opposite signs across a grid, new bicycle of n° 122".into(),
         memoir: Memoir::Formula("real and of opposite signs: unstable, whatever the speed".into()),
@@ -455,6 +461,7 @@ fn new_bicycle_grid() -> Entry {
 
 fn failure(why: &str) -> Entry {
     Entry {
+        falsification: None,
         section: "105".into(),
         quantity: "steady turn with the handlebar held".into(),
         memoir: Memoir::Formula("unstable".into()),

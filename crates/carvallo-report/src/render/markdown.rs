@@ -298,6 +298,7 @@ mod tests {
 
     fn entry(section: &str, verdict: Verdict, note: &str) -> Entry {
         Entry {
+            falsification: None,
             section: section.to_string(),
             quantity: format!("q {section}"),
             memoir: Memoir::Number(1.0),

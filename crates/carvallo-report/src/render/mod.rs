@@ -19,6 +19,7 @@ mod tests {
     fn sample() -> Vec<Entry> {
         vec![
             Entry {
+                falsification: None,
                 section: "4".into(),
                 quantity: "A / (mu R^2)".into(),
                 memoir: Memoir::Number(1.5),
@@ -28,6 +29,7 @@ mod tests {
                 note: "coefficient of mu R^2".into(),
             },
             Entry {
+                falsification: None,
                 section: "14".into(),
                 quantity: "x".into(),
                 memoir: Memoir::Formula("n^2 + 1".into()),
