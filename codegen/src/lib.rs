@@ -41,6 +41,19 @@ pub struct Check {
     pub holds: bool,
     /// The evidence: for example the simplified difference of the two sides.
     pub detail: String,
+    /// The same check run again on a perturbed derived side (issue 38), when one is stated.
+    pub perturbed: Option<Perturbed>,
+}
+
+/// A check run again with its derived side perturbed (a model symbol of it scaled, see
+/// [`falsify`]): what was changed and whether the check still holds. A check that can fail
+/// no longer holds.
+#[derive(Clone, Debug, PartialEq, Eq)]
+pub struct Perturbed {
+    /// What was changed, in words (for example "every `mu` of the derived side scaled by 9/8").
+    pub what: String,
+    /// Whether the check holds with the change.
+    pub holds: bool,
 }
 
 /// Everything one model's derivation produces.
@@ -71,6 +84,7 @@ pub struct Derivation {
 pub mod cas;
 pub mod derive;
 pub mod emit;
+pub mod falsify;
 pub mod mechanics;
 pub mod memoir;
 pub mod regen;

@@ -390,6 +390,10 @@ fn sample_derivation() -> Derivation {
     });
     d.checks = vec![
         Check {
+            perturbed: Some(carvallo_codegen::Perturbed {
+                what: "every `R` of the derived side\tscaled by 9/8".to_string(),
+                holds: false,
+            }),
             section: "7".to_string(),
             id: "first".to_string(),
             statement: "a statement\nover two lines".to_string(),
@@ -397,6 +401,7 @@ fn sample_derivation() -> Derivation {
             detail: "difference 0".to_string(),
         },
         Check {
+            perturbed: None,
             section: "71".to_string(),
             id: "second".to_string(),
             statement: "a failing one".to_string(),
@@ -422,13 +427,14 @@ fn rendering_is_byte_stable_and_normalised_body() {
         assert!(!text.contains('\r'), "LF only");
         assert!(text.lines().all(|l| !l.ends_with(' ')), "no trailing spaces:\n{text}");
     }
-    // The TSV keeps five columns even with an empty detail, and flattens tabs and newlines.
+    // The TSV keeps seven columns even with an empty detail or no perturbation (`-`), and
+    // flattens tabs and newlines.
     let rows: Vec<&str> = a.2.lines().filter(|l| !l.starts_with('#')).collect();
     assert_eq!(
         rows,
         [
-            "7\tfirst\ttrue\ta statement over two lines\tdifference 0",
-            "71\tsecond\tfalse\ta failing one\t"
+            "7\tfirst\ttrue\ta statement over two lines\tdifference 0\tevery `R` of the derived side scaled by 9/8\tfalse",
+            "71\tsecond\tfalse\ta failing one\t\t\t-"
         ]
     );
     insta::with_settings!({ description => "IR of a two-formula sample derivation", omit_expression => true }, {

@@ -19,6 +19,7 @@ mod engine;
 mod engine_hoop;
 mod engine_memoir;
 mod engine_unicycle;
+mod falsify;
 mod hoop_checks;
 mod hoop_discussion;
 mod hoop_formulas;

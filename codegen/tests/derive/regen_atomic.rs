@@ -34,6 +34,7 @@ fn toy_model(model: &str, expr: &str) -> Derivation {
             expr: parse!(expr),
         }],
         checks: vec![Check {
+            perturbed: None,
             section: "1".to_string(),
             id: "toy_check".to_string(),
             statement: "a toy check".to_string(),

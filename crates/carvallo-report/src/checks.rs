@@ -5,7 +5,7 @@ use std::collections::BTreeMap;
 
 pub use carvallo::artifacts::{parse_checks, SymbolicCheck};
 
-use crate::entry::{Derived, Entry, Memoir, Verdict};
+use crate::entry::{Derived, Entry, Falsification, Memoir, Verdict};
 use crate::policy::{self, Expect};
 
 /// A symbolic check whose outcome is not simply "holds": the check's id, what is expected of it
@@ -41,6 +41,19 @@ pub fn find<'a>(findings: &'a [Finding], id: &str) -> Option<&'a Finding> {
 /// What is expected of check `id`: its finding's expectation, or [`Expect::Holds`].
 pub fn expect(findings: &[Finding], id: &str) -> Expect {
     find(findings, id).map_or(Expect::Holds, |f| f.expect)
+}
+
+/// The falsification of symbolic check `c` (issue 38): the check was run again at
+/// regeneration with its derived side perturbed (`codegen/src/falsify.rs`); the verdict is the
+/// one [`policy::check`] gives that outcome against what is expected of the check. `None` when
+/// the check states no perturbation.
+pub fn falsification(c: &SymbolicCheck, expect: Expect) -> Option<Falsification> {
+    let (what, holds) = c.perturbed.as_ref()?;
+    Some(Falsification {
+        perturbation: format!("{what} (the symbolic check run again at regeneration)"),
+        verdict: policy::check(*holds, expect),
+        evidence: BTreeMap::from([("holds".to_string(), if *holds { 1.0 } else { 0.0 })]),
+    })
 }
 
 /// The symbolic checks of one model's `checks.tsv` (text `tsv`, file `generated/{file}`) as
@@ -81,7 +94,7 @@ pub(crate) fn check_entries(
             };
             let verdict = policy::check(c.holds, expect(findings, &c.id));
             Entry {
-                falsification: None,
+                falsification: falsification(&c, expect(findings, &c.id)),
                 section: c.section.clone(),
                 quantity: format!("{label} check {}", c.id),
                 memoir: Memoir::Formula(c.statement.clone()),

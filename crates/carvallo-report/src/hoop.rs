@@ -539,7 +539,7 @@ fn fold_checks(entries: &mut Vec<Entry>, checks: Result<Vec<SymbolicCheck>, Stri
             note.push_str(&format!("; expected not to hold: {}", f.why));
         }
         entries.push(Entry {
-            falsification: None,
+            falsification: checks::falsification(&check, checks::expect(FINDINGS, &check.id)),
             section: check.section.clone(),
             quantity: format!("check {}", check.id),
             memoir: Memoir::Formula(check.statement.clone()),

@@ -129,7 +129,7 @@ pub fn entries() -> Vec<Entry> {
         Ok(checks) => {
             for ch in checks {
                 out.push(Entry {
-                    falsification: None,
+                    falsification: checks::falsification(&ch, checks::expect(FINDINGS, &ch.id)),
                     section: SECTION.to_string(),
                     quantity: format!("check {}", ch.id),
                     memoir: Memoir::Formula(ch.statement.clone()),

@@ -76,10 +76,14 @@ pub struct SymbolicCheck {
     pub statement: String,
     /// The evidence.
     pub detail: String,
+    /// The same check run again with its derived side perturbed (issue 38): what was changed
+    /// and whether the check still held; `None` when the check states no perturbation.
+    pub perturbed: Option<(String, bool)>,
 }
 
-/// Parses the checks TSV (`#` comment lines, then `section id holds statement detail`
-/// separated by tabs).
+/// Parses the checks TSV (`#` comment lines, then `section id holds statement detail
+/// perturbation perturbed_holds` separated by tabs; `perturbed_holds` is `true`, `false` or `-`
+/// when no perturbation is stated).
 ///
 /// # Errors
 /// A message naming the 1-based line and what is wrong with it.
@@ -90,19 +94,23 @@ pub fn parse_checks(tsv: &str) -> Result<Vec<SymbolicCheck>, String> {
             continue;
         }
         let fields: Vec<&str> = line.split('\t').collect();
-        let [section, id, holds, statement, detail] = fields[..] else {
+        let [section, id, holds, statement, detail, perturbation, perturbed_holds] = fields[..]
+        else {
             return Err(format!(
-                "line {}: expected 5 tab-separated fields, found {}",
+                "line {}: expected 7 tab-separated fields, found {}",
                 i + 1,
                 fields.len()
             ));
         };
-        let holds = match holds {
-            "true" => true,
-            "false" => false,
-            other => {
-                return Err(format!("line {}: holds must be true or false, found {other:?}", i + 1))
-            }
+        let flag = |name: &str, value: &str| match value {
+            "true" => Ok(true),
+            "false" => Ok(false),
+            other => Err(format!("line {}: {name} must be true or false, found {other:?}", i + 1)),
+        };
+        let holds = flag("holds", holds)?;
+        let perturbed = match perturbed_holds {
+            "-" => None,
+            value => Some((perturbation.to_string(), flag("perturbed_holds", value)?)),
         };
         checks.push(SymbolicCheck {
             section: section.to_string(),
@@ -110,6 +118,7 @@ pub fn parse_checks(tsv: &str) -> Result<Vec<SymbolicCheck>, String> {
             holds,
             statement: statement.to_string(),
             detail: detail.to_string(),
+            perturbed,
         });
     }
     Ok(checks)
@@ -133,12 +142,20 @@ mod tests {
     #[test]
     fn malformed_lines_are_named() {
         assert_eq!(
-            parse_checks("# c\n1\tid\tmaybe\ts\td").unwrap_err(),
+            parse_checks("# c\n1\tid\tmaybe\ts\td\t\t-").unwrap_err(),
             "line 2: holds must be true or false, found \"maybe\""
         );
         assert_eq!(
-            parse_checks("1\tid").unwrap_err(),
-            "line 1: expected 5 tab-separated fields, found 2"
+            parse_checks("1\tid\ttrue\ts\td\tp\tyes").unwrap_err(),
+            "line 1: perturbed_holds must be true or false, found \"yes\""
         );
+        assert_eq!(
+            parse_checks("1\tid").unwrap_err(),
+            "line 1: expected 7 tab-separated fields, found 2"
+        );
+        let c = parse_checks("1\tid\ttrue\ts\td\tevery `R` scaled\tfalse\n2\tj\ttrue\ts\td\t\t-")
+            .unwrap();
+        assert_eq!(c[0].perturbed, Some(("every `R` scaled".to_string(), false)));
+        assert_eq!(c[1].perturbed, None);
     }
 }

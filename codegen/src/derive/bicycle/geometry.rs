@@ -258,9 +258,19 @@ pub fn normal_components() -> [Atom; 3] {
 }
 
 /// A [`Check`] that `diff` vanishes by [`is_zero_mod`], its detail ending with the reduced
-/// numerator of the difference.
-pub fn check(section: &str, id: &str, statement: &str, diff: &Atom, detail: String) -> Check {
+/// numerator of the difference. `derived` is the derived side of the difference (its first
+/// term, `diff` = `derived` − expected, or `diff` itself for a quantity that must vanish): the
+/// check is run again with `derived` perturbed ([`crate::falsify`]) and the expected side kept.
+pub fn check(
+    section: &str,
+    id: &str,
+    statement: &str,
+    derived: &Atom,
+    diff: &Atom,
+    detail: String,
+) -> Check {
     let holds = is_zero_mod(diff);
+    let perturbed = crate::falsify::perturb_derived(derived, diff, is_zero_mod);
     let rp = diff.expand().to_rational_polynomial::<_, _, u16>(&Q, &Z, ());
     let reduced = reduce(&rp.numerator.to_expression());
     let mut shown = show(&reduced);
@@ -268,6 +278,7 @@ pub fn check(section: &str, id: &str, statement: &str, diff: &Atom, detail: Stri
         shown = format!("{} terms", reduced.nterms());
     }
     Check {
+        perturbed: Some(perturbed),
         section: section.into(),
         id: id.into(),
         statement: statement.into(),
@@ -282,6 +293,7 @@ fn compare(section: &str, id: &str, statement: &str, derived: &Atom, printed: &s
         section,
         id,
         statement,
+        &(derived),
         &(derived - &p),
         format!("printed: {printed}; derived: {}", {
             let s = show(derived);
@@ -304,7 +316,11 @@ fn compare_vec(
     let d = derived.to(Trihedron::IJK);
     let diffs: Vec<Atom> = (0..3).map(|i| &d.comps[i] - from_printed(printed[i])).collect();
     let holds = diffs.iter().all(is_zero_mod);
+    let perturbed = crate::falsify::perturb(&d.comps, |dd| {
+        (0..3).all(|i| is_zero_mod(&(&dd[i] - from_printed(printed[i]))))
+    });
     Check {
+        perturbed: Some(perturbed),
         section: section.into(),
         id: id.into(),
         statement: statement.into(),
@@ -387,6 +403,7 @@ pub fn derive() -> Result<Derivation> {
     ));
     let orth = [h().dot(&g()), h1().dot(&g()), h1().dot(&h1()) - &one, g().dot(&g()) - &one];
     checks.push(Check {
+        perturbed: None,
         section: "47".into(),
         id: "directions_orthonormal_47".into(),
         statement: "H, G, H1 are unit vectors and G is normal to H and to H1".into(),
@@ -403,6 +420,7 @@ pub fn derive() -> Result<Derivation> {
         .add(&h1().scale(&(&c_ - &r_ * sin("mu"))));
     let d_om = om.sub(&printed_om);
     checks.push(Check {
+        perturbed: None,
         section: "46".into(),
         id: "om_46".into(),
         statement: "OS + SA + AB + BC + CM is the printed OM = Rk + aH - (b + R cos mu)G + (c - R sin mu)H1".into(),
@@ -412,6 +430,7 @@ pub fn derive() -> Result<Derivation> {
     let sc_upright = h().scale(&a_const()).add(&g().scale(&-b_const())).add(&h().scale(&c_));
     let sc_upright = sc_upright.map(|e| at_sigma0(&zero_theta(e)));
     checks.push(Check {
+        perturbed: None,
         section: "44".into(),
         id: "relations_ab_44".into(),
         statement: "with (a) a + c = l cos(sigma0) and (b) b = l sin(sigma0), SA + AB + BC = l I in the normal position (theta = gamma = 0, sigma = sigma0)".into(),
@@ -442,6 +461,7 @@ pub fn derive() -> Result<Derivation> {
         "48",
         "equation_2_derivative_48",
         "K|dOM/dmu (dOM/dmu = dCM/dmu = -R(H1 cos mu - G sin mu)) is the derivative of K|OM with respect to mu",
+        &eq2_vec,
         &(&eq2_vec - &eq2_ab),
         "derivative of the dot product vs dot product of the derivative".into(),
     ));
@@ -457,6 +477,7 @@ pub fn derive() -> Result<Derivation> {
         "48",
         "tan_mu_48",
         "K|dOM/dmu = 0 is the printed (2): tan mu = tan sigma cos gamma + tan theta sin gamma / cos sigma (K|dOM/dmu = R cos(mu) cos(theta) cos(sigma) (tan mu - right side))",
+        &eq2_ab,
         &(&eq2_ab - &r_ * cos("mu") * cos_t() * cos("sigma") * (sin("mu") / cos("mu") - &tan_mu_rhs)),
         "printed (2): tan(mu) = tan(sigma)*cos(gamma) + tan(theta)*sin(gamma)/cos(sigma)".into(),
     ));
@@ -509,6 +530,7 @@ pub fn derive() -> Result<Derivation> {
         "lowest_point_50",
         "at theta = 0 the point with cos mu = cos sigma / W, sin mu = sin sigma cos gamma / W (W^2 = cos^2 sigma + sin^2 sigma cos^2 gamma) satisfies K|dOM/dmu = 0",
         &lowest0(&eq2),
+        &lowest0(&eq2),
         "W reduced with W^2 = cos^2 sigma + sin^2 sigma cos^2 gamma".into(),
     ));
     let cos_tau = lowest0(&zero_theta(&cos_km.expand()));
@@ -516,6 +538,7 @@ pub fn derive() -> Result<Derivation> {
         "50",
         "sin_tau_50",
         "at the lowest point (theta = 0) cos tau = cos K'M satisfies cos^2 tau = 1 - (sin sigma sin gamma)^2, the printed (3) sin tau = sin sigma sin gamma",
+        &(sq(&cos_tau) + sq(&(sin("sigma") * sin("gamma")))),
         &(sq(&cos_tau) + sq(&(sin("sigma") * sin("gamma"))) - &one),
         "cos tau reduces to W, and W^2 + sin^2 sigma sin^2 gamma = 1".into(),
     ));
@@ -523,6 +546,7 @@ pub fn derive() -> Result<Derivation> {
         "50",
         "cos_tau_positive_50",
         "at the lowest point cos tau = W (the positive root), so tau is in (-pi/2, pi/2)",
+        &cos_tau,
         &(&cos_tau - w50()),
         "cos tau - W".into(),
     ));
@@ -533,6 +557,7 @@ pub fn derive() -> Result<Derivation> {
         "50",
         "equation_2_50",
         "at theta = 0, with cos tau = cos K'M, K|OM is the printed (2) of n° 50: R(1 - cos tau) + l sin sigma1 - 2c sin^2(gamma/2) sin sigma",
+        &(zero_theta(&eq1)),
         &(zero_theta(&eq1) - subst(&eq2_50, &tau_c, &zero_theta(&cos_km.expand()))),
         "(2) of n° 50 with cos tau replaced by cos K'M".into(),
     ));
@@ -558,6 +583,7 @@ pub fn derive() -> Result<Derivation> {
         "51",
         "tau1_51",
         "the first-order increment of (3) is the printed (3)' tau1 cos tau0 = sigma1 cos sigma0 sin gamma",
+        &(at0(&(&dtau * &ct))),
         &(at0(&(&dtau * &ct)) - cos("sigma0") * sin("gamma")),
         "dtau/dsigma cos tau at sigma0".into(),
     ));
@@ -566,6 +592,7 @@ pub fn derive() -> Result<Derivation> {
         "51",
         "first_order_constant_51",
         "the constant term of (2) expanded about sigma0 is the printed 2R sin^2(tau0/2) - 2c sin^2(gamma/2) sin sigma0",
+        &f0,
         &(&f0 - subst(&printed_const, &sin("tau0"), &(sin("sigma0") * sin("gamma")))),
         format!("derived: {}", show(&f0)),
     ));
@@ -576,6 +603,7 @@ pub fn derive() -> Result<Derivation> {
         "51",
         "first_order_coefficient_51_as_printed",
         "the coefficient of sigma1 in (2)' is the printed R tan tau0 sin sigma0 sin gamma + l - 2c sin^2(gamma/2) cos sigma0",
+        &df0,
         &(&df0 - &coef_as_printed),
         format!(
             "derived: {}; the derivation gives R tan tau0 cos sigma0 sin gamma (tau1 cos tau0 = sigma1 cos sigma0 sin gamma, (3)'), the print has sin sigma0",
@@ -591,6 +619,7 @@ pub fn derive() -> Result<Derivation> {
         "51",
         "first_order_coefficient_51",
         "the coefficient of sigma1 in (2)' is R tan tau0 cos sigma0 sin gamma + l - 2c sin^2(gamma/2) cos sigma0 (the print with cos sigma0 for sin sigma0)",
+        &df0,
         &(&df0 - &coef_read),
         "implicit derivative of (2) of n° 50 through (3)".into(),
     ));
@@ -620,6 +649,12 @@ pub fn derive() -> Result<Derivation> {
             let t = sin("sigma") / cos("sigma") * cos("gamma");
             let dt = d_angle(&t, "sigma");
             at_sigma0(&(dt / (&one + sq(&t))))
+        }),
+        &({
+            // d/dsigma of atan(tan sigma cos gamma) = cos gamma / cos^2 sigma / (1 + tan^2 sigma cos^2 gamma)
+            let t = sin("sigma") / cos("sigma") * cos("gamma");
+            let dt = d_angle(&t, "sigma");
+            at_sigma0(&(dt / (&one + sq(&t))))
         } - cos("gamma") / (sq(&cos("sigma0")) + sq(&sin("sigma0")) * sq(&cos("gamma")))),
         "derivative of atan(tan sigma cos gamma)".into(),
     ));
@@ -630,6 +665,7 @@ pub fn derive() -> Result<Derivation> {
         "53",
         "lowest_frame_53",
         "at theta = 0 with M at E (R sin mu = c, on the steering axis) K|OM = l sin sigma1 - c sin sigma + R(1 - cos sigma cos mu), free of gamma: sigma of the lowest position follows from (1) alone, gamma then from tan mu = tan sigma cos gamma",
+        &at_e,
         &(&at_e - from_printed("l*sin(sigma1) - c*sin(sigma) + R*(1 - cos(sigma)*cos(mu))")),
         format!("K|OM at E: {}", show(&at_e)),
     ));
@@ -656,6 +692,7 @@ pub fn derive() -> Result<Derivation> {
         "54",
         "locus_x_second_54",
         "at theta = 0 with (a), (b), x is the printed l cos sigma1 - c cos sigma (1 - cos gamma) + R cos(CM, OI)",
+        &(zero_theta(&with_ab(&x_ab))),
         &(zero_theta(&with_ab(&x_ab))
             - from_printed("l*cos(sigma1) - c*cos(sigma)*(1 - cos(gamma))")
             - &r_ * zero_theta(&cos_cm_oi.expand())),
@@ -677,6 +714,7 @@ pub fn derive() -> Result<Derivation> {
     ));
     let cn = Vector::new(Trihedron::IJK, ci.clone(), cj.clone(), ck.clone());
     checks.push(Check {
+        perturbed: None,
         section: "57".into(),
         id: "normal_unit_57".into(),
         statement: "CN is a unit vector (the memoir's sum of the squares of the second members is 1) normal to H1 and G".into(),
@@ -692,6 +730,7 @@ pub fn derive() -> Result<Derivation> {
         sin("beta"),
     );
     checks.push(Check {
+        perturbed: None,
         section: "57".into(),
         id: "normal_alpha_beta_unit_57".into(),
         statement: "the form (1) CN = I cos beta sin alpha - J cos beta cos alpha + K sin beta is a unit vector (sum of the squares of the first members is 1)".into(),
@@ -712,6 +751,7 @@ pub fn derive() -> Result<Derivation> {
     let axes_ok = j1.sub(&printed_j1).comps.iter().all(is_zero_mod)
         && k1.sub(&printed_k1).comps.iter().all(is_zero_mod);
     checks.push(Check {
+        perturbed: None,
         section: "58".into(),
         id: "front_axes_58".into(),
         statement: "j1 = J1 cos theta1 + K sin theta1 and k1 = -J1 sin theta1 + K cos theta1 expand to the printed forms on I, J, K".into(),
@@ -723,6 +763,7 @@ pub fn derive() -> Result<Derivation> {
         && is_zero_mod(&i1.dot(&cn_ab))
         && is_zero_mod(&k1.dot(&cn_ab));
     checks.push(Check {
+        perturbed: None,
         section: "58".into(),
         id: "front_trihedron_58".into(),
         statement: "j1 = -N (N = CN of n° 57), I1 and k1 lie in the wheel's plane and (I1, j1, k1) is direct: |I1 j1 = k1".into(),
@@ -738,6 +779,7 @@ pub fn derive() -> Result<Derivation> {
         subst(&e, &cb, &wb())
     });
     checks.push(Check {
+        perturbed: None,
         section: "58".into(),
         id: "front_axes_in_theta_gamma_sigma_58".into(),
         statement: "with sin alpha = CN_I / cos beta, cos alpha = -CN_J / cos beta, sin beta = CN_K, cos beta = Wb = sqrt(CN_I^2 + CN_J^2), k1 = (-CN_I CN_K, -CN_J CN_K, Wb^2) / Wb, the steepest line of the front wheel (k1|CN = 0, k1|k1 = 1)".into(),
@@ -756,6 +798,7 @@ pub fn derive() -> Result<Derivation> {
         "48",
         "jacobian_structure_48",
         "d(K|OM)/dmu is the second residual K|dOM/dmu, so the Jacobian is triangular at a solution",
+        &d_eq1_m,
         &(&d_eq1_m - &eq2),
         "d(K|OM)/dmu - K|dOM/dmu".into(),
     ));

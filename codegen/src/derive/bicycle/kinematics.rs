@@ -97,8 +97,21 @@ fn vdiff_zero(d: &Vector) -> bool {
     d.comps.iter().all(is_zero_mod)
 }
 
-fn vcheck(section: &str, id: &str, statement: &str, diff: &Vector, detail: &str) -> Check {
+/// A [`Check`] that the vector `diff` vanishes, `derived` its derived side (`diff` =
+/// `derived` − expected, in the same trihedron), run again with `derived` perturbed
+/// ([`crate::falsify`]) and the expected side kept.
+fn vcheck(
+    section: &str,
+    id: &str,
+    statement: &str,
+    derived: &Vector,
+    diff: &Vector,
+    detail: &str,
+) -> Check {
     let holds = vdiff_zero(diff);
+    let perturbed = crate::falsify::perturb(&derived.comps, |d| {
+        (0..3).all(|i| is_zero_mod(&(&diff.comps[i] - &derived.comps[i] + &d[i])))
+    });
     let shown: Vec<String> = diff
         .comps
         .iter()
@@ -115,6 +128,7 @@ fn vcheck(section: &str, id: &str, statement: &str, diff: &Vector, detail: &str)
         })
         .collect();
     Check {
+        perturbed: Some(perturbed),
         section: section.into(),
         id: id.into(),
         statement: statement.into(),
@@ -163,6 +177,7 @@ pub fn derive() -> Result<Derivation> {
     let d_sig1 = g_vec.scale(&(&r_ * &s_mu)).sub(&h1().scale(&(&r_ * &c_mu)));
     ok3 &= vdiff_zero(&parts[5].sub(&d_sig1));
     checks.push(Check {
+        perturbed: None,
         section: "61".into(),
         id: "variation_3_61".into(),
         statement: "delta(M - O) is the printed (3): R dk + a dH - (b + R cos mu) dG + (c - R sin mu) dH1 + (G R sin mu - H1 R cos mu) dsigma1, with dI = J dnu, dJ = -I dnu".into(),
@@ -248,6 +263,7 @@ pub fn derive() -> Result<Derivation> {
             diff = diff.add(&d.scale(&var(&format!("w_{q}"))));
         }
         Check {
+            perturbed: None,
             section: "61".into(),
             id: id.into(),
             statement: format!(
@@ -293,6 +309,7 @@ pub fn derive() -> Result<Derivation> {
         "61",
         "k_component_61",
         "K|dM is the printed expression (coefficients of dtheta, deta, dgamma, dsigma1; dsigma and dnu give no vertical component)",
+        &k_dm,
         &(&k_dm
             - pr("(-R*sin(theta) - a*sin(eta)*sin(theta) + (b + R*cos(mu))*sin(theta)*cos(eta) + (c - R*sin(mu))*(cos(theta)*sin(gamma) - sin(theta)*cos(gamma)*sin(eta)))*dth + (a*cos(theta)*cos(eta) + (b + R*cos(mu))*cos(theta)*sin(eta) + (c - R*sin(mu))*cos(theta)*cos(gamma)*cos(eta))*deta + (c - R*sin(mu))*(sin(theta)*cos(gamma) - cos(theta)*sin(gamma)*sin(eta))*dgam + (R*sin(mu)*cos(theta)*cos(eta) - R*cos(mu)*(sin(theta)*sin(gamma) + cos(theta)*cos(gamma)*sin(eta)))*dsig1")),
         "with the letters a, b of n° 44".into(),
@@ -323,6 +340,7 @@ pub fn derive() -> Result<Derivation> {
             "61",
             id,
             statement,
+            &(coeff(&k_dm, &delta(k))),
             &(coeff(&k_dm, &delta(k)) - expected),
             "exact".into(),
         ));
@@ -333,6 +351,7 @@ pub fn derive() -> Result<Derivation> {
         "61",
         "condensed_deta_61",
         "K|dM = y dtheta + x cos theta deta + (R sin mu - c) sin beta dgamma + (K|dOM/dmu) dsigma1: on the contact it is the printed (deta)",
+        &k_dm,
         &(&k_dm - &deta_rel - &eq2_ab * delta(5)),
         "x, y, sin beta as functions of theta, gamma, eta, mu".into(),
     ));
@@ -357,6 +376,7 @@ pub fn derive() -> Result<Derivation> {
         "62",
         "partial_displacements_62",
         "with M - O = Ix + Jy: the rotation dtheta about OI moves M by K y dtheta (printed -K mM dtheta, mM = -y) and dnu about OK by (Jx - Iy) dnu",
+        &ijk_of(&geo_disp[1]).add(&ijk_of(&geo_disp[2]).scale(&var("w2"))),
         &ijk_of(&geo_disp[1]).sub(&Vector::new(Trihedron::IJK, Atom::num(0), Atom::num(0), ys.clone()))
             .add(&ijk_of(&geo_disp[2]).sub(&Vector::new(Trihedron::IJK, -&ys, xs.clone(), Atom::num(0))).scale(&var("w2"))),
         "cross products |I(M - O), |K(M - O)",
@@ -382,6 +402,7 @@ pub fn derive() -> Result<Derivation> {
         "lowest_point_on_contact_62",
         "sin mu = K|H1 / cos beta, cos mu = K|G / cos beta (cos^2 beta = CN_I^2 + CN_J^2 = (K|H1)^2 + (K|G)^2) satisfies (2) of n° 48, and a from (1) makes K|OM vanish: the substitution 'on the contact' used below",
         &(lowest(&eq2_ab) + on_contact(&eq1_ab) * var("w2")),
+        &(lowest(&eq2_ab) + on_contact(&eq1_ab) * var("w2")),
         "cos beta = Wb with Wb^2 = CN_I^2 + CN_J^2".into(),
     ));
     let names = ["dsigma", "dtheta", "dnu", "deta", "dgamma", "dsigma1"];
@@ -403,6 +424,7 @@ pub fn derive() -> Result<Derivation> {
                 &names[k][1..],
                 geometric_forms[k]
             ),
+            &coef[k].map(|e| on_contact(e)),
             &d,
             "x = I|OM, y = J|OM, alpha and beta from CN (n° 57)",
         ));
@@ -458,6 +480,7 @@ pub fn derive() -> Result<Derivation> {
                 printed.join("; ")
             ),
             &total,
+            &total,
             "N = I cos beta sin alpha - J cos beta cos alpha + K sin beta (n° 57), I1 = I cos alpha + J sin alpha".into(),
         ));
         rel.push((0..6).fold(Atom::num(0), |acc, k| acc + &p[k] * delta(k)).expand());
@@ -466,6 +489,19 @@ pub fn derive() -> Result<Derivation> {
         "63",
         "grassmann_63_64",
         "the Grassmann products: -[K j (M - S)] = x cos theta, -[N1 j (M - S)] = sin theta (y sin alpha + x cos alpha) + R sin alpha, -[I1 j (M - S)] = sin theta (y cos alpha - x sin alpha) + R cos alpha, and [jIJ] = sin theta, [jJk] = 0, [Ijk] = 1",
+        &{
+            let tri = |a: &Vector, b: &Vector, c: &Vector| a.dot(&b.cross(c)).expand();
+            (tri(&k_big, &j_small, &m_s) + &xs * &c_t) * var("w1")
+                + (tri(&n1, &j_small, &m_s)
+                    + pr("sin(theta)*(y*sin(alpha) + x*cos(alpha)) + R*sin(alpha)"))
+                    * var("w2")
+                + (tri(&i1, &j_small, &m_s)
+                    + pr("sin(theta)*(y*cos(alpha) - x*sin(alpha)) + R*cos(alpha)"))
+                    * var("w3")
+                + (tri(&j_small, &ijk(0), &ijk(1)) - &s_t) * var("w4")
+                + tri(&j_small, &ijk(1), &k_small) * var("w5")
+                + (tri(&ijk(0), &j_small, &k_small) - &one) * var("w6")
+        },
         &{
             let tri = |a: &Vector, b: &Vector, c: &Vector| a.dot(&b.cross(c)).expand();
             (tri(&k_big, &j_small, &m_s) + &xs * &c_t) * var("w1")
@@ -489,6 +525,7 @@ pub fn derive() -> Result<Derivation> {
         "63",
         "relation_deta_63",
         "the projection on K gives the printed (deta) of n° 63 and 66: y dtheta + x cos theta deta + (R sin mu - c) sin beta dgamma = 0",
+        &rel[0],
         &(&rel[0] - pr(printed_deta)),
         format!("printed: {printed_deta}"),
     ));
@@ -496,6 +533,7 @@ pub fn derive() -> Result<Derivation> {
         "64",
         "relation_dnu_64_as_printed",
         "the projection on N1 gives the summary (dnu) of n° 64 as printed, with R (sin mu - c) cos beta dgamma",
+        &rel[1],
         &(&rel[1] - pr(printed_dnu_64)),
         "the table of n° 64 and the (dnu) of n° 66 have (R sin mu - c) cos beta; R (sin mu - c) is not even homogeneous (R c is an area)".into(),
     ));
@@ -503,6 +541,7 @@ pub fn derive() -> Result<Derivation> {
         "66",
         "relation_dnu_66",
         "the projection on N1 gives the printed (dnu) of n° 66, with (R sin mu - c) cos beta dgamma",
+        &rel[1],
         &(&rel[1] - pr(printed_dnu)),
         format!("printed: {printed_dnu}"),
     ));
@@ -510,6 +549,7 @@ pub fn derive() -> Result<Derivation> {
         "65",
         "relation_dsigma1_65",
         "the projection on I1 gives the printed (dsigma1) of n° 65 and 66",
+        &rel[2],
         &(&rel[2] - pr(printed_dsig1)),
         format!("printed: {printed_dsig1}"),
     ));
@@ -523,6 +563,7 @@ pub fn derive() -> Result<Derivation> {
     let diffs: Vec<Atom> =
         (0..3).map(|i| &analytic_rel[i] - on_contact(&geo_sub(&printed_rel[i]))).collect();
     checks.push(Check {
+        perturbed: None,
         section: "66".into(),
         id: "analytic_equals_geometric_66".into(),
         statement: "on the contact, the analytic dM of n° 61 projected on K, N1, I1 (orthonormal, so the three projections vanish iff dM = 0) gives exactly the three relations (delta) of n° 66: both methods determine the same deta, dnu, dsigma1".into(),
@@ -571,6 +612,7 @@ pub fn derive() -> Result<Derivation> {
             section,
             &id,
             &what,
+            &derived,
             &(&derived - pr(printed)),
             "Cramer's rule on the printed (delta) with symbols x, y, alpha, beta".into(),
         ));
@@ -588,12 +630,14 @@ pub fn derive() -> Result<Derivation> {
         "implicit_d_eta_d_theta_66",
         "implicit differentiation of the contact equations (mu drops out since d(K|OM)/dmu = 0 by (2)): -(dK|OM/dtheta)/(dK|OM/deta) = -y/(x cos theta), the (I) dη/dθ",
         &(-d1("theta") / d1("sigma") + with_ab(&y_om) / (with_ab(&x_om) * &c_t)),
+        &(-d1("theta") / d1("sigma") + with_ab(&y_om) / (with_ab(&x_om) * &c_t)),
         "exact identity in theta, gamma, eta, mu".into(),
     ));
     checks.push(check(
         "66",
         "implicit_d_eta_d_gamma_66",
         "implicit differentiation: -(dK|OM/dgamma)/(dK|OM/deta) = -(R sin mu - c) sin beta/(x cos theta), the (I) dη/dγ",
+        &(-d1("gamma") / d1("sigma") + (&r_ * &s_mu - &c_) * &cn_k / (with_ab(&x_om) * &c_t)),
         &(-d1("gamma") / d1("sigma") + (&r_ * &s_mu - &c_) * &cn_k / (with_ab(&x_om) * &c_t)),
         "exact identity in theta, gamma, eta, mu".into(),
     ));
@@ -617,6 +661,7 @@ pub fn derive() -> Result<Derivation> {
             &format!("projection_g_{}_66bis", ["i1", "j1", "k"][k]),
             &format!("on the contact, {what}"),
             &on_contact(&(&lhs - geo_sub(&rhs))),
+            &on_contact(&(&lhs - geo_sub(&rhs))),
             "so G = -I1 sin mu + k1 cos mu in the front wheel's plane".into(),
         ));
     }
@@ -624,6 +669,9 @@ pub fn derive() -> Result<Derivation> {
         "66 bis",
         "projection_j_66bis",
         "j|I1 = cos theta sin alpha, j|J1 = cos theta cos alpha, j|K = sin theta (spherical triangle j J I1, fig. 15b)",
+        &((j_small.dot(&i1) - &c_t * &s_a) * var("w1")
+            + (j_small.dot(&j1_big) - &c_t * &c_a) * var("w2")
+            + (j_small.dot(&k_big) - &s_t) * var("w3")),
         &((j_small.dot(&i1) - &c_t * &s_a) * var("w1")
             + (j_small.dot(&j1_big) - &c_t * &c_a) * var("w2")
             + (j_small.dot(&k_big) - &s_t) * var("w3")),
@@ -649,6 +697,7 @@ pub fn derive() -> Result<Derivation> {
         "system_i_66bis",
         "the vector identity (2) I1 p1 + j1 s1 + K n1 = I p + K n - j eta' + G gamma' + j1 sigma1' projected on I1, J1, K is the printed system (I) (the OCR's tau', r' read eta')",
         &((0..3).fold(Atom::num(0), |acc, i| acc + (&sys_derived[i] - pr(sys_printed[i])) * var(&format!("w{i}")))),
+        &((0..3).fold(Atom::num(0), |acc, i| acc + (&sys_derived[i] - pr(sys_printed[i])) * var(&format!("w{i}")))),
         "G = -I1 sin mu + k1 cos mu (checks projection_g_*), theta1 = -beta".into(),
     ));
     let steady =
@@ -660,6 +709,9 @@ pub fn derive() -> Result<Derivation> {
         "66 bis",
         "steady_ii_66bis",
         "in the steady state (p = gamma' = eta' = 0) the system (I) gives the printed (II): p1 = 0, s1 = sigma1', n1 = n",
+        &(&p1_val * var("w0")
+            + (&s1_val - &s1p) * var("w1")
+            + (&n1_val - &n) * var("w2")),
         &(&p1_val * var("w0")
             + (&s1_val - &s1p) * var("w1")
             + (&n1_val - &n) * var("w2")),
@@ -683,6 +735,7 @@ pub fn derive() -> Result<Derivation> {
         "fixed_equations_68",
         "with dsigma = -deta (the pedals held), dgamma = dsigma1 = 0, the equations (delta) become the three printed ones",
         &((0..3).fold(Atom::num(0), |acc, i| acc + (&fixed[i] - pr(fixed_printed[i])) * var(&format!("w{i}")))),
+        &((0..3).fold(Atom::num(0), |acc, i| acc + (&fixed[i] - pr(fixed_printed[i])) * var(&format!("w{i}")))),
         "(delta) of n° 66 with symbols x, y, alpha, beta".into(),
     ));
     let unknowns = [delta(1), delta(3), delta(2)];
@@ -694,9 +747,11 @@ pub fn derive() -> Result<Derivation> {
         "rank_two_68",
         "the matrix of the fixed equations in (dtheta, deta, dnu) has a zero determinant (the last two equations are proportional), so dtheta stays free",
         &det3(&mat),
+        &det3(&mat),
         format!("the minor of the first two equations in (dtheta, dnu) is {} (not identically zero: rank 2)", show(&minor.expand())),
     ));
     checks.push(Check {
+        perturbed: None,
         section: "68".into(),
         id: "rank_two_minor_68".into(),
         statement: "the first two fixed equations are independent: their minor in (dtheta, dnu), -y (x cos alpha + y sin alpha), is not identically zero".into(),
@@ -707,6 +762,7 @@ pub fn derive() -> Result<Derivation> {
         "68",
         "reduced_system_68",
         "the second fixed equation divided by (x cos alpha + y sin alpha) is the printed -dnu + sin theta deta = 0",
+        &(&fixed[1] / pr("x*cos(alpha) + y*sin(alpha)")),
         &(&fixed[1] / pr("x*cos(alpha) + y*sin(alpha)") - pr("-dnu + sin(theta)*deta")),
         "exact".into(),
     ));
@@ -729,6 +785,7 @@ pub fn derive() -> Result<Derivation> {
         "69",
         "chain_rule_3_69",
         "with Z = (R + x sin eta1 + z cos eta1) cos theta (1) and eta1 = eta - eta0 a function of theta, the second total derivative is the printed (3): Z_theta,theta + 2 Z_eta,theta eta' + Z_eta,eta eta'^2 + Z_eta eta''",
+        &(total(&total(&z_cg))),
         &(total(&total(&z_cg)) - &chain),
         "x, z of the centre of gravity are the symbols xg, zg".into(),
     ));
@@ -737,6 +794,7 @@ pub fn derive() -> Result<Derivation> {
         "69",
         "second_derivative_69",
         "at theta = 0 with eta' = 0, d2Z/dtheta2 = -Z + X eta'' with X = x cos eta1 - z sin eta1 the current abscissa of G",
+        &(zero_theta(&subst(&total(&total(&z_cg)), &ep, &Atom::num(0))) + zero_theta(&z_cg)),
         &(zero_theta(&subst(&total(&total(&z_cg)), &ep, &Atom::num(0))) + zero_theta(&z_cg) - &x_cg * &epp),
         "exact".into(),
     ));
@@ -762,6 +820,7 @@ pub fn derive() -> Result<Derivation> {
         "eta_prime_zero_69",
         "in the particular case R sin mu - c = 0 at theta = 0, (I) gives eta' = -y/(x cos theta) = 0 (y = -(R sin mu - c) sin gamma)",
         &case(&f_eta),
+        &case(&f_eta),
         "c replaced by R sin mu, mu the lowest point at theta = 0, a from (1)".into(),
     ));
     let tan_form = pr("tan(mu) - tan(eta)*cos(gamma) - tan(theta)*sin(gamma)/cos(eta)");
@@ -771,6 +830,7 @@ pub fn derive() -> Result<Derivation> {
         "69",
         "mu_prime_9_69",
         "differentiating (2) of n° 48, tan mu = tan eta cos gamma + tan theta sin gamma / cos eta, along theta gives the printed (9) mu'/cos^2 mu = eta' (d tan eta/d eta) cos gamma + sin gamma/(cos^2 theta cos eta)",
+        &mu_p_over,
         &(&mu_p_over - &printed9),
         "the derivative of 1/cos eta is missing from (9): the full form has + eta' tan theta sin gamma sin eta / cos^2 eta, which vanishes at theta = 0 where (9) is used".into(),
     ));
@@ -779,12 +839,14 @@ pub fn derive() -> Result<Derivation> {
         "mu_prime_9_at_theta0_69",
         "at theta = 0, where the memoir uses it, the printed (9) is exact",
         &zero_theta(&(&mu_p_over - &printed9)),
+        &zero_theta(&(&mu_p_over - &printed9)),
         "exact".into(),
     ));
     checks.push(check(
         "69",
         "mu_prime_eq2_69",
         "mu' from (2) of n° 48 in the form K|dOM/dmu = 0 agrees with the derivative of the tan form (9) at theta = 0 on the lowest point",
+        &case(&(subst(&(&mu_p_over * sq(&c_mu)), &ep, &f_eta) - &mu_p)),
         &case(&(subst(&(&mu_p_over * sq(&c_mu)), &ep, &f_eta) - &mu_p)),
         "both implicit derivatives, at theta = 0, c = R sin mu".into(),
     ));
@@ -796,12 +858,14 @@ pub fn derive() -> Result<Derivation> {
         "eta_second_69_as_printed",
         "in the particular case (theta = 0, R sin mu = c, eta' = 0) eta'' is the printed R cos^3 mu sin gamma / (lambda cos eta), lambda = OM = x",
         &case(&(&eta_pp - &printed_form)),
+        &case(&(&eta_pp - &printed_form)),
         "eta'' = d/dtheta(-y/(x cos theta)) = -(dy/dtheta)/x with dy/dtheta = (J|dOM/dmu) mu' = -R cos mu sin gamma * cos^2 mu sin gamma/cos eta: the factor sin gamma comes twice (once from J|H1, once from mu' of (9)); the print has one".into(),
     ));
     checks.push(check(
         "69",
         "eta_second_69",
         "in the particular case eta'' = R cos^3 mu sin^2 gamma / (lambda cos eta) (derived)",
+        &case(&(&eta_pp - &derived_form)),
         &case(&(&eta_pp - &derived_form)),
         "c = R sin mu, mu the lowest point at theta = 0 and a from the height equation (1): the term of y' in z = K|OM (y' = -z + (J|dOM/dmu) mu') vanishes only on the ground".into(),
     ));

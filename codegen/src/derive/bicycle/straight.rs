@@ -548,9 +548,21 @@ pub fn quartic(coef: &[Atom; 12]) -> [Atom; 5] {
     ]
 }
 
-fn check(section: &str, id: &str, statement: &str, diff: &Atom, detail: String) -> Check {
+/// A [`Check`] that `diff` vanishes; `derived` is its derived side (see
+/// [`geometry::check`](crate::derive::bicycle::geometry::check)), run again perturbed
+/// ([`crate::falsify`]).
+fn check(
+    section: &str,
+    id: &str,
+    statement: &str,
+    derived: &Atom,
+    diff: &Atom,
+    detail: String,
+) -> Check {
     let holds = vanishes(diff);
+    let perturbed = crate::falsify::perturb_derived(derived, diff, vanishes);
     Check {
+        perturbed: Some(perturbed),
         section: section.to_string(),
         id: id.to_string(),
         statement: statement.to_string(),
@@ -606,6 +618,7 @@ fn numeric_check(
     (holds, detail): (bool, String),
 ) -> Check {
     Check {
+        perturbed: None,
         section: section.to_string(),
         id: id.to_string(),
         statement: statement.to_string(),
@@ -624,6 +637,7 @@ pub fn derive() -> Result<Derivation> {
             "117",
             &format!("{}_printed", COEFFS[i]),
             &format!("the column sum of the n° 116 tables for {} equals the closed form printed in n° 117", COEFFS[i]),
+            &sums[i],
             &(&sums[i] - &printed[i]),
             format!("sum: {}", show(&reduce(&sums[i]))),
         ));
@@ -778,7 +792,8 @@ pub fn derive() -> Result<Derivation> {
         "119",
         "quartic_time_scale",
         "with T = s t (n° 118) the characteristic determinant of the n° 117 equations in the time eigenvalue z = s lambda, divided by s^4, is the quartic of n° 119 in lambda, identically in lambda and s",
-        &(det_t - &poly).expand(),
+        &det_t,
+        &(&det_t - &poly).expand(),
         "det(coefficients at z = s lambda) / s^4 - sum q_k lambda^k = 0".to_string(),
     ));
     let num0 = (&sums[2] * &sums[11] - &sums[8] * &sums[5]).expand();
@@ -789,6 +804,7 @@ pub fn derive() -> Result<Derivation> {
         "122",
         "constant_term_linear_in_s2",
         "the constant term's numerator A B1 - A1 B (script letters of n° 117) is of degree one in s^2",
+        &quad,
         &quad,
         format!("coefficient of s^0: {}", show(&reduce(&n0))),
     ));
@@ -807,6 +823,7 @@ pub fn derive() -> Result<Derivation> {
         "122",
         "upper_limit_closed_form",
         "the root in s^2 of the constant term equals the closed form printed in n° 122 (with B1 = 2 mu1 R^2)",
+        &s2_upper,
         &(&s2_upper - &printed_122),
         format!("derived: s^2 = {}", show(&s2_upper)),
     ));
@@ -821,6 +838,7 @@ pub fn derive() -> Result<Derivation> {
         "122",
         "upper_limit_half_trail",
         "with c1 = R sin(eta)/2 the upper limit reduces to the three-factor product printed in n° 122",
+        &s2_half,
         &(&s2_half - &printed_half),
         format!("derived: s^2 = {}", show(&s2_half)),
     ));
@@ -830,6 +848,7 @@ pub fn derive() -> Result<Derivation> {
         "122",
         "half_trail_denominator",
         "the denominator of the second fraction reduces to mu mu1 (h - R e/l)",
+        &den_half,
         &(&den_half - &mu * &mu1 * (&h - &r * &el)).expand(),
         "exact".to_string(),
     ));
@@ -842,6 +861,7 @@ pub fn derive() -> Result<Derivation> {
         "121",
         "pure_imaginary_condition",
         "eliminating w^2 = a3/a1 (n° 121 (3)) from w^4 - a2 w^2 + a4 = 0 (1) gives (4) a3^2 - a1 a2 a3 + a1^2 a4 = 0",
+        &eliminated,
         &(&eliminated - &cond),
         "exact".to_string(),
     ));
@@ -850,6 +870,7 @@ pub fn derive() -> Result<Derivation> {
         "121",
         "routh_hurwitz",
         "Carvallo's condition (4) is minus the third Hurwitz determinant H3 = det[[a1, a3, 0], [1, a2, a4], [0, a1, a3]] of the monic quartic, so his lower limit is where H3 changes sign",
+        &(&cond + &hurwitz3).expand(),
         &(&cond + &hurwitz3).expand(),
         "a3^2 - a1 a2 a3 + a1^2 a4 = -H3".to_string(),
     ));

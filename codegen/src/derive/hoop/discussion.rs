@@ -75,7 +75,27 @@ pub mod printed {
 }
 
 fn check(section: &str, id: &str, statement: &str, holds: bool, detail: String) -> Check {
-    Check { section: section.into(), id: id.into(), statement: statement.into(), holds, detail }
+    Check {
+        section: section.into(),
+        id: id.into(),
+        statement: statement.into(),
+        holds,
+        detail,
+        perturbed: None,
+    }
+}
+
+/// [`check`] with the outcome of the same check on a perturbed derived side
+/// ([`crate::falsify`]).
+fn checked(
+    section: &str,
+    id: &str,
+    statement: &str,
+    holds: bool,
+    detail: String,
+    perturbed: crate::Perturbed,
+) -> Check {
+    Check { perturbed: Some(perturbed), ..check(section, id, statement, holds, detail) }
 }
 
 /// `derived - factor * printed` vanishes identically (θ functions as stand-ins).
@@ -89,7 +109,8 @@ fn compare(
 ) -> Check {
     let diff = simplify(&(derived - factor * printed));
     let scale = if *factor == Atom::num(1) { String::new() } else { format!("({factor}) * ") };
-    check(
+    let perturbed = crate::falsify::perturb_one(derived, |d| is_zero(&(d - factor * printed)));
+    checked(
         section,
         id,
         statement,
@@ -100,6 +121,7 @@ fn compare(
             show(printed),
             show(&diff)
         ),
+        perturbed,
     )
 }
 

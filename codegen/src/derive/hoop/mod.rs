@@ -61,7 +61,9 @@ fn compare(
     let diff = simplify(&(derived - factor * printed));
     let holds = is_zero(&diff);
     let scale = if *factor == Atom::num(1) { String::new() } else { format!("({}) * ", factor) };
+    let perturbed = crate::falsify::perturb_one(derived, |d| is_zero(&(d - factor * printed)));
     Check {
+        perturbed: Some(perturbed),
         section: section.to_string(),
         id: id.to_string(),
         statement: statement.to_string(),
@@ -87,6 +89,7 @@ fn compare_all(
 ) -> Check {
     let diffs: Vec<Atom> = a.iter().zip(b).map(|(x, y)| simplify(&(x - y))).collect();
     let holds = diffs.iter().all(is_zero);
+    let perturbed = crate::falsify::perturb(a, |d| d.iter().zip(b).all(|(x, y)| is_zero(&(x - y))));
     let detail = names
         .iter()
         .zip(&diffs)
@@ -94,6 +97,7 @@ fn compare_all(
         .collect::<Vec<_>>()
         .join("; ");
     Check {
+        perturbed: Some(perturbed),
         section: section.to_string(),
         id: id.to_string(),
         statement: statement.to_string(),
@@ -359,6 +363,7 @@ pub fn derive() -> Result<Derivation> {
     // n° 76–77 and 9: stability.
     let (stab, factor_ok, coeffs) = steady::stability_by_determinant(&pns);
     checks.push(Check {
+        perturbed: None,
         section: "77".to_string(),
         id: "characteristic_factor".to_string(),
         statement: "the characteristic determinant of n° 76–77 for system (2) at p = 0 is lambda^2 (lambda^2 + K)".to_string(),

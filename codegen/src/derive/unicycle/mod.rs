@@ -251,7 +251,9 @@ pub fn determinant_78(eq_p: &Atom, eq_n: &Atom) -> Vec<Atom> {
 
 fn compare(section: &str, id: &str, statement: &str, derived: &Atom, printed: &Atom) -> Check {
     let diff = simplify(&(derived - printed));
+    let perturbed = crate::falsify::perturb_one(derived, |d| is_zero(&(d - printed)));
     Check {
+        perturbed: Some(perturbed),
         section: section.to_string(),
         id: id.to_string(),
         statement: statement.to_string(),
@@ -268,7 +270,9 @@ fn compare(section: &str, id: &str, statement: &str, derived: &Atom, printed: &A
 fn compare_all(section: &str, id: &str, statement: &str, a: &[Atom], b: &[Atom]) -> Check {
     let names = ["(p)", "(n)", "(s)"];
     let diffs: Vec<Atom> = a.iter().zip(b).map(|(x, y)| simplify(&(x - y))).collect();
+    let perturbed = crate::falsify::perturb(a, |d| d.iter().zip(b).all(|(x, y)| is_zero(&(x - y))));
     Check {
+        perturbed: Some(perturbed),
         section: section.to_string(),
         id: id.to_string(),
         statement: statement.to_string(),
@@ -443,6 +447,7 @@ pub fn derive() -> Result<Derivation> {
     let n_eq_steady = simplify(&with(&eqs[1], &steady0));
     let s_eq_steady = simplify(&with(&eqs[2], &steady0));
     checks.push(Check {
+        perturbed: None,
         section: "29".into(),
         id: "steady_identities".into(),
         statement: "in a steady state (n) is an identity and (s) gives motor moment 0".into(),
@@ -530,6 +535,7 @@ pub fn derive() -> Result<Derivation> {
         [subst(&eqs[0], "L", &zero()), subst(&eqs[1], "L", &zero()), subst(&eqs[2], "L", &zero())];
     let (stab_full, ok_full) = stability_of(&full_l0);
     checks.push(Check {
+        perturbed: None,
         section: "35".into(),
         id: "characteristic_factor".into(),
         statement: "for the simplified and the full (L = 0) models the determinant of n° 76 is lambda^2 (lambda^2 + K), so (S) is K > 0 as in n° 9 and 34".into(),

@@ -192,7 +192,14 @@ pub fn entries(lin: &Linear) -> Vec<(String, Atom)> {
 }
 
 fn check(id: &str, statement: &str, holds: bool, detail: String) -> Check {
-    Check { section: "engine".into(), id: id.into(), statement: statement.into(), holds, detail }
+    Check {
+        section: "engine".into(),
+        id: id.into(),
+        statement: statement.into(),
+        holds,
+        detail,
+        perturbed: None,
+    }
 }
 
 /// Derives the model's formulas and checks.

@@ -332,6 +332,7 @@ pub fn shift_checks(checks: &mut Vec<Check>, unshifted: &Matrices) -> Result<()>
             let fails = perturbed.iter().any(|c| c.id == id && !c.holds);
             let detail = perturbed.iter().find(|c| c.id == id).map_or(String::new(), |c| c.detail.clone());
             checks.push(Check {
+                perturbed: None,
                 section: "98".into(),
                 id: format!("shift_{b}_breaks_with_{name}"),
                 statement: format!("negative control of {id}: with {what} the check fails"),
@@ -380,6 +381,7 @@ pub fn shift_checks_of(
             let same =
                 differing(&lateral(&lin, &format!("{name}_shifted"), &mut Vec::new()), unshifted);
             checks.push(Check {
+                perturbed: None,
                 section: "98".into(),
                 id: format!("{name}_shift_unshifted"),
                 statement: format!("{name}: with the body shifted by epsilon = 0 the engine's bicycle has the unshifted matrices M, C1, K0, K2 exactly"),
@@ -388,6 +390,7 @@ pub fn shift_checks_of(
             });
         }
         checks.push(Check {
+            perturbed: None,
             section: "98".into(),
             id: format!("{name}_shift_gravity"),
             statement: format!("{name}: epsilon's coefficient in the lean row is the loaded frame's gravity moment mu g h = -g mB zB, as mu g h sin(theta) becoming mu g h sin(theta + epsilon) (n° 98) requires at first order"),
@@ -395,6 +398,7 @@ pub fn shift_checks_of(
             detail: format!("derived: {lean}"),
         });
         checks.push(Check {
+            perturbed: None,
             section: "98".into(),
             id: format!("{name}_shift_centrifugal"),
             statement: format!("{name}: epsilon's coefficient in the lean row does not depend on the speed (the centrifugal moment is not changed by the shift at first order, n° 98)"),
@@ -402,6 +406,7 @@ pub fn shift_checks_of(
             detail: format!("derived: {lean}"),
         });
         checks.push(Check {
+            perturbed: None,
             section: "98".into(),
             id: format!("{name}_shift_handlebar"),
             statement: format!("{name}: epsilon's coefficients in the steer row and in the rear wheel's row vanish (the handlebar equation is not changed by the shift, n° 98)"),

@@ -89,6 +89,7 @@ pub struct Matrices {
 /// A check of the linear model's section.
 pub(super) fn check(id: &str, statement: &str, holds: bool, detail: String) -> Check {
     Check {
+        perturbed: None,
         section: "linear".to_string(),
         id: id.to_string(),
         statement: statement.to_string(),

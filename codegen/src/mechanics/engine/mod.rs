@@ -530,6 +530,7 @@ pub fn kane_derivation_expecting(
     found.sort();
     want.sort();
     let check = crate::Check {
+        perturbed: None,
         section: "34".into(),
         id: "redundant_rows".into(),
         statement: format!(

@@ -312,6 +312,7 @@ fn shift_98_engine(shift_98: &Atom) -> Result<(Atom, Vec<Check>)> {
     }
     let checks = vec![
         Check {
+            perturbed: None,
             section: "98".into(),
             id: "shift_98_exact_solves".into(),
             statement: "the exact first-order lateral shift epsilon/theta of a steady turn without hands (generated shift_98_exact: the mechanics engine's general bicycle with the body turned by epsilon about the ground trace OI, linearised, Carvallo's bicycle as a parameter set of it) with the steer it implies makes the lean and the steer rows vanish with no steer torque, at three exact rational points".into(),
@@ -319,6 +320,7 @@ fn shift_98_engine(shift_98: &Atom) -> Result<(Atom, Vec<Check>)> {
             detail: if residual_bad.is_empty() { "residuals 0".into() } else { residual_bad.join("; ") },
         },
         Check {
+            perturbed: None,
             section: "98".into(),
             id: "shift_98_reduction_matters".into(),
             statement: "the exact first-order shift (shift_98_exact) differs from the reduced route's (shift_98: n° 95-97 with the reduced fall equation (3)' of n° 86) at the three rational points (informative: the reductions of n° 86 change the shift)".into(),
@@ -331,7 +333,9 @@ fn shift_98_engine(shift_98: &Atom) -> Result<(Atom, Vec<Check>)> {
 
 fn compare(section: &str, id: &str, statement: &str, derived: &Atom, expected: &Atom) -> Check {
     let diff = simplify_all(&(derived - expected));
+    let perturbed = crate::falsify::perturb_one(derived, |d| is_zero_all(&(d - expected)));
     Check {
+        perturbed: Some(perturbed),
         section: section.to_string(),
         id: id.to_string(),
         statement: statement.to_string(),
@@ -991,6 +995,7 @@ pub fn derive() -> Result<Derivation> {
     let theta1_geo = subst(&subst(&theta1_geo, "gamma", &gamma_of_alpha), "alpha", &alpha_3p);
     let ratio_97 = simplify_all(&(&theta1_geo / var("theta")));
     checks.push(Check {
+        perturbed: None,
         section: "97".into(),
         id: "theta1_exceeds_theta".into(),
         statement: "geometry and (3)' give theta1/theta = 1 + (g l/(R s)^2) tan(eta) > 1 at first order (n° 97: theta1 > theta)".into(),
@@ -1035,6 +1040,7 @@ pub fn derive() -> Result<Derivation> {
     };
     let (fall_inertia_change, low0, first0) = first_order_change(&(&fall_a_98 - &frame_a));
     checks.push(Check {
+        perturbed: None,
         section: "98".into(),
         id: "shift_fall_inertia".into(),
         statement: "the inertia (centrifugal) terms of the fall equation are unchanged by the sideways shift at first order in theta, alpha, n, d eta/d theta and y_c (n° 98: the moment of the centrifugal force is not changed appreciably)".into(),
@@ -1045,6 +1051,7 @@ pub fn derive() -> Result<Derivation> {
     let (steer_change, low0, first0) = first_order_change(&steer_change);
     let grav_unchanged = is_zero_all(&(&steer_grav_98 - &steer_grav_frame));
     checks.push(Check {
+        perturbed: None,
         section: "98".into(),
         id: "shift_steer_unchanged".into(),
         statement: "the handlebar equation is unchanged by the sideways shift at first order (its frame gravity term exactly, its inertia terms up to second order in theta, alpha, n, d eta/d gamma and y_c): n° 98's 'l'équation du guidon n'est pas changée'".into(),
