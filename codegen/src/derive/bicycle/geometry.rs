@@ -293,7 +293,7 @@ fn compare(section: &str, id: &str, statement: &str, derived: &Atom, printed: &s
         section,
         id,
         statement,
-        &(derived),
+        derived,
         &(derived - &p),
         format!("printed: {printed}; derived: {}", {
             let s = show(derived);
