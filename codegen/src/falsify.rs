@@ -8,7 +8,9 @@
 //! derived side only; the expected side keeps it. The symbols are tried in the order of
 //! [`candidates`] (parameters and variables before the stand-ins of sines and cosines, then by
 //! name) and the first under which the check no longer holds is recorded; when none of the
-//! first [`MAX_TRIES`] breaks it, the first tried is recorded with its outcome (it holds), which
+//! first [`MAX_TRIES`] breaks it (a check homogeneous in them, as an energy balance), the first
+//! term of the derived side as derived is scaled instead ([`perturb_term`]); when that does
+//! not break it either, the first symbol tried is recorded with its outcome (it holds), which
 //! the concordance's falsifiability test reports by name. A derived side with no symbol (a
 //! number) is scaled as a whole.
 //!
@@ -54,6 +56,11 @@ pub fn candidates(derived: &[Atom]) -> Vec<String> {
 /// The check `holds` run again on `derived` with one symbol scaled by [`FACTOR`] (see the
 /// module docs); `holds` receives the perturbed derived side, in the same order.
 pub fn perturb(derived: &[Atom], holds: impl Fn(&[Atom]) -> bool) -> Perturbed {
+    perturb_dyn(derived, &holds)
+}
+
+/// [`perturb`] with the check as a trait object (the term fallback calls it back).
+fn perturb_dyn(derived: &[Atom], holds: &dyn Fn(&[Atom]) -> bool) -> Perturbed {
     let names = candidates(derived);
     if names.is_empty() {
         let scaled: Vec<Atom> = derived.iter().map(|a| a * &factor()).collect();
@@ -75,6 +82,19 @@ pub fn perturb(derived: &[Atom], holds: impl Fn(&[Atom]) -> bool) -> Perturbed {
         }
         first.get_or_insert(outcome);
     }
+    // No symbol breaks it (the check is homogeneous in them, as an energy balance is): the
+    // first term of the first derived expression, as derived, scaled instead.
+    if let AtomView::Add(_) = derived[0].as_view() {
+        let rest = derived[1..].to_vec();
+        let by_term = term_dyn(&derived[0], &|q: &Atom| {
+            let mut d = vec![q.clone()];
+            d.extend(rest.iter().cloned());
+            holds(&d)
+        });
+        if !by_term.holds {
+            return by_term;
+        }
+    }
     first.expect("at least one symbol was tried")
 }
 
@@ -95,6 +115,11 @@ pub fn perturb_derived(derived: &Atom, diff: &Atom, vanishes: impl Fn(&Atom) -> 
 /// a sum whose terms cancel) scaled by [`FACTOR`]; a quantity that is not a sum is perturbed by
 /// [`perturb_one`] (a symbol scaled).
 pub fn perturb_term(q: &Atom, vanishes: impl Fn(&Atom) -> bool) -> Perturbed {
+    term_dyn(q, &vanishes)
+}
+
+/// [`perturb_term`] with the check as a trait object.
+fn term_dyn(q: &Atom, vanishes: &dyn Fn(&Atom) -> bool) -> Perturbed {
     if let AtomView::Add(add) = q.as_view() {
         if let Some(first) = add.iter().next() {
             let first = first.to_owned();
@@ -111,7 +136,16 @@ pub fn perturb_term(q: &Atom, vanishes: impl Fn(&Atom) -> bool) -> Perturbed {
             };
         }
     }
-    perturb_one(q, vanishes)
+    perturb_dyn(std::slice::from_ref(q), &|d: &[Atom]| vanishes(&d[0]))
+}
+
+/// Derived quantities `qs` that must all vanish, run again with the first of them that is not
+/// already a literal zero perturbed by [`perturb_term`] (its first term scaled); `None` when
+/// every one is a literal zero (nothing derived is left to perturb: the quantity was reduced to
+/// zero before the check saw it).
+pub fn perturb_first_nonzero(qs: &[&Atom], vanishes: impl Fn(&Atom) -> bool) -> Option<Perturbed> {
+    let q = qs.iter().find(|q| !q.is_zero())?;
+    Some(perturb_term(q, vanishes))
 }
 
 /// [`perturb`] for a single derived expression.

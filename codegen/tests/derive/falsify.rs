@@ -28,12 +28,23 @@ fn a_symbol_of_the_derived_side_breaks_an_identity() {
 #[test]
 fn a_check_that_cannot_fail_is_recorded_as_holding() {
     on_symbolica_thread(|| {
-        // sin^2 + cos^2 of a scaled angle is still 1: no symbol breaks it, and the first tried
-        // is recorded with `holds`.
+        // A check that does not look at its derived side holds whatever is perturbed: the first
+        // symbol tried is recorded, with `holds`, for the concordance to report by name.
+        let p = perturb_one(&expr("R*mu + g"), |_| true);
+        assert!(p.holds, "{}", p.what);
+        assert_eq!(p.what, "every `R` of the derived side scaled by 9/8");
+    });
+}
+
+#[test]
+fn an_energy_balance_has_a_term_scaled_when_no_symbol_breaks_it() {
+    on_symbolica_thread(|| {
+        // sin^2 + cos^2 of a scaled angle is still 1: no symbol breaks the identity, so the first
+        // term of the derived side is scaled, which does.
         let derived = expr("sin(theta)^2 + cos(theta)^2");
         let p = perturb_one(&derived, |d| is_zero(&from_trig(&(d - Atom::num(1)))));
-        assert!(p.holds, "{}", p.what);
-        assert_eq!(p.what, "every `theta` of the derived side scaled by 9/8");
+        assert!(!p.holds, "{}", p.what);
+        assert!(p.what.starts_with("the first term of the derived quantity"), "{}", p.what);
     });
 }
 

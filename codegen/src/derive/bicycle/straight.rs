@@ -52,7 +52,7 @@ use crate::cas::{rat, var};
 use crate::cas::{show, subst};
 use crate::derive::whipple::linearised::{self, Origins};
 use crate::derive::whipple::{reduce, vanishes, Matrices, COS_LAMBDA, SIN_LAMBDA};
-use crate::{Check, Derivation, Formula};
+use crate::{Check, Derivation, Formula, Perturbed};
 
 /// Parameter names, in order: the constants of n° 117 (`c_1` is $c_1$, `ecg` the rider's distance $e$,
 /// `A2` is $A + 2A_1$, `eta` the steering axis' angle with the vertical) and gravity.
@@ -611,14 +611,44 @@ fn compare_rows(table: &[[Row; 2]], derived: &[[Row; 2]], eq: usize) -> (bool, S
     }
 }
 
+/// The check [`compare_rows`] run again with the derived side perturbed (issue 38,
+/// [`crate::falsify`]): the first column of the general model's row `eq` that is not zero at
+/// every point scaled by 9/8 at every point; `None` when every column is zero.
+fn compare_rows_perturbed(
+    table: &[[Row; 2]],
+    derived: &[[Row; 2]],
+    eq: usize,
+) -> Option<Perturbed> {
+    let j = (0..6).find(|&j| derived.iter().any(|d| !d[eq][j].expand().is_zero()))?;
+    let scaled: Vec<[Row; 2]> = derived
+        .iter()
+        .map(|d| {
+            let mut d = d.clone();
+            d[eq][j] = (&d[eq][j] * crate::falsify::factor()).expand();
+            d
+        })
+        .collect();
+    Some(Perturbed {
+        what: format!(
+            "the {} column of the general model's row scaled by {} at every point",
+            COLUMNS[j],
+            crate::falsify::FACTOR
+        ),
+        holds: compare_rows(table, &scaled, eq).0,
+    })
+}
+
+/// A check decided at exact rational points, `perturbed` its outcome on a perturbed derived
+/// side when one is stated.
 fn numeric_check(
     section: &str,
     id: &str,
     statement: &str,
     (holds, detail): (bool, String),
+    perturbed: Option<Perturbed>,
 ) -> Check {
     Check {
-        perturbed: None,
+        perturbed,
         section: section.to_string(),
         id: id.to_string(),
         statement: statement.to_string(),
@@ -712,6 +742,7 @@ pub fn derive() -> Result<Derivation> {
                 &format!("{eq_name}_{key}_gamma2_as_printed"),
                 &format!("the gamma'' entry {text} of the {part}'s row (dT/dq')' of the {eq_name} table, as the OCR of n° 116 prints it, equals the general model's momentum term for the {part} alone, {intro} (n° 109-111 and the sums of n° 117 have the opposite sign)"),
                 (holds, bad.unwrap_or_else(|| "equal at every point".to_string())),
+                None,
             ));
         }
         for (eq, eq_name, q) in [(0, "fall", "theta"), (1, "bar", "gamma")] {
@@ -720,24 +751,28 @@ pub fn derive() -> Result<Derivation> {
                 &format!("{eq_name}_{key}_momentum"),
                 &format!("the {part}'s row (dT/d{q}')' of the n° 116 table of the {eq_name} equation equals the momentum derivative (dT*/d{q}')' of Carvallo's modified Lagrange equation for the {part} alone in the general Carvallo-Whipple bicycle (the mechanics engine's modified Lagrange equations, linearised part by part), {intro}"),
                 compare_rows(&tab_mom, &gen_mom, eq),
+                compare_rows_perturbed(&tab_mom, &gen_mom, eq),
             ));
             checks.push(numeric_check(
                 "116",
                 &format!("{eq_name}_{key}_correction"),
                 &format!("the {part}'s row -sum m M'|(dM/d{q})' of the n° 116 table of the {eq_name} equation equals the correction term of Carvallo's modified Lagrange equation for the {part} alone in the general model, {intro}"),
                 compare_rows(&tab_cor, &gen_cor, eq),
+                compare_rows_perturbed(&tab_cor, &gen_cor, eq),
             ));
             checks.push(numeric_check(
                 "116",
                 &format!("{eq_name}_{key}_gravity"),
                 &format!("the {part}'s gravity row of the n° 116 table of the {eq_name} equation equals g K0 (second-order potential with the contact-constrained pitch) for the {part} alone in the general model, {intro}"),
                 compare_rows(&tab_grav, &gen_grav, eq),
+                compare_rows_perturbed(&tab_grav, &gen_grav, eq),
             ));
             checks.push(numeric_check(
                 "116",
                 &format!("{eq_name}_{key}_kane"),
                 &format!("the sum of the {part}'s two inertial rows of the n° 116 table of the {eq_name} equation equals Kane's terms M (accelerations), v C1 (gyroscopic, rates) and v^2 K2 (centrifugal, angles) for the {part} alone in the general model, {intro}"),
                 compare_rows(&tab_inert, &gen_kane, eq),
+                compare_rows_perturbed(&tab_inert, &gen_kane, eq),
             ));
         }
     }
@@ -772,6 +807,7 @@ pub fn derive() -> Result<Derivation> {
             &format!("{eq_name}_whole_whipple"),
             &format!("the column sums of the n° 116 tables of the {eq_name} equation (the coefficients of n° 117) equal the general model's exact linearisation (Kane, M, v C1, g K0 + v^2 K2) of the whole bicycle with Carvallo's parameter set, {intro}"),
             compare_rows(&tab_all, &gen_all, eq),
+            compare_rows_perturbed(&tab_all, &gen_all, eq),
         ));
     }
     checks.push(numeric_check(
@@ -779,6 +815,7 @@ pub fn derive() -> Result<Derivation> {
         "yaw_rate",
         &format!("n = (R/l) cos(eta) gamma s + (c1/l) gamma' (n° 108 (6)) is minus the general model's yaw rate psi' with Carvallo's parameter set, identically in gamma and gamma', {intro}"),
         (yaw_ok, if yaw_ok { format!("n + psi' = 0 at the {n_pts} points") } else { yaw_detail }),
+        None,
     ));
     // n° 119-122.
     let q = quartic(&sums);

@@ -267,12 +267,15 @@ pub fn derive() -> Result<Derivation> {
     let reality = to_xy(&disc_e)?;
     let reality_printed = expr(printed::REALITY);
     let k_e = constant_ratio(&reality, &reality_printed);
-    checks.push(check(
+    let reality_perturbed =
+        crate::falsify::perturb_one(&reality, |d| constant_ratio(d, &reality_printed).is_some());
+    checks.push(checked(
         "13",
         "reality_curve",
         "the numerator of the discriminant of E(n) written in x = cos(theta), y = s^2 is a constant times the printed (ℰ) x^2 + (2/3)xy - 1",
         k_e.is_some(),
         format!("numerator of b^2 - 4c: {}; in x, y: {}; ratio to printed: {}", show(&disc_e), reality, k_e.as_ref().map_or("not constant".into(), |k| k.to_string())),
+        reality_perturbed,
     ));
     let reality_n = k_e.as_ref().map_or(reality.clone(), |k| (&reality / k).expand());
 
@@ -285,12 +288,15 @@ pub fn derive() -> Result<Derivation> {
     let curve = to_xy(&res)?;
     let curve_printed = expr(printed::CURVE_S);
     let k_s = constant_ratio(&curve, &curve_printed);
-    checks.push(check(
+    let curve_perturbed =
+        crate::falsify::perturb_one(&curve, |d| constant_ratio(d, &curve_printed).is_some());
+    checks.push(checked(
         "14",
         "curve_s_memoir",
         "the resultant of E(n) and S(n) in n (numerators, E times 3 sin cos, S times 3), reduced with sin^2 = 1 - x^2, is a constant times the printed (S) of n° 14",
         k_s.is_some(),
         format!("numerators: E: {}; S: {}; resultant in x, y: {}; ratio to printed: {}", show(&e_poly), show(&s_poly), curve, k_s.as_ref().map_or("not constant".into(), |k| k.to_string())),
+        curve_perturbed,
     ));
     let curve_n = k_s.as_ref().map_or(curve.clone(), |k| (&curve / k).expand());
 

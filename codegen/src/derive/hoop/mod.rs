@@ -362,8 +362,19 @@ pub fn derive() -> Result<Derivation> {
 
     // n° 76–77 and 9: stability.
     let (stab, factor_ok, coeffs) = steady::stability_by_determinant(&pns);
+    // The derived side: the coefficient of lambda^4, scaled.
+    let lead = crate::Perturbed {
+        what: format!(
+            "the derived coefficient of lambda^4 ({}) scaled by {}",
+            show(&coeffs[4]),
+            crate::falsify::FACTOR
+        ),
+        holds: factor_ok
+            && is_zero(&coeffs[3])
+            && is_zero(&(&coeffs[4] * crate::falsify::factor() - &one)),
+    };
     checks.push(Check {
-        perturbed: None,
+        perturbed: Some(lead),
         section: "77".to_string(),
         id: "characteristic_factor".to_string(),
         statement: "the characteristic determinant of n° 76–77 for system (2) at p = 0 is lambda^2 (lambda^2 + K)".to_string(),

@@ -446,8 +446,12 @@ pub fn derive() -> Result<Derivation> {
     ));
     let n_eq_steady = simplify(&with(&eqs[1], &steady0));
     let s_eq_steady = simplify(&with(&eqs[2], &steady0));
+    // The (n) equation in the steady state as derived, its first term scaled.
+    let perturbed = crate::falsify::perturb_term(&with(&eqs[1], &steady0), |q| {
+        is_zero(q) && is_zero(&s_eq_steady)
+    });
     checks.push(Check {
-        perturbed: None,
+        perturbed: Some(perturbed),
         section: "29".into(),
         id: "steady_identities".into(),
         statement: "in a steady state (n) is an identity and (s) gives motor moment 0".into(),

@@ -191,6 +191,11 @@ pub fn entries(lin: &Linear) -> Vec<(String, Atom)> {
     out
 }
 
+/// `check` with `perturbed` as its falsification ([`crate::falsify`]).
+fn with_perturbation(check: Check, perturbed: Option<crate::Perturbed>) -> Check {
+    Check { perturbed, ..check }
+}
+
 fn check(id: &str, statement: &str, holds: bool, detail: String) -> Check {
     Check {
         section: "engine".into(),
@@ -207,32 +212,47 @@ pub fn derive() -> Result<Derivation> {
     let model = wheeled_pendulum();
     let (d, kane_len, redundant) =
         engine::derivation(&model, file!()).map_err(|e| anyhow!("the wheeled pendulum: {e}"))?;
-    let mut checks = vec![check(
+    // The derived list of redundant rows without its first row: the check must then fail.
+    let named = |rows: &[String]| {
+        rows.len() == 2
+            && rows.iter().any(|r| r.starts_with("R lateral"))
+            && rows.iter().any(|r| r.starts_with("L vertical"))
+    };
+    let rows_perturbed = redundant.first().map(|first| crate::Perturbed {
+        what: format!("the derived list of redundant rows without its first row ({first})"),
+        holds: named(&redundant[1..]),
+    });
+    let mut checks = vec![with_perturbation(check(
         "redundant_rows",
         "of the rolling constraints, the left contact's vertical row vanishes (the root point is on the ground) and the right contact's lateral row is implied by the others (one rigid axle: both contacts move sideways with it), so both are dropped and named",
-        redundant.len() == 2
-            && redundant.iter().any(|r| r.starts_with("R lateral"))
-            && redundant.iter().any(|r| r.starts_with("L vertical")),
+        named(&redundant),
         redundant.join("; "),
-    )];
+    ), rows_perturbed)];
     let reference = upright(-var("v") / var("r"));
     let kane = route(&d, "", &reference)?;
     let lagrange = route(&d, "L_", &reference)?;
     let zeros = |xs: &[Atom]| xs.iter().all(is_zero);
     let at_rest: Vec<Atom> =
         kane.f0.iter().chain(kane.heights0.iter().map(|(_, h)| h)).cloned().collect();
-    checks.push(check(
+    let refs: Vec<&Atom> = at_rest.iter().collect();
+    let rest_perturbed = crate::falsify::perturb_first_nonzero(&refs, is_zero);
+    checks.push(with_perturbation(check(
         "upright_equilibrium",
         "upright straight running at any speed with the motors off is an equilibrium: every forcing and the right contact's height vanish there",
         zeros(&at_rest),
         format!("{at_rest:?}"),
-    ));
+    ), rest_perturbed));
     let dphi: Vec<Atom> = kane.dependent.iter().flat_map(|(_, r)| r.clone()).collect();
-    checks.push(check(
-        "lean_stays_zero",
-        "the right contact's height has no first-order term in the pitch: the axle stays level",
-        zeros(&dphi),
-        format!("{dphi:?}"),
+    let refs: Vec<&Atom> = dphi.iter().collect();
+    let dphi_perturbed = crate::falsify::perturb_first_nonzero(&refs, is_zero);
+    checks.push(with_perturbation(
+        check(
+            "lean_stays_zero",
+            "the right contact's height has no first-order term in the pitch: the axle stays level",
+            zeros(&dphi),
+            format!("{dphi:?}"),
+        ),
+        dphi_perturbed,
     ));
     let ek = entries(&kane);
     let el = entries(&lagrange);
@@ -242,12 +262,14 @@ pub fn derive() -> Result<Derivation> {
         .filter(|((_, a), (_, b))| !is_zero(&(a - b)))
         .map(|((n, _), _)| n.as_str())
         .collect();
-    checks.push(check(
+    // Kane's first entry, perturbed: the two routes must then differ.
+    let kane_perturbed = crate::falsify::perturb_one(&ek[0].1, |d| is_zero(&(d - &el[0].1)));
+    checks.push(with_perturbation(check(
         "kane_equals_lagrange",
         "the linearised Kane equations and Carvallo's linearised modified Lagrange equations (memoir n° 72), derived by the engine from the one description, are equal entry by entry, exactly (symbolic in every parameter and v)",
         differ.is_empty(),
         differ.join(", "),
-    ));
+    ), Some(kane_perturbed)));
     ensure!(
         checks.iter().all(|c| c.holds),
         "wheeled pendulum checks failed: {:?}",

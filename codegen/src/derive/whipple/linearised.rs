@@ -18,7 +18,9 @@ use anyhow::{anyhow, Result};
 use symbolica::atom::{Atom, AtomCore};
 
 use super::nonlinear::INDEPENDENT;
-use super::{check, description, reduce, vanishes, Matrices, COS_LAMBDA, SIN_LAMBDA};
+use super::{
+    check, check_perturbed, description, reduce, vanishes, Matrices, COS_LAMBDA, SIN_LAMBDA,
+};
 use crate::cas::{expr, reduce_pair, var};
 use crate::mechanics::engine;
 use crate::mechanics::engine::linear::{self, Linear, Reference};
@@ -150,33 +152,48 @@ fn normal(e: &Atom) -> Atom {
     reduce_pair(&stand_ins(&e.expand()), &var(SIN_LAMBDA), &var(COS_LAMBDA))
 }
 
+/// `check` with `perturbed` as its falsification.
+fn with_perturbation(check: Check, perturbed: Option<crate::Perturbed>) -> Check {
+    Check { perturbed, ..check }
+}
+
 /// One route's lean and steer matrices, with the checks that they are the benchmark's form.
 pub fn lateral(lin: &Linear, route: &str, checks: &mut Vec<Check>) -> Matrices {
     let s = |e: &Atom| stand_ins(e);
     let all0 = |es: &[&Atom]| es.iter().all(|e| vanishes(&s(e)));
     let show =
         |es: &[&Atom]| es.iter().map(|e| reduce(&s(e)).to_string()).collect::<Vec<_>>().join("; ");
+    // A quantity that must vanish run again with its first term scaled ([`crate::falsify`]).
+    let vanishing = |es: &[&Atom]| {
+        let reduced: Vec<Atom> = es.iter().map(|e| s(e)).collect();
+        let refs: Vec<&Atom> = reduced.iter().collect();
+        // The others vanish when the check holds: the outcome is the perturbed one's.
+        crate::falsify::perturb_first_nonzero(&refs, vanishes)
+    };
     let heights: Vec<&Atom> = lin.heights0.iter().map(|(_, h)| h).collect();
-    checks.push(check(
+    let perturbed = vanishing(&heights);
+    checks.push(with_perturbation(check(
         &format!("{route}_on_the_ground"),
         &format!("{route}: at the reference (lean, pitch and steer zero) the front contact's height vanishes"),
         all0(&heights),
         show(&heights),
-    ));
+    ), perturbed));
     let pitch: Vec<&Atom> = lin.dependent.iter().flat_map(|(_, row)| row.iter()).collect();
-    checks.push(check(
+    let perturbed = vanishing(&pitch);
+    checks.push(with_perturbation(check(
         &format!("{route}_pitch_second_order"),
         &format!("{route}: the front contact's height has no first-order term in lean and steer, so the pitch's perturbation vanishes at first order"),
         all0(&pitch),
         show(&pitch),
-    ));
+    ), perturbed));
     let f0: Vec<&Atom> = lin.f0.iter().collect();
-    checks.push(check(
+    let perturbed = vanishing(&f0);
+    checks.push(with_perturbation(check(
         &format!("{route}_equilibrium"),
         &format!("{route}: upright straight running at any speed is an equilibrium (the forcing of every equation vanishes there)"),
         all0(&f0),
         show(&f0),
-    ));
+    ), perturbed));
     // The rear wheel rate (index 2) against lean and steer (0, 1).
     let coupling: Vec<&Atom> = vec![
         &lin.m[0][2],
@@ -188,12 +205,13 @@ pub fn lateral(lin: &Linear, route: &str, checks: &mut Vec<Check>) -> Matrices {
         &lin.f_q[2][0],
         &lin.f_q[2][1],
     ];
-    checks.push(check(
+    let perturbed = vanishing(&coupling);
+    checks.push(with_perturbation(check(
         &format!("{route}_rear_decoupled"),
         &format!("{route}: the rear wheel rate's perturbation decouples from lean and steer at first order (no mass, rate or angle coupling either way)"),
         all0(&coupling),
         show(&coupling),
-    ));
+    ), perturbed));
     let (v, g) = (var("v"), var("g"));
     let (vs, gs) = (v.get_symbol().expect("symbol"), g.get_symbol().expect("symbol"));
     let mat = |f: &dyn Fn(usize, usize) -> Atom| -> [[Atom; 2]; 2] {
@@ -252,11 +270,17 @@ pub fn matrices_of(
     let (lin, parts) = origins(&d, &reference)?;
     let lagrange = lateral(&lin, "lagrange", checks);
     let differ = differing(&kane, &lagrange);
-    checks.push(check(
+    let perturbed = crate::falsify::perturb_one(&kane.m[0][0], |d| {
+        let mut k = kane.clone();
+        k.m[0][0] = d.clone();
+        differing(&k, &lagrange).is_empty()
+    });
+    checks.push(check_perturbed(
         "kane_equals_lagrange",
         "the linearised Kane equations and Carvallo's linearised modified Lagrange equations (memoir n° 72), both derived by the engine from the one description, give the same M, C1, K0, K2, entry by entry, exactly (symbolic in all 25 parameters)",
         differ.is_empty(),
         if differ.is_empty() { String::new() } else { format!("differ: {}", differ.join(", ")) },
+        perturbed,
     ));
     Ok((kane, parts))
 }

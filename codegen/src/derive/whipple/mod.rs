@@ -75,6 +75,7 @@ pub fn to_lambda(e: &Atom) -> Atom {
 }
 
 /// The derived matrices, reduced, in the stand-ins.
+#[derive(Clone)]
 pub struct Matrices {
     /// Mass matrix.
     pub m: [[Atom; 2]; 2],
@@ -84,6 +85,18 @@ pub struct Matrices {
     pub k0: [[Atom; 2]; 2],
     /// Velocity-squared stiffness.
     pub k2: [[Atom; 2]; 2],
+}
+
+/// [`check`] with the outcome of the same check on a perturbed derived side (issue 38,
+/// [`crate::falsify`]).
+pub(super) fn check_perturbed(
+    id: &str,
+    statement: &str,
+    holds: bool,
+    detail: String,
+    perturbed: crate::Perturbed,
+) -> Check {
+    Check { perturbed: Some(perturbed), ..check(id, statement, holds, detail) }
 }
 
 /// A check of the linear model's section.
@@ -109,7 +122,9 @@ pub fn origin_checks(kane: &Matrices, parts: &linearised::Origins, checks: &mut 
     let yaw = &parts.yaw_rate;
     let cos_w = var(COS_LAMBDA) / var("w");
     let expected = [Atom::num(0), var("v") * &cos_w, Atom::num(0), var("c") * &cos_w];
-    checks.push(check(
+    let perturbed =
+        crate::falsify::perturb(yaw, |d| d.iter().zip(&expected).all(|(d, e)| vanishes(&(d - e))));
+    checks.push(check_perturbed(
         "yaw_rate",
         "the yaw rate from the front wheel's rolling is, at first order, psi' = (v delta + c delta') cos(lambda) / w (the engine's dependent speed psid linearised)",
         yaw.iter().zip(&expected).all(|(d, e)| vanishes(&(d - e))),
@@ -117,27 +132,39 @@ pub fn origin_checks(kane: &Matrices, parts: &linearised::Origins, checks: &mut 
             "coefficients of phi, delta, phi', delta': {}",
             yaw.iter().map(|e| reduce(e).to_string()).collect::<Vec<_>>().join("; ")
         ),
+        perturbed,
     ));
     // Momentum plus correction is the generalised inertia force (a check of the split: Kane's
     // matrices come from the other route).
     let (v, v2) = (var("v"), var("v").pow(Atom::num(2)));
-    let mut split_bad = Vec::new();
-    for r in 0..2 {
-        for c in 0..2 {
-            let rate =
-                &parts.momentum_rate[r][c] + &parts.correction_rate[r][c] - &v * &kane.c1[r][c];
-            let angle =
-                &parts.momentum_angle[r][c] + &parts.correction_angle[r][c] - &v2 * &kane.k2[r][c];
-            if !vanishes(&rate) || !vanishes(&angle) {
-                split_bad.push(format!("({}, {})", Q[r], Q[c]));
+    // The split's entries that do not add up, with the momentum's rate entries of the
+    // modified Lagrange route given (the derived side of the check).
+    let split = |momentum_rate: &[[Atom; 2]; 2]| {
+        let mut bad = Vec::new();
+        for r in 0..2 {
+            for c in 0..2 {
+                let rate =
+                    &momentum_rate[r][c] + &parts.correction_rate[r][c] - &v * &kane.c1[r][c];
+                let angle = &parts.momentum_angle[r][c] + &parts.correction_angle[r][c]
+                    - &v2 * &kane.k2[r][c];
+                if !vanishes(&rate) || !vanishes(&angle) {
+                    bad.push(format!("({}, {})", Q[r], Q[c]));
+                }
             }
         }
-    }
-    checks.push(check(
+        bad
+    };
+    let split_bad = split(&parts.momentum_rate);
+    let flat: Vec<Atom> = parts.momentum_rate.iter().flatten().cloned().collect();
+    let perturbed = crate::falsify::perturb(&flat, |d| {
+        split(&[[d[0].clone(), d[1].clone()], [d[2].clone(), d[3].clone()]]).is_empty()
+    });
+    checks.push(check_perturbed(
         "lagrange_split",
         "the momentum's derivative (dT/dq')' and Carvallo's correction -sum m M'|(dM/dq)' of the modified Lagrange equations, linearised apart, add up to Kane's v C1 (rates) and v^2 K2 (angles), entry by entry, exactly",
         split_bad.is_empty(),
         if split_bad.is_empty() { String::new() } else { format!("differ: {}", split_bad.join(", ")) },
+        perturbed,
     ));
     let Some(plain) = &parts.plain else { return };
     for r in 0..2 {
@@ -165,11 +192,14 @@ pub fn origin_checks(kane: &Matrices, parts: &linearised::Origins, checks: &mut 
             },
         ));
     }
-    checks.push(check(
+    let perturbed =
+        crate::falsify::perturb_one(&kane.k0[0][1], |d| vanishes(&(d - &kane.k0[1][0])));
+    checks.push(check_perturbed(
         "k0_symmetric",
         "K0 is symmetric (a Hessian)",
         vanishes(&(&kane.k0[0][1] - &kane.k0[1][0])),
         format!("k0_12 = {}; k0_21 = {}", kane.k0[0][1], kane.k0[1][0]),
+        perturbed,
     ));
 }
 
@@ -241,24 +271,36 @@ fn tf_check() -> Check {
     });
     let n = tf_numerators(&gm);
     let det_p = poly(&char_poly(&gm));
-    let mut worst = Atom::num(0);
-    let mut holds = true;
-    for i in 0..2 {
-        for j in 0..2 {
-            let np = (poly(&n[i][0]) * &p[0][j] + poly(&n[i][1]) * &p[1][j]).expand();
-            let want = if i == j { det_p.expand() } else { Atom::num(0) };
-            let diff = (np - want).expand();
-            if !is_zero(&diff) {
-                holds = false;
-                worst = diff;
+    // Whether N P = det(P) I with the numerators `n`, and the last residual that is not zero.
+    let residual = |n: &[[[Atom; 3]; 2]; 2]| -> (bool, Atom) {
+        let mut worst = Atom::num(0);
+        let mut holds = true;
+        for i in 0..2 {
+            for j in 0..2 {
+                let np = (poly(&n[i][0]) * &p[0][j] + poly(&n[i][1]) * &p[1][j]).expand();
+                let want = if i == j { det_p.expand() } else { Atom::num(0) };
+                let diff = (np - want).expand();
+                if !is_zero(&diff) {
+                    holds = false;
+                    worst = diff;
+                }
             }
         }
-    }
-    check(
+        (holds, worst)
+    };
+    let (holds, worst) = residual(&n);
+    // The derived side: N_11's constant coefficient, perturbed.
+    let perturbed = crate::falsify::perturb_one(&n[0][0][0], |d| {
+        let mut m = n.clone();
+        m[0][0][0] = d.clone();
+        residual(&m).0
+    });
+    check_perturbed(
         "transfer_adjugate",
         "the transfer-function numerators N (the adjugate of P(s) = M s^2 + v C1 s + g K0 + v^2 K2) and the characteristic polynomial sum a_k s^k satisfy N P = det(P) I identically in s, v, g and generic matrix entries",
         holds,
         format!("residual: {worst}"),
+        perturbed,
     )
 }
 
@@ -369,40 +411,55 @@ fn closed_loop_checks() -> Vec<Check> {
                 + gain(r, c)
         })
     });
-    let mut rebuilt = Atom::num(0);
-    for (k, coefs) in cl.iter().enumerate() {
-        for (j, a) in coefs.iter().enumerate() {
-            rebuilt += a * v.pow(Atom::num(j as i64)) * s.pow(Atom::num(k as i64));
-        }
-    }
-    let diff = (det(&p) - rebuilt).expand();
+    // The two residuals with the closed-loop coefficients `cl` (the derived side).
     let open = char_poly(&gm);
-    let mut open_diff = Atom::num(0);
-    for (k, coefs) in cl.iter().enumerate() {
-        let mut a = coefs
-            .iter()
-            .enumerate()
-            .fold(Atom::num(0), |acc, (j, c)| acc + c * v.pow(Atom::num(j as i64)));
-        for name in GAINS {
-            a = subst(&a, name, &Atom::num(0));
+    let residuals = |cl: &[Vec<Atom>]| -> (Atom, Atom) {
+        let mut rebuilt = Atom::num(0);
+        for (k, coefs) in cl.iter().enumerate() {
+            for (j, a) in coefs.iter().enumerate() {
+                rebuilt += a * v.pow(Atom::num(j as i64)) * s.pow(Atom::num(k as i64));
+            }
         }
-        let d = (a - &open[k]).expand();
-        if !is_zero(&d) {
-            open_diff = d;
+        let diff = (det(&p) - rebuilt).expand();
+        let mut open_diff = Atom::num(0);
+        for (k, coefs) in cl.iter().enumerate() {
+            let mut a = coefs
+                .iter()
+                .enumerate()
+                .fold(Atom::num(0), |acc, (j, c)| acc + c * v.pow(Atom::num(j as i64)));
+            for name in GAINS {
+                a = subst(&a, name, &Atom::num(0));
+            }
+            let d = (a - &open[k]).expand();
+            if !is_zero(&d) {
+                open_diff = d;
+            }
         }
-    }
+        (diff, open_diff)
+    };
+    let (diff, open_diff) = residuals(&cl);
+    // The derived side perturbed: the coefficient of v^0 s^0, a symbol of it scaled.
+    let with_first = |d: &Atom| {
+        let mut c = cl.clone();
+        c[0][0] = d.clone();
+        residuals(&c)
+    };
+    let poly_perturbed = crate::falsify::perturb_one(&cl[0][0], |d| is_zero(&with_first(d).0));
+    let open_perturbed = crate::falsify::perturb_one(&cl[0][0], |d| is_zero(&with_first(d).1));
     vec![
-        check(
+        check_perturbed(
             "closed_loop_poly",
             "the closed-loop characteristic polynomial's coefficients (of v^j s^k) reassemble det(M s^2 + (v C1 + Kd) s + g K0 + v^2 K2 + Kp) for the state feedback u = -K x, K = (Kp Kd), identically in s, v, g, the eight gains and generic matrix entries",
             is_zero(&diff),
             format!("residual: {diff}"),
+            poly_perturbed,
         ),
-        check(
+        check_perturbed(
             "closed_loop_open",
             "with every gain zero the closed-loop coefficients are the open-loop characteristic polynomial a0 ... a4",
             is_zero(&open_diff),
             format!("residual: {open_diff}"),
+            open_perturbed,
         ),
     ]
 }

@@ -529,8 +529,13 @@ pub fn kane_derivation_expecting(
     let mut want: Vec<String> = expected.iter().map(|s| s.to_string()).collect();
     found.sort();
     want.sort();
+    // The derived list of redundant rows without its first row: the check must then fail.
+    let perturbed = found.first().map(|first| crate::Perturbed {
+        what: format!("the derived list of redundant rows without its first row ({first})"),
+        holds: found[1..] == want[..],
+    });
     let check = crate::Check {
-        perturbed: None,
+        perturbed,
         section: "34".into(),
         id: "redundant_rows".into(),
         statement: format!(
