@@ -402,8 +402,16 @@ pub fn derive() -> Result<Derivation> {
         ],
     ));
     let orth = [h().dot(&g()), h1().dot(&g()), h1().dot(&h1()) - &one, g().dot(&g()) - &one];
+    // The derived side: G's components (as G|G - 1 and the products use them), G scaled.
+    let orth_perturbed = crate::Perturbed {
+        what: format!("the derived direction G scaled by {}", crate::falsify::FACTOR),
+        holds: {
+            let gs = g().scale(&crate::falsify::factor());
+            is_zero_mod(&h().dot(&gs)) && is_zero_mod(&(gs.dot(&gs) - &one))
+        },
+    };
     checks.push(Check {
-        perturbed: None,
+        perturbed: Some(orth_perturbed),
         section: "47".into(),
         id: "directions_orthonormal_47".into(),
         statement: "H, G, H1 are unit vectors and G is normal to H and to H1".into(),
@@ -419,8 +427,11 @@ pub fn derive() -> Result<Derivation> {
         .add(&g().scale(&-(var("b") + &r_ * cos("mu"))))
         .add(&h1().scale(&(&c_ - &r_ * sin("mu"))));
     let d_om = om.sub(&printed_om);
+    let om_perturbed = crate::falsify::perturb(&om.comps, |d| {
+        (0..3).all(|i| is_zero_mod(&(&d[i] - &printed_om.comps[i])))
+    });
     checks.push(Check {
-        perturbed: None,
+        perturbed: Some(om_perturbed),
         section: "46".into(),
         id: "om_46".into(),
         statement: "OS + SA + AB + BC + CM is the printed OM = Rk + aH - (b + R cos mu)G + (c - R sin mu)H1".into(),
@@ -429,8 +440,11 @@ pub fn derive() -> Result<Derivation> {
     });
     let sc_upright = h().scale(&a_const()).add(&g().scale(&-b_const())).add(&h().scale(&c_));
     let sc_upright = sc_upright.map(|e| at_sigma0(&zero_theta(e)));
+    let ab_perturbed = crate::falsify::perturb(&sc_upright.comps, |d| {
+        is_zero_mod(&(&d[0] - &l_)) && is_zero_mod(&d[1]) && is_zero_mod(&d[2])
+    });
     checks.push(Check {
-        perturbed: None,
+        perturbed: Some(ab_perturbed),
         section: "44".into(),
         id: "relations_ab_44".into(),
         statement: "with (a) a + c = l cos(sigma0) and (b) b = l sin(sigma0), SA + AB + BC = l I in the normal position (theta = gamma = 0, sigma = sigma0)".into(),
@@ -713,8 +727,16 @@ pub fn derive() -> Result<Derivation> {
         ],
     ));
     let cn = Vector::new(Trihedron::IJK, ci.clone(), cj.clone(), ck.clone());
+    let unit_normal = |cn: &Vector| {
+        is_zero_mod(&(cn.dot(cn) - &one))
+            && is_zero_mod(&cn.dot(&h1()))
+            && is_zero_mod(&cn.dot(&g()))
+    };
+    let cn_perturbed = crate::falsify::perturb(&cn.comps, |d| {
+        unit_normal(&Vector::new(Trihedron::IJK, d[0].clone(), d[1].clone(), d[2].clone()))
+    });
     checks.push(Check {
-        perturbed: None,
+        perturbed: Some(cn_perturbed),
         section: "57".into(),
         id: "normal_unit_57".into(),
         statement: "CN is a unit vector (the memoir's sum of the squares of the second members is 1) normal to H1 and G".into(),
@@ -729,8 +751,15 @@ pub fn derive() -> Result<Derivation> {
         -(cos("beta") * cos("alpha")),
         sin("beta"),
     );
+    let ab_unit = crate::Perturbed {
+        what: format!("the derived form (1) of CN scaled by {}", crate::falsify::FACTOR),
+        holds: {
+            let scaled = cn_ab.scale(&crate::falsify::factor());
+            is_zero_mod(&(scaled.dot(&scaled) - &one))
+        },
+    };
     checks.push(Check {
-        perturbed: None,
+        perturbed: Some(ab_unit),
         section: "57".into(),
         id: "normal_alpha_beta_unit_57".into(),
         statement: "the form (1) CN = I cos beta sin alpha - J cos beta cos alpha + K sin beta is a unit vector (sum of the squares of the first members is 1)".into(),
@@ -750,8 +779,11 @@ pub fn derive() -> Result<Derivation> {
     let printed_k1 = Vector::new(Trihedron::IJK, &sa * &st1, -(&ca * &st1), ct1.clone());
     let axes_ok = j1.sub(&printed_j1).comps.iter().all(is_zero_mod)
         && k1.sub(&printed_k1).comps.iter().all(is_zero_mod);
+    let axes_perturbed = crate::falsify::perturb(&j1.comps, |d| {
+        (0..3).all(|i| is_zero_mod(&(&d[i] - &printed_j1.comps[i])))
+    });
     checks.push(Check {
-        perturbed: None,
+        perturbed: Some(axes_perturbed),
         section: "58".into(),
         id: "front_axes_58".into(),
         statement: "j1 = J1 cos theta1 + K sin theta1 and k1 = -J1 sin theta1 + K cos theta1 expand to the printed forms on I, J, K".into(),
@@ -762,8 +794,12 @@ pub fn derive() -> Result<Derivation> {
         && i1.cross(&j1).sub(&k1).comps.iter().all(is_zero_mod)
         && is_zero_mod(&i1.dot(&cn_ab))
         && is_zero_mod(&k1.dot(&cn_ab));
+    let trihedron_perturbed = crate::Perturbed {
+        what: format!("the derived axis j1 scaled by {}", crate::falsify::FACTOR),
+        holds: j1.scale(&crate::falsify::factor()).add(&cn_ab).comps.iter().all(is_zero_mod),
+    };
     checks.push(Check {
-        perturbed: None,
+        perturbed: Some(trihedron_perturbed),
         section: "58".into(),
         id: "front_trihedron_58".into(),
         statement: "j1 = -N (N = CN of n° 57), I1 and k1 lie in the wheel's plane and (I1, j1, k1) is direct: |I1 j1 = k1".into(),
@@ -778,8 +814,11 @@ pub fn derive() -> Result<Derivation> {
         let e = subst(&e, &sb, &ck);
         subst(&e, &cb, &wb())
     });
+    let k1_perturbed = crate::falsify::perturb(&k1_from_abn.comps, |d| {
+        (0..3).all(|i| is_zero_mod(&(&d[i] - &k1_direct.comps[i])))
+    });
     checks.push(Check {
-        perturbed: None,
+        perturbed: Some(k1_perturbed),
         section: "58".into(),
         id: "front_axes_in_theta_gamma_sigma_58".into(),
         statement: "with sin alpha = CN_I / cos beta, cos alpha = -CN_J / cos beta, sin beta = CN_K, cos beta = Wb = sqrt(CN_I^2 + CN_J^2), k1 = (-CN_I CN_K, -CN_J CN_K, Wb^2) / Wb, the steepest line of the front wheel (k1|CN = 0, k1|k1 = 1)".into(),

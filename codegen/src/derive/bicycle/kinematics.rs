@@ -479,7 +479,7 @@ pub fn derive() -> Result<Derivation> {
                 ["K", "N1 = I sin alpha - J cos alpha", "I1 = I cos alpha + J sin alpha"][rel.len()],
                 printed.join("; ")
             ),
-            &total,
+            &(0..6).fold(Atom::num(0), |acc, k| acc + &p[k] * delta(k)),
             &total,
             "N = I cos beta sin alpha - J cos beta cos alpha + K sin beta (n° 57), I1 = I cos alpha + J sin alpha".into(),
         ));
@@ -490,17 +490,14 @@ pub fn derive() -> Result<Derivation> {
         "grassmann_63_64",
         "the Grassmann products: -[K j (M - S)] = x cos theta, -[N1 j (M - S)] = sin theta (y sin alpha + x cos alpha) + R sin alpha, -[I1 j (M - S)] = sin theta (y cos alpha - x sin alpha) + R cos alpha, and [jIJ] = sin theta, [jJk] = 0, [Ijk] = 1",
         &{
+            // The derived side: the six Grassmann products as computed, weighted.
             let tri = |a: &Vector, b: &Vector, c: &Vector| a.dot(&b.cross(c)).expand();
-            (tri(&k_big, &j_small, &m_s) + &xs * &c_t) * var("w1")
-                + (tri(&n1, &j_small, &m_s)
-                    + pr("sin(theta)*(y*sin(alpha) + x*cos(alpha)) + R*sin(alpha)"))
-                    * var("w2")
-                + (tri(&i1, &j_small, &m_s)
-                    + pr("sin(theta)*(y*cos(alpha) - x*sin(alpha)) + R*cos(alpha)"))
-                    * var("w3")
-                + (tri(&j_small, &ijk(0), &ijk(1)) - &s_t) * var("w4")
+            tri(&k_big, &j_small, &m_s) * var("w1")
+                + tri(&n1, &j_small, &m_s) * var("w2")
+                + tri(&i1, &j_small, &m_s) * var("w3")
+                + tri(&j_small, &ijk(0), &ijk(1)) * var("w4")
                 + tri(&j_small, &ijk(1), &k_small) * var("w5")
-                + (tri(&ijk(0), &j_small, &k_small) - &one) * var("w6")
+                + tri(&ijk(0), &j_small, &k_small) * var("w6")
         },
         &{
             let tri = |a: &Vector, b: &Vector, c: &Vector| a.dot(&b.cross(c)).expand();
@@ -669,9 +666,9 @@ pub fn derive() -> Result<Derivation> {
         "66 bis",
         "projection_j_66bis",
         "j|I1 = cos theta sin alpha, j|J1 = cos theta cos alpha, j|K = sin theta (spherical triangle j J I1, fig. 15b)",
-        &((j_small.dot(&i1) - &c_t * &s_a) * var("w1")
-            + (j_small.dot(&j1_big) - &c_t * &c_a) * var("w2")
-            + (j_small.dot(&k_big) - &s_t) * var("w3")),
+        &(j_small.dot(&i1) * var("w1")
+            + j_small.dot(&j1_big) * var("w2")
+            + j_small.dot(&k_big) * var("w3")),
         &((j_small.dot(&i1) - &c_t * &s_a) * var("w1")
             + (j_small.dot(&j1_big) - &c_t * &c_a) * var("w2")
             + (j_small.dot(&k_big) - &s_t) * var("w3")),
@@ -696,7 +693,7 @@ pub fn derive() -> Result<Derivation> {
         "66 bis",
         "system_i_66bis",
         "the vector identity (2) I1 p1 + j1 s1 + K n1 = I p + K n - j eta' + G gamma' + j1 sigma1' projected on I1, J1, K is the printed system (I) (the OCR's tau', r' read eta')",
-        &((0..3).fold(Atom::num(0), |acc, i| acc + (&sys_derived[i] - pr(sys_printed[i])) * var(&format!("w{i}")))),
+        &((0..3).fold(Atom::num(0), |acc, i| acc + &sys_derived[i] * var(&format!("w{i}")))),
         &((0..3).fold(Atom::num(0), |acc, i| acc + (&sys_derived[i] - pr(sys_printed[i])) * var(&format!("w{i}")))),
         "G = -I1 sin mu + k1 cos mu (checks projection_g_*), theta1 = -beta".into(),
     ));
@@ -709,9 +706,7 @@ pub fn derive() -> Result<Derivation> {
         "66 bis",
         "steady_ii_66bis",
         "in the steady state (p = gamma' = eta' = 0) the system (I) gives the printed (II): p1 = 0, s1 = sigma1', n1 = n",
-        &(&p1_val * var("w0")
-            + (&s1_val - &s1p) * var("w1")
-            + (&n1_val - &n) * var("w2")),
+        &(&p1_val * var("w0") + &s1_val * var("w1") + &n1_val * var("w2")),
         &(&p1_val * var("w0")
             + (&s1_val - &s1p) * var("w1")
             + (&n1_val - &n) * var("w2")),
@@ -734,7 +729,7 @@ pub fn derive() -> Result<Derivation> {
         "68",
         "fixed_equations_68",
         "with dsigma = -deta (the pedals held), dgamma = dsigma1 = 0, the equations (delta) become the three printed ones",
-        &((0..3).fold(Atom::num(0), |acc, i| acc + (&fixed[i] - pr(fixed_printed[i])) * var(&format!("w{i}")))),
+        &((0..3).fold(Atom::num(0), |acc, i| acc + &fixed[i] * var(&format!("w{i}")))),
         &((0..3).fold(Atom::num(0), |acc, i| acc + (&fixed[i] - pr(fixed_printed[i])) * var(&format!("w{i}")))),
         "(delta) of n° 66 with symbols x, y, alpha, beta".into(),
     ));
@@ -750,8 +745,14 @@ pub fn derive() -> Result<Derivation> {
         &det3(&mat),
         format!("the minor of the first two equations in (dtheta, dnu) is {} (not identically zero: rank 2)", show(&minor.expand())),
     ));
+    // The minor with the second equation's dnu coefficient dropped (a coefficient of the derived
+    // fixed equations zeroed): it must then vanish, and the check (not identically zero) fail.
+    let minor_perturbed = crate::Perturbed {
+        what: "the derived coefficient of dnu in the second fixed equation set to 0".to_string(),
+        holds: !is_zero_mod(&(&mat[0][0] * Atom::num(0) - &mat[0][2] * &mat[1][0])),
+    };
     checks.push(Check {
-        perturbed: None,
+        perturbed: Some(minor_perturbed),
         section: "68".into(),
         id: "rank_two_minor_68".into(),
         statement: "the first two fixed equations are independent: their minor in (dtheta, dnu), -y (x cos alpha + y sin alpha), is not identically zero".into(),

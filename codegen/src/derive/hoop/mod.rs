@@ -312,6 +312,15 @@ pub fn derive() -> Result<Derivation> {
             &one,
         );
         chk.detail = format!("{}; the plain equation lacks the term {}", chk.detail, show(corr));
+        // The memoir's statement fails; with Carvallo's correction added to the plain
+        // equations (the modified equations of n° 72) it must hold, so the verdict moves.
+        chk.perturbed = Some(crate::Perturbed {
+            what: format!(
+                "Carvallo's correction ({}) added to the plain equation: the modified equations of n° 72",
+                show(corr)
+            ),
+            holds: is_zero(&(&lag_solved[idx] - &pns[idx])),
+        });
         checks.push(chk);
     }
 

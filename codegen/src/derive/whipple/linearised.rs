@@ -355,8 +355,21 @@ pub fn shift_checks(checks: &mut Vec<Check>, unshifted: &Matrices) -> Result<()>
             let id = format!("kane_shift_{b}");
             let fails = perturbed.iter().any(|c| c.id == id && !c.holds);
             let detail = perturbed.iter().find(|c| c.id == id).map_or(String::new(), |c| c.detail.clone());
+            // The control is the Kane check's falsification (a model ingredient moved), and
+            // the Kane check on the bicycle's own description is the control's.
+            let own = checks.iter_mut().find(|c| c.id == id);
+            let own_holds = own.as_ref().is_some_and(|c| c.holds);
+            if let Some(own) = own {
+                own.perturbed = Some(crate::Perturbed {
+                    what: format!("the description with {what}"),
+                    holds: !fails,
+                });
+            }
             checks.push(Check {
-                perturbed: None,
+                perturbed: Some(crate::Perturbed {
+                    what: format!("the description as the memoir has it (the body shifted about OI alone): {id} run on it"),
+                    holds: !own_holds,
+                }),
                 section: "98".into(),
                 id: format!("shift_{b}_breaks_with_{name}"),
                 statement: format!("negative control of {id}: with {what} the check fails"),
