@@ -841,7 +841,7 @@ pub fn derive() -> Result<Derivation> {
         "122",
         "constant_term_linear_in_s2",
         "the constant term's numerator A B1 - A1 B (script letters of n° 117) is of degree one in s^2",
-        &quad,
+        &(subst(&num0, "s", &n(2)) - &n0 - n(4) * &n1),
         &quad,
         format!("coefficient of s^0: {}", show(&reduce(&n0))),
     ));
@@ -907,7 +907,7 @@ pub fn derive() -> Result<Derivation> {
         "121",
         "routh_hurwitz",
         "Carvallo's condition (4) is minus the third Hurwitz determinant H3 = det[[a1, a3, 0], [1, a2, a4], [0, a1, a3]] of the monic quartic, so his lower limit is where H3 changes sign",
-        &(&cond + &hurwitz3).expand(),
+        &-&hurwitz3,
         &(&cond + &hurwitz3).expand(),
         "a3^2 - a1 a2 a3 + a1^2 a4 = -H3".to_string(),
     ));

@@ -341,12 +341,15 @@ pub fn derive() -> Result<Derivation> {
     let f_t = quadratic_root(&ftc);
     let fx = f_t.pow(rat(1, 2));
     let fy = subst(&s1_y, "x", &fx);
-    checks.push(check(
+    // t_F (derived) solves the quadratic; perturbed, it does not.
+    let solves = |poly: &Atom, root: &Atom| is_zero(&subst(poly, "t", root));
+    checks.push(checked(
         "14",
         "point_f_quadratic",
         "(ℰ) and (S1) meet where a quadratic in t = x^2 vanishes; F is its root in (0, 1)",
-        true,
+        solves(&ft, &f_t),
         format!("equation in t: {ft} = 0; t_F = {f_t}; x_F = sqrt(t_F)"),
+        crate::falsify::perturb_one(&f_t, |d| solves(&ft, d)),
     ));
 
     // Points A, D and the tangents.
@@ -393,24 +396,27 @@ pub fn derive() -> Result<Derivation> {
     let quartic = even_to(&over, "x", "t")?;
     checks.push(compare("14", "quartic_f_memoir", "the discriminant in y of (S) over 64 x^2 (the memoir's B'^2 - AC over 16 x^2), with t = x^2, is the printed F(t) = 28t^4 - 44t^3 + 15t^2 + 4t - 2", &quartic, &expr(printed::QUARTIC_F), &one));
     let factored = quartic.factor();
-    checks.push(check(
-        "14",
-        "quartic_f_factor",
-        "F(t) factored over the rationals (symbolica): a square times an irreducible quadratic",
-        true,
-        format!("F(t) = {factored}"),
-    ));
     // The quadratic factor: F / (2t - 1)^2, checked exact.
     let quad = simplify(&(&quartic / expr("(2*t-1)^2")));
     let qc = coefficients(&quad, "t");
     ensure!(qc.len() == 3, "F(t) / (2t - 1)^2 is not a quadratic: {quad}");
+    let square_times_quad = |f: &Atom| is_zero(&(f - expr("(2*t-1)^2") * &quad));
+    checks.push(checked(
+        "14",
+        "quartic_f_factor",
+        "F(t) factored over the rationals (symbolica): a square times an irreducible quadratic",
+        square_times_quad(&quartic),
+        format!("F(t) = {factored}"),
+        crate::falsify::perturb_one(&quartic, square_times_quad),
+    ));
     let t_root = quadratic_root(&qc);
-    checks.push(check(
+    checks.push(checked(
         "14",
         "quartic_f_root",
         "the root of F in (0.8, 1) is the larger root of the quadratic factor, in closed form",
-        true,
+        solves(&quad, &t_root) && solves(&quartic, &t_root),
         format!("quadratic factor {quad}; t = {t_root}"),
+        crate::falsify::perturb_one(&t_root, |d| solves(&quartic, d)),
     ));
     let shifted = subst(&quartic, "t", &(&t + &one)).expand();
     checks.push(compare("14", "horner_shift_memoir", "F(1 + u) is the printed 28u^4 + 68u^3 + 51u^2 + 14u + 1 (Carvallo's Horner tableau), u written t", &shifted, &expr(printed::QUARTIC_U), &one));
@@ -531,7 +537,15 @@ pub fn derive() -> Result<Derivation> {
     let (contact, _) = num_den(&(&n_s2 - &e_s2));
     let contact_w = to_sin(&contact, "w")?;
     let contact_f = contact_w.factor();
-    checks.push(check("17", "point_i_double", "(N) and (ℰ) meet where a polynomial in w = sin(theta) has the double root 2/3 (contact at I, sin = 2/3)", is_zero(&subst(&contact_w, "w", &rat(2, 3))) && is_zero(&subst(&contact_w.derivative(var("w").get_symbol().expect("symbol")), "w", &rat(2, 3))), format!("s^2 on (N) minus s^2 on (ℰ), numerator in w: {contact_f}")));
+    let double_root = |c: &Atom| {
+        is_zero(&subst(c, "w", &rat(2, 3)))
+            && is_zero(&subst(
+                &c.derivative(var("w").get_symbol().expect("symbol")),
+                "w",
+                &rat(2, 3),
+            ))
+    };
+    checks.push(checked("17", "point_i_double", "(N) and (ℰ) meet where a polynomial in w = sin(theta) has the double root 2/3 (contact at I, sin = 2/3)", double_root(&contact_w), format!("s^2 on (N) minus s^2 on (ℰ), numerator in w: {contact_f}"), crate::falsify::perturb_one(&contact_w, double_root)));
     let i_s2 =
         simplify(&subst(&subst(&n_s2, "sin_theta", &rat(2, 3)), "cos_theta", &expr("5^(1/2)/3")));
     checks.push(compare(
