@@ -247,8 +247,11 @@ pub fn derive() -> Result<Derivation> {
     ];
     let table4 = |id: &str, name: &str, v: &Vector, rows: &Rows, note: &str| {
         let mut diff = Vector::zero(Trihedron::IJK);
+        // The derived side: the variations of n° 47's vector, weighted as `diff`.
+        let mut derived = Vector::zero(Trihedron::IJK);
         let mut bad = Vec::new();
         for (q, comps) in rows {
+            derived = derived.add(&variation(v, q).scale(&var(&format!("w_{q}"))));
             let d = variation(v, q).sub(&vpr(*comps));
             if !vdiff_zero(&d) {
                 bad.push(format!(
@@ -262,8 +265,11 @@ pub fn derive() -> Result<Derivation> {
             }
             diff = diff.add(&d.scale(&var(&format!("w_{q}"))));
         }
+        let perturbed = crate::falsify::perturb(&derived.comps, |dd| {
+            (0..3).all(|i| is_zero_mod(&(&diff.comps[i] - &derived.comps[i] + &dd[i])))
+        });
         Check {
-            perturbed: None,
+            perturbed: Some(perturbed),
             section: "61".into(),
             id: id.into(),
             statement: format!(

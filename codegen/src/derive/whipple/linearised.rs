@@ -227,12 +227,17 @@ pub fn lateral(lin: &Linear, route: &str, checks: &mut Vec<Check>) -> Matrices {
     let free = [&m, &c1, &k0, &k2]
         .iter()
         .all(|x| x.iter().flatten().all(|e| !e.contains_symbol(vs) && !e.contains_symbol(gs)));
-    checks.push(check(
+    // The derived M11 given a speed dependence (times 1 + v): the structure must then fail.
+    let structure_perturbed = crate::Perturbed {
+        what: "the derived entry M11 multiplied by 1 + v (a speed-dependent mass)".to_string(),
+        holds: !(&m[0][0] * (Atom::num(1) + &v)).contains_symbol(vs),
+    };
+    checks.push(with_perturbation(check(
         &format!("{route}_structure"),
         &format!("{route}: the lean and steer rows are exactly M q'' + v C1 q' + (g K0 + v^2 K2) q: the rate terms are v times, the angle terms g times plus v^2 times expressions free of v and g"),
         free,
         if free { String::new() } else { "an entry depends on v or g".to_string() },
-    ));
+    ), Some(structure_perturbed)));
     Matrices { m, c1, k0, k2 }
 }
 
