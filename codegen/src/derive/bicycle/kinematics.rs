@@ -743,14 +743,30 @@ pub fn derive() -> Result<Derivation> {
     let mat: Vec<Vec<Atom>> =
         (0..3).map(|i| (0..3).map(|j| coeff(&fixed[i], &unknowns[j])).collect()).collect();
     let minor = &mat[0][0] * &mat[1][2] - &mat[0][2] * &mat[1][0];
-    checks.push(check(
+    // The derived coefficient of dnu in the second fixed equation scaled: the last two
+    // equations are then no longer proportional and the determinant no longer vanishes.
+    let rank_perturbed = crate::Perturbed {
+        what: format!(
+            "the derived coefficient of dnu in the second fixed equation scaled by {}",
+            crate::falsify::FACTOR
+        ),
+        holds: {
+            let mut m = mat.clone();
+            m[1][2] = &m[1][2] * crate::falsify::factor();
+            is_zero_mod(&det3(&m))
+        },
+    };
+    checks.push(Check {
+        perturbed: Some(rank_perturbed),
+        ..check(
         "68",
         "rank_two_68",
         "the matrix of the fixed equations in (dtheta, deta, dnu) has a zero determinant (the last two equations are proportional), so dtheta stays free",
         &det3(&mat),
         &det3(&mat),
         format!("the minor of the first two equations in (dtheta, dnu) is {} (not identically zero: rank 2)", show(&minor.expand())),
-    ));
+    )
+    });
     // The minor with the second equation's dnu coefficient dropped (a coefficient of the derived
     // fixed equations zeroed): it must then vanish, and the check (not identically zero) fail.
     let minor_perturbed = crate::Perturbed {

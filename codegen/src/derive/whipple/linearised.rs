@@ -19,7 +19,8 @@ use symbolica::atom::{Atom, AtomCore};
 
 use super::nonlinear::INDEPENDENT;
 use super::{
-    check, check_perturbed, description, reduce, vanishes, Matrices, COS_LAMBDA, SIN_LAMBDA,
+    check, check_perturbed, description, reduce, vanishes, with_perturbation, Matrices, COS_LAMBDA,
+    SIN_LAMBDA,
 };
 use crate::cas::{expr, reduce_pair, var};
 use crate::mechanics::engine;
@@ -150,11 +151,6 @@ pub fn origins(d: &Derivation, reference: &Reference) -> Result<(Linear, Origins
 /// $\sin^2\lambda + \cos^2\lambda = 1$.
 fn normal(e: &Atom) -> Atom {
     reduce_pair(&stand_ins(&e.expand()), &var(SIN_LAMBDA), &var(COS_LAMBDA))
-}
-
-/// `check` with `perturbed` as its falsification.
-fn with_perturbation(check: Check, perturbed: Option<crate::Perturbed>) -> Check {
-    Check { perturbed, ..check }
 }
 
 /// One route's lean and steer matrices, with the checks that they are the benchmark's form.

@@ -99,6 +99,11 @@ pub(super) fn check_perturbed(
     Check { perturbed: Some(perturbed), ..check(id, statement, holds, detail) }
 }
 
+/// `check` with `perturbed` as its falsification.
+pub(super) fn with_perturbation(check: Check, perturbed: Option<crate::Perturbed>) -> Check {
+    Check { perturbed, ..check }
+}
+
 /// A check of the linear model's section.
 pub(super) fn check(id: &str, statement: &str, holds: bool, detail: String) -> Check {
     Check {
@@ -178,7 +183,13 @@ pub fn origin_checks(kane: &Matrices, parts: &linearised::Origins, checks: &mut 
             .chain([&plain.values[1][r] - &plain.values[0][r]])
             .collect();
         let holds = diff.iter().all(vanishes);
-        checks.push(check(
+        // Where the plain equation agrees, one of its terms scaled: it must then differ.
+        // The plain terms in the order of `diff`; the first that is not a literal zero.
+        let terms = [&plain.rate[r][0], &plain.angle[r][0], &plain.rate[r][1], &plain.angle[r][1]];
+        let perturbed = holds.then(|| terms.iter().position(|t| !t.is_zero())).flatten().map(|k| {
+            crate::falsify::perturb_one(terms[k], |d| vanishes(&(&diff[k] - terms[k] + d)))
+        });
+        checks.push(with_perturbation(check(
             &format!("plain_lagrange_{}", Q[r]),
             &format!("the plain Lagrange equation of {} (-dT/dq, the pitch following through the front contact, in place of Carvallo's -sum m M'|(dM/dq)') equals Kane's generalised inertia force at first order, identically in the lean, steer, their rates and v (informative: not required to hold)", Q[r]),
             holds,
@@ -190,7 +201,7 @@ pub fn origin_checks(kane: &Matrices, parts: &linearised::Origins, checks: &mut 
                     diff.iter().map(|e| reduce(e).to_string()).collect::<Vec<_>>().join("; ")
                 )
             },
-        ));
+        ), perturbed));
     }
     let perturbed =
         crate::falsify::perturb_one(&kane.k0[0][1], |d| vanishes(&(d - &kane.k0[1][0])));
