@@ -118,3 +118,64 @@ fn a_recorded_entry_perturbation_is_the_check_run_again() {
     let rel = f.evidence["rel_diff"];
     assert!((1e-8..1e-4).contains(&rel), "relative difference {rel:e} under a change of 1e-6");
 }
+
+/// The entries of the report of `model`, with their falsifications.
+fn falsified(model: &str) -> Vec<carvallo_report::Entry> {
+    let report = carvallo_report::REPORTS.iter().find(|r| r.model == model).unwrap();
+    carvallo_report::falsified_entries(report)
+}
+
+/// The entry `section | quantity` of `entries`, which must be `agrees` and state a
+/// falsification that breaks it; returns the falsification.
+fn broken<'a>(
+    entries: &'a [carvallo_report::Entry],
+    section: &str,
+    quantity: &str,
+) -> &'a carvallo_report::entry::Falsification {
+    let e = entries.iter().find(|e| e.section == section && e.quantity == quantity).unwrap();
+    assert_eq!(e.verdict, Verdict::Agrees, "{section} | {quantity}");
+    let f = e.falsification.as_ref().unwrap_or_else(|| panic!("{section} | {quantity}: none"));
+    assert!(f.breaks(e.verdict), "{section} | {quantity}: {}", f.perturbation);
+    f
+}
+
+#[test]
+fn the_hoop_discussion_formulas_read_the_perturbed_program() {
+    // (S1) of n° 14 is compared through the report's evaluator, which reads the perturbed
+    // `curve_s1_y`: its `x` scaled by 1 + 1e-6 moves it by about 1e-6, far beyond 1e-12.
+    let entries = falsified("hoop_discussion");
+    let f = broken(&entries, "14", "(S1) reality of the roots of S");
+    assert!(f.perturbation.contains("`curve_s1_y`"), "{}", f.perturbation);
+    assert!(f.perturbation.contains("1 + 1e-6"), "{}", f.perturbation);
+    assert_eq!(f.verdict, Verdict::DerivationDiffers);
+    let rel = f.evidence["rel_diff"];
+    assert!((1e-8..1e-4).contains(&rel), "relative difference {rel:e} under a change of 1e-6");
+    // Point B of n° 14 is a closed form (no argument): a constant of its cone is scaled.
+    let f = broken(&entries, "14", "point B: x");
+    assert!(f.perturbation.starts_with("constant n° 1"), "{}", f.perturbation);
+    assert!((1e-7..1e-5).contains(&f.evidence["rel_diff"]), "{:?}", f.evidence);
+    // The claim of n° 18 has a margin of 26 %: its stated perturbation (the `s` of the hoop's
+    // normalised (S) scaled by 0.7) moves the threshold over the pas accéléré's 1.50 m/s.
+    let f = broken(&entries, "18", "pas accéléré 1,50 m/s vs threshold sR");
+    assert!(f.perturbation.contains("`stability_n12`"), "{}", f.perturbation);
+    let threshold = f.evidence["threshold_sR_at_R_0.5_g_9.81"];
+    assert!((1.50..1.65).contains(&threshold), "threshold {threshold} m/s");
+}
+
+#[test]
+fn the_unicycle_entries_read_the_perturbed_program() {
+    // (E) of n° 29: the generated `equilibrium` with its `R` scaled by 1 + 1e-6 no longer agrees
+    // with the printed (E); the relative difference is of the order of the change (more where
+    // (E) is small beside its terms).
+    let entries = falsified("unicycle");
+    let f = broken(&entries, "29", "(E) steady state");
+    assert!(f.perturbation.contains("`equilibrium`"), "{}", f.perturbation);
+    assert_eq!(f.verdict, Verdict::DerivationDiffers);
+    assert!((1e-7..1e-2).contains(&f.evidence["rel_diff"]), "{:?}", f.evidence);
+    // C1 of n° 36 is the hoop's generated `inertia_c`: R scaled by 1 + 1e-6 moves it by 2e-6
+    // (C = mu R^2 / 2), a slide-rule difference, no longer `agrees`.
+    let f = broken(&entries, "36", "C1 = mu1 R^2 / 2 (kg m^2)");
+    assert!(f.perturbation.contains("`inertia_c`") && f.perturbation.contains("`R`"));
+    let rel = f.evidence["rel_diff"];
+    assert!((rel - 2e-6).abs() < 1e-8, "relative difference {rel:e}");
+}
