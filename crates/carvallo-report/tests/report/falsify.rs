@@ -179,3 +179,34 @@ fn the_unicycle_entries_read_the_perturbed_program() {
     let rel = f.evidence["rel_diff"];
     assert!((rel - 2e-6).abs() < 1e-8, "relative difference {rel:e}");
 }
+
+#[test]
+fn the_benchmark_matrices_and_speeds_read_the_perturbed_program() {
+    // M[1,2] of the benchmark is the generated `m12`: its `w` scaled by 1 + 1e-6 moves it by
+    // about 2e-6 (it is proportional to 1/w at first order beside the published 14 decimals).
+    let entries = falsified("whipple");
+    let f = broken(&entries, "benchmark", "M[1,2] (modern anchor)");
+    assert!(f.perturbation.contains("`m12`") && f.perturbation.contains("`w`"));
+    assert!((1e-7..1e-5).contains(&f.evidence["rel_diff"]), "{:?}", f.evidence);
+    // The weave speed is computed from the matrices by the runtime's Hurwitz window: the
+    // perturbed `m11` reaches it through the report's matrices.
+    let f = broken(&entries, "benchmark", "weave_speed (modern anchor)");
+    assert!(f.perturbation.contains("`m11`"), "{}", f.perturbation);
+    assert!((1e-11..1e-5).contains(&f.evidence["rel_diff"]), "{:?}", f.evidence);
+    // A structural zero says why it holds.
+    let c11 = entries.iter().find(|e| e.quantity == "C1[1,1] (modern anchor)").unwrap();
+    assert!(c11.note.contains("Holds by construction because"), "{}", c11.note);
+}
+
+#[test]
+fn the_steady_turn_entries_read_the_perturbed_program() {
+    // The row of the rear wheel of n° 85 is the generated `fall_rear`: B1 scaled by 1 + 1e-6.
+    let entries = falsified("bicycle_steady");
+    let f = broken(&entries, "85", "table n° 85, rear wheel, centrifugal terms");
+    assert!(f.perturbation.contains("`fall_rear`"), "{}", f.perturbation);
+    assert!((1e-7..1e-5).contains(&f.evidence["rel_diff"]), "{:?}", f.evidence);
+    // The geometry's theta1/theta of n° 97 exceeds 1 by 0.16: with eta negated it falls below.
+    let f = broken(&entries, "97", "theta1/theta imposed by the geometry at 20 km/h (first order)");
+    assert!(f.perturbation.contains("`eta`") && f.perturbation.contains("negated"));
+    assert!(f.evidence["derived"] < 1.0, "{:?}", f.evidence);
+}
