@@ -515,7 +515,7 @@ pub const ENTRY_FACTORS: [f64; 2] = [1.0 + 1e-6, 1.0 + 1e-2];
 
 /// The most perturbations [`falsify_entries`] tries for one entry before it records the first
 /// one tried, which did not break it.
-const MAX_TRIES: usize = 8;
+const MAX_TRIES: usize = 16;
 
 /// The outputs of `program` that `note` names: between backticks, or as the word after
 /// "generated" (`generated stability_n12`); the memoir's transcriptions (`memoir_*`) excluded,

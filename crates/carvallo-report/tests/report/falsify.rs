@@ -210,3 +210,31 @@ fn the_steady_turn_entries_read_the_perturbed_program() {
     assert!(f.perturbation.contains("`eta`") && f.perturbation.contains("negated"));
     assert!(f.evidence["derived"] < 1.0, "{:?}", f.evidence);
 }
+
+#[test]
+fn the_geometry_tables_read_the_perturbed_program() {
+    // σ1 of n° 52 at gamma = 0 is Newton's solution of the generated contact equations: with the
+    // `R` of `contact_height` scaled by 1 + 1e-6 in the solver's evaluations the contact moves
+    // off the printed 0' (a fraction of a minute: `rounding`, no longer `agrees`).
+    let entries = falsified("bicycle_geometry");
+    let f = broken(&entries, "52", "table n° 52, gamma = 0°, sigma1 (minutes)");
+    assert!(f.perturbation.contains("`contact_height`"), "{}", f.perturbation);
+    assert_eq!(f.verdict, Verdict::Rounding);
+    // n° 56 at gamma = 0: the generated `mu_lowest` with `sigma` scaled by 1 + 1e-6 gives
+    // mu = 25° (1 + 1e-6).
+    let f = broken(&entries, "56", "table n° 56, gamma = 0°, theta = 20°, mu (degrees)");
+    assert!(f.perturbation.contains("`mu_lowest`") && f.perturbation.contains("`sigma`"));
+    let rel = f.evidence["rel_diff"];
+    assert!((rel - 1e-6).abs() < 1e-8, "relative difference {rel:e}");
+}
+
+#[test]
+fn the_kinematics_relations_read_the_perturbed_program() {
+    // (I) of n° 66 against finite differences of the exact contact: the generated
+    // `d_eta_d_theta` with its `R` scaled by 1 + 1e-6 is off by more than the tolerance 1e-6.
+    let entries = falsified("bicycle_kinematics");
+    let f = broken(&entries, "66", "(I) dη/dθ vs central differences of the exact η(θ, γ)");
+    assert!(f.perturbation.contains("`d_eta_d_theta`"), "{}", f.perturbation);
+    assert_eq!(f.verdict, Verdict::DerivationDiffers);
+    assert!((1e-6..1e-3).contains(&f.evidence["rel_diff"]), "{:?}", f.evidence);
+}
