@@ -189,8 +189,24 @@ pub fn entries() -> Vec<Entry> {
     out.extend(friction_entries());
     out.extend(incline_entries());
     out.extend(checks());
+    for e in out.iter_mut() {
+        if let Some((_, why)) = BY_CONSTRUCTION.iter().find(|(q, _)| *q == e.quantity) {
+            if e.verdict == Verdict::Agrees {
+                e.note = format!("{}. Holds by construction because {why}", e.note);
+            }
+        }
+    }
     out
 }
+
+/// The entries of n° 117–122 that hold by construction, by quantity, with the reason (appended
+/// to the note while they agree).
+const BY_CONSTRUCTION: [(&str, &str); 4] = [
+    ("A'' = A + 2 A1", "the generated `fall_a2` is the parameter A2 itself: the column sum of the n° 116 tables simplifies to A + 2A1, which the model takes as its constant (100 kg m^2 of n° 117), so the comparison is of that constant with the printed 100"),
+    ("A' / s", "the generated `fall_a1` is the constant 0 of the derivation (no lean-rate term survives in the fall equation: a structural zero, whatever the constants), which no relative change or sign flip moves"),
+    ("sign table of the quartic (4 intervals × 5 terms)", "the signs are those of the memoir's own printed n° 120 coefficients (carvallo::bicycle_straight::memoir_quartic_120) at points inside his own intervals: no derived ingredient enters it"),
+    ("old bicycle mu/(2 mu1) = 7", "it is the quotient of the memoir's own printed constants mu = 70 kg and mu1 = 5 kg of n° 117: no model enters it"),
+];
 
 /// n° 116: the signs the OCR of the tables loses or adds, shown by n° 109–111. The derived
 /// coefficient of each $\gamma''$ entry is the part's own term of the general model
@@ -547,10 +563,55 @@ fn new_bicycle_entries(k: &Constants) -> Vec<Entry> {
     out
 }
 
-/// n° 123: the pendulum with constant friction.
+/// `entries` with, for each entry whose quantity is the first of a row of `rows`, the
+/// falsification that the same comparison gives in `perturbed` (the entries computed again with
+/// the row's model ingredient of the derived side changed, described by the row's text).
+fn with_falsifications(entries: Vec<Entry>, rows: &[(&str, Vec<Entry>, String)]) -> Vec<Entry> {
+    let mut out = entries;
+    for (quantity, perturbed, what) in rows {
+        let Some(p) = perturbed.iter().find(|p| p.quantity == *quantity) else { continue };
+        let Some(e) = out.iter_mut().find(|e| e.quantity == *quantity) else { continue };
+        let mut evidence: std::collections::BTreeMap<String, f64> = match &p.derived {
+            Derived::Number(v) => std::collections::BTreeMap::from([("derived".to_string(), *v)]),
+            Derived::Numbers(m) => m.clone(),
+        };
+        if let Some(r) = p.rel_diff {
+            evidence.insert("rel_diff".to_string(), r);
+        }
+        e.falsification = Some(crate::entry::Falsification {
+            perturbation: what.clone(),
+            verdict: p.verdict,
+            evidence,
+        });
+    }
+    out
+}
+
+/// n° 123: the pendulum with constant friction, each comparison with its falsification: the
+/// same comparison with the friction k (elongations) or the frequency a (duration) of the
+/// integrated pendulum scaled by 1 + 1e-2, the closed forms keeping theirs.
 fn friction_entries() -> Vec<Entry> {
+    let scaled = |what: &str| {
+        format!("the {what} of the pendulum integrated by RK4 (carvallo::bicycle_straight::friction_half_swing) scaled by 1 + 1e-2, the closed form keeping its own")
+    };
+    let rows = [
+        ("half swing: elongation θ0 - 2k", friction_entries_with(1.0, 1.01), scaled("friction k")),
+        ("half swing: duration π/a", friction_entries_with(1.01, 1.0), scaled("frequency a")),
+        (
+            "growing swing with friction: θ1 = -k + (θ0 - k) e^(ε T/2)",
+            friction_entries_with(1.0, 1.01),
+            scaled("friction k"),
+        ),
+    ];
+    with_falsifications(friction_entries_with(1.0, 1.0), &rows)
+}
+
+/// The entries of [`friction_entries`] with the frequency a and the friction k of the
+/// integrated pendulum (the derived side) multiplied by `a_factor` and `k_factor`.
+fn friction_entries_with(a_factor: f64, k_factor: f64) -> Vec<Entry> {
     let (a, kf, th0) = (1.3, 0.02, 0.3);
-    let (t, th) = friction_half_swing(a, kf, th0, 0.0, 20_000);
+    let (a_rk, k_rk) = (a * a_factor, kf * k_factor);
+    let (t, th) = friction_half_swing(a_rk, k_rk, th0, 0.0, 20_000);
     let tol = 1e-9;
     let mut out = Vec::new();
     for (q, formula, m, d) in [
@@ -575,7 +636,7 @@ fn friction_entries() -> Vec<Entry> {
         });
     }
     let eps = 0.01;
-    let (_, th_g) = friction_half_swing(a, kf, th0, eps, 20_000);
+    let (_, th_g) = friction_half_swing(a_rk, k_rk, th0, eps, 20_000);
     let his = -kf + (th0 - kf) * (eps * std::f64::consts::PI / a).exp();
     let r = rel(th_g, his);
     out.push(Entry {
@@ -591,15 +652,28 @@ fn friction_entries() -> Vec<Entry> {
     out
 }
 
-/// n° 124: the virtual works of gravity on inclined ground (unicycle).
+/// n° 124: the virtual works of gravity on inclined ground (unicycle), the two that agree with
+/// their falsification: the same comparison with the mass of the potential built from the
+/// vectors (the derived side) scaled by 1 + 1e-2, the printed formulas keeping μ = 80.
 fn incline_entries() -> Vec<Entry> {
+    let what = "the mass of the potential built from the vectors (carvallo::bicycle_straight::incline_virtual_works, the derived side) scaled by 1 + 1e-2, the printed formulas keeping μ = 80 kg".to_string();
+    let rows = [
+        ("(δθ) virtual work on inclined ground", incline_entries_with(1.01), what.clone()),
+        ("(δν) virtual work, cos δ read for cos θ", incline_entries_with(1.01), what),
+    ];
+    with_falsifications(incline_entries_with(1.0), &rows)
+}
+
+/// The entries of [`incline_entries`] with the mass of the derived potential multiplied by
+/// `mass_factor`.
+fn incline_entries_with(mass_factor: f64) -> Vec<Entry> {
     let (mu, g, h, r) = (80.0, 9.81, 1.1, 0.38);
     let mut worst = [0.0f64; 4];
     let mut scale = [0.0f64; 4];
     for i in [0.05, 0.2] {
         for delta in [0.3, 1.2, 2.5, -0.8] {
             for theta in [0.1, -0.4, 0.7] {
-                let w = incline_virtual_works(mu, g, h, r, i, delta, theta);
+                let w = incline_virtual_works(mu * mass_factor, g, h, r, i, delta, theta);
                 let printed = [
                     mu * g * h * (i.cos() * theta.sin() - i.sin() * theta.cos() * delta.sin()),
                     -mu * g * h * i.sin() * theta.sin() * theta.cos(),

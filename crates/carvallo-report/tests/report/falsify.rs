@@ -238,3 +238,18 @@ fn the_kinematics_relations_read_the_perturbed_program() {
     assert_eq!(f.verdict, Verdict::DerivationDiffers);
     assert!((1e-6..1e-3).contains(&f.evidence["rel_diff"]), "{:?}", f.evidence);
 }
+
+#[test]
+fn the_straight_running_numerical_routes_state_their_perturbation() {
+    // n° 123: the RK4 half swing against π/a; the integrated pendulum's frequency a scaled by
+    // 1 + 1e-2 (the closed form keeping its own) moves the duration by 1 %, far beyond the RK4
+    // tolerance 1e-9.
+    let entries = falsified("bicycle_straight");
+    let f = broken(&entries, "123", "half swing: duration π/a");
+    assert!(f.perturbation.contains("frequency a"), "{}", f.perturbation);
+    let rel = f.evidence["rel_diff"];
+    assert!((rel - 0.01 / 1.01).abs() < 1e-6, "relative difference {rel:e}");
+    // n° 124: the mass of the derived potential scaled by 1 + 1e-2.
+    let f = broken(&entries, "124", "(δθ) virtual work on inclined ground");
+    assert!((f.evidence["rel_diff"] - 0.01 / 1.01).abs() < 1e-6, "{:?}", f.evidence);
+}
