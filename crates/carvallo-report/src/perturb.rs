@@ -507,6 +507,26 @@ pub fn falsify_table(entries: Vec<Entry>, table: &[EntryRow]) -> Vec<Entry> {
     out
 }
 
+/// `entries` with, for each row of `rows` (a quantity, the entries computed again with a
+/// stated model ingredient of the derived side changed, the words stating it), the entry of
+/// that quantity given the falsification the same comparison gives in the recomputed entries:
+/// for an entry computed by a numerical route of the runtime that no generated program of the
+/// report feeds (an RK4 integration, a potential differentiated by central differences, a
+/// nonlinear model's steady turn).
+pub fn falsify_by_rerun(entries: Vec<Entry>, rows: &[(String, Vec<Entry>, String)]) -> Vec<Entry> {
+    let mut out = entries;
+    for (quantity, perturbed, what) in rows {
+        let Some(p) = perturbed.iter().find(|p| p.quantity == *quantity) else { continue };
+        let Some(e) = out.iter_mut().find(|e| e.quantity == *quantity) else { continue };
+        e.falsification = Some(Falsification {
+            perturbation: what.clone(),
+            verdict: p.verdict,
+            evidence: evidence_of(p),
+        });
+    }
+    out
+}
+
 /// The relative changes [`falsify_entries`] tries, in order: $10^{-6}$ (a million times the
 /// agreement tolerance of a formula, [`crate::policy::AGREEMENT_TOLERANCE`]), then $10^{-2}$
 /// (above the largest tolerance of a numerical route, [`crate::policy::NUMERIC_TOLERANCE_MAX`],

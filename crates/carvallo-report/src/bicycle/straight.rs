@@ -563,30 +563,6 @@ fn new_bicycle_entries(k: &Constants) -> Vec<Entry> {
     out
 }
 
-/// `entries` with, for each entry whose quantity is the first of a row of `rows`, the
-/// falsification that the same comparison gives in `perturbed` (the entries computed again with
-/// the row's model ingredient of the derived side changed, described by the row's text).
-fn with_falsifications(entries: Vec<Entry>, rows: &[(&str, Vec<Entry>, String)]) -> Vec<Entry> {
-    let mut out = entries;
-    for (quantity, perturbed, what) in rows {
-        let Some(p) = perturbed.iter().find(|p| p.quantity == *quantity) else { continue };
-        let Some(e) = out.iter_mut().find(|e| e.quantity == *quantity) else { continue };
-        let mut evidence: std::collections::BTreeMap<String, f64> = match &p.derived {
-            Derived::Number(v) => std::collections::BTreeMap::from([("derived".to_string(), *v)]),
-            Derived::Numbers(m) => m.clone(),
-        };
-        if let Some(r) = p.rel_diff {
-            evidence.insert("rel_diff".to_string(), r);
-        }
-        e.falsification = Some(crate::entry::Falsification {
-            perturbation: what.clone(),
-            verdict: p.verdict,
-            evidence,
-        });
-    }
-    out
-}
-
 /// n° 123: the pendulum with constant friction, each comparison with its falsification: the
 /// same comparison with the friction k (elongations) or the frequency a (duration) of the
 /// integrated pendulum scaled by 1 + 1e-2, the closed forms keeping theirs.
@@ -595,15 +571,23 @@ fn friction_entries() -> Vec<Entry> {
         format!("the {what} of the pendulum integrated by RK4 (carvallo::bicycle_straight::friction_half_swing) scaled by 1 + 1e-2, the closed form keeping its own")
     };
     let rows = [
-        ("half swing: elongation θ0 - 2k", friction_entries_with(1.0, 1.01), scaled("friction k")),
-        ("half swing: duration π/a", friction_entries_with(1.01, 1.0), scaled("frequency a")),
         (
-            "growing swing with friction: θ1 = -k + (θ0 - k) e^(ε T/2)",
+            "half swing: elongation θ0 - 2k".to_string(),
+            friction_entries_with(1.0, 1.01),
+            scaled("friction k"),
+        ),
+        (
+            "half swing: duration π/a".to_string(),
+            friction_entries_with(1.01, 1.0),
+            scaled("frequency a"),
+        ),
+        (
+            "growing swing with friction: θ1 = -k + (θ0 - k) e^(ε T/2)".to_string(),
             friction_entries_with(1.0, 1.01),
             scaled("friction k"),
         ),
     ];
-    with_falsifications(friction_entries_with(1.0, 1.0), &rows)
+    crate::perturb::falsify_by_rerun(friction_entries_with(1.0, 1.0), &rows)
 }
 
 /// The entries of [`friction_entries`] with the frequency a and the friction k of the
@@ -658,10 +642,14 @@ fn friction_entries_with(a_factor: f64, k_factor: f64) -> Vec<Entry> {
 fn incline_entries() -> Vec<Entry> {
     let what = "the mass of the potential built from the vectors (carvallo::bicycle_straight::incline_virtual_works, the derived side) scaled by 1 + 1e-2, the printed formulas keeping μ = 80 kg".to_string();
     let rows = [
-        ("(δθ) virtual work on inclined ground", incline_entries_with(1.01), what.clone()),
-        ("(δν) virtual work, cos δ read for cos θ", incline_entries_with(1.01), what),
+        (
+            "(δθ) virtual work on inclined ground".to_string(),
+            incline_entries_with(1.01),
+            what.clone(),
+        ),
+        ("(δν) virtual work, cos δ read for cos θ".to_string(), incline_entries_with(1.01), what),
     ];
-    with_falsifications(incline_entries_with(1.0), &rows)
+    crate::perturb::falsify_by_rerun(incline_entries_with(1.0), &rows)
 }
 
 /// The entries of [`incline_entries`] with the mass of the derived potential multiplied by

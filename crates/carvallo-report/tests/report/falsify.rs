@@ -253,3 +253,17 @@ fn the_straight_running_numerical_routes_state_their_perturbation() {
     let f = broken(&entries, "124", "(δθ) virtual work on inclined ground");
     assert!((f.evidence["rel_diff"] - 0.01 / 1.01).abs() < 1e-6, "{:?}", f.evidence);
 }
+
+#[test]
+fn the_steady_turn_roots_fail_with_the_weight_reversed() {
+    // n° 105: real roots of opposite signs at every turn; with g negated in the derived model
+    // df/dtheta changes sign and the roots are no longer a saddle.
+    let entries = falsified("bicycle_turn");
+    let f =
+        broken(&entries, "105", "roots of (C) with the handlebar held (1/s), gamma = 5°, 20 km/h");
+    assert!(f.perturbation.contains("weight reversed"), "{}", f.perturbation);
+    assert_eq!(f.verdict, Verdict::DerivationDiffers);
+    // n° 102: df/dp' upright is A + 2 A1; scaled by 1 + 1e-2 in the model it is 101.
+    let f = broken(&entries, "102", "df/dp' upright (kg m^2)");
+    assert!((f.evidence["rel_diff"] - 0.01 / 1.01).abs() < 1e-6, "{:?}", f.evidence);
+}
