@@ -245,7 +245,7 @@ fn fixation_68(k: &Kinematics) -> Vec<Entry> {
         0,
         rank,
         &format!(
-            "generated analytic system of n° 61 in (dtheta, deta, dnu): largest |det| / column norms {worst_det:.1e}, smallest largest 2x2 minor / norms {least_minor:.3}: the bicycle held by brake, pedals and handlebar still falls about OM"
+            "generated analytic system of n° 61 in (dtheta, deta, dnu) (`dm_j_theta`, `dm_k_theta`, `dm_i_nu`, `dm_j_nu` and the eta, sigma columns): largest |det| / column norms {worst_det:.1e}, smallest largest 2x2 minor / norms {least_minor:.3}: the bicycle held by brake, pedals and handlebar still falls about OM"
         ),
     )]
 }
@@ -275,7 +275,7 @@ fn rest_69(k: &Kinematics) -> Vec<Entry> {
         ])),
         rel_diff: None,
         verdict: policy::claim(r.d_eta_d_theta.abs() < 1e-12 && eq.eta_prime_fd.abs() < 1e-8, Verdict::DerivationDiffers),
-        note: "(7): eta' = -y/(x cos theta) = 0 since y = -(R sin mu - c) sin gamma = 0; the exact eta(theta) at that steer is flat (differences of step 1e-4)".into(),
+        note: "(7): eta' = -y/(x cos theta) = 0 (generated `d_eta_d_theta`) since y = -(R sin mu - c) sin gamma = 0; the exact eta(theta) at that steer is flat (differences of step 1e-4)".into(),
     });
     let derived_fd = rel(r.eta_second, eq.eta_second_fd);
     e.push(Entry {
@@ -311,7 +311,7 @@ fn rest_69(k: &Kinematics) -> Vec<Entry> {
                 rel_diff: Some(rel(st.d2z, st.d2z_fd)),
                 verdict: policy::claim(st.d2z < 0.0 && st.d2z_fd < 0.0 && bound < 0.0 && rel(st.d2z, st.d2z_fd) < 1e-5, Verdict::DerivationDiffers),
                 note: format!(
-                    "illustrative centre of gravity (not in the memoir) x = {x} m, z = {z} m from S in the normal position (Z = {:.4} m, X = {:.4} m): -Z + X eta'' with the derived eta'' agrees with second differences of Z along the exact contact, and is negative as the memoir concludes (unstable); bound_z_r_x_lambda = -R + lambda eta'' < 0 covers every centre of gravity with Z > R and X < lambda, the memoir's argument; the printed eta'' gives memoir_formula, the same sign",
+                    "illustrative centre of gravity (not in the memoir) x = {x} m, z = {z} m from S in the normal position (Z = {:.4} m, X = {:.4} m): -Z + X eta'' with the derived eta'' (generated `eta_second`) agrees with second differences of Z along the exact contact, and is negative as the memoir concludes (unstable); bound_z_r_x_lambda = -R + lambda eta'' < 0 covers every centre of gravity with Z > R and X < lambda, the memoir's argument; the printed eta'' gives memoir_formula, the same sign",
                     st.z, st.x
                 ),
             });

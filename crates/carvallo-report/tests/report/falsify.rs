@@ -5,7 +5,7 @@
 //! claim with none either says in its `how` why it holds by construction, or is in the
 //! backlog below, by name, so that the count of checks not yet shown to fail can only fall.
 
-use carvallo_report::{all_claims, Verdict};
+use carvallo_report::{all_claims, Derived, Verdict};
 
 /// Claims whose check states no breaking perturbation yet (the backlog of issue 38). A claim
 /// leaves the list when it gains one ([`carvallo_report::Claim::falsified_by`]) or says why it
@@ -266,4 +266,38 @@ fn the_steady_turn_roots_fail_with_the_weight_reversed() {
     // n° 102: df/dp' upright is A + 2 A1; scaled by 1 + 1e-2 in the model it is 101.
     let f = broken(&entries, "102", "df/dp' upright (kg m^2)");
     assert!((f.evidence["rel_diff"] - 0.01 / 1.01).abs() < 1e-6, "{:?}", f.evidence);
+}
+
+#[test]
+fn the_rest_entries_fail_with_the_weight_reversed() {
+    // n° 67: U is a maximum in the normal position; with g negated in the derived model it is a
+    // minimum (the same stiffness, of the other sign).
+    let entries = falsified("bicycle_rest");
+    let q = "stiffness d2U/dgamma2 in the normal position, theta = gamma = 0 (J/rad^2)";
+    let e = entries.iter().find(|e| e.quantity == q).unwrap();
+    let f = broken(&entries, "67", q);
+    assert!(f.perturbation.contains("weight reversed"), "{}", f.perturbation);
+    let Derived::Number(own) = e.derived else { panic!("{q}: one number") };
+    assert!((f.evidence["derived"] + own).abs() < 1e-6 * own.abs(), "{own} vs {:?}", f.evidence);
+    // The direction of the shift is the front wheel's: without its mass there is none.
+    let f = broken(
+        &entries,
+        "67",
+        "direction of the shift: dU/dgamma at gamma55, the front wheel's part (J/rad)",
+    );
+    assert!(f.perturbation.contains("front wheel's mass set to 0"), "{}", f.perturbation);
+}
+
+#[test]
+fn the_fixed_bicycle_gains_a_rank_under_a_perturbed_displacement() {
+    // n° 68: the analytic system with dsigma = -deta, dgamma = dsigma1 = 0 is of rank 2; one
+    // generated column entry (`dm_j_theta`, its `R` scaled by 1 + 1e-6) makes it regular.
+    let entries = falsified("bicycle_kinematics");
+    let f = broken(
+        &entries,
+        "68",
+        "rank of (delta) with dsigma = -deta, dgamma = dsigma1 = 0 (dtheta free)",
+    );
+    assert!(f.perturbation.contains("`dm_j_theta`"), "{}", f.perturbation);
+    assert_ne!(f.verdict, Verdict::Agrees);
 }
