@@ -9,6 +9,15 @@
 //! claims read the generated outputs through [`discussion_output`], which evaluates the
 //! perturbed program with the interpreter of `carvallo_ir` when one is active and the compiled
 //! evaluator otherwise.
+//!
+//! The concordance's entries are falsified the same way ([`falsify_entries`]): each report's
+//! evaluators read the perturbed output through [`reading`] (one output of a compiled scene),
+//! [`overlay`] (every output at a point) or the readers above, and the runtime's routes
+//! through the hook of [`carvallo::bicycle_geometry::with_reader`] or a bicycle built from the
+//! read matrices (the benchmark). An entry whose check has a margin beyond the relative changes
+//! tried states a perturbation of a stated size ([`falsify_table`]); one computed by a
+//! numerical route that no generated program of the report feeds is computed again with a
+//! stated ingredient of the derived side changed ([`falsify_by_rerun`]).
 
 use std::cell::RefCell;
 use std::collections::{BTreeMap, BTreeSet};

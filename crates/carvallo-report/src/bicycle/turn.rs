@@ -141,7 +141,7 @@ fn turn_entries(
         rel_diff: None,
         verdict: policy::claim(c.dfdpp.is_finite() && c.dfdp.is_finite() && c.dfdtheta.is_finite(), Verdict::DerivationDiffers),
         note: format!(
-            "f is the lean row of the nonlinear model with the steer row dropped (the hands hold gamma) and the rear-wheel row dropped (the pedals hold the rolling speed s on the ground; the bearing rate then follows the lean rate); df/dp' = M11 + M13 dU/dp exact, df/dp and df/dtheta by central differences with Richardson's extrapolation (the two levels differ by {}); with the bearing rate held instead (bearing_held_*) df/dtheta is the same, lean {th:.5} rad, pitch {:.3e} rad",
+            "f is the lean row of the nonlinear model with the steer row dropped (the hands hold gamma) and the rear-wheel row dropped (the pedals hold the rolling speed s on the ground; the bearing rate then follows the lean rate); df/dp' = M11 + M13 dU/dp exact, df/dp and df/dtheta by central differences with Richardson's extrapolation (the two levels differ by {}); with the bearing rate held instead (bearing_held_*) df/dtheta is the same, lean {th:.5} rad, pitch {:.3e} rad. Holds by construction because the linearisation of one row in (theta, p, p') is a quadratic in lambda whatever the model: the entry states the form of (C), and checks only that its coefficients are finite; their values are judged, with their falsifications, by the entries of n° 102, 104 and 105",
             small(c.error, 1e-5),
             t.pitch
         ),
