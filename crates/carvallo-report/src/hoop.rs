@@ -357,7 +357,7 @@ fn threshold_entries() -> Vec<Entry> {
             0.5,
             s,
             Verdict::DerivationDiffers,
-            "printed s / sqrt(g/R) >= 0,5; square root of the bisected threshold".into(),
+            "printed s / sqrt(g/R) >= 0,5; square root of the threshold bisected on the generated `stability_n12`".into(),
         ),
         number_entry(
             "16",

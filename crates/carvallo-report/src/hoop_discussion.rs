@@ -11,10 +11,11 @@ mod claims;
 
 use std::collections::BTreeMap;
 
-use carvallo::hoop_discussion::{self as hd, carvallo_root, special_points};
+use carvallo::hoop_discussion::{self as hd, carvallo_root_of, special_points};
 
 use crate::checks::{self, parse_checks, Finding};
 use crate::entry::{Derived, Entry, Memoir, Verdict};
+use crate::perturb::Perturbation;
 use crate::policy::{self, number_entry, printed_number, rel_diff};
 use crate::sample::Rng;
 
@@ -48,12 +49,22 @@ fn points() -> Vec<[(&'static str, f64); 6]> {
         .collect()
 }
 
+/// Every output of the generated program at `args` ([`hd::eval`], missing names 0), the
+/// perturbed output replaced by its perturbed value while a perturbation of `hoop_discussion`
+/// is active ([`crate::perturb::overlay`]).
+fn eval(args: &[(&str, f64)]) -> BTreeMap<&'static str, f64> {
+    let mut values = hd::eval(args);
+    let get = |name: &str| Some(args.iter().find(|(k, _)| *k == name).map_or(0.0, |(_, v)| *v));
+    crate::perturb::overlay("hoop_discussion", get, &mut values);
+    values
+}
+
 /// Largest relative difference (floor 1e-9) between two outputs over the points.
 fn max_rel(derived: &str, memoir: &str) -> f64 {
     points()
         .iter()
         .map(|p| {
-            let v = hd::eval(p);
+            let v = eval(p);
             rel_diff(v[derived], v[memoir])
         })
         .fold(0.0, |a: f64, b| if b.is_nan() { f64::INFINITY } else { a.max(b) })
@@ -142,7 +153,10 @@ pub fn point_entries(formulas_agree: bool) -> Vec<Entry> {
 pub fn entries() -> Vec<Entry> {
     let mut out = Vec::new();
     let sp = special_points();
-    let root = carvallo_root();
+    let root = carvallo_root_of(
+        |t| crate::perturb::discussion_output("quartic_f", &[("t", t)]),
+        crate::perturb::discussion_output("vertical_t", &[]),
+    );
     let fa = n12_forms_agree();
     // n° 13.
     out.push(formula_entry("13", "(ℰ) reality curve", "x^2 + (2/3)xy - 1 = 0", "reality_curve", "memoir_reality_curve", Verdict::DerivationDiffers, "numerator of the discriminant of the derived E(n) in x = cos(th), y = s^2, divided by its constant ratio to the printed curve (symbolic check reality_curve)"));
@@ -163,7 +177,7 @@ pub fn entries() -> Vec<Entry> {
         "14",
         "point B: x",
         sqrt2 / 2.0,
-        sp.b.0,
+        crate::perturb::discussion_output("point_b_x", &[]),
         Verdict::DerivationDiffers,
         "printed sqrt(2)/2; generated point_b_x (maximum of the derived (S1))".into(),
     ));
@@ -171,18 +185,18 @@ pub fn entries() -> Vec<Entry> {
         "14",
         "point B: y",
         3.0 * sqrt2 / 16.0,
-        sp.b.1,
+        crate::perturb::discussion_output("point_b_y", &[]),
         Verdict::DerivationDiffers,
         "printed 3 sqrt(2)/16; generated point_b_y".into(),
     ));
-    out.push(number_entry("14", "tangent of (S) at A: slope", -3.0, sp.slopes_a_d.0, Verdict::DerivationDiffers, "-P_x/P_y of the derived (S) at (1, 0); equal to the slope of (ℰ) there (check tangent_a_reality)".into()));
+    out.push(number_entry("14", "tangent of (S) at A: slope", -3.0, crate::perturb::discussion_output("tangent_a_slope", &[]), Verdict::DerivationDiffers, "-P_x/P_y of the derived (S) at (1, 0) (generated `tangent_a_slope`); equal to the slope of (ℰ) there (check tangent_a_reality)".into()));
     out.push(number_entry(
         "14",
         "tangent of (S) at D: slope",
         0.0,
-        sp.slopes_a_d.1,
+        crate::perturb::discussion_output("tangent_d_slope", &[]),
         Verdict::DerivationDiffers,
-        "-P_x/P_y of the derived (S) at (1, 1/4): horizontal".into(),
+        "-P_x/P_y of the derived (S) at (1, 1/4) (generated `tangent_d_slope`): horizontal. Holds by construction because the generated `tangent_d_slope` is the exact 0 that the regeneration's simplification of -P_x/P_y at D left as a constant (its derivation is the symbolic check tangent_d_memoir): no relative change or sign flip of the derived side moves a 0".into(),
     ));
     // n° 14: Carvallo's method.
     let shifted_ok = root.shifted == [28.0, 68.0, 51.0, 14.0, 1.0];
@@ -194,7 +208,7 @@ pub fn entries() -> Vec<Entry> {
         derived: Derived::Numbers(root.shifted.iter().enumerate().map(|(k, c)| (format!("u^{}", 4 - k), *c)).collect()),
         rel_diff: None,
         verdict: policy::claim(shifted_ok, Verdict::DerivationDiffers),
-        note: "Carvallo's Horner tableau (repeated synthetic division by t - 1) run on the generated F(t); rows equal to the printed ones".into(),
+        note: "Carvallo's Horner tableau (repeated synthetic division by t - 1) run on the generated F(t) (`quartic_f`); rows equal to the printed ones".into(),
     });
     out.push(printed_number("14", "root squaring: v^4 after two squarings", 7332.0, 0, root.v4, fa, "second root-squaring row of v^4 + 14v^3 + 51v^2 + 68v + 28 (v = 1/u): 94^2 - 2 x 753 = 7330; Carvallo's slide rule reads 51^2 = 2601 as 2600, whence his 752 and 7332"));
     out.push(printed_number(
@@ -222,7 +236,7 @@ pub fn entries() -> Vec<Entry> {
         ])),
         rel_diff: None,
         verdict: policy::claim(rel_to_14u < 5e-4, Verdict::MemoirError),
-        note: "reading: a relative error of the equation, for its root u in (-0,2; 0) (the vertical tangent): the residual at u = -0,10807 (exact, in f64, 6,5e-4; Carvallo's slide-rule 0,0004) over the equation's largest term 14u = 1,513 is below 5e-4 (his: 2,6e-4); it holds also for the quantity used next, t = x^2 = 0,89193 (t_rel_error), but not for the root u itself, off by 1,15e-3 relative (root_rel_error); claim hoop-root-squaring-half-thousandth".into(),
+        note: "reading: a relative error of the equation, for its root u in (-0,2; 0) (the vertical tangent): the residual at u = -0,10807 (exact, in f64, 6,5e-4; Carvallo's slide-rule 0,0004) over the equation's largest term 14u = 1,513 is below 5e-4 (his: 2,6e-4); it holds also for the quantity used next, t = x^2 = 0,89193 (t_rel_error), but not for the root u itself, off by 1,15e-3 relative (root_rel_error); the equation in u is the generated `quartic_f` shifted by Horner's tableau; claim hoop-root-squaring-half-thousandth".into(),
     });
     let v = sp.vertical;
     out.push(printed_number("14", "vertical tangent: product of the y roots", 0.0430, 4, v.y_product, fa, "3(1 + x^2)(1 - x^2)/(16 x^2) at the exact t (constant over leading coefficient of the generated (S))"));
@@ -372,8 +386,30 @@ fn e_roots(theta: f64, s: f64) -> Option<(f64, f64)> {
 
 /// n° 17: the table of the orderings of s, -n1, -n2 by region of fig. 4 bis, and which root
 /// "marche" (|n| < s, ρ = Rs/|n| > R) or "pivote", checked on a grid of points of each region
-/// placed between the generated curves (ℰ) (`reality_s2`) and (N) (`curve_n_s2`).
+/// placed between the generated curves (ℰ) (`reality_s2`) and (N) (`curve_n_s2`); the orderings
+/// that hold with their falsification ([`CURVE_N_LOWERED`]).
 fn marche_entries() -> Vec<Entry> {
+    let table: [crate::perturb::EntryRow; 1] = [(
+        &CURVE_N_LOWERED,
+        marche_entries_now,
+        &["marche/pivot: above (N)", "marche/pivot: (N)-(ℰ), beyond I"],
+    )];
+    crate::perturb::falsify_table(marche_entries_now(), &table)
+}
+
+/// (N) of n° 17 (generated `curve_n_s2`) with its constant n° 2 (the factor 2 of
+/// 2 sin(th)/(cos(th)(4 - 3 sin(th)))) halved: the points placed from the lowered (N) fall
+/// outside the regions, so the orderings of n° 17, which hold at every point of each region,
+/// must fail at some (the placements are relative to (N), within a factor 3 of it).
+const CURVE_N_LOWERED: Perturbation = Perturbation {
+    model: "hoop_discussion",
+    output: "curve_n_s2",
+    target: crate::perturb::Target::Constant(1),
+    factor: 0.5,
+};
+
+/// The entries of [`marche_entries`], computed now.
+fn marche_entries_now() -> Vec<Entry> {
     let theta_i = (2.0f64 / 3.0).asin().to_degrees();
     // (region, printed ordering, θ range in degrees, s^2 from (ℰ)'s and (N)'s s^2 at a fraction)
     type Region = (&'static str, &'static str, (f64, f64), Place, Test, &'static str);
@@ -411,7 +447,8 @@ fn marche_entries() -> Vec<Entry> {
         for i in 0..20 {
             let theta = (lo + (hi - lo) * (i as f64 + 0.5) / 20.0).to_radians();
             let args = [("theta", theta)];
-            let (e_s2, n_s2) = (hd::output("reality_s2", &args), hd::output("curve_n_s2", &args));
+            let out = |name: &str| crate::perturb::discussion_output(name, &args);
+            let (e_s2, n_s2) = (out("reality_s2"), out("curve_n_s2"));
             for k in 1..=5 {
                 let s = place(e_s2, n_s2, k as f64 / 6.0).sqrt();
                 let Some((n1, n2)) = e_roots(theta, s) else { continue };
@@ -451,12 +488,31 @@ fn marche_entries() -> Vec<Entry> {
     out
 }
 
+/// The threshold of n° 18 from the generated `stability_n12` with its `s` scaled by 0.7: the
+/// threshold moves up by 1/0.7 (to 1.58 m/s), beyond the claim's margin (1.11 m/s against the
+/// pas accéléré's 1.50 m/s, 26 %), which the relative changes of
+/// [`crate::perturb::falsify_entries`] stay within.
+const THRESHOLD_S_SCALED: Perturbation = Perturbation {
+    model: "hoop",
+    output: "stability_n12",
+    target: crate::perturb::Target::Argument("s"),
+    factor: 0.7,
+};
+
 /// n° 16 and 18: the walking speeds 2,27 m/s (pas gymnastique) and 1,50 m/s (pas accéléré)
-/// that the memoir quotes from military regulations, placed on the normalised diagram.
+/// that the memoir quotes from military regulations, placed on the normalised diagram; the
+/// claim of n° 18 with its falsification ([`THRESHOLD_S_SCALED`]).
 fn speed_entries() -> Vec<Entry> {
+    let table: [crate::perturb::EntryRow; 1] =
+        [(&THRESHOLD_S_SCALED, speed_entries_now, &["pas accéléré 1,50 m/s vs threshold sR"])];
+    crate::perturb::falsify_table(speed_entries_now(), &table)
+}
+
+/// The entries of [`speed_entries`], computed now.
+fn speed_entries_now() -> Vec<Entry> {
     let (r, g) = (0.5_f64, 9.81_f64);
     let unit = (g * r).sqrt();
-    let s_min = hd::bisect(|s| carvallo::hoop::normalised::stability(0.0, s, 0.0), 0.1, 2.0)
+    let s_min = hd::bisect(|s| crate::perturb::normalised("stability_n12", 0.0, s, 0.0), 0.1, 2.0)
         .unwrap_or(f64::NAN);
     let why = "the speed is quoted from military regulations, not derived: nothing in the memoir's mechanics fixes it (R = 0,50 m is only his example and g is not stated), so the number itself cannot be checked; what is checked is the claim the memoir draws from it";
     let gym = 2.27 / unit;
@@ -486,9 +542,18 @@ fn speed_entries() -> Vec<Entry> {
             ])),
             rel_diff: None,
             verdict: policy::claim(accel_threshold < 1.50, Verdict::DerivationDiffers),
-            note: format!("{why} (the threshold sR >= 0.5 sqrt(gR) is \"un peu inférieure\" to it): threshold s from the root of the generated normalised (S) at th = 0, n = 0, times sqrt(gR); the memoir's 1,20 is 0.5 x his 2,40 (entry of n° 16)"),
+            note: format!("{why} (the threshold sR >= 0.5 sqrt(gR) is \"un peu inférieure\" to it): threshold s from the root of the generated normalised (S) (`stability_n12`) at th = 0, n = 0, times sqrt(gR); the memoir's 1,20 is 0.5 x his 2,40 (entry of n° 16)"),
         },
     ]
+}
+
+/// The closed forms (6), (7) of n° 19 (generated `stick_theta`, `stick_n`) at time `time`, as
+/// [`hd::stick_theta_n`] gives them, read through [`crate::perturb::discussion_output`] (so that a
+/// perturbed program is seen).
+fn stick_theta_n(r: f64, g: f64, s: f64, m: f64, m1: f64, time: f64) -> (f64, f64) {
+    let args = [("R", r), ("g", g), ("s", s), ("M", m), ("M1", m1), ("time", time)];
+    let out = |name: &str| crate::perturb::discussion_output(name, &args);
+    (out("stick_theta"), out("stick_n"))
 }
 
 /// n° 19: the OCR's "cosh" and the sign argument, checked on the generated closed forms (6),
@@ -514,7 +579,7 @@ fn stick_entries() -> Vec<Entry> {
         ("push at the top (M < 0, M1 = 0)", -1.0, 0.0, -1.0),
         ("front push (M < 0, M1 > 0)", -1.0, 4.0, 1.0),
     ] {
-        let (th_cf, n_cf) = hd::stick_theta_n(r, g, s, m, m1, 3.0 * time);
+        let (th_cf, n_cf) = stick_theta_n(r, g, s, m, m1, 3.0 * time);
         let (th_lin, n_lin) = hd::stick_linearised_rk4(r, g, s, (m, m1), 3.0 * time, 400, true);
         let (th_full, n_full) = hd::stick_linearised_rk4(r, g, s, (m, m1), 3.0 * time, 400, false);
         let cf_vs_rk4 = rel_diff(th_cf, th_lin).max(rel_diff(n_cf, n_lin));
@@ -537,7 +602,7 @@ fn stick_entries() -> Vec<Entry> {
             ])),
             rel_diff: None,
             verdict: policy::claim(ok, Verdict::DerivationDiffers),
-            note: format!("R = {r} m, g = {g}, s = 2 sqrt(g/R), at t = 6/h; memoir column: sign of th (n must have the opposite sign); closed forms (6), (7) generated, RK4 (400 steps) of the linearised and of the full equations (2) of n° 19 with constant moments and s"),
+            note: format!("R = {r} m, g = {g}, s = 2 sqrt(g/R), at t = 6/h; memoir column: sign of th (n must have the opposite sign); closed forms (6), (7) generated (`stick_theta`, `stick_n`), RK4 (400 steps) of the linearised and of the full equations (2) of n° 19 with constant moments and s"),
         });
     }
     // Early times with M1 alone: n = M1 t - 2 s th has M1's sign (the sign of th) at first.

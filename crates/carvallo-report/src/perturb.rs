@@ -9,6 +9,15 @@
 //! claims read the generated outputs through [`discussion_output`], which evaluates the
 //! perturbed program with the interpreter of `carvallo_ir` when one is active and the compiled
 //! evaluator otherwise.
+//!
+//! The concordance's entries are falsified the same way ([`falsify_entries`]): each report's
+//! evaluators read the perturbed output through [`reading`] (one output of a compiled scene),
+//! [`overlay`] (every output at a point) or the readers above, and the runtime's routes
+//! through the hook of [`carvallo::bicycle_geometry::with_reader`] or a bicycle built from the
+//! read matrices (the benchmark). An entry whose check has a margin beyond the relative changes
+//! tried states a perturbation of a stated size ([`falsify_table`]); one computed by a
+//! numerical route that no generated program of the report feeds is computed again with a
+//! stated ingredient of the derived side changed ([`falsify_by_rerun`]).
 
 use std::cell::RefCell;
 use std::collections::{BTreeMap, BTreeSet};
@@ -57,9 +66,26 @@ struct Active {
     output: String,
     program: Program,
     interp: Interpreter,
+    /// The perturbed output alone (the perturbed program with its other outputs and the
+    /// instructions only they need removed), for the readers that need only it.
+    single: Program,
+    /// The interpreter of `single`.
+    single_interp: Interpreter,
 }
 
 impl Active {
+    /// The perturbed output at the named arguments (`missing` for a name not given): the same
+    /// value as its slot of [`Active::eval`], from its own instructions only.
+    fn eval_output(&self, get: impl Fn(&str) -> Option<f64>, missing: f64) -> Option<f64> {
+        let p = &self.single;
+        let params: Vec<f64> = p.params.iter().map(|n| get(n).unwrap_or(missing)).collect();
+        let inputs: Vec<f64> = p.inputs.iter().map(|n| get(n).unwrap_or(missing)).collect();
+        let mut scratch = vec![0.0; self.single_interp.scratch_len()];
+        let mut out = vec![0.0; self.single_interp.n_outputs()];
+        self.single_interp.eval(&params, &inputs, &mut scratch, &mut out).ok()?;
+        out.first().copied()
+    }
+
     /// Every output at the named arguments (`missing` for a name not given).
     fn eval(&self, get: impl Fn(&str) -> Option<f64>, missing: f64) -> Option<Vec<f64>> {
         let p = &self.program;
@@ -178,6 +204,22 @@ fn ir_of(model: &str) -> Option<&'static str> {
     carvallo::artifacts::artifact(model).map(|a| a.ir)
 }
 
+thread_local! {
+    static PARSED: RefCell<BTreeMap<String, std::rc::Rc<Program>>> =
+        const { RefCell::new(BTreeMap::new()) };
+}
+
+/// A model's generated program, parsed once per thread (every report's [`falsify_entries`]
+/// searches every model's outputs).
+fn parsed(model: &str) -> Option<std::rc::Rc<Program>> {
+    if let Some(p) = PARSED.with(|c| c.borrow().get(model).cloned()) {
+        return Some(p);
+    }
+    let p = std::rc::Rc::new(Program::parse(ir_of(model)?).ok()?);
+    PARSED.with(|c| c.borrow_mut().insert(model.to_string(), p.clone()));
+    Some(p)
+}
+
 /// Runs `f` with the perturbation active on this thread; `None` (and `f` not run) when the
 /// model, output or constant does not exist. Also returns the constant's value before scaling.
 pub fn with<T>(pert: &Perturbation, f: impl FnOnce() -> T) -> Option<(T, f64)> {
@@ -192,13 +234,30 @@ fn with_parts<T>(
     factor: f64,
     f: impl FnOnce() -> T,
 ) -> Option<(T, f64)> {
-    let program = Program::parse(ir_of(model)?).ok()?;
-    let (program, value) = perturbed_parts(&program, output, target, factor)?;
+    let program = parsed(model)?;
+    with_program(model, &program, output, target, factor, f)
+}
+
+/// [`with_parts`] on the model's program already parsed (`program`, the program of `model`).
+fn with_program<T>(
+    model: &'static str,
+    program: &Program,
+    output: &str,
+    target: Target,
+    factor: f64,
+    f: impl FnOnce() -> T,
+) -> Option<(T, f64)> {
+    let (program, value) = perturbed_parts(program, output, target, factor)?;
     let interp = Interpreter::new(&program).ok()?;
+    let single = program.select_outputs(&[output]).ok()?;
+    let single_interp = Interpreter::new(&single).ok()?;
     let output = output.to_string();
-    ACTIVE.with(|a| *a.borrow_mut() = Some(Active { model, output, program, interp }));
+    let active = Active { model, output, program, interp, single, single_interp };
+    let before = ACTIVE.with(|a| a.borrow_mut().replace(active));
     let out = f();
-    ACTIVE.with(|a| *a.borrow_mut() = None);
+    // The perturbation active before (a rerun of [`falsify_entries`] around an entry's own
+    // falsification, [`falsify_table`]) is active again.
+    ACTIVE.with(|a| *a.borrow_mut() = before);
     Some((out, value))
 }
 
@@ -215,26 +274,56 @@ pub fn overlay(
     ACTIVE.with(|a| {
         let a = a.borrow();
         let Some(active) = a.as_ref().filter(|a| a.model == model) else { return };
-        let Some(k) = active.program.outputs.iter().position(|o| o.name == active.output) else {
-            return;
-        };
         if let Some(slot) = values.get_mut(active.output.as_str()) {
-            if let Some(v) = active.eval(get, f64::NAN) {
-                *slot = v[k];
+            if let Some(v) = active.eval_output(get, f64::NAN) {
+                *slot = v;
             }
         }
     });
 }
 
+/// The output `name` of `model`'s generated program whose unperturbed value is `value`: its
+/// perturbed value when a perturbation of that very output is active on this thread ([`with`]),
+/// `value()` otherwise (not called then); `get` gives the program's arguments by name (a name it does not know is
+/// NaN). An evaluator that reads one output at a time (a compiled scene's `output(name)`) reads
+/// it through this function, so that a perturbation reaches the entries computed from it; the
+/// perturbed program is evaluated only when the output read is the perturbed one.
+pub fn reading(
+    model: &str,
+    name: &str,
+    get: impl Fn(&str) -> Option<f64>,
+    value: impl FnOnce() -> f64,
+) -> f64 {
+    let perturbed = ACTIVE.with(|a| {
+        let a = a.borrow();
+        let active = a.as_ref().filter(|a| a.model == model && a.output == name)?;
+        active.eval_output(get, f64::NAN)
+    });
+    perturbed.unwrap_or_else(value)
+}
+
+/// Whether the output `name` of `model`'s program is the one perturbed on this thread now
+/// ([`with`]): a report may reuse what it computed from that output unperturbed otherwise.
+pub fn perturbs(model: &str, name: &str) -> bool {
+    ACTIVE.with(|a| a.borrow().as_ref().is_some_and(|a| a.model == model && a.output == name))
+}
+
+/// Whether a perturbation of `model`'s program is active on this thread ([`with`]): an
+/// evaluator that cannot read the perturbed program output by output (a numerical route
+/// through a runtime function) routes through this module's readers instead while it is.
+pub fn is_active(model: &str) -> bool {
+    ACTIVE.with(|a| a.borrow().as_ref().is_some_and(|a| a.model == model))
+}
+
 /// The output `name` of the active perturbed program of `model` at the named arguments
-/// (missing names are 0), or `None` when no perturbation of that model is active.
+/// (missing names are 0) when it is the perturbed output, or `None` (the caller's unperturbed
+/// evaluator gives it: every other output of the perturbed program is the unperturbed one).
 fn active_output(model: &str, name: &str, args: &[(&str, f64)]) -> Option<f64> {
     ACTIVE.with(|a| {
         let a = a.borrow();
-        let active = a.as_ref().filter(|a| a.model == model)?;
-        let k = active.program.outputs.iter().position(|o| o.name == name)?;
+        let active = a.as_ref().filter(|a| a.model == model && a.output == name)?;
         let get = |n: &str| args.iter().find(|(k, _)| *k == n).map(|(_, v)| *v);
-        active.eval(get, 0.0).map(|v| v[k])
+        active.eval_output(get, 0.0)
     })
 }
 
@@ -383,6 +472,70 @@ pub fn falsify(claims: Vec<crate::claims::Claim>, table: &[Row]) -> Vec<crate::c
     out
 }
 
+/// The evidence of an entry computed on a perturbed input: its relative difference when it
+/// has one, otherwise what it derived (a claim's numbers).
+fn evidence_of(perturbed: &Entry) -> BTreeMap<String, f64> {
+    match (perturbed.rel_diff, &perturbed.derived) {
+        (Some(r), _) => BTreeMap::from([("rel_diff".to_string(), r)]),
+        (None, crate::entry::Derived::Number(v)) => BTreeMap::from([("derived".to_string(), *v)]),
+        (None, crate::entry::Derived::Numbers(m)) => m.clone(),
+    }
+}
+
+/// One row of an entries' falsification table: the perturbation, the function computing the
+/// entries to run under it, and the quantities of the entries whose falsification it is.
+pub type EntryRow = (&'static Perturbation, fn() -> Vec<Entry>, &'static [&'static str]);
+
+/// `entries` with, for each row of `table`, the entries whose quantity it names given the
+/// falsification the same computation gives with the row's perturbation active ([`with`]): for
+/// an entry whose check has a margin that the relative changes of [`falsify_entries`] stay
+/// within (a claim that an inequality holds), a perturbation of a stated size beyond it. Nothing
+/// is done while another perturbation is active (inside a rerun of [`falsify_entries`], whose
+/// own perturbation is then the one under test).
+pub fn falsify_table(entries: Vec<Entry>, table: &[EntryRow]) -> Vec<Entry> {
+    if ACTIVE.with(|a| a.borrow().is_some()) {
+        return entries;
+    }
+    let mut out = entries;
+    for (pert, run, quantities) in table {
+        let Some((perturbed, value)) = with(pert, run) else { continue };
+        let what = describe(pert, value);
+        for e in out.iter_mut().filter(|e| quantities.contains(&e.quantity.as_str())) {
+            let Some(p) =
+                perturbed.iter().find(|p| p.section == e.section && p.quantity == e.quantity)
+            else {
+                continue;
+            };
+            e.falsification = Some(Falsification {
+                perturbation: what.clone(),
+                verdict: p.verdict,
+                evidence: evidence_of(p),
+            });
+        }
+    }
+    out
+}
+
+/// `entries` with, for each row of `rows` (a quantity, the entries computed again with a
+/// stated model ingredient of the derived side changed, the words stating it), the entry of
+/// that quantity given the falsification the same comparison gives in the recomputed entries:
+/// for an entry computed by a numerical route of the runtime that no generated program of the
+/// report feeds (an RK4 integration, a potential differentiated by central differences, a
+/// nonlinear model's steady turn).
+pub fn falsify_by_rerun(entries: Vec<Entry>, rows: &[(String, Vec<Entry>, String)]) -> Vec<Entry> {
+    let mut out = entries;
+    for (quantity, perturbed, what) in rows {
+        let Some(p) = perturbed.iter().find(|p| p.quantity == *quantity) else { continue };
+        let Some(e) = out.iter_mut().find(|e| e.quantity == *quantity) else { continue };
+        e.falsification = Some(Falsification {
+            perturbation: what.clone(),
+            verdict: p.verdict,
+            evidence: evidence_of(p),
+        });
+    }
+    out
+}
+
 /// The relative changes [`falsify_entries`] tries, in order: $10^{-6}$ (a million times the
 /// agreement tolerance of a formula, [`crate::policy::AGREEMENT_TOLERANCE`]), then $10^{-2}$
 /// (above the largest tolerance of a numerical route, [`crate::policy::NUMERIC_TOLERANCE_MAX`],
@@ -391,7 +544,7 @@ pub const ENTRY_FACTORS: [f64; 2] = [1.0 + 1e-6, 1.0 + 1e-2];
 
 /// The most perturbations [`falsify_entries`] tries for one entry before it records the first
 /// one tried, which did not break it.
-const MAX_TRIES: usize = 8;
+const MAX_TRIES: usize = 16;
 
 /// The outputs of `program` that `note` names: between backticks, or as the word after
 /// "generated" (`generated stability_n12`); the memoir's transcriptions (`memoir_*`) excluded,
@@ -427,12 +580,45 @@ fn same_entry<'a>(entries: &'a [Entry], index: usize, entry: &Entry) -> Option<&
     entries.get(index).filter(same).or_else(|| entries.iter().find(same))
 }
 
+/// What [`falsify_entries`] scales in a copy of an output's cone: the `k`-th argument it reads
+/// ([`Target::Slot`]) or its `k`-th constant ([`Target::Constant`]), as a cache key.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, PartialOrd, Ord)]
+enum Target2 {
+    /// The `k`-th parameter or input the cone reads.
+    Slot(usize),
+    /// The `k`-th constant of the cone.
+    Constant(usize),
+}
+
+/// What [`falsify_entries`] tries to scale in the cone `members` of an output of `p`, with the
+/// words naming it: every argument the cone reads, then its constants (a closed form, such as
+/// the abscissa of point B of n° 14, reads no argument).
+fn candidates(p: &Program, members: &[usize]) -> Vec<(Target2, String)> {
+    let arguments = arguments_read(p, members)
+        .into_iter()
+        .enumerate()
+        .map(|(k, (_, name))| (Target2::Slot(k), format!("every use of `{name}`")));
+    let constants = members
+        .iter()
+        .filter_map(|&i| match p.insts[i].op {
+            Op::Const(c) => Some(c),
+            _ => None,
+        })
+        .enumerate()
+        .map(|(k, c)| {
+            let value = crate::render::text::format_significant(c, 6);
+            (Target2::Constant(k), format!("constant n° {} ({value})", k + 1))
+        });
+    arguments.chain(constants).collect()
+}
+
 /// `entries` (computed by `run`) with every `agrees` entry that states no falsification given
 /// one (issue 38): for each output of the generated programs of `models` that the entry's note
-/// names, each parameter or input that output reads and each factor of [`ENTRY_FACTORS`],
-/// `run` computes the entries again with that argument scaled in a copy of the output's
-/// instructions ([`Target::Slot`]; the memoir's transcriptions and every other output keep
-/// theirs), until the same entry (same section and quantity) no longer `agrees`. That
+/// names, each parameter or input that output reads, then each constant of it (a closed form
+/// reads no argument), and each factor of [`ENTRY_FACTORS`], `run` computes the entries again
+/// with that argument or constant scaled in a copy of the output's instructions
+/// ([`Target::Slot`], [`Target::Constant`]; the memoir's transcriptions and every other output
+/// keep theirs), until the same entry (same section and quantity) no longer `agrees`. That
 /// perturbation and the verdict it gives are recorded; when none of the first
 /// [`MAX_TRIES`] breaks it, the first tried is recorded with its verdict (`agrees`), which the
 /// falsifiability test reports. An entry whose note names no output, or whose evaluators do
@@ -443,9 +629,9 @@ pub fn falsify_entries(
     models: &[&'static str],
     run: impl Fn() -> Vec<Entry>,
 ) -> Vec<Entry> {
-    let programs: Vec<(&'static str, Program)> =
-        models.iter().filter_map(|m| Some((*m, Program::parse(ir_of(m)?).ok()?))).collect();
-    type Key = (&'static str, String, usize, usize);
+    let programs: Vec<(&'static str, std::rc::Rc<Program>)> =
+        models.iter().filter_map(|m| Some((*m, parsed(m)?))).collect();
+    type Key = (&'static str, String, Target2, usize);
     let mut cache: BTreeMap<Key, Option<(Vec<Entry>, String)>> = BTreeMap::new();
     let mut out = entries.clone();
     for (index, entry) in entries.iter().enumerate() {
@@ -460,19 +646,23 @@ pub fn falsify_entries(
         'search: for (model, program) in &programs {
             for output in outputs_named(program, &entry.note) {
                 let Some(members) = cone(program, &output) else { continue };
-                let read = arguments_read(program, &members);
+                let candidates = candidates(program, &members);
                 for (f, &factor) in ENTRY_FACTORS.iter().enumerate() {
-                    for (slot, (_, argument)) in read.iter().enumerate() {
+                    for (candidate, what) in &candidates {
                         if tries == MAX_TRIES {
                             break 'search;
                         }
                         tries += 1;
-                        let key = (*model, output.clone(), slot, f);
+                        let key = (*model, output.clone(), *candidate, f);
                         let rerun = cache.entry(key).or_insert_with(|| {
+                            let target = match *candidate {
+                                Target2::Slot(k) => Target::Slot(k),
+                                Target2::Constant(k) => Target::Constant(k),
+                            };
                             let (again, _) =
-                                with_parts(model, &output, Target::Slot(slot), factor, &run)?;
+                                with_program(model, program, &output, target, factor, &run)?;
                             let what = format!(
-                                "every use of `{argument}` in the generated `{output}` output of generated/{model}.ir scaled by 1 + {:.0e} (in a copy of the output's instructions: the memoir's transcribed outputs and every other output keep theirs)",
+                                "{what} in the generated `{output}` output of generated/{model}.ir scaled by 1 + {:.0e} (in a copy of the output's instructions: the memoir's transcribed outputs and every other output keep theirs)",
                                 factor - 1.0
                             );
                             Some((again, what))
@@ -482,10 +672,7 @@ pub fn falsify_entries(
                         let found = Falsification {
                             perturbation: what.clone(),
                             verdict: perturbed.verdict,
-                            evidence: perturbed
-                                .rel_diff
-                                .map(|r| BTreeMap::from([("rel_diff".to_string(), r)]))
-                                .unwrap_or_default(),
+                            evidence: evidence_of(perturbed),
                         };
                         if found.breaks(entry.verdict) {
                             first = Some(found);

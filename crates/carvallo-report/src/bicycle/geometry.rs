@@ -92,7 +92,7 @@ fn table_52(g: &Geometry) -> Vec<Entry> {
         let fo = g.first_order(gamma);
         let s1 = arcmin(contact.sigma - g.sigma0());
         let fo_note = format!(
-            "exact solution of (1), (2) by Newton ({} steps, residual {:.1e} m); first-order (2)' as derived gives {:.2}', as printed (sin sigma0) {:.2}'",
+            "exact solution of (1), (2) (the generated `contact_height`, `lowest_point`) by Newton ({} steps, residual {:.1e} m); first-order (2)' as derived gives {:.2}', as printed (sin sigma0) {:.2}'",
             contact.iterations,
             contact.residual,
             arcmin(fo.sigma1),
@@ -126,14 +126,18 @@ fn table_52(g: &Geometry) -> Vec<Entry> {
                 deg(fo.mu1)
             ),
         ));
-        e.push(number(
+        let mut mu_entry = number(
             "52",
             &format!("table n° 52, gamma = {gd}°, mu (degrees)"),
             MU_DEG[k],
             1,
             deg(contact.mu),
-            "exact mu of (1), (2)",
-        ));
+            "exact mu of (1), (2) (the generated `contact_height`, `lowest_point`)",
+        );
+        if *gd == 90.0 {
+            mu_entry.note.push_str(". Holds by construction because at gamma = 90° (theta = 0) the generated (2), `lowest_point`, vanishes at mu = 0 whatever sigma and the bicycle's constants (the factor cos(gamma) of tan(mu) = tan(sigma) cos(gamma)): mu = 0 solves it for any (1), so no perturbation of the derived side that keeps that factor moves it");
+        }
+        e.push(mu_entry);
         let note = if (MU1_MIN[k] - arcmin(mu1)).abs() > 1.0 {
             format!(
                 "exact mu - mu0 in minutes; the memoir's own first-order mu1 = sigma1 cos gamma / (cos^2 sigma0 + sin^2 sigma0 cos^2 gamma) with its sigma1 = {}' gives {:.1}'",
@@ -268,7 +272,7 @@ fn locus_54(g: &Geometry) -> Vec<Entry> {
             1,
             x,
             &format!(
-                "generated I|OM at the exact sigma, mu; with the memoir's own sigma1 and mu of n° 52 it is {:.2} cm",
+                "generated I|OM (`contact_x`) at the exact sigma, mu; with the memoir's own sigma1 and mu of n° 52 it is {:.2} cm",
                 100.0 * (own.contact[0] - g.wheelbase())
             ),
         ));
@@ -283,17 +287,21 @@ fn locus_54(g: &Geometry) -> Vec<Entry> {
                 "the table's y has the sign opposite to the printed formula y = -(R sin mu - c) sin gamma (J to the rider's left, check locus_y_54): at gamma = 90°, mu = 0 it is +c = +8 cm; the other rows are compared with -y",
             ));
         }
-        e.push(number(
+        let mut y_entry = number(
             "54",
             &format!("table n° 54, gamma = {gd}°, -y (cm)"),
             ym,
             1,
             -y,
             &format!(
-                "minus the generated J|OM (the table's sign, see gamma = 90°); with the memoir's own sigma1 and mu it is {:.2} cm",
+                "minus the generated J|OM (`contact_y`; the table's sign, see gamma = 90°); with the memoir's own sigma1 and mu it is {:.2} cm",
                 -100.0 * own.contact[1]
             ),
-        ));
+        );
+        if *gd == 0.0 {
+            y_entry.note.push_str(". Holds by construction because the generated `contact_y` carries the factor sin(gamma) (y = -(R sin mu - c) sin gamma, check locus_y_54): it is exactly 0 at gamma = 0 whatever sigma, mu and the bicycle's constants, and no scaling of them moves it");
+        }
+        e.push(y_entry);
     }
     e
 }
@@ -384,6 +392,20 @@ fn checks() -> Vec<Entry> {
 
 /// The bicycle geometry's entries, computed now.
 pub fn entries() -> Vec<Entry> {
+    if crate::perturb::is_active("bicycle_geometry") {
+        return carvallo::bicycle_geometry::with_reader(read, entries_now);
+    }
+    entries_now()
+}
+
+/// The reader of [`carvallo::bicycle_geometry::with_reader`] that gives the perturbed value of
+/// the perturbed output ([`crate::perturb::reading`]).
+fn read(output: &str, get: &dyn Fn(&str) -> Option<f64>, value: f64) -> f64 {
+    crate::perturb::reading("bicycle_geometry", output, get, || value)
+}
+
+/// The entries of [`entries`], computed now.
+fn entries_now() -> Vec<Entry> {
     let g = Geometry::old_model();
     let mut e = first_order_51(&g);
     e.extend(table_52(&g));

@@ -169,7 +169,7 @@ fn relations_66(k: &Kinematics) -> Vec<Entry> {
             worst_i,
             n,
             EXACT_REL_TOLERANCE,
-            "generated (I) (memoir's formulas with x, y, alpha, beta of the exact contact) against the numerical solution of the generated 3x3 analytic system, two independent paths",
+            "generated (I) (`d_eta_d_theta`, `d_nu_d_theta`, `d_eta_d_gamma`, `d_nu_d_gamma`: the memoir's formulas with x, y, alpha, beta of the exact contact) against the numerical solution of the generated 3x3 analytic system, two independent paths",
         ),
         worst_entry(
             "66",
@@ -178,7 +178,7 @@ fn relations_66(k: &Kinematics) -> Vec<Entry> {
             worst_fd[0],
             n,
             FD_REL_TOLERANCE,
-            "Newton solution of the contact equations at theta ± 1e-3, ± 5e-4, Richardson-extrapolated central differences",
+            "generated `d_eta_d_theta` against the Newton solution of the contact equations at theta ± 1e-3, ± 5e-4, Richardson-extrapolated central differences",
         ),
         worst_entry(
             "66",
@@ -187,7 +187,7 @@ fn relations_66(k: &Kinematics) -> Vec<Entry> {
             worst_fd[1],
             n,
             FD_REL_TOLERANCE,
-            "Newton solution of the contact equations at gamma ± 1e-3, ± 5e-4, Richardson-extrapolated central differences",
+            "generated `d_eta_d_gamma` against the Newton solution of the contact equations at gamma ± 1e-3, ± 5e-4, Richardson-extrapolated central differences",
         ),
         worst_entry(
             "66",
@@ -196,7 +196,7 @@ fn relations_66(k: &Kinematics) -> Vec<Entry> {
             worst_steady,
             n,
             EXACT_REL_TOLERANCE,
-            "dsigma = 1, dtheta = dgamma = 0 in the generated analytic system",
+            "generated `steady_n`, `steady_sigma1_rate` against dsigma = 1, dtheta = dgamma = 0 in the generated analytic system",
         ),
         worst_entry(
             "66",
@@ -205,7 +205,7 @@ fn relations_66(k: &Kinematics) -> Vec<Entry> {
             worst_centre,
             n,
             EXACT_REL_TOLERANCE,
-            "centre P on the rear axle's trace and on the front wheel's horizontal normal through M: n = R s/OP, R sigma1' = n PM along I1",
+            "generated `steady_n`, `steady_sigma1_rate` against the centre P on the rear axle's trace and on the front wheel's horizontal normal through M: n = R s/OP, R sigma1' = n PM along I1",
         ),
     ];
     match defect {
@@ -245,7 +245,7 @@ fn fixation_68(k: &Kinematics) -> Vec<Entry> {
         0,
         rank,
         &format!(
-            "generated analytic system of n° 61 in (dtheta, deta, dnu): largest |det| / column norms {worst_det:.1e}, smallest largest 2x2 minor / norms {least_minor:.3}: the bicycle held by brake, pedals and handlebar still falls about OM"
+            "generated analytic system of n° 61 in (dtheta, deta, dnu) (`dm_j_theta`, `dm_k_theta`, `dm_i_nu`, `dm_j_nu` and the eta, sigma columns): largest |det| / column norms {worst_det:.1e}, smallest largest 2x2 minor / norms {least_minor:.3}: the bicycle held by brake, pedals and handlebar still falls about OM"
         ),
     )]
 }
@@ -275,7 +275,7 @@ fn rest_69(k: &Kinematics) -> Vec<Entry> {
         ])),
         rel_diff: None,
         verdict: policy::claim(r.d_eta_d_theta.abs() < 1e-12 && eq.eta_prime_fd.abs() < 1e-8, Verdict::DerivationDiffers),
-        note: "(7): eta' = -y/(x cos theta) = 0 since y = -(R sin mu - c) sin gamma = 0; the exact eta(theta) at that steer is flat (differences of step 1e-4)".into(),
+        note: "(7): eta' = -y/(x cos theta) = 0 (generated `d_eta_d_theta`) since y = -(R sin mu - c) sin gamma = 0; the exact eta(theta) at that steer is flat (differences of step 1e-4)".into(),
     });
     let derived_fd = rel(r.eta_second, eq.eta_second_fd);
     e.push(Entry {
@@ -311,7 +311,7 @@ fn rest_69(k: &Kinematics) -> Vec<Entry> {
                 rel_diff: Some(rel(st.d2z, st.d2z_fd)),
                 verdict: policy::claim(st.d2z < 0.0 && st.d2z_fd < 0.0 && bound < 0.0 && rel(st.d2z, st.d2z_fd) < 1e-5, Verdict::DerivationDiffers),
                 note: format!(
-                    "illustrative centre of gravity (not in the memoir) x = {x} m, z = {z} m from S in the normal position (Z = {:.4} m, X = {:.4} m): -Z + X eta'' with the derived eta'' agrees with second differences of Z along the exact contact, and is negative as the memoir concludes (unstable); bound_z_r_x_lambda = -R + lambda eta'' < 0 covers every centre of gravity with Z > R and X < lambda, the memoir's argument; the printed eta'' gives memoir_formula, the same sign",
+                    "illustrative centre of gravity (not in the memoir) x = {x} m, z = {z} m from S in the normal position (Z = {:.4} m, X = {:.4} m): -Z + X eta'' with the derived eta'' (generated `eta_second`) agrees with second differences of Z along the exact contact, and is negative as the memoir concludes (unstable); bound_z_r_x_lambda = -R + lambda eta'' < 0 covers every centre of gravity with Z > R and X < lambda, the memoir's argument; the printed eta'' gives memoir_formula, the same sign",
                     st.z, st.x
                 ),
             });
@@ -357,6 +357,25 @@ fn checks() -> Vec<Entry> {
 
 /// The bicycle kinematics' entries, computed now.
 pub fn entries() -> Vec<Entry> {
+    if crate::perturb::is_active("bicycle_kinematics")
+        || crate::perturb::is_active("bicycle_geometry")
+    {
+        return carvallo::bicycle_geometry::with_reader(read, entries_now);
+    }
+    entries_now()
+}
+
+/// The reader of [`carvallo::bicycle_geometry::with_reader`] that gives the perturbed value of
+/// the perturbed output of either program the kinematics evaluates
+/// ([`crate::perturb::reading`]).
+fn read(output: &str, get: &dyn Fn(&str) -> Option<f64>, value: f64) -> f64 {
+    crate::perturb::reading("bicycle_kinematics", output, get, || {
+        crate::perturb::reading("bicycle_geometry", output, get, || value)
+    })
+}
+
+/// The entries of [`entries`], computed now.
+fn entries_now() -> Vec<Entry> {
     let k = Kinematics::old_model();
     let mut e = freedom_59(&k);
     e.extend(relations_66(&k));

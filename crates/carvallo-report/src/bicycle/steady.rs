@@ -91,7 +91,18 @@ fn points() -> Vec<Point> {
 }
 
 fn out(p: &Point, name: &str) -> f64 {
-    p.0.output(&p.1, name).unwrap_or(f64::NAN)
+    output(&p.0, &p.1, name)
+}
+
+/// The output `name` of `generated/bicycle_steady.ir` for `bike` at the state `x`
+/// ([`BicycleSteady::output`], NaN for no such output), read through
+/// [`crate::perturb::reading`]: its perturbed value while a perturbation of it is active.
+fn output(bike: &BicycleSteady, x: &SteadyState, name: &str) -> f64 {
+    let args = bike.arguments(x);
+    let get = |n: &str| args.iter().find(|(k, _)| *k == n).map(|(_, v)| *v);
+    crate::perturb::reading("bicycle_steady", name, get, || {
+        bike.output(x, name).unwrap_or(f64::NAN)
+    })
 }
 
 /// Why the loaded frame's rows of n° 85 and 94 differ.
@@ -156,7 +167,29 @@ fn memoir_state(eta: f64, s: f64) -> SteadyState {
     SteadyState { eta, omega: eta, s, ..SteadyState::default() }
 }
 
+/// The front frame's angle eta of the geometry's ratio of n° 97 negated: theta1/theta =
+/// 1 + (g l/(R s)^2) tan(eta) then falls below 1, which no relative change of the derived side
+/// within the ratio's margin (it exceeds 1 by 0.16 at 20 km/h) would do.
+const GEOMETRY_ETA_NEGATED: crate::perturb::Perturbation = crate::perturb::Perturbation {
+    model: "bicycle_steady",
+    output: "theta1_over_theta_geometry",
+    target: crate::perturb::Target::Argument("eta"),
+    factor: -1.0,
+};
+
+/// The numbers of n° 88–104, with the falsification of the geometric ratio of n° 97
+/// ([`GEOMETRY_ETA_NEGATED`]).
 fn numbers() -> Vec<Entry> {
+    let table: [crate::perturb::EntryRow; 1] = [(
+        &GEOMETRY_ETA_NEGATED,
+        numbers_now,
+        &["theta1/theta imposed by the geometry at 20 km/h (first order)"],
+    )];
+    crate::perturb::falsify_table(numbers_now(), &table)
+}
+
+/// The entries of [`numbers`], computed now.
+fn numbers_now() -> Vec<Entry> {
     let bike = BicycleSteady::new(BicycleParams::memoir()).expect("the memoir's constants");
     let p = bike.params();
     let eta = ETA_96_DEG.to_radians();
@@ -180,7 +213,7 @@ fn numbers() -> Vec<Entry> {
     let bike89 = BicycleSteady::new(BicycleParams { e: 0.20, ..p }).expect("valid");
     let bound89 = bike89.output(&SteadyState::default(), "epsilon_bound_89").unwrap_or(f64::NAN);
     e.push(number("89", "bound of epsilon (e = 0.20 m, h = 1 m)", 0.015, 3, bound89, &format!("generated `epsilon_bound_89` = (e/h)(c/l) = 0.20 x 0.0727; with the e = 0.15 m of n° 95 it is {bound:.4}")));
-    e.push(number("95", "mu e (kg m)", 10.5, 1, p.mass * p.e, "mu = 70 kg, e = 0.15 m"));
+    e.push(number("95", "mu e (kg m)", 10.5, 1, p.mass * p.e, "mu = 70 kg, e = 0.15 m. Holds by construction because it is the product of the memoir's own printed constants mu = 70 kg and e = 0.15 m: no model enters it"));
     e.push(number("95", "mu1 R (kg m)", 3.9, 1, p.wheel_mass * p.radius, "mu1 = 5 kg (n° 96; the OCR of n° 95 reads 57 kg), R = 0.38 m: 1.9, not 3.9 (3.9 would need mu1 = 10 kg, both wheels); the memoir's conclusion that mu e dominates mu1 R holds all the more"));
     let (se, r, l, c) = (eta.sin(), p.radius, p.wheelbase, p.offset);
     let x_term = p.mass * p.e / r * (r * se - c) / l;
@@ -231,7 +264,12 @@ fn numbers() -> Vec<Entry> {
         verdict: policy::finding(Verdict::MemoirError),
         note: format!("generated `theta1_over_theta` with the constants of n° 96: (2 mu1 sin(eta) + X)/(mu1 sin(eta) + X) = {derived_ratio:.4} > 1, X = {x_term:.3} kg; the memoir's {memoir_ratio:.4} < 1 comes from the dropped sin(omega) of (1)' (n° 95). With the factor kept the handlebar equation does not contradict the geometry (theta1 > theta), and n° 97's conclusion 'impossible to turn without hands' does not follow"),
     });
-    let geo20 = bike.geometric_theta1_over_theta(eta, s20);
+    // BicycleSteady::geometric_theta1_over_theta, read through the perturbation layer.
+    let geo20 = output(
+        &bike,
+        &SteadyState { eta, s: s20, ..SteadyState::default() },
+        "theta1_over_theta_geometry",
+    );
     e.push(Entry {
         falsification: None,
         section: "97".into(),
@@ -294,7 +332,7 @@ fn numbers() -> Vec<Entry> {
         70.0,
         0,
         p.mass * p.h,
-        "mu = 70 kg, h = 1 m; mu g h = 686.7 N m = 70 kgf m",
+        "mu = 70 kg, h = 1 m; mu g h = 686.7 N m = 70 kgf m. Holds by construction because it is the product of the memoir's own printed constants mu = 70 kg and h = 1 m (in kilogrammetres, g cancels): no model enters it",
     ));
     // n° 101–105 (the handlebar held): crate::bicycle::turn.
     e

@@ -138,8 +138,21 @@ fn s2(x: Option<f64>) -> f64 {
 }
 
 /// n° 116–117: Carvallo's formulas against the exact linearisation of his model through the
-/// general model, at three constant sets and four speeds.
+/// general model, at three constant sets and four speeds, with its falsification: the same
+/// comparison with the general model's trail c1 scaled by 1 + 1e-2 (Carvallo's formulas keeping
+/// theirs).
 fn concordance_entry() -> Entry {
+    let rows = [(
+        "the twelve coefficients of n° 117 vs the general model's exact linearisation".to_string(),
+        vec![concordance_entry_with(1.01)],
+        "the trail c1 of the general model (the exact linearisation through generated/whipple.ir, the derived side) scaled by 1 + 1e-2, Carvallo's formulas keeping theirs".to_string(),
+    )];
+    let base = vec![concordance_entry_with(1.0)];
+    crate::perturb::falsify_by_rerun(base, &rows).remove(0)
+}
+
+/// [`concordance_entry`] with the general model's trail c1 multiplied by `c1_factor`.
+fn concordance_entry_with(c1_factor: f64) -> Entry {
     let sets = [
         Constants::MEMOIR,
         Constants::MEMOIR_NEW,
@@ -147,7 +160,9 @@ fn concordance_entry() -> Entry {
     ];
     let mut worst: f64 = 0.0;
     for k in sets {
-        let (Ok(f), Ok(g)) = (Equations::from_formulas(&k), Equations::via_whipple(&k)) else {
+        let general = Constants { c1: c1_factor * k.c1, ..k };
+        let (Ok(f), Ok(g)) = (Equations::from_formulas(&k), Equations::via_whipple(&general))
+        else {
             worst = f64::INFINITY;
             continue;
         };
@@ -189,8 +204,24 @@ pub fn entries() -> Vec<Entry> {
     out.extend(friction_entries());
     out.extend(incline_entries());
     out.extend(checks());
+    for e in out.iter_mut() {
+        if let Some((_, why)) = BY_CONSTRUCTION.iter().find(|(q, _)| *q == e.quantity) {
+            if e.verdict == Verdict::Agrees {
+                e.note = format!("{}. Holds by construction because {why}", e.note);
+            }
+        }
+    }
     out
 }
+
+/// The entries of n° 117–122 that hold by construction, by quantity, with the reason (appended
+/// to the note while they agree).
+const BY_CONSTRUCTION: [(&str, &str); 4] = [
+    ("A'' = A + 2 A1", "the generated `fall_a2` is the parameter A2 itself: the column sum of the n° 116 tables simplifies to A + 2A1, which the model takes as its constant (100 kg m^2 of n° 117), so the comparison is of that constant with the printed 100"),
+    ("A' / s", "the generated `fall_a1` is the constant 0 of the derivation (no lean-rate term survives in the fall equation: a structural zero, whatever the constants), which no relative change or sign flip moves"),
+    ("sign table of the quartic (4 intervals × 5 terms)", "the signs are those of the memoir's own printed n° 120 coefficients (carvallo::bicycle_straight::memoir_quartic_120) at points inside his own intervals: no derived ingredient enters it"),
+    ("old bicycle mu/(2 mu1) = 7", "it is the quotient of the memoir's own printed constants mu = 70 kg and mu1 = 5 kg of n° 117: no model enters it"),
+];
 
 /// n° 116: the signs the OCR of the tables loses or adds, shown by n° 109–111. The derived
 /// coefficient of each $\gamma''$ entry is the part's own term of the general model
@@ -547,10 +578,39 @@ fn new_bicycle_entries(k: &Constants) -> Vec<Entry> {
     out
 }
 
-/// n° 123: the pendulum with constant friction.
+/// n° 123: the pendulum with constant friction, each comparison with its falsification: the
+/// same comparison with the friction k (elongations) or the frequency a (duration) of the
+/// integrated pendulum scaled by 1 + 1e-2, the closed forms keeping theirs.
 fn friction_entries() -> Vec<Entry> {
+    let scaled = |what: &str| {
+        format!("the {what} of the pendulum integrated by RK4 (carvallo::bicycle_straight::friction_half_swing) scaled by 1 + 1e-2, the closed form keeping its own")
+    };
+    let rows = [
+        (
+            "half swing: elongation θ0 - 2k".to_string(),
+            friction_entries_with(1.0, 1.01),
+            scaled("friction k"),
+        ),
+        (
+            "half swing: duration π/a".to_string(),
+            friction_entries_with(1.01, 1.0),
+            scaled("frequency a"),
+        ),
+        (
+            "growing swing with friction: θ1 = -k + (θ0 - k) e^(ε T/2)".to_string(),
+            friction_entries_with(1.0, 1.01),
+            scaled("friction k"),
+        ),
+    ];
+    crate::perturb::falsify_by_rerun(friction_entries_with(1.0, 1.0), &rows)
+}
+
+/// The entries of [`friction_entries`] with the frequency a and the friction k of the
+/// integrated pendulum (the derived side) multiplied by `a_factor` and `k_factor`.
+fn friction_entries_with(a_factor: f64, k_factor: f64) -> Vec<Entry> {
     let (a, kf, th0) = (1.3, 0.02, 0.3);
-    let (t, th) = friction_half_swing(a, kf, th0, 0.0, 20_000);
+    let (a_rk, k_rk) = (a * a_factor, kf * k_factor);
+    let (t, th) = friction_half_swing(a_rk, k_rk, th0, 0.0, 20_000);
     let tol = 1e-9;
     let mut out = Vec::new();
     for (q, formula, m, d) in [
@@ -575,7 +635,7 @@ fn friction_entries() -> Vec<Entry> {
         });
     }
     let eps = 0.01;
-    let (_, th_g) = friction_half_swing(a, kf, th0, eps, 20_000);
+    let (_, th_g) = friction_half_swing(a_rk, k_rk, th0, eps, 20_000);
     let his = -kf + (th0 - kf) * (eps * std::f64::consts::PI / a).exp();
     let r = rel(th_g, his);
     out.push(Entry {
@@ -591,15 +651,32 @@ fn friction_entries() -> Vec<Entry> {
     out
 }
 
-/// n° 124: the virtual works of gravity on inclined ground (unicycle).
+/// n° 124: the virtual works of gravity on inclined ground (unicycle), the two that agree with
+/// their falsification: the same comparison with the mass of the potential built from the
+/// vectors (the derived side) scaled by 1 + 1e-2, the printed formulas keeping μ = 80.
 fn incline_entries() -> Vec<Entry> {
+    let what = "the mass of the potential built from the vectors (carvallo::bicycle_straight::incline_virtual_works, the derived side) scaled by 1 + 1e-2, the printed formulas keeping μ = 80 kg".to_string();
+    let rows = [
+        (
+            "(δθ) virtual work on inclined ground".to_string(),
+            incline_entries_with(1.01),
+            what.clone(),
+        ),
+        ("(δν) virtual work, cos δ read for cos θ".to_string(), incline_entries_with(1.01), what),
+    ];
+    crate::perturb::falsify_by_rerun(incline_entries_with(1.0), &rows)
+}
+
+/// The entries of [`incline_entries`] with the mass of the derived potential multiplied by
+/// `mass_factor`.
+fn incline_entries_with(mass_factor: f64) -> Vec<Entry> {
     let (mu, g, h, r) = (80.0, 9.81, 1.1, 0.38);
     let mut worst = [0.0f64; 4];
     let mut scale = [0.0f64; 4];
     for i in [0.05, 0.2] {
         for delta in [0.3, 1.2, 2.5, -0.8] {
             for theta in [0.1, -0.4, 0.7] {
-                let w = incline_virtual_works(mu, g, h, r, i, delta, theta);
+                let w = incline_virtual_works(mu * mass_factor, g, h, r, i, delta, theta);
                 let printed = [
                     mu * g * h * (i.cos() * theta.sin() - i.sin() * theta.cos() * delta.sin()),
                     -mu * g * h * i.sin() * theta.sin() * theta.cos(),
@@ -657,6 +734,17 @@ fn incline_entries() -> Vec<Entry> {
 /// $t$ divided by $s$; checked at three spins with the general model's equations, the
 /// eigenvalues from the 4 × 4 first-order system (nalgebra).
 fn time_scale_entry(e: &Equations) -> Entry {
+    let rows = [(
+        "T = s t: quartic roots times s are the eigenvalues in t".to_string(),
+        vec![time_scale_entry_with(e, 1.01)],
+        "the stiffness k0 of the first-order system (the general model's, the derived side) scaled by 1 + 1e-2, the quartic keeping its own".to_string(),
+    )];
+    crate::perturb::falsify_by_rerun(vec![time_scale_entry_with(e, 1.0)], &rows).remove(0)
+}
+
+/// [`time_scale_entry`] with the stiffness k0 of the first-order system multiplied by
+/// `k0_factor` (the quartic keeping its own).
+fn time_scale_entry_with(e: &Equations, k0_factor: f64) -> Entry {
     let mut worst: f64 = 0.0;
     for s in [3.0, 8.2, 9.5] {
         let m = e.m;
@@ -669,7 +757,7 @@ fn time_scale_entry(e: &Equations) -> Entry {
             for c in 0..2 {
                 let (mut kk, mut cc) = (0.0, 0.0);
                 for (j, row) in inv[r].iter().enumerate() {
-                    kk += row * (e.k0[j][c] + e.k2[j][c] * s * s);
+                    kk += row * (k0_factor * e.k0[j][c] + e.k2[j][c] * s * s);
                     cc += row * e.c[j][c] * s;
                 }
                 a[(2 + r, c)] = -kk;

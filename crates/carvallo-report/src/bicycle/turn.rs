@@ -80,7 +80,13 @@ fn lambda_plus(c: &FallEquation) -> f64 {
 }
 
 /// Entries of one steady turn.
-fn turn_entries(bike: &LockedSteer, gdeg: f64, kmh: f64, e: &mut Vec<Entry>) -> Result<(), String> {
+fn turn_entries(
+    bike: &LockedSteer,
+    checked: bool,
+    gdeg: f64,
+    kmh: f64,
+    e: &mut Vec<Entry>,
+) -> Result<(), String> {
     let k = *bike.constants();
     let (gamma, v) = (gdeg.to_radians(), kmh / 3.6);
     let t: SteadyTurn = bike.steady_turn(gamma, v).map_err(|x| x.to_string())?;
@@ -135,7 +141,7 @@ fn turn_entries(bike: &LockedSteer, gdeg: f64, kmh: f64, e: &mut Vec<Entry>) -> 
         rel_diff: None,
         verdict: policy::claim(c.dfdpp.is_finite() && c.dfdp.is_finite() && c.dfdtheta.is_finite(), Verdict::DerivationDiffers),
         note: format!(
-            "f is the lean row of the nonlinear model with the steer row dropped (the hands hold gamma) and the rear-wheel row dropped (the pedals hold the rolling speed s on the ground; the bearing rate then follows the lean rate); df/dp' = M11 + M13 dU/dp exact, df/dp and df/dtheta by central differences with Richardson's extrapolation (the two levels differ by {}); with the bearing rate held instead (bearing_held_*) df/dtheta is the same, lean {th:.5} rad, pitch {:.3e} rad",
+            "f is the lean row of the nonlinear model with the steer row dropped (the hands hold gamma) and the rear-wheel row dropped (the pedals hold the rolling speed s on the ground; the bearing rate then follows the lean rate); df/dp' = M11 + M13 dU/dp exact, df/dp and df/dtheta by central differences with Richardson's extrapolation (the two levels differ by {}); with the bearing rate held instead (bearing_held_*) df/dtheta is the same, lean {th:.5} rad, pitch {:.3e} rad. Holds by construction because the linearisation of one row in (theta, p, p') is a quadratic in lambda whatever the model: the entry states the form of (C), and checks only that its coefficients are finite; their values are judged, with their falsifications, by the entries of n° 102, 104 and 105",
             small(c.error, 1e-5),
             t.pitch
         ),
@@ -218,11 +224,10 @@ fn turn_entries(bike: &LockedSteer, gdeg: f64, kmh: f64, e: &mut Vec<Entry>) -> 
     let without_dfdp = (-c.dfdtheta / c.dfdpp).sqrt();
     // The frame's B is not in n° 117: the same turn with the central pitch moment halved.
     let ibyy = k.whipple_values().iter().find(|(n, _)| *n == "IByy").map_or(f64::NAN, |x| x.1);
-    let half =
-        LockedSteer::with_pitch_moment(k, 0.5 * ibyy).map_err(|x| x.to_string()).and_then(|b| {
-            let t = b.steady_turn(gamma, v).map_err(|x| x.to_string())?;
-            b.fall_equation(&t, Hold::Rolling).map_err(|x| x.to_string())
-        })?;
+    let half = with_pitch(k, 0.5 * ibyy, checked).and_then(|b| {
+        let t = b.steady_turn(gamma, v).map_err(|x| x.to_string())?;
+        b.fall_equation(&t, Hold::Rolling).map_err(|x| x.to_string())
+    })?;
     e.push(Entry {
         falsification: None,
         section: "105".into(),
@@ -253,13 +258,62 @@ fn turn_entries(bike: &LockedSteer, gdeg: f64, kmh: f64, e: &mut Vec<Entry>) -> 
     Ok(())
 }
 
-/// The steady-turn stability entries, computed now (upright running first, then [`TURNS`]).
+/// The bicycle of the constants `k`: [`LockedSteer::new`] when `checked`, otherwise taken as
+/// they are ([`LockedSteer::new_unchecked`], a perturbed bicycle of a falsification).
+fn locked(k: Constants, checked: bool) -> Result<LockedSteer, String> {
+    if checked {
+        LockedSteer::new(k).map_err(|x| x.to_string())
+    } else {
+        Ok(LockedSteer::new_unchecked(k))
+    }
+}
+
+/// [`locked`] with the frame's pitch moment `ibyy` ([`LockedSteer::with_pitch_moment`]).
+fn with_pitch(k: Constants, ibyy: f64, checked: bool) -> Result<LockedSteer, String> {
+    if checked {
+        LockedSteer::with_pitch_moment(k, ibyy).map_err(|x| x.to_string())
+    } else {
+        Ok(LockedSteer::with_pitch_moment_unchecked(k, ibyy))
+    }
+}
+
+/// The constants with the weight reversed (`g` negated): the derived model of a falsification.
+fn reversed(k: Constants) -> Constants {
+    Constants { g: -k.g, ..k }
+}
+
+/// The steady-turn stability entries, computed now (upright running first, then [`TURNS`]),
+/// with the falsifications of those that agree: df/dp' upright with the model's A + 2 A1
+/// scaled by 1 + 1e-2 (the printed 100 kept), and the roots of n° 105 with the weight of every
+/// bicycle of the derived model reversed (g negated: df/dtheta > 0, the roots imaginary), the
+/// memoir's conclusion kept.
 pub fn entries() -> Vec<Entry> {
+    let base = entries_with(|k| k, true);
+    let scaled_a2 = entries_with(|k| Constants { a2: 1.01 * k.a2, ..k }, true);
+    let weight_reversed = entries_with(reversed, false);
+    let mut rows = vec![(
+        "df/dp' upright (kg m^2)".to_string(),
+        scaled_a2,
+        "A + 2 A1 of the derived model (the nonlinear Carvallo-Whipple bicycle of n° 117) scaled by 1 + 1e-2, the printed 100 kept".to_string(),
+    )];
+    for e in base.iter().filter(|e| e.section == "105" && e.quantity.starts_with("roots of (C)")) {
+        rows.push((
+            e.quantity.clone(),
+            weight_reversed.clone(),
+            "the weight reversed in every bicycle of the derived model (g negated in the nonlinear Carvallo-Whipple bicycle, the old, the new and the variants alike: LockedSteer::new_unchecked), the memoir's conclusion kept".to_string(),
+        ));
+    }
+    crate::perturb::falsify_by_rerun(base, &rows)
+}
+
+/// The entries of [`entries`] for the derived model's constants `derive(k)` of every bicycle
+/// (`checked`: validated as [`LockedSteer::new`] does).
+fn entries_with(derive: fn(Constants) -> Constants, checked: bool) -> Vec<Entry> {
     let mut e = Vec::new();
-    let bike = match LockedSteer::new(Constants::MEMOIR) {
+    let bike = match locked(derive(Constants::MEMOIR), checked) {
         Ok(b) => b,
         Err(err) => {
-            e.push(failure(&err.to_string()));
+            e.push(failure(&err));
             return e;
         }
     };
@@ -296,14 +350,14 @@ pub fn entries() -> Vec<Entry> {
         (_, Err(err)) => e.push(failure(&err.to_string())),
     }
     for (gdeg, kmh) in TURNS {
-        if let Err(err) = turn_entries(&bike, gdeg, kmh, &mut e) {
+        if let Err(err) = turn_entries(&bike, checked, gdeg, kmh, &mut e) {
             e.push(failure(&err));
         }
     }
-    if let Err(err) = new_bicycle_roots(&bike, &mut e) {
+    if let Err(err) = new_bicycle_roots(&bike, derive, checked, &mut e) {
         e.push(failure(&err));
     }
-    e.push(new_bicycle_grid());
+    e.push(new_bicycle_grid(derive, checked));
     e
 }
 
@@ -343,7 +397,12 @@ fn central_frame_moments(k: &Constants) -> (f64, f64, f64) {
 }
 
 /// The roots (C) of n° 105 for the new bicycle of n° 122 at [`NEW_TURN`].
-fn new_bicycle_roots(old: &LockedSteer, e: &mut Vec<Entry>) -> Result<(), String> {
+fn new_bicycle_roots(
+    old: &LockedSteer,
+    derive: fn(Constants) -> Constants,
+    checked: bool,
+    e: &mut Vec<Entry>,
+) -> Result<(), String> {
     let (gdeg, kmh) = NEW_TURN;
     let (gamma, v) = (gdeg.to_radians(), kmh / 3.6);
     let k = Constants::MEMOIR_NEW;
@@ -352,20 +411,17 @@ fn new_bicycle_roots(old: &LockedSteer, e: &mut Vec<Entry>) -> Result<(), String
             .and_then(|t| b.fall_equation(&t, hold))
             .map_err(|x| x.to_string())
     };
-    let bike = LockedSteer::new(k).map_err(|x| x.to_string())?;
+    let bike = locked(derive(k), checked)?;
     let t = bike.steady_turn(gamma, v).map_err(|x| x.to_string())?;
     let c = bike.fall_equation(&t, Hold::Rolling).map_err(|x| x.to_string())?;
     let cb = bike.fall_equation(&t, Hold::BearingRate).map_err(|x| x.to_string())?;
     let w = bike.free_wheel(&t).map_err(|x| x.to_string())?;
     let rest = roots(&bike, 0.0, Hold::Rolling)?;
     let (ibxx, ibzz, ibxz) = central_frame_moments(&k);
-    let half = LockedSteer::with_pitch_moment(k, 0.5 * (ibxx + ibzz))
-        .map_err(|x| x.to_string())
+    let half = with_pitch(derive(k), 0.5 * (ibxx + ibzz), checked)
         .and_then(|b| roots(&b, v, Hold::Rolling))?;
     let central = new_bicycle_central();
-    let cc = LockedSteer::new(central)
-        .map_err(|x| x.to_string())
-        .and_then(|b| roots(&b, v, Hold::Rolling))?;
+    let cc = locked(derive(central), checked).and_then(|b| roots(&b, v, Hold::Rolling))?;
     let oc = roots(old, v, Hold::Rolling)?;
     let without_dfdp = (-c.dfdtheta / c.dfdpp).sqrt();
     let all = [&c, &cb, &half, &cc, &oc];
@@ -403,12 +459,15 @@ fn new_bicycle_roots(old: &LockedSteer, e: &mut Vec<Entry>) -> Result<(), String
 
 /// n° 105 across [`GRID_GAMMA`] × [`GRID_KMH`] for the new bicycle of n° 122: the count of
 /// grid points where the roots of (C) are real and of opposite signs.
-fn new_bicycle_grid() -> Entry {
+fn new_bicycle_grid(derive: fn(Constants) -> Constants, checked: bool) -> Entry {
     let total = GRID_GAMMA.len() * GRID_KMH.len();
     let mut count = [0usize; 3];
     let mut failed = Vec::new();
     let mut range = (f64::INFINITY, f64::NEG_INFINITY);
-    let bikes = [LockedSteer::new(Constants::MEMOIR_NEW), LockedSteer::new(new_bicycle_central())];
+    let bikes = [
+        locked(derive(Constants::MEMOIR_NEW), checked),
+        locked(derive(new_bicycle_central()), checked),
+    ];
     for gdeg in GRID_GAMMA {
         for kmh in GRID_KMH {
             let (gamma, v) = (gdeg.to_radians(), kmh / 3.6);
@@ -418,8 +477,11 @@ fn new_bicycle_grid() -> Entry {
                 (2, Hold::Rolling, &bikes[1]),
             ] {
                 let c = match bike {
-                    Ok(b) => b.steady_turn(gamma, v).and_then(|t| b.fall_equation(&t, hold)),
-                    Err(err) => Err((*err).into()),
+                    Ok(b) => b
+                        .steady_turn(gamma, v)
+                        .and_then(|t| b.fall_equation(&t, hold))
+                        .map_err(|x| x.to_string()),
+                    Err(err) => Err(err.clone()),
                 };
                 match c {
                     Ok(c) if c.saddle() => {

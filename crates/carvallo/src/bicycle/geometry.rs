@@ -51,6 +51,37 @@ crate::scene! {
     }
 }
 
+/// A reader of the generated outputs: given an output's name, its arguments by name and the
+/// value the compiled evaluator gave, the value to use. The concordance report installs one
+/// ([`with_reader`]) to read a perturbed program while it checks that its entries can fail.
+pub type Reader = fn(output: &str, get: &dyn Fn(&str) -> Option<f64>, value: f64) -> f64;
+
+thread_local! {
+    static READER: std::cell::Cell<Option<Reader>> = const { std::cell::Cell::new(None) };
+}
+
+/// Runs `f` with `reader` applied, on this thread, to every output of the generated programs
+/// that [`Geometry`] evaluates (the contact equations and their Jacobian, the first-order
+/// method, the front wheel's coordinates and axes) and that
+/// [`Kinematics`](crate::bicycle_kinematics::Kinematics) evaluates (the displacement of n° 61,
+/// the relations of n° 66 and 69); the reader active before is restored after.
+pub fn with_reader<T>(reader: Reader, f: impl FnOnce() -> T) -> T {
+    let before = READER.with(|r| r.replace(Some(reader)));
+    let out = f();
+    READER.with(|r| r.set(before));
+    out
+}
+
+/// `values` (output name, value) passed through the active reader, if any, with the
+/// arguments `args`.
+pub(crate) fn read_all(args: &[(&str, f64)], values: &mut [(&str, &mut f64)]) {
+    let Some(reader) = READER.with(|r| r.get()) else { return };
+    let get = |n: &str| args.iter().find(|(k, _)| *k == n).map(|(_, v)| *v);
+    for (name, v) in values.iter_mut() {
+        **v = reader(name, &get, **v);
+    }
+}
+
 /// Why the contact equations have no acceptable solution at the given lean and steer.
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub enum ContactError {
@@ -237,8 +268,22 @@ impl Geometry {
         self.wheelbase * self.sigma0.sin()
     }
 
+    /// The program's arguments at the position (θ, γ, σ, μ), by name.
+    fn arguments(&self, theta: f64, gamma: f64, sigma: f64, mu: f64) -> [(&'static str, f64); 8] {
+        [
+            ("R", self.radius),
+            ("l", self.wheelbase),
+            ("c", self.offset),
+            ("sigma0", self.sigma0),
+            ("theta", theta),
+            ("gamma", gamma),
+            ("sigma", sigma),
+            ("mu", mu),
+        ]
+    }
+
     fn contact_eval(&self, theta: f64, gamma: f64, sigma: f64, mu: f64) -> contact_scene::Out {
-        contact_scene::eval(&contact_scene::Args {
+        let mut o = contact_scene::eval(&contact_scene::Args {
             R: self.radius,
             l: self.wheelbase,
             c: self.offset,
@@ -247,7 +292,20 @@ impl Geometry {
             gamma,
             sigma,
             mu,
-        })
+        });
+        read_all(
+            &self.arguments(theta, gamma, sigma, mu),
+            &mut [
+                ("contact_height", &mut o.contact_height),
+                ("lowest_point", &mut o.lowest_point),
+                ("d_height_d_sigma", &mut o.d_height_d_sigma),
+                ("d_height_d_mu", &mut o.d_height_d_mu),
+                ("d_lowest_d_sigma", &mut o.d_lowest_d_sigma),
+                ("d_lowest_d_mu", &mut o.d_lowest_d_mu),
+                ("mu_lowest", &mut o.mu_lowest),
+            ],
+        );
+        o
     }
 
     /// The residuals $(K|OM, K|dOM/d\mu)$ of the contact equations (1), (2) (m).
@@ -375,13 +433,22 @@ impl Geometry {
 
     /// The first-order method of n° 51 at θ = 0 and steer `gamma` (rad).
     pub fn first_order(&self, gamma: f64) -> FirstOrder {
-        let o = first_order_scene::eval(&first_order_scene::Args {
+        let mut o = first_order_scene::eval(&first_order_scene::Args {
             R: self.radius,
             l: self.wheelbase,
             c: self.offset,
             sigma0: self.sigma0,
             gamma,
         });
+        read_all(
+            &self.arguments(0.0, gamma, f64::NAN, f64::NAN),
+            &mut [
+                ("sigma1_first", &mut o.sigma1_first),
+                ("memoir_sigma1_first", &mut o.memoir_sigma1_first),
+                ("mu0", &mut o.mu0),
+                ("mu1_first", &mut o.mu1_first),
+            ],
+        );
         FirstOrder {
             sigma1: o.sigma1_first,
             sigma1_printed: o.memoir_sigma1_first,
@@ -393,7 +460,7 @@ impl Geometry {
     /// The front contact on the ground, the accessory angles and the front axes at the position
     /// (θ, γ, σ, μ) (n° 54, 57, 58); σ, μ are normally those of [`Geometry::solve`].
     pub fn front_wheel(&self, theta: f64, gamma: f64, sigma: f64, mu: f64) -> FrontWheel {
-        let o = frame_scene::eval(&frame_scene::Args {
+        let mut o = frame_scene::eval(&frame_scene::Args {
             R: self.radius,
             l: self.wheelbase,
             c: self.offset,
@@ -403,6 +470,23 @@ impl Geometry {
             sigma,
             mu,
         });
+        read_all(
+            &self.arguments(theta, gamma, sigma, mu),
+            &mut [
+                ("contact_x", &mut o.contact_x),
+                ("contact_y", &mut o.contact_y),
+                ("normal_i", &mut o.normal_i),
+                ("normal_j", &mut o.normal_j),
+                ("normal_k", &mut o.normal_k),
+                ("alpha", &mut o.alpha),
+                ("beta", &mut o.beta),
+                ("axis_i1_x", &mut o.axis_i1_x),
+                ("axis_i1_y", &mut o.axis_i1_y),
+                ("axis_k1_x", &mut o.axis_k1_x),
+                ("axis_k1_y", &mut o.axis_k1_y),
+                ("axis_k1_z", &mut o.axis_k1_z),
+            ],
+        );
         FrontWheel {
             contact: [o.contact_x, o.contact_y],
             normal: [o.normal_i, o.normal_j, o.normal_k],

@@ -21,7 +21,7 @@
 //! of gravity fixed in the frame is $Z = (R + x\sin\eta_1 + z\cos\eta_1)\cos\theta$ and
 //! $\frac{d^2Z}{d\theta^2} = -Z + X\eta''$ there.
 
-use crate::bicycle::geometry::{Contact, ContactError, Geometry};
+use crate::bicycle::geometry::{read_all, Contact, ContactError, Geometry};
 
 crate::scene! {
     /// The analytic displacement of M (n° 61): its components on I, J, K per unit δσ, δθ, δν,
@@ -127,6 +127,26 @@ pub struct Kinematics {
     geometry: Geometry,
 }
 
+/// The arguments of the generated programs for the bicycle `g` at (θ, γ, σ, μ), by name.
+fn arguments(
+    g: &Geometry,
+    theta: f64,
+    gamma: f64,
+    sigma: f64,
+    mu: f64,
+) -> [(&'static str, f64); 8] {
+    [
+        ("R", g.radius()),
+        ("l", g.wheelbase()),
+        ("c", g.offset()),
+        ("sigma0", g.sigma0()),
+        ("theta", theta),
+        ("gamma", gamma),
+        ("sigma", sigma),
+        ("mu", mu),
+    ]
+}
+
 impl Kinematics {
     /// The kinematics of `geometry`.
     pub fn new(geometry: Geometry) -> Kinematics {
@@ -153,7 +173,7 @@ impl Kinematics {
         mu: f64,
     ) -> [[f64; 6]; 3] {
         let g = &self.geometry;
-        let o = displacement_scene::eval(&displacement_scene::Args {
+        let mut o = displacement_scene::eval(&displacement_scene::Args {
             R: g.radius(),
             l: g.wheelbase(),
             c: g.offset(),
@@ -163,6 +183,29 @@ impl Kinematics {
             sigma,
             mu,
         });
+        read_all(
+            &arguments(g, theta, gamma, sigma, mu),
+            &mut [
+                ("dm_i_sigma", &mut o.dm_i_sigma),
+                ("dm_i_theta", &mut o.dm_i_theta),
+                ("dm_i_nu", &mut o.dm_i_nu),
+                ("dm_i_eta", &mut o.dm_i_eta),
+                ("dm_i_gamma", &mut o.dm_i_gamma),
+                ("dm_i_sigma1", &mut o.dm_i_sigma1),
+                ("dm_j_sigma", &mut o.dm_j_sigma),
+                ("dm_j_theta", &mut o.dm_j_theta),
+                ("dm_j_nu", &mut o.dm_j_nu),
+                ("dm_j_eta", &mut o.dm_j_eta),
+                ("dm_j_gamma", &mut o.dm_j_gamma),
+                ("dm_j_sigma1", &mut o.dm_j_sigma1),
+                ("dm_k_sigma", &mut o.dm_k_sigma),
+                ("dm_k_theta", &mut o.dm_k_theta),
+                ("dm_k_nu", &mut o.dm_k_nu),
+                ("dm_k_eta", &mut o.dm_k_eta),
+                ("dm_k_gamma", &mut o.dm_k_gamma),
+                ("dm_k_sigma1", &mut o.dm_k_sigma1),
+            ],
+        );
         [
             [o.dm_i_sigma, o.dm_i_theta, o.dm_i_nu, o.dm_i_eta, o.dm_i_gamma, o.dm_i_sigma1],
             [o.dm_j_sigma, o.dm_j_theta, o.dm_j_nu, o.dm_j_eta, o.dm_j_gamma, o.dm_j_sigma1],
@@ -196,7 +239,7 @@ impl Kinematics {
     pub fn relations(&self, theta: f64, gamma: f64) -> Result<Relations, ContactError> {
         let contact = self.geometry.solve(theta, gamma)?;
         let g = &self.geometry;
-        let o = relations_scene::eval(&relations_scene::Args {
+        let mut o = relations_scene::eval(&relations_scene::Args {
             R: g.radius(),
             l: g.wheelbase(),
             c: g.offset(),
@@ -206,6 +249,20 @@ impl Kinematics {
             sigma: contact.sigma,
             mu: contact.mu,
         });
+        read_all(
+            &arguments(g, theta, gamma, contact.sigma, contact.mu),
+            &mut [
+                ("d_eta_d_theta", &mut o.d_eta_d_theta),
+                ("d_nu_d_theta", &mut o.d_nu_d_theta),
+                ("d_eta_d_gamma", &mut o.d_eta_d_gamma),
+                ("d_nu_d_gamma", &mut o.d_nu_d_gamma),
+                ("steady_n", &mut o.steady_n),
+                ("steady_sigma1_rate", &mut o.steady_sigma1_rate),
+                ("eta_second", &mut o.eta_second),
+                ("memoir_eta_second", &mut o.memoir_eta_second),
+                ("mu_prime", &mut o.mu_prime),
+            ],
+        );
         Ok(Relations {
             contact,
             d_eta_d_theta: o.d_eta_d_theta,

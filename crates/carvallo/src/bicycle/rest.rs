@@ -249,6 +249,14 @@ impl RestBicycle {
         RestBicycle { geometry: Geometry::old_model(), constants: RestConstants::MEMOIR }
     }
 
+    /// The bicycle of `geometry` and `constants` taken as they are, without the checks of
+    /// [`RestBicycle::new`]: a perturbed bicycle for the report's falsification checks (issue
+    /// 38), such as the weight reversed (`g` negative). No claim of the memoir is judged on such
+    /// a model; it shows that a check can fail.
+    pub fn new_unchecked(geometry: Geometry, constants: RestConstants) -> RestBicycle {
+        RestBicycle { geometry, constants }
+    }
+
     /// The same bicycle with front wheel mass `wheel_mass` (kg).
     ///
     /// # Errors

@@ -213,9 +213,20 @@ impl BicycleSteady {
     /// Every output of the program at the state `x`, in the order of
     /// [`all_scene::OUTPUTS`].
     pub fn eval(&self, x: &SteadyState) -> [f64; all_scene::OUTPUTS.len()] {
-        let p = &self.p;
         let mut args = [0.0; all_scene::PARAMS.len() + all_scene::INPUTS.len()];
-        let values = [
+        let values = self.arguments(x);
+        let names = all_scene::PARAMS.iter().chain(all_scene::INPUTS.iter());
+        for (slot, name) in args.iter_mut().zip(names) {
+            *slot = values.iter().find(|(n, _)| n == name).map_or(f64::NAN, |(_, v)| *v);
+        }
+        all_scene::eval_array(&args)
+    }
+
+    /// The program's parameters and inputs at the state `x`, by name: the constants, then the
+    /// state's angles and rates.
+    pub fn arguments(&self, x: &SteadyState) -> [(&'static str, f64); 29] {
+        let p = &self.p;
+        [
             ("R", p.radius),
             ("g", p.g),
             ("mu", p.mass),
@@ -245,12 +256,7 @@ impl BicycleSteady {
             ("dnu_g", x.dnu_g),
             ("p", x.p),
             ("deta_t", x.deta_t),
-        ];
-        let names = all_scene::PARAMS.iter().chain(all_scene::INPUTS.iter());
-        for (slot, name) in args.iter_mut().zip(names) {
-            *slot = values.iter().find(|(n, _)| n == name).map_or(f64::NAN, |(_, v)| *v);
-        }
-        all_scene::eval_array(&args)
+        ]
     }
 
     /// One output of the program by name; `None` when no output has that name.

@@ -250,6 +250,13 @@ impl LockedSteer {
         LockedSteer::assemble(k, None)
     }
 
+    /// [`LockedSteer::with_pitch_moment`] with the constants taken as they are, as
+    /// [`LockedSteer::new_unchecked`] takes them: the same perturbed bicycle with the frame's
+    /// pitch moment set to `ibyy`.
+    pub fn with_pitch_moment_unchecked(k: Constants, ibyy: f64) -> LockedSteer {
+        LockedSteer::assemble(k, Some(ibyy))
+    }
+
     fn build(k: Constants, ibyy: Option<f64>) -> Result<LockedSteer, ParameterError> {
         k.validate()?;
         if let Some(ibyy) = ibyy {

@@ -170,9 +170,16 @@ pub struct CarvalloRoot {
 /// (the generated `quartic_f`, coefficients read off the evaluator) and compares it with the
 /// exact root.
 pub fn carvallo_root() -> CarvalloRoot {
+    carvallo_root_of(|t| output("quartic_f", &[("t", t)]), output("vertical_t", &[]))
+}
+
+/// [`carvallo_root`] run on the quartic `f` (read at $t = 0, \dots, 4$ and its coefficients
+/// rounded to integers) with the exact root `exact_t` of the vertical tangent: the route of
+/// [`carvallo_root`] with another evaluator of F(t) (the report's, which reads a perturbed
+/// program while one is active).
+pub fn carvallo_root_of(f: impl Fn(f64) -> f64, exact_t: f64) -> CarvalloRoot {
     // Coefficients of the generated F(t), read by finite interpolation at t = 0..4 (exact for
     // a quartic with integer values).
-    let f = |t: f64| output("quartic_f", &[("t", t)]);
     let coeffs = quartic_coefficients(f);
     let (shifted, horner_rows) = horner_shift(&coeffs, 1.0);
     let reversed: Vec<f64> = shifted.iter().rev().copied().collect();
@@ -180,7 +187,6 @@ pub fn carvallo_root() -> CarvalloRoot {
     let v4 = graeffe_rows[2][1] / graeffe_rows[2][0];
     let u = -1.0 / v_abs;
     let (_, v_conv) = graeffe_largest(&reversed, 6);
-    let exact_t = output("vertical_t", &[]);
     let mut exact_u = exact_t - 1.0;
     for _ in 0..3 {
         let h = 1e-7;

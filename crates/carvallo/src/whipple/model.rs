@@ -54,6 +54,13 @@ impl Whipple {
         Whipple { params, matrices }
     }
 
+    /// The bicycle of `params` with the matrices `matrices` evaluated elsewhere, instead of by
+    /// the generated evaluator (the concordance report reads them through its perturbation
+    /// layer, so that a perturbed generated program reaches the characteristic speeds).
+    pub fn with_matrices(params: WhippleParams, matrices: Matrices) -> Whipple {
+        Whipple { params, matrices }
+    }
+
     /// Validates `design` ([`WhippleParams::from_design`]) and evaluates the matrices.
     ///
     /// # Errors
