@@ -20,7 +20,13 @@
 use symbolica::atom::{Atom, AtomCore, AtomView};
 
 use crate::cas::{rat, subst, var};
-use crate::Perturbed;
+use crate::{Check, Perturbed};
+
+/// `check` with `perturbed` as its falsification: the one way a derivation attaches the outcome
+/// of its own perturbation to a check.
+pub fn with_perturbation(check: Check, perturbed: Option<Perturbed>) -> Check {
+    Check { perturbed, ..check }
+}
 
 /// The factor a symbol of the derived side is scaled by: $9/8$, exact, so that the perturbed
 /// check is decided as exactly as the check itself.

@@ -95,7 +95,7 @@ fn checked(
     detail: String,
     perturbed: crate::Perturbed,
 ) -> Check {
-    Check { perturbed: Some(perturbed), ..check(section, id, statement, holds, detail) }
+    crate::falsify::with_perturbation(check(section, id, statement, holds, detail), Some(perturbed))
 }
 
 /// `derived - factor * printed` vanishes identically (θ functions as stand-ins).

@@ -191,11 +191,6 @@ pub fn entries(lin: &Linear) -> Vec<(String, Atom)> {
     out
 }
 
-/// `check` with `perturbed` as its falsification ([`crate::falsify`]).
-fn with_perturbation(check: Check, perturbed: Option<crate::Perturbed>) -> Check {
-    Check { perturbed, ..check }
-}
-
 fn check(id: &str, statement: &str, holds: bool, detail: String) -> Check {
     Check {
         section: "engine".into(),
@@ -222,7 +217,7 @@ pub fn derive() -> Result<Derivation> {
         what: format!("the derived list of redundant rows without its first row ({first})"),
         holds: named(&redundant[1..]),
     });
-    let mut checks = vec![with_perturbation(check(
+    let mut checks = vec![crate::falsify::with_perturbation(check(
         "redundant_rows",
         "of the rolling constraints, the left contact's vertical row vanishes (the root point is on the ground) and the right contact's lateral row is implied by the others (one rigid axle: both contacts move sideways with it), so both are dropped and named",
         named(&redundant),
@@ -236,7 +231,7 @@ pub fn derive() -> Result<Derivation> {
         kane.f0.iter().chain(kane.heights0.iter().map(|(_, h)| h)).cloned().collect();
     let refs: Vec<&Atom> = at_rest.iter().collect();
     let rest_perturbed = crate::falsify::perturb_first_nonzero(&refs, is_zero);
-    checks.push(with_perturbation(check(
+    checks.push(crate::falsify::with_perturbation(check(
         "upright_equilibrium",
         "upright straight running at any speed with the motors off is an equilibrium: every forcing and the right contact's height vanish there",
         zeros(&at_rest),
@@ -245,7 +240,7 @@ pub fn derive() -> Result<Derivation> {
     let dphi: Vec<Atom> = kane.dependent.iter().flat_map(|(_, r)| r.clone()).collect();
     let refs: Vec<&Atom> = dphi.iter().collect();
     let dphi_perturbed = crate::falsify::perturb_first_nonzero(&refs, is_zero);
-    checks.push(with_perturbation(
+    checks.push(crate::falsify::with_perturbation(
         check(
             "lean_stays_zero",
             "the right contact's height has no first-order term in the pitch: the axle stays level",
@@ -264,7 +259,7 @@ pub fn derive() -> Result<Derivation> {
         .collect();
     // Kane's first entry, perturbed: the two routes must then differ.
     let kane_perturbed = crate::falsify::perturb_one(&ek[0].1, |d| is_zero(&(d - &el[0].1)));
-    checks.push(with_perturbation(check(
+    checks.push(crate::falsify::with_perturbation(check(
         "kane_equals_lagrange",
         "the linearised Kane equations and Carvallo's linearised modified Lagrange equations (memoir n° 72), derived by the engine from the one description, are equal entry by entry, exactly (symbolic in every parameter and v)",
         differ.is_empty(),

@@ -96,13 +96,10 @@ pub(super) fn check_perturbed(
     detail: String,
     perturbed: crate::Perturbed,
 ) -> Check {
-    Check { perturbed: Some(perturbed), ..check(id, statement, holds, detail) }
+    with_perturbation(check(id, statement, holds, detail), Some(perturbed))
 }
 
-/// `check` with `perturbed` as its falsification.
-pub(super) fn with_perturbation(check: Check, perturbed: Option<crate::Perturbed>) -> Check {
-    Check { perturbed, ..check }
-}
+pub(super) use crate::falsify::with_perturbation;
 
 /// A check of the linear model's section.
 pub(super) fn check(id: &str, statement: &str, holds: bool, detail: String) -> Check {
