@@ -110,6 +110,29 @@ pub const FD_STEP: f64 = 1e-4;
 /// Step of the central second differences (rad).
 pub const FD_STEP_SECOND: f64 = 1e-3;
 
+/// A rolling condition of the front wheel (n° 60): one component of the displacement δM of
+/// its contact point vanishes, a row of [`Kinematics::displacement_matrix`].
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum RollingCondition {
+    /// δM·I = 0 (no slip along the frame's horizontal trace).
+    I,
+    /// δM·J = 0 (no slip across it).
+    J,
+    /// δM·K = 0 (the contact stays on the ground).
+    K,
+}
+
+impl RollingCondition {
+    /// The row of [`Kinematics::displacement_matrix`].
+    fn row(self) -> usize {
+        match self {
+            RollingCondition::I => 0,
+            RollingCondition::J => 1,
+            RollingCondition::K => 2,
+        }
+    }
+}
+
 /// The kinematics of a bicycle of given geometry (n° 44).
 ///
 /// # Example
@@ -232,6 +255,35 @@ impl Kinematics {
         Ok(solve3(a, b))
     }
 
+    /// The number of independent rolling conditions on the dependent displacements (δη, δν,
+    /// δσ1) at the exact contact for (θ, γ): the rank of their columns in the rows of
+    /// [`Kinematics::displacement_matrix`], the condition `dropped` left out. With all three it
+    /// is 3 where [`Kinematics::solve_displacements`] solves a regular system, and the bicycle
+    /// keeps 6 − 3 = 3 degrees of freedom (n° 59); with one dropped it is at most 2. A pivot at
+    /// most $10^{-13}$ of the largest entry counts as zero, as in
+    /// [`Kinematics::solve_displacements`].
+    ///
+    /// # Errors
+    /// As [`Geometry::solve`].
+    pub fn rolling_rank(
+        &self,
+        theta: f64,
+        gamma: f64,
+        dropped: Option<RollingCondition>,
+    ) -> Result<usize, ContactError> {
+        let c = self.geometry.solve(theta, gamma)?;
+        let m = self.displacement_matrix(theta, gamma, c.sigma, c.mu);
+        let mut a = [[0.0; 3]; 3];
+        let mut n = 0;
+        for (i, row) in m.iter().enumerate() {
+            if dropped.map(RollingCondition::row) != Some(i) {
+                a[n] = [row[3], row[2], row[5]];
+                n += 1;
+            }
+        }
+        Ok(rank(&mut a[..n]))
+    }
+
     /// The generated relations of n° 66 and 69 at the exact contact for (θ, γ).
     ///
     /// # Errors
@@ -338,10 +390,28 @@ impl Kinematics {
     /// # Errors
     /// As [`Geometry::solve`].
     pub fn holonomy_defect(&self, theta: f64, gamma: f64) -> Result<f64, ContactError> {
+        self.cross_derivative_defect(theta, gamma, |r| [r.d_nu_d_theta, r.d_nu_d_gamma])
+    }
+
+    /// The cross-derivative test of [`Kinematics::holonomy_defect`] on any pair of the
+    /// relations: `pair` picks the rates in θ and in γ of one displacement from the generated
+    /// (I) of n° 66, and the result is
+    /// $\partial_\gamma(\text{rate in }\theta) - \partial_\theta(\text{rate in }\gamma)$ by
+    /// central differences (step [`FD_STEP`]). For ν it is not zero; for η, whose rates are the
+    /// partial derivatives of the exact η(θ, γ), it vanishes to the differences' truncation.
+    ///
+    /// # Errors
+    /// As [`Geometry::solve`].
+    pub fn cross_derivative_defect(
+        &self,
+        theta: f64,
+        gamma: f64,
+        pair: impl Fn(&Relations) -> [f64; 2],
+    ) -> Result<f64, ContactError> {
         let h = FD_STEP;
-        let r = |t: f64, g: f64| self.relations(t, g);
-        let a = (r(theta, gamma + h)?.d_nu_d_theta - r(theta, gamma - h)?.d_nu_d_theta) / (2.0 * h);
-        let b = (r(theta + h, gamma)?.d_nu_d_gamma - r(theta - h, gamma)?.d_nu_d_gamma) / (2.0 * h);
+        let r = |t: f64, g: f64, k: usize| self.relations(t, g).map(|r| pair(&r)[k]);
+        let a = (r(theta, gamma + h, 0)? - r(theta, gamma - h, 0)?) / (2.0 * h);
+        let b = (r(theta + h, gamma, 1)? - r(theta - h, gamma, 1)?) / (2.0 * h);
         Ok(a - b)
     }
 
@@ -424,6 +494,34 @@ fn det3(a: &[[f64; 3]; 3]) -> f64 {
     a[0][0] * (a[1][1] * a[2][2] - a[1][2] * a[2][1])
         - a[0][1] * (a[1][0] * a[2][2] - a[1][2] * a[2][0])
         + a[0][2] * (a[1][0] * a[2][1] - a[1][1] * a[2][0])
+}
+
+/// The rank of the rows `a` (at most three) by Gaussian elimination with partial pivoting, a
+/// pivot at most $10^{-13}$ of the largest entry counting as zero (the threshold of
+/// [`solve3`]); `a` is overwritten.
+#[allow(clippy::needless_range_loop)] // row i is updated from row r of the same slice
+fn rank(a: &mut [[f64; 3]]) -> usize {
+    let n = a.len();
+    let scale = a.iter().flatten().fold(0.0f64, |m, v| m.max(v.abs()));
+    let mut r = 0;
+    for k in 0..3 {
+        let Some(p) = (r..n).max_by(|i, j| a[*i][k].abs().total_cmp(&a[*j][k].abs())) else {
+            break;
+        };
+        // (a NaN pivot counts as zero)
+        if a[p][k].abs().partial_cmp(&(1e-13 * scale)) != Some(std::cmp::Ordering::Greater) {
+            continue;
+        }
+        a.swap(r, p);
+        for i in r + 1..n {
+            let f = a[i][k] / a[r][k];
+            for j in k..3 {
+                a[i][j] -= f * a[r][j];
+            }
+        }
+        r += 1;
+    }
+    r
 }
 
 /// Gaussian elimination with partial pivoting; `None` for a (numerically) singular matrix.
