@@ -13,11 +13,11 @@
 
 use std::collections::BTreeMap;
 
-use carvallo::bicycle_kinematics::{Kinematics, RestEquilibrium};
+use carvallo::bicycle_kinematics::{Kinematics, RestEquilibrium, RollingCondition};
 
 use crate::checks::Finding;
 use crate::claims::{Assertion, Status};
-use crate::entry::{Derived, Entry, Memoir, Verdict};
+use crate::entry::{Derived, Entry, Falsification, Memoir, Verdict};
 use crate::policy::{self, number};
 
 const CHECKS_TSV: &str = carvallo::artifacts::BICYCLE_KINEMATICS.checks;
@@ -91,28 +91,55 @@ fn worst_entry(
     }
 }
 
-/// n° 59: three of the six displacements are determined by the other three.
+/// n° 59: three of the six displacements are determined by the other three; with its
+/// falsification, the same count with the rolling condition δM·K = 0 not imposed.
 fn freedom_59(k: &Kinematics) -> Vec<Entry> {
-    let mut solved = 0;
-    let mut total = 0;
+    let (mut e, _) = freedom_with(k, None);
+    let (perturbed, regular) = freedom_with(k, Some(RollingCondition::K));
+    let freedom = match perturbed.derived {
+        Derived::Number(f) => f,
+        _ => f64::NAN,
+    };
+    e.falsification = Some(Falsification {
+        perturbation: "one rolling condition dropped: the front contact's δM·K = 0 (row K of the generated analytic dM of n° 61) not imposed, δM·I = δM·J = 0 kept".into(),
+        verdict: perturbed.verdict,
+        evidence: BTreeMap::from([
+            ("freedom".to_string(), freedom),
+            ("regular_positions".to_string(), regular as f64),
+            ("positions".to_string(), positions().len() as f64),
+        ]),
+    });
+    vec![e]
+}
+
+/// The degree of freedom of n° 59 with `dropped` not imposed: six displacements less the
+/// number of independent rolling conditions on (δη, δν, δσ1) when it is the same at the
+/// memoir's positions ([`Kinematics::rolling_rank`]), and the number of positions where the
+/// three are independent (the 3x3 system is regular).
+fn freedom_with(k: &Kinematics, dropped: Option<RollingCondition>) -> (Entry, usize) {
+    let mut ranks = Vec::new();
     for (t, g) in positions() {
-        total += 1;
-        if let Ok(Some(_)) = k.solve_displacements(t.to_radians(), g.to_radians(), [1.0, 0.0, 0.0])
-        {
-            solved += 1;
+        match k.rolling_rank(t.to_radians(), g.to_radians(), dropped) {
+            Ok(r) => ranks.push(r),
+            Err(err) => return (failed("59", "degree of freedom", err.to_string()), 0),
         }
     }
-    let freedom = if solved == total { 3.0 } else { f64::NAN };
-    vec![number(
+    let (solved, total) = (ranks.iter().filter(|&&r| r == 3).count(), ranks.len());
+    let freedom = match ranks.first() {
+        Some(&r) if ranks.iter().all(|&q| q == r) => 6.0 - r as f64,
+        _ => f64::NAN,
+    };
+    let e = policy::number_as(
         "59",
         "degree of freedom (six displacements less the three rolling conditions)",
         3.0,
-        0,
         freedom,
+        Verdict::DerivationDiffers,
         &format!(
             "the generated analytic dM = 0 (n° 61) is a regular 3x3 system in (deta, dnu, dsigma1) at {solved} of {total} positions (gamma = 20°, 40°, 60°, theta = ±10°..±30°): 6 - 3 = 3"
         ),
-    )]
+    );
+    (e, solved)
 }
 
 /// n° 66: (I) and (2) against the analytic path, finite differences and the instantaneous centre.
@@ -208,20 +235,36 @@ fn relations_66(k: &Kinematics) -> Vec<Entry> {
             "generated `steady_n`, `steady_sigma1_rate` against the centre P on the rear axle's trace and on the front wheel's horizontal normal through M: n = R s/OP, R sigma1' = n PM along I1",
         ),
     ];
+    // The falsification: the same test on the rates of eta in (I), the partial derivatives of
+    // the exact eta(theta, gamma) (checked above against its central differences).
+    let eta_defect = k.cross_derivative_defect(20f64.to_radians(), 40f64.to_radians(), |r| {
+        [r.d_eta_d_theta, r.d_eta_d_gamma]
+    });
     match defect {
         Ok(d) => e.push(Entry {
-            falsification: None,
+            falsification: eta_defect.ok().map(|p| Falsification {
+                perturbation: "the same cross-derivative test applied to eta's relations of (I) (`d_eta_d_theta`, `d_eta_d_gamma`, the partial derivatives of the exact eta(theta, gamma)) in place of nu's".into(),
+                verdict: not_a_function(p),
+                evidence: BTreeMap::from([("defect".to_string(), p)]),
+            }),
             section: "66".into(),
             quantity: "ν is not a function of (θ, γ): cross derivatives of (I) at θ = 20°, γ = 40°".into(),
             memoir: Memoir::Formula("dnu/dtheta, dnu/dgamma of (I)".into()),
             derived: Derived::Numbers(BTreeMap::from([("defect".to_string(), d)])),
             rel_diff: None,
-            verdict: policy::claim(d.abs() > 1e-4, Verdict::DerivationDiffers),
+            verdict: not_a_function(d),
             note: "d/dgamma(dnu/dtheta) - d/dtheta(dnu/dgamma) by central differences is far from 0: the relations are non-holonomic, and the memoir's dnu/dtheta, dnu/dgamma are ratios of virtual displacements at dsigma = 0, not partial derivatives of a function nu".into(),
         }),
         Err(err) => e.push(failed("66", "ν is not a function of (θ, γ)", err.to_string())),
     }
     e
+}
+
+/// The verdict of n° 66's claim that the relations of (I) whose cross-derivative defect is
+/// `defect` are not the partial derivatives of a function of (θ, γ): `agrees` when
+/// $|\text{defect}| > 10^{-4}$, far above the central differences' error (about $10^{-9}$).
+fn not_a_function(defect: f64) -> Verdict {
+    policy::claim(defect.abs() > 1e-4, Verdict::DerivationDiffers)
 }
 
 /// n° 68: rank 2 of the fixed system.

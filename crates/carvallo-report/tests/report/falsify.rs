@@ -301,3 +301,31 @@ fn the_fixed_bicycle_gains_a_rank_under_a_perturbed_displacement() {
     assert!(f.perturbation.contains("`dm_j_theta`"), "{}", f.perturbation);
     assert_ne!(f.verdict, Verdict::Agrees);
 }
+
+#[test]
+fn the_freedom_and_the_nonholonomy_fail_under_their_perturbation() {
+    // n° 59: with the rolling condition dM.K = 0 dropped, the two kept are independent at every
+    // position but no 3x3 system is regular: four free displacements, not three.
+    let entries = falsified("bicycle_kinematics");
+    let f = broken(
+        &entries,
+        "59",
+        "degree of freedom (six displacements less the three rolling conditions)",
+    );
+    assert!(f.perturbation.contains("rolling condition dropped"), "{}", f.perturbation);
+    assert_eq!(f.verdict, Verdict::DerivationDiffers);
+    assert_eq!(f.evidence["freedom"], 4.0, "{:?}", f.evidence);
+    assert_eq!(f.evidence["regular_positions"], 0.0, "{:?}", f.evidence);
+    assert_eq!(f.evidence["positions"], 18.0, "{:?}", f.evidence);
+    // n° 66: the cross-derivative test on eta's relations of (I), true partial derivatives,
+    // gives a defect of the central differences' error (about 2e-9 at step 1e-4), below the
+    // claim's 1e-4, where nu's is 0.24.
+    let f = broken(
+        &entries,
+        "66",
+        "ν is not a function of (θ, γ): cross derivatives of (I) at θ = 20°, γ = 40°",
+    );
+    assert!(f.perturbation.contains("`d_eta_d_theta`, `d_eta_d_gamma`"), "{}", f.perturbation);
+    assert_eq!(f.verdict, Verdict::DerivationDiffers);
+    assert!(f.evidence["defect"].abs() < 1e-7, "{:?}", f.evidence);
+}
