@@ -292,21 +292,21 @@ fn engine_linearisation_body() {
     let d = both_routes().expect("engine derivation");
     let right = upright(-var("v") / var("rR"));
     let wrong = upright(-var("v") / var("rF"));
-    let kane = lateral(&route(&d, "", &right).expect("Kane"), "kane", &mut Vec::new());
+    let kane = lateral(&route(&d, "", &right).expect("Kane"), "kane", &mut Vec::new(), None);
     assert_eq!(
         differs_from_frozen(&kane),
         Vec::<String>::new(),
         "engine against the frozen hand program"
     );
     let mut checks = Vec::new();
-    let off = lateral(&route(&d, "", &wrong).expect("Kane"), "kane", &mut checks);
+    let off = lateral(&route(&d, "", &wrong).expect("Kane"), "kane", &mut checks, None);
     let moved = differs_from_frozen(&off);
     assert!(
         !moved.is_empty() && moved.iter().all(|n| n.starts_with("c1_") || n.starts_with("k2_")),
         "a wrong rear wheel rate moves C1 and K2 only: {moved:?}"
     );
     assert!(checks.iter().all(|c| c.holds), "the wrong reference is still an equilibrium");
-    let lagrange = lateral(&route(&d, "L_", &wrong).expect("Lagrange"), "l", &mut Vec::new());
+    let lagrange = lateral(&route(&d, "L_", &wrong).expect("Lagrange"), "l", &mut Vec::new(), None);
     assert!(!differing(&kane, &lagrange).is_empty(), "Kane against a perturbed Lagrange route");
 }
 
@@ -360,7 +360,7 @@ fn reference_checks_body() {
     let d = both_routes().expect("engine derivation");
     let holds = |reference: &carvallo_codegen::mechanics::engine::linear::Reference, id: &str| {
         let mut checks = Vec::new();
-        let _ = lateral(&route(&d, "", reference).expect("Kane"), "kane", &mut checks);
+        let _ = lateral(&route(&d, "", reference).expect("Kane"), "kane", &mut checks, None);
         checks.iter().find(|c| c.id == id).map(|c| c.holds).expect("the check is made")
     };
     let right = upright(-var("v") / var("rR"));

@@ -539,13 +539,19 @@ pub fn derive() -> Result<Derivation> {
             &(sin("sigma") * cos("gamma") / w50()),
         )
     };
-    checks.push(check(
-        "50",
-        "lowest_point_50",
-        "at theta = 0 the point with cos mu = cos sigma / W, sin mu = sin sigma cos gamma / W (W^2 = cos^2 sigma + sin^2 sigma cos^2 gamma) satisfies K|dOM/dmu = 0",
-        &lowest0(&eq2),
-        &lowest0(&eq2),
-        "W reduced with W^2 = cos^2 sigma + sin^2 sigma cos^2 gamma".into(),
+    // The substitution leaves a literal 0: the falsification scales a symbol of the derived
+    // K|dOM/dmu before it.
+    let perturbed = crate::falsify::perturb_one(&eq2, |d| is_zero_mod(&lowest0(d)));
+    checks.push(crate::falsify::with_perturbation(
+        check(
+            "50",
+            "lowest_point_50",
+            "at theta = 0 the point with cos mu = cos sigma / W, sin mu = sin sigma cos gamma / W (W^2 = cos^2 sigma + sin^2 sigma cos^2 gamma) satisfies K|dOM/dmu = 0",
+            &lowest0(&eq2),
+            &lowest0(&eq2),
+            "W reduced with W^2 = cos^2 sigma + sin^2 sigma cos^2 gamma".into(),
+        ),
+        Some(crate::Perturbed { what: format!("{} (K|dOM/dmu before the lowest point is put in)", perturbed.what), ..perturbed }),
     ));
     let cos_tau = lowest0(&zero_theta(&cos_km.expand()));
     checks.push(check(

@@ -163,21 +163,29 @@ pub fn derive() -> Result<Derivation> {
     let om = ijk_of(&om_ab());
     let qs: Vec<&str> = DELTAS.iter().map(|(_, q)| *q).collect();
     let g_vec = geo::g();
+    // The variations of a derived OM against the printed (3).
+    let check3 = |om: &Vector| {
+        let parts: Vec<Vector> = qs.iter().map(|q| variation(om, q)).collect();
+        let mut ok3 = true;
+        for q in ["theta", "eta", "gamma", "nu"] {
+            let rhs = variation(&k_small, q)
+                .scale(&r_)
+                .add(&variation(&h(), q).scale(&var("a")))
+                .add(&variation(&g_vec, q).scale(&-(var("b") + &r_ * &c_mu)))
+                .add(&variation(&h1(), q).scale(&(&c_ - &r_ * &s_mu)));
+            let k = qs.iter().position(|x| *x == q).expect("a displacement");
+            ok3 &= vdiff_zero(&parts[k].sub(&rhs));
+        }
+        let d_sig1 = g_vec.scale(&(&r_ * &s_mu)).sub(&h1().scale(&(&r_ * &c_mu)));
+        ok3 && vdiff_zero(&parts[5].sub(&d_sig1))
+    };
+    let ok3 = check3(&om);
     let parts: Vec<Vector> = qs.iter().map(|q| variation(&om, q)).collect();
-    let mut ok3 = true;
-    for q in ["theta", "eta", "gamma", "nu"] {
-        let rhs = variation(&k_small, q)
-            .scale(&r_)
-            .add(&variation(&h(), q).scale(&var("a")))
-            .add(&variation(&g_vec, q).scale(&-(var("b") + &r_ * &c_mu)))
-            .add(&variation(&h1(), q).scale(&(&c_ - &r_ * &s_mu)));
-        let k = qs.iter().position(|x| *x == q).expect("a displacement");
-        ok3 &= vdiff_zero(&parts[k].sub(&rhs));
-    }
-    let d_sig1 = g_vec.scale(&(&r_ * &s_mu)).sub(&h1().scale(&(&r_ * &c_mu)));
-    ok3 &= vdiff_zero(&parts[5].sub(&d_sig1));
+    let perturbed = crate::falsify::perturb(&om.comps, |d| {
+        check3(&Vector::new(om.frame, d[0].clone(), d[1].clone(), d[2].clone()))
+    });
     checks.push(Check {
-        perturbed: None,
+        perturbed: Some(crate::Perturbed { what: format!("{} (OM of n° 46, before its variations)", perturbed.what), ..perturbed }),
         section: "61".into(),
         id: "variation_3_61".into(),
         statement: "delta(M - O) is the printed (3): R dk + a dH - (b + R cos mu) dG + (c - R sin mu) dH1 + (G R sin mu - H1 R cos mu) dsigma1, with dI = J dnu, dJ = -I dnu".into(),
@@ -565,8 +573,11 @@ pub fn derive() -> Result<Derivation> {
     let printed_rel = [pr(printed_deta), pr(printed_dnu), pr(printed_dsig1)];
     let diffs: Vec<Atom> =
         (0..3).map(|i| &analytic_rel[i] - on_contact(&geo_sub(&printed_rel[i]))).collect();
+    let perturbed = crate::falsify::perturb(&analytic_rel, |d| {
+        (0..3).all(|i| is_zero_mod(&(&d[i] - on_contact(&geo_sub(&printed_rel[i])))))
+    });
     checks.push(Check {
-        perturbed: None,
+        perturbed: Some(crate::Perturbed { what: format!("{} (the analytic dM's projections)", perturbed.what), ..perturbed }),
         section: "66".into(),
         id: "analytic_equals_geometric_66".into(),
         statement: "on the contact, the analytic dM of n° 61 projected on K, N1, I1 (orthonormal, so the three projections vanish iff dM = 0) gives exactly the three relations (delta) of n° 66: both methods determine the same deta, dnu, dsigma1".into(),
@@ -663,7 +674,7 @@ pub fn derive() -> Result<Derivation> {
             "66 bis",
             &format!("projection_g_{}_66bis", ["i1", "j1", "k"][k]),
             &format!("on the contact, {what}"),
-            &on_contact(&(&lhs - geo_sub(&rhs))),
+            &on_contact(&lhs),
             &on_contact(&(&lhs - geo_sub(&rhs))),
             "so G = -I1 sin mu + k1 cos mu in the front wheel's plane".into(),
         ));
@@ -838,13 +849,19 @@ pub fn derive() -> Result<Derivation> {
     let eq1_case = case_mu(&eq1_ab).expand();
     let a_case = -subst(&eq1_case, &a_sym, &Atom::num(0)) / coeff(&eq1_case, &a_sym);
     let case = |e: &Atom| subst(&case_mu(e), &a_sym, &a_case);
-    checks.push(check(
-        "69",
-        "eta_prime_zero_69",
-        "in the particular case R sin mu - c = 0 at theta = 0, (I) gives eta' = -y/(x cos theta) = 0 (y = -(R sin mu - c) sin gamma)",
-        &case(&f_eta),
-        &case(&f_eta),
-        "c replaced by R sin mu, mu the lowest point at theta = 0, a from (1)".into(),
+    // The particular case leaves a literal 0: the falsification scales a symbol of the derived
+    // eta' before it.
+    let perturbed = crate::falsify::perturb_one(&f_eta, |d| is_zero_mod(&case(d)));
+    checks.push(crate::falsify::with_perturbation(
+        check(
+            "69",
+            "eta_prime_zero_69",
+            "in the particular case R sin mu - c = 0 at theta = 0, (I) gives eta' = -y/(x cos theta) = 0 (y = -(R sin mu - c) sin gamma)",
+            &case(&f_eta),
+            &case(&f_eta),
+            "c replaced by R sin mu, mu the lowest point at theta = 0, a from (1)".into(),
+        ),
+        Some(crate::Perturbed { what: format!("{} (eta' before the particular case is put in)", perturbed.what), ..perturbed }),
     ));
     let tan_form = pr("tan(mu) - tan(eta)*cos(gamma) - tan(theta)*sin(gamma)/cos(eta)");
     let mu_p_over = -(d_angle(&tan_form, "theta") + d_angle(&tan_form, "sigma") * &ep);

@@ -380,13 +380,28 @@ pub fn derive() -> Result<Derivation> {
         &one,
     ));
     let slope_d = simplify(&(-at(&px, &one, &rat(1, 4)) / at(&py, &one, &rat(1, 4))));
-    checks.push(compare(
-        "14",
-        "tangent_d_memoir",
-        "the tangent of (S) at D (1, 1/4) is horizontal (slope 0), as printed",
-        &slope_d,
-        &Atom::num(0),
-        &one,
+    // The slope at D is a literal 0: the falsification scales a symbol of the derived (S)
+    // before its partial derivatives are taken.
+    let horizontal_at_d = |c: &Atom| {
+        let cx = c.derivative(x.get_symbol().expect("symbol"));
+        let cy = c.derivative(y.get_symbol().expect("symbol"));
+        let dy = at(&cy, &one, &rat(1, 4));
+        !dy.is_zero() && is_zero(&at(&cx, &one, &rat(1, 4)))
+    };
+    let perturbed = crate::falsify::perturb_one(&curve_n, horizontal_at_d);
+    checks.push(crate::falsify::with_perturbation(
+        compare(
+            "14",
+            "tangent_d_memoir",
+            "the tangent of (S) at D (1, 1/4) is horizontal (slope 0), as printed",
+            &slope_d,
+            &Atom::num(0),
+            &one,
+        ),
+        Some(crate::Perturbed {
+            what: format!("{} (the curve (S), before its slope at D is taken)", perturbed.what),
+            ..perturbed
+        }),
     ));
 
     // Vertical tangent: discriminant in y, divided by 64 x^2, t = x^2.
@@ -563,7 +578,16 @@ pub fn derive() -> Result<Derivation> {
     let cubic_c = coefficients(&cubic, "w");
     let lead = cubic_c.last().cloned().unwrap_or_else(|| Atom::num(1));
     let cubic_monic = simplify(&(&cubic / &lead * Atom::num(3)));
-    checks.push(check("17", "point_h_cubic", "eliminating s^2 between E(-s) = 0 and S(-s) = 0 (both linear in s^2) leaves a cubic in w = sin(theta) (the memoir does not print it)", cubic_c.len() == 4, format!("cubic (leading coefficient 3): {cubic_monic} = 0; factored over Q: {}; s^2 at H = {}", cubic_monic.factor(), show(&h_s2))));
+    let is_cubic = |h: &Atom| {
+        let (num, _) = num_den(&(&n_s2 - h));
+        to_sin(&num, "w").is_ok_and(|c| coefficients(&c, "w").len() == 4)
+    };
+    // Scaling a symbol keeps the degree: the falsification scales s^2 at H by 1 + w/8.
+    let perturbed = crate::Perturbed {
+        what: "s^2 at H from S(-s) = 0 scaled by 1 + sin(theta)/8".into(),
+        holds: is_cubic(&(&h_s2 * (Atom::num(1) + sin_t() * rat(1, 8)))),
+    };
+    checks.push(checked("17", "point_h_cubic", "eliminating s^2 between E(-s) = 0 and S(-s) = 0 (both linear in s^2) leaves a cubic in w = sin(theta) (the memoir does not print it)", cubic_c.len() == 4, format!("cubic (leading coefficient 3): {cubic_monic} = 0; factored over Q: {}; s^2 at H = {}", cubic_monic.factor(), show(&h_s2)), perturbed));
 
     // n° 19: stick equations.
     let (mm, mm1) = (var("M"), var("M1"));
@@ -639,30 +663,52 @@ pub fn derive() -> Result<Derivation> {
     let resid = (&d2 - &rhs4).expand();
     let resid0 = subst(&sol6, "time", &Atom::num(0)).expand();
     let resid1 = subst(&sol6.derivative(tsym), "time", &Atom::num(0)).expand();
-    checks.push(check("19", "stick_6_memoir", "(6) (with cos, the OCR's \"cosh\" read as cos) solves (4) with theta(0) = theta'(0) = 0, where g/R = 4 s^2 - (3/2) h^2 by (5)", resid.is_zero() && resid0.is_zero() && resid1.is_zero(), format!("residual of (4): {resid}; theta(0) = {resid0}; theta'(0) = {resid1}")));
-    let d6p = (&sol6 - expr(printed::STICK_6P)).expand();
-    checks.push(check(
+    // (6) and (6') against the derived (4) (`eq4`, equal to the printed (4) by
+    // `stick_4_memoir`): the residual of (4) at a solution theta(time) with g from (5).
+    let g5 =
+        var("R") * (Atom::num(4) * var("s").pow(Atom::num(2)) - rat(3, 2) * hs.pow(Atom::num(2)));
+    let solves_4 = |eq: &Atom, sol: &Atom| {
+        let second = sol.derivative(tsym).derivative(tsym);
+        let rhs = subst(&subst(eq, "theta", sol), "g", &g5);
+        is_zero(&simplify(&(second - rhs)))
+            && subst(sol, "time", &Atom::num(0)).expand().is_zero()
+            && subst(&sol.derivative(tsym), "time", &Atom::num(0)).expand().is_zero()
+    };
+    let derived_4 = |what: &str, sol: &Atom| {
+        let p = crate::falsify::perturb_one(&eq4, |d| solves_4(d, sol));
+        crate::Perturbed {
+            what: format!("{} (the derived (4), which {what} must solve)", p.what),
+            ..p
+        }
+    };
+    checks.push(checked("19", "stick_6_memoir", "(6) (with cos, the OCR's \"cosh\" read as cos) solves (4) with theta(0) = theta'(0) = 0, where g/R = 4 s^2 - (3/2) h^2 by (5); (4) as printed and as derived (the linearised first equation with (3))", resid.is_zero() && resid0.is_zero() && resid1.is_zero() && solves_4(&eq4, &sol6), format!("residual of the printed (4): {resid}; theta(0) = {resid0}; theta'(0) = {resid1}"), derived_4("(6)", &sol6)));
+    let sol6p = expr(printed::STICK_6P);
+    let d6p = (&sol6 - &sol6p).expand();
+    checks.push(checked(
         "19",
         "stick_6p_memoir",
-        "(6') is (6) regrouped",
-        d6p.is_zero(),
+        "(6') is (6) regrouped, and solves the derived (4) with theta(0) = theta'(0) = 0 (g from (5))",
+        d6p.is_zero() && solves_4(&eq4, &sol6p),
         format!("(6) - (6'): {d6p}"),
+        derived_4("(6')", &sol6p),
     ));
-    let n7 = (&mm1 * &tau - Atom::num(2) * var("s") * &sol6).expand();
-    let d7 = subst(
-        &(&n7 - expr(printed::STICK_7)),
-        "g",
-        &(var("R")
-            * (Atom::num(4) * var("s").pow(Atom::num(2)) - rat(3, 2) * hs.pow(Atom::num(2)))),
-    )
-    .expand();
-    let d7 = simplify(&d7);
-    checks.push(check(
+    // (7) against (3), the solution of the derived n equation (`stick_3_memoir`), with (6).
+    let d7_of = |n3: &Atom| {
+        let n7 = subst(n3, "thfx", &sol6).expand();
+        simplify(&subst(&(&n7 - expr(printed::STICK_7)), "g", &g5).expand())
+    };
+    let d7 = d7_of(&n3);
+    let perturbed = crate::falsify::perturb_one(&n3, |d| is_zero(&d7_of(d)));
+    checks.push(checked(
         "19",
         "stick_7_memoir",
         "(3) with (6) is the printed (7), using (5)",
         is_zero(&d7),
         format!("(3) with (6) minus (7): {d7}"),
+        crate::Perturbed {
+            what: format!("{} (the derived (3), n = M1 t - 2 s theta)", perturbed.what),
+            ..perturbed
+        },
     ));
     let with_h = |e: &Atom| e.replace(hs.to_pattern()).with(h_val.to_pattern());
 

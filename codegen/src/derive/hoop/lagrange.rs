@@ -91,10 +91,18 @@ pub fn correction_nu_via_centre() -> Atom {
 /// and the last term.
 pub fn correction_sigma_via_momentum(h: &Vector) -> (Atom, Atom) {
     let (p, r) = (var("p"), var("n") * cos_t());
-    let s_dot = omega_pns().cross(&body::centre_from_contact());
-    let j = Vector::unit(Trihedron::Ijk, 1);
-    let last = var("mu") * s_dot.dot(&j.cross(&contact_velocity()));
+    let last = var("mu")
+        * last_term_product(&Vector::new(Trihedron::Ijk, Atom::num(0), Atom::num(0), Atom::num(0)));
     let k_comp = h.dot(&Vector::unit(Trihedron::Ijk, 2));
     let i_comp = h.dot(&Vector::unit(Trihedron::Ijk, 0));
     (-(p * k_comp - r * i_comp + &last), last)
+}
+
+/// The mixed product $[S'jO']$ of the last term of [`correction_sigma_via_momentum`] (before
+/// the factor $\mu$), with the centre S moved by `off` from its place in the hoop's plane (zero
+/// for the hoop).
+pub fn last_term_product(off: &Vector) -> Atom {
+    let s_dot = omega_pns().cross(&body::centre_from_contact().add(off));
+    let j = Vector::unit(Trihedron::Ijk, 1);
+    s_dot.dot(&j.cross(&contact_velocity()))
 }

@@ -275,13 +275,23 @@ pub fn derive() -> Result<Derivation> {
         &corr_sigma_memoir_route,
         &one,
     ));
-    checks.push(compare(
-        "73",
-        "sigma_last_term_zero",
-        "the last term sum of m [M'jO'] of the sigma correction vanishes (\"on vérifie simplement que le dernier terme est nul\")",
-        &last_term,
-        &Atom::num(0),
-        &one,
+    // The mixed product is a literal 0: the falsification moves the centre S off the hoop's
+    // plane.
+    let off = Vector::unit(Trihedron::Ijk, 1).scale(&(var("R") / Atom::num(8)));
+    let perturbed = crate::Perturbed {
+        what: "the centre S moved off the hoop's plane by R/8 along j: [S'jO'] run on it".into(),
+        holds: is_zero(&simplify(&lagrange::last_term_product(&off))),
+    };
+    checks.push(crate::falsify::with_perturbation(
+        compare(
+            "73",
+            "sigma_last_term_zero",
+            "the last term sum of m [M'jO'] of the sigma correction vanishes (\"on vérifie simplement que le dernier terme est nul\")",
+            &last_term,
+            &Atom::num(0),
+            &one,
+        ),
+        Some(perturbed),
     ));
     let lag = lagrange::equations(true);
     checks.push(compare_all("73", "lagrange_equations_memoir", "the modified Lagrange equations (theta), (nu), (sigma) are the printed ones with A, B, C of n° 4", &["(theta)", "(nu)", "(sigma)"], &lag, &[abc(&m::LAGRANGE_THETA.atom()), abc(&m::LAGRANGE_NU.atom()), abc(&m::LAGRANGE_SIGMA.atom())]));
@@ -469,13 +479,25 @@ pub fn derive() -> Result<Derivation> {
         &m::MOMENT_COMPOUND.atom(),
         &one,
     ));
-    checks.push(compare(
-        "11",
-        "moment_rolling_zero",
-        "the rolling (relative) centrifugal forces have no moment about OI",
-        &mom[2],
-        &Atom::num(0),
-        &one,
+    // Each point's moment is a literal 0 (the forces lie in the hoop's plane, which holds OI):
+    // the falsification tilts the rolling rotation's axis out of the plane.
+    let tilted = Vector::unit(Trihedron::Ijk, 1)
+        .add(&Vector::unit(Trihedron::Ijk, 2).scale(&rat(1, 8)))
+        .scale(&var("s"));
+    let perturbed = crate::Perturbed {
+        what: "the rolling rotation s j tilted toward k, s (j + k/8) (an axis that is not the hoop's own): its centrifugal forces' moment about OI".into(),
+        holds: is_zero(&steady::rolling_moment(&tilted)),
+    };
+    checks.push(crate::falsify::with_perturbation(
+        compare(
+            "11",
+            "moment_rolling_zero",
+            "the rolling (relative) centrifugal forces have no moment about OI",
+            &mom[2],
+            &Atom::num(0),
+            &one,
+        ),
+        Some(perturbed),
     ));
     checks.push(compare(
         "11",

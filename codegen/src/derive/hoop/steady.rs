@@ -120,6 +120,16 @@ pub fn direct_moments() -> [Atom; 4] {
     [about_oi(&f_entr), about_oi(&f_cor), about_oi(&f_rel), simplify(&weight)]
 }
 
+/// The moment about OI of the centrifugal forces of the rolling rotation `w_rel` (the hoop's
+/// own is $s\,j$, [`direct_moments`]' third) about the centre S, summed over the hoop.
+pub fn rolling_moment(w_rel: &Vector) -> Atom {
+    let d_mo = body::point_from_contact();
+    let i = Vector::unit(Trihedron::Ijk, 0);
+    let m_from_s = d_mo.sub(&body::centre_from_contact());
+    let f_rel = w_rel.cross(&w_rel.cross(&m_from_s)).scale(&Atom::num(-1));
+    simplify(&body::mass_sum(&d_mo.cross(&f_rel).dot(&i)))
+}
+
 /// n° 11: the sum of the moments about OI divided by μR².
 pub fn equilibrium_direct() -> Atom {
     let m = direct_moments();

@@ -446,10 +446,15 @@ pub fn derive() -> Result<Derivation> {
     ));
     let n_eq_steady = simplify(&with(&eqs[1], &steady0));
     let s_eq_steady = simplify(&with(&eqs[2], &steady0));
-    // The (n) equation in the steady state as derived, its first term scaled.
-    let perturbed = crate::falsify::perturb_term(&with(&eqs[1], &steady0), |q| {
-        is_zero(q) && is_zero(&s_eq_steady)
-    });
+    // Both equations reach the steady state as literal zeros (every term has p, p', n' or s'
+    // as a factor): the falsification leaves the steady state's n' = 0 out.
+    let unsteady = [("p", zero()), ("dp", zero()), ("ds", zero())];
+    let perturbed = crate::Perturbed {
+        what: "the steady state without n' = 0 (p = p' = s' = 0 only): (n) and (s) run on it"
+            .into(),
+        holds: is_zero(&simplify(&with(&eqs[1], &unsteady)))
+            && is_zero(&simplify(&with(&eqs[2], &unsteady))),
+    };
     checks.push(Check {
         perturbed: Some(perturbed),
         section: "29".into(),
@@ -538,8 +543,19 @@ pub fn derive() -> Result<Derivation> {
     let full_l0: [Atom; 3] =
         [subst(&eqs[0], "L", &zero()), subst(&eqs[1], "L", &zero()), subst(&eqs[2], "L", &zero())];
     let (stab_full, ok_full) = stability_of(&full_l0);
+    // A parameter scaled keeps the factorisation (it comes from the equations' form): the
+    // falsification adds a damping of the lean rate, p/8, to the (p) equation.
+    let damped = [
+        &simplified[0] + var("p") * crate::cas::rat(1, 8),
+        simplified[1].clone(),
+        simplified[2].clone(),
+    ];
+    let perturbed = crate::Perturbed {
+        what: "a damping term p/8 added to the (p) equation of the simplified model (the lean rate resisted)".into(),
+        holds: stability_of(&damped).1,
+    };
     checks.push(Check {
-        perturbed: None,
+        perturbed: Some(perturbed),
         section: "35".into(),
         id: "characteristic_factor".into(),
         statement: "for the simplified and the full (L = 0) models the determinant of n° 76 is lambda^2 (lambda^2 + K), so (S) is K > 0 as in n° 9 and 34".into(),

@@ -290,12 +290,20 @@ fn shift_98_engine(shift_98: &Atom) -> Result<(Atom, Vec<Check>)> {
     let mut residual_bad = Vec::new();
     let mut differ = Vec::new();
     let mut shown = Vec::new();
+    // The falsifications: the exact shift scaled by 9/8 (the rows must then not vanish), and
+    // the reduced route's shift replaced by the exact one (no point may then differ).
+    let mut scaled_solves = true;
+    let mut differ_undone = Vec::new();
     for (k, pt) in engine_points().iter().enumerate() {
         let wv = whipple_values(pt);
         let (e, dl) = (with(&exact, pt), with(&delta, &wv));
         let rows: Vec<Atom> = (0..2)
             .map(|r| simplify_all(&with(&(&fq[r][0] + &fq[r][1] * &dl + &ft[r][0] * &e), &wv)))
             .collect();
+        let scaled = &e * crate::falsify::factor();
+        scaled_solves &= (0..2).all(|r| {
+            simplify_all(&with(&(&fq[r][0] + &fq[r][1] * &dl + &ft[r][0] * &scaled), &wv)).is_zero()
+        });
         if rows.iter().any(|x| !x.is_zero()) {
             residual_bad.push(format!(
                 "point {}: {}",
@@ -305,14 +313,21 @@ fn shift_98_engine(shift_98: &Atom) -> Result<(Atom, Vec<Check>)> {
         }
         let hand = simplify_all(&with(shift_98, pt));
         let e = simplify_all(&e);
-        if !simplify_all(&(&e - &hand)).is_zero() {
+        let differs = |reduced: &Atom| !simplify_all(&(&e - reduced)).is_zero();
+        if differs(&hand) {
             differ.push(k + 1);
+        }
+        if differs(&e) {
+            differ_undone.push(k + 1);
         }
         shown.push(format!("point {}: exact {e}, reduced {hand}", k + 1));
     }
     let checks = vec![
         Check {
-            perturbed: None,
+            perturbed: Some(crate::Perturbed {
+                what: format!("the exact shift epsilon/theta scaled by {}", crate::falsify::FACTOR),
+                holds: scaled_solves,
+            }),
             section: "98".into(),
             id: "shift_98_exact_solves".into(),
             statement: "the exact first-order lateral shift epsilon/theta of a steady turn without hands (generated shift_98_exact: the mechanics engine's general bicycle with the body turned by epsilon about the ground trace OI, linearised, Carvallo's bicycle as a parameter set of it) with the steer it implies makes the lean and the steer rows vanish with no steer torque, at three exact rational points".into(),
@@ -320,7 +335,12 @@ fn shift_98_engine(shift_98: &Atom) -> Result<(Atom, Vec<Check>)> {
             detail: if residual_bad.is_empty() { "residuals 0".into() } else { residual_bad.join("; ") },
         },
         Check {
-            perturbed: None,
+            // The reductions undone: the reduced route's shift is then the exact one, and no
+            // point can differ.
+            perturbed: Some(crate::Perturbed {
+                what: "the reduced route's shift (shift_98) replaced by the exact one, as if the reductions of n° 86 were undone".into(),
+                holds: differ_undone.len() == 3,
+            }),
             section: "98".into(),
             id: "shift_98_reduction_matters".into(),
             statement: "the exact first-order shift (shift_98_exact) differs from the reduced route's (shift_98: n° 95-97 with the reduced fall equation (3)' of n° 86) at the three rational points (informative: the reductions of n° 86 change the shift)".into(),
@@ -994,12 +1014,14 @@ pub fn derive() -> Result<Derivation> {
     ));
     let theta1_geo = subst(&subst(&theta1_geo, "gamma", &gamma_of_alpha), "alpha", &alpha_3p);
     let ratio_97 = simplify_all(&(&theta1_geo / var("theta")));
+    let expected_97 = one.clone() + &g * &l_ / (&r_ * &r_ * var("s").pow(Atom::num(2))) * &se / &ce;
+    let perturbed = crate::falsify::perturb_one(&ratio_97, |d| is_zero_all(&(d - &expected_97)));
     checks.push(Check {
-        perturbed: None,
+        perturbed: Some(perturbed),
         section: "97".into(),
         id: "theta1_exceeds_theta".into(),
         statement: "geometry and (3)' give theta1/theta = 1 + (g l/(R s)^2) tan(eta) > 1 at first order (n° 97: theta1 > theta)".into(),
-        holds: is_zero_all(&(&ratio_97 - (one.clone() + &g * &l_ / (&r_ * &r_ * var("s").pow(Atom::num(2))) * &se / &ce))),
+        holds: is_zero_all(&(&ratio_97 - &expected_97)),
         detail: format!("theta1/theta = {}", show_all(&ratio_97)),
     });
     // Beyond the memoir: the speed where the dynamic and geometric ratios agree, and the
@@ -1039,8 +1061,12 @@ pub fn derive() -> Result<Derivation> {
         (simplify_all(change), lower, is_zero_all(&first))
     };
     let (fall_inertia_change, low0, first0) = first_order_change(&(&fall_a_98 - &frame_a));
+    let perturbed = crate::falsify::perturb_one(&fall_a_98, |d| {
+        let (_, low, first) = first_order_change(&(d - &frame_a));
+        low && first
+    });
     checks.push(Check {
-        perturbed: None,
+        perturbed: Some(crate::Perturbed { what: format!("{} (the shifted frame's inertia terms of the fall equation)", perturbed.what), ..perturbed }),
         section: "98".into(),
         id: "shift_fall_inertia".into(),
         statement: "the inertia (centrifugal) terms of the fall equation are unchanged by the sideways shift at first order in theta, alpha, n, d eta/d theta and y_c (n° 98: the moment of the centrifugal force is not changed appreciably)".into(),
@@ -1050,8 +1076,14 @@ pub fn derive() -> Result<Derivation> {
     let steer_change = &(&steer_a_98 - &steer_grav_98) - &(&steer_frame_a - &steer_grav_frame);
     let (steer_change, low0, first0) = first_order_change(&steer_change);
     let grav_unchanged = is_zero_all(&(&steer_grav_98 - &steer_grav_frame));
+    let unchanged = |a: &Atom| {
+        let change = &(a - &steer_grav_98) - &(&steer_frame_a - &steer_grav_frame);
+        let (_, low, first) = first_order_change(&change);
+        low && first && grav_unchanged
+    };
+    let perturbed = crate::falsify::perturb_one(&steer_a_98, unchanged);
     checks.push(Check {
-        perturbed: None,
+        perturbed: Some(crate::Perturbed { what: format!("{} (the shifted frame's inertia terms of the handlebar equation)", perturbed.what), ..perturbed }),
         section: "98".into(),
         id: "shift_steer_unchanged".into(),
         statement: "the handlebar equation is unchanged by the sideways shift at first order (its frame gravity term exactly, its inertia terms up to second order in theta, alpha, n, d eta/d gamma and y_c): n° 98's 'l'équation du guidon n'est pas changée'".into(),
