@@ -481,12 +481,15 @@ pub fn shift_checks_of(
         let s = |e: &Atom| reduce(&stand_ins(e));
         let (lean, steer, wheel) = (s(&lin.f_t[0][0]), s(&lin.f_t[1][0]), s(&lin.f_t[2][0]));
         if let Some(unshifted) = unshifted {
-            let same = differing(
-                &lateral(&lin, &format!("{name}_shifted"), &mut Vec::new(), None),
-                unshifted,
-            );
+            let shifted = lateral(&lin, &format!("{name}_shifted"), &mut Vec::new(), None);
+            let same = differing(&shifted, unshifted);
+            let perturbed = crate::falsify::perturb_one(&shifted.m[0][0], |d| {
+                let mut m = shifted.clone();
+                m.m[0][0] = d.clone();
+                differing(&m, unshifted).is_empty()
+            });
             checks.push(Check {
-                perturbed: None,
+                perturbed: Some(crate::Perturbed { what: format!("{} (the shifted bicycle's M11 at epsilon = 0)", perturbed.what), ..perturbed }),
                 section: "98".into(),
                 id: format!("{name}_shift_unshifted"),
                 statement: format!("{name}: with the body shifted by epsilon = 0 the engine's bicycle has the unshifted matrices M, C1, K0, K2 exactly"),

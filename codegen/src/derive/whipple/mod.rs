@@ -183,9 +183,27 @@ pub fn origin_checks(kane: &Matrices, parts: &linearised::Origins, checks: &mut 
         // Where the plain equation agrees, one of its terms scaled: it must then differ.
         // The plain terms in the order of `diff`; the first that is not a literal zero.
         let terms = [&plain.rate[r][0], &plain.angle[r][0], &plain.rate[r][1], &plain.angle[r][1]];
-        let perturbed = holds.then(|| terms.iter().position(|t| !t.is_zero())).flatten().map(|k| {
-            crate::falsify::perturb_one(terms[k], |d| vanishes(&(&diff[k] - terms[k] + d)))
-        });
+        let perturbed = if holds {
+            terms.iter().position(|t| !t.is_zero()).map(|k| {
+                crate::falsify::perturb_one(terms[k], |d| vanishes(&(&diff[k] - terms[k] + d)))
+            })
+        } else {
+            // Where it differs (as n° 71 says the steer's must), the plain terms replaced by
+            // Carvallo's correction, rates, angles and value: it must then agree.
+            let corrected: Vec<Atom> = (0..2)
+                .flat_map(|c| {
+                    [
+                        &parts.correction_rate[r][c] - &parts.correction_rate[r][c],
+                        &parts.correction_angle[r][c] - &parts.correction_angle[r][c],
+                    ]
+                })
+                .chain([&plain.values[0][r] - &plain.values[0][r]])
+                .collect();
+            Some(crate::Perturbed {
+                what: "the plain term -dT/dq replaced by Carvallo's correction (its rates, angles and value): the modified Lagrange equation itself".into(),
+                holds: corrected.iter().all(vanishes),
+            })
+        };
         checks.push(with_perturbation(check(
             &format!("plain_lagrange_{}", Q[r]),
             &format!("the plain Lagrange equation of {} (-dT/dq, the pitch following through the front contact, in place of Carvallo's -sum m M'|(dM/dq)') equals Kane's generalised inertia force at first order, identically in the lean, steer, their rates and v (informative: not required to hold)", Q[r]),
