@@ -2549,6 +2549,7 @@ pub const SYMBOLS: &[&str] = &[
     "L_c_thetad",
     "L_p_thetaLd",
     "L_c_thetaLd",
+    "delta_ref",
 ];
 
 /// Creates every symbol of [`SYMBOLS`] in order (a symbol that exists already keeps its place).
