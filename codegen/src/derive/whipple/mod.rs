@@ -169,16 +169,21 @@ pub fn origin_checks(kane: &Matrices, parts: &linearised::Origins, checks: &mut 
         perturbed,
     ));
     let Some(plain) = &parts.plain else { return };
-    for r in 0..2 {
-        let diff: Vec<Atom> = (0..2)
+    // A term in place of Carvallo's correction minus the correction, row `r`: rates and
+    // angles of lean and steer, then the value at the reference.
+    let against = |r: usize, rate: &[[Atom; 2]; 2], angle: &[[Atom; 2]; 2], value: &Atom| {
+        (0..2)
             .flat_map(|c| {
                 [
-                    &plain.rate[r][c] - &parts.correction_rate[r][c],
-                    &plain.angle[r][c] - &parts.correction_angle[r][c],
+                    &rate[r][c] - &parts.correction_rate[r][c],
+                    &angle[r][c] - &parts.correction_angle[r][c],
                 ]
             })
-            .chain([&plain.values[1][r] - &plain.values[0][r]])
-            .collect();
+            .chain([value - &plain.values[0][r]])
+            .collect::<Vec<Atom>>()
+    };
+    for r in 0..2 {
+        let diff = against(r, &plain.rate, &plain.angle, &plain.values[1][r]);
         let holds = diff.iter().all(vanishes);
         // Where the plain equation agrees, one of its terms scaled: it must then differ.
         // The plain terms in the order of `diff`; the first that is not a literal zero.
@@ -190,15 +195,8 @@ pub fn origin_checks(kane: &Matrices, parts: &linearised::Origins, checks: &mut 
         } else {
             // Where it differs (as n° 71 says the steer's must), the plain terms replaced by
             // Carvallo's correction, rates, angles and value: it must then agree.
-            let corrected: Vec<Atom> = (0..2)
-                .flat_map(|c| {
-                    [
-                        &parts.correction_rate[r][c] - &parts.correction_rate[r][c],
-                        &parts.correction_angle[r][c] - &parts.correction_angle[r][c],
-                    ]
-                })
-                .chain([&plain.values[0][r] - &plain.values[0][r]])
-                .collect();
+            let corrected =
+                against(r, &parts.correction_rate, &parts.correction_angle, &plain.values[0][r]);
             Some(crate::Perturbed {
                 what: "the plain term -dT/dq replaced by Carvallo's correction (its rates, angles and value): the modified Lagrange equation itself".into(),
                 holds: corrected.iter().all(vanishes),
