@@ -350,14 +350,39 @@ fn engine_shift_of_the_body_is_the_memoirs_and_breaks_about_the_wrong_axis() {
 
 /// What breaks the engine's recorded equilibrium check: about a state with the handlebar
 /// turning (steer rate 1 rad/s) upright running is no longer an equilibrium, so
-/// `kane_equilibrium` fails; about the true reference it holds. (A leaned or pitched reference
-/// would break `kane_on_the_ground` too, but with a symbolic angle the jets' trigonometry does
-/// not reduce and the linearisation runs for minutes: not tried here.)
+/// `kane_equilibrium` fails; about the true reference it holds. With a symbolic angle the
+/// jets' trigonometry does not reduce and a leaned or steered reference runs for minutes, so
+/// the recorded falsifications of the four checks upright running makes literal zeros
+/// (`MOVED`) linearise at a rational point of parameter space: there, about upright running,
+/// all four quantities still vanish (the rational point alone breaks nothing), and with the
+/// steer moved to 2 atan(1/16) each check fails, for both routes.
 fn reference_checks_body() {
-    use carvallo_codegen::cas::var;
-    use carvallo_codegen::derive::whipple::linearised::{both_routes, lateral, route, upright};
+    use carvallo_codegen::cas::{rat, var};
+    use carvallo_codegen::derive::whipple::linearised::{
+        at_rational_point, both_routes, lateral, route, upright,
+    };
     use symbolica::atom::Atom;
     let d = both_routes().expect("engine derivation");
+    let ids = ["on_the_ground", "pitch_second_order", "equilibrium", "rear_decoupled"];
+    for prefix in ["", "L_"] {
+        let outcomes = |steer: Option<(Atom, Atom)>| -> Vec<bool> {
+            let lin = at_rational_point(&d, prefix, steer).expect("linearised at the point");
+            let mut checks = Vec::new();
+            let _ = lateral(&lin, "r", &mut checks, None);
+            ids.iter()
+                .map(|id| {
+                    let id = format!("r_{id}");
+                    checks.iter().find(|c| c.id == id).map(|c| c.holds).expect("the check is made")
+                })
+                .collect()
+        };
+        assert_eq!(outcomes(None), [true; 4], "{prefix}: upright at the rational point");
+        assert_eq!(
+            outcomes(Some((rat(32, 257), rat(255, 257)))),
+            [false; 4],
+            "{prefix}: the steer moved"
+        );
+    }
     let holds = |reference: &carvallo_codegen::mechanics::engine::linear::Reference, id: &str| {
         let mut checks = Vec::new();
         let _ = lateral(&route(&d, "", reference).expect("Kane"), "kane", &mut checks, None);

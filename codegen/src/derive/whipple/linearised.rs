@@ -165,6 +165,17 @@ pub const MOVED: &str = "the reference's steer moved from 0 to 2 atan(1/16) (abo
 
 /// `route`'s equations linearised about the reference [`MOVED`] describes.
 pub fn moved(d: &Derivation, prefix: &str) -> Result<Linear> {
+    at_rational_point(d, prefix, Some((crate::cas::rat(32, 257), crate::cas::rat(255, 257))))
+}
+
+/// `route`'s equations linearised at the rational point of parameter space [`MOVED`] names,
+/// about upright running, or, with `steer` $= (\sin\delta_0, \cos\delta_0)$, about the
+/// reference with the steer moved to $\delta_0$ (lean and pitch kept at zero).
+pub fn at_rational_point(
+    d: &Derivation,
+    prefix: &str,
+    steer: Option<(Atom, Atom)>,
+) -> Result<Linear> {
     let point: Vec<(String, Atom)> = crate::derive::nominal::values("whipple")
         .into_iter()
         .filter(|(n, _)| n != "lambda" && super::PARAMS.contains(&n.as_str()))
@@ -185,13 +196,19 @@ pub fn moved(d: &Derivation, prefix: &str) -> Result<Linear> {
         d.formulas.iter().map(|f| crate::Formula { expr: numeric(&f.expr), ..f.clone() }).collect();
     let rr = point.iter().find(|(n, _)| n == "rR").map(|(_, v)| v.clone()).expect("rR");
     let mut reference = upright(Atom::num(-5) / rr);
-    reference.values.insert("delta".into(), var("delta_ref"));
+    let (sin_d, cos_d) = match steer {
+        Some(sc) => {
+            reference.values.insert("delta".into(), var("delta_ref"));
+            sc
+        }
+        None => (Atom::num(0), Atom::num(1)),
+    };
     let normal = |e: &Atom| -> Atom {
         e.expand()
             .replace(expr("sin(delta_ref)").to_pattern())
-            .with(crate::cas::rat(32, 257).to_pattern())
+            .with(sin_d.to_pattern())
             .replace(expr("cos(delta_ref)").to_pattern())
-            .with(crate::cas::rat(255, 257).to_pattern())
+            .with(cos_d.to_pattern())
             .expand()
     };
     linear::linearise(&formulas, prefix, &reference, &normal)
