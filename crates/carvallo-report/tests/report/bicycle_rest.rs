@@ -4,7 +4,7 @@
 //! in the full report, and a snapshot of the text table with numbers normalised to 4
 //! significant digits.
 
-use carvallo_report::bicycle::rest::{entries, LEANS, NEGLIGIBLE_DEG};
+use carvallo_report::bicycle::rest::{entries, LEANS};
 use carvallo_report::{render_text_normalised, Derived, Verdict};
 
 #[test]
@@ -24,7 +24,9 @@ fn verdicts_are_the_expected_ones() {
         assert_eq!(x.verdict, expected, "{}: {}", x.quantity, x.note);
         if let Derived::Numbers(n) = &x.derived {
             if let Some(shift) = n.get("difference_deg") {
-                assert_eq!(x.verdict == Verdict::Agrees, shift.abs() <= NEGLIGIBLE_DEG);
+                // The evidence beyond the memoir's negligible 0°,6 (n° 53), written here, not
+                // imported: `derivation-differs` exactly when the shift exceeds it.
+                assert_eq!(x.verdict == Verdict::DerivationDiffers, shift.abs() > 0.6, "{shift}");
                 assert!(*shift > 0.0 && n["frame_rise_mm"] > 0.0 && n["wheel_drop_mm"] > 0.0);
             }
         }
