@@ -60,13 +60,10 @@ fn matrix(text: &str, key: &str) -> [[f64; 2]; 2] {
 
 fn whipple_linearisation_body() {
     let d = crate::derived("whipple");
-    for c in &d.checks {
-        if c.id.starts_with("plain_lagrange") {
-            eprintln!("{}: holds = {}; {}", c.id, c.holds, c.detail);
-            continue;
-        }
-        assert!(c.holds, "check {} fails: {}", c.id, c.detail);
-    }
+    // Every check holds except plain_lagrange_delta: the plain Lagrange equation of delta is
+    // not Kane's (the memoir's point, n° 71; the report's `FailsAsTheMemoirSays`), while
+    // plain_lagrange_phi happens to hold.
+    crate::common::assert_checks(&d.checks, &["plain_lagrange_delta"]);
     let prog = emit_program(d).expect("emission");
     let text = anchors();
     let params: Vec<f64> = whipple::PARAMS.iter().map(|k| scalar(&text, k)).collect();
