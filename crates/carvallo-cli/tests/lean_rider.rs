@@ -67,6 +67,8 @@ fn eig_and_statespace_equal_bicycleparameters() {
             for key in ["A", "B"] {
                 let (a, b) = (matrix(&ss[key]), matrix(&case[key]));
                 let scale = b.iter().flatten().fold(0.0f64, |m, x| m.max(x.abs()));
+                // The zip below stops at the shorter: the shapes are checked first.
+                assert_eq!((a.len(), b.len()), (12, 12), "{model} {key} rows at case {k}");
                 for (ra, rb) in a.iter().zip(&b) {
                     assert_eq!(ra.len(), rb.len());
                     for (x, y) in ra.iter().zip(rb) {
@@ -83,7 +85,7 @@ fn eig_and_statespace_equal_bicycleparameters() {
                 .collect();
             theirs.sort_by(|p, q| q.0.total_cmp(&p.0).then(q.1.total_cmp(&p.1)));
             let list = eig[k]["eigenvalues"].as_array().unwrap();
-            assert_eq!(list.len(), 6);
+            assert_eq!((list.len(), theirs.len()), (6, 6), "{model} at case {k}: {theirs:?}");
             for (z, (re, im)) in list.iter().zip(&theirs) {
                 let d = (number(&z["re"]) - re).hypot(number(&z["im"]) - im) / re.hypot(*im);
                 worst_eig = worst_eig.max(d);
