@@ -10,7 +10,9 @@ fn root() -> PathBuf {
     Path::new(env!("CARGO_MANIFEST_DIR")).join("..")
 }
 
-/// Every `.rs` file under `dir` (relative to the root), sorted, `target/` skipped.
+/// Every `.rs` file under `dir` (relative to the root), sorted, `target/` skipped. A folder
+/// that is missing or holds no Rust file is a failure: a rule over no file passes vacuously
+/// (a renamed folder would silently end the checks of this file).
 fn rust_files(dir: &str) -> Vec<PathBuf> {
     fn walk(dir: &Path, out: &mut Vec<PathBuf>) {
         let Ok(entries) = std::fs::read_dir(dir) else { return };
@@ -28,6 +30,7 @@ fn rust_files(dir: &str) -> Vec<PathBuf> {
     let mut out = Vec::new();
     walk(&root().join(dir), &mut out);
     out.sort();
+    assert!(!out.is_empty(), "no `.rs` file under {dir}: the tidy rules would check nothing");
     out
 }
 
@@ -82,6 +85,39 @@ fn no_test_is_ignored_or_expected_to_panic() {
         "assert on the `Err` value instead (STYLE.md):\n{}",
         found.join("\n")
     );
+}
+
+/// The Python package's tests do not skip: a peer that is missing (BicycleParameters, yeadon,
+/// dask, the binary) is an error, as `scripts/test` installs them all; a skipped module passes
+/// with nothing compared.
+#[test]
+fn no_python_test_is_skipped() {
+    // Spelled in pieces so that this file does not match itself.
+    let forbidden = [
+        concat!("import", "orskip"),
+        concat!("pytest.", "skip"),
+        concat!("mark.", "skip"),
+        concat!("mark.", "xfail"),
+        concat!("pytest.", "xfail"),
+    ];
+    let dir = root().join("crates/carvallo-py/tests");
+    let mut files: Vec<PathBuf> = std::fs::read_dir(&dir)
+        .unwrap_or_else(|e| panic!("cannot list {}: {e}", dir.display()))
+        .flatten()
+        .map(|e| e.path())
+        .filter(|p| p.extension().is_some_and(|e| e == "py"))
+        .collect();
+    files.sort();
+    assert!(files.len() >= 10, "expected the Python tests in {}", dir.display());
+    let mut found = Vec::new();
+    for path in files {
+        for (n, line) in read(&path).lines().enumerate() {
+            if !line.trim_start().starts_with('#') && forbidden.iter().any(|f| line.contains(f)) {
+                found.push(format!("{}:{}: {}", rel(&path), n + 1, line.trim()));
+            }
+        }
+    }
+    assert!(found.is_empty(), "a missing peer is an error, not a skip:\n{}", found.join("\n"));
 }
 
 /// The report modules that are leaves (shape, policy, samples, checks, outline, renderers).
@@ -279,21 +315,27 @@ fn codegen_layers_point_one_way() {
         ("codegen/src/derive/", &["crate::regen", "crate::emit"]),
     ];
     let mut wrong = Vec::new();
+    let mut applied = [0usize; 5];
     for path in rust_files("codegen/src") {
         let name = rel(&path);
         let text = read(&path);
-        for (prefix, forbidden) in rules {
+        for (k, (prefix, forbidden)) in rules.iter().enumerate() {
             if !name.starts_with(prefix) {
                 continue;
             }
+            applied[k] += 1;
             for (n, line) in code_lines(&text) {
-                for f in forbidden {
+                for f in forbidden.iter() {
                     if line.contains(f) {
                         wrong.push(format!("{name}:{n}: {prefix} must not use {f}"));
                     }
                 }
             }
         }
+    }
+    // A rule whose path names no file any more (a module moved) would pass vacuously.
+    for ((prefix, _), n) in rules.iter().zip(applied) {
+        assert!(n > 0, "the rule for {prefix} applies to no file of codegen/src");
     }
     assert!(wrong.is_empty(), "codegen layering rules broken:\n{}", wrong.join("\n"));
 }

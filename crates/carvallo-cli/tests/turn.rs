@@ -37,7 +37,24 @@ fn json_is_the_library_turn() {
     same("dfdp", c.dfdp);
     same("dfdtheta", c.dfdtheta);
     let r: Vec<f64> = v["roots"].as_array().unwrap().iter().map(|x| x.as_f64().unwrap()).collect();
+    assert_eq!(r.len(), 2, "{r:?}");
     assert!(r[0] < 0.0 && r[1] > 0.0, "{r:?}");
+    // The roots are those of the printed fall equation
+    // $f_{pp} x^2 + f_p x + f_\theta = 0$, checked here by substitution (not by the library's
+    // quadratic formula): the residual is rounding, a few ulps of the largest term.
+    let (a, b, c) = (num(&v, "dfdpp"), num(&v, "dfdp"), num(&v, "dfdtheta"));
+    for x in &r {
+        let terms = [a * x * x, b * x, c];
+        let residual: f64 = terms.iter().sum();
+        let size = terms.iter().fold(0.0f64, |m, t| m.max(t.abs()));
+        assert!(residual.abs() <= 1e-13 * size, "root {x}: residual {residual:e} of {size:e}");
+    }
+    // Vieta: the product of the roots is $f_\theta / f_{pp}$.
+    assert!((r[0] * r[1] - c / a).abs() <= 1e-13 * (c / a).abs(), "{r:?}");
+}
+
+fn num(v: &serde_json::Value, key: &str) -> f64 {
+    v[key].as_f64().unwrap_or_else(|| panic!("no number {key}: {v}"))
 }
 
 #[test]
