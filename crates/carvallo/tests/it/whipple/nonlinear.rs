@@ -4,8 +4,9 @@
 //!
 //! * Linearisation: central differences (step 1e-5) of the nonlinear lean and steer
 //!   accelerations about upright straight running at 2, 5 and 8 m/s reproduce the state
-//!   matrix of $M\ddot q + vC_1\dot q + (gK_0 + v^2K_2)q = 0$ within absolute 1e-6 per entry,
-//!   and the rear wheel's acceleration has no first-order term (absolute 1e-6).
+//!   matrix of $M\ddot q + vC_1\dot q + (gK_0 + v^2K_2)q = 0$ within absolute 1e-7 per entry
+//!   (the differences' truncation $h^2 |f'''| / 6$; measured 1.1e-8), and the rear wheel's
+//!   acceleration has no first-order term (absolute 1e-7).
 //! * Small lean: a 1e-4 rad initial lean at 5 m/s follows the linear response (the same RK4 on
 //!   the state matrix) within 1e-3 of the lean's initial value over 3 s.
 //! * Energy: over 5 s at a 1 ms step the total energy drifts by less than 1e-8 J (the total is
@@ -118,13 +119,13 @@ fn linearises_to_the_benchmark_matrices() {
                 let err = (fd - a[(2 + r, k)]).abs();
                 worst = worst.max(err);
                 assert!(
-                    err <= 1e-6,
+                    err <= 1e-7,
                     "v = {v}: d acc[{r}] / d x[{k}] = {fd}, linear {}",
                     a[(2 + r, k)]
                 );
             }
             let fd_rear = (fp[2] - fm[2]) / (2.0 * h);
-            assert!(fd_rear.abs() <= 1e-6, "v = {v}: rear wheel acceleration slope {fd_rear}");
+            assert!(fd_rear.abs() <= 1e-7, "v = {v}: rear wheel acceleration slope {fd_rear}");
         }
     }
     eprintln!("largest difference from the state matrix: {worst:.2e}");
@@ -183,16 +184,13 @@ fn lean_decays_at_5_and_grows_at_2() {
     let last = tr.samples.last().expect("samples").state.lean;
     eprintln!("5 m/s: lean after 5 s {last:e}");
     assert!(last.abs() < 0.4 * 0.05, "lean {last}");
-    let tr = b.simulate(b.initial_state(2.0, 0.05).expect("state"), 3.0, 1e-3, 10);
-    let grown = match tr {
-        Ok(t) => t.samples.iter().map(|s| s.state.lean.abs()).fold(0.0, f64::max),
-        // The bicycle may fall flat before the end (no contact left): that is a fall too.
-        Err(e) => {
-            eprintln!("2 m/s: {e}");
-            f64::INFINITY
-        }
-    };
-    eprintln!("2 m/s: largest lean {grown}");
+    // A fall is a result, not an error: the run ends at the fall angle (1.2 rad).
+    let tr = b
+        .simulate(b.initial_state(2.0, 0.05).expect("state"), 3.0, 1e-3, 10)
+        .expect("the fall is a result");
+    let t_fall = tr.fall.expect("it falls within 3 s");
+    let grown = tr.samples.iter().map(|s| s.state.lean.abs()).fold(0.0, f64::max);
+    eprintln!("2 m/s: fell at {t_fall} s, largest lean {grown}");
     assert!(grown > 0.5, "largest lean {grown}");
 }
 
