@@ -91,8 +91,7 @@ pub fn correction_nu_via_centre() -> Atom {
 /// and the last term.
 pub fn correction_sigma_via_momentum(h: &Vector) -> (Atom, Atom) {
     let (p, r) = (var("p"), var("n") * cos_t());
-    let last = var("mu")
-        * last_term_product(&Vector::new(Trihedron::Ijk, Atom::num(0), Atom::num(0), Atom::num(0)));
+    let last = var("mu") * last_term_product(&Vector::unit(Trihedron::Ijk, 1).scale(&Atom::num(0)));
     let k_comp = h.dot(&Vector::unit(Trihedron::Ijk, 2));
     let i_comp = h.dot(&Vector::unit(Trihedron::Ijk, 0));
     (-(p * k_comp - r * i_comp + &last), last)

@@ -114,10 +114,9 @@ pub fn direct_moments() -> [Atom; 4] {
     let w_rel = j.scale(&s);
     let v_rel = w_rel.cross(&m_from_s);
     let f_cor = w_entr.cross(&v_rel).scale(&Atom::num(-2));
-    let f_rel = w_rel.cross(&w_rel.cross(&m_from_s)).scale(&Atom::num(-1));
     let about_oi = |f: &Vector| simplify(&body::mass_sum(&d_mo.cross(f).dot(&i)));
     let weight = super::motion::weight_moment().dot(&i);
-    [about_oi(&f_entr), about_oi(&f_cor), about_oi(&f_rel), simplify(&weight)]
+    [about_oi(&f_entr), about_oi(&f_cor), rolling_moment(&w_rel), simplify(&weight)]
 }
 
 /// The moment about OI of the centrifugal forces of the rolling rotation `w_rel` (the hoop's
