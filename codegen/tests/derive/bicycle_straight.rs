@@ -64,7 +64,12 @@ fn straight_running_derivation() {
 fn split_depends_on_the_speeds_body() {
     use carvallo_codegen::derive::whipple::linearised;
     use symbolica::atom::{Atom, AtomCore};
-    let (kane, parts) = linearised::matrices(&mut Vec::new()).expect("the engine's Whipple");
+    let (kane, parts) = linearised::matrices_of(
+        &carvallo_codegen::derive::whipple::description::whipple(),
+        true,
+        None,
+    )
+    .expect("the engine's Whipple");
     let relative = bicycle_straight::General { kane, parts };
     let own_spin = bicycle_straight::general().expect("the engine's Whipple, own spin");
     let pt = &bicycle_straight::points()[0];

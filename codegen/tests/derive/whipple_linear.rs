@@ -324,8 +324,12 @@ fn shift_body() {
     for c in d.checks.iter().filter(|c| c.id.contains("_shift_")) {
         assert!(c.holds, "check {} fails: {}", c.id, c.detail);
     }
-    let (hand, _) = carvallo_codegen::derive::whipple::linearised::matrices(&mut Vec::new())
-        .expect("the engine's matrices");
+    let (hand, _) = carvallo_codegen::derive::whipple::linearised::matrices_of(
+        &carvallo_codegen::derive::whipple::description::whipple(),
+        true,
+        None,
+    )
+    .expect("the engine's matrices");
     let mut about_the_axle = whipple_shifted();
     let cre = about_the_axle.points.iter_mut().find(|p| p.name == "CRe").expect("CRe");
     cre.frame = "L".into();

@@ -500,7 +500,7 @@ pub struct General {
 /// The general model from the mechanics engine.
 pub fn general() -> Result<General> {
     let model = crate::derive::whipple::description::whipple_rear_spin_from_lean();
-    let (kane, parts) = linearised::matrices_of(&model, false, &mut Vec::new())?;
+    let (kane, parts) = linearised::matrices_of(&model, false, None)?;
     Ok(General { kane, parts })
 }
 

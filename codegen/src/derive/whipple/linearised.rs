@@ -334,24 +334,30 @@ fn entries(m: &Matrices) -> Vec<(String, &Atom)> {
 /// $M$, $C_1$, $K_0$, $K_2$ from the engine (Kane's route), reduced as [`super::reduce`]
 /// reduces, with the checks of both routes and of their agreement.
 pub fn matrices(checks: &mut Vec<Check>) -> Result<(Matrices, Origins)> {
-    matrices_of(&description::whipple(), true, checks)
+    matrices_of(&description::whipple(), true, Some(checks))
 }
 
 /// [`matrices`] for another description of the bicycle (the same bicycle with other speeds,
 /// [`description::whipple_rear_spin_from_lean`]).
-/// With `plain`, [`Origins::plain`] is filled.
+/// With `plain`, [`Origins::plain`] is filled. With `checks` `None` the checks are not wanted,
+/// and the linearisations about the moved reference ([`MOVED`], their falsifications) are not
+/// made.
 pub fn matrices_of(
     model: &engine::Model,
     plain: bool,
-    checks: &mut Vec<Check>,
+    checks: Option<&mut Vec<Check>>,
 ) -> Result<(Matrices, Origins)> {
     let derive = if plain { engine::derivation_with_plain_lagrange } else { engine::derivation };
     let (d, _, _) =
         derive(model, file!()).map_err(|e| anyhow!("the Whipple bicycle ({}): {e}", model.name))?;
+    let falsified = checks.is_some();
+    let mut unwanted = Vec::new();
+    let checks = checks.unwrap_or(&mut unwanted);
+    let moved_route = |prefix: &str| falsified.then(|| moved(&d, prefix)).transpose();
     let reference = upright(-var("v") / var("rR"));
-    let kane = lateral(&route(&d, "", &reference)?, "kane", checks, Some(&moved(&d, "")?));
+    let kane = lateral(&route(&d, "", &reference)?, "kane", checks, moved_route("")?.as_ref());
     let (lin, parts) = origins(&d, &reference)?;
-    let lagrange = lateral(&lin, "lagrange", checks, Some(&moved(&d, "L_")?));
+    let lagrange = lateral(&lin, "lagrange", checks, moved_route("L_")?.as_ref());
     let differ = differing(&kane, &lagrange);
     let perturbed = crate::falsify::perturb_one(&kane.m[0][0], |d| {
         let mut k = kane.clone();
